@@ -1,0 +1,8 @@
+// Evaluates one function per texel for the parity harness: arguments in, results out (float32 targets).
+// CALL is defined by the harness as the expression under test, wrapped to a vec4.
+uniform sampler2D uArgs;
+out vec4 fragColor;
+void main() {
+  vec4 a = texelFetch(uArgs, ivec2(gl_FragCoord.xy), 0);
+  fragColor = CALL;
+}

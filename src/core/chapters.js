@@ -1,0 +1,19 @@
+// The app's chapters in the talk's order, and which page and widgets each has.
+export const CHAPTERS = [
+  { key: 'media', title: 'Light in media', blurb: 'Absorption, scattering and the scale at which they show.' },
+  { key: 'surfaces', title: 'Surfaces and microgeometry', blurb: 'Optically flat vs rough; metals vs non-metals; when diffuse is local.' },
+  { key: 'brdf', title: 'The BRDF and the reflectance equation', blurb: 'Lobes, and the integral as a weighted average.' },
+  { key: 'microfacets', title: 'Microfacet theory', blurb: 'The half vector, shadowing and masking, the energy lost.' },
+  {
+    key: 'fresnel',
+    title: 'Fresnel reflectance',
+    blurb: 'Exact vs Schlick, the F0 tables, and the Fresnel-zones demo.',
+    page: 'fresnel.html',
+    widgets: ['fresnel-curves', 'fresnel-zones', 'f0-tables'],
+  },
+  { key: 'ndf', title: 'Normal distribution functions', blurb: 'Five NDFs at matched widths: highlights and tails.' },
+  { key: 'visibility', title: 'Geometry and visibility terms', blurb: 'Implicit, Cook–Torrance, Kelemen, Smith.' },
+  { key: 'diffuse', title: 'Diffuse', blurb: 'Lambert, the diffuse–specular trade-off, Oren–Nayar.' },
+  { key: 'rendering', title: 'From math to rendering', blurb: 'Punctual, image-based, area and ambient light.' },
+  { key: 'performance', title: 'Performance and accuracy', blurb: 'Run time against error for every approximation.' },
+];

@@ -1,0 +1,60 @@
+// Sums every texel of a float render target on the GPU (4x4 blocks per pass, log4 passes) and reads back
+// one texel: a whole image's statistics for the price of a 1x1 readPixels.
+import * as THREE from 'three';
+import { assembleGlsl } from './glsl.js';
+import { SHADER_CHUNKS } from './shader-chunks.js';
+
+export function floatTarget(width, height, depthBuffer = false) {
+  return new THREE.WebGLRenderTarget(width, height, {
+    type: THREE.FloatType, format: THREE.RGBAFormat, minFilter: THREE.NearestFilter, magFilter: THREE.NearestFilter,
+    depthBuffer, generateMipmaps: false,
+  });
+}
+
+export function createGpuSum(renderer) {
+  const material = new THREE.ShaderMaterial({
+    glslVersion: THREE.GLSL3,
+    uniforms: { uSrc: { value: null }, uSrcSize: { value: new THREE.Vector2() } },
+    vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
+    fragmentShader: assembleGlsl(SHADER_CHUNKS['sum4x4.frag.glsl']),
+    depthTest: false,
+    depthWrite: false,
+  });
+  const quad = new THREE.Mesh(new THREE.PlaneGeometry(2, 2), material);
+  quad.frustumCulled = false;
+  const scene = new THREE.Scene().add(quad);
+  const camera = new THREE.Camera();
+  const targets = new Map();
+  const targetOf = (w, h) => {
+    const key = `${w}x${h}`;
+    if (!targets.has(key)) targets.set(key, floatTarget(w, h));
+    return targets.get(key);
+  };
+  const out = new Float32Array(4);
+
+  return {
+    /** Sum of all texels of `source` (a float WebGLRenderTarget) as [r, g, b, a]. */
+    sum(source) {
+      const previous = renderer.getRenderTarget();
+      let src = source;
+      let [w, h] = [source.width, source.height];
+      while (w > 1 || h > 1) {
+        const [tw, th] = [Math.ceil(w / 4), Math.ceil(h / 4)];
+        const dst = targetOf(tw, th);
+        material.uniforms.uSrc.value = src.texture;
+        material.uniforms.uSrcSize.value.set(w, h);
+        renderer.setRenderTarget(dst);
+        renderer.render(scene, camera);
+        [src, w, h] = [dst, tw, th];
+      }
+      renderer.readRenderTargetPixels(src, 0, 0, 1, 1, out);
+      renderer.setRenderTarget(previous);
+      return Array.from(out);
+    },
+    dispose() {
+      targets.forEach((t) => t.dispose());
+      material.dispose();
+      quad.geometry.dispose();
+    },
+  };
+}

@@ -1,0 +1,48 @@
+// Builds a lil-gui panel from a state schema. The panel edits a private copy of the state and reports
+// each change as a partial state; sync() refreshes it when the state changes from elsewhere.
+import GUI from 'lil-gui';
+
+const labelOf = (key, f) => (f.unit ? `${f.label ?? key} (${f.unit})` : (f.label ?? key));
+
+export function createStateGui(container, { schema, state, onChange, title = 'Controls', keys = Object.keys(schema) }) {
+  const gui = new GUI({ container, title, autoPlace: false });
+  const model = { ...state };
+  const setModels = {}; // set fields: one boolean per option
+
+  for (const key of keys) {
+    const f = schema[key];
+    if (f.type === 'set') {
+      const folder = gui.addFolder(labelOf(key, f));
+      const flags = (setModels[key] = {});
+      for (const [value, label] of Object.entries(f.options)) {
+        flags[value] = model[key].includes(value);
+        folder.add(flags, value).name(label).onChange(() => {
+          onChange({ [key]: Object.keys(f.options).filter((v) => flags[v]) });
+        });
+      }
+      continue;
+    }
+    const ctrl =
+      f.type === 'number'
+        ? gui.add(model, key, f.min, f.max, f.step)
+        : f.type === 'enum'
+          ? gui.add(model, key, Object.fromEntries(Object.entries(f.options).map(([v, l]) => [l, v])))
+          : gui.add(model, key);
+    ctrl.name(labelOf(key, f)).onChange((v) => onChange({ [key]: v }));
+    if (f.hint) ctrl.domElement.title = f.hint;
+  }
+
+  return {
+    gui,
+    sync(next) {
+      Object.assign(model, next);
+      for (const [key, flags] of Object.entries(setModels)) {
+        for (const v of Object.keys(flags)) flags[v] = next[key].includes(v);
+      }
+      gui.controllersRecursive().forEach((c) => c.updateDisplay());
+    },
+    dispose() {
+      gui.destroy();
+    },
+  };
+}

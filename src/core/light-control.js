@@ -1,0 +1,104 @@
+// Placing a directional light by hand. The light is given in view space by two angles: theta, from the
+// viewing direction (0° = light behind the viewer, 90° = from the side, 180° = from behind the object),
+// and phi, around the viewing direction (0° = right, 90° = up). Dragging maps the pointer's distance from
+// the canvas centre to theta (the dashed ring is 90°); the arrow keys move the light 5° at a time.
+
+const DEG = Math.PI / 180;
+
+export function lightDirFromAngles(thetaDeg, phiDeg) {
+  const t = thetaDeg * DEG;
+  const p = phiDeg * DEG;
+  return [Math.sin(t) * Math.cos(p), Math.sin(t) * Math.sin(p), Math.cos(t)];
+}
+
+/** Radius, in CSS pixels, of the ring that stands for theta = 90°. */
+const ringRadius = (w, h) => 0.42 * Math.min(w, h);
+
+export function attachLightControl(canvas, overlayParent, { get, set }) {
+  const svg = document.createElementNS('http://www.w3.org/2000/svg', 'svg');
+  svg.classList.add('light-overlay');
+  svg.setAttribute('aria-hidden', 'true');
+  svg.innerHTML = '<circle class="ring" /><line class="ray" /><circle class="sun" r="7" /><text class="sun-label">light</text>';
+  overlayParent.append(svg);
+  const [ring, ray, sun, label] = svg.children;
+
+  const draw = () => {
+    const w = canvas.clientWidth;
+    const h = canvas.clientHeight;
+    svg.setAttribute('viewBox', `0 0 ${w} ${h}`);
+    const R = ringRadius(w, h);
+    const { lightTheta, lightPhi } = get();
+    const r = (lightTheta / 90) * R;
+    const x = w / 2 + r * Math.cos(lightPhi * DEG);
+    const y = h / 2 - r * Math.sin(lightPhi * DEG);
+    ring.setAttribute('cx', w / 2);
+    ring.setAttribute('cy', h / 2);
+    ring.setAttribute('r', R);
+    ray.setAttribute('x1', w / 2);
+    ray.setAttribute('y1', h / 2);
+    ray.setAttribute('x2', x);
+    ray.setAttribute('y2', y);
+    sun.setAttribute('cx', x);
+    sun.setAttribute('cy', y);
+    sun.classList.toggle('behind', lightTheta > 90);
+    label.setAttribute('x', x + 10);
+    label.setAttribute('y', y - 10);
+    label.textContent = `light θ ${lightTheta.toFixed(0)}°`;
+  };
+
+  const fromPointer = (e) => {
+    const rect = canvas.getBoundingClientRect();
+    const dx = e.clientX - rect.left - rect.width / 2;
+    const dy = rect.top + rect.height / 2 - e.clientY;
+    const R = ringRadius(rect.width, rect.height);
+    const theta = Math.min((Math.hypot(dx, dy) / R) * 90, 180);
+    const phi = Math.atan2(dy, dx) / DEG;
+    set({ lightTheta: Math.round(theta * 10) / 10, lightPhi: Math.round(phi * 10) / 10 });
+  };
+
+  let dragging = false;
+  const down = (e) => {
+    if (e.button !== 0) return;
+    dragging = true;
+    canvas.setPointerCapture(e.pointerId);
+    fromPointer(e);
+  };
+  const move = (e) => dragging && fromPointer(e);
+  const up = (e) => {
+    dragging = false;
+    if (canvas.hasPointerCapture(e.pointerId)) canvas.releasePointerCapture(e.pointerId);
+  };
+  const key = (e) => {
+    const { lightTheta, lightPhi } = get();
+    const step = e.shiftKey ? 1 : 5;
+    const moves = {
+      ArrowUp: { lightTheta: lightTheta - step },
+      ArrowDown: { lightTheta: lightTheta + step },
+      ArrowLeft: { lightPhi: ((lightPhi + step + 540) % 360) - 180 },
+      ArrowRight: { lightPhi: ((lightPhi - step + 540) % 360) - 180 },
+    };
+    if (!moves[e.key]) return;
+    e.preventDefault();
+    set(moves[e.key]);
+  };
+  canvas.addEventListener('pointerdown', down);
+  canvas.addEventListener('pointermove', move);
+  canvas.addEventListener('pointerup', up);
+  canvas.addEventListener('pointercancel', up);
+  canvas.addEventListener('keydown', key);
+
+  return {
+    draw,
+    get dragging() {
+      return dragging;
+    },
+    dispose() {
+      canvas.removeEventListener('pointerdown', down);
+      canvas.removeEventListener('pointermove', move);
+      canvas.removeEventListener('pointerup', up);
+      canvas.removeEventListener('pointercancel', up);
+      canvas.removeEventListener('keydown', key);
+      svg.remove();
+    },
+  };
+}

@@ -1,0 +1,33 @@
+// Colours used across the app. The defaults follow the talk; every colour code has a colour-blind-safe
+// alternative from the Okabe & Ito palette (2008), which stays distinct under the common colour deficiencies.
+export const ZONE_PALETTES = {
+  talk: { label: 'Talk (green, yellow, red)', colors: ['#3fae49', '#f5d327', '#e2352b'] },
+  cb: { label: 'Colour-blind safe (blue, yellow, vermillion)', colors: ['#0072b2', '#f0e442', '#d55e00'] },
+};
+export const ZONE_LABELS = ['barely changes (< 45°)', 'changes somewhat (45–75°)', 'goes rapidly to 1 (> 75°)'];
+
+/** Okabe-Ito hues for the red, green and blue channels of coloured (metal) reflectance. */
+export const CHANNEL_COLORS = ['#d55e00', '#009e73', '#0072b2'];
+/** Okabe-Ito hues for single-curve (achromatic) materials. */
+export const SERIES_COLORS = ['#000000', '#e69f00', '#cc79a7', '#56b4e9', '#7f7f7f', '#8c564b'];
+
+export function withAlpha(hex, alpha) {
+  const a = Math.round(alpha * 255).toString(16).padStart(2, '0');
+  return `${hex}${a}`;
+}
+
+/** The hex colour darkened towards black by `amount` in [0, 1]. */
+export function darken(hex, amount) {
+  return rgbToHex(hexToRgb(hex).map((c) => c * (1 - amount)));
+}
+
+/** [r, g, b] in [0, 1] -> '#rrggbb'. */
+export function rgbToHex(rgb) {
+  return `#${rgb.map((c) => Math.round(Math.min(Math.max(c, 0), 1) * 255).toString(16).padStart(2, '0')).join('')}`;
+}
+
+/** '#rrggbb' -> [r, g, b] in [0, 1] (display, i.e. sRGB-encoded, values). */
+export function hexToRgb(hex) {
+  const n = parseInt(hex.slice(1), 16);
+  return [16, 8, 0].map((s) => ((n >> s) & 255) / 255);
+}

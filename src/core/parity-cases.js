@@ -1,0 +1,71 @@
+// What the parity harness checks: each GLSL function against its float64 JS twin, over a grid that
+// includes the stress inputs (cos = 0, 1e-7, 1 and just above 1, eta near 1, total internal reflection,
+// large k, alpha down to 0, sRGB values outside [0, 1]).
+import * as M from '../math/index.js';
+
+const uniform = (n, lo, hi) => Array.from({ length: n }, (_, i) => lo + ((hi - lo) * i) / (n - 1));
+
+export const GRIDS = {
+  cos: [-0.5, 0, 1e-7, 1e-6, 1e-4, 1e-3, 0.01, 0.1, 0.2588, 0.5, 0.7071, 0.9, 0.99, 0.999, 0.9999, 1 - 1e-6, 1, 1 + 1e-6, ...uniform(25, 0.02, 0.98)],
+  eta: [1e-3, 0.5, 1 / 1.5, 0.9, 1 - 1e-3, 1 - 1e-6, 1, 1 + 1e-6, 1 + 1e-3, 1.1, 1.33, 1.5, 2.42, 4, 100],
+  etaConductor: [0.03, 0.2, 0.5, 1, 1 + 1e-6, 1.5, 3, 10, 100],
+  k: [0, 1e-3, 0.5, 1, 2.5, 5, 10],
+  f0: [0, 0.02, 0.04, 0.17, 0.5, 0.95, 1],
+  alpha: [0, 1e-5, 1e-4, 1e-3, 0.01, 0.1, 0.3, 0.5, 1],
+  srgb: [-0.5, 0, 1e-4, 0.003, 0.0031308, 0.04, 0.04045, 0.1, 0.25, 0.5, 0.75, 0.9, 1, 1.5],
+};
+
+/**
+ * Tolerance: a GPU value g passes against the JS value j when |g - j| <= ATOL + RTOL·|j|.
+ * float32 carries ~7 digits; the functions here lose at most a few ulps, and RTOL covers the large
+ * values of D near alpha = 1e-4 (about 3e7).
+ */
+export const TOLERANCE = { atol: 1e-5, rtol: 1e-4 };
+
+const cartesian = (...lists) => lists.reduce((acc, list) => acc.flatMap((a) => list.map((x) => [...a, x])), [[]]);
+
+/** { name, chunk, glsl (expression over a.xyzw), outputs, js(...args) -> number | number[], range, args } */
+export const PARITY_CASES = [
+  { name: 'srgbToLinear', chunk: 'color.glsl', glsl: 'srgbToLinear(a.x)', outputs: 1, js: M.srgbToLinear, range: [0, 1], args: cartesian(GRIDS.srgb) },
+  { name: 'linearToSrgb', chunk: 'color.glsl', glsl: 'linearToSrgb(a.x)', outputs: 1, js: M.linearToSrgb, range: [0, 1], args: cartesian(GRIDS.srgb) },
+  { name: 'fresnelSchlick', chunk: 'fresnel.glsl', glsl: 'fresnelSchlick(a.x, a.y)', outputs: 1, js: M.fresnelSchlick, range: [0, 1], args: cartesian(GRIDS.f0, GRIDS.cos) },
+  {
+    name: 'fresnelSchlick (vec3)',
+    chunk: 'fresnel.glsl',
+    glsl: 'fresnelSchlick(vec3(a.x, 0.5 * a.x, 1.0 - a.x), a.y)',
+    outputs: 3,
+    js: (f0, c) => [f0, 0.5 * f0, 1 - f0].map((x) => M.fresnelSchlick(Math.fround(x), c)),
+    range: [0, 1],
+    args: cartesian(GRIDS.f0, GRIDS.cos),
+  },
+  { name: 'fresnelDielectric', chunk: 'fresnel.glsl', glsl: 'fresnelDielectric(a.x, a.y)', outputs: 1, js: M.fresnelDielectric, range: [0, 1], args: cartesian(GRIDS.cos, GRIDS.eta) },
+  {
+    name: 'fresnelConductor',
+    chunk: 'fresnel.glsl',
+    glsl: 'fresnelConductor(a.x, a.y, a.z)',
+    outputs: 1,
+    js: M.fresnelConductor,
+    range: [0, 1],
+    args: cartesian(GRIDS.cos, GRIDS.etaConductor, GRIDS.k),
+  },
+  {
+    name: 'fresnelConductor (vec3)',
+    chunk: 'fresnel.glsl',
+    glsl: 'fresnelConductor(a.x, vec3(a.y, 1.0, 0.5), vec3(a.z, 2.0, 3.0))',
+    outputs: 3,
+    js: (c, eta, k) => [M.fresnelConductor(c, eta, k), M.fresnelConductor(c, 1, 2), M.fresnelConductor(c, 0.5, 3)],
+    range: [0, 1],
+    args: cartesian(GRIDS.cos, GRIDS.etaConductor, GRIDS.k),
+  },
+  { name: 'fresnelZone', chunk: 'zones.glsl', glsl: 'fresnelZone(a.x)', outputs: 1, js: M.fresnelZone, range: [0, 2], args: cartesian(GRIDS.cos) },
+  { name: 'ndfGGX', chunk: 'ndf.glsl', glsl: 'ndfGGX(a.x, a.y)', outputs: 1, js: M.ndfGGX, range: [0, Infinity], args: cartesian(GRIDS.cos, GRIDS.alpha) },
+  {
+    name: 'visibilitySmithGGXCorrelated',
+    chunk: 'visibility.glsl',
+    glsl: 'visibilitySmithGGXCorrelated(a.x, a.y, a.z)',
+    outputs: 1,
+    js: M.visibilitySmithGGXCorrelated,
+    range: [0, Infinity],
+    args: cartesian(GRIDS.cos, GRIDS.cos, GRIDS.alpha),
+  },
+];

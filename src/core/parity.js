@@ -1,0 +1,67 @@
+// The parity harness: evaluates each GLSL function of shaders/ over a grid of inputs on the GPU (one texel
+// per input, float32 render target), reads the results back and compares them with the JS reference.
+// The JS side is evaluated at the float32-rounded inputs, so only the function's own error is measured.
+import * as THREE from 'three';
+import { assembleGlsl } from './glsl.js';
+import { SHADER_CHUNKS } from './shader-chunks.js';
+import { floatTarget } from './gpu-sum.js';
+import { TOLERANCE } from './parity-cases.js';
+
+const WIDTH = 256;
+
+function evaluateOnGpu(renderer, testCase) {
+  const n = testCase.args.length;
+  const height = Math.ceil(n / WIDTH);
+  const data = new Float32Array(WIDTH * height * 4);
+  testCase.args.forEach((args, i) => args.forEach((x, j) => (data[i * 4 + j] = x)));
+  const input = new THREE.DataTexture(data, WIDTH, height, THREE.RGBAFormat, THREE.FloatType);
+  input.needsUpdate = true;
+  const wrap = testCase.outputs === 1 ? `vec4(${testCase.glsl}, 0.0, 0.0, 0.0)` : `vec4(${testCase.glsl}, 0.0)`;
+  const material = new THREE.ShaderMaterial({
+    glslVersion: THREE.GLSL3,
+    uniforms: { uArgs: { value: input } },
+    vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
+    fragmentShader: assembleGlsl(`#include "${testCase.chunk}"\n${SHADER_CHUNKS['parity.frag.glsl']}`, { defines: { CALL: wrap } }),
+  });
+  const quad = new THREE.Mesh(new THREE.PlaneGeometry(2, 2), material);
+  const scene = new THREE.Scene().add(quad);
+  const target = floatTarget(WIDTH, height);
+  renderer.setRenderTarget(target);
+  renderer.render(scene, new THREE.Camera());
+  const out = new Float32Array(WIDTH * height * 4);
+  renderer.readRenderTargetPixels(target, 0, 0, WIDTH, height, out);
+  renderer.setRenderTarget(null);
+  [input, material, quad.geometry, target].forEach((x) => x.dispose());
+  return out;
+}
+
+/** Compares one case; returns its summary row. */
+export function compareCase(testCase, gpu) {
+  const { atol, rtol } = TOLERANCE;
+  let maxAbs = 0;
+  let maxRel = 0;
+  let worst = null;
+  let failures = 0;
+  let invalid = 0;
+  testCase.args.forEach((args, i) => {
+    const f32 = args.map(Math.fround);
+    const want = [].concat(testCase.js(...f32));
+    want.forEach((j, o) => {
+      const g = gpu[i * 4 + o];
+      if (!Number.isFinite(g) || g < testCase.range[0] || g > testCase.range[1] * (1 + 1e-6)) invalid++;
+      const abs = Math.abs(g - j);
+      const rel = abs / Math.max(Math.abs(j), 1e-30);
+      if (!(abs <= atol + rtol * Math.abs(j))) failures++;
+      if (!(abs <= maxAbs) || !worst) {
+        maxAbs = Number.isFinite(abs) ? Math.max(abs, maxAbs) : Infinity;
+        worst = { args: f32, output: o, gpu: g, js: j };
+      }
+      if (Math.abs(j) > 1e-6) maxRel = Math.max(maxRel, rel);
+    });
+  });
+  return { name: testCase.name, count: testCase.args.length, maxAbs, maxRel, worst, failures, invalid, pass: failures === 0 && invalid === 0 };
+}
+
+export function runParity(renderer, cases) {
+  return cases.map((c) => compareCase(c, evaluateOnGpu(renderer, c)));
+}

@@ -1,0 +1,151 @@
+// 2-D plots on uPlot: labelled axes, shaded x-ranges (e.g. the Fresnel zones), a follow-the-size layout,
+// and export of the picture (PNG, with title and legend) and of the data (CSV).
+import uPlot from 'uplot';
+import 'uplot/dist/uPlot.min.css';
+import { canvasToPng, createToolbar, downloadCsv } from './export.js';
+
+/** Draws vertical bands behind the series: [{ from, to, color, label }]. */
+function bandsPlugin(getBands) {
+  return {
+    hooks: {
+      drawClear: (u) => {
+        const { ctx } = u;
+        const { left, top, width, height } = u.bbox;
+        ctx.save();
+        for (const b of getBands()) {
+          const x0 = Math.max(u.valToPos(b.from, 'x', true), left);
+          const x1 = Math.min(u.valToPos(b.to, 'x', true), left + width);
+          ctx.fillStyle = b.color;
+          ctx.fillRect(x0, top, x1 - x0, height);
+          if (b.label) {
+            ctx.fillStyle = '#333';
+            ctx.font = `${11 * uPlot.pxRatio}px system-ui, sans-serif`;
+            ctx.textAlign = 'center';
+            ctx.fillText(b.label, (x0 + x1) / 2, top + 14 * uPlot.pxRatio);
+          }
+        }
+        ctx.restore();
+      },
+    },
+  };
+}
+
+const axis = (label, extra = {}) => ({ label, labelSize: 22, size: 48, stroke: '#333', grid: { stroke: '#0000001a' }, ...extra });
+
+/**
+ * spec: { title, xLabel, yLabel, x: { min, max }, y: { min, max } | null, series: [{ label, stroke, dash, width }],
+ *         data: [xs, ...ys], bands: [...], filename }
+ * Returns { setData(spec), dispose() }; setData rebuilds when the series change.
+ */
+export function createPlot(container, spec) {
+  const wrap = document.createElement('figure');
+  wrap.className = 'plot';
+  const caption = document.createElement('figcaption');
+  const holder = document.createElement('div');
+  holder.className = 'plot-canvas';
+  wrap.append(caption, holder);
+  container.append(wrap);
+
+  let current = spec;
+  let u = null;
+  const size = () => ({ width: Math.max(holder.clientWidth, 200), height: current.height ?? 300 });
+
+  const build = () => {
+    u?.destroy();
+    caption.textContent = current.title;
+    const opts = {
+      ...size(),
+      scales: {
+        x: { time: false, range: [current.x.min, current.x.max] },
+        y: current.y ? { range: [current.y.min, current.y.max] } : { auto: true },
+      },
+      axes: [axis(current.xLabel, { values: current.xValues }), axis(current.yLabel)],
+      series: [{ label: current.xLabel, value: (_, v) => (v == null ? '—' : v.toFixed(1)) }, ...current.series.map((s) => ({
+        label: s.label,
+        stroke: s.stroke,
+        width: s.width ?? 2,
+        dash: s.dash,
+        points: { show: false },
+        value: (_, v) => (v == null ? '—' : v.toFixed(4)),
+      }))],
+      legend: { live: true },
+      cursor: { drag: { x: false, y: false } },
+      plugins: [bandsPlugin(() => current.bands ?? [])],
+    };
+    u = new uPlot(opts, current.data, holder);
+  };
+  build();
+
+  const resize = new ResizeObserver(() => u?.setSize(size()));
+  resize.observe(holder);
+
+  const toolbar = createToolbar(wrap, [
+    { label: 'Save PNG', title: 'Save this plot as an image', onClick: () => canvasToPng(composite(u, current), `${current.filename}.png`) },
+    {
+      label: 'Save CSV',
+      title: 'Save the plotted data',
+      onClick: () =>
+        downloadCsv(
+          [{ name: current.xLabel, values: current.data[0] }, ...current.series.map((s, i) => ({ name: s.label, values: current.data[i + 1] }))],
+          `${current.filename}.csv`,
+        ),
+    },
+  ]);
+  toolbar.classList.add('plot-toolbar');
+
+  return {
+    setData(next) {
+      const sameSeries =
+        next.series.length === current.series.length && next.series.every((s, i) => s.label === current.series[i].label);
+      const sameScales = JSON.stringify([next.x, next.y]) === JSON.stringify([current.x, current.y]);
+      current = next;
+      if (sameSeries && sameScales) {
+        caption.textContent = next.title;
+        u.setData(next.data);
+        u.redraw(false, true);
+      } else build();
+    },
+    get uplot() {
+      return u;
+    },
+    dispose() {
+      resize.disconnect();
+      u?.destroy();
+      wrap.remove();
+    },
+  };
+}
+
+/** The plot canvas with its title above and its legend below, on white, for export. */
+function composite(u, spec) {
+  const src = u.ctx.canvas;
+  const r = uPlot.pxRatio;
+  const line = 18 * r;
+  const perRow = Math.max(1, Math.floor(src.width / (190 * r)));
+  const legendRows = Math.ceil(spec.series.length / perRow);
+  const out = document.createElement('canvas');
+  out.width = src.width;
+  out.height = src.height + line * (2 + legendRows);
+  const ctx = out.getContext('2d');
+  ctx.fillStyle = '#fff';
+  ctx.fillRect(0, 0, out.width, out.height);
+  ctx.fillStyle = '#111';
+  ctx.font = `bold ${13 * r}px system-ui, sans-serif`;
+  ctx.fillText(spec.title, 8 * r, 14 * r);
+  ctx.drawImage(src, 0, line * 1.2);
+  ctx.font = `${11 * r}px system-ui, sans-serif`;
+  spec.series.forEach((s, i) => {
+    const x = (i % perRow) * 190 * r + 8 * r;
+    const y = src.height + line * (1.8 + Math.floor(i / perRow));
+    ctx.strokeStyle = s.stroke;
+    ctx.lineWidth = 2 * r;
+    ctx.setLineDash((s.dash ?? []).map((d) => d * r));
+    ctx.beginPath();
+    ctx.moveTo(x, y - 4 * r);
+    ctx.lineTo(x + 22 * r, y - 4 * r);
+    ctx.stroke();
+    ctx.fillStyle = '#111';
+    ctx.fillText(s.label, x + 28 * r, y);
+  });
+  return out;
+}

@@ -1,0 +1,45 @@
+// Render on demand: draw() runs at most once per animation frame, and only after invalidate().
+// Nothing is drawn while the element is out of view or the tab is hidden; the pending frame is drawn
+// when it comes back. A page that nothing changes issues no draw calls at all.
+
+const frameCounter = (globalThis.__shadingLab ??= { frames: 0 });
+
+export function createRenderLoop(element, draw) {
+  let dirty = false;
+  let scheduled = 0;
+  let inView = true;
+
+  const canDraw = () => inView && !document.hidden;
+  const frame = () => {
+    scheduled = 0;
+    if (!dirty || !canDraw()) return;
+    dirty = false;
+    frameCounter.frames++;
+    draw();
+  };
+  const schedule = () => {
+    if (dirty && !scheduled && canDraw()) scheduled = requestAnimationFrame(frame);
+  };
+
+  const observer = new IntersectionObserver((entries) => {
+    inView = entries[entries.length - 1].isIntersecting;
+    schedule();
+  });
+  observer.observe(element);
+  document.addEventListener('visibilitychange', schedule);
+
+  return {
+    invalidate() {
+      dirty = true;
+      schedule();
+    },
+    get inView() {
+      return inView;
+    },
+    dispose() {
+      observer.disconnect();
+      document.removeEventListener('visibilitychange', schedule);
+      if (scheduled) cancelAnimationFrame(scheduled);
+    },
+  };
+}

@@ -1,0 +1,48 @@
+// Mounts a widget by name and keeps its state in the page URL (optionally under a prefix, so several
+// widgets can share one page), and exposes it for tests and parent pages.
+import { WIDGETS, isWidgetName } from '../widgets/registry.js';
+import { stateToParams } from './state.js';
+
+const registry = (globalThis.__shadingLab ??= { frames: 0 });
+registry.widgets ??= {};
+
+/** The URL parameters that belong to a widget: all of them, or those under `prefix.`. */
+export function widgetParams(search, prefix) {
+  const out = {};
+  for (const [k, v] of new URLSearchParams(search)) {
+    if (!prefix) out[k] = v;
+    else if (k.startsWith(`${prefix}.`)) out[k.slice(prefix.length + 1)] = v;
+  }
+  return out;
+}
+
+function writeUrl(schema, state, prefix) {
+  const url = new URL(location.href);
+  const own = stateToParams(schema, state);
+  for (const k of [...url.searchParams.keys()]) {
+    if (prefix ? k.startsWith(`${prefix}.`) : k !== 'w') url.searchParams.delete(k);
+  }
+  for (const [k, v] of own) url.searchParams.set(prefix ? `${prefix}.${k}` : k, v);
+  history.replaceState(history.state, '', url);
+}
+
+/**
+ * Creates widget `name` inside `container` with the state found in the URL.
+ * options: { prefix, syncUrl = true, onStateChange }
+ */
+export async function mountWidget(container, name, { prefix = '', syncUrl = true, onStateChange, options = {} } = {}) {
+  if (!isWidgetName(name)) throw new Error(`unknown widget ${name}`);
+  const { widget } = await WIDGETS[name].load();
+  let timer = 0;
+  const instance = widget.create(container, widgetParams(location.search, prefix), {
+    ...options,
+    onStateChange(state) {
+      onStateChange?.(state);
+      if (!syncUrl) return;
+      clearTimeout(timer);
+      timer = setTimeout(() => writeUrl(widget.schema, state, prefix), 120);
+    },
+  });
+  registry.widgets[prefix || name] = instance;
+  return instance;
+}

@@ -1,0 +1,51 @@
+// The common frame of every widget: its root element, notice area, a view and a control column, and the
+// one state object, validated on every way in (initial state, update(), GUI).
+import { coerceState, defaultState } from './state.js';
+import { createNoticeArea } from './notice.js';
+
+export function createWidgetShell(container, { name, schema, initialState, about }) {
+  const root = document.createElement('section');
+  root.className = `widget widget-${name}`;
+  root.dataset.widget = name;
+  const notices = createNoticeArea(root);
+  const body = document.createElement('div');
+  body.className = 'widget-body';
+  const view = document.createElement('div');
+  view.className = 'widget-view';
+  const controls = document.createElement('div');
+  controls.className = 'widget-controls';
+  body.append(view, controls);
+  root.append(body);
+  if (about) {
+    const p = document.createElement('p');
+    p.className = 'widget-about';
+    p.innerHTML = about;
+    root.append(p);
+  }
+  container.append(root);
+
+  const first = coerceState(schema, initialState, defaultState(schema));
+  if (first.notices.length) notices.show(first.notices);
+  let state = first.state;
+
+  return {
+    root,
+    view,
+    controls,
+    notices,
+    get state() {
+      return state;
+    },
+    /** Validates `partial` against the current state; returns the keys whose value changed. */
+    apply(partial) {
+      const next = coerceState(schema, partial, state);
+      if (next.notices.length) notices.show(next.notices);
+      const changed = Object.keys(schema).filter((k) => JSON.stringify(next.state[k]) !== JSON.stringify(state[k]));
+      state = next.state;
+      return changed;
+    },
+    dispose() {
+      root.remove();
+    },
+  };
+}

@@ -1,0 +1,104 @@
+// Fresnel reflectance: Schlick's approximation and the exact equations for dielectrics and conductors.
+// Inputs are cosines (cosTheta = n·l, or l·h inside a microfacet BRDF); they are clamped to [0, 1].
+// Every form below is written so that no difference of nearly equal numbers is taken:
+// sin² = (1 - c)(1 + c), eta² - 1 = (eta - 1)(eta + 1), and g - c is rewritten as (g² - c²)/(g + c).
+
+const clamp01 = (x) => Math.min(Math.max(x, 0), 1);
+
+/** Schlick 1994: f0 + (1 - f0)(1 - cosTheta)^5. */
+export function fresnelSchlick(f0, cosTheta) {
+  const m = 1 - clamp01(cosTheta);
+  const m2 = m * m;
+  return f0 + (1 - f0) * m2 * m2 * m;
+}
+
+/** Normal-incidence reflectance of an interface with relative IOR eta (and extinction k, 0 for dielectrics). */
+export function f0FromIor(eta, k = 0) {
+  return ((eta - 1) * (eta - 1) + k * k) / ((eta + 1) * (eta + 1) + k * k);
+}
+
+/** Inverse of f0FromIor for a dielectric with eta >= 1. f0 is clamped to [0, 0.999]. */
+export function iorFromF0(f0) {
+  const s = Math.sqrt(Math.min(Math.max(f0, 0), 0.999));
+  return (1 + s) / (1 - s);
+}
+
+/**
+ * Exact unpolarized Fresnel reflectance of a dielectric interface, eta = n_t / n_i > 0.
+ * With g = eta·cos(theta_t) = sqrt(eta² - 1 + c²) the amplitude ratios are
+ *   r_s = -(eta² - 1) / (g + c)²,   r_p = (eta² - 1)((eta² + 1)c² - 1) / (eta² c + g)²,
+ * both proportional to eta² - 1, so eta -> 1 gives 0 without cancellation.
+ * Total internal reflection (g² < 0) gives 1. eta = 1 exactly (no interface) gives 0.
+ */
+export function fresnelDielectric(cosThetaI, eta) {
+  const c = clamp01(cosThetaI);
+  const e2m1 = (eta - 1) * (eta + 1);
+  if (e2m1 === 0) return 0;
+  const g2 = e2m1 + c * c;
+  if (g2 <= 0) return 1;
+  const g = Math.sqrt(g2);
+  const rs = -e2m1 / ((g + c) * (g + c));
+  const pd = eta * eta * c + g;
+  const rp = (e2m1 * ((eta * eta + 1) * c * c - 1)) / (pd * pd);
+  return Math.min(0.5 * (rs * rs + rp * rp), 1);
+}
+
+/**
+ * Exact unpolarized Fresnel reflectance of a conductor with complex IOR eta + i·k (relative to the outside).
+ * Standard form (e.g. Born & Wolf; Lagarde 2013, "Memo on Fresnel equations") with
+ *   a² + b² = s = sqrt(x² + 4 eta² k²),  x = eta² - k² - sin²,  a² = (s + x) / 2,  b² = (s - x) / 2,
+ *   R_s = ((a - c)² + b²) / ((a + c)² + b²),
+ *   R_p = R_s · ((a c - sin²)² + b² c²) / ((a c + sin²)² + b² c²).
+ * a² and b² are taken from whichever of s + x, s - x does not cancel, and a - c = (a² - c²)/(a + c),
+ * so k = 0 reduces to fresnelDielectric (total internal reflection included) at full precision.
+ */
+export function fresnelConductor(cosThetaI, eta, k) {
+  const c = clamp01(cosThetaI);
+  const c2 = c * c;
+  const sin2 = (1 - c) * (1 + c);
+  const e2m1 = (eta - 1) * (eta + 1);
+  const ek2 = 4 * eta * eta * k * k;
+  const x = e2m1 - k * k + c2;
+  const s = Math.sqrt(x * x + ek2);
+  let a2, b2, a2mc2;
+  if (x > 0) {
+    b2 = ek2 / (2 * (s + x));
+    a2 = x + b2;
+    a2mc2 = e2m1 - k * k + b2;
+  } else {
+    a2 = s - x > 0 ? ek2 / (2 * (s - x)) : 0;
+    b2 = a2 - x;
+    a2mc2 = a2 - c2;
+  }
+  const a = Math.sqrt(a2);
+  const amc = a + c > 0 ? a2mc2 / (a + c) : 0;
+  const sDen = (a + c) * (a + c) + b2;
+  if (sDen === 0) return 0; // eta = 1, k = 0 at grazing: no interface
+  const rs = (amc * amc + b2) / sDen;
+  const ac = a * c;
+  const pNum = (ac - sin2) * (ac - sin2) + b2 * c2;
+  const pDen = (ac + sin2) * (ac + sin2) + b2 * c2;
+  const rp = pDen > 0 ? (rs * pNum) / pDen : rs;
+  return Math.min(0.5 * (rs + rp), 1);
+}
+
+// Gulbrandsen 2014, "Artist Friendly Metallic Fresnel", JCGT 3(4): a conductor's (n, k) from its
+// normal-incidence reflectance r and an edge tint g in [0, 1]. r is clamped below 1 (r = 1 has no finite n).
+const R_MAX = 0.999;
+const nMin = (r) => (1 - r) / (1 + r);
+const nMax = (r) => (1 + Math.sqrt(r)) / (1 - Math.sqrt(r));
+
+/** (n, k) that reproduce reflectance r at normal incidence, with edge tint g. */
+export function conductorIorFromF0EdgeTint(r, g) {
+  const rc = Math.min(Math.max(r, 0), R_MAX);
+  const gc = Math.min(Math.max(g, 0), 1);
+  const n = gc * nMin(rc) + (1 - gc) * nMax(rc);
+  const k2 = (rc * (n + 1) * (n + 1) - (n - 1) * (n - 1)) / (1 - rc);
+  return [n, Math.sqrt(Math.max(k2, 0))];
+}
+
+/** The edge tint g that, with r = f0FromIor(n, k), maps back to (n, k). */
+export function edgeTintFromConductorIor(n, k) {
+  const r = Math.min(f0FromIor(n, k), R_MAX);
+  return (nMax(r) - n) / (nMax(r) - nMin(r));
+}

@@ -1,0 +1,8 @@
+// The public math API: pure float64 JavaScript, the reference every GLSL chunk is tested against.
+export * from './color.js';
+export * from './fresnel.js';
+export * from './ndf.js';
+export * from './visibility.js';
+export * from './materials.js';
+export * from './optical-constants.js';
+export * from './zones.js';

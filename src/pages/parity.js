@@ -1,0 +1,36 @@
+// parity.html: runs the GLSL-vs-JS parity harness on this browser's GPU and shows the table.
+import '../styles.css';
+import * as THREE from 'three';
+import { PARITY_CASES, TOLERANCE } from '../core/parity-cases.js';
+import { runParity } from '../core/parity.js';
+import { showBlockingMessage } from '../core/notice.js';
+
+const out = document.getElementById('parity');
+const canvas = document.createElement('canvas');
+const gl = canvas.getContext('webgl2');
+if (!gl || !gl.getExtension('EXT_color_buffer_float')) {
+  showBlockingMessage(out, 'This check needs WebGL2 with float render targets.', 'Your browser did not provide them, so the shaders cannot be compared here.');
+} else {
+  const renderer = new THREE.WebGLRenderer({ canvas, context: gl });
+  const results = runParity(renderer, PARITY_CASES);
+  renderer.dispose();
+  (globalThis.__shadingLab ??= {}).parity = results;
+  const failed = results.filter((r) => !r.pass);
+  const summary = document.createElement('p');
+  summary.className = `parity-summary ${failed.length ? 'fail' : 'pass'}`;
+  summary.id = 'parity-summary';
+  summary.textContent = failed.length
+    ? `${failed.length} of ${results.length} functions differ from the reference beyond tolerance.`
+    : `All ${results.length} functions match the float64 reference within |g − j| ≤ ${TOLERANCE.atol} + ${TOLERANCE.rtol}·|j|, with no NaN, Inf or out-of-range value.`;
+  const table = document.createElement('table');
+  table.className = 'data-table';
+  table.innerHTML = '<thead><tr><th>Function</th><th>Inputs</th><th>Max abs error</th><th>Max rel error</th><th>Worst input (float32)</th><th>GPU / JS there</th><th>Beyond tol.</th><th>NaN/Inf/out of range</th></tr></thead>';
+  const body = table.createTBody();
+  for (const r of results) {
+    const tr = body.insertRow();
+    const cells = [r.name, r.count, r.maxAbs.toExponential(2), r.maxRel.toExponential(2), r.worst.args.map((x) => x.toPrecision(7)).join(', '), `${r.worst.gpu.toPrecision(7)} / ${r.worst.js.toPrecision(7)}`, r.failures, r.invalid];
+    cells.forEach((c) => (tr.insertCell().textContent = c));
+    tr.className = r.pass ? '' : 'fail';
+  }
+  out.append(summary, table);
+}

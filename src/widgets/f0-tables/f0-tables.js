@@ -1,0 +1,114 @@
+// f0-tables: the talk's two tables of normal-incidence reflectance, with swatches, the linear and sRGB
+// columns as printed and the sRGB recomputed from the linear column, and links that load each material
+// into the other Fresnel widgets.
+import { createWidgetShell } from '../../core/widget-shell.js';
+import { createStateGui } from '../../core/gui.js';
+import { rgbToHex } from '../../core/palettes.js';
+import { linearToSrgb } from '../../math/color.js';
+import { METALS, NON_METALS, TABLE_SOURCE, iorFromF0, measuredSource } from '../../math/index.js';
+
+export const schema = {
+  selected: { type: 'enum', options: Object.fromEntries([...METALS, ...NON_METALS].map((m) => [m.key, m.name])), default: 'gold', label: 'Selected' },
+  recomputed: { type: 'bool', default: true, label: 'Show recomputed sRGB' },
+};
+
+const ABOUT =
+  'Metals reflect a lot and in colour: their specular colour is all the colour they have. Non-metals reflect ' +
+  'little and without colour (their colour comes from the diffuse term). The recomputed column applies the ' +
+  'sRGB curve to the linear values: it agrees with the printed sRGB to the tables’ two-decimal rounding. ' +
+  'Use the links to load a material into the curves or onto the 3-D shape.';
+
+const fmt = (xs) => xs.map((x) => x.toFixed(2)).join(', ');
+
+function swatch(rgb, title) {
+  const s = document.createElement('span');
+  s.className = 'swatch big';
+  s.style.background = rgbToHex(rgb);
+  s.title = title;
+  return s;
+}
+
+function buildTable(caption, rows, state, { metal, onPick, onSelect }) {
+  const table = document.createElement('table');
+  table.className = 'data-table f0-table';
+  const cols = ['Material', 'F(0°) linear', 'F(0°) sRGB (talk)', ...(state.recomputed ? ['sRGB from linear'] : []), metal ? 'Measured n, k from' : 'IOR implied', 'Colour', 'Load into'];
+  table.innerHTML = `<caption>${caption}</caption><thead><tr>${cols.map((c) => `<th scope="col">${c}</th>`).join('')}</tr></thead>`;
+  const body = table.createTBody();
+  for (const m of rows) {
+    const tr = body.insertRow();
+    tr.dataset.material = m.key;
+    if (m.key === state.selected) tr.classList.add('selected');
+    const th = document.createElement('th');
+    th.scope = 'row';
+    th.textContent = m.name;
+    tr.append(th);
+    tr.insertCell().textContent = fmt(m.linear);
+    tr.insertCell().textContent = fmt(m.srgb);
+    const recomputed = m.linear.map(linearToSrgb);
+    if (state.recomputed) tr.insertCell().textContent = fmt(recomputed);
+    tr.insertCell().textContent = metal ? measuredSource(m.key) : `n ≈ ${iorFromF0(m.linear[0]).toFixed(3)}`;
+    const sw = tr.insertCell();
+    sw.append(swatch(m.srgb, `${m.name}: sRGB ${fmt(m.srgb)}`));
+    const links = tr.insertCell();
+    links.className = 'links';
+    for (const [target, text, params] of [
+      ['fresnel-curves', 'curves', `materials=${m.key}`],
+      ['fresnel-zones', '3-D', `material=${m.key}&mode=fresnel-nv`],
+    ]) {
+      const a = document.createElement('a');
+      a.href = `embed.html?w=${target}&${params}`;
+      a.textContent = text;
+      a.setAttribute('aria-label', `Load ${m.name} into ${target}`);
+      a.addEventListener('click', (e) => {
+        if (onPick?.(m.key, target)) e.preventDefault();
+      });
+      links.append(a);
+    }
+    tr.addEventListener('click', (e) => {
+      if (e.target.closest('a')) return;
+      onSelect(m.key);
+    });
+  }
+  return table;
+}
+
+/** options.onPick(materialKey, targetWidget) -> true when the page handled it (no navigation). */
+export function createF0Tables(container, initialState = {}, { onStateChange, onPick } = {}) {
+  const shell = createWidgetShell(container, { name: 'f0-tables', schema, initialState, about: ABOUT });
+  const holder = document.createElement('div');
+  holder.className = 'f0-tables';
+  shell.view.append(holder);
+  const source = document.createElement('p');
+  source.className = 'source';
+  source.textContent = `Tables: ${TABLE_SOURCE}. Swatches show the printed sRGB value.`;
+
+  const render = () => {
+    const onSelect = (key) => update({ selected: key });
+    holder.replaceChildren(
+      buildTable('Normal-incidence Fresnel for metals', METALS, shell.state, { metal: true, onPick, onSelect }),
+      buildTable('Normal-incidence Fresnel for non-metals', NON_METALS, shell.state, { metal: false, onPick, onSelect }),
+      source,
+    );
+  };
+
+  const update = (partial) => {
+    const changed = shell.apply(partial);
+    if (!changed.length) return;
+    gui.sync(shell.state);
+    render();
+    onStateChange?.(shell.state);
+  };
+  const gui = createStateGui(shell.controls, { schema, state: shell.state, onChange: update, title: 'F0 tables' });
+  render();
+
+  return {
+    update,
+    getState: () => shell.state,
+    dispose() {
+      gui.dispose();
+      shell.dispose();
+    },
+  };
+}
+
+export const widget = { name: 'f0-tables', schema, create: createF0Tables };

@@ -1,0 +1,46 @@
+// The curves the fresnel-curves widget plots: for each chosen material, exact Fresnel and Schlick's
+// approximation against the angle of incidence, one curve per RGB channel for metals.
+import { fresnelConductor, fresnelDielectric, fresnelSchlick, f0FromIor } from '../../math/fresnel.js';
+import { channelIor, isMetal, materialByKey } from '../../math/materials.js';
+
+export const ANGLE_STEP_DEG = 0.25;
+export const CHANNELS = ['R', 'G', 'B'];
+
+export function angleGrid(step = ANGLE_STEP_DEG) {
+  const n = Math.round(90 / step) + 1;
+  return Float64Array.from({ length: n }, (_, i) => i * step);
+}
+
+/** [{ key, name, metal, channel (0..2 or null), eta, k }] for the chosen materials. */
+export function curveSpecs({ materials, conductor, ior }) {
+  const specs = [];
+  for (const key of materials) {
+    if (key === 'custom') {
+      specs.push({ key, name: `Dielectric n = ${ior.toFixed(2)}`, metal: false, channel: null, eta: ior, k: 0 });
+      continue;
+    }
+    const m = materialByKey(key);
+    const iors = channelIor(key, conductor);
+    if (isMetal(key)) iors.forEach(([eta, k], channel) => specs.push({ key, name: m.name, metal: true, channel, eta, k }));
+    else specs.push({ key, name: m.name, metal: false, channel: null, eta: iors[0][0], k: 0 });
+  }
+  return specs;
+}
+
+/** Exact, Schlick (with the exact curve's own F0) and Schlick − exact, sampled at `angles` (degrees). */
+export function evaluateCurve(spec, angles) {
+  const f0 = f0FromIor(spec.eta, spec.k);
+  const exact = new Float64Array(angles.length);
+  const schlick = new Float64Array(angles.length);
+  const error = new Float64Array(angles.length);
+  let maxAbs = 0;
+  let maxAt = 0;
+  angles.forEach((deg, i) => {
+    const c = Math.cos((deg * Math.PI) / 180);
+    exact[i] = spec.k > 0 ? fresnelConductor(c, spec.eta, spec.k) : fresnelDielectric(c, spec.eta);
+    schlick[i] = fresnelSchlick(f0, c);
+    error[i] = schlick[i] - exact[i];
+    if (Math.abs(error[i]) > Math.abs(maxAbs)) [maxAbs, maxAt] = [error[i], deg];
+  });
+  return { f0, exact, schlick, error, maxError: maxAbs, maxErrorAt: maxAt };
+}

@@ -1,0 +1,309 @@
+// fresnel-zones: the talk's live demo. A shape under a light the user drags; the glass Fresnel of n·v,
+// the zones of n·v, the zones of l·h, and the l·h zones weighted by the rest of the BRDF, with the share
+// of covered pixels (or of reflected light) in each zone summed on the GPU.
+import * as THREE from 'three';
+import { createWidgetShell } from '../../core/widget-shell.js';
+import { createStateGui } from '../../core/gui.js';
+import { createViewport } from '../../core/viewport.js';
+import { createGpuSum, floatTarget } from '../../core/gpu-sum.js';
+import { assembleGlsl } from '../../core/glsl.js';
+import { SHADER_CHUNKS } from '../../core/shader-chunks.js';
+import { attachLightControl, lightDirFromAngles } from '../../core/light-control.js';
+import { attachProbe, angleText, probeAngles } from '../../core/probe.js';
+import { createToolbar, canvasToPng, downloadCsv } from '../../core/export.js';
+import { ZONE_LABELS, ZONE_PALETTES, hexToRgb } from '../../core/palettes.js';
+import { METALS, NON_METALS, fresnelParams, materialByKey } from '../../math/materials.js';
+import { fresnelConductor, fresnelDielectric, fresnelSchlick } from '../../math/fresnel.js';
+import { ndfGGX } from '../../math/ndf.js';
+import { visibilitySmithGGXCorrelated } from '../../math/visibility.js';
+import { fresnelZone, sphereZoneFractions } from '../../math/zones.js';
+import { srgbToLinear } from '../../math/color.js';
+import { SHAPES, createShapeGeometry } from './shapes.js';
+
+const MODES = {
+  'fresnel-nv': 'Fresnel reflectance of n·v',
+  'zones-nv': 'Zones of n·v',
+  'zones-lh': 'Zones of l·h',
+  'zones-lh-weighted': 'Zones of l·h × rest of BRDF',
+};
+
+export const schema = {
+  mode: { type: 'enum', options: MODES, default: 'fresnel-nv', label: 'Mode' },
+  shape: { type: 'enum', options: SHAPES, default: 'sphere', label: 'Shape' },
+  camera: { type: 'enum', options: { orthographic: 'Orthographic', perspective: 'Perspective' }, default: 'orthographic', label: 'Camera' },
+  material: {
+    type: 'enum',
+    options: Object.fromEntries([...NON_METALS, ...METALS].map((m) => [m.key, m.name])),
+    default: 'glass-low',
+    label: 'Material',
+  },
+  conductor: { type: 'enum', options: { 'f0-tint': 'Talk F0 + measured edge tint', measured: 'Measured n, k' }, default: 'f0-tint', label: 'Metal n, k' },
+  fresnel: { type: 'enum', options: { exact: 'Exact', schlick: 'Schlick' }, default: 'exact', label: 'Fresnel' },
+  alpha: { type: 'number', min: 0.01, max: 1, step: 0.01, default: 0.3, label: 'GGX α (roughness)' },
+  exposure: { type: 'number', min: 0.1, max: 10, step: 0.1, default: 1, label: 'Exposure' },
+  lightTheta: { type: 'number', min: 0, max: 180, step: 0.1, default: 60, label: 'Light θ from view', unit: '°' },
+  lightPhi: { type: 'number', min: -180, max: 180, step: 0.1, default: 35, label: 'Light φ around view', unit: '°' },
+  palette: { type: 'enum', options: { talk: 'Talk', cb: 'Colour-blind safe' }, default: 'talk', label: 'Zone colours' },
+};
+
+const ABOUT =
+  'Drag on the picture (or focus it and use the arrow keys) to move the light; the ring marks light at 90° ' +
+  'from the view. Start with the glass Fresnel of n·v: dark centre, bright rim. Then compare the zones of n·v ' +
+  'with the zones of l·h: by l·h the whole object can turn yellow or red, yet once weighted by the rest of the ' +
+  'BRDF the light that actually reaches the eye is mostly green. Hover the surface to probe it.';
+
+const STATS_MAX = 512; // long side of the zone-statistics image, in pixels
+
+function defines(state, stats) {
+  const d = {};
+  if (state.mode === 'fresnel-nv') d.SHOW_FRESNEL = true;
+  if (state.mode.startsWith('zones-lh')) d.ZONE_BY_LH = true;
+  if (state.mode === 'zones-lh-weighted') d.WEIGHTED = true;
+  if (d.SHOW_FRESNEL && state.fresnel === 'schlick') d.FRESNEL_SCHLICK = true;
+  if (d.SHOW_FRESNEL && fresnelParams(state.material).metal) d.METAL = true;
+  if (stats) {
+    d.STATS_PASS = true;
+    delete d.SHOW_FRESNEL; // stats need only the zones
+    delete d.FRESNEL_SCHLICK;
+    delete d.METAL;
+  }
+  return d;
+}
+
+export function createFresnelZones(container, initialState = {}, { onStateChange } = {}) {
+  const shell = createWidgetShell(container, { name: 'fresnel-zones', schema, initialState, about: ABOUT });
+  const viewCol = document.createElement('div');
+  viewCol.className = 'view-column';
+  shell.view.append(viewCol);
+
+  const uniforms = {
+    uLightDir: { value: new THREE.Vector3() },
+    uEta: { value: new THREE.Vector3() },
+    uK: { value: new THREE.Vector3() },
+    uF0: { value: new THREE.Vector3() },
+    uAlpha: { value: 0.3 },
+    uExposure: { value: 1 },
+    uZoneColors: { value: [new THREE.Color(), new THREE.Color(), new THREE.Color()] },
+  };
+  const materials = new Map(); // program variants, kept for reuse
+  const materialFor = (d) => {
+    const key = JSON.stringify(d);
+    if (!materials.has(key)) {
+      materials.set(key, new THREE.ShaderMaterial({
+        glslVersion: THREE.GLSL3,
+        uniforms,
+        vertexShader: SHADER_CHUNKS['surface.vert.glsl'],
+        fragmentShader: assembleGlsl(SHADER_CHUNKS['fresnel-zones.frag.glsl'], { defines: d }),
+      }));
+    }
+    return materials.get(key);
+  };
+
+  const scene = new THREE.Scene();
+  scene.background = new THREE.Color('#22252b');
+  const mesh = new THREE.Mesh(createShapeGeometry(shell.state.shape), undefined);
+  scene.add(mesh);
+  const cameras = { orthographic: new THREE.OrthographicCamera(), perspective: new THREE.PerspectiveCamera(30, 1, 0.1, 20) };
+  cameras.perspective.position.set(0, 0, 1.1 / Math.sin((15 * Math.PI) / 180));
+  cameras.orthographic.position.set(0, 0, 5);
+  const fit = (w, h) => {
+    const aspect = w / h;
+    const half = 1.1;
+    const o = cameras.orthographic;
+    [o.left, o.right, o.top, o.bottom] = aspect >= 1 ? [-half * aspect, half * aspect, half, -half] : [-half, half, half / aspect, -half / aspect];
+    o.near = 0.1;
+    o.far = 10;
+    o.updateProjectionMatrix();
+    cameras.perspective.aspect = aspect;
+    cameras.perspective.fov = aspect >= 1 ? 30 : (2 * Math.atan(Math.tan((15 * Math.PI) / 180) / aspect) * 180) / Math.PI;
+    cameras.perspective.updateProjectionMatrix();
+  };
+  const camera = () => cameras[shell.state.camera];
+
+  let gpuSum = null;
+  let statsTarget = null;
+  let zoneShares = [0, 0, 0];
+  let lightControl = null;
+
+  const legend = document.createElement('div');
+  legend.className = 'zone-legend';
+
+  const computeStats = (renderer) => {
+    const size = renderer.getDrawingBufferSize(new THREE.Vector2());
+    const scale = Math.min(1, STATS_MAX / Math.max(size.x, size.y));
+    const [w, h] = [Math.max(1, Math.round(size.x * scale)), Math.max(1, Math.round(size.y * scale))];
+    if (!statsTarget || statsTarget.width !== w || statsTarget.height !== h) {
+      statsTarget?.dispose();
+      statsTarget = floatTarget(w, h, true);
+    }
+    mesh.material = materialFor(defines(shell.state, true));
+    const background = scene.background;
+    scene.background = null;
+    renderer.setRenderTarget(statsTarget);
+    renderer.setClearColor(0x000000, 0);
+    renderer.clear();
+    renderer.render(scene, camera());
+    renderer.setRenderTarget(null);
+    scene.background = background;
+    const [z0, z1, z2] = gpuSum.sum(statsTarget);
+    const total = z0 + z1 + z2;
+    zoneShares = total > 0 ? [z0 / total, z1 / total, z2 / total] : [0, 0, 0];
+  };
+
+  const updateUniforms = () => {
+    const s = shell.state;
+    uniforms.uLightDir.value.set(...lightDirFromAngles(s.lightTheta, s.lightPhi));
+    const p = fresnelParams(s.material, s.conductor);
+    uniforms.uEta.value.set(...p.eta);
+    uniforms.uK.value.set(...p.k);
+    uniforms.uF0.value.set(...p.f0);
+    uniforms.uAlpha.value = s.alpha;
+    uniforms.uExposure.value = s.exposure;
+    ZONE_PALETTES[s.palette].colors.forEach((hex, i) => {
+      uniforms.uZoneColors.value[i].setRGB(...hexToRgb(hex).map(srgbToLinear)); // the shader works in linear
+    });
+  };
+
+  let statsDirty = true;
+  const draw = (renderer) => {
+    updateUniforms();
+    if (statsDirty) {
+      computeStats(renderer);
+      statsDirty = false;
+      renderLegend();
+    }
+    mesh.material = materialFor(defines(shell.state, false));
+    renderer.render(scene, camera());
+    lightControl?.draw();
+  };
+
+  const viewport = createViewport(viewCol, {
+    draw,
+    onResize: (w, h) => {
+      fit(w, h);
+      statsDirty = true;
+    },
+    label: 'Fresnel zones view',
+  });
+
+  const describe = (n, v) => {
+    const s = shell.state;
+    const l = lightDirFromAngles(s.lightTheta, s.lightPhi);
+    const a = probeAngles(n, l, v);
+    const p = fresnelParams(s.material, s.conductor);
+    const exact = p.eta.map((eta, i) => (p.metal ? fresnelConductor(a.nv, eta, p.k[i]) : fresnelDielectric(a.nv, eta)));
+    const schlick = p.f0.map((f0) => fresnelSchlick(f0, a.nv));
+    const rgb = (xs) => (p.metal ? xs.map((x) => x.toFixed(4)).join(', ') : xs[0].toFixed(4));
+    const zoneOf = (c) => ZONE_LABELS[fresnelZone(c)].split(' (')[0];
+    return [
+      ['n·v', angleText(a.nv)],
+      ['n·l', angleText(a.nl)],
+      ['n·h', angleText(a.nh)],
+      ['l·h', angleText(a.lh)],
+      ['F(n·v) exact', rgb(exact)],
+      ['F(n·v) Schlick', rgb(schlick)],
+      ['zone of n·v / l·h', `${zoneOf(a.nv)} / ${zoneOf(a.lh)}`],
+      ['D GGX(n·h)', ndfGGX(a.nh, s.alpha).toPrecision(4)],
+      ['V Smith corr.', visibilitySmithGGXCorrelated(a.nl, a.nv, s.alpha).toPrecision(4)],
+      ['π·D·V/4·(n·l)', ((Math.PI * ndfGGX(a.nh, s.alpha) * visibilitySmithGGXCorrelated(a.nl, a.nv, s.alpha)) / 4 * Math.max(a.nl, 0)).toPrecision(4)],
+    ];
+  };
+
+  let probe = null;
+  if (viewport) {
+    gpuSum = createGpuSum(viewport.renderer);
+    lightControl = attachLightControl(viewport.canvas, viewport.holder, {
+      get: () => shell.state,
+      set: (partial) => update(partial),
+    });
+    probe = attachProbe(viewport.canvas, viewCol, {
+      getMesh: () => mesh,
+      getCamera: camera,
+      describe,
+      isBusy: () => lightControl.dragging,
+    });
+    createToolbar(viewCol, [
+      { label: 'Save PNG', onClick: () => { draw(viewport.renderer); canvasToPng(viewport.canvas, `fresnel-zones-${shell.state.mode}.png`); } },
+      {
+        label: 'Save CSV',
+        onClick: () => downloadCsv([{ name: 'zone', values: ZONE_LABELS }, { name: 'share', values: zoneShares }], `fresnel-zones-${shell.state.mode}.csv`),
+      },
+    ]);
+  }
+  viewCol.append(legend);
+
+  function renderLegend() {
+    const s = shell.state;
+    const weighted = s.mode === 'zones-lh-weighted';
+    const analytic = s.shape === 'sphere' && s.camera === 'orthographic' && !s.mode.startsWith('zones-lh') ? sphereZoneFractions() : null;
+    const what = weighted ? 'share of reflected light' : 'share of covered pixels';
+    legend.replaceChildren();
+    const head = document.createElement('div');
+    head.className = 'zone-legend-head';
+    head.textContent = `Zones of ${s.mode.startsWith('zones-lh') ? 'l·h' : 'n·v'} — ${what}${analytic ? ' (analytic for this sphere)' : ''}`;
+    legend.append(head);
+    ZONE_PALETTES[s.palette].colors.forEach((color, i) => {
+      const row = document.createElement('div');
+      row.className = 'zone-row';
+      row.dataset.zone = i;
+      const sw = document.createElement('span');
+      sw.className = 'swatch';
+      sw.style.background = color;
+      const label = document.createElement('span');
+      label.textContent = ZONE_LABELS[i];
+      const pct = document.createElement('span');
+      pct.className = 'pct';
+      pct.textContent = `${(zoneShares[i] * 100).toFixed(1)}%${analytic ? ` (${(analytic[i] * 100).toFixed(1)}%)` : ''}`;
+      row.append(sw, label, pct);
+      legend.append(row);
+    });
+    if (viewport) {
+      const m = materialByKey(s.material).name;
+      viewport.canvas.setAttribute(
+        'aria-label',
+        `${SHAPES[s.shape]}, ${MODES[s.mode]}, material ${m}, light ${s.lightTheta.toFixed(0)}° from the view. ` +
+          `Zones: ${zoneShares.map((z, i) => `${ZONE_LABELS[i].split(' (')[0]} ${(z * 100).toFixed(1)}%`).join(', ')}.`,
+      );
+    }
+  }
+  if (!viewport) renderLegend();
+
+  const update = (partial) => {
+    const before = shell.state.shape;
+    const changed = shell.apply(partial);
+    if (!changed.length) return;
+    if (shell.state.shape !== before) {
+      mesh.geometry.dispose();
+      mesh.geometry = createShapeGeometry(shell.state.shape);
+    }
+    const cosmetic = changed.every((k) => k === 'palette' || k === 'exposure' || k === 'fresnel' || k === 'conductor');
+    statsDirty ||= !cosmetic;
+    if (changed.includes('palette')) renderLegend();
+    gui.sync(shell.state);
+    viewport?.invalidate();
+    onStateChange?.(shell.state);
+  };
+  const gui = createStateGui(shell.controls, { schema, state: shell.state, onChange: update, title: 'Fresnel zones' });
+
+  return {
+    update,
+    getState: () => shell.state,
+    /** Zone shares last measured on the GPU (for tests and exercises). */
+    getZoneShares: () => [...zoneShares],
+    /** Number of distinct shader programs compiled so far, and the source of the one in use. */
+    getProgramInfo: () => ({ variants: materials.size, fragmentShader: mesh.material?.fragmentShader ?? '' }),
+    dispose() {
+      gui.dispose();
+      probe?.dispose();
+      lightControl?.dispose();
+      gpuSum?.dispose();
+      statsTarget?.dispose();
+      materials.forEach((m) => m.dispose());
+      mesh.geometry.dispose();
+      viewport?.dispose();
+      shell.dispose();
+    },
+  };
+}
+
+export const widget = { name: 'fresnel-zones', schema, create: createFresnelZones };

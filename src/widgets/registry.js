@@ -1,0 +1,20 @@
+// Every widget by name, loaded only when opened (each is its own chunk).
+export const WIDGETS = {
+  'fresnel-curves': {
+    title: 'Fresnel curves',
+    summary: 'Reflectance against angle, exact and Schlick, and the error of Schlick.',
+    load: () => import('./fresnel-curves/fresnel-curves.js'),
+  },
+  'fresnel-zones': {
+    title: 'Fresnel zones',
+    summary: 'The talk’s live demo: Fresnel over a 3-D shape, zones of n·v and of l·h, weighted by the BRDF.',
+    load: () => import('./fresnel-zones/fresnel-zones.js'),
+  },
+  'f0-tables': {
+    title: 'F0 tables',
+    summary: 'Normal-incidence reflectance of metals and non-metals, linear and sRGB, with swatches.',
+    load: () => import('./f0-tables/f0-tables.js'),
+  },
+};
+
+export const isWidgetName = (name) => Object.hasOwn(WIDGETS, name);

@@ -1,0 +1,93 @@
+// Shared by the browser tests and the screenshot script: find Chromium, build the app, serve it under a
+// sub-path on 127.0.0.1, open pages that record every console error and page error.
+import { execFileSync } from 'node:child_process';
+import { existsSync, mkdtempSync, readFileSync, rmSync, statSync } from 'node:fs';
+import { createServer } from 'node:http';
+import { homedir, tmpdir } from 'node:os';
+import { extname, join, normalize, resolve } from 'node:path';
+import puppeteer from 'puppeteer-core';
+import { build } from 'vite';
+
+export const ROOT = resolve(import.meta.dirname, '../..');
+export const SUB_PATH = '/course/shading-lab/'; // served under a sub-path: the build must not assume '/'
+export const CHROME_HINT = 'No Chromium found: set CHROME_PATH, or install one (Debian/Ubuntu: apt-get install -y chromium).';
+
+export function findChrome() {
+  if (process.env.CHROME_PATH && existsSync(process.env.CHROME_PATH)) return process.env.CHROME_PATH;
+  for (const name of ['chromium', 'chromium-browser', 'google-chrome', 'google-chrome-stable']) {
+    try {
+      return execFileSync('which', [name], { encoding: 'utf8' }).trim();
+    } catch {
+      /* not on PATH */
+    }
+  }
+  const cache = join(homedir(), '.cache/puppeteer/chrome');
+  if (existsSync(cache)) {
+    const found = execFileSync('find', [cache, '-type', 'f', '-name', 'chrome', '-perm', '-u+x'], { encoding: 'utf8' }).trim().split('\n')[0];
+    if (found) return found;
+  }
+  return null;
+}
+
+export async function buildApp(outDir = join(ROOT, 'dist')) {
+  await build({ root: ROOT, logLevel: 'warn', build: { outDir, emptyOutDir: true } });
+  return outDir;
+}
+
+const TYPES = { '.html': 'text/html', '.js': 'text/javascript', '.css': 'text/css', '.svg': 'image/svg+xml', '.png': 'image/png', '.json': 'application/json', '.hdr': 'application/octet-stream' };
+
+/** Serves `dir` at SUB_PATH; everything outside it is a 404. Resolves to { url, close }. */
+export function serveStatic(dir) {
+  const server = createServer((req, res) => {
+    const path = decodeURIComponent(new URL(req.url, 'http://x').pathname);
+    if (!path.startsWith(SUB_PATH)) return void res.writeHead(404).end();
+    let file = normalize(join(dir, path.slice(SUB_PATH.length)));
+    if (!file.startsWith(dir)) return void res.writeHead(403).end();
+    if (existsSync(file) && statSync(file).isDirectory()) file = join(file, 'index.html');
+    if (!existsSync(file)) return void res.writeHead(404).end();
+    res.writeHead(200, { 'content-type': TYPES[extname(file)] ?? 'application/octet-stream' });
+    res.end(readFileSync(file));
+  });
+  return new Promise((ok) => {
+    server.listen(0, '127.0.0.1', () => ok({ url: `http://127.0.0.1:${server.address().port}${SUB_PATH}`, close: () => server.close() }));
+  });
+}
+
+export async function launchBrowser() {
+  const executablePath = findChrome();
+  if (!executablePath) throw new Error(CHROME_HINT);
+  const userDataDir = mkdtempSync(join(tmpdir(), 'shading-lab-chrome-'));
+  const browser = await puppeteer.launch({
+    executablePath,
+    headless: true,
+    userDataDir,
+    args: ['--no-sandbox', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run',
+      '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist'],
+  });
+  browser.on('disconnected', () => {
+    try {
+      rmSync(userDataDir, { recursive: true, force: true, maxRetries: 5, retryDelay: 100 });
+    } catch {
+      /* Chromium may still be writing; the temp dir is left to the OS */
+    }
+  });
+  return browser;
+}
+
+/** Opens `path` (relative to the served app); page.errors collects console errors and page errors. */
+export async function openPage(browser, baseUrl, path, { width = 1280, height = 900 } = {}) {
+  const page = await browser.newPage();
+  page.errors = [];
+  page.on('console', (m) => m.type() === 'error' && page.errors.push(`console: ${m.text()}`));
+  page.on('pageerror', (e) => page.errors.push(`page: ${e.message}`));
+  page.on('requestfailed', (r) => page.errors.push(`request failed: ${r.url()}`));
+  await page.setViewport({ width, height });
+  await page.goto(new URL(path, baseUrl).href, { waitUntil: 'load' });
+  return page;
+}
+
+/** Waits until the page has drawn and then been idle for a few animation frames. */
+export async function settle(page, ms = 300) {
+  await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
+  await new Promise((r) => setTimeout(r, ms));
+}

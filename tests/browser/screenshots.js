@@ -1,0 +1,31 @@
+// npm run screenshots: builds the app and writes a screenshot of every page to docs/screenshots/.
+import { mkdirSync } from 'node:fs';
+import { join } from 'node:path';
+import { ROOT, buildApp, launchBrowser, openPage, serveStatic, settle } from './harness.js';
+
+const SHOTS = [
+  ['landing', 'index.html', { fullPage: true }],
+  ['fresnel-page', 'fresnel.html', { fullPage: true }],
+  ['fresnel-curves', 'embed.html?w=fresnel-curves&materials=gold,copper,aluminum,water,diamond'],
+  ['fresnel-zones-nv', 'embed.html?w=fresnel-zones&mode=zones-nv'],
+  ['fresnel-zones-lh', 'embed.html?w=fresnel-zones&mode=zones-lh&shape=torusknot&lightTheta=140'],
+  ['fresnel-zones-weighted', 'embed.html?w=fresnel-zones&mode=zones-lh-weighted&shape=torusknot&lightTheta=140'],
+  ['fresnel-zones-gold-teapot', 'embed.html?w=fresnel-zones&material=gold&shape=teapot&camera=perspective'],
+  ['f0-tables', 'embed.html?w=f0-tables'],
+  ['bad-url', 'embed.html?w=fresnel-zones&mode=banana&lightTheta=400&alpha=x'],
+  ['parity', 'parity.html', { fullPage: true }],
+];
+
+const out = join(ROOT, 'docs/screenshots');
+mkdirSync(out, { recursive: true });
+const server = await serveStatic(await buildApp());
+const browser = await launchBrowser();
+for (const [name, path, opts = {}] of SHOTS) {
+  const page = await openPage(browser, server.url, path);
+  await settle(page, 800);
+  await page.screenshot({ path: join(out, `${name}.png`), ...opts });
+  console.log(`${name}.png${page.errors.length ? `  errors: ${page.errors.join(' | ')}` : ''}`);
+  await page.close();
+}
+await browser.close();
+server.close();
