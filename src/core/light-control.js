@@ -29,8 +29,9 @@ export function attachLightControl(canvas, overlayParent, { get, set }) {
     const R = ringRadius(w, h);
     const { lightTheta, lightPhi } = get();
     const r = (lightTheta / 90) * R;
-    const x = w / 2 + r * Math.cos(lightPhi * DEG);
-    const y = h / 2 - r * Math.sin(lightPhi * DEG);
+    const clampTo = (v, max) => Math.min(Math.max(v, 12), max - 12); // beyond 90° the marker may leave the canvas
+    const x = clampTo(w / 2 + r * Math.cos(lightPhi * DEG), w);
+    const y = clampTo(h / 2 - r * Math.sin(lightPhi * DEG), h);
     ring.setAttribute('cx', w / 2);
     ring.setAttribute('cy', h / 2);
     ring.setAttribute('r', R);
@@ -41,8 +42,8 @@ export function attachLightControl(canvas, overlayParent, { get, set }) {
     sun.setAttribute('cx', x);
     sun.setAttribute('cy', y);
     sun.classList.toggle('behind', lightTheta > 90);
-    label.setAttribute('x', x + 10);
-    label.setAttribute('y', y - 10);
+    label.setAttribute('x', x > w - 110 ? x - 100 : x + 10);
+    label.setAttribute('y', y < 24 ? y + 22 : y - 10);
     label.textContent = `light θ ${lightTheta.toFixed(0)}°`;
   };
 

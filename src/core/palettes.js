@@ -6,19 +6,12 @@ export const ZONE_PALETTES = {
 };
 export const ZONE_LABELS = ['barely changes (< 45°)', 'changes somewhat (45–75°)', 'goes rapidly to 1 (> 75°)'];
 
-/** Okabe-Ito hues for the red, green and blue channels of coloured (metal) reflectance. */
-export const CHANNEL_COLORS = ['#d55e00', '#009e73', '#0072b2'];
-/** Okabe-Ito hues for single-curve (achromatic) materials. */
-export const SERIES_COLORS = ['#000000', '#e69f00', '#cc79a7', '#56b4e9', '#7f7f7f', '#8c564b'];
+/** Okabe-Ito hues (yellow left out: too light on white) for one series per material. */
+export const SERIES_COLORS = ['#0072b2', '#d55e00', '#009e73', '#cc79a7', '#e69f00', '#56b4e9', '#000000'];
 
 export function withAlpha(hex, alpha) {
   const a = Math.round(alpha * 255).toString(16).padStart(2, '0');
   return `${hex}${a}`;
-}
-
-/** The hex colour darkened towards black by `amount` in [0, 1]. */
-export function darken(hex, amount) {
-  return rgbToHex(hexToRgb(hex).map((c) => c * (1 - amount)));
 }
 
 /** [r, g, b] in [0, 1] -> '#rrggbb'. */

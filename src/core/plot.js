@@ -30,14 +30,34 @@ function bandsPlugin(getBands) {
   };
 }
 
+/** Draws text labels at data coordinates: [{ x, y, text, color }]. */
+function annotationsPlugin(getAnnotations) {
+  return {
+    hooks: {
+      draw: (u) => {
+        const { ctx } = u;
+        ctx.save();
+        ctx.font = `bold ${11 * uPlot.pxRatio}px system-ui, sans-serif`;
+        ctx.textBaseline = 'bottom';
+        for (const a of getAnnotations()) {
+          ctx.fillStyle = a.color;
+          ctx.fillText(a.text, u.valToPos(a.x, 'x', true), u.valToPos(a.y, 'y', true) - 2 * uPlot.pxRatio);
+        }
+        ctx.restore();
+      },
+    },
+  };
+}
+
 const axis = (label, extra = {}) => ({ label, labelSize: 22, size: 48, stroke: '#333', grid: { stroke: '#0000001a' }, ...extra });
 
 /**
  * spec: { title, xLabel, yLabel, x: { min, max }, y: { min, max } | null, series: [{ label, stroke, dash, width }],
- *         data: [xs, ...ys], bands: [...], filename }
+ *         data: [xs, ...ys], bands: [...], annotations: [...], filename, legend = true }
+ * options.onCursor(index | null): the data index under the pointer, for a readout of the page's own.
  * Returns { setData(spec), dispose() }; setData rebuilds when the series change.
  */
-export function createPlot(container, spec) {
+export function createPlot(container, spec, { onCursor } = {}) {
   const wrap = document.createElement('figure');
   wrap.className = 'plot';
   const caption = document.createElement('figcaption');
@@ -68,9 +88,10 @@ export function createPlot(container, spec) {
         points: { show: false },
         value: (_, v) => (v == null ? '—' : v.toFixed(4)),
       }))],
-      legend: { live: true },
+      legend: { show: current.legend ?? true, live: true },
       cursor: { drag: { x: false, y: false } },
-      plugins: [bandsPlugin(() => current.bands ?? [])],
+      hooks: { setCursor: [(p) => onCursor?.(p.cursor.idx ?? null)] },
+      plugins: [bandsPlugin(() => current.bands ?? []), annotationsPlugin(() => current.annotations ?? [])],
     };
     u = new uPlot(opts, current.data, holder);
   };

@@ -3,7 +3,7 @@
 import { createWidgetShell } from '../../core/widget-shell.js';
 import { createStateGui } from '../../core/gui.js';
 import { createPlot } from '../../core/plot.js';
-import { CHANNEL_COLORS, SERIES_COLORS, ZONE_PALETTES, darken, withAlpha } from '../../core/palettes.js';
+import { SERIES_COLORS, ZONE_PALETTES, withAlpha } from '../../core/palettes.js';
 import { FRESNEL_ZONE_BOUNDS_DEG } from '../../math/zones.js';
 import { METALS, NON_METALS } from '../../math/materials.js';
 import { CHANNELS, angleGrid, curveSpecs, evaluateCurve } from './curve-data.js';
@@ -34,17 +34,13 @@ const ABOUT =
   'approximation (dashed) built from the same F(0°). Metals get one curve per channel (R, G, B). Try a metal ' +
   'with <em>Measured n, k</em>: its F(0°) no longer matches the talk’s table. Hover a plot to read values.';
 
-const channelStroke = (spec, metalIndex, dielectricIndex) =>
-  spec.metal ? darken(CHANNEL_COLORS[spec.channel], Math.min(metalIndex * 0.35, 0.7)) : SERIES_COLORS[dielectricIndex % SERIES_COLORS.length];
-
 function buildSeries(state) {
   const angles = angleGrid();
   const specs = curveSpecs(state);
-  const metalKeys = [...new Set(specs.filter((s) => s.metal).map((s) => s.key))];
-  const dielectricKeys = specs.filter((s) => !s.metal).map((s) => s.key);
+  const materialOrder = [...new Set(specs.map((s) => s.key))];
   const curves = specs.map((spec) => {
     const label = spec.metal ? `${spec.name} ${CHANNELS[spec.channel]}` : spec.name;
-    const stroke = channelStroke(spec, metalKeys.indexOf(spec.key), dielectricKeys.indexOf(spec.key));
+    const stroke = SERIES_COLORS[materialOrder.indexOf(spec.key) % SERIES_COLORS.length];
     return { spec, label, stroke, ...evaluateCurve(spec, angles) };
   });
   const zoneColors = ZONE_PALETTES[state.palette].colors;
@@ -72,9 +68,13 @@ function reflectanceSpec({ angles, curves, bands }, state) {
       data.push(c.schlick);
     }
   }
+  const at = Math.round(4 / (angles[1] - angles[0]));
+  const annotations = curves
+    .filter((c) => c.spec.metal)
+    .map((c, i) => ({ x: 2 + 5 * (i % 3), y: c.exact[at], text: CHANNELS[c.spec.channel], color: c.stroke }));
   return {
-    title: 'Fresnel reflectance F(θ)', ...xAxis, yLabel: 'Reflectance (linear)', y: { min: 0, max: 1 },
-    series, data, bands, filename: 'fresnel-reflectance', height: 320,
+    title: 'Fresnel reflectance F(θ) — solid: exact, dashed: Schlick', ...xAxis, yLabel: 'Reflectance (linear)',
+    y: { min: 0, max: 1 }, series, data, bands, annotations, legend: false, filename: 'fresnel-reflectance', height: 320,
   };
 }
 
@@ -82,28 +82,33 @@ function errorSpec({ angles, curves, bands }) {
   return {
     title: 'Schlick − exact', ...xAxis, yLabel: 'Error (reflectance)', y: null,
     series: curves.map((c) => ({ label: c.label, stroke: c.stroke, width: 1.5 })),
-    data: [angles, ...curves.map((c) => c.error)], bands, filename: 'fresnel-schlick-error', height: 220,
+    data: [angles, ...curves.map((c) => c.error)], bands, legend: false, filename: 'fresnel-schlick-error', height: 220,
   };
 }
 
-function renderSummary(el, curves) {
-  el.replaceChildren();
+/** The readout under the plots: per curve, the values at the angle under the pointer and Schlick's worst error. */
+function renderReadout(el, { angles, curves }, index) {
+  const i = index ?? angles.findIndex((a) => a >= 60);
+  const theta = angles[i];
   const table = document.createElement('table');
-  table.className = 'data-table compact';
-  table.innerHTML = '<caption>Per curve: exact F(0°), and Schlick’s largest error and where it sits</caption>' +
-    '<thead><tr><th scope="col">Curve</th><th scope="col">n</th><th scope="col">k</th><th scope="col">F(0°)</th><th scope="col">max |Schlick − exact|</th><th scope="col">at θ</th></tr></thead>';
-  const body = document.createElement('tbody');
+  table.className = 'data-table compact readout';
+  table.innerHTML =
+    `<caption>Values at θ = ${theta.toFixed(2)}° (move the pointer over a plot), and where Schlick is worst</caption>` +
+    '<thead><tr><th scope="col">Curve</th><th scope="col">n</th><th scope="col">k</th><th scope="col">F(0°)</th>' +
+    `<th scope="col">exact at ${theta.toFixed(1)}°</th><th scope="col">Schlick</th><th scope="col">max |Schlick − exact|</th><th scope="col">at θ</th></tr></thead>`;
+  const body = table.createTBody();
   for (const c of curves) {
-    const tr = document.createElement('tr');
-    for (const text of [c.label, c.spec.eta.toFixed(3), c.spec.k.toFixed(3), c.f0.toFixed(3), Math.abs(c.maxError).toFixed(4), `${c.maxErrorAt.toFixed(2)}°`]) {
-      const td = document.createElement('td');
-      td.textContent = text;
-      tr.append(td);
+    const tr = body.insertRow();
+    const name = tr.insertCell();
+    const sw = document.createElement('span');
+    sw.className = 'swatch';
+    sw.style.background = c.stroke;
+    name.append(sw, ` ${c.label}`);
+    for (const text of [c.spec.eta.toFixed(3), c.spec.k.toFixed(3), c.f0.toFixed(3), c.exact[i].toFixed(4), c.schlick[i].toFixed(4), Math.abs(c.maxError).toFixed(4), `${c.maxErrorAt.toFixed(2)}°`]) {
+      tr.insertCell().textContent = text;
     }
-    body.append(tr);
   }
-  table.append(body);
-  el.append(table);
+  el.replaceChildren(table);
 }
 
 export function createFresnelCurves(container, initialState = {}, { onStateChange } = {}) {
@@ -116,9 +121,10 @@ export function createFresnelCurves(container, initialState = {}, { onStateChang
   shell.view.append(summary);
 
   let data = buildSeries(shell.state);
-  const reflectance = createPlot(plots, reflectanceSpec(data, shell.state));
-  const error = createPlot(plots, errorSpec(data));
-  renderSummary(summary, data.curves);
+  const onCursor = (index) => renderReadout(summary, data, index);
+  const reflectance = createPlot(plots, reflectanceSpec(data, shell.state), { onCursor });
+  const error = createPlot(plots, errorSpec(data), { onCursor });
+  renderReadout(summary, data, null);
   const description = () =>
     `Fresnel reflectance against angle of incidence for ${data.curves.map((c) => c.label).join(', ') || 'no material'}.`;
   plots.setAttribute('aria-label', description());
@@ -127,7 +133,7 @@ export function createFresnelCurves(container, initialState = {}, { onStateChang
     data = buildSeries(shell.state);
     reflectance.setData(reflectanceSpec(data, shell.state));
     error.setData(errorSpec(data));
-    renderSummary(summary, data.curves);
+    renderReadout(summary, data, null);
     plots.setAttribute('aria-label', description());
   };
 
