@@ -74,14 +74,18 @@ export async function launchBrowser() {
   return browser;
 }
 
-/** Opens `path` (relative to the served app); page.errors collects console errors and page errors. */
-export async function openPage(browser, baseUrl, path, { width = 1280, height = 900 } = {}) {
+/**
+ * Opens `path` (relative to the served app); page.errors collects console errors and page errors.
+ * `beforeLoad(page)` runs before navigation (e.g. to install instrumentation).
+ */
+export async function openPage(browser, baseUrl, path, { width = 1280, height = 900, beforeLoad } = {}) {
   const page = await browser.newPage();
   page.errors = [];
   page.on('console', (m) => m.type() === 'error' && page.errors.push(`console: ${m.text()}`));
   page.on('pageerror', (e) => page.errors.push(`page: ${e.message}`));
   page.on('requestfailed', (r) => page.errors.push(`request failed: ${r.url()}`));
   await page.setViewport({ width, height });
+  await beforeLoad?.(page);
   await page.goto(new URL(path, baseUrl).href, { waitUntil: 'load' });
   return page;
 }

@@ -1,0 +1,190 @@
+// The Fresnel chapter in a real Chromium: pages, widgets, URL state, notices, zone shares, idling.
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { distinctColors, getState, launchBrowser, open, setControl, settle, shot, widget } from './helpers.js';
+import { sphereZoneFractions } from '../../src/math/zones.js';
+
+let browser;
+beforeAll(async () => {
+  browser = await launchBrowser();
+});
+afterAll(async () => {
+  await browser?.close();
+});
+
+const CANVAS = '.widget-fresnel-zones canvas';
+
+describe('pages load cleanly', () => {
+  for (const path of ['index.html', 'fresnel.html', 'embed.html?w=fresnel-curves', 'embed.html?w=fresnel-zones', 'embed.html?w=f0-tables']) {
+    it(path, async () => {
+      const page = await open(browser, path);
+      if (path.includes('w=')) await widget(page, new URL(path, 'http://x').searchParams.get('w'));
+      else await settle(page, 1500);
+      expect(await page.$('h1, .widget')).not.toBeNull();
+      if (path.includes('zones') || path === 'fresnel.html') {
+        expect(await distinctColors(page, await shot(page, CANVAS))).toBeGreaterThan(20);
+      }
+      expect(page.errors).toEqual([]);
+      await page.close();
+    });
+  }
+
+  it('the landing page links every live page and widget', async () => {
+    const page = await open(browser, 'index.html');
+    await settle(page);
+    const links = await page.$$eval('#chapters a', (as) => as.map((a) => a.getAttribute('href')));
+    expect(links).toEqual(expect.arrayContaining(['fresnel.html', 'embed.html?w=fresnel-curves', 'embed.html?w=fresnel-zones', 'embed.html?w=f0-tables']));
+    expect(await page.$$eval('.chapter.coming', (els) => els.length)).toBe(9);
+    await page.close();
+  });
+
+  it('an unknown widget gets a message, not a blank page', async () => {
+    const page = await open(browser, 'embed.html?w=nope');
+    await settle(page);
+    expect(await page.$eval('.blocking-message', (el) => el.textContent)).toMatch(/no widget called/);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+});
+
+describe('fresnel-zones', () => {
+  it('a GUI change changes the pixels, and the URL holds the new state', async () => {
+    const page = await open(browser, 'embed.html?w=fresnel-zones');
+    await widget(page, 'fresnel-zones');
+    const before = await shot(page, CANVAS);
+    await setControl(page, 'Mode', 'Zones of n·v');
+    expect(await shot(page, CANVAS)).not.toBe(before);
+    await setControl(page, 'Shape', 'Torus knot');
+    const url = page.url();
+    expect(url).toMatch(/mode=zones-nv/);
+    expect(url).toMatch(/shape=torusknot/);
+    const state = await getState(page, 'fresnel-zones');
+    const again = await open(browser, url.slice(url.indexOf('embed.html')));
+    await widget(again, 'fresnel-zones');
+    expect(await getState(again, 'fresnel-zones')).toEqual(state);
+    expect([...page.errors, ...again.errors]).toEqual([]);
+    await Promise.all([page.close(), again.close()]);
+  });
+
+  it('bad URL values give a visible notice and keep a valid state', async () => {
+    const page = await open(browser, 'embed.html?w=fresnel-zones&mode=banana&lightTheta=400&alpha=x');
+    await widget(page, 'fresnel-zones');
+    const notices = await page.$$eval('.notice', (els) => els.map((e) => e.textContent));
+    expect(notices).toHaveLength(3);
+    expect(notices.join(' ')).toMatch(/banana/);
+    const s = await getState(page, 'fresnel-zones');
+    expect([s.mode, s.lightTheta, s.alpha]).toEqual(['fresnel-nv', 180, 0.3]);
+    expect(await distinctColors(page, await shot(page, CANVAS))).toBeGreaterThan(20);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('measures the analytic n·v zone shares of an orthographic sphere on the GPU', async () => {
+    const page = await open(browser, 'embed.html?w=fresnel-zones&mode=zones-nv&shape=sphere&camera=orthographic');
+    await widget(page, 'fresnel-zones');
+    const shares = await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].getZoneShares());
+    const analytic = sphereZoneFractions();
+    console.log(`zone shares GPU ${shares.map((s) => (s * 100).toFixed(2)).join(' / ')} % vs analytic ${analytic.map((s) => (s * 100).toFixed(2)).join(' / ')} %`);
+    shares.forEach((s, i) => expect(Math.abs(s - analytic[i])).toBeLessThan(0.003));
+    await page.close();
+  });
+
+  it('compiles only the terms a mode uses, and reuses a variant when it comes back', async () => {
+    const page = await open(browser, 'embed.html?w=fresnel-zones&mode=zones-nv');
+    await widget(page, 'fresnel-zones');
+    const info = () => page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].getProgramInfo());
+    expect((await info()).fragmentShader).not.toMatch(/ndfGGX|visibilitySmith|fresnelDielectric/);
+    await setControl(page, 'Mode', 'Zones of l·h × rest of BRDF');
+    const weighted = await info();
+    expect(weighted.fragmentShader).toMatch(/ndfGGX/);
+    await setControl(page, 'Mode', 'Zones of n·v');
+    await setControl(page, 'Mode', 'Zones of l·h × rest of BRDF');
+    expect((await info()).variants).toBe(weighted.variants);
+    await page.close();
+  });
+
+  it('moves the light with the keyboard and by dragging, and probes the surface', async () => {
+    const page = await open(browser, 'embed.html?w=fresnel-zones&lightTheta=60');
+    await widget(page, 'fresnel-zones');
+    await page.focus(CANVAS);
+    await page.keyboard.press('ArrowUp');
+    expect((await getState(page, 'fresnel-zones')).lightTheta).toBe(55);
+    const box = await (await page.$(CANVAS)).boundingBox();
+    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+    await page.mouse.down();
+    await page.mouse.up();
+    expect((await getState(page, 'fresnel-zones')).lightTheta).toBeLessThan(1);
+    await page.mouse.move(box.x + box.width / 2 + 20, box.y + box.height / 2 + 10);
+    await settle(page);
+    expect(await page.$eval('.probe', (el) => el.textContent)).toMatch(/n·v.*n·l.*n·h.*l·h.*F\(n·v\) exact/s);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('draws nothing while idle', async () => {
+    const page = await open(browser, 'fresnel.html');
+    await widget(page, 'zones');
+    await page.$eval('[data-slot="fresnel-zones"]', (el) => el.scrollIntoView());
+    await settle(page, 1000);
+    const before = await page.evaluate(() => [window.__drawCalls, globalThis.__shadingLab.frames]);
+    await new Promise((r) => setTimeout(r, 2000));
+    const after = await page.evaluate(() => [window.__drawCalls, globalThis.__shadingLab.frames]);
+    expect(before[0]).toBeGreaterThan(0);
+    expect(after).toEqual(before);
+    await page.close();
+  });
+
+  it('follows the size of its frame', async () => {
+    const page = await open(browser, 'embed.html?w=fresnel-zones', { width: 700, height: 700 });
+    await widget(page, 'fresnel-zones');
+    const w1 = await page.$eval(CANVAS, (c) => c.width);
+    await page.setViewport({ width: 1200, height: 900 });
+    await settle(page, 500);
+    const w2 = await page.$eval(CANVAS, (c) => c.width);
+    expect(w1).toBeLessThanOrEqual(700);
+    expect(w2).toBeGreaterThan(w1 * 1.2);
+    await page.close();
+  });
+});
+
+describe('fresnel-curves and f0-tables', () => {
+  it('a checkbox adds curves, the URL keeps them, and bad materials are reported', async () => {
+    const page = await open(browser, 'embed.html?w=fresnel-curves&materials=gold,unobtainium');
+    await widget(page, 'fresnel-curves');
+    expect(await page.$eval('.notice', (el) => el.textContent)).toMatch(/unobtainium/);
+    const before = await shot(page, '.plot-canvas');
+    await setControl(page, 'Silver', true);
+    expect(await shot(page, '.plot-canvas')).not.toBe(before);
+    expect(decodeURIComponent(page.url())).toMatch(/materials=gold,silver/);
+    expect(await page.$$eval('.readout tbody tr', (rows) => rows.length)).toBe(6);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('a material picked in the tables loads into the other widgets of the chapter page', async () => {
+    const page = await open(browser, 'fresnel.html');
+    await widget(page, 'tables');
+    await page.click('tr[data-material="diamond"] a[aria-label*="fresnel-zones"]');
+    await page.click('tr[data-material="iron"] a[aria-label*="fresnel-curves"]');
+    await settle(page, 400);
+    expect((await getState(page, 'zones')).material).toBe('diamond');
+    expect((await getState(page, 'curves')).materials).toContain('iron');
+    expect(page.url()).toMatch(/zones\.material=diamond/);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+});
+
+describe('GLSL vs JS parity', () => {
+  it('every shader function matches its float64 twin within the documented tolerance', async () => {
+    const page = await open(browser, 'parity.html');
+    await page.waitForSelector('#parity-summary', { timeout: 60_000 });
+    const results = await page.evaluate(() => globalThis.__shadingLab.parity);
+    for (const r of results) console.log(`parity ${r.name.padEnd(30)} n=${String(r.count).padStart(5)} maxAbs=${r.maxAbs.toExponential(2)} maxRel=${r.maxRel.toExponential(2)} invalid=${r.invalid}`);
+    for (const r of results) {
+      expect(r.invalid, r.name).toBe(0);
+      expect(r.failures, r.name).toBe(0);
+    }
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+});
