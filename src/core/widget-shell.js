@@ -2,6 +2,7 @@
 // one state object, validated on every way in (initial state, update(), GUI).
 import { coerceState, defaultState } from './state.js';
 import { createNoticeArea } from './notice.js';
+import { createStateGui } from './gui.js';
 
 export function createWidgetShell(container, { name, schema, initialState, about }) {
   const root = document.createElement('section');
@@ -27,6 +28,16 @@ export function createWidgetShell(container, { name, schema, initialState, about
   const first = coerceState(schema, initialState, defaultState(schema));
   if (first.notices.length) notices.show(first.notices);
   let state = first.state;
+  let gui = null;
+
+  /** Validates `partial` against the current state; returns the keys whose value changed. */
+  const apply = (partial) => {
+    const next = coerceState(schema, partial, state);
+    if (next.notices.length) notices.show(next.notices);
+    const changed = Object.keys(schema).filter((k) => JSON.stringify(next.state[k]) !== JSON.stringify(state[k]));
+    state = next.state;
+    return changed;
+  };
 
   return {
     root,
@@ -36,15 +47,23 @@ export function createWidgetShell(container, { name, schema, initialState, about
     get state() {
       return state;
     },
-    /** Validates `partial` against the current state; returns the keys whose value changed. */
-    apply(partial) {
-      const next = coerceState(schema, partial, state);
-      if (next.notices.length) notices.show(next.notices);
-      const changed = Object.keys(schema).filter((k) => JSON.stringify(next.state[k]) !== JSON.stringify(state[k]));
-      state = next.state;
-      return changed;
+    /**
+     * Builds the control panel and returns the widget's update(partial): validate, refresh the panel, let the
+     * widget react to the changed keys, tell the host. The GUI, code and the URL all come in through it.
+     */
+    connect({ title, onChanged, onStateChange }) {
+      const update = (partial) => {
+        const changed = apply(partial);
+        if (!changed.length) return;
+        gui.sync(state);
+        onChanged(changed);
+        onStateChange?.(state);
+      };
+      gui = createStateGui(controls, { schema, state, onChange: update, title });
+      return update;
     },
     dispose() {
+      gui?.dispose();
       root.remove();
     },
   };

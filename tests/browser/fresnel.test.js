@@ -174,6 +174,21 @@ describe('fresnel-curves and f0-tables', () => {
   });
 });
 
+describe('without WebGL2', () => {
+  it('3-D views say so in words; the rest of the page works', async () => {
+    const noGl = await launchBrowser(['--disable-3d-apis']);
+    try {
+      const page = await open(noGl, 'fresnel.html');
+      await widget(page, 'tables');
+      expect(await page.$eval('.widget-fresnel-zones .blocking-message', (el) => el.textContent)).toMatch(/needs WebGL2/);
+      expect(await page.$$eval('.widget-fresnel-curves .plot', (els) => els.length)).toBe(2);
+      expect(page.errors).toEqual([]);
+    } finally {
+      await noGl.close();
+    }
+  });
+});
+
 describe('GLSL vs JS parity', () => {
   it('every shader function matches its float64 twin within the documented tolerance', async () => {
     const page = await open(browser, 'parity.html');

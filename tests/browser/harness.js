@@ -53,7 +53,7 @@ export function serveStatic(dir) {
   });
 }
 
-export async function launchBrowser() {
+export async function launchBrowser(extraArgs = []) {
   const executablePath = findChrome();
   if (!executablePath) throw new Error(CHROME_HINT);
   const userDataDir = mkdtempSync(join(tmpdir(), 'shading-lab-chrome-'));
@@ -62,7 +62,7 @@ export async function launchBrowser() {
     headless: true,
     userDataDir,
     args: ['--no-sandbox', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run',
-      '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist'],
+      '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist', ...extraArgs],
   });
   browser.on('disconnected', () => {
     try {

@@ -2,7 +2,6 @@
 // columns as printed and the sRGB recomputed from the linear column, and links that load each material
 // into the other Fresnel widgets.
 import { createWidgetShell } from '../../core/widget-shell.js';
-import { createStateGui } from '../../core/gui.js';
 import { rgbToHex } from '../../core/palettes.js';
 import { linearToSrgb } from '../../math/color.js';
 import { METALS, NON_METALS, TABLE_SOURCE, iorFromF0, measuredSource } from '../../math/index.js';
@@ -91,23 +90,13 @@ export function createF0Tables(container, initialState = {}, { onStateChange, on
     );
   };
 
-  const update = (partial) => {
-    const changed = shell.apply(partial);
-    if (!changed.length) return;
-    gui.sync(shell.state);
-    render();
-    onStateChange?.(shell.state);
-  };
-  const gui = createStateGui(shell.controls, { schema, state: shell.state, onChange: update, title: 'F0 tables' });
+  const update = shell.connect({ title: 'F0 tables', onChanged: render, onStateChange });
   render();
 
   return {
     update,
     getState: () => shell.state,
-    dispose() {
-      gui.dispose();
-      shell.dispose();
-    },
+    dispose: shell.dispose,
   };
 }
 

@@ -1,7 +1,6 @@
 // fresnel-curves: reflectance against angle of incidence for chosen materials, exact and Schlick
 // overlaid, the talk's three zones shaded behind, and a second plot of Schlick's error.
 import { createWidgetShell } from '../../core/widget-shell.js';
-import { createStateGui } from '../../core/gui.js';
 import { createPlot } from '../../core/plot.js';
 import { SERIES_COLORS, ZONE_PALETTES, withAlpha } from '../../core/palettes.js';
 import { FRESNEL_ZONE_BOUNDS_DEG } from '../../math/zones.js';
@@ -137,20 +136,12 @@ export function createFresnelCurves(container, initialState = {}, { onStateChang
     plots.setAttribute('aria-label', description());
   };
 
-  const update = (partial) => {
-    const changed = shell.apply(partial);
-    if (!changed.length) return;
-    gui.sync(shell.state);
-    refresh();
-    onStateChange?.(shell.state);
-  };
-  const gui = createStateGui(shell.controls, { schema, state: shell.state, onChange: update, title: 'Fresnel curves' });
+  const update = shell.connect({ title: 'Fresnel curves', onChanged: refresh, onStateChange });
 
   return {
     update,
     getState: () => shell.state,
     dispose() {
-      gui.dispose();
       reflectance.dispose();
       error.dispose();
       shell.dispose();

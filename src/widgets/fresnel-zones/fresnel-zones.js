@@ -3,7 +3,6 @@
 // of covered pixels (or of reflected light) in each zone summed on the GPU.
 import * as THREE from 'three';
 import { createWidgetShell } from '../../core/widget-shell.js';
-import { createStateGui } from '../../core/gui.js';
 import { createViewport } from '../../core/viewport.js';
 import { createGpuSum, floatTarget } from '../../core/gpu-sum.js';
 import { assembleGlsl } from '../../core/glsl.js';
@@ -268,22 +267,17 @@ export function createFresnelZones(container, initialState = {}, { onStateChange
   }
   if (!viewport) renderLegend();
 
-  const update = (partial) => {
-    const before = shell.state.shape;
-    const changed = shell.apply(partial);
-    if (!changed.length) return;
-    if (shell.state.shape !== before) {
+  const DISPLAY_ONLY = ['palette', 'exposure', 'fresnel', 'conductor']; // change the picture, not the zone shares
+  const onChanged = (changed) => {
+    if (changed.includes('shape')) {
       mesh.geometry.dispose();
       mesh.geometry = createShapeGeometry(shell.state.shape);
     }
-    const cosmetic = changed.every((k) => k === 'palette' || k === 'exposure' || k === 'fresnel' || k === 'conductor');
-    statsDirty ||= !cosmetic;
+    statsDirty ||= !changed.every((k) => DISPLAY_ONLY.includes(k));
     if (changed.includes('palette')) renderLegend();
-    gui.sync(shell.state);
     viewport?.invalidate();
-    onStateChange?.(shell.state);
   };
-  const gui = createStateGui(shell.controls, { schema, state: shell.state, onChange: update, title: 'Fresnel zones' });
+  const update = shell.connect({ title: 'Fresnel zones', onChanged, onStateChange });
 
   return {
     update,
@@ -293,7 +287,6 @@ export function createFresnelZones(container, initialState = {}, { onStateChange
     /** Number of distinct shader programs compiled so far, and the source of the one in use. */
     getProgramInfo: () => ({ variants: materials.size, fragmentShader: mesh.material?.fragmentShader ?? '' }),
     dispose() {
-      gui.dispose();
       probe?.dispose();
       lightControl?.dispose();
       gpuSum?.dispose();
