@@ -4,6 +4,13 @@ export const ZONE_PALETTES = {
   talk: { label: 'Talk (green, yellow, red)', colors: ['#3fae49', '#f5d327', '#e2352b'] },
   cb: { label: 'Colour-blind safe (blue, yellow, vermillion)', colors: ['#0072b2', '#f0e442', '#d55e00'] },
 };
+/** The schema field every widget with zone colours offers. */
+export const ZONE_PALETTE_FIELD = {
+  type: 'enum',
+  options: Object.fromEntries(Object.entries(ZONE_PALETTES).map(([k, p]) => [k, p.label.split(' (')[0]])),
+  default: 'talk',
+  label: 'Zone colours',
+};
 export const ZONE_LABELS = ['barely changes (< 45°)', 'changes somewhat (45–75°)', 'goes rapidly to 1 (> 75°)'];
 
 /** Okabe-Ito hues (yellow left out: too light on white) for one series per material. */

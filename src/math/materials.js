@@ -22,10 +22,8 @@ export const NON_METALS = [
   { key: 'diamond', name: 'Diamond', linear: [0.17, 0.17, 0.17], srgb: [0.45, 0.45, 0.45] },
 ];
 
-export const MATERIAL_KEYS = [...METALS, ...NON_METALS].map((m) => m.key);
-
 /** How a metal's exact curve gets its (n, k): from the talk's F0 plus a measured edge tint, or measured alone. */
-export const CONDUCTOR_MODELS = ['f0-tint', 'measured'];
+export const CONDUCTOR_MODELS = { 'f0-tint': 'Talk F0 + measured edge tint', measured: 'Measured n, k' };
 
 export function materialByKey(key) {
   return METALS.find((m) => m.key === key) ?? NON_METALS.find((m) => m.key === key);

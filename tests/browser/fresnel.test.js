@@ -88,6 +88,18 @@ describe('fresnel-zones', () => {
     await page.close();
   });
 
+  it("bears out the talk: weighted by the BRDF, over all light directions, green predominates and red is rare", async () => {
+    const page = await open(browser, 'embed.html?w=fresnel-zones&mode=zones-lh-weighted&shape=torusknot');
+    await widget(page, 'fresnel-zones');
+    const avg = await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].getAverageShares());
+    console.log(`weighted l·h zone shares over 64 lights (torus knot, alpha 0.3): ${avg.map((s) => (s * 100).toFixed(1)).join(' / ')} %`);
+    expect(avg[0]).toBeGreaterThan(0.5);
+    expect(avg[2]).toBeLessThan(0.05);
+    expect(avg.reduce((a, b) => a + b)).toBeCloseTo(1, 6);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
   it('compiles only the terms a mode uses, and reuses a variant when it comes back', async () => {
     const page = await open(browser, 'embed.html?w=fresnel-zones&mode=zones-nv');
     await widget(page, 'fresnel-zones');
@@ -164,6 +176,7 @@ describe('fresnel-curves and f0-tables', () => {
     const page = await open(browser, 'fresnel.html');
     await widget(page, 'tables');
     await page.click('tr[data-material="diamond"] a[aria-label*="fresnel-zones"]');
+    await settle(page, 1200); // the page scrolls smoothly to the widget that took the material
     await page.click('tr[data-material="iron"] a[aria-label*="fresnel-curves"]');
     await settle(page, 400);
     expect((await getState(page, 'zones')).material).toBe('diamond');

@@ -2,9 +2,9 @@
 // overlaid, the talk's three zones shaded behind, and a second plot of Schlick's error.
 import { createWidgetShell } from '../../core/widget-shell.js';
 import { createPlot } from '../../core/plot.js';
-import { SERIES_COLORS, ZONE_PALETTES, withAlpha } from '../../core/palettes.js';
+import { SERIES_COLORS, ZONE_PALETTES, ZONE_PALETTE_FIELD, withAlpha } from '../../core/palettes.js';
 import { FRESNEL_ZONE_BOUNDS_DEG } from '../../math/zones.js';
-import { METALS, NON_METALS } from '../../math/materials.js';
+import { CONDUCTOR_MODELS, METALS, NON_METALS } from '../../math/materials.js';
 import { CHANNELS, angleGrid, curveSpecs, evaluateCurve } from './curve-data.js';
 
 const MATERIAL_OPTIONS = Object.fromEntries([
@@ -18,14 +18,14 @@ export const schema = {
   ior: { type: 'number', min: 1, max: 3, step: 0.01, default: 1.5, label: 'Custom IOR' },
   conductor: {
     type: 'enum',
-    options: { 'f0-tint': 'Talk F0 + measured edge tint', measured: 'Measured n, k' },
+    options: CONDUCTOR_MODELS,
     default: 'f0-tint',
     label: 'Metal n, k',
     hint: 'Talk F0 + edge tint: Gulbrandsen 2014 mapping, reproduces the table. Measured: published optical constants at 650/550/450 nm.',
   },
   schlick: { type: 'bool', default: true, label: 'Show Schlick' },
   zones: { type: 'bool', default: true, label: 'Shade zones' },
-  palette: { type: 'enum', options: { talk: 'Talk', cb: 'Colour-blind safe' }, default: 'talk', label: 'Zone colours' },
+  palette: ZONE_PALETTE_FIELD,
 };
 
 const ABOUT =

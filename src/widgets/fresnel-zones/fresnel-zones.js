@@ -10,8 +10,8 @@ import { SHADER_CHUNKS } from '../../core/shader-chunks.js';
 import { attachLightControl, lightDirFromAngles } from '../../core/light-control.js';
 import { attachProbe, angleText, probeAngles } from '../../core/probe.js';
 import { createToolbar, canvasToPng, downloadCsv } from '../../core/export.js';
-import { ZONE_LABELS, ZONE_PALETTES, hexToRgb } from '../../core/palettes.js';
-import { METALS, NON_METALS, fresnelParams, materialByKey } from '../../math/materials.js';
+import { ZONE_LABELS, ZONE_PALETTES, ZONE_PALETTE_FIELD, hexToRgb } from '../../core/palettes.js';
+import { CONDUCTOR_MODELS, METALS, NON_METALS, fresnelParams, materialByKey } from '../../math/materials.js';
 import { fresnelConductor, fresnelDielectric, fresnelSchlick } from '../../math/fresnel.js';
 import { ndfGGX } from '../../math/ndf.js';
 import { visibilitySmithGGXCorrelated } from '../../math/visibility.js';
@@ -36,13 +36,13 @@ export const schema = {
     default: 'glass-low',
     label: 'Material',
   },
-  conductor: { type: 'enum', options: { 'f0-tint': 'Talk F0 + measured edge tint', measured: 'Measured n, k' }, default: 'f0-tint', label: 'Metal n, k' },
+  conductor: { type: 'enum', options: CONDUCTOR_MODELS, default: 'f0-tint', label: 'Metal n, k' },
   fresnel: { type: 'enum', options: { exact: 'Exact', schlick: 'Schlick' }, default: 'exact', label: 'Fresnel' },
   alpha: { type: 'number', min: 0.01, max: 1, step: 0.01, default: 0.3, label: 'GGX α (roughness)' },
   exposure: { type: 'number', min: 0.1, max: 10, step: 0.1, default: 1, label: 'Exposure' },
   lightTheta: { type: 'number', min: 0, max: 180, step: 0.1, default: 60, label: 'Light θ from view', unit: '°' },
   lightPhi: { type: 'number', min: -180, max: 180, step: 0.1, default: 35, label: 'Light φ around view', unit: '°' },
-  palette: { type: 'enum', options: { talk: 'Talk', cb: 'Colour-blind safe' }, default: 'talk', label: 'Zone colours' },
+  palette: ZONE_PALETTE_FIELD,
 };
 
 const ABOUT =
@@ -52,6 +52,17 @@ const ABOUT =
   'BRDF the light that actually reaches the eye is mostly green. Hover the surface to probe it.';
 
 const STATS_MAX = 512; // long side of the zone-statistics image, in pixels
+const AVERAGE_MAX = 128; // smaller image for the average over light directions
+const AVERAGE_LIGHTS = 64; // light directions, uniform over the sphere (Fibonacci lattice)
+
+/** Light directions (theta, phi in degrees, view space) spread uniformly over the whole sphere. */
+function sphereLights(n) {
+  const golden = Math.PI * (3 - Math.sqrt(5));
+  return Array.from({ length: n }, (_, i) => {
+    const z = 1 - (2 * (i + 0.5)) / n;
+    return [(Math.acos(z) * 180) / Math.PI, ((i * golden * 180) / Math.PI) % 360];
+  });
+}
 
 function defines(state, stats) {
   const d = {};
@@ -120,33 +131,51 @@ export function createFresnelZones(container, initialState = {}, { onStateChange
   const camera = () => cameras[shell.state.camera];
 
   let gpuSum = null;
-  let statsTarget = null;
   let zoneShares = [0, 0, 0];
+  let averageShares = null; // weighted mode only
   let lightControl = null;
 
   const legend = document.createElement('div');
   legend.className = 'zone-legend';
 
-  const computeStats = (renderer) => {
+  const targets = {};
+  /** Renders the stats variant into a float image of at most `maxSide` pixels and sums it: zone totals. */
+  const zoneTotals = (renderer, maxSide) => {
     const size = renderer.getDrawingBufferSize(new THREE.Vector2());
-    const scale = Math.min(1, STATS_MAX / Math.max(size.x, size.y));
+    const scale = Math.min(1, maxSide / Math.max(size.x, size.y));
     const [w, h] = [Math.max(1, Math.round(size.x * scale)), Math.max(1, Math.round(size.y * scale))];
-    if (!statsTarget || statsTarget.width !== w || statsTarget.height !== h) {
-      statsTarget?.dispose();
-      statsTarget = floatTarget(w, h, true);
+    let target = targets[maxSide];
+    if (!target || target.width !== w || target.height !== h) {
+      target?.dispose();
+      target = targets[maxSide] = floatTarget(w, h, true);
     }
     mesh.material = materialFor(defines(shell.state, true));
     const background = scene.background;
     scene.background = null;
-    renderer.setRenderTarget(statsTarget);
+    renderer.setRenderTarget(target);
     renderer.setClearColor(0x000000, 0);
     renderer.clear();
     renderer.render(scene, camera());
     renderer.setRenderTarget(null);
     scene.background = background;
-    const [z0, z1, z2] = gpuSum.sum(statsTarget);
-    const total = z0 + z1 + z2;
-    zoneShares = total > 0 ? [z0 / total, z1 / total, z2 / total] : [0, 0, 0];
+    return gpuSum.sum(target).slice(0, 3);
+  };
+  const shares = (totals) => {
+    const sum = totals[0] + totals[1] + totals[2];
+    return sum > 0 ? totals.map((t) => t / sum) : [0, 0, 0];
+  };
+  const computeStats = (renderer) => {
+    zoneShares = shares(zoneTotals(renderer, STATS_MAX));
+  };
+  // The talk's claim, measured: over every light direction, where does the reflected light fall?
+  const computeAverage = (renderer) => {
+    const totals = [0, 0, 0];
+    for (const [theta, phi] of sphereLights(AVERAGE_LIGHTS)) {
+      uniforms.uLightDir.value.set(...lightDirFromAngles(theta, phi));
+      zoneTotals(renderer, AVERAGE_MAX).forEach((t, i) => (totals[i] += t));
+    }
+    averageShares = shares(totals);
+    updateUniforms();
   };
 
   const updateUniforms = () => {
@@ -164,8 +193,14 @@ export function createFresnelZones(container, initialState = {}, { onStateChange
   };
 
   let statsDirty = true;
+  let averageDirty = true;
   const draw = (renderer) => {
     updateUniforms();
+    if (shell.state.mode === 'zones-lh-weighted' && averageDirty) {
+      computeAverage(renderer);
+      averageDirty = false;
+      statsDirty = true;
+    }
     if (statsDirty) {
       computeStats(renderer);
       statsDirty = false;
@@ -181,6 +216,7 @@ export function createFresnelZones(container, initialState = {}, { onStateChange
     onResize: (w, h) => {
       fit(w, h);
       statsDirty = true;
+      averageDirty = true;
     },
     label: 'Fresnel zones view',
   });
@@ -256,6 +292,14 @@ export function createFresnelZones(container, initialState = {}, { onStateChange
       row.append(sw, label, pct);
       legend.append(row);
     });
+    if (weighted && averageShares) {
+      const avg = document.createElement('div');
+      avg.className = 'zone-average';
+      avg.textContent =
+        `Averaged over ${AVERAGE_LIGHTS} light directions all around the object: ` +
+        averageShares.map((z, i) => `${ZONE_LABELS[i].split(' (')[0]} ${(z * 100).toFixed(1)}%`).join(', ') + '.';
+      legend.append(avg);
+    }
     if (viewport) {
       const m = materialByKey(s.material).name;
       viewport.canvas.setAttribute(
@@ -274,6 +318,7 @@ export function createFresnelZones(container, initialState = {}, { onStateChange
       mesh.geometry = createShapeGeometry(shell.state.shape);
     }
     statsDirty ||= !changed.every((k) => DISPLAY_ONLY.includes(k));
+    averageDirty ||= changed.some((k) => ['shape', 'camera', 'alpha'].includes(k));
     if (changed.includes('palette')) renderLegend();
     viewport?.invalidate();
   };
@@ -284,13 +329,15 @@ export function createFresnelZones(container, initialState = {}, { onStateChange
     getState: () => shell.state,
     /** Zone shares last measured on the GPU (for tests and exercises). */
     getZoneShares: () => [...zoneShares],
+    /** In the weighted mode: the shares averaged over light directions uniform on the sphere. */
+    getAverageShares: () => averageShares && [...averageShares],
     /** Number of distinct shader programs compiled so far, and the source of the one in use. */
     getProgramInfo: () => ({ variants: materials.size, fragmentShader: mesh.material?.fragmentShader ?? '' }),
     dispose() {
       probe?.dispose();
       lightControl?.dispose();
       gpuSum?.dispose();
-      statsTarget?.dispose();
+      Object.values(targets).forEach((t) => t.dispose());
       materials.forEach((m) => m.dispose());
       mesh.geometry.dispose();
       viewport?.dispose();
