@@ -168,6 +168,19 @@ describe('fresnel-curves and f0-tables', () => {
     expect(await shot(page, '.plot-canvas')).not.toBe(before);
     expect(decodeURIComponent(page.url())).toMatch(/materials=gold,silver/);
     expect(await page.$$eval('.readout tbody tr', (rows) => rows.length)).toBe(6);
+    // Save CSV hands the plotted data to a download: capture the blob instead of saving it
+    const csv = await page.evaluate(async () => {
+      let blob;
+      URL.createObjectURL = (b) => ((blob = b), 'blob:captured');
+      HTMLAnchorElement.prototype.click = () => {};
+      [...document.querySelectorAll('.toolbar button')].find((b) => b.textContent === 'Save CSV').click();
+      return blob.text();
+    });
+    const lines = csv.trim().split('\n');
+    expect(lines[0]).toBe('"Angle of incidence θ (degrees)","Gold R exact","Gold R Schlick","Gold G exact","Gold G Schlick","Gold B exact","Gold B Schlick","Silver R exact","Silver R Schlick","Silver G exact","Silver G Schlick","Silver B exact","Silver B Schlick"');
+    expect(lines).toHaveLength(362); // 0°..90° in 0.25° steps, plus the header
+    expect(Number(lines[1].split(',')[1])).toBeCloseTo(0.999, 3); // gold R at 0°: the talk's 1.00, clamped
+    expect(Number(lines[361].split(',')[1])).toBeCloseTo(1, 9); // grazing
     expect(page.errors).toEqual([]);
     await page.close();
   });
