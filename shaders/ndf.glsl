@@ -1,4 +1,4 @@
-// Normal distribution functions, mirrors src/math/ndf.js.
+// Normal distribution functions, mirrors src/math/ndf.js (see there for the derivations).
 #include "common.glsl"
 #define ALPHA_MIN 1e-4
 float clampAlpha(float alpha) { return clamp(alpha, ALPHA_MIN, 1.0); }
@@ -10,4 +10,75 @@ float ndfGGX(float cosThetaM, float alpha) {
   float d = a * a * c * c + sin2FromCos(c);
   float t = a / d;
   return t * t / PI;
+}
+
+float log1pSmall(float x) {
+  return abs(x) < 1e-2 ? x * (1.0 - x * (0.5 - x * (1.0 / 3.0 - x / 4.0))) : log(1.0 + x);
+}
+
+float ndfBlinnPhong(float cosThetaM, float exponent) {
+  if (!(cosThetaM > 0.0)) return 0.0;
+  float p = clamp(exponent, 0.0, 1e6);
+  float c = min(cosThetaM, 1.0);
+  return (p + 2.0) / (2.0 * PI) * exp(p * log1pSmall(c - 1.0));
+}
+
+float ndfBeckmann(float cosThetaM, float alpha) {
+  if (!(cosThetaM > 0.0)) return 0.0;
+  float c = min(cosThetaM, 1.0);
+  float a = clampAlpha(alpha);
+  float a2 = a * a;
+  float c2 = c * c;
+  float e = sin2FromCos(c) / (c2 * a2);
+  if (e > 80.0) return 0.0;
+  return exp(-e) / (PI * a2 * c2 * c2);
+}
+
+float expm1OverX(float x) {
+  return abs(x) < 1e-2 ? 1.0 + x / 2.0 + x * x / 6.0 + x * x * x / 24.0 : (exp(x) - 1.0) / x;
+}
+#define ABC_SERIES_TERMS 40
+float abcNormalization(float a1, float a2) {
+  if (a1 * (a2 + 1.0) <= 1.0) {
+    float term = 1.0;
+    float sum = 0.0;
+    for (int k = 0; k < ABC_SERIES_TERMS; k++) {
+      float fk = float(k);
+      sum += term / ((fk + 1.0) * (fk + 2.0));
+      term *= -(a2 + fk) * a1 / (fk + 1.0);
+    }
+    return sum;
+  }
+  float L = log(1.0 + a1);
+  return L * ((1.0 + a1) * expm1OverX((1.0 - a2) * L) - expm1OverX((2.0 - a2) * L)) / (a1 * a1);
+}
+float ndfABC(float cosThetaM, float a1, float a2) {
+  if (!(cosThetaM > 0.0)) return 0.0;
+  float b = clamp(a1, 0.01, 1e4);
+  float cc = clamp(a2, 0.05, 20.0);
+  float c = min(cosThetaM, 1.0);
+  return pow(1.0 + b * (1.0 - c), -cc) / (2.0 * PI * abcNormalization(b, cc));
+}
+
+#define SGD_STEPS 48
+float sgdNormalization(float alpha, float p) {
+  float U = log(50.0 / alpha);
+  float h = U / float(SGD_STEPS);
+  float sum = 0.0;
+  for (int i = 0; i <= SGD_STEPS; i++) {
+    float y = alpha * exp(float(i) * h);
+    float w = (i == 0 || i == SGD_STEPS) ? 1.0 : ((i % 2) == 1 ? 4.0 : 2.0);
+    sum += w * exp(-y) * pow(y, 1.0 - p);
+  }
+  return sum * h / 3.0;
+}
+float ndfSGD(float cosThetaM, float alpha, float p) {
+  if (!(cosThetaM > 0.0)) return 0.0;
+  float a = clamp(alpha, 0.01, 2.0);
+  float q = clamp(p, 0.0, 1.9);
+  float c = min(cosThetaM, 1.0);
+  float c2 = c * c;
+  float y = a + sin2FromCos(c) / (c2 * a);
+  if (y > 80.0) return 0.0;
+  return exp(-y) * pow(y, -q) / (a * sgdNormalization(a, q) * PI * c2 * c2);
 }

@@ -6,3 +6,7 @@ export * from './visibility.js';
 export * from './materials.js';
 export * from './optical-constants.js';
 export * from './zones.js';
+export * from './special.js';
+export * from './brdf.js';
+export * from './integrate.js';
+export * from './ndf-width.js';

@@ -1,9 +1,13 @@
 // Normal distribution functions D(m), in 1/sr, as functions of cosThetaM = n·m.
-// D is a density over the hemisphere that satisfies ∫ D(m)(n·m) dω = 1. D = 0 for n·m <= 0.
+// Each is a density of microfacet normals normalised so that ∫ D(m)(n·m) dω = 1 over the hemisphere,
+// and is 0 for n·m <= 0. tan² and sin² are formed as (1 - c)(1 + c) [/ c²], never as 1 - c², so nothing
+// cancels near c = 1 in float32; exponentials that underflow return 0 before 0·Inf can make a NaN.
 
 /** Smallest roughness the functions accept; alpha is clamped to [ALPHA_MIN, 1]. */
 export const ALPHA_MIN = 1e-4;
 export const clampAlpha = (alpha) => Math.min(Math.max(alpha, ALPHA_MIN), 1);
+
+const sin2 = (c) => (1 - c) * (1 + c);
 
 /**
  * Trowbridge-Reitz (GGX): alpha² / (pi ((n·m)²(alpha² - 1) + 1)²).
@@ -14,7 +18,121 @@ export function ndfGGX(cosThetaM, alpha) {
   if (!(cosThetaM > 0)) return 0;
   const c = Math.min(cosThetaM, 1);
   const a = clampAlpha(alpha);
-  const d = a * a * c * c + (1 - c) * (1 + c);
+  const d = a * a * c * c + sin2(c);
   const t = a / d;
   return (t * t) / Math.PI;
+}
+
+/** ln(1 + x) for small |x| without losing x's digits (series below 1e-2). */
+export function log1pSmall(x) {
+  return Math.abs(x) < 1e-2 ? x * (1 - x * (1 / 2 - x * (1 / 3 - x / 4))) : Math.log(1 + x);
+}
+
+/**
+ * Normalised Blinn-Phong: (p + 2)/(2 pi) (n·m)^p, exponent p in [0, 1e6]. c^p is taken as
+ * exp(p ln(1 - (1 - c))): pow(c, p) amplifies float32's error in log(c) near c = 1 by p.
+ */
+export function ndfBlinnPhong(cosThetaM, exponent) {
+  if (!(cosThetaM > 0)) return 0;
+  const p = Math.min(Math.max(exponent, 0), 1e6);
+  const c = Math.min(cosThetaM, 1);
+  return ((p + 2) / (2 * Math.PI)) * Math.exp(p * log1pSmall(c - 1));
+}
+
+/** Beckmann: exp(-tan²/alpha²) / (pi alpha² (n·m)^4). */
+export function ndfBeckmann(cosThetaM, alpha) {
+  if (!(cosThetaM > 0)) return 0;
+  const c = Math.min(cosThetaM, 1);
+  const a2 = clampAlpha(alpha) ** 2;
+  const e = sin2(c) / (c * c * a2);
+  if (e > 80) return 0; // exp(-80) ~ 2e-35: underflows float32 before c^4 does
+  const c2 = c * c;
+  return Math.exp(-e) / (Math.PI * a2 * c2 * c2);
+}
+
+/** (e^x - 1)/x without cancellation near x = 0. */
+function expm1OverX(x) {
+  return Math.abs(x) < 1e-2 ? 1 + x / 2 + (x * x) / 6 + (x * x * x) / 24 : Math.expm1(x) / x;
+}
+
+const ABC_SERIES_TERMS = 40;
+
+/**
+ * Normalisation integral of the ABC distribution: I = ∫_0^1 (1 - u)(1 + a1 u)^-a2 du, so that
+ * D = (1 + a1(1 - c))^-a2 / (2 pi I). With t = 1 + a1 u and L = ln(1 + a1):
+ *   I = L [ (1 + a1) φ((1 - a2) L) - φ((2 - a2) L) ] / a1²,  φ(x) = (e^x - 1)/x,
+ * which holds for every a2 (including 1 and 2, where the textbook antiderivative has logs). Its two terms
+ * cancel as a1 -> 0, so there the binomial series is used: I = Σ_k C(-a2, k) a1^k / ((k + 1)(k + 2)),
+ * whose terms shrink at least geometrically by a1 (a2 + 1) <= 1.
+ */
+export function abcNormalization(a1, a2) {
+  if (a1 * (a2 + 1) <= 1) {
+    let term = 1;
+    let sum = 0;
+    for (let k = 0; k < ABC_SERIES_TERMS; k++) {
+      sum += term / ((k + 1) * (k + 2));
+      term *= (-(a2 + k) * a1) / (k + 1);
+    }
+    return sum;
+  }
+  const L = Math.log1p(a1);
+  return (L * ((1 + a1) * expm1OverX((1 - a2) * L) - expm1OverX((2 - a2) * L))) / (a1 * a1);
+}
+
+/** Parameter ranges the ABC functions accept (clamped): a1 in [0.01, 1e4], a2 in [0.05, 20]. */
+export const clampAbc = (a1, a2) => [Math.min(Math.max(a1, 0.01), 1e4), Math.min(Math.max(a2, 0.05), 20)];
+
+/**
+ * The ABC distribution of Low et al. 2012 as the talk writes it, 1/(1 + a1(1 - n·m))^a2, made a density
+ * (the talk's form is not normalised).
+ */
+export function ndfABC(cosThetaM, a1, a2) {
+  if (!(cosThetaM > 0)) return 0;
+  const [b, cc] = clampAbc(a1, a2);
+  const c = Math.min(cosThetaM, 1);
+  return (1 + b * (1 - c)) ** -cc / (2 * Math.PI * abcNormalization(b, cc));
+}
+
+/** Parameter ranges of the SGD functions (clamped): alpha in [0.01, 2], p in [0, 1.9]. */
+export const clampSgd = (alpha, p) => [Math.min(Math.max(alpha, 0.01), 2), Math.min(Math.max(p, 0), 1.9)];
+
+const SGD_STEPS = 48; // Simpson intervals: relative error below 1e-6 over the parameter range (see tests)
+
+/**
+ * ∫_alpha^∞ e^-y y^-p dy (the upper incomplete gamma Γ(1 - p, alpha)), as ∫_0^U e^-y y^(1-p) du with
+ * y = alpha e^u: smooth, decaying like exp(-e^u), so Simpson's rule on a fixed grid is accurate.
+ */
+export function sgdNormalization(alpha, p) {
+  const U = Math.log(50 / alpha); // e^-50 is far below what matters
+  const h = U / SGD_STEPS;
+  let sum = 0;
+  for (let i = 0; i <= SGD_STEPS; i++) {
+    const y = alpha * Math.exp(i * h);
+    const w = i === 0 || i === SGD_STEPS ? 1 : i % 2 ? 4 : 2;
+    sum += w * Math.exp(-y) * y ** (1 - p);
+  }
+  return (sum * h) / 3;
+}
+
+/**
+ * Shifted gamma distribution (Bagher, Soler, Holzschuch 2012): D = P22(tan²) / (pi (n·m)^4) with
+ * P22(x) = e^-y y^-p / (alpha Γ(1 - p, alpha)), y = alpha + x/alpha, normalised so ∫ P22 dx = 1.
+ */
+export function ndfSGD(cosThetaM, alpha, p) {
+  if (!(cosThetaM > 0)) return 0;
+  const [a, q] = clampSgd(alpha, p);
+  const c = Math.min(cosThetaM, 1);
+  const c2 = c * c;
+  const y = a + sin2(c) / (c2 * a);
+  if (y > 80) return 0;
+  return (Math.exp(-y) * y ** -q) / (a * sgdNormalization(a, q) * Math.PI * c2 * c2);
+}
+
+/** Walter et al. 2007: the Blinn-Phong exponent whose lobe matches a Beckmann alpha, p = 2/alpha² - 2. */
+export function blinnPhongExponentFromBeckmannAlpha(alpha) {
+  return Math.max(2 / clampAlpha(alpha) ** 2 - 2, 0);
+}
+
+export function beckmannAlphaFromBlinnPhongExponent(exponent) {
+  return clampAlpha(Math.sqrt(2 / (Math.max(exponent, 0) + 2)));
 }

@@ -1,19 +1,155 @@
 import { describe, expect, it } from 'vitest';
-import { ndfGGX } from '../../src/math/ndf.js';
-import { visibilitySmithGGXCorrelated } from '../../src/math/visibility.js';
+import {
+  abcNormalization, beckmannAlphaFromBlinnPhongExponent, blinnPhongExponentFromBeckmannAlpha, ndfABC, ndfBeckmann, ndfBlinnPhong,
+  ndfGGX, ndfSGD,
+} from '../../src/math/ndf.js';
+import { matchNdfWidths, ndfHalfWidthDeg } from '../../src/math/ndf-width.js';
+import * as V from '../../src/math/visibility.js';
+import { erf, erfc } from '../../src/math/special.js';
+import { projectedNdfIntegral as projectedIntegral } from './integration-helpers.js';
 
-// ∫ D(m)(n·m) dω over the hemisphere = ∫_0^1 D(c) c 2π dc (D depends on c = n·m only), by Gauss-Legendre
-// on a substitution that concentrates samples near c = 1 where narrow lobes live.
-function projectedIntegral(D) {
-  const N = 4000;
-  let sum = 0;
-  for (let i = 0; i < N; i++) {
-    const t = (i + 0.5) / N; // midpoint rule in t, c = 1 - t^4
-    const c = 1 - t ** 4;
-    sum += D(c) * c * 2 * Math.PI * 4 * t ** 3;
+const { visibilitySmithGGXCorrelated } = V;
+const cosGrid = [1e-7, 1e-4, 0.01, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 0.9, 0.99, 1];
+const alphas = [1e-3, 0.01, 0.05, 0.1, 0.3, 0.6, 1];
+
+describe('every NDF is a normalised density: ∫ D (n·m) dω = 1', () => {
+  const cases = [
+    ...[0.02, 0.05, 0.1, 0.3, 0.6, 1].flatMap((a) => [[`GGX α=${a}`, (c) => ndfGGX(c, a)], [`Beckmann α=${a}`, (c) => ndfBeckmann(c, a)]]),
+    ...[0, 1, 10, 100, 1e4].map((p) => [`Blinn-Phong p=${p}`, (c) => ndfBlinnPhong(c, p)]),
+    ...[[0.01, 1], [0.5, 20], [1, 1], [1, 2], [10, 2.5], [100, 1.5], [1e4, 3], [50, 0.5], [5, 10]].map(([a1, a2]) => [`ABC ${a1},${a2}`, (c) => ndfABC(c, a1, a2)]),
+    ...[[0.01, 0.5], [0.05, 0.64], [0.1, 1], [0.3, 1.5], [1, 0], [2, 1.9], [0.5, 1.9]].map(([a, p]) => [`SGD ${a},${p}`, (c) => ndfSGD(c, a, p)]),
+  ];
+  for (const [name, D] of cases) {
+    it(name, () => expect(Math.abs(projectedIntegral(D) - 1)).toBeLessThan(1e-5));
   }
-  return sum / N;
-}
+  it('the ABC normalisation: series and closed form agree where both hold', () => {
+    // at a1 (a2 + 1) = 1 the code switches; just either side the two must agree
+    for (const a2 of [0.5, 1, 2, 4]) {
+      const a1 = 1 / (a2 + 1);
+      expect(abcNormalization(a1 * (1 - 1e-9), a2)).toBeCloseTo(abcNormalization(a1 * (1 + 1e-9), a2), 9);
+    }
+  });
+});
+
+describe('NDF widths', () => {
+  it('Blinn-Phong ↔ Beckmann (Walter 2007): p = 2/α² - 2 and back', () => {
+    for (const a of [0.05, 0.2, 0.5]) expect(beckmannAlphaFromBlinnPhongExponent(blinnPhongExponentFromBeckmannAlpha(a))).toBeCloseTo(a, 12);
+    // the matched pair has nearly the same lobe: peak values within 1% for small alpha
+    const a = 0.1;
+    expect(ndfBlinnPhong(1, blinnPhongExponentFromBeckmannAlpha(a)) / ndfBeckmann(1, a)).toBeCloseTo(1, 2);
+  });
+  it('matched widths give all five NDFs the same half width at half maximum', () => {
+    for (const hw of [2, 10, 30]) {
+      const m = matchNdfWidths(hw);
+      const widths = [
+        ndfHalfWidthDeg((c) => ndfGGX(c, m.ggx.alpha)),
+        ndfHalfWidthDeg((c) => ndfBeckmann(c, m.beckmann.alpha)),
+        ndfHalfWidthDeg((c) => ndfBlinnPhong(c, m.blinnPhong.exponent)),
+        ndfHalfWidthDeg((c) => ndfABC(c, m.abc.a1, m.abc.a2)),
+        ndfHalfWidthDeg((c) => ndfSGD(c, m.sgd.alpha, m.sgd.p)),
+      ];
+      for (const w of widths) expect(w).toBeCloseTo(hw, 3);
+    }
+  });
+  it('at matched width, GGX has the longer tail than Beckmann (the halo of spiky NDFs)', () => {
+    const m = matchNdfWidths(5);
+    const at = Math.cos((30 * Math.PI) / 180);
+    expect(ndfGGX(at, m.ggx.alpha)).toBeGreaterThan(100 * ndfBeckmann(at, m.beckmann.alpha));
+  });
+});
+
+describe('special functions', () => {
+  it('erf and erfc match published values', () => {
+    expect(erf(0.5)).toBeCloseTo(0.5204998778130465, 15);
+    expect(erf(1)).toBeCloseTo(0.8427007929497149, 15);
+    expect(erf(2)).toBeCloseTo(0.9953222650189527, 14);
+    expect(erfc(3) / 2.209049699858544e-5).toBeCloseTo(1, 12);
+    expect(erfc(5) / 1.5374597944280349e-12).toBeCloseTo(1, 12);
+    expect(erf(-1)).toBeCloseTo(-0.8427007929497149, 15);
+  });
+});
+
+describe('Smith G1', () => {
+  it('stays in [0, 1], is 1 at normal incidence and 0 at grazing', () => {
+    for (const G1 of [V.smithG1GGX, V.smithG1Beckmann, V.smithG1BeckmannWalter]) {
+      for (const a of alphas) {
+        for (const c of cosGrid) {
+          const g = G1(c, a);
+          expect(g).toBeGreaterThanOrEqual(0);
+          expect(g).toBeLessThanOrEqual(1);
+        }
+        expect(G1(1, a)).toBe(1);
+        expect(G1(0, a)).toBe(0);
+      }
+    }
+  });
+  it("Beckmann's exact G1 matches 1/(1 + Λ) with Λ by numerical integration of the slope distribution", () => {
+    // Λ(μ) = ∫ (q - cot θ) P(q) dq over q > cot θ, P the 1-D Beckmann slope density (Heitz 2014, eq. 72)
+    for (const a of [0.2, 0.5]) {
+      for (const c of [0.2, 0.5, 0.8]) {
+        const cot = c / Math.sqrt(1 - c * c);
+        let lambda = 0;
+        const n = 200000;
+        const top = cot + 12 * a;
+        for (let i = 0; i < n; i++) {
+          const q = cot + ((i + 0.5) * (top - cot)) / n;
+          lambda += ((q - cot) * Math.exp(-(q * q) / (a * a))) / (a * Math.sqrt(Math.PI));
+        }
+        lambda = (lambda * (top - cot)) / n / cot;
+        expect(V.smithG1Beckmann(c, a)).toBeCloseTo(1 / (1 + lambda), 6);
+      }
+    }
+  });
+  it("Walter's rational fit stays within 0.4% of the exact Beckmann G1", () => {
+    for (const a of alphas) for (const c of cosGrid) expect(Math.abs(V.smithG1BeckmannWalter(c, a) - V.smithG1Beckmann(c, a))).toBeLessThan(4e-3);
+  });
+});
+
+describe('visibility terms', () => {
+  it('separable Smith ≤ height-correlated (it counts shared shadowing twice)', () => {
+    for (const a of alphas) {
+      for (const nl of cosGrid) {
+        for (const nv of cosGrid) {
+          expect(V.visibilitySmithGGXSeparable(nl, nv, a)).toBeLessThanOrEqual(visibilitySmithGGXCorrelated(nl, nv, a) * (1 + 1e-12));
+        }
+      }
+    }
+  });
+  it('the separable form is G1(l) G1(v) / ((n·l)(n·v))', () => {
+    for (const a of [0.1, 0.5]) for (const [nl, nv] of [[0.3, 0.9], [0.7, 0.2]]) {
+      expect(V.visibilitySmithGGXSeparable(nl, nv, a)).toBeCloseTo((V.smithG1GGX(nl, a) * V.smithG1GGX(nv, a)) / (nl * nv), 12);
+    }
+  });
+  it('the implicit term ignores roughness and the Cook-Torrance G stays in [0, 1]', () => {
+    expect(V.visibilityImplicit(0.3, 0.4)).toBe(1);
+    for (const nl of cosGrid) for (const nv of cosGrid) for (const nh of [0.5, 0.9, 1]) for (const vh of [0.2, 0.7, 1]) {
+      const G = V.visibilityCookTorrance(nl, nv, nh, vh) * nl * nv;
+      expect(G).toBeGreaterThanOrEqual(0);
+      expect(G).toBeLessThanOrEqual(1 + 1e-12);
+    }
+  });
+  it("Kelemen's 1/(l·h)² tracks Cook-Torrance where Cook-Torrance's G is 1", () => {
+    // with l = v = n: G_ct = 1, V_ct = 1/(nl nv) = 1 = 1/(l·h)²
+    expect(V.visibilityKelemen(1)).toBe(V.visibilityCookTorrance(1, 1, 1, 1));
+  });
+  it('the cheap approximations stay within 12% (Hammon) and 20% (Schlick-GGX) of height-correlated Smith for cos >= 0.4', () => {
+    for (const a of [0.1, 0.3, 0.6]) {
+      for (const nl of [0.4, 0.7, 1]) for (const nv of [0.4, 0.7, 1]) {
+        const ref = visibilitySmithGGXCorrelated(nl, nv, a);
+        expect(Math.abs(V.visibilitySmithGGXCorrelatedFast(nl, nv, a) / ref - 1)).toBeLessThan(0.12);
+        expect(Math.abs(V.visibilitySchlickGGX(nl, nv, a) / ref - 1)).toBeLessThan(0.2);
+      }
+    }
+  });
+  it('every V is 0 below the horizon and finite above it, down to cos = 1e-7 and alpha = 0', () => {
+    const fns = [V.visibilitySmithGGXSeparable, V.visibilitySmithGGXCorrelated, V.visibilitySmithGGXCorrelatedFast, V.visibilitySchlickGGX, V.visibilitySmithBeckmannSeparable];
+    for (const f of fns) {
+      expect(f(-0.1, 0.5, 0.3)).toBe(0);
+      expect(f(0.5, 0, 0.3)).toBe(0);
+      for (const a of [0, 1e-5, 1]) for (const c of [1e-7, 0.5, 1]) expect(Number.isFinite(f(c, c, a))).toBe(true);
+    }
+  });
+});
 
 describe('ndfGGX', () => {
   it('is normalised: ∫ D (n·m) dω = 1 across roughness', () => {

@@ -1,0 +1,81 @@
+// The microfacet BRDF f(l, v) = F(l·h) D(n·h) V(l, v) / 4 assembled from named terms, and the punctual
+// light equation. Vectors are arrays [x, y, z] in the local frame, n = (0, 0, 1), pointing away from the
+// surface. f is 0 when l or v is at or below the horizon, and when l = -v leaves no half vector.
+import { fresnelConductor, fresnelDielectric, fresnelSchlick } from './fresnel.js';
+import { ndfABC, ndfBeckmann, ndfBlinnPhong, ndfGGX, ndfSGD } from './ndf.js';
+import {
+  visibilityCookTorrance, visibilityImplicit, visibilityKelemen, visibilitySchlickGGX, visibilitySmithBeckmannSeparable,
+  visibilitySmithGGXCorrelated, visibilitySmithGGXCorrelatedFast, visibilitySmithGGXSeparable,
+} from './visibility.js';
+
+/** Each F term of cos = l·h and the material params { f0, eta, k }. */
+export const FRESNEL_TERMS = {
+  one: () => 1,
+  schlick: (c, p) => fresnelSchlick(p.f0, c),
+  dielectric: (c, p) => fresnelDielectric(c, p.eta),
+  conductor: (c, p) => fresnelConductor(c, p.eta, p.k),
+};
+
+/** Each D term of n·h and the distribution params { alpha, exponent, a1, a2, p }. */
+export const NDF_TERMS = {
+  ggx: (c, p) => ndfGGX(c, p.alpha),
+  beckmann: (c, p) => ndfBeckmann(c, p.alpha),
+  blinnPhong: (c, p) => ndfBlinnPhong(c, p.exponent),
+  abc: (c, p) => ndfABC(c, p.a1, p.a2),
+  sgd: (c, p) => ndfSGD(c, p.alpha, p.p),
+};
+
+/** Each V term of the cosines { nl, nv, nh, lh } and { alpha }. */
+export const VISIBILITY_TERMS = {
+  implicit: (a) => visibilityImplicit(a.nl, a.nv),
+  cookTorrance: (a) => visibilityCookTorrance(a.nl, a.nv, a.nh, a.lh),
+  kelemen: (a) => (a.nl > 0 && a.nv > 0 ? visibilityKelemen(a.lh) : 0),
+  smithGGXSeparable: (a, p) => visibilitySmithGGXSeparable(a.nl, a.nv, p.alpha),
+  smithGGXCorrelated: (a, p) => visibilitySmithGGXCorrelated(a.nl, a.nv, p.alpha),
+  smithGGXCorrelatedFast: (a, p) => visibilitySmithGGXCorrelatedFast(a.nl, a.nv, p.alpha),
+  schlickGGX: (a, p) => visibilitySchlickGGX(a.nl, a.nv, p.alpha),
+  smithBeckmannSeparable: (a, p) => visibilitySmithBeckmannSeparable(a.nl, a.nv, p.alpha),
+};
+
+/** Half vector of l and v, or null when l = -v. */
+export function halfVector(l, v) {
+  const h = [l[0] + v[0], l[1] + v[1], l[2] + v[2]];
+  const len = Math.hypot(h[0], h[1], h[2]);
+  return len > 1e-12 ? h.map((x) => x / len) : null;
+}
+
+/** The cosines a BRDF needs: n·l, n·v, n·h, l·h (h null when l = -v). */
+export function brdfAngles(l, v) {
+  const h = halfVector(l, v);
+  return { nl: l[2], nv: v[2], nh: h ? h[2] : 0, lh: h ? l[0] * h[0] + l[1] * h[1] + l[2] * h[2] : 0, h };
+}
+
+/**
+ * Every factor of the microfacet BRDF at (l, v): { F, D, V, G, angles }, with G = V (n·l)(n·v).
+ * params: { F, D, V } term names, plus the material and distribution parameters they read.
+ */
+export function microfacetTerms(l, v, params) {
+  const a = brdfAngles(l, v);
+  if (!(a.nl > 0 && a.nv > 0) || !a.h) return { F: 0, D: 0, V: 0, G: 0, angles: a };
+  const F = FRESNEL_TERMS[params.F](a.lh, params);
+  const D = NDF_TERMS[params.D](a.nh, params);
+  const V = VISIBILITY_TERMS[params.V](a, params);
+  return { F, D, V, G: V * a.nl * a.nv, angles: a };
+}
+
+/** f(l, v) = F D V / 4, in 1/sr. */
+export function microfacetBRDF(l, v, params) {
+  const t = microfacetTerms(l, v, params);
+  return (t.F * t.D * t.V) / 4;
+}
+
+/** The whole BRDF: specular plus an optional diffuse term diffuse(l, v) (e.g. Lambert, c_diff/pi). */
+export function brdf(l, v, params, diffuse = null) {
+  if (!(l[2] > 0 && v[2] > 0)) return 0;
+  return microfacetBRDF(l, v, params) + (diffuse ? diffuse(l, v) : 0);
+}
+
+/** The talk's punctual light: L_o = pi f(l_c, v) c_light (n·l_c), with n·l clamped at 0. */
+export function punctualRadiance(f, nl, cLight) {
+  return Math.PI * f * cLight * Math.max(nl, 0);
+}

@@ -1,0 +1,46 @@
+// Putting NDFs side by side at the same width. The width of a distribution here is its half width at half
+// maximum (HWHM): the angle theta_h at which D falls to half of D(n). Each NDF's width parameter is solved
+// for by bisection so that all five share one HWHM; the shape parameters (ABC's a2, SGD's p) stay as chosen.
+import { ndfABC, ndfBeckmann, ndfBlinnPhong, ndfGGX, ndfSGD } from './ndf.js';
+
+const DEG = Math.PI / 180;
+
+/** HWHM in degrees of D(cos), a function decreasing in theta_h. */
+export function ndfHalfWidthDeg(D) {
+  const half = D(1) / 2;
+  let lo = 0;
+  let hi = 90;
+  for (let i = 0; i < 60; i++) {
+    const mid = (lo + hi) / 2;
+    if (D(Math.cos(mid * DEG)) > half) lo = mid;
+    else hi = mid;
+  }
+  return (lo + hi) / 2;
+}
+
+/** The x in [lo, hi] (searched on a log scale) where width(x) = target; width increasing (or decreasing) in x. */
+function solveLog(width, target, lo, hi) {
+  const rising = width(hi) > width(lo);
+  let [a, b] = [Math.log(lo), Math.log(hi)];
+  for (let i = 0; i < 60; i++) {
+    const m = (a + b) / 2;
+    if (width(Math.exp(m)) < target === rising) a = m;
+    else b = m;
+  }
+  return Math.exp((a + b) / 2);
+}
+
+/**
+ * Parameters that give every NDF the half width `hwhmDeg` (1°–40°):
+ * { ggx: { alpha }, beckmann: { alpha }, blinnPhong: { exponent }, abc: { a1, a2 }, sgd: { alpha, p } }.
+ */
+export function matchNdfWidths(hwhmDeg, { abcA2 = 2.5, sgdP = 0.64 } = {}) {
+  const w = (D) => ndfHalfWidthDeg(D);
+  return {
+    ggx: { alpha: solveLog((a) => w((c) => ndfGGX(c, a)), hwhmDeg, 1e-3, 1) },
+    beckmann: { alpha: solveLog((a) => w((c) => ndfBeckmann(c, a)), hwhmDeg, 1e-3, 1) },
+    blinnPhong: { exponent: Math.log(0.5) / Math.log(Math.cos(hwhmDeg * DEG)) }, // closed form: cos^p = 1/2
+    abc: { a1: solveLog((a1) => w((c) => ndfABC(c, a1, abcA2)), hwhmDeg, 0.01, 1e4), a2: abcA2 },
+    sgd: { alpha: solveLog((a) => w((c) => ndfSGD(c, a, sgdP)), hwhmDeg, 0.01, 2), p: sgdP },
+  };
+}

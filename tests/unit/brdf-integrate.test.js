@@ -1,0 +1,96 @@
+import { describe, expect, it } from 'vitest';
+import { brdf, microfacetBRDF, punctualRadiance, VISIBILITY_TERMS, NDF_TERMS } from '../../src/math/brdf.js';
+import { albedoGGX, directionFromCos, hemisphereIntegral, reflectanceImportanceGGX } from '../../src/math/integrate.js';
+import { fresnelSchlick } from '../../src/math/fresnel.js';
+
+const dir = (theta, phi) => [Math.sin(theta) * Math.cos(phi), Math.sin(theta) * Math.sin(phi), Math.cos(theta)];
+const base = { F: 'schlick', D: 'ggx', V: 'smithGGXCorrelated', f0: 0.04, alpha: 0.3, exponent: 40, a1: 20, a2: 2.5, p: 0.64, eta: 1.5, k: 0 };
+
+describe('microfacet BRDF', () => {
+  it('is reciprocal: f(l, v) = f(v, l) for every term combination', () => {
+    for (const D of Object.keys(NDF_TERMS)) {
+      for (const V of Object.keys(VISIBILITY_TERMS)) {
+        const p = { ...base, D, V };
+        for (const [l, v] of [[dir(0.3, 0), dir(1.1, 2)], [dir(1.4, 1), dir(0.2, -1)], [dir(0.8, 0.5), dir(0.8, 0.5 + Math.PI)]]) {
+          expect(microfacetBRDF(l, v, p)).toBeCloseTo(microfacetBRDF(v, l, p), 10);
+        }
+      }
+    }
+  });
+  it('is 0 below the horizon and for l = -v, and never NaN, Inf or negative', () => {
+    expect(microfacetBRDF(dir(2, 0), dir(0.3, 0), base)).toBe(0);
+    expect(microfacetBRDF([0, 0, 1], [0, 0, -1], base)).toBe(0);
+    const grazing = [1, 0, 0];
+    for (const p of [base, { ...base, alpha: 1e-4 }, { ...base, alpha: 0 }]) {
+      for (const [l, v] of [[grazing, grazing], [[0, 0, 1], [0, 0, 1]], [grazing, [0, 0, 1]], [dir(1.5707, 0), dir(1.5707, Math.PI)]]) {
+        const f = brdf(l, v, p);
+        expect(Number.isFinite(f) && f >= 0).toBe(true);
+      }
+    }
+  });
+  it('is F·D·V/4 with the half-vector angles', () => {
+    const l = dir(0.5, 0);
+    const v = dir(0.9, Math.PI);
+    const h = [l[0] + v[0], l[1] + v[1], l[2] + v[2]];
+    const len = Math.hypot(...h);
+    const nh = h[2] / len;
+    const lh = (l[0] * h[0] + l[2] * h[2]) / len;
+    const a2 = 0.09;
+    const D = a2 / (Math.PI * (nh * nh * (a2 - 1) + 1) ** 2);
+    const lam = (c) => (-1 + Math.sqrt(1 + (a2 * (1 - c * c)) / (c * c))) / 2;
+    const V = 1 / (1 + lam(l[2]) + lam(v[2])) / (l[2] * v[2]);
+    expect(microfacetBRDF(l, v, base)).toBeCloseTo((fresnelSchlick(0.04, lh) * D * V) / 4, 12);
+  });
+  it('tends to the mirror as alpha -> 0: all reflected light leaves along the mirror direction', () => {
+    // E(mu) -> F(mu) and the lobe's energy concentrates where l = reflect(v, n)
+    const p = { ...base, F: 'one', alpha: 1e-3 };
+    expect(albedoGGX(0.7, 1e-3)).toBeCloseTo(1, 3);
+    const v = dir(0.6, 0);
+    const mirror = dir(0.6, Math.PI);
+    expect(microfacetBRDF(mirror, v, p)).toBeGreaterThan(1e4 * microfacetBRDF(dir(0.65, Math.PI), v, p));
+  });
+  it("gives a white Lambertian surface lit head-on exactly c_light with the talk's punctual equation", () => {
+    const lambert = () => 1 / Math.PI;
+    expect(punctualRadiance(lambert(), 1, 3.5)).toBeCloseTo(3.5, 14);
+    expect(punctualRadiance(lambert(), -0.2, 3.5)).toBe(0);
+  });
+});
+
+describe('directional albedo (white furnace, F = 1)', () => {
+  it('equals the closed form 1 - ln 2 at alpha = 1, mu = 1', () => {
+    // GGX at alpha = 1 is D = 1/pi; with v = n, E = 2 ∫_0^{pi/4} (sin 2θ - tan θ) dθ = 1 - ln 2
+    expect(albedoGGX(1, 1, 4096)).toBeCloseTo(1 - Math.log(2), 4);
+  });
+  it('never exceeds 1, falls with roughness, and is 1 for a near-mirror at normal incidence', () => {
+    for (const mu of [0.05, 0.3, 0.7, 1]) {
+      let prev = 2;
+      for (const a of [0.01, 0.2, 0.5, 0.8, 1]) {
+        const e = albedoGGX(mu, a);
+        expect(e).toBeLessThanOrEqual(1);
+        expect(e).toBeLessThan(prev + 1e-9);
+        prev = e;
+      }
+    }
+    expect(albedoGGX(1, 0.01)).toBeGreaterThan(0.999);
+  });
+  it('importance sampling agrees with brute-force quadrature of the reflectance equation', () => {
+    for (const a of [0.4, 0.7, 1]) {
+      for (const mu of [0.2, 0.6, 1]) {
+        const v = directionFromCos(mu);
+        const p = { ...base, F: 'one', alpha: a };
+        const quad = hemisphereIntegral((l) => microfacetBRDF(l, v, p), 300);
+        expect(albedoGGX(mu, a, 4096)).toBeCloseTo(quad, 2);
+      }
+    }
+  });
+  it('importance sampling converges as N grows', () => {
+    const v = directionFromCos(0.5);
+    const p = { ...base, alpha: 0.5 };
+    const f = (l, vv) => microfacetBRDF(l, vv, p);
+    const ref = reflectanceImportanceGGX(f, v, 0.5, 1 << 16);
+    const errs = [64, 1024, 16384].map((n) => Math.abs(reflectanceImportanceGGX(f, v, 0.5, n) - ref));
+    expect(errs[1]).toBeLessThan(errs[0]);
+    expect(errs[2]).toBeLessThan(errs[1]);
+    expect(errs[2]).toBeLessThan(1e-3);
+  });
+});
