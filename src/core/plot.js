@@ -52,7 +52,7 @@ function annotationsPlugin(getAnnotations) {
 const axis = (label, extra = {}) => ({ label, labelSize: 22, size: 48, stroke: '#333', grid: { stroke: '#0000001a' }, ...extra });
 
 /**
- * spec: { title, xLabel, yLabel, x: { min, max }, y: { min, max } | null, series: [{ label, stroke, dash, width }],
+ * spec: { title, xLabel, yLabel, x: { min, max }, y: { min, max, log } | null (auto), series: [{ label, stroke, dash, width }],
  *         data: [xs, ...ys], bands: [...], annotations: [...], filename, legend = true }
  * options.onCursor(index | null): the data index under the pointer, for a readout of the page's own.
  * Returns { setData(spec), dispose() }; setData rebuilds when the series change.
@@ -77,9 +77,12 @@ export function createPlot(container, spec, { onCursor } = {}) {
       ...size(),
       scales: {
         x: { time: false, range: [current.x.min, current.x.max] },
-        y: current.y ? { range: [current.y.min, current.y.max] } : { auto: true },
+        y: current.y?.log ? { distr: 3, log: 10, range: [current.y.min, current.y.max] } : current.y ? { range: [current.y.min, current.y.max] } : { auto: true },
       },
-      axes: [axis(current.xLabel, { values: current.xValues }), axis(current.yLabel)],
+      axes: [
+        axis(current.xLabel, { values: current.xValues }),
+        axis(current.yLabel, current.y?.log ? { values: (u, ticks) => ticks.map((t) => (Math.log10(t) % 1 === 0 ? `1e${Math.log10(t)}` : '')), size: 56 } : {}),
+      ],
       series: [{ label: current.xLabel, value: (_, v) => (v == null ? '—' : v.toFixed(1)) }, ...current.series.map((s) => ({
         label: s.label,
         stroke: s.stroke,

@@ -87,3 +87,19 @@ export function albedoGGX(mu, alpha, n = 1024) {
   }
   return Math.min(sum / n, 1);
 }
+
+/**
+ * ∫ D(m)(n·m) dω for an isotropic D(cos): 2π ∫_0^{π/2} D(cos θ) cos θ sin θ dθ by Simpson's rule in s with
+ * θ = (π/2) s², which crowds the nodes near θ = 0 where narrow lobes are. Should be 1 for every NDF.
+ */
+export function ndfProjectedIntegral(D, n = 4000) {
+  const h = 1 / n;
+  let sum = 0;
+  for (let i = 0; i <= n; i++) {
+    const s = i * h;
+    const theta = (Math.PI / 2) * s * s;
+    const g = D(Math.cos(theta)) * Math.cos(theta) * Math.sin(theta) * Math.PI * s; // dθ/ds = π s
+    sum += (i === 0 || i === n ? 1 : i % 2 ? 4 : 2) * g;
+  }
+  return ((2 * Math.PI * sum * h) / 3);
+}

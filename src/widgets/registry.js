@@ -15,6 +15,16 @@ export const WIDGETS = {
     summary: 'Normal-incidence reflectance of metals and non-metals, linear and sRGB, with swatches.',
     load: () => import('./f0-tables/f0-tables.js'),
   },
+  'ndf-explorer': {
+    title: 'NDF explorer',
+    summary: 'The five NDFs of the talk at one matched width: linear and log plots, highlights, normalisation.',
+    load: () => import('./ndf-explorer/ndf-explorer.js'),
+  },
+  'visibility-explorer': {
+    title: 'Visibility explorer',
+    summary: 'Implicit, Cook-Torrance, Kelemen and the Smith family against angle, their error, and on spheres.',
+    load: () => import('./visibility-explorer/visibility-explorer.js'),
+  },
 };
 
 export const isWidgetName = (name) => Object.hasOwn(WIDGETS, name);

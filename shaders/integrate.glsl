@@ -1,0 +1,37 @@
+// Directional albedo by importance sampling, mirrors albedoGGX of src/math/integrate.js: the same
+// Hammersley points, the same GGX normal sampling, the same estimator V nl (v·m)/(n·m).
+#include "visibility.glsl"
+
+vec2 hammersley(int i, int n) {
+  uint bits = uint(i);
+  bits = (bits << 16u) | (bits >> 16u);
+  bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
+  bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
+  bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
+  bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
+  return vec2((float(i) + 0.5) / float(n), float(bits) * 2.3283064365386963e-10);
+}
+
+vec3 sampleGGXNormal(vec2 u, float alpha) {
+  float a = clampAlpha(alpha);
+  float t2 = a * a * u.x / (1.0 - u.x);
+  float c = inversesqrt(1.0 + t2);
+  float s = sqrt(t2) * c;
+  float phi = 2.0 * PI * u.y;
+  return vec3(s * cos(phi), s * sin(phi), c);
+}
+
+float albedoGGX(float mu, float alpha, int n) {
+  float m0 = clamp(mu, 1e-6, 1.0);
+  vec3 v = vec3(sqrt(max(sin2FromCos(m0), 0.0)), 0.0, m0);
+  float sum = 0.0;
+  for (int i = 0; i < n; i++) {
+    vec3 m = sampleGGXNormal(hammersley(i, n), alpha);
+    float vm = dot(v, m);
+    if (vm <= 0.0) continue;
+    vec3 l = 2.0 * vm * m - v;
+    if (l.z <= 0.0) continue;
+    sum += visibilitySmithGGXCorrelated(l.z, v.z, alpha) * l.z * vm / m.z;
+  }
+  return min(sum / float(n), 1.0);
+}

@@ -1,0 +1,92 @@
+// A row of spheres in one canvas, each shaded by its own BRDF variant (brdf-sphere.frag.glsl) under the
+// same punctual light, or in the white furnace. Cells: [{ label, defines, uniforms }]; each cell is one
+// draw in its own viewport. Variants are compiled once and reused.
+import * as THREE from 'three';
+import { createViewport } from './viewport.js';
+import { assembleGlsl } from './glsl.js';
+import { SHADER_CHUNKS } from './shader-chunks.js';
+
+const UNIFORM_DEFAULTS = {
+  uLightDir: [0, 0, 1], uLightIntensity: 1, uExposure: 1, uAlpha: 0.3, uExponent: 40, uA1: 20, uA2: 2.5, uSgdP: 0.64, uF0: 1,
+};
+
+export function createSphereGrid(container, { label = 'Spheres', aspectPerCell = 1 } = {}) {
+  let cells = [];
+  const geometry = new THREE.SphereGeometry(1, 128, 64);
+  const materials = new Map();
+  const materialFor = (defines) => {
+    const key = JSON.stringify(defines);
+    if (!materials.has(key)) {
+      const uniforms = Object.fromEntries(
+        Object.entries(UNIFORM_DEFAULTS).map(([k, v]) => [k, { value: Array.isArray(v) ? new THREE.Vector3(...v) : v }]),
+      );
+      materials.set(key, new THREE.ShaderMaterial({
+        glslVersion: THREE.GLSL3,
+        uniforms,
+        vertexShader: SHADER_CHUNKS['surface.vert.glsl'],
+        fragmentShader: assembleGlsl(SHADER_CHUNKS['brdf-sphere.frag.glsl'], { defines }),
+      }));
+    }
+    return materials.get(key);
+  };
+  const mesh = new THREE.Mesh(geometry);
+  const scene = new THREE.Scene().add(mesh);
+  scene.background = new THREE.Color('#16181d');
+  const camera = new THREE.OrthographicCamera(-1.08, 1.08, 1.08, -1.08, 0.1, 10);
+  camera.position.z = 5;
+
+  const labels = document.createElement('div');
+  labels.className = 'sphere-labels';
+
+  const draw = (renderer) => {
+    const size = renderer.getSize(new THREE.Vector2());
+    const n = Math.max(cells.length, 1);
+    const w = size.x / n;
+    renderer.setScissorTest(true);
+    cells.forEach((cell, i) => {
+      const material = materialFor(cell.defines);
+      for (const [k, v] of Object.entries({ ...UNIFORM_DEFAULTS, ...cell.uniforms })) {
+        if (Array.isArray(v)) material.uniforms[k].value.set(...v);
+        else material.uniforms[k].value = v;
+      }
+      mesh.material = material;
+      const [x0, x1] = [Math.round(i * w), Math.round((i + 1) * w)]; // whole pixels: no seams between cells
+      const side = Math.min(x1 - x0, size.y);
+      renderer.setViewport(x0 + (x1 - x0 - side) / 2, (size.y - side) / 2, side, side);
+      renderer.setScissor(x0, 0, x1 - x0, size.y);
+      renderer.render(scene, camera);
+    });
+    renderer.setScissorTest(false);
+  };
+
+  const viewport = createViewport(container, { draw, label });
+  if (viewport) {
+    viewport.holder.classList.add('sphere-grid');
+    viewport.holder.append(labels);
+  }
+  const setAspect = () => viewport && (viewport.holder.style.aspectRatio = `${Math.max(cells.length, 1) * aspectPerCell} / 1`);
+
+  return {
+    /** Replaces the cells and redraws. */
+    setCells(next) {
+      cells = next;
+      labels.replaceChildren(...cells.map((c) => Object.assign(document.createElement('span'), { textContent: c.label })));
+      setAspect();
+      viewport?.invalidate();
+    },
+    get canvas() {
+      return viewport?.canvas;
+    },
+    get variants() {
+      return materials.size;
+    },
+    setDescription(text) {
+      viewport?.canvas.setAttribute('aria-label', text);
+    },
+    dispose() {
+      materials.forEach((m) => m.dispose());
+      geometry.dispose();
+      viewport?.dispose();
+    },
+  };
+}
