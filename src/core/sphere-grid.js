@@ -10,7 +10,7 @@ const UNIFORM_DEFAULTS = {
   uLightDir: [0, 0, 1], uLightIntensity: 1, uExposure: 1, uAlpha: 0.3, uExponent: 40, uA1: 20, uA2: 2.5, uSgdP: 0.64, uF0: 1,
 };
 
-export function createSphereGrid(container, { label = 'Spheres', aspectPerCell = 1 } = {}) {
+export function createSphereGrid(container, { label = 'Spheres', aspectPerCell = 1, background = '#16181d' } = {}) {
   let cells = [];
   const geometry = new THREE.SphereGeometry(1, 128, 64);
   const materials = new Map();
@@ -31,7 +31,7 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
   };
   const mesh = new THREE.Mesh(geometry);
   const scene = new THREE.Scene().add(mesh);
-  scene.background = new THREE.Color('#16181d');
+  scene.background = new THREE.Color(background);
   const camera = new THREE.OrthographicCamera(-1.08, 1.08, 1.08, -1.08, 0.1, 10);
   camera.position.z = 5;
 
@@ -62,6 +62,7 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
   const viewport = createViewport(container, { draw, label });
   if (viewport) {
     viewport.holder.classList.add('sphere-grid');
+    viewport.holder.classList.toggle('light-background', new THREE.Color(background).getHSL({}).l > 0.6);
     viewport.holder.append(labels);
   }
   const setAspect = () => viewport && (viewport.holder.style.aspectRatio = `${Math.max(cells.length, 1) * aspectPerCell} / 1`);

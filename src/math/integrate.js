@@ -103,3 +103,13 @@ export function ndfProjectedIntegral(D, n = 4000) {
   }
   return ((2 * Math.PI * sum * h) / 3);
 }
+
+/** Cosine-weighted average of E over incoming directions, E_avg = 2 ∫_0^1 E(mu) mu dmu (midpoint rule). */
+export function averageAlbedo(E, n = 64) {
+  let sum = 0;
+  for (let i = 0; i < n; i++) {
+    const mu = (i + 0.5) / n;
+    sum += E(mu) * mu;
+  }
+  return (2 * sum) / n;
+}

@@ -25,6 +25,11 @@ export const WIDGETS = {
     summary: 'Implicit, Cook-Torrance, Kelemen and the Smith family against angle, their error, and on spheres.',
     load: () => import('./visibility-explorer/visibility-explorer.js'),
   },
+  energy: {
+    title: 'White furnace',
+    summary: 'Directional albedo against angle for a sweep of roughness, the energy lost, and furnace spheres.',
+    load: () => import('./energy/energy.js'),
+  },
 };
 
 export const isWidgetName = (name) => Object.hasOwn(WIDGETS, name);
