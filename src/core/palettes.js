@@ -31,3 +31,14 @@ export function hexToRgb(hex) {
   const n = parseInt(hex.slice(1), 16);
   return [16, 8, 0].map((s) => ((n >> s) & 255) / 255);
 }
+
+// Viridis (perceptually uniform, colour-blind safe) at five stops, interpolated linearly.
+const VIRIDIS = [[68, 1, 84], [59, 82, 139], [33, 145, 140], [94, 201, 98], [253, 231, 37]];
+
+/** Viridis colour of t in [0, 1] as [r, g, b] in 0..255. */
+export function viridis(t) {
+  const x = Math.min(Math.max(t, 0), 1) * (VIRIDIS.length - 1);
+  const i = Math.min(Math.floor(x), VIRIDIS.length - 2);
+  const f = x - i;
+  return VIRIDIS[i].map((c, k) => c + f * (VIRIDIS[i + 1][k] - c));
+}

@@ -79,3 +79,14 @@ export function brdf(l, v, params, diffuse = null) {
 export function punctualRadiance(f, nl, cLight) {
   return Math.PI * f * cLight * Math.max(nl, 0);
 }
+
+/**
+ * The microfacet BRDF with factors switched off for teaching: F·D·G / (4 (n·l)(n·v)) where each factor in
+ * `use` ({ F, D, G, denominator }) that is false counts as 1. All on, it equals microfacetBRDF.
+ */
+export function microfacetFactors(l, v, params, use) {
+  const t = microfacetTerms(l, v, params);
+  const { nl, nv } = t.angles;
+  if (!(nl > 0 && nv > 0) || !t.angles.h) return 0;
+  return ((use.F ? t.F : 1) * (use.D ? t.D : 1) * (use.G ? t.G : 1)) / (use.denominator ? 4 * nl * nv : 1);
+}

@@ -10,3 +10,4 @@ export * from './special.js';
 export * from './brdf.js';
 export * from './integrate.js';
 export * from './ndf-width.js';
+export * from './half-diff.js';

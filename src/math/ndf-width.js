@@ -44,3 +44,14 @@ export function matchNdfWidths(hwhmDeg, { abcA2 = 2.5, sgdP = 0.64 } = {}) {
     sgd: { alpha: solveLog((a) => w((c) => ndfSGD(c, a, sgdP)), hwhmDeg, 0.01, 2), p: sgdP },
   };
 }
+
+/**
+ * The parameters of NDF `kind` whose half width matches GGX at roughness alpha, so that one roughness
+ * slider drives every NDF comparably. Returns the { alpha, exponent, a1, a2, p } object NDF_TERMS read.
+ */
+export function ndfParamsMatchingGGX(kind, alpha, shapes) {
+  if (kind === 'ggx') return { alpha };
+  const m = matchNdfWidths(ndfHalfWidthDeg((c) => ndfGGX(c, alpha)), shapes);
+  // NDFs without an alpha keep GGX's, which the visibility terms read
+  return { alpha: m[kind].alpha ?? alpha, exponent: m.blinnPhong.exponent, a1: m.abc.a1, a2: m.abc.a2, p: m.sgd.p };
+}

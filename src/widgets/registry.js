@@ -15,6 +15,11 @@ export const WIDGETS = {
     summary: 'Normal-incidence reflectance of metals and non-metals, linear and sRGB, with swatches.',
     load: () => import('./f0-tables/f0-tables.js'),
   },
+  'brdf-lobe': {
+    title: 'BRDF lobe',
+    summary: 'The microfacet BRDF taken apart: polar and 3-D lobes, factors on and off, two BRDFs, (θh, θd), albedo.',
+    load: () => import('./brdf-lobe/brdf-lobe.js'),
+  },
   'ndf-explorer': {
     title: 'NDF explorer',
     summary: 'The five NDFs of the talk at one matched width: linear and log plots, highlights, normalisation.',

@@ -94,3 +94,22 @@ describe('directional albedo (white furnace, F = 1)', () => {
     expect(errs[2]).toBeLessThan(1e-3);
   });
 });
+
+describe('half/difference angles (Rusinkiewicz 1998)', async () => {
+  const { directionsFromHalfDiff, halfDiffAngles } = await import('../../src/math/half-diff.js');
+  it('round-trips and gives unit directions whose half vector is at theta_h', () => {
+    for (const th of [0, 0.3, 1.2]) for (const td of [0, 0.4, 1.1]) for (const pd of [0, 1, 2.5]) {
+      const { l, v } = directionsFromHalfDiff(th, td, pd);
+      expect(Math.hypot(...l)).toBeCloseTo(1, 12);
+      expect(Math.hypot(...v)).toBeCloseTo(1, 12);
+      const back = halfDiffAngles(l, v);
+      expect(back.thetaH).toBeCloseTo(th, 9);
+      expect(back.thetaD).toBeCloseTo(td, 9);
+    }
+  });
+  it('theta_h = 0, theta_d = θ is the mirror configuration at θ', () => {
+    const { l, v } = directionsFromHalfDiff(0, 0.7, 0);
+    expect(l[2]).toBeCloseTo(Math.cos(0.7), 12);
+    expect(v[0]).toBeCloseTo(-l[0], 12);
+  });
+});

@@ -1,0 +1,157 @@
+// brdf-lobe: the microfacet BRDF taken apart, in the spirit of Disney's BRDF Explorer. For a light the user
+// drags: the BRDF in the plane of incidence (polar), as a 3-D lobe, over the half/difference angles, and its
+// directional albedo; each factor (F, D, G, the denominator) can be switched off, and a second BRDF overlaid.
+import { createWidgetShell } from '../../core/widget-shell.js';
+import { createPlot } from '../../core/plot.js';
+import { NDF_TERMS, VISIBILITY_TERMS, brdfAngles, microfacetBRDF, microfacetFactors } from '../../math/brdf.js';
+import { ndfParamsMatchingGGX } from '../../math/ndf-width.js';
+import { directionFromCos, reflectanceImportanceGGX } from '../../math/integrate.js';
+import { directionsFromHalfDiff } from '../../math/half-diff.js';
+import { NDFS } from '../ndf-explorer/ndf-explorer.js';
+import { TERMS } from '../visibility-explorer/visibility-explorer.js';
+import { createPolarPlot } from './polar-plot.js';
+import { createLobeView } from './lobe-view.js';
+import { createHalfDiffImage } from './half-diff-image.js';
+
+const DEG = Math.PI / 180;
+const ndfOptions = Object.fromEntries(Object.keys(NDF_TERMS).map((k) => [k, NDFS[k].name]));
+const visOptions = Object.fromEntries(Object.keys(VISIBILITY_TERMS).map((k) => [k, TERMS[k].name]));
+
+export const schema = {
+  lightTheta: { type: 'number', min: 0, max: 89, step: 1, default: 45, label: 'Light θl', unit: '°' },
+  viewTheta: { type: 'number', min: -89, max: 89, step: 1, default: 45, label: 'View θv (+: mirror side)', unit: '°' },
+  D: { type: 'enum', options: ndfOptions, default: 'ggx', label: 'A: D' },
+  V: { type: 'enum', options: visOptions, default: 'smithGGXCorrelated', label: 'A: V' },
+  F: { type: 'enum', options: { schlick: 'Schlick', one: 'F = 1' }, default: 'schlick', label: 'F' },
+  alpha: { type: 'number', min: 0.02, max: 1, step: 0.01, default: 0.3, label: 'A: roughness α (GGX)' },
+  f0: { type: 'number', min: 0, max: 1, step: 0.01, default: 0.04, label: 'F0' },
+  useF: { type: 'bool', default: true, label: 'Factor F' },
+  useD: { type: 'bool', default: true, label: 'Factor D' },
+  useG: { type: 'bool', default: true, label: 'Factor G' },
+  useDenominator: { type: 'bool', default: true, label: '÷ 4(n·l)(n·v)' },
+  cosine: { type: 'bool', default: false, label: 'Lobe × n·v (intensity)' },
+  compare: { type: 'bool', default: false, label: 'Overlay BRDF B' },
+  D2: { type: 'enum', options: ndfOptions, default: 'beckmann', label: 'B: D' },
+  V2: { type: 'enum', options: visOptions, default: 'smithBeckmannSeparable', label: 'B: V' },
+  alpha2: { type: 'number', min: 0.02, max: 1, step: 0.01, default: 0.3, label: 'B: roughness α (GGX)' },
+  phiD: { type: 'number', min: 0, max: 180, step: 1, default: 90, label: 'Image φd', unit: '°' },
+};
+
+const ABOUT =
+  'Drag l or v on the polar plot (or focus it and use the arrow keys). The lobe is f(l, v) for every view ' +
+  'direction: turn off D and the highlight’s shape is gone; turn off the denominator and the lobe stops ' +
+  'growing at grazing angles (with F, that is why f itself is largest towards the horizon; × n·v shows how much ' +
+  'light actually leaves in each direction); turn off G and nothing dims at the horizon. Roughness is GGX’s α; other NDFs take ' +
+  'the parameters that give them the same half width. The image over (θh, θd) shows the same BRDF in the ' +
+  'angles it really depends on; the albedo plot integrates it over all light directions.';
+
+const lightDir = (deg) => [-Math.sin(deg * DEG), 0, Math.cos(deg * DEG)];
+const viewDir = (deg) => [Math.sin(deg * DEG), 0, Math.cos(deg * DEG)];
+
+function brdfSpec(state, which) {
+  const [D, V, alpha] = which === 'B' ? [state.D2, state.V2, state.alpha2] : [state.D, state.V, state.alpha];
+  return { D, V, F: state.F, f0: state.f0, ...ndfParamsMatchingGGX(D, alpha), samplingAlpha: alpha, label: `${which}: ${NDFS[D].name.split(' (')[0]} + ${TERMS[V].name}` };
+}
+
+export function createBrdfLobe(container, initialState = {}, { onStateChange } = {}) {
+  const shell = createWidgetShell(container, { name: 'brdf-lobe', schema, initialState, about: ABOUT });
+  const top = document.createElement('div');
+  top.className = 'lobe-row';
+  const bottom = document.createElement('div');
+  bottom.className = 'lobe-row';
+  const readout = document.createElement('div');
+  shell.view.append(top, bottom, readout);
+  const update = (partial) => updateState(partial);
+  const polar = createPolarPlot(top, { onDrag: update });
+  const lobeHolder = document.createElement('div');
+  lobeHolder.className = 'lobe-3d';
+  top.append(lobeHolder);
+  const lobe3d = createLobeView(lobeHolder);
+  const images = document.createElement('div');
+  images.className = 'half-diff-row';
+  bottom.append(images);
+  const imageA = createHalfDiffImage(images, 'A over (θh, θd)');
+  const imageB = createHalfDiffImage(images, 'B over (θh, θd)');
+  const plotHolder = document.createElement('div');
+  plotHolder.className = 'albedo-plot';
+  bottom.append(plotHolder);
+
+  const use = () => ({ F: shell.state.useF, D: shell.state.useD, G: shell.state.useG, denominator: shell.state.useDenominator });
+  const specs = () => [brdfSpec(shell.state, 'A'), ...(shell.state.compare ? [brdfSpec(shell.state, 'B')] : [])];
+
+  const albedoSpec = () => {
+    const angles = Float64Array.from({ length: 45 }, (_, i) => i * 2 + 1);
+    const series = specs().map((p, i) => ({
+      label: p.label, stroke: i ? '#009e73' : '#d55e00',
+      values: angles.map((deg) => reflectanceImportanceGGX((l, v) => microfacetBRDF(l, v, p), directionFromCos(Math.cos(deg * DEG)), p.samplingAlpha, 512)),
+    }));
+    return {
+      title: 'Directional albedo E(θv) = ∫ f (n·l) dω (all factors on)', xLabel: 'View angle θv (degrees)', yLabel: 'E', x: { min: 0, max: 90 },
+      y: null, xValues: (u, t) => t.map((v) => `${v}°`), series, data: [angles, ...series.map((s) => s.values)], filename: 'brdf-albedo', height: 250,
+    };
+  };
+  let albedo = createPlot(plotHolder, albedoSpec());
+
+  const render = (changed) => {
+    const s = shell.state;
+    const l = lightDir(s.lightTheta);
+    const v = viewDir(s.viewTheta);
+    const [A, B] = specs();
+    const f = (p) => (vv) => microfacetFactors(l, vv, p, use()) * (s.cosine ? Math.max(vv[2], 0) : 1);
+    const lobeOf = (p) => Array.from({ length: 357 }, (_, i) => {
+      const theta = -89 + i * 0.5;
+      return [theta, f(p)(viewDir(theta))];
+    });
+    const lobeA = lobeOf(A);
+    const lobeB = B ? lobeOf(B) : null;
+    const max = Math.max(...lobeA.map((x) => x[1]), ...(lobeB ?? []).map((x) => x[1]), 1e-9);
+    const a = brdfAngles(l, v);
+    polar.draw({ lobeA, lobeB, max, lightTheta: s.lightTheta, viewTheta: s.viewTheta, halfTheta: a.h ? Math.atan2(a.h[0], a.h[2]) / DEG : null });
+    polar.canvas.setAttribute('aria-label', `Polar plot of f(l, v) with the light ${s.lightTheta}° from n and the view at ${s.viewTheta}°; largest value ${max.toPrecision(3)} per steradian.`);
+    const max3d = Math.max(max, 1e-9);
+    lobe3d.update({
+      fA: f(A), fB: B ? f(B) : null, max: max3d,
+      directions: { n: [0, 0, 1], l, v, h: a.h, mirror: [-l[0], 0, l[2]] },
+    });
+    if (!changed || changed.some((k) => !['lightTheta', 'viewTheta'].includes(k))) {
+      const image = (p) => (th, td) => {
+        const d = directionsFromHalfDiff(th, td, s.phiD * DEG);
+        return microfacetFactors(d.l, d.v, p, use());
+      };
+      imageA.draw(image(A));
+      imageB.draw(B ? image(B) : () => 0);
+      images.classList.toggle('single', !B);
+    }
+    if (changed?.some((k) => ['D', 'V', 'F', 'alpha', 'f0', 'compare', 'D2', 'V2', 'alpha2'].includes(k))) albedo.setData(albedoSpec());
+    const rows = [A, B].filter(Boolean).map((p) => {
+      const t = microfacetFactors(l, v, p, { F: true, D: true, G: true, denominator: true });
+      const terms = { F: 1, D: 1, G: 1 };
+      if (a.h && a.nl > 0 && a.nv > 0) {
+        terms.F = p.F === 'one' ? 1 : microfacetFactors(l, v, p, { F: true, D: false, G: false, denominator: false });
+        terms.D = microfacetFactors(l, v, p, { F: false, D: true, G: false, denominator: false });
+        terms.G = microfacetFactors(l, v, p, { F: false, D: false, G: true, denominator: false });
+      }
+      return `<tr><td>${p.label}</td><td>${terms.F.toFixed(4)}</td><td>${terms.D.toPrecision(4)}</td><td>${terms.G.toFixed(4)}</td><td>${t.toPrecision(4)}</td></tr>`;
+    });
+    readout.innerHTML = `<table class="data-table compact"><caption>At l = ${s.lightTheta}°, v = ${s.viewTheta}°: n·l ${a.nl.toFixed(3)}, n·v ${a.nv.toFixed(3)}, n·h ${a.nh.toFixed(3)}, l·h ${a.lh.toFixed(3)}</caption>` +
+      `<thead><tr><th>BRDF</th><th>F</th><th>D (1/sr)</th><th>G</th><th>f = FDG/(4 n·l n·v) (1/sr)</th></tr></thead><tbody>${rows.join('')}</tbody></table>`;
+  };
+
+  const updateState = shell.connect({ title: 'BRDF lobe', onChanged: render, onStateChange });
+  render(null);
+
+  return {
+    update,
+    getState: () => shell.state,
+    dispose() {
+      polar.dispose();
+      lobe3d.dispose();
+      imageA.dispose();
+      imageB.dispose();
+      albedo.dispose();
+      shell.dispose();
+    },
+  };
+}
+
+export const widget = { name: 'brdf-lobe', schema, create: createBrdfLobe };

@@ -1,0 +1,68 @@
+// A BRDF as an image over the half/difference angles: theta_h across, theta_d up, at one phi_d, with
+// log-scaled viridis colours. Specular peaks lie along theta_h = 0; Fresnel brightens towards theta_d = 90°.
+import { viridis } from '../../core/palettes.js';
+
+const N = 90;
+const DECADES = 4; // colour range: the top of the scale down to 1e-4 of it
+const TOP_PERCENTILE = 0.99; // grazing angles blow up; scale to the 99th percentile, not the maximum
+
+export function createHalfDiffImage(container, title) {
+  const figure = document.createElement('figure');
+  figure.className = 'half-diff';
+  const caption = document.createElement('figcaption');
+  caption.textContent = title;
+  const canvas = document.createElement('canvas');
+  canvas.width = 232;
+  canvas.height = 226;
+  canvas.setAttribute('role', 'img');
+  figure.append(caption, canvas);
+  container.append(figure);
+  const cell = document.createElement('canvas');
+  cell.width = N;
+  cell.height = N;
+
+  return {
+    /** value(thetaH, thetaD) in radians; returns the largest value drawn. */
+    draw(value) {
+      const vals = new Float64Array(N * N);
+      for (let j = 0; j < N; j++) {
+        for (let i = 0; i < N; i++) vals[j * N + i] = value(((i + 0.5) * Math.PI) / 2 / N, ((j + 0.5) * Math.PI) / 2 / N);
+      }
+      const sorted = Float64Array.from(vals).sort();
+      const max = sorted[Math.floor(TOP_PERCENTILE * (sorted.length - 1))];
+      const img = cell.getContext('2d').createImageData(N, N);
+      vals.forEach((v, k) => {
+        const i = k % N;
+        const j = Math.floor(k / N);
+        const t = v > 0 && max > 0 ? 1 + Math.log10(v / max) / DECADES : 0;
+        const [r, g, b] = v > 0 ? viridis(t) : [30, 30, 30];
+        const o = ((N - 1 - j) * N + i) * 4; // theta_d grows upwards
+        img.data.set([r, g, b, 255], o);
+      });
+      cell.getContext('2d').putImageData(img, 0, 0);
+      const ctx = canvas.getContext('2d');
+      ctx.clearRect(0, 0, canvas.width, canvas.height);
+      const [x0, y0, size] = [40, 8, 180];
+      ctx.imageSmoothingEnabled = false;
+      ctx.drawImage(cell, x0, y0, size, size);
+      ctx.fillStyle = '#333';
+      ctx.font = '11px system-ui, sans-serif';
+      ctx.textAlign = 'center';
+      for (const deg of [0, 30, 60, 90]) {
+        ctx.fillText(`${deg}°`, x0 + (deg / 90) * size, y0 + size + 13);
+        ctx.fillText(`${deg}°`, x0 - 16, y0 + size - (deg / 90) * size + 4);
+      }
+      ctx.fillText('θh (half vector from n)', x0 + size / 2, y0 + size + 27);
+      ctx.save();
+      ctx.translate(10, y0 + size / 2);
+      ctx.rotate(-Math.PI / 2);
+      ctx.fillText('θd (l from h)', 0, 0);
+      ctx.restore();
+      canvas.setAttribute('aria-label', `${title}; colour scale tops at ${max.toPrecision(3)} per steradian (99th percentile) over ${DECADES} decades.`);
+      return max;
+    },
+    dispose() {
+      figure.remove();
+    },
+  };
+}

@@ -1,0 +1,114 @@
+// The BRDF as a 3-D lobe over a surface patch: for the current light, each direction v is pushed out by
+// f(l, v) (scaled to the largest value); A is solid orange, B a green wireframe, as in the polar plot. Drag to orbit. n, l, v, h and the mirror
+// direction are drawn as arrows.
+import * as THREE from 'three';
+import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { createViewport } from '../../core/viewport.js';
+
+const THETA_STEPS = 45;
+const PHI_STEPS = 96;
+
+/** Directions of the hemisphere grid, local frame (n = z). */
+function hemisphereDirections() {
+  const dirs = [];
+  for (let i = 0; i <= THETA_STEPS; i++) {
+    const t = (i / THETA_STEPS) * (Math.PI / 2);
+    for (let j = 0; j <= PHI_STEPS; j++) {
+      const p = (j / PHI_STEPS) * 2 * Math.PI;
+      dirs.push([Math.sin(t) * Math.cos(p), Math.sin(t) * Math.sin(p), Math.cos(t)]);
+    }
+  }
+  return dirs;
+}
+
+function gridIndex() {
+  const idx = [];
+  const row = PHI_STEPS + 1;
+  for (let i = 0; i < THETA_STEPS; i++) {
+    for (let j = 0; j < PHI_STEPS; j++) {
+      const a = i * row + j;
+      idx.push(a, a + row, a + 1, a + 1, a + row, a + row + 1);
+    }
+  }
+  return idx;
+}
+
+export function createLobeView(container) {
+  const dirs = hemisphereDirections();
+  const makeGeometry = () => {
+    const g = new THREE.BufferGeometry();
+    g.setAttribute('position', new THREE.Float32BufferAttribute(new Float32Array(dirs.length * 3), 3));
+    g.setIndex(gridIndex());
+    return g;
+  };
+  const scene = new THREE.Scene();
+  scene.background = new THREE.Color('#f4f5f7');
+  const local = new THREE.Group(); // local frame n = z shown with three's y up
+  local.rotation.x = -Math.PI / 2;
+  scene.add(local, new THREE.HemisphereLight('#ffffff', '#888888', 2.2), new THREE.AmbientLight('#ffffff', 0.6));
+  const sun = new THREE.DirectionalLight('#ffffff', 1.5);
+  sun.position.set(2, 4, 3);
+  scene.add(sun);
+
+  const patch = new THREE.Mesh(new THREE.CircleGeometry(1.25, 64), new THREE.MeshLambertMaterial({ color: '#c8ccd2', side: THREE.DoubleSide }));
+  const lobeA = new THREE.Mesh(makeGeometry(), new THREE.MeshLambertMaterial({ color: '#d55e00', side: THREE.DoubleSide }));
+  const lobeB = new THREE.Mesh(makeGeometry(), new THREE.MeshBasicMaterial({ color: '#009e73', wireframe: true, transparent: true, opacity: 0.45 }));
+  local.add(patch, lobeA, lobeB);
+  const arrows = {};
+  for (const [key, color] of Object.entries({ n: '#333333', l: '#e6a700', v: '#0072b2', h: '#cc79a7', mirror: '#888888' })) {
+    arrows[key] = new THREE.ArrowHelper(new THREE.Vector3(0, 0, 1), new THREE.Vector3(), 1.3, color, 0.1, 0.06);
+    local.add(arrows[key]);
+  }
+
+  const camera = new THREE.PerspectiveCamera(35, 1, 0.1, 50);
+  camera.position.set(2.6, 2.2, 3.2);
+  let controls = null;
+  const viewport = createViewport(container, {
+    draw: (renderer) => renderer.render(scene, camera),
+    onResize: (w, h) => {
+      camera.aspect = w / h;
+      camera.updateProjectionMatrix();
+    },
+    label: 'BRDF lobe in 3-D',
+  });
+  if (viewport) {
+    controls = new OrbitControls(camera, viewport.canvas);
+    controls.target.set(0, 0.35, 0);
+    controls.update();
+    controls.addEventListener('change', viewport.invalidate);
+  }
+
+  const fill = (mesh, f, max) => {
+    const pos = mesh.geometry.attributes.position;
+    dirs.forEach((d, i) => {
+      const r = f(d) / max;
+      pos.setXYZ(i, d[0] * r, d[1] * r, d[2] * r);
+    });
+    pos.needsUpdate = true;
+    mesh.geometry.computeVertexNormals();
+    mesh.geometry.computeBoundingSphere();
+  };
+
+  return {
+    /** fA(v), fB(v) | null: the lobes for the current light; dirs: { n, l, v, h, mirror } as arrays (h may be null). */
+    update({ fA, fB, max, directions }) {
+      fill(lobeA, fA, max);
+      lobeB.visible = Boolean(fB);
+      if (fB) fill(lobeB, fB, max);
+      for (const [key, d] of Object.entries(directions)) {
+        arrows[key].visible = Boolean(d);
+        if (d) arrows[key].setDirection(new THREE.Vector3(...d).normalize());
+      }
+      viewport?.invalidate();
+    },
+    dispose() {
+      controls?.dispose();
+      [patch, lobeA, lobeB].forEach((m) => {
+        m.geometry.dispose();
+        m.material.dispose();
+      });
+      Object.values(arrows).forEach((a) => a.dispose());
+      viewport?.dispose();
+    },
+  };
+}

@@ -1,0 +1,161 @@
+// The BRDF in the plane of incidence as a polar plot: angle from n on the dial, f(l, v) as the radius.
+// The light handle (left) and the view handle (right) can be dragged; n, l, v, the mirror direction and
+// the half vector of l and v are drawn. uPlot has no polar mode, hence a canvas of its own.
+
+const DEG = Math.PI / 180;
+const COLORS = { light: '#e6a700', view: '#0072b2', half: '#cc79a7', mirror: '#777', grid: '#0000001f', a: '#d55e00', b: '#009e73' };
+
+export function createPolarPlot(container, { onDrag }) {
+  const figure = document.createElement('figure');
+  figure.className = 'polar-plot';
+  const caption = document.createElement('figcaption');
+  caption.textContent = 'In the plane of incidence (radius: value in 1/sr, scaled to the largest)';
+  const canvas = document.createElement('canvas');
+  canvas.tabIndex = 0;
+  canvas.setAttribute('role', 'img');
+  figure.append(caption, canvas);
+  container.append(figure);
+  let last = null;
+
+  const geometry = () => {
+    const w = canvas.clientWidth;
+    const h = canvas.clientHeight;
+    const R = Math.min(w / 2, h) * 0.86;
+    return { w, h, R, cx: w / 2, cy: h * 0.92 };
+  };
+  // angle theta from n, positive towards +x (the view side), negative towards the light side
+  const toXY = (g, theta, r) => [g.cx + r * g.R * Math.sin(theta * DEG), g.cy - r * g.R * Math.cos(theta * DEG)];
+
+  function draw(spec) {
+    last = spec;
+    const dpr = window.devicePixelRatio || 1;
+    const g = geometry();
+    canvas.width = Math.round(g.w * dpr);
+    canvas.height = Math.round(g.h * dpr);
+    const ctx = canvas.getContext('2d');
+    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    ctx.clearRect(0, 0, g.w, g.h);
+    ctx.font = '11px system-ui, sans-serif';
+    // grid: radius rings and angle spokes
+    ctx.strokeStyle = COLORS.grid;
+    ctx.fillStyle = '#666';
+    for (const r of [0.25, 0.5, 0.75, 1]) {
+      ctx.beginPath();
+      ctx.arc(g.cx, g.cy, r * g.R, Math.PI, 2 * Math.PI);
+      ctx.stroke();
+      ctx.fillText(`${(r * spec.max).toPrecision(2)}`, g.cx + 3, g.cy - r * g.R + 11);
+    }
+    for (let a = -90; a <= 90; a += 30) {
+      const [x, y] = toXY(g, a, 1.04);
+      ctx.beginPath();
+      ctx.moveTo(g.cx, g.cy);
+      ctx.lineTo(...toXY(g, a, 1));
+      ctx.stroke();
+      ctx.textAlign = 'center';
+      ctx.fillText(`${Math.abs(a)}°`, x, y);
+    }
+    ctx.strokeStyle = '#333';
+    ctx.beginPath();
+    ctx.moveTo(g.cx - g.R * 1.05, g.cy);
+    ctx.lineTo(g.cx + g.R * 1.05, g.cy);
+    ctx.stroke();
+    ctx.textAlign = 'left';
+    ctx.fillText('surface', g.cx - g.R * 1.05, g.cy + 12);
+    // lobes
+    for (const [lobe, color, fill] of [[spec.lobeA, COLORS.a, true], [spec.lobeB, COLORS.b, false]]) {
+      if (!lobe) continue;
+      ctx.beginPath();
+      lobe.forEach(([theta, value], i) => {
+        const [x, y] = toXY(g, theta, value / spec.max);
+        if (i) ctx.lineTo(x, y);
+        else ctx.moveTo(x, y);
+      });
+      ctx.closePath();
+      ctx.strokeStyle = color;
+      ctx.lineWidth = 2;
+      ctx.setLineDash(fill ? [] : [6, 4]);
+      ctx.stroke();
+      if (fill) {
+        ctx.fillStyle = `${color}33`;
+        ctx.fill();
+      }
+    }
+    ctx.setLineDash([]);
+    // directions
+    const arrow = (theta, color, label, dash = []) => {
+      const [x, y] = toXY(g, theta, 1);
+      ctx.strokeStyle = color;
+      ctx.fillStyle = color;
+      ctx.lineWidth = 2;
+      ctx.setLineDash(dash);
+      ctx.beginPath();
+      ctx.moveTo(g.cx, g.cy);
+      ctx.lineTo(x, y);
+      ctx.stroke();
+      ctx.setLineDash([]);
+      ctx.beginPath();
+      ctx.arc(x, y, label === 'l' || label === 'v' ? 7 : 3, 0, 2 * Math.PI);
+      ctx.fill();
+      ctx.font = 'bold 13px system-ui, sans-serif';
+      ctx.fillText(label, x + 9, label === 'mirror' ? y + 16 : y - 6);
+      ctx.font = '11px system-ui, sans-serif';
+    };
+    arrow(0, '#333', 'n');
+    arrow(spec.lightTheta, COLORS.mirror, 'mirror', [4, 4]);
+    if (spec.halfTheta !== null) arrow(spec.halfTheta, COLORS.half, 'h');
+    arrow(-spec.lightTheta, COLORS.light, 'l');
+    arrow(spec.viewTheta, COLORS.view, 'v');
+  }
+
+  // dragging: the handle nearest the pointer follows it
+  let dragging = null;
+  const angleAt = (e) => {
+    const rect = canvas.getBoundingClientRect();
+    const g = geometry();
+    const dx = e.clientX - rect.left - g.cx;
+    const dy = g.cy - (e.clientY - rect.top);
+    return Math.max(-89, Math.min(89, Math.atan2(dx, Math.max(dy, 0)) / DEG));
+  };
+  const down = (e) => {
+    if (!last) return;
+    const a = angleAt(e);
+    dragging = Math.abs(a + last.lightTheta) < Math.abs(a - last.viewTheta) ? 'light' : 'view';
+    canvas.setPointerCapture(e.pointerId);
+    move(e);
+  };
+  const move = (e) => {
+    if (!dragging) return;
+    const a = Math.round(angleAt(e));
+    onDrag(dragging === 'light' ? { lightTheta: Math.max(0, -a) } : { viewTheta: a });
+  };
+  const up = () => {
+    dragging = null;
+  };
+  canvas.addEventListener('pointerdown', down);
+  canvas.addEventListener('pointermove', move);
+  canvas.addEventListener('pointerup', up);
+  canvas.addEventListener('keydown', (e) => {
+    if (!last) return;
+    const step = e.shiftKey ? 1 : 5;
+    const moves = {
+      ArrowUp: { lightTheta: last.lightTheta - step },
+      ArrowDown: { lightTheta: last.lightTheta + step },
+      ArrowLeft: { viewTheta: last.viewTheta - step },
+      ArrowRight: { viewTheta: last.viewTheta + step },
+    };
+    if (!moves[e.key]) return;
+    e.preventDefault();
+    onDrag(moves[e.key]);
+  });
+  const resize = new ResizeObserver(() => last && draw(last));
+  resize.observe(canvas);
+
+  return {
+    draw,
+    canvas,
+    dispose() {
+      resize.disconnect();
+      figure.remove();
+    },
+  };
+}
