@@ -2,8 +2,14 @@
 export const CHAPTERS = [
   { key: 'media', title: 'Light in media', blurb: 'Absorption, scattering and the scale at which they show.' },
   { key: 'surfaces', title: 'Surfaces and microgeometry', blurb: 'Optically flat vs rough; metals vs non-metals; when diffuse is local.' },
-  { key: 'brdf', title: 'The BRDF and the reflectance equation', blurb: 'Lobes, and the integral as a weighted average.' },
-  { key: 'microfacets', title: 'Microfacet theory', blurb: 'The half vector, shadowing and masking, the energy lost.' },
+  { key: 'brdf', title: 'The BRDF and the reflectance equation', blurb: 'Lobes, and the integral as a weighted average.', page: 'brdf.html', widgets: ['brdf-lobe'] },
+  {
+    key: 'microfacets',
+    title: 'Microfacet theory',
+    blurb: 'The half vector, shadowing and masking, the energy lost.',
+    page: 'microfacets.html',
+    widgets: ['microfacets', 'energy'],
+  },
   {
     key: 'fresnel',
     title: 'Fresnel reflectance',
@@ -11,8 +17,8 @@ export const CHAPTERS = [
     page: 'fresnel.html',
     widgets: ['fresnel-curves', 'fresnel-zones', 'f0-tables'],
   },
-  { key: 'ndf', title: 'Normal distribution functions', blurb: 'Five NDFs at matched widths: highlights and tails.' },
-  { key: 'visibility', title: 'Geometry and visibility terms', blurb: 'Implicit, Cook–Torrance, Kelemen, Smith.' },
+  { key: 'ndf', title: 'Normal distribution functions', blurb: 'Five NDFs at matched widths: highlights and tails.', page: 'ndf.html', widgets: ['ndf-explorer'] },
+  { key: 'visibility', title: 'Geometry and visibility terms', blurb: 'Implicit, Cook–Torrance, Kelemen, Smith.', page: 'visibility.html', widgets: ['visibility-explorer'] },
   { key: 'diffuse', title: 'Diffuse', blurb: 'Lambert, the diffuse–specular trade-off, Oren–Nayar.' },
   { key: 'rendering', title: 'From math to rendering', blurb: 'Punctual, image-based, area and ambient light.' },
   { key: 'performance', title: 'Performance and accuracy', blurb: 'Run time against error for every approximation.' },

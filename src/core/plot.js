@@ -88,7 +88,7 @@ export function createPlot(container, spec, { onCursor } = {}) {
         stroke: s.stroke,
         width: s.width ?? 2,
         dash: s.dash,
-        points: { show: false },
+        points: { show: Boolean(s.points), size: 7, fill: s.stroke },
         value: (_, v) => (v == null ? '—' : v.toFixed(4)),
       }))],
       legend: { show: current.legend ?? true, live: true },

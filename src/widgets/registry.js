@@ -30,6 +30,11 @@ export const WIDGETS = {
     summary: 'Implicit, Cook-Torrance, Kelemen and the Smith family against angle, their error, and on spheres.',
     load: () => import('./visibility-explorer/visibility-explorer.js'),
   },
+  microfacets: {
+    title: 'Microsurface',
+    summary: 'A 2-D microsurface under a bundle of rays: facets along h, shadowing, masking, second bounces, vs Smith.',
+    load: () => import('./microfacets/microfacets.js'),
+  },
   energy: {
     title: 'White furnace',
     summary: 'Directional albedo against angle for a sweep of roughness, the energy lost, and furnace spheres.',

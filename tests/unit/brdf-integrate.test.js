@@ -113,3 +113,25 @@ describe('half/difference angles (Rusinkiewicz 1998)', async () => {
     expect(v[0]).toBeCloseTo(-l[0], 12);
   });
 });
+
+describe('2-D microsurface (independent of the Smith formulas it is compared with)', async () => {
+  const { generateProfile, measuredG1, sampleSlope, seededRandom } = await import('../../src/math/microsurface.js');
+  const { smithG1Beckmann, smithG1GGX } = await import('../../src/math/visibility.js');
+  it('draws Beckmann slopes with variance alpha²/2 and GGX slopes with the GGX marginal median alpha/sqrt(3)', () => {
+    const rand = seededRandom(11);
+    const b = Array.from({ length: 200000 }, () => sampleSlope('beckmann', 0.4, rand));
+    expect(b.reduce((s, x) => s + x * x, 0) / b.length).toBeCloseTo(0.08, 3);
+    // GGX marginal CDF 1/2 + q/(2 sqrt(a² + q²)) = 3/4 at q = a/sqrt(3)
+    const g = Array.from({ length: 200000 }, () => Math.abs(sampleSlope('ggx', 0.4, rand))).sort((x, y) => x - y);
+    expect(g[g.length / 2]).toBeCloseTo(0.4 / Math.sqrt(3), 2);
+  });
+  it("ray-traced shadowing matches Smith's G1 within 0.03", () => {
+    for (const [kind, G1] of [['beckmann', smithG1Beckmann], ['ggx', smithG1GGX]]) {
+      const h = generateProfile(80000, kind, 0.5, 4);
+      for (const deg of [30, 60, 75, 85]) {
+        const t = (deg * Math.PI) / 180;
+        expect(Math.abs(measuredG1(h, t) - G1(Math.cos(t), 0.5))).toBeLessThan(0.03);
+      }
+    }
+  });
+});

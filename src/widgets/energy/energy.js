@@ -10,8 +10,9 @@ import { albedoGGX, averageAlbedo } from '../../math/integrate.js';
 export const schema = {
   alphas: {
     type: 'set',
-    options: { 0.05: 'α 0.05', 0.25: 'α 0.25', 0.5: 'α 0.5', 0.75: 'α 0.75', 1: 'α 1' },
-    default: ['0.05', '0.25', '0.5', '0.75', '1'],
+    // '1.0', not '1': an integer-like key would be listed first
+    options: { '0.05': 'α 0.05', '0.25': 'α 0.25', '0.5': 'α 0.5', '0.75': 'α 0.75', '1.0': 'α 1' },
+    default: ['0.05', '0.25', '0.5', '0.75', '1.0'],
     label: 'Roughness sweep',
   },
   samples: { type: 'enum', options: { 32: '32', 64: '64', 128: '128', 256: '256' }, default: '64', label: 'GPU samples / pixel' },

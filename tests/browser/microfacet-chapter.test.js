@@ -1,0 +1,126 @@
+// The microfacet chapters (BRDF, microfacet theory, NDF, visibility) in a real Chromium.
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { distinctColors, getState, launchBrowser, open, setControl, settle, shot, widget } from './helpers.js';
+import { linearToSrgb } from '../../src/math/color.js';
+
+let browser;
+beforeAll(async () => {
+  browser = await launchBrowser();
+});
+afterAll(async () => {
+  await browser?.close();
+});
+
+describe('chapter pages load cleanly', () => {
+  for (const [path, keys] of [['brdf.html', ['lobe']], ['microfacets.html', ['surface', 'energy']], ['ndf.html', ['ndf']], ['visibility.html', ['vis']]]) {
+    it(path, async () => {
+      const page = await open(browser, path);
+      for (const k of keys) await widget(page, k);
+      for (const canvas of await page.$$('canvas')) {
+        if (!(await canvas.boundingBox())) continue; // hidden (e.g. the second BRDF's image when there is none)
+        const png = await canvas.screenshot({ encoding: 'base64' });
+        expect(await distinctColors(page, png)).toBeGreaterThan(8);
+      }
+      expect(page.errors).toEqual([]);
+      await page.close();
+    });
+  }
+});
+
+describe('ndf-explorer', () => {
+  it('shows five normalised NDFs, and the width slider changes the highlights and the URL', async () => {
+    const page = await open(browser, 'embed.html?w=ndf-explorer');
+    await widget(page, 'ndf-explorer');
+    const integrals = await page.evaluate(() => globalThis.__shadingLab.widgets['ndf-explorer'].getIntegrals());
+    console.log(`NDF normalisation: ${Object.entries(integrals).map(([k, v]) => `${k} ${v.toFixed(8)}`).join(', ')}`);
+    expect(Object.keys(integrals)).toHaveLength(5);
+    for (const v of Object.values(integrals)) expect(Math.abs(v - 1)).toBeLessThan(1e-6);
+    const before = await shot(page, '.sphere-grid canvas');
+    await setControl(page, 'Matched half width (°)', 20);
+    expect(await shot(page, '.sphere-grid canvas')).not.toBe(before);
+    expect(page.url()).toMatch(/hwhm=20/);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+});
+
+describe('visibility-explorer', () => {
+  it('roughness changes the Smith curves but not the implicit term', async () => {
+    const page = await open(browser, 'embed.html?w=visibility-explorer&terms=implicit,smithGGXCorrelated');
+    await widget(page, 'visibility-explorer');
+    const errs1 = await page.evaluate(() => globalThis.__shadingLab.widgets['visibility-explorer'].getWorstErrors());
+    await setControl(page, 'Roughness α', 0.1);
+    const errs2 = await page.evaluate(() => globalThis.__shadingLab.widgets['visibility-explorer'].getWorstErrors());
+    expect(errs1.smithGGXCorrelated).toBe(0);
+    expect(errs2.implicit).not.toBeCloseTo(errs1.implicit, 1); // the reference moved, the implicit term did not
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+});
+
+describe('energy (white furnace)', () => {
+  it('renders E = 1 - ln 2 at the centre of the alpha = 1 sphere, and a near-invisible smooth sphere', async () => {
+    const page = await open(browser, 'embed.html?w=energy&alphas=0.05,1.0&samples=256', { width: 900, height: 900 });
+    await widget(page, 'energy');
+    await settle(page, 1500);
+    const albedos = await page.evaluate(() => globalThis.__shadingLab.widgets['energy'].getAlbedos());
+    console.log(`albedo: ${albedos.map((a) => `α ${a.alpha}: E(1) ${a.atNormal.toFixed(4)}, E_avg ${a.average.toFixed(4)}`).join('; ')}`);
+    expect(albedos[1].atNormal).toBeCloseTo(1 - Math.log(2), 3);
+    // read the rendered centres back: cell i of 2 spans half the canvas
+    const png = await shot(page, '.sphere-grid canvas');
+    const centres = await page.evaluate(async (b64) => {
+      const img = new Image();
+      img.src = `data:image/png;base64,${b64}`;
+      await img.decode();
+      const c = new OffscreenCanvas(img.width, img.height);
+      const ctx = c.getContext('2d');
+      ctx.drawImage(img, 0, 0);
+      return [0.25, 0.75].map((fx) => ctx.getImageData(Math.round(img.width * fx), Math.round(img.height / 2), 1, 1).data[0]);
+    }, png);
+    const expected = Math.round(linearToSrgb(1 - Math.log(2)) * 255);
+    console.log(`furnace centres (8-bit): α 0.05 → ${centres[0]}, α 1 → ${centres[1]} (expected ${expected})`);
+    expect(centres[0]).toBeGreaterThan(250);
+    expect(Math.abs(centres[1] - expected)).toBeLessThanOrEqual(3);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+});
+
+describe('microfacets', () => {
+  it("the ray-traced share of lit microfacets agrees with Smith's G1", async () => {
+    for (const kind of ['beckmann', 'ggx']) {
+      const page = await open(browser, `embed.html?w=microfacets&kind=${kind}&alpha=0.6`);
+      await widget(page, 'microfacets');
+      await page.waitForFunction(() => globalThis.__shadingLab.widgets.microfacets.getG1().complete, { timeout: 30_000 });
+      const g = await page.evaluate(() => globalThis.__shadingLab.widgets.microfacets.getG1());
+      const worst = Math.max(...g.measured.map((m, i) => Math.abs(m - g.smith[i])));
+      console.log(`microsurface ${kind} α 0.6: worst |ray-traced G1 − Smith G1| over 0–85° = ${worst.toFixed(4)}`);
+      expect(worst).toBeLessThan(0.03);
+      expect(page.errors).toEqual([]);
+      await page.close();
+    }
+  });
+});
+
+describe('brdf-lobe', () => {
+  it('drags the light on the polar plot, and switching D off changes the lobe', async () => {
+    const page = await open(browser, 'embed.html?w=brdf-lobe');
+    await widget(page, 'brdf-lobe');
+    const box = await (await page.$('.polar-plot canvas')).boundingBox();
+    // press on the light handle's side, drag towards the normal
+    await page.mouse.move(box.x + box.width * 0.25, box.y + box.height * 0.4);
+    await page.mouse.down();
+    await page.mouse.move(box.x + box.width * 0.45, box.y + box.height * 0.2, { steps: 4 });
+    await page.mouse.up();
+    const theta = (await getState(page, 'brdf-lobe')).lightTheta;
+    expect(theta).toBeGreaterThan(0);
+    expect(theta).toBeLessThan(45);
+    const before = await shot(page, '.polar-plot canvas');
+    await setControl(page, 'Factor D', false);
+    expect(await shot(page, '.polar-plot canvas')).not.toBe(before);
+    await setControl(page, 'Overlay BRDF B', true);
+    expect(await page.$$eval('.half-diff-row.single', (els) => els.length)).toBe(0);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+});
