@@ -3,14 +3,15 @@
 #define ALPHA_MIN 1e-4
 float clampAlpha(float alpha) { return clamp(alpha, ALPHA_MIN, 1.0); }
 
-float ndfGGX(float cosThetaM, float alpha) {
+float ndfGGXFromSin2(float cosThetaM, float sin2ThetaM, float alpha) {
   if (!(cosThetaM > 0.0)) return 0.0;
   float c = min(cosThetaM, 1.0);
   float a = clampAlpha(alpha);
-  float d = a * a * c * c + sin2FromCos(c);
+  float d = a * a * c * c + max(sin2ThetaM, 0.0);
   float t = a / d;
   return t * t / PI;
 }
+float ndfGGX(float cosThetaM, float alpha) { return ndfGGXFromSin2(cosThetaM, sin2FromCos(min(cosThetaM, 1.0)), alpha); }
 
 float log1pSmall(float x) {
   return abs(x) < 1e-2 ? x * (1.0 - x * (0.5 - x * (1.0 / 3.0 - x / 4.0))) : log(1.0 + x);
@@ -23,16 +24,17 @@ float ndfBlinnPhong(float cosThetaM, float exponent) {
   return (p + 2.0) / (2.0 * PI) * exp(p * log1pSmall(c - 1.0));
 }
 
-float ndfBeckmann(float cosThetaM, float alpha) {
+float ndfBeckmannFromSin2(float cosThetaM, float sin2ThetaM, float alpha) {
   if (!(cosThetaM > 0.0)) return 0.0;
   float c = min(cosThetaM, 1.0);
   float a = clampAlpha(alpha);
   float a2 = a * a;
   float c2 = c * c;
-  float e = sin2FromCos(c) / (c2 * a2);
+  float e = max(sin2ThetaM, 0.0) / (c2 * a2);
   if (e > 80.0) return 0.0;
   return exp(-e) / (PI * a2 * c2 * c2);
 }
+float ndfBeckmann(float cosThetaM, float alpha) { return ndfBeckmannFromSin2(cosThetaM, sin2FromCos(min(cosThetaM, 1.0)), alpha); }
 
 float expm1OverX(float x) {
   return abs(x) < 1e-2 ? 1.0 + x / 2.0 + x * x / 6.0 + x * x * x / 24.0 : (exp(x) - 1.0) / x;

@@ -12,14 +12,18 @@ const WIDTH = 256;
 function evaluateOnGpu(renderer, testCase) {
   const n = testCase.args.length;
   const height = Math.ceil(n / WIDTH);
-  const data = new Float32Array(WIDTH * height * 4);
-  testCase.args.forEach((args, i) => args.forEach((x, j) => (data[i * 4 + j] = x)));
-  const input = new THREE.DataTexture(data, WIDTH, height, THREE.RGBAFormat, THREE.FloatType);
-  input.needsUpdate = true;
+  const texture = (first) => {
+    const data = new Float32Array(WIDTH * height * 4);
+    testCase.args.forEach((args, i) => args.slice(first, first + 4).forEach((x, j) => (data[i * 4 + j] = x)));
+    const t = new THREE.DataTexture(data, WIDTH, height, THREE.RGBAFormat, THREE.FloatType);
+    t.needsUpdate = true;
+    return t;
+  };
+  const [input, input2] = [texture(0), texture(4)];
   const wrap = testCase.outputs === 1 ? `vec4(${testCase.glsl}, 0.0, 0.0, 0.0)` : `vec4(${testCase.glsl}, 0.0)`;
   const material = new THREE.ShaderMaterial({
     glslVersion: THREE.GLSL3,
-    uniforms: { uArgs: { value: input } },
+    uniforms: { uArgs: { value: input }, uArgs2: { value: input2 } },
     vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
     fragmentShader: assembleGlsl(`#include "${testCase.chunk}"\n${SHADER_CHUNKS['parity.frag.glsl']}`, { defines: { CALL: wrap } }),
   });
@@ -31,7 +35,7 @@ function evaluateOnGpu(renderer, testCase) {
   const out = new Float32Array(WIDTH * height * 4);
   renderer.readRenderTargetPixels(target, 0, 0, WIDTH, height, out);
   renderer.setRenderTarget(null);
-  [input, material, quad.geometry, target].forEach((x) => x.dispose());
+  [input, input2, material, quad.geometry, target].forEach((x) => x.dispose());
   return out;
 }
 

@@ -2,7 +2,7 @@
 // light equation. Vectors are arrays [x, y, z] in the local frame, n = (0, 0, 1), pointing away from the
 // surface. f is 0 when l or v is at or below the horizon, and when l = -v leaves no half vector.
 import { fresnelConductor, fresnelDielectric, fresnelSchlick } from './fresnel.js';
-import { ndfABC, ndfBeckmann, ndfBlinnPhong, ndfGGX, ndfSGD } from './ndf.js';
+import { ndfABC, ndfBeckmannFromSin2, ndfBlinnPhong, ndfGGXFromSin2, ndfSGD } from './ndf.js';
 import {
   visibilityCookTorrance, visibilityImplicit, visibilityKelemen, visibilitySchlickGGX, visibilitySmithBeckmannSeparable,
   visibilitySmithGGXCorrelated, visibilitySmithGGXCorrelatedFast, visibilitySmithGGXSeparable,
@@ -16,10 +16,15 @@ export const FRESNEL_TERMS = {
   conductor: (c, p) => fresnelConductor(c, p.eta, p.k),
 };
 
-/** Each D term of n·h and the distribution params { alpha, exponent, a1, a2, p }. */
+const sin2 = (c) => (1 - c) * (1 + c);
+
+/**
+ * Each D term of n·h and the distribution params { alpha, exponent, a1, a2, p }; s2 = sin²θh when known
+ * from the half vector itself (h.x² + h.y², precise near n), else from c.
+ */
 export const NDF_TERMS = {
-  ggx: (c, p) => ndfGGX(c, p.alpha),
-  beckmann: (c, p) => ndfBeckmann(c, p.alpha),
+  ggx: (c, p, s2 = sin2(c)) => ndfGGXFromSin2(c, s2, p.alpha),
+  beckmann: (c, p, s2 = sin2(c)) => ndfBeckmannFromSin2(c, s2, p.alpha),
   blinnPhong: (c, p) => ndfBlinnPhong(c, p.exponent),
   abc: (c, p) => ndfABC(c, p.a1, p.a2),
   sgd: (c, p) => ndfSGD(c, p.alpha, p.p),
@@ -58,7 +63,7 @@ export function microfacetTerms(l, v, params) {
   const a = brdfAngles(l, v);
   if (!(a.nl > 0 && a.nv > 0) || !a.h) return { F: 0, D: 0, V: 0, G: 0, angles: a };
   const F = FRESNEL_TERMS[params.F](a.lh, params);
-  const D = NDF_TERMS[params.D](a.nh, params);
+  const D = NDF_TERMS[params.D](a.nh, params, a.h[0] * a.h[0] + a.h[1] * a.h[1]);
   const V = VISIBILITY_TERMS[params.V](a, params);
   return { F, D, V, G: V * a.nl * a.nv, angles: a };
 }

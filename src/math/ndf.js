@@ -15,10 +15,19 @@ const sin2 = (c) => (1 - c) * (1 + c);
  * near -1 and cancels to 0 in float32 once alpha² drops below float32's epsilon (alpha < ~3e-4).
  */
 export function ndfGGX(cosThetaM, alpha) {
+  return ndfGGXFromSin2(cosThetaM, sin2(Math.min(cosThetaM, 1)), alpha);
+}
+
+/**
+ * GGX with sin²θm given as well. From a half vector h in the local frame, sin² = h.x² + h.y² keeps its
+ * relative precision however small θm is, where 1 - c² (or (1 - c)(1 + c) from a rounded c) cannot:
+ * in float32 a direction within 3e-4 rad of n has c = 1 exactly.
+ */
+export function ndfGGXFromSin2(cosThetaM, sin2ThetaM, alpha) {
   if (!(cosThetaM > 0)) return 0;
   const c = Math.min(cosThetaM, 1);
   const a = clampAlpha(alpha);
-  const d = a * a * c * c + sin2(c);
+  const d = a * a * c * c + Math.max(sin2ThetaM, 0);
   const t = a / d;
   return (t * t) / Math.PI;
 }
@@ -41,10 +50,15 @@ export function ndfBlinnPhong(cosThetaM, exponent) {
 
 /** Beckmann: exp(-tan²/alpha²) / (pi alpha² (n·m)^4). */
 export function ndfBeckmann(cosThetaM, alpha) {
+  return ndfBeckmannFromSin2(cosThetaM, sin2(Math.min(cosThetaM, 1)), alpha);
+}
+
+/** Beckmann with sin²θm given as well (see ndfGGXFromSin2). */
+export function ndfBeckmannFromSin2(cosThetaM, sin2ThetaM, alpha) {
   if (!(cosThetaM > 0)) return 0;
   const c = Math.min(cosThetaM, 1);
   const a2 = clampAlpha(alpha) ** 2;
-  const e = sin2(c) / (c * c * a2);
+  const e = Math.max(sin2ThetaM, 0) / (c * c * a2);
   if (e > 80) return 0; // exp(-80) ~ 2e-35: underflows float32 before c^4 does
   const c2 = c * c;
   return Math.exp(-e) / (Math.PI * a2 * c2 * c2);
