@@ -4,7 +4,7 @@ import { coerceState, defaultState } from './state.js';
 import { createNoticeArea } from './notice.js';
 import { createStateGui } from './gui.js';
 
-export function createWidgetShell(container, { name, schema, initialState, about }) {
+export function createWidgetShell(container, { name, schema, initialState, about, terms = [] }) {
   const root = document.createElement('section');
   root.className = `widget widget-${name}`;
   root.dataset.widget = name;
@@ -23,6 +23,7 @@ export function createWidgetShell(container, { name, schema, initialState, about
     p.innerHTML = about;
     root.append(p);
   }
+  if (terms.length) root.append(termLinks(terms));
   container.append(root);
 
   const first = coerceState(schema, initialState, defaultState(schema));
@@ -67,4 +68,18 @@ export function createWidgetShell(container, { name, schema, initialState, about
       root.remove();
     },
   };
+}
+
+/** "Terms used": each math function the widget calls, linked to its GLSL-vs-JS row on the parity page. */
+function termLinks(terms) {
+  const p = document.createElement('p');
+  p.className = 'widget-terms';
+  p.append('Terms used (src/math and shaders/, accuracy on the ');
+  p.append(Object.assign(document.createElement('a'), { href: 'parity.html', textContent: 'parity page' }));
+  p.append('): ');
+  terms.forEach((name, i) => {
+    if (i) p.append(' · ');
+    p.append(Object.assign(document.createElement('a'), { href: `parity.html#fn-${name}`, textContent: name }));
+  });
+  return p;
 }

@@ -26,11 +26,17 @@ if (!gl || !gl.getExtension('EXT_color_buffer_float')) {
   table.className = 'data-table';
   table.innerHTML = '<thead><tr><th>Function</th><th>Inputs</th><th>Max abs error</th><th>Max rel error</th><th>Worst input (float32)</th><th>GPU / JS there</th><th>Beyond tol.</th><th>NaN/Inf/out of range</th></tr></thead>';
   const body = table.createTBody();
+  const anchored = new Set();
   for (const r of results) {
     const tr = body.insertRow();
     const cells = [r.name, r.count, r.maxAbs.toExponential(2), r.maxRel.toExponential(2), r.worst.args.map((x) => x.toPrecision(7)).join(', '), `${r.worst.gpu.toPrecision(7)} / ${r.worst.js.toPrecision(7)}`, r.failures, r.invalid];
     cells.forEach((c) => (tr.insertCell().textContent = c));
     tr.className = r.pass ? '' : 'fail';
+    const fn = r.name.split(' ')[0]; // the widgets' "terms used" links land on the first row of each function
+    if (!anchored.has(fn)) {
+      anchored.add(fn);
+      tr.id = `fn-${fn}`;
+    }
   }
   out.append(summary, table);
 }

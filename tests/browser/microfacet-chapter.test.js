@@ -27,6 +27,35 @@ describe('chapter pages load cleanly', () => {
   }
 });
 
+describe('chapter page state', () => {
+  it('round-trips through the URL under its prefix, and bad values give notices', async () => {
+    const page = await open(browser, 'ndf.html?ndf.hwhm=12.5&ndf.ndfs=ggx,beckmann&ndf.exposure=banana');
+    await widget(page, 'ndf');
+    const state = await getState(page, 'ndf');
+    expect([state.hwhm, state.ndfs]).toEqual([12.5, ['ggx', 'beckmann']]);
+    expect(await page.$eval('.notice', (el) => el.textContent)).toMatch(/banana/);
+    await setControl(page, 'Light from view (°)', 50);
+    const url = page.url();
+    expect(url).toMatch(/ndf\.lightTheta=50/);
+    const again = await open(browser, url.slice(url.indexOf('ndf.html')));
+    await widget(again, 'ndf');
+    expect(await getState(again, 'ndf')).toEqual(await getState(page, 'ndf'));
+    expect(again.errors).toEqual([]);
+    await Promise.all([page.close(), again.close()]);
+  });
+  it("each widget links the terms it uses to their rows on the parity page", async () => {
+    const page = await open(browser, 'visibility.html');
+    await widget(page, 'vis');
+    const hrefs = await page.$$eval('.widget-terms a', (as) => as.map((a) => a.getAttribute('href')));
+    expect(hrefs).toContain('parity.html#fn-visibilityKelemen');
+    await page.close();
+    const parity = await open(browser, 'parity.html#fn-visibilityKelemen');
+    await parity.waitForSelector('#parity-summary', { timeout: 60_000 });
+    for (const href of hrefs.filter((h) => h.includes('#'))) expect(await parity.$(href.slice(href.indexOf('#')))).not.toBeNull();
+    await parity.close();
+  });
+});
+
 describe('ndf-explorer', () => {
   it('shows five normalised NDFs, and the width slider changes the highlights and the URL', async () => {
     const page = await open(browser, 'embed.html?w=ndf-explorer');

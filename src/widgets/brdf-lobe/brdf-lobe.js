@@ -53,8 +53,10 @@ function brdfSpec(state, which) {
   return { D, V, F: state.F, f0: state.f0, ...ndfParamsMatchingGGX(D, alpha), samplingAlpha: alpha, label: `${which}: ${NDFS[D].name.split(' (')[0]} + ${TERMS[V].name}` };
 }
 
+const TERMS_USED = ['microfacetBRDF', 'fresnelSchlick', 'ndfGGX', 'ndfBeckmann', 'ndfBlinnPhong', 'ndfABC', 'ndfSGD', 'visibilitySmithGGXCorrelated'];
+
 export function createBrdfLobe(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'brdf-lobe', schema, initialState, about: ABOUT });
+  const shell = createWidgetShell(container, { name: 'brdf-lobe', schema, initialState, about: ABOUT, terms: TERMS_USED });
   const top = document.createElement('div');
   top.className = 'lobe-row';
   const bottom = document.createElement('div');

@@ -38,8 +38,10 @@ function sweep(state) {
   });
 }
 
+const TERMS_USED = ['albedoGGX', 'visibilitySmithGGXCorrelated', 'ndfGGX'];
+
 export function createEnergy(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'energy', schema, initialState, about: ABOUT });
+  const shell = createWidgetShell(container, { name: 'energy', schema, initialState, about: ABOUT, terms: TERMS_USED });
   const plots = document.createElement('div');
   shell.view.append(plots);
   const spheres = createSphereGrid(shell.view, { label: 'Spheres in a white furnace', background: '#ffffff' });

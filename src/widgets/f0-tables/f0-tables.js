@@ -72,8 +72,10 @@ function buildTable(caption, rows, state, { metal, onPick, onSelect }) {
 }
 
 /** options.onPick(materialKey, targetWidget) -> true when the page handled it (no navigation). */
+const TERMS_USED = ['linearToSrgb', 'srgbToLinear'];
+
 export function createF0Tables(container, initialState = {}, { onStateChange, onPick } = {}) {
-  const shell = createWidgetShell(container, { name: 'f0-tables', schema, initialState, about: ABOUT });
+  const shell = createWidgetShell(container, { name: 'f0-tables', schema, initialState, about: ABOUT, terms: TERMS_USED });
   const holder = document.createElement('div');
   holder.className = 'f0-tables';
   shell.view.append(holder);

@@ -110,8 +110,10 @@ function renderReadout(el, { angles, curves }, index) {
   el.replaceChildren(table);
 }
 
+const TERMS_USED = ['fresnelDielectric', 'fresnelConductor', 'fresnelSchlick']; // those with a GLSL twin
+
 export function createFresnelCurves(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'fresnel-curves', schema, initialState, about: ABOUT });
+  const shell = createWidgetShell(container, { name: 'fresnel-curves', schema, initialState, about: ABOUT, terms: TERMS_USED });
   const plots = document.createElement('div');
   plots.className = 'plots';
   shell.view.append(plots);

@@ -80,8 +80,10 @@ function defines(state, stats) {
   return d;
 }
 
+const TERMS_USED = ['fresnelZone', 'fresnelDielectric', 'fresnelConductor', 'fresnelSchlick', 'ndfGGX', 'visibilitySmithGGXCorrelated', 'linearToSrgb'];
+
 export function createFresnelZones(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'fresnel-zones', schema, initialState, about: ABOUT });
+  const shell = createWidgetShell(container, { name: 'fresnel-zones', schema, initialState, about: ABOUT, terms: TERMS_USED });
   const viewCol = document.createElement('div');
   viewCol.className = 'view-column';
   shell.view.append(viewCol);

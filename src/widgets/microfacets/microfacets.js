@@ -30,8 +30,10 @@ const H_TOLERANCE_DEG = 3;
 const DEG = Math.PI / 180;
 const dirOf = (deg) => [Math.sin(deg * DEG), Math.cos(deg * DEG)];
 
+const TERMS_USED = ['smithG1Beckmann', 'smithG1GGX'];
+
 export function createMicrofacets(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'microfacets', schema, initialState, about: ABOUT });
+  const shell = createWidgetShell(container, { name: 'microfacets', schema, initialState, about: ABOUT, terms: TERMS_USED });
   const canvas = document.createElement('canvas');
   canvas.className = 'microsurface';
   canvas.setAttribute('role', 'img');

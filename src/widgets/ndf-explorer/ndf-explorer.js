@@ -65,8 +65,10 @@ function curves(state) {
 
 const axis = { xLabel: 'Angle of the microfacet normal from n, θh (degrees)', x: { min: 0, max: 90 }, xValues: (u, t) => t.map((v) => `${v}°`) };
 
+const TERMS_USED = ['ndfBlinnPhong', 'ndfBeckmann', 'ndfGGX', 'ndfABC', 'ndfSGD', 'microfacetBRDF'];
+
 export function createNdfExplorer(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'ndf-explorer', schema, initialState, about: ABOUT });
+  const shell = createWidgetShell(container, { name: 'ndf-explorer', schema, initialState, about: ABOUT, terms: TERMS_USED });
   const plots = document.createElement('div');
   shell.view.append(plots);
   const table = document.createElement('div');

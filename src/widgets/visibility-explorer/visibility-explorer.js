@@ -72,8 +72,10 @@ function curves(state) {
   });
 }
 
+const TERMS_USED = ['visibilityImplicit', 'visibilityCookTorrance', 'visibilityKelemen', 'visibilitySmithGGXSeparable', 'visibilitySmithGGXCorrelated', 'visibilitySmithGGXCorrelatedFast', 'visibilitySchlickGGX', 'visibilitySmithBeckmannSeparable', 'microfacetBRDF'];
+
 export function createVisibilityExplorer(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'visibility-explorer', schema, initialState, about: ABOUT });
+  const shell = createWidgetShell(container, { name: 'visibility-explorer', schema, initialState, about: ABOUT, terms: TERMS_USED });
   const plots = document.createElement('div');
   shell.view.append(plots);
   let data = curves(shell.state);
