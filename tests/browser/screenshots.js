@@ -14,6 +14,11 @@ const SHOTS = [
   ['f0-tables', 'embed.html?w=f0-tables'],
   ['bad-url', 'embed.html?w=fresnel-zones&mode=banana&lightTheta=400&alpha=x'],
   ['parity', 'parity.html', { fullPage: true }],
+  ['brdf-page', 'brdf.html', { fullPage: true }],
+  ['brdf-lobe-compare', 'embed.html?w=brdf-lobe&compare=1&cosine=1&lightTheta=60&viewTheta=20'],
+  ['microfacets-page', 'microfacets.html', { fullPage: true }],
+  ['ndf-page', 'ndf.html?ndf.exposure=8', { fullPage: true }],
+  ['visibility-page', 'visibility.html', { fullPage: true }],
 ];
 
 const out = join(ROOT, 'docs/screenshots');
@@ -23,6 +28,13 @@ const browser = await launchBrowser();
 for (const [name, path, opts = {}] of SHOTS) {
   const page = await openPage(browser, server.url, path);
   await settle(page, 800);
+  // views out of sight draw nothing until they scroll into view: scroll through the page as a reader would
+  for (let y = 0; y < (await page.evaluate(() => document.body.scrollHeight)); y += 600) {
+    await page.evaluate((top) => window.scrollTo(0, top), y);
+    await settle(page, 250);
+  }
+  await page.evaluate(() => window.scrollTo(0, 0));
+  await settle(page, 300);
   await page.screenshot({ path: join(out, `${name}.png`), ...opts });
   console.log(`${name}.png${page.errors.length ? `  errors: ${page.errors.join(' | ')}` : ''}`);
   await page.close();
