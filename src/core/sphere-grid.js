@@ -1,14 +1,18 @@
 // A row of spheres in one canvas, each shaded by its own BRDF variant (brdf-sphere.frag.glsl) under the
-// same punctual light, or in the white furnace. Cells: [{ label, defines, uniforms }]; each cell is one
-// draw in its own viewport. Variants are compiled once and reused.
+// same punctual light, or in the white furnace. Cells: [{ label, defines, uniforms, probe }]; each cell is
+// one draw in its own viewport. Variants are compiled once and reused. Hovering a sphere probes it: the
+// angles there, and the rows the cell's probe(angles) returns ([[label, text], ...]).
 import * as THREE from 'three';
 import { createViewport } from './viewport.js';
 import { assembleGlsl } from './glsl.js';
 import { SHADER_CHUNKS } from './shader-chunks.js';
+import { angleText, probeAngles } from './probe.js';
 
 const UNIFORM_DEFAULTS = {
   uLightDir: [0, 0, 1], uLightIntensity: 1, uExposure: 1, uAlpha: 0.3, uExponent: 40, uA1: 20, uA2: 2.5, uSgdP: 0.64, uF0: 1,
 };
+
+const HALF_SIZE = 1.08; // the orthographic camera's half extent: the unit sphere fills 1/1.08 of a cell
 
 export function createSphereGrid(container, { label = 'Spheres', aspectPerCell = 1, background = '#16181d' } = {}) {
   let cells = [];
@@ -32,7 +36,7 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
   const mesh = new THREE.Mesh(geometry);
   const scene = new THREE.Scene().add(mesh);
   scene.background = new THREE.Color(background);
-  const camera = new THREE.OrthographicCamera(-1.08, 1.08, 1.08, -1.08, 0.1, 10);
+  const camera = new THREE.OrthographicCamera(-HALF_SIZE, HALF_SIZE, HALF_SIZE, -HALF_SIZE, 0.1, 10);
   camera.position.z = 5;
 
   const labels = document.createElement('div');
@@ -65,6 +69,37 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
     viewport.holder.classList.toggle('light-background', new THREE.Color(background).getHSL({}).l > 0.6);
     viewport.holder.append(labels);
   }
+  const probePanel = document.createElement('div');
+  probePanel.className = 'probe';
+  const idle = 'Probe: point at a sphere to read the angles and terms there.';
+  probePanel.textContent = idle;
+  container.append(probePanel);
+  const onMove = (e) => {
+    const rect = viewport.canvas.getBoundingClientRect();
+    const w = rect.width / Math.max(cells.length, 1);
+    const i = Math.floor((e.clientX - rect.left) / w);
+    const cell = cells[i];
+    const side = Math.min(w, rect.height);
+    const x = ((e.clientX - rect.left - i * w - w / 2) / (side / 2)) * HALF_SIZE;
+    const y = -((e.clientY - rect.top - rect.height / 2) / (side / 2)) * HALF_SIZE;
+    if (!cell || x * x + y * y >= 1) {
+      probePanel.textContent = idle;
+      return;
+    }
+    const n = [x, y, Math.sqrt(1 - x * x - y * y)];
+    const l = cell.uniforms.uLightDir ?? UNIFORM_DEFAULTS.uLightDir;
+    const a = probeAngles(n, l, [0, 0, 1]);
+    const rows = [['sphere', cell.label], ['n·v', angleText(a.nv)], ['n·l', angleText(a.nl)], ['n·h', angleText(a.nh)], ['l·h', angleText(a.lh)], ...(cell.probe?.(a) ?? [])];
+    const table = document.createElement('table');
+    for (const [k, v] of rows) {
+      const tr = table.insertRow();
+      tr.insertCell().textContent = k;
+      tr.insertCell().textContent = v;
+    }
+    probePanel.replaceChildren(table);
+  };
+  viewport?.canvas.addEventListener('pointermove', onMove);
+  viewport?.canvas.addEventListener('pointerleave', () => (probePanel.textContent = idle));
   const setAspect = () => viewport && (viewport.holder.style.aspectRatio = `${Math.max(cells.length, 1) * aspectPerCell} / 1`);
 
   return {
@@ -85,6 +120,7 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
       viewport?.canvas.setAttribute('aria-label', text);
     },
     dispose() {
+      probePanel.remove();
       materials.forEach((m) => m.dispose());
       geometry.dispose();
       viewport?.dispose();

@@ -68,6 +68,11 @@ describe('ndf-explorer', () => {
     await setControl(page, 'Matched half width (°)', 20);
     expect(await shot(page, '.sphere-grid canvas')).not.toBe(before);
     expect(page.url()).toMatch(/hwhm=20/);
+    // the probe: hover the middle of the third sphere (GGX)
+    const box = await (await page.$('.sphere-grid canvas')).boundingBox();
+    await page.mouse.move(box.x + box.width * 0.5, box.y + box.height * 0.5);
+    await settle(page, 200);
+    expect(await page.$eval('.widget-ndf-explorer .probe', (el) => el.textContent)).toMatch(/GGX.*n·v1\.0000.*D\(n·h\)/s);
     expect(page.errors).toEqual([]);
     await page.close();
   });

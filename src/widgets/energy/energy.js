@@ -66,7 +66,12 @@ export function createEnergy(container, initialState = {}, { onStateChange } = {
       '<thead><tr><th>α</th><th>E at normal incidence</th><th>E averaged over the hemisphere</th><th>energy lost on average</th></tr></thead><tbody>' +
       data.map((d) => `<tr><td><span class="swatch" style="background:${d.stroke}"></span> ${d.alpha}</td><td>${d.atNormal.toFixed(4)}</td><td>${d.avg.toFixed(4)}</td><td>${((1 - d.avg) * 100).toFixed(1)}%</td></tr>`).join('') +
       '</tbody></table>';
-    spheres.setCells(data.map((d) => ({ label: `α = ${d.alpha}`, defines: { FURNACE: true, FURNACE_SAMPLES: Number(shell.state.samples) }, uniforms: { uAlpha: d.alpha } })));
+    spheres.setCells(data.map((d) => ({
+      label: `α = ${d.alpha}`,
+      defines: { FURNACE: true, FURNACE_SAMPLES: Number(shell.state.samples) },
+      uniforms: { uAlpha: d.alpha },
+      probe: (a) => [['E(n·v), F = 1', albedoGGX(a.nv, d.alpha, Number(shell.state.sampleCount)).toFixed(4)], ['energy lost', `${((1 - albedoGGX(a.nv, d.alpha, Number(shell.state.sampleCount))) * 100).toFixed(1)}%`]],
+    })));
     spheres.setDescription(`Spheres in a uniform white environment, F = 1, roughness ${data.map((d) => d.alpha).join(', ')}: averaged albedo ${data.map((d) => d.avg.toFixed(3)).join(', ')}.`);
   };
   render();

@@ -107,6 +107,10 @@ export function createVisibilityExplorer(container, initialState = {}, { onState
       label: c.label.split(' (')[0].replace(', height-correlated', ' corr.').replace(', separable', ' sep.'),
       defines: { [TERMS[c.key].define]: true, NDF_GGX: true, F_ONE: true },
       uniforms: { uLightDir: lightDirFromAngles(s.lightTheta, 135), uExposure: s.exposure, uAlpha: s.alpha },
+      probe: (a) => {
+        const V = VISIBILITY_TERMS[c.key](a, { alpha: s.alpha });
+        return [['V', V.toPrecision(4)], ['G = V (n·l)(n·v)', (V * Math.max(a.nl, 0) * Math.max(a.nv, 0)).toFixed(4)], ['V / V Smith corr.', (V / VISIBILITY_TERMS[REFERENCE](a, { alpha: s.alpha })).toFixed(4)]];
+      },
     })));
     spheres.setDescription(`Spheres with GGX α ${s.alpha}, one per visibility term: ${data.map((c) => c.label).join(', ')}.`);
   };
