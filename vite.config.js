@@ -4,8 +4,32 @@ import { resolve } from 'node:path';
 // Every HTML page is an entry; relative base so the built site works from any static host and sub-path.
 const pages = ['index', 'embed', 'brdf', 'microfacets', 'fresnel', 'ndf', 'visibility', 'parity'];
 
+const HEAD = `
+    <meta charset="utf-8" />
+    <meta name="viewport" content="width=device-width, initial-scale=1" />
+    <link rel="icon" href="favicon.svg" type="image/svg+xml" />`;
+
+/**
+ * The chrome every page shares, written once: the head's meta tags, and the site header. A page's
+ * <body data-crumb="…"> gets the header with that crumb; a body without data-crumb (embed) gets none.
+ */
+function pageChrome() {
+  return {
+    name: 'shading-lab-page-chrome',
+    transformIndexHtml(html) {
+      const withHead = html.replace(/<head>/, `<head>${HEAD}`);
+      return withHead.replace(/<body([^>]*)data-crumb="([^"]*)"([^>]*)>/, (_, a, crumb, b) => {
+        const nav = crumb ? `<nav aria-label="Chapter"><a href="./">All chapters</a> · <span>${crumb}</span></nav>` : '';
+        const subtitle = crumb ? '' : '<span class="subtitle">an interactive companion to <em>Background: Physics and Math of Shading</em> (Naty Hoffman, SIGGRAPH 2013)</span>';
+        return `<body${a}${b}>\n    <header class="site-header"><a class="brand" href="./">Shading Lab</a>${nav}${subtitle}</header>`;
+      });
+    },
+  };
+}
+
 export default defineConfig({
   base: './',
+  plugins: [pageChrome()],
   build: {
     target: 'es2022',
     chunkSizeWarningLimit: 700, // three.js alone is ~540 kB and is shared by every 3-D page

@@ -27,12 +27,15 @@ float erfcPositive(float x) {
   return poly * exp(-x * x);
 }
 
+// Beckmann's a = cot(theta)/alpha for G1; 1e30 stands for infinity at normal incidence (G1 = 1).
+float beckmannSlopeRatio(float c, float alpha) {
+  float s2 = sin2FromCos(c);
+  return s2 == 0.0 ? 1e30 : c / (clampAlpha(alpha) * sqrt(s2));
+}
+
 float smithG1Beckmann(float cosTheta, float alpha) {
   if (!(cosTheta > 0.0)) return 0.0;
-  float c = min(cosTheta, 1.0);
-  float s2 = sin2FromCos(c);
-  if (s2 == 0.0) return 1.0;
-  float a = c / (clampAlpha(alpha) * sqrt(s2));
+  float a = beckmannSlopeRatio(min(cosTheta, 1.0), alpha);
   if (a > 26.0) return 1.0;
   float lambda = (exp(-a * a) / (a * 1.7724538509055159) - erfcPositive(a)) / 2.0;
   return 1.0 / (1.0 + lambda);
@@ -40,10 +43,7 @@ float smithG1Beckmann(float cosTheta, float alpha) {
 
 float smithG1BeckmannWalter(float cosTheta, float alpha) {
   if (!(cosTheta > 0.0)) return 0.0;
-  float c = min(cosTheta, 1.0);
-  float s2 = sin2FromCos(c);
-  if (s2 == 0.0) return 1.0;
-  float a = c / (clampAlpha(alpha) * sqrt(s2));
+  float a = beckmannSlopeRatio(min(cosTheta, 1.0), alpha);
   return a < 1.6 ? min((3.535 * a + 2.181 * a * a) / (1.0 + 2.276 * a + 2.577 * a * a), 1.0) : 1.0;
 }
 

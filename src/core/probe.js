@@ -12,6 +12,17 @@ export function probeAngles(n, l, v) {
   return { nv: dot(n, v), nl: dot(n, l), nh: dot(n, h), lh: dot(l, h) };
 }
 
+/** Fills a probe panel with [[label, text], ...] as a two-column table. */
+export function showProbeRows(panel, rows) {
+  const table = document.createElement('table');
+  for (const [k, v] of rows) {
+    const tr = table.insertRow();
+    tr.insertCell().textContent = k;
+    tr.insertCell().textContent = v;
+  }
+  panel.replaceChildren(table);
+}
+
 export const angleText = (c) => `${c.toFixed(4)} (${(Math.acos(Math.min(Math.max(c, -1), 1)) * DEG).toFixed(1)}°)`;
 
 /**
@@ -30,15 +41,6 @@ export function attachProbe(canvas, parent, { getMesh, getCamera, describe, isBu
   const normal = new THREE.Vector3();
   const normalMatrix = new THREE.Matrix3();
 
-  const show = (rows) => {
-    const table = document.createElement('table');
-    for (const [k, v] of rows) {
-      const tr = table.insertRow();
-      tr.insertCell().textContent = k;
-      tr.insertCell().textContent = v;
-    }
-    panel.replaceChildren(table);
-  };
   const move = (e) => {
     if (isBusy?.()) return;
     const rect = canvas.getBoundingClientRect();
@@ -54,7 +56,7 @@ export function attachProbe(canvas, parent, { getMesh, getCamera, describe, isBu
     normal.copy(hit.normal).applyMatrix3(normalMatrix).normalize();
     const viewPos = hit.point.clone().applyMatrix4(camera.matrixWorldInverse);
     const v = camera.isOrthographicCamera ? [0, 0, 1] : viewPos.clone().negate().normalize().toArray();
-    show(describe(normal.toArray(), v));
+    showProbeRows(panel, describe(normal.toArray(), v));
   };
   const leave = () => {
     panel.textContent = idle;

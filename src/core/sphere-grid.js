@@ -6,7 +6,7 @@ import * as THREE from 'three';
 import { createViewport } from './viewport.js';
 import { assembleGlsl } from './glsl.js';
 import { SHADER_CHUNKS } from './shader-chunks.js';
-import { angleText, probeAngles } from './probe.js';
+import { angleText, probeAngles, showProbeRows } from './probe.js';
 
 const UNIFORM_DEFAULTS = {
   uLightDir: [0, 0, 1], uLightIntensity: 1, uExposure: 1, uAlpha: 0.3, uExponent: 40, uA1: 20, uA2: 2.5, uSgdP: 0.64, uF0: 1,
@@ -89,14 +89,10 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
     const n = [x, y, Math.sqrt(1 - x * x - y * y)];
     const l = cell.uniforms.uLightDir ?? UNIFORM_DEFAULTS.uLightDir;
     const a = probeAngles(n, l, [0, 0, 1]);
-    const rows = [['sphere', cell.label], ['n·v', angleText(a.nv)], ['n·l', angleText(a.nl)], ['n·h', angleText(a.nh)], ['l·h', angleText(a.lh)], ...(cell.probe?.(a) ?? [])];
-    const table = document.createElement('table');
-    for (const [k, v] of rows) {
-      const tr = table.insertRow();
-      tr.insertCell().textContent = k;
-      tr.insertCell().textContent = v;
-    }
-    probePanel.replaceChildren(table);
+    showProbeRows(probePanel, [
+      ['sphere', cell.label], ['n·v', angleText(a.nv)], ['n·l', angleText(a.nl)], ['n·h', angleText(a.nh)], ['l·h', angleText(a.lh)],
+      ...(cell.probe?.(a) ?? []),
+    ]);
   };
   viewport?.canvas.addEventListener('pointermove', onMove);
   viewport?.canvas.addEventListener('pointerleave', () => (probePanel.textContent = idle));

@@ -35,12 +35,15 @@ export function smithG1GGX(cosTheta, alpha) {
  * Smith G1 for Beckmann, exact: 1/(1 + Λ(a)), a = c/(alpha sin),
  * Λ(a) = (exp(-a²)/(a sqrt(pi)) - erfc(a)) / 2 (the same as (erf(a) - 1)/2 + exp(-a²)/(2a sqrt(pi))).
  */
+/** Beckmann's a = cot(theta)/alpha for G1, or Infinity at normal incidence (where G1 = 1). */
+function beckmannSlopeRatio(c, alpha) {
+  const s2 = sin2(c);
+  return s2 === 0 ? Infinity : c / (clampAlpha(alpha) * Math.sqrt(s2));
+}
+
 export function smithG1Beckmann(cosTheta, alpha) {
   if (!(cosTheta > 0)) return 0;
-  const c = Math.min(cosTheta, 1);
-  const s2 = sin2(c);
-  if (s2 === 0) return 1;
-  const a = c / (clampAlpha(alpha) * Math.sqrt(s2));
+  const a = beckmannSlopeRatio(Math.min(cosTheta, 1), alpha);
   if (a > 26) return 1; // Λ < 1e-290
   const lambda = (Math.exp(-a * a) / (a * Math.sqrt(Math.PI)) - erfc(a)) / 2;
   return 1 / (1 + lambda);
@@ -49,10 +52,7 @@ export function smithG1Beckmann(cosTheta, alpha) {
 /** Walter et al. 2007's rational fit to Beckmann's Smith G1 (max error ~0.35%). */
 export function smithG1BeckmannWalter(cosTheta, alpha) {
   if (!(cosTheta > 0)) return 0;
-  const c = Math.min(cosTheta, 1);
-  const s2 = sin2(c);
-  if (s2 === 0) return 1;
-  const a = c / (clampAlpha(alpha) * Math.sqrt(s2));
+  const a = beckmannSlopeRatio(Math.min(cosTheta, 1), alpha);
   return a < 1.6 ? Math.min((3.535 * a + 2.181 * a * a) / (1 + 2.276 * a + 2.577 * a * a), 1) : 1;
 }
 

@@ -67,18 +67,33 @@ export async function shot(page, selector) {
   return (await page.$(selector)).screenshot({ encoding: 'base64' });
 }
 
+/** Runs fn(imageData) in the page on a decoded base64 PNG. */
+function withPixels(page, png, fn) {
+  return page.evaluate(
+    async (b64, body) => {
+      const img = new Image();
+      img.src = `data:image/png;base64,${b64}`;
+      await img.decode();
+      const c = new OffscreenCanvas(img.width, img.height);
+      const ctx = c.getContext('2d');
+      ctx.drawImage(img, 0, 0);
+      return new Function('image', body)(ctx.getImageData(0, 0, img.width, img.height));
+    },
+    png,
+    `return (${fn})(image);`,
+  );
+}
+
 /** Distinct colours in a base64 PNG (a canvas that is not blank has many). */
 export function distinctColors(page, png) {
-  return page.evaluate(async (b64) => {
-    const img = new Image();
-    img.src = `data:image/png;base64,${b64}`;
-    await img.decode();
-    const c = new OffscreenCanvas(img.width, img.height);
-    const ctx = c.getContext('2d');
-    ctx.drawImage(img, 0, 0);
-    const d = ctx.getImageData(0, 0, img.width, img.height).data;
+  return withPixels(page, png, (image) => {
     const seen = new Set();
-    for (let i = 0; i < d.length; i += 4 * 7) seen.add((d[i] << 16) | (d[i + 1] << 8) | d[i + 2]);
+    for (let i = 0; i < image.data.length; i += 4 * 7) seen.add((image.data[i] << 16) | (image.data[i + 1] << 8) | image.data[i + 2]);
     return seen.size;
-  }, png);
+  });
+}
+
+/** The red channel of a base64 PNG at fractional positions [[fx, fy], ...]. */
+export function redAt(page, png, points) {
+  return withPixels(page, png, `(image) => ${JSON.stringify(points)}.map(([fx, fy]) => image.data[(Math.round(image.height * fy) * image.width + Math.round(image.width * fx)) * 4])`);
 }

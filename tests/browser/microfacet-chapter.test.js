@@ -1,6 +1,6 @@
 // The microfacet chapters (BRDF, microfacet theory, NDF, visibility) in a real Chromium.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { distinctColors, getState, launchBrowser, open, setControl, settle, shot, widget } from './helpers.js';
+import { distinctColors, getState, launchBrowser, open, redAt, setControl, settle, shot, widget } from './helpers.js';
 import { linearToSrgb } from '../../src/math/color.js';
 
 let browser;
@@ -102,15 +102,7 @@ describe('energy (white furnace)', () => {
     expect(albedos[1].atNormal).toBeCloseTo(1 - Math.log(2), 3);
     // read the rendered centres back: cell i of 2 spans half the canvas
     const png = await shot(page, '.sphere-grid canvas');
-    const centres = await page.evaluate(async (b64) => {
-      const img = new Image();
-      img.src = `data:image/png;base64,${b64}`;
-      await img.decode();
-      const c = new OffscreenCanvas(img.width, img.height);
-      const ctx = c.getContext('2d');
-      ctx.drawImage(img, 0, 0);
-      return [0.25, 0.75].map((fx) => ctx.getImageData(Math.round(img.width * fx), Math.round(img.height / 2), 1, 1).data[0]);
-    }, png);
+    const centres = await redAt(page, png, [[0.25, 0.5], [0.75, 0.5]]);
     const expected = Math.round(linearToSrgb(1 - Math.log(2)) * 255);
     console.log(`furnace centres (8-bit): α 0.05 → ${centres[0]}, α 1 → ${centres[1]} (expected ${expected})`);
     expect(centres[0]).toBeGreaterThan(250);
