@@ -52,7 +52,8 @@ export function halfVector(l, v) {
 /** The cosines a BRDF needs: n·l, n·v, n·h, l·h (h null when l = -v). */
 export function brdfAngles(l, v) {
   const h = halfVector(l, v);
-  return { nl: l[2], nv: v[2], nh: h ? h[2] : 0, lh: h ? l[0] * h[0] + l[1] * h[1] + l[2] * h[2] : 0, h };
+  const cos = (x) => Math.min(Math.max(x, -1), 1); // rounding can put a dot product of unit vectors 1 ulp past 1
+  return { nl: cos(l[2]), nv: cos(v[2]), nh: h ? cos(h[2]) : 0, lh: h ? cos(l[0] * h[0] + l[1] * h[1] + l[2] * h[2]) : 0, h };
 }
 
 /**

@@ -100,5 +100,6 @@ export function conductorIorFromF0EdgeTint(r, g) {
 /** The edge tint g that, with r = f0FromIor(n, k), maps back to (n, k). */
 export function edgeTintFromConductorIor(n, k) {
   const r = Math.min(f0FromIor(n, k), R_MAX);
-  return (nMax(r) - n) / (nMax(r) - nMin(r));
+  const span = nMax(r) - nMin(r);
+  return span > 0 ? (nMax(r) - n) / span : 0; // r = 0 (n = 1, k = 0): every tint maps to n = 1
 }

@@ -6,9 +6,12 @@ import { ndfGGX, clampAlpha } from './ndf.js';
 import { visibilitySmithGGXCorrelated } from './visibility.js';
 
 /** Direction of polar angle cos = mu in the x-z plane (the view of an isotropic BRDF loses nothing). */
-export const directionFromCos = (mu) => [Math.sqrt(Math.max((1 - mu) * (1 + mu), 0)), 0, mu];
+export function directionFromCos(mu) {
+  const c = Math.min(Math.max(mu, -1), 1);
+  return [Math.sqrt((1 - c) * (1 + c)), 0, c];
+}
 
-/** Hammersley point i of n: a deterministic, evenly spread pair in [0, 1)². */
+/** Hammersley point i of n (0 <= i < n): a deterministic, evenly spread pair in [0, 1)². */
 export function hammersley(i, n) {
   let bits = i;
   bits = ((bits << 16) | (bits >>> 16)) >>> 0;

@@ -1,0 +1,105 @@
+// What `npm run stress` feeds every exported function of src/math, and the range each result must lie in.
+// Every export is listed: a new function without an entry fails the stress test until it is classified.
+
+const COS = [-1, -0.5, 0, 1e-7, 1e-4, 0.5, 1 - 1e-7, 1, 1 + 1e-7, 1.5];
+const ALPHA = [0, 1e-5, 1e-4, 1e-2, 0.3, 1, 2];
+const ETA = [1e-3, 1 - 1e-6, 1, 1 + 1e-6, 1.5, 100];
+const K = [0, 1e-3, 1, 10];
+const F0 = [0, 0.04, 0.5, 1];
+const SRGB = [-1, 0, 1e-4, 0.5, 1, 2];
+const EXPONENT = [0, 1, 1e3, 1e6, 1e7];
+const ABC = [0, 0.01, 1, 1e4, 1e5];
+const SGD_P = [-1, 0, 0.64, 1, 1.9, 3];
+const ANGLE = [0, 1e-7, 0.7, Math.PI / 2, Math.PI];
+
+const unit = (x, y, z) => {
+  const n = Math.hypot(x, y, z);
+  return [x / n, y / n, z / n];
+};
+// direction pairs with the degenerate cases: l = v, l = -v, mirror, grazing, below the horizon
+const DIRS = [[0, 0, 1], [1, 0, 0], unit(1, 0, 1e-7), unit(0.6, 0, 0.8), unit(-0.6, 0, 0.8), unit(0, 0.6, 0.8), [0, 0, -1], unit(1, 0, -1)];
+const PAIRS = DIRS.flatMap((l) => [...DIRS.map((v) => [l, v]), [l, l.map((x) => -x)]]);
+
+const D_KINDS = ['ggx', 'beckmann', 'blinnPhong', 'abc', 'sgd'];
+const V_KINDS = ['implicit', 'cookTorrance', 'kelemen', 'smithGGXSeparable', 'smithGGXCorrelated', 'smithGGXCorrelatedFast', 'schlickGGX', 'smithBeckmannSeparable'];
+const BRDF_PARAMS = D_KINDS.flatMap((D) => V_KINDS.flatMap((V) => [0, 1e-4, 0.3, 1].map((alpha) => ({ F: 'schlick', D, V, alpha, f0: 0.04, exponent: 1e4, a1: 1e4, a2: 3, p: 1.9 }))));
+
+const ZERO_TO_ONE = [0, 1];
+const NON_NEGATIVE = [0, Infinity];
+const FINITE = [-Infinity, Infinity]; // only NaN and ±Inf are failures
+
+/**
+ * name -> { args: [list per argument] } | { tuples: [argument lists] } | { pairs: [[l, v]], params } with
+ * range [lo, hi]; pick: the result fields to check. Functions in `skipped` say why they are not swept.
+ */
+export const STRESS_DOMAINS = {
+  srgbToLinear: { args: [SRGB], range: ZERO_TO_ONE },
+  linearToSrgb: { args: [SRGB], range: ZERO_TO_ONE },
+  fresnelSchlick: { args: [F0, COS], range: ZERO_TO_ONE },
+  fresnelDielectric: { args: [COS, ETA], range: ZERO_TO_ONE },
+  fresnelConductor: { args: [COS, ETA, K], range: ZERO_TO_ONE },
+  f0FromIor: { args: [ETA, K], range: ZERO_TO_ONE },
+  iorFromF0: { args: [[-1, 0, 0.04, 0.999, 1, 2]], range: [1, Infinity] },
+  conductorIorFromF0EdgeTint: { args: [[-1, 0, 0.5, 0.999, 1, 2], [-1, 0, 0.5, 1, 2]], range: NON_NEGATIVE },
+  edgeTintFromConductorIor: { args: [[0.01, 0.5, 1, 3, 100], K], range: FINITE },
+  fresnelZone: { args: [COS], range: [0, 2] },
+  sphereZoneFractions: { args: [], range: ZERO_TO_ONE },
+  clampAlpha: { args: [ALPHA], range: [1e-4, 1] },
+  clampAbc: { args: [ABC, ABC], range: [0.01, 1e4] },
+  clampSgd: { args: [ALPHA, SGD_P], range: [0, 2] },
+  log1pSmall: { args: [[-0.5, -1e-9, 0, 1e-9, 0.5, 10]], range: FINITE },
+  ndfGGX: { args: [COS, ALPHA], range: NON_NEGATIVE },
+  ndfGGXFromSin2: { args: [COS, [0, 1e-12, 0.5, 1], ALPHA], range: NON_NEGATIVE },
+  ndfBeckmann: { args: [COS, ALPHA], range: NON_NEGATIVE },
+  ndfBeckmannFromSin2: { args: [COS, [0, 1e-12, 0.5, 1], ALPHA], range: NON_NEGATIVE },
+  ndfBlinnPhong: { args: [COS, EXPONENT], range: NON_NEGATIVE },
+  ndfABC: { args: [COS, ABC, ABC], range: NON_NEGATIVE },
+  abcNormalization: { args: [[0.01, 0.5, 1, 1e4], [0.05, 1, 2, 20]], range: [0, 1] },
+  ndfSGD: { args: [COS, ALPHA, SGD_P], range: NON_NEGATIVE },
+  sgdNormalization: { args: [[0.01, 0.3, 2], [0, 0.64, 1, 1.9]], range: NON_NEGATIVE },
+  blinnPhongExponentFromBeckmannAlpha: { args: [ALPHA], range: NON_NEGATIVE },
+  beckmannAlphaFromBlinnPhongExponent: { args: [EXPONENT], range: [1e-4, 1] },
+  ndfParamsMatchingGGX: { args: [D_KINDS, [1e-3, 0.05, 0.5, 1]], range: NON_NEGATIVE },
+  matchNdfWidths: { args: [[1, 10, 40]], range: NON_NEGATIVE },
+  erf: { args: [[-30, -2.5, -1e-9, 0, 1e-9, 2.5, 30]], range: [-1, 1] },
+  erfc: { args: [[0, 1e-9, 2.4999, 2.5, 10, 30]], range: [0, 2] },
+  visibilityImplicit: { args: [COS, COS], range: ZERO_TO_ONE },
+  visibilityCookTorrance: { args: [COS, COS, COS, COS], range: NON_NEGATIVE },
+  visibilityKelemen: { args: [COS], range: NON_NEGATIVE },
+  smithG1GGX: { args: [COS, ALPHA], range: ZERO_TO_ONE },
+  smithG1Beckmann: { args: [COS, ALPHA], range: ZERO_TO_ONE },
+  smithG1BeckmannWalter: { args: [COS, ALPHA], range: ZERO_TO_ONE },
+  visibilitySmithGGXSeparable: { args: [COS, COS, ALPHA], range: NON_NEGATIVE },
+  visibilitySmithGGXCorrelated: { args: [COS, COS, ALPHA], range: NON_NEGATIVE },
+  visibilitySmithGGXCorrelatedFast: { args: [COS, COS, ALPHA], range: NON_NEGATIVE },
+  visibilitySchlickGGX: { args: [COS, COS, ALPHA], range: NON_NEGATIVE },
+  visibilitySmithBeckmannSeparable: { args: [COS, COS, ALPHA], range: NON_NEGATIVE },
+  halfVector: { pairs: PAIRS, range: [-1, 1], nullable: true },
+  brdfAngles: { pairs: PAIRS, range: [-1, 1] },
+  halfDiffAngles: { pairs: PAIRS.filter(([l, v]) => l.some((x, i) => x !== -v[i])), range: [0, Math.PI] },
+  reflect: { pairs: PAIRS, range: [-1, 1] },
+  microfacetBRDF: { pairs: PAIRS, params: BRDF_PARAMS, range: NON_NEGATIVE },
+  microfacetTerms: { pairs: PAIRS, params: BRDF_PARAMS, pick: ['F', 'D', 'V', 'G'], range: NON_NEGATIVE },
+  microfacetFactors: { pairs: PAIRS, params: BRDF_PARAMS, use: { F: true, D: true, G: true, denominator: true }, range: NON_NEGATIVE },
+  brdf: { pairs: PAIRS, params: BRDF_PARAMS, range: NON_NEGATIVE },
+  punctualRadiance: { args: [[0, 1, 1e8], COS, [0, 1]], range: NON_NEGATIVE },
+  directionFromCos: { args: [COS], range: [-1, 1] },
+  directionsFromHalfDiff: { args: [ANGLE, ANGLE, ANGLE], range: [-1, 1] },
+  sampleGGXNormal: { args: [[0, 0.5, 1 - 1e-12], [0, 0.5, 1], ALPHA], range: [-1, 1] },
+  hammersley: { tuples: [[0, 1], [0, 256], [255, 256], [2 ** 31, 2 ** 32], [2 ** 32 - 1, 2 ** 32]], range: ZERO_TO_ONE },
+  albedoGGX: { args: [COS, ALPHA, [16]], range: ZERO_TO_ONE },
+  skipped: {
+    hemisphereIntegral: 'takes an integrand; exercised by the unit tests with BRDFs',
+    reflectanceImportanceGGX: 'takes a BRDF; exercised by the unit tests',
+    averageAlbedo: 'takes E(mu); exercised by the unit tests',
+    ndfHalfWidthDeg: 'takes an NDF; exercised through matchNdfWidths',
+    ndfProjectedIntegral: 'takes an NDF; exercised by the normalisation tests',
+    channelIor: 'data lookup; swept over every table material below',
+    fresnelParams: 'data lookup; swept over every table material below',
+    materialByKey: 'data lookup',
+    isMetal: 'data lookup',
+    measuredRgbNk: 'data lookup; swept through channelIor',
+    measuredSource: 'data lookup',
+    nkAtWavelength: 'interpolation of published rows; unit-tested',
+  },
+};
