@@ -36,6 +36,7 @@ export const STRESS_DOMAINS = {
   srgbToLinear: { args: [SRGB], range: ZERO_TO_ONE },
   linearToSrgb: { args: [SRGB], range: ZERO_TO_ONE },
   fresnelSchlick: { args: [F0, COS], range: ZERO_TO_ONE },
+  fresnelSchlickSG: { args: [F0, COS], range: ZERO_TO_ONE },
   fresnelDielectric: { args: [COS, ETA], range: ZERO_TO_ONE },
   fresnelConductor: { args: [COS, ETA, K], range: ZERO_TO_ONE },
   f0FromIor: { args: [ETA, K], range: ZERO_TO_ONE },

@@ -12,6 +12,11 @@ vec3 fresnelSchlick(vec3 f0, float cosTheta) {
   return f0 + (1.0 - f0) * m2 * m2 * m;
 }
 
+float fresnelSchlickSG(float f0, float cosTheta) {
+  float c = saturate(cosTheta);
+  return f0 + (1.0 - f0) * exp2((-5.55473 * c - 6.98316) * c);
+}
+
 float fresnelDielectric(float cosThetaI, float eta) {
   float c = saturate(cosThetaI);
   float e2m1 = (eta - 1.0) * (eta + 1.0);

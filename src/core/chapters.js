@@ -21,5 +21,5 @@ export const CHAPTERS = [
   { key: 'visibility', title: 'Geometry and visibility terms', blurb: 'Implicit, Cook–Torrance, Kelemen, Smith.', page: 'visibility.html', widgets: ['visibility-explorer'] },
   { key: 'diffuse', title: 'Diffuse', blurb: 'Lambert, the diffuse–specular trade-off, Oren–Nayar.' },
   { key: 'rendering', title: 'From math to rendering', blurb: 'Punctual, image-based, area and ambient light.' },
-  { key: 'performance', title: 'Performance and accuracy', blurb: 'Run time against error for every approximation.' },
+  { key: 'performance', title: 'Performance and accuracy', blurb: 'Run time against error for every approximation.', page: 'performance.html' },
 ];

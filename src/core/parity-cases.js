@@ -36,6 +36,7 @@ export const PARITY_CASES = [
   { name: 'srgbToLinear', chunk: 'color.glsl', glsl: 'srgbToLinear(a.x)', outputs: 1, js: M.srgbToLinear, range: [0, 1], args: cartesian(GRIDS.srgb) },
   { name: 'linearToSrgb', chunk: 'color.glsl', glsl: 'linearToSrgb(a.x)', outputs: 1, js: M.linearToSrgb, range: [0, 1], args: cartesian(GRIDS.srgb) },
   { name: 'fresnelSchlick', chunk: 'fresnel.glsl', glsl: 'fresnelSchlick(a.x, a.y)', outputs: 1, js: M.fresnelSchlick, range: [0, 1], args: cartesian(GRIDS.f0, GRIDS.cos) },
+  { name: 'fresnelSchlickSG', chunk: 'fresnel.glsl', glsl: 'fresnelSchlickSG(a.x, a.y)', outputs: 1, js: M.fresnelSchlickSG, range: [0, 1], args: cartesian(GRIDS.f0, GRIDS.cos) },
   {
     name: 'fresnelSchlick (vec3)',
     chunk: 'fresnel.glsl',

@@ -49,6 +49,13 @@ function annotationsPlugin(getAnnotations) {
   };
 }
 
+/** Log axes: ticks and grid lines at whole decades only (uPlot's minor decade lines crowd small plots). */
+const decades = (u, axisIdx, min, max) => {
+  const out = [];
+  for (let e = Math.ceil(Math.log10(min)); e <= Math.floor(Math.log10(max)); e++) out.push(10 ** e);
+  return out;
+};
+
 const axis = (label, extra = {}) => ({ label, labelSize: 22, size: 48, stroke: '#333', grid: { stroke: '#0000001a' }, ...extra });
 
 /**
@@ -81,7 +88,7 @@ export function createPlot(container, spec, { onCursor } = {}) {
       },
       axes: [
         axis(current.xLabel, { values: current.xValues }),
-        axis(current.yLabel, current.y?.log ? { values: (u, ticks) => ticks.map((t) => (Math.log10(t) % 1 === 0 ? `1e${Math.log10(t)}` : '')), size: 56 } : {}),
+        axis(current.yLabel, current.y?.log ? { splits: decades, values: (u, ticks) => ticks.map((t) => `1e${Math.round(Math.log10(t))}`), size: 56 } : {}),
       ],
       series: [{ label: current.xLabel, value: (_, v) => (v == null ? '—' : v.toFixed(1)) }, ...current.series.map((s) => ({
         label: s.label,

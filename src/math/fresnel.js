@@ -12,6 +12,15 @@ export function fresnelSchlick(f0, cosTheta) {
   return f0 + (1 - f0) * m2 * m2 * m;
 }
 
+/**
+ * Schlick with the fifth power replaced by a spherical-Gaussian fit, 2^((-5.55473 c - 6.98316) c)
+ * (Karis 2013, "Real Shading in Unreal Engine 4", after Lagarde): one exp2 instead of a power.
+ */
+export function fresnelSchlickSG(f0, cosTheta) {
+  const c = clamp01(cosTheta);
+  return f0 + (1 - f0) * 2 ** ((-5.55473 * c - 6.98316) * c);
+}
+
 /** Normal-incidence reflectance of an interface with relative IOR eta (and extinction k, 0 for dielectrics). */
 export function f0FromIor(eta, k = 0) {
   return ((eta - 1) * (eta - 1) + k * k) / ((eta + 1) * (eta + 1) + k * k);

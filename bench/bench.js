@@ -1,0 +1,94 @@
+// npm run bench: for every family of terms, each variant's error against the float64 reference over a
+// documented domain, its CPU cost (tinybench, ns per evaluation) and its GPU cost (a full-screen pass in
+// headless Chromium). Prints a table and writes JSON (bench/results/latest.json, or --out FILE).
+// --quick: a tiny budget, for the test suite.
+import { mkdirSync, mkdtempSync, writeFileSync } from 'node:fs';
+import { cpus, tmpdir } from 'node:os';
+import { dirname, join, resolve } from 'node:path';
+import { Bench } from 'tinybench';
+import { build } from 'vite';
+import { FAMILIES, measureErrors } from './families.js';
+import { ROOT, launchBrowser, openPage, serveStatic } from '../tests/browser/harness.js';
+
+const args = process.argv.slice(2);
+const quick = args.includes('--quick');
+const out = args.includes('--out') ? resolve(args[args.indexOf('--out') + 1]) : join(ROOT, 'bench/results/latest.json');
+const CPU_SAMPLE = 2048; // inputs per timed call
+
+async function cpuCosts(family) {
+  const bench = new Bench({ time: quick ? 5 : 250, warmupTime: quick ? 2 : 50 });
+  const sample = Array.from({ length: CPU_SAMPLE }, (_, i) => family.inputs[(i * 7919) % family.inputs.length]);
+  let sink = 0;
+  for (const v of family.variants) {
+    bench.add(v.key, () => {
+      for (const a of sample) sink += v.js(...a);
+    });
+  }
+  await bench.run();
+  if (Number.isNaN(sink)) throw new Error('NaN in the CPU benchmark');
+  return Object.fromEntries(bench.tasks.map((t) => [t.name, (t.result.latency.mean * 1e6) / CPU_SAMPLE]));
+}
+
+async function gpuCosts() {
+  const outDir = mkdtempSync(join(tmpdir(), 'shading-lab-bench-'));
+  await build({ root: ROOT, configFile: false, base: './', logLevel: 'warn', build: { outDir, emptyOutDir: true, rollupOptions: { input: { gpu: join(ROOT, 'bench/gpu-bench.html') } } } });
+  const server = await serveStatic(outDir);
+  const browser = await launchBrowser();
+  try {
+    const page = await openPage(browser, server.url, `bench/gpu-bench.html?frames=${quick ? 1 : 9}`);
+    await page.waitForFunction(() => window.__gpuBench?.done, { timeout: 600_000, polling: 500 });
+    const result = await page.evaluate(() => window.__gpuBench);
+    if (page.errors.length) throw new Error(page.errors.join('\n'));
+    result.chromium = await browser.version();
+    return result;
+  } finally {
+    await browser.close();
+    server.close();
+  }
+}
+
+const gpu = await gpuCosts();
+const families = [];
+for (const family of FAMILIES) {
+  const errors = measureErrors(family);
+  const cpu = await cpuCosts(family);
+  const gpuMs = gpu.results[family.key];
+  const cheapest = Math.min(...Object.values(gpuMs));
+  families.push({
+    key: family.key,
+    title: family.title,
+    domain: family.domain,
+    errorOf: family.errorOf,
+    variants: family.variants.map((v, i) => ({
+      key: v.key,
+      label: v.label,
+      error: { maxAbs: errors[i].maxAbs, rms: errors[i].rms, maxAt: errors[i].maxAt },
+      cpuNsPerEval: cpu[v.key],
+      gpuMsPerFrame: gpuMs[v.key],
+      gpuRelative: gpuMs[v.key] / cheapest,
+    })),
+  });
+}
+
+const report = {
+  version: 1,
+  date: new Date().toISOString(),
+  quick,
+  machine: { cpu: cpus()[0]?.model ?? 'unknown', cores: cpus().length, node: process.version, chromium: gpu.chromium, gpuRenderer: gpu.renderer },
+  gpuSetup: { ...gpu.setup, baselineMsPerFrame: gpu.baselineMs },
+  families,
+};
+mkdirSync(dirname(out), { recursive: true });
+writeFileSync(out, `${JSON.stringify(report, null, 1)}\n`);
+
+const pad = (s, n) => String(s).padEnd(n);
+console.log(`Machine: ${report.machine.cpu} (${report.machine.cores} cores), Node ${report.machine.node}, ${report.machine.chromium}, GPU: ${report.machine.gpuRenderer}`);
+console.log(`GPU pass: ${gpu.setup.size}² pixels × ${gpu.setup.loops} evaluations, median of ${gpu.setup.frames} drained frames; the empty pass (x·y) takes ${gpu.baselineMs.toFixed(2)} ms of each.`);
+for (const f of families) {
+  console.log(`\n${f.title} — error of ${f.errorOf} over ${f.domain}`);
+  console.log(`  ${pad('variant', 42)}${pad('max |error|', 13)}${pad('RMS', 11)}${pad('CPU ns/eval', 13)}${pad('GPU ms/frame', 14)}GPU relative`);
+  for (const v of f.variants) {
+    console.log(`  ${pad(v.label, 42)}${pad(v.error.maxAbs.toExponential(2), 13)}${pad(v.error.rms.toExponential(2), 11)}${pad(v.cpuNsPerEval.toFixed(2), 13)}${pad(v.gpuMsPerFrame.toFixed(2), 14)}${v.gpuRelative.toFixed(2)}×`);
+  }
+}
+console.log(`\nWrote ${out}`);

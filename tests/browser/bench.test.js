@@ -1,0 +1,40 @@
+// The benchmark is not a timed test: this only checks that it runs on a tiny budget and that its JSON has
+// the documented shape (the page plots the committed results; their numbers are for people to read).
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, readFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { describe, expect, it } from 'vitest';
+import { ROOT } from './harness.js';
+
+const num = expect.any(Number);
+
+function checkShape(report) {
+  expect(report).toMatchObject({ version: 1, date: expect.any(String), machine: { cpu: expect.any(String), cores: num, gpuRenderer: expect.any(String) } });
+  expect(report.gpuSetup).toMatchObject({ size: num, loops: num, frames: num, baselineMsPerFrame: num });
+  expect(report.families.map((f) => f.key)).toEqual(['fresnel-dielectric', 'fresnel-conductor', 'smith-g1-beckmann', 'visibility', 'ndf']);
+  for (const f of report.families) {
+    expect(f).toMatchObject({ title: expect.any(String), domain: expect.any(String), errorOf: expect.any(String) });
+    expect(f.variants.length).toBeGreaterThanOrEqual(2);
+    for (const v of f.variants) {
+      expect(v).toMatchObject({ key: expect.any(String), label: expect.any(String), error: { maxAbs: num, rms: num }, cpuNsPerEval: num, gpuMsPerFrame: num, gpuRelative: num });
+      for (const x of [v.error.maxAbs, v.error.rms, v.cpuNsPerEval, v.gpuMsPerFrame, v.gpuRelative]) expect(Number.isFinite(x) && x >= 0).toBe(true);
+    }
+    expect(f.variants[0].error.maxAbs).toBe(0); // the first variant is the reference itself
+    expect(Math.min(...f.variants.map((v) => v.gpuRelative))).toBe(1);
+  }
+}
+
+describe('npm run bench', () => {
+  it('runs on a tiny budget and writes JSON of the documented shape', () => {
+    const out = join(mkdtempSync(join(tmpdir(), 'bench-')), 'quick.json');
+    const log = execFileSync('node', ['bench/bench.js', '--quick', '--out', out], { cwd: ROOT, encoding: 'utf8', timeout: 300_000 });
+    expect(log).toMatch(/Fresnel, dielectrics/);
+    const report = JSON.parse(readFileSync(out, 'utf8'));
+    expect(report.quick).toBe(true);
+    checkShape(report);
+  });
+  it('the committed results the performance page plots have the same shape', () => {
+    checkShape(JSON.parse(readFileSync(join(ROOT, 'bench/results/latest.json'), 'utf8')));
+  });
+});
