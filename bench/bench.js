@@ -8,6 +8,7 @@ import { dirname, join, resolve } from 'node:path';
 import { Bench } from 'tinybench';
 import { build } from 'vite';
 import { FAMILIES, measureErrors } from './families.js';
+import { measurePages } from './pages.js';
 import { ROOT, launchBrowser, openPage, serveStatic } from '../tests/browser/harness.js';
 
 const args = process.argv.slice(2);
@@ -48,6 +49,7 @@ async function gpuCosts() {
 }
 
 const gpu = await gpuCosts();
+const pages = await measurePages();
 const families = [];
 for (const family of FAMILIES) {
   const errors = measureErrors(family);
@@ -77,6 +79,8 @@ const report = {
   machine: { cpu: cpus()[0]?.model ?? 'unknown', cores: cpus().length, node: process.version, chromium: gpu.chromium, gpuRenderer: gpu.renderer },
   gpuSetup: { ...gpu.setup, baselineMsPerFrame: gpu.baselineMs },
   families,
+  versusThree: gpu.versusThree,
+  pages,
 };
 mkdirSync(dirname(out), { recursive: true });
 writeFileSync(out, `${JSON.stringify(report, null, 1)}\n`);
@@ -91,4 +95,9 @@ for (const f of families) {
     console.log(`  ${pad(v.label, 42)}${pad(v.error.maxAbs.toExponential(2), 13)}${pad(v.error.rms.toExponential(2), 11)}${pad(v.cpuNsPerEval.toFixed(2), 13)}${pad(v.gpuMsPerFrame.toFixed(2), 14)}${v.gpuRelative.toFixed(2)}×`);
   }
 }
+const vt = gpu.versusThree;
+console.log(`\nSphere at ${vt.size}² with GGX + height-correlated Smith + Schlick + Lambert + one punctual light:`);
+console.log(`  ours ${vt.oursMsPerFrame.toFixed(2)} ms/frame, three.js MeshStandardMaterial ${vt.threeMsPerFrame.toFixed(2)} ms/frame: ratio ${vt.ratio.toFixed(2)}`);
+console.log(`\n  ${pad('page', 30)}${pad('JS (KiB, uncompressed)', 30)}${pad('files', 7)}${pad('load (ms)', 11)}first frame (ms)`);
+for (const p of pages) console.log(`  ${pad(p.page, 30)}${pad(p.jsKB.toFixed(0), 30)}${pad(p.jsFiles, 7)}${pad(p.loadMs.toFixed(0), 11)}${p.firstFrameMs === null ? '—' : p.firstFrameMs.toFixed(0)}`);
 console.log(`\nWrote ${out}`);

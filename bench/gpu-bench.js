@@ -2,6 +2,7 @@
 // full-screen pass; each frame is drained (a 1-pixel readPixels waits for the GPU), the median frame kept.
 import { FAMILIES } from './families.js';
 import { assembleGlsl } from '../src/core/glsl.js';
+import { compareWithMeshStandard } from './versus-three.js';
 
 const params = new URLSearchParams(location.search);
 const FRAMES = Number(params.get('frames') ?? 9);
@@ -77,6 +78,7 @@ for (const family of FAMILIES) {
 }
 window.__gpuBench = {
   done: true,
+  versusThree: compareWithMeshStandard({ frames: FRAMES }),
   baselineMs: timeFrames(program('x * y')), // the loop and the pass alone: part of every frame above
   renderer: debug ? gl.getParameter(debug.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER),
   setup: { size: SIZE, loops: LOOPS, frames: FRAMES },

@@ -83,6 +83,7 @@ export const STRESS_DOMAINS = {
   microfacetTerms: { pairs: PAIRS, params: BRDF_PARAMS, pick: ['F', 'D', 'V', 'G'], range: NON_NEGATIVE },
   microfacetFactors: { pairs: PAIRS, params: BRDF_PARAMS, use: { F: true, D: true, G: true, denominator: true }, range: NON_NEGATIVE },
   brdf: { pairs: PAIRS, params: BRDF_PARAMS, range: NON_NEGATIVE },
+  diffuseLambert: { args: [SRGB], range: [0, 1 / Math.PI] },
   punctualRadiance: { args: [[0, 1, 1e8], COS, [0, 1]], range: NON_NEGATIVE },
   directionFromCos: { args: [COS], range: [-1, 1] },
   directionsFromHalfDiff: { args: [ANGLE, ANGLE, ANGLE], range: [-1, 1] },

@@ -1,11 +1,15 @@
 // A sphere shaded by one microfacet BRDF under one punctual light (the talk's L = pi f c_light (n·l)),
-// or, with FURNACE, in a uniform white environment with F = 1 (the directional albedo E(n·v)).
+// (with DIFFUSE_LAMBERT plus a Lambert term), or, with FURNACE, in a uniform white environment with F = 1 (the directional albedo E(n·v)).
 // The term switches of brdf.glsl pick D (NDF_*), V (VIS_*) and F (F_ONE or Schlick); only those compile.
 #include "color.glsl"
 #ifdef FURNACE
 #include "integrate.glsl"
 #else
 #include "brdf.glsl"
+#endif
+#ifdef DIFFUSE_LAMBERT
+#include "diffuse.glsl"
+uniform float uDiffuse;
 #endif
 
 in vec3 vNormal;
@@ -28,7 +32,11 @@ void main() {
   vec3 t = normalize(abs(n.z) < 0.999 ? cross(vec3(0.0, 0.0, 1.0), n) : cross(vec3(1.0, 0.0, 0.0), n));
   mat3 toLocal = transpose(mat3(t, cross(n, t), n));
   vec3 l = toLocal * normalize(uLightDir);
-  float radiance = PI * microfacetBRDF(l, toLocal * v, uAlpha, uF0) * uLightIntensity * max(l.z, 0.0);
+  float f = microfacetBRDF(l, toLocal * v, uAlpha, uF0);
+#ifdef DIFFUSE_LAMBERT
+  f += l.z > 0.0 ? diffuseLambert(uDiffuse) : 0.0;
+#endif
+  float radiance = PI * f * uLightIntensity * max(l.z, 0.0);
 #endif
   fragColor = vec4(linearToSrgb(vec3(radiance * uExposure)), 1.0);
 }

@@ -89,6 +89,7 @@ export const PARITY_CASES = [
     range: [0, 1],
     args: cartesian(GRIDS.cosCoarse, GRIDS.alpha),
   },
+  { name: 'diffuseLambert', chunk: 'diffuse.glsl', glsl: 'diffuseLambert(a.x)', outputs: 1, js: M.diffuseLambert, range: [0, 1 / Math.PI], args: cartesian(GRIDS.srgb) },
   { name: 'fresnelZone', chunk: 'zones.glsl', glsl: 'fresnelZone(a.x)', outputs: 1, js: M.fresnelZone, range: [0, 2], args: cartesian(GRIDS.cos) },
   { name: 'ndfGGX', chunk: 'ndf.glsl', glsl: 'ndfGGX(a.x, a.y)', outputs: 1, js: M.ndfGGX, range: [0, Infinity], args: cartesian(GRIDS.cos, GRIDS.alpha) },
   { name: 'ndfBeckmann', chunk: 'ndf.glsl', glsl: 'ndfBeckmann(a.x, a.y)', outputs: 1, js: M.ndfBeckmann, range: [0, Infinity], args: cartesian(GRIDS.cos, GRIDS.alpha) },

@@ -11,3 +11,4 @@ export * from './brdf.js';
 export * from './integrate.js';
 export * from './ndf-width.js';
 export * from './half-diff.js';
+export * from './diffuse.js';

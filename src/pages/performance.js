@@ -49,4 +49,15 @@ function render() {
 }
 costSelect.addEventListener('change', render);
 render();
+
+// three.js for scale, and what each page costs to open
+const vt = report.versusThree;
+const extra = document.getElementById('pages');
+extra.innerHTML =
+  `<h2>Against three.js</h2><p>A sphere at ${vt.size}² pixels with the terms of MeshStandardMaterial (GGX, height-correlated Smith, ` +
+  `Schlick with F0 = 0.04, Lambert, one punctual light): this app's shader takes <strong>${vt.oursMsPerFrame.toFixed(2)} ms</strong> a frame, ` +
+  `MeshStandardMaterial <strong>${vt.threeMsPerFrame.toFixed(2)} ms</strong>: a ratio of <strong>${vt.ratio.toFixed(2)}</strong>.</p>` +
+  '<h2>What each page loads</h2><table class="data-table compact"><thead><tr><th>Page</th><th>JavaScript (KiB, uncompressed)</th><th>files</th><th>load (ms)</th><th>first 3-D frame (ms)</th></tr></thead><tbody>' +
+  report.pages.map((p) => `<tr><td>${p.page}</td><td>${p.jsKB.toFixed(0)}</td><td>${p.jsFiles}</td><td>${p.loadMs.toFixed(0)}</td><td>${p.firstFrameMs === null ? '—' : p.firstFrameMs.toFixed(0)}</td></tr>`).join('') +
+  '</tbody></table>';
 (globalThis.__shadingLab ??= {}).performance = report;

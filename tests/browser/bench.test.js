@@ -23,6 +23,9 @@ function checkShape(report) {
     expect(f.variants[0].error.maxAbs).toBe(0); // the first variant is the reference itself
     expect(Math.min(...f.variants.map((v) => v.gpuRelative))).toBe(1);
   }
+  expect(report.versusThree).toMatchObject({ size: num, oursMsPerFrame: num, threeMsPerFrame: num, ratio: num });
+  expect(report.pages.map((p) => p.page)).toContain('fresnel.html');
+  for (const p of report.pages) expect(p).toMatchObject({ jsKB: num, jsFiles: num, loadMs: num });
 }
 
 describe('npm run bench', () => {

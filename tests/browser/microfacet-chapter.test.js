@@ -12,7 +12,7 @@ afterAll(async () => {
 });
 
 describe('chapter pages load cleanly', () => {
-  for (const [path, keys] of [['brdf.html', ['lobe']], ['microfacets.html', ['surface', 'energy']], ['ndf.html', ['ndf']], ['visibility.html', ['vis']]]) {
+  for (const [path, keys] of [['brdf.html', ['lobe']], ['microfacets.html', ['surface', 'energy']], ['ndf.html', ['ndf']], ['visibility.html', ['vis']], ['performance.html', []]]) {
     it(path, async () => {
       const page = await open(browser, path);
       for (const k of keys) await widget(page, k);

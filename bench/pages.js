@@ -1,0 +1,47 @@
+// Load only what is opened, measured: each page's JavaScript (what the browser actually fetched) and the
+// time to its first frame (the render loop's first draw) or, for pages without a 3-D view, to load.
+import { buildApp, launchBrowser, openPage, serveStatic, settle } from '../tests/browser/harness.js';
+
+export const MEASURED_PAGES = ['index.html', 'brdf.html', 'microfacets.html', 'fresnel.html', 'ndf.html', 'visibility.html', 'performance.html', 'embed.html?w=fresnel-zones', 'parity.html'];
+
+/** Timestamps the first frame the app's render loop draws (it counts frames in __shadingLab.frames). */
+function recordFirstFrame() {
+  let frames = 0;
+  const lab = { firstFrameAt: null };
+  Object.defineProperty(lab, 'frames', {
+    get: () => frames,
+    set(v) {
+      if (lab.firstFrameAt === null && v > 0) lab.firstFrameAt = performance.now();
+      frames = v;
+    },
+  });
+  window.__shadingLab = lab;
+}
+
+export async function measurePages() {
+  const server = await serveStatic(await buildApp());
+  const browser = await launchBrowser();
+  const rows = [];
+  try {
+    for (const path of MEASURED_PAGES) {
+      const page = await openPage(browser, server.url, path, { beforeLoad: (p) => p.evaluateOnNewDocument(recordFirstFrame) });
+      await settle(page, 2500);
+      rows.push(await page.evaluate((p) => {
+        const js = performance.getEntriesByType('resource').filter((r) => r.name.endsWith('.js'));
+        const nav = performance.getEntriesByType('navigation')[0];
+        return {
+          page: p,
+          jsKB: js.reduce((s, r) => s + r.encodedBodySize, 0) / 1024,
+          jsFiles: js.length,
+          loadMs: nav.loadEventEnd,
+          firstFrameMs: globalThis.__shadingLab.firstFrameAt,
+        };
+      }, path));
+      await page.close();
+    }
+  } finally {
+    await browser.close();
+    server.close();
+  }
+  return rows;
+}
