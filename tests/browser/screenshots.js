@@ -19,6 +19,7 @@ const SHOTS = [
   ['microfacets-page', 'microfacets.html', { fullPage: true }],
   ['ndf-page', 'ndf.html?ndf.exposure=8', { fullPage: true }],
   ['visibility-page', 'visibility.html', { fullPage: true }],
+  ['performance-page', 'performance.html', { fullPage: true }],
 ];
 
 const out = join(ROOT, 'docs/screenshots');
