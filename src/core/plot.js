@@ -86,9 +86,10 @@ export function createPlot(container, spec, { onCursor } = {}) {
         x: { time: false, range: [current.x.min, current.x.max] },
         y: current.y?.log ? { distr: 3, log: 10, range: [current.y.min, current.y.max] } : current.y ? { range: [current.y.min, current.y.max] } : { auto: true },
       },
+      // on log axes uPlot hands null for the ticks it leaves unlabelled for room
       axes: [
         axis(current.xLabel, { values: current.xValues }),
-        axis(current.yLabel, current.y?.log ? { splits: decades, values: (u, ticks) => ticks.map((t) => `1e${Math.round(Math.log10(t))}`), size: 56 } : {}),
+        axis(current.yLabel, current.y?.log ? { splits: decades, values: (u, ticks) => ticks.map((t) => (t == null ? '' : `1e${Math.round(Math.log10(t))}`)), size: 56 } : {}),
       ],
       series: [{ label: current.xLabel, value: (_, v) => (v == null ? '—' : v.toFixed(1)) }, ...current.series.map((s) => ({
         label: s.label,
