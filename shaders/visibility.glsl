@@ -12,11 +12,14 @@ float visibilityCookTorrance(float nl, float nv, float nh, float vh) {
 
 float visibilityKelemen(float lh) { return lh > 0.0 ? 1.0 / (lh * lh) : 0.0; }
 
+// sqrt(c² + alpha² sin²): the root in every Smith GGX form
+float ggxRoot(float c, float a2) { return sqrt(c * c + a2 * sin2FromCos(c)); }
+
 float smithG1GGX(float cosTheta, float alpha) {
   if (!(cosTheta > 0.0)) return 0.0;
   float c = min(cosTheta, 1.0);
   float a = clampAlpha(alpha);
-  return 2.0 * c / (c + sqrt(c * c + a * a * sin2FromCos(c)));
+  return 2.0 * c / (c + ggxRoot(c, a * a));
 }
 
 // erfc for x >= 0: Abramowitz & Stegun 7.1.26 (absolute error < 1.5e-7), the float32 stand-in for the
@@ -53,7 +56,7 @@ float visibilitySmithGGXSeparable(float nl, float nv, float alpha) {
   float v = min(nv, 1.0);
   float a = clampAlpha(alpha);
   float a2 = a * a;
-  return 4.0 / ((l + sqrt(l * l + a2 * sin2FromCos(l))) * (v + sqrt(v * v + a2 * sin2FromCos(v))));
+  return 4.0 / ((l + ggxRoot(l, a2)) * (v + ggxRoot(v, a2)));
 }
 
 float visibilitySmithGGXCorrelated(float nl, float nv, float alpha) {
@@ -62,9 +65,7 @@ float visibilitySmithGGXCorrelated(float nl, float nv, float alpha) {
   float v = min(nv, 1.0);
   float a = clampAlpha(alpha);
   float a2 = a * a;
-  float lambdaV = l * sqrt(v * v + a2 * sin2FromCos(v));
-  float lambdaL = v * sqrt(l * l + a2 * sin2FromCos(l));
-  return 2.0 / (lambdaV + lambdaL);
+  return 2.0 / (l * ggxRoot(v, a2) + v * ggxRoot(l, a2));
 }
 
 float visibilitySmithGGXCorrelatedFast(float nl, float nv, float alpha) {

@@ -23,12 +23,14 @@ export function visibilityKelemen(lh) {
   return lh > 0 ? 1 / (lh * lh) : 0;
 }
 
+/** sqrt(c² + alpha² sin²): the root in every Smith GGX form (c (1 + 2Λ) in Heitz's notation). */
+const ggxRoot = (c, a2) => Math.sqrt(c * c + a2 * sin2(c));
+
 /** Smith G1 for GGX: 2c / (c + sqrt(c² + alpha² sin²)). */
 export function smithG1GGX(cosTheta, alpha) {
   if (!(cosTheta > 0)) return 0;
   const c = Math.min(cosTheta, 1);
-  const a2 = clampAlpha(alpha) ** 2;
-  return (2 * c) / (c + Math.sqrt(c * c + a2 * sin2(c)));
+  return (2 * c) / (c + ggxRoot(c, clampAlpha(alpha) ** 2));
 }
 
 /**
@@ -62,7 +64,7 @@ export function visibilitySmithGGXSeparable(nl, nv, alpha) {
   const l = Math.min(nl, 1);
   const v = Math.min(nv, 1);
   const a2 = clampAlpha(alpha) ** 2;
-  return 4 / ((l + Math.sqrt(l * l + a2 * sin2(l))) * (v + Math.sqrt(v * v + a2 * sin2(v))));
+  return 4 / ((l + ggxRoot(l, a2)) * (v + ggxRoot(v, a2)));
 }
 
 /**
@@ -74,9 +76,7 @@ export function visibilitySmithGGXCorrelated(nl, nv, alpha) {
   const l = Math.min(nl, 1);
   const v = Math.min(nv, 1);
   const a2 = clampAlpha(alpha) ** 2;
-  const lambdaV = l * Math.sqrt(v * v + a2 * sin2(v));
-  const lambdaL = v * Math.sqrt(l * l + a2 * sin2(l));
-  return 2 / (lambdaV + lambdaL);
+  return 2 / (l * ggxRoot(v, a2) + v * ggxRoot(l, a2));
 }
 
 /** Hammon 2017's approximation of height-correlated GGX Smith: V = 2 / lerp(2 nl nv, nl + nv, alpha). */
