@@ -74,3 +74,53 @@ describe('views out of sight draw nothing', () => {
     await page.close();
   });
 });
+
+describe('compile only what is shown (the sources WebGL actually compiles)', () => {
+  it('a term switched off is in no compiled shader, and a variant that comes back is not compiled again', async () => {
+    const page = await open(browser, 'embed.html?w=fresnel-zones&mode=zones-nv');
+    await page.evaluate(() => {
+      window.__sources = [];
+      const orig = WebGL2RenderingContext.prototype.shaderSource;
+      WebGL2RenderingContext.prototype.shaderSource = function recorded(shader, src) {
+        window.__sources.push(src);
+        return orig.call(this, shader, src);
+      };
+    });
+    // reload the widget's programs under the recorder: a fresh page would race it, so record from here on
+    await widget(page, 'fresnel-zones');
+    await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].update({ shape: 'torusknot' }));
+    await settle(page, 500);
+    const sources = () => page.evaluate(() => window.__sources);
+    expect((await sources()).join('\n')).not.toMatch(/ndfGGX|visibilitySmith/);
+    await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].update({ mode: 'zones-lh-weighted' }));
+    await settle(page, 2500);
+    const afterWeighted = await sources();
+    expect(afterWeighted.some((s) => /float ndfGGX/.test(s))).toBe(true);
+    await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].update({ mode: 'zones-nv' }));
+    await settle(page, 500);
+    await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].update({ mode: 'zones-lh-weighted' }));
+    await settle(page, 2500);
+    expect((await sources()).length).toBe(afterWeighted.length);
+    await page.close();
+  });
+});
+
+describe('embedding', () => {
+  it('a widget in an iframe fills the frame and follows its size', async () => {
+    const page = await browser.newPage();
+    const url = new URL('embed.html?w=fresnel-zones', (await import('./helpers.js')).baseUrl()).href;
+    await page.setContent(`<iframe id="f" src="${url}" style="width:480px;height:420px;border:0"></iframe>`);
+    const frame = await (await page.waitForSelector('#f')).contentFrame();
+    await frame.waitForFunction(() => globalThis.__shadingLab?.widgets?.['fresnel-zones'], { timeout: 30_000 });
+    await settle(page, 800);
+    const width = () => frame.$eval('.widget-fresnel-zones canvas', (c) => c.getBoundingClientRect().width);
+    const w1 = await width();
+    expect(w1).toBeGreaterThan(300);
+    expect(w1).toBeLessThanOrEqual(480);
+    expect(await frame.$('.site-header')).toBeNull(); // no page chrome
+    await page.$eval('#f', (f) => (f.style.width = '720px')); // still one column (the controls move below under 760 px)
+    await settle(page, 800);
+    expect(await width()).toBeGreaterThan(w1 * 1.3);
+    await page.close();
+  });
+});
