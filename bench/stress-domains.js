@@ -30,7 +30,8 @@ const FINITE = [-Infinity, Infinity]; // only NaN and ±Inf are failures
 
 /**
  * name -> { args: [list per argument] } | { tuples: [argument lists] } | { pairs: [[l, v]], params } with
- * range [lo, hi]; pick: the result fields to check. Functions in `skipped` say why they are not swept.
+ * range [lo, hi]; pick: the result fields to check; allowInfinity: Inf is a documented result (meanFreePath in
+ * a vacuum). Functions in `skipped` say why they are not swept.
  */
 export const STRESS_DOMAINS = {
   srgbToLinear: { args: [SRGB], range: ZERO_TO_ONE },
@@ -90,7 +91,15 @@ export const STRESS_DOMAINS = {
   sampleGGXNormal: { args: [[0, 0.5, 1 - 1e-12], [0, 0.5, 1], ALPHA], range: [-1, 1] },
   hammersley: { tuples: [[0, 1], [0, 256], [255, 256], [2 ** 31, 2 ** 32], [2 ** 32 - 1, 2 ** 32]], range: ZERO_TO_ONE },
   albedoGGX: { args: [COS, ALPHA, [16]], range: ZERO_TO_ONE },
+  transmittance: { args: [[-1, 0, 1e-9, 0.3, 1e3], [-1, 0, 1, 1e6]], range: ZERO_TO_ONE },
+  opticalDepth: { args: [[-1, 0, 0.3, 1e3], [-1, 0, 1, 1e6]], range: NON_NEGATIVE },
+  scatteringAlbedo: { args: [[-1, 0, 1, 1e6], [-1, 0, 1, 1e6]], range: ZERO_TO_ONE },
+  meanFreePath: { args: [[-1, 0, 1e-9, 1, 1e6]], range: [0, Infinity], allowInfinity: true },
+  absorptionFromK: { args: [[0, 1e-9, 1], [0.4, 0.7]], range: NON_NEGATIVE },
+  waterAbsorptionRgb: { args: [], range: NON_NEGATIVE },
+  lambertianEntryAngle2D: { args: [[() => 0, () => 0.5, () => 1 - 1e-12]], range: [-Math.PI / 2, Math.PI / 2] },
   skipped: {
+    randomWalk2D: 'a Monte Carlo walk; its statistics are unit-tested against published results',
     hemisphereIntegral: 'takes an integrand; exercised by the unit tests with BRDFs',
     reflectanceImportanceGGX: 'takes a BRDF; exercised by the unit tests',
     averageAlbedo: 'takes E(mu); exercised by the unit tests',

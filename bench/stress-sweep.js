@@ -36,7 +36,7 @@ export function sweepJs({ limit = Infinity } = {}) {
       if (result === null && spec.nullable) continue;
       for (const x of numbersIn(out)) {
         const bad = Number.isNaN(x) ? 'nan' : !Number.isFinite(x) && spec.range[1] !== Infinity ? 'inf' : x < spec.range[0] || x > spec.range[1] ? 'outside' : null;
-        if (!bad && Number.isFinite(x)) continue;
+        if (!bad && (Number.isFinite(x) || spec.allowInfinity)) continue;
         if (bad === 'nan') nan++;
         else if (bad === 'inf' || !Number.isFinite(x)) inf++;
         else outside++;

@@ -12,3 +12,4 @@ export * from './integrate.js';
 export * from './ndf-width.js';
 export * from './half-diff.js';
 export * from './diffuse.js';
+export * from './media.js';
