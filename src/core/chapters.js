@@ -1,7 +1,13 @@
 // The app's chapters in the talk's order, and which page and widgets each has.
 export const CHAPTERS = [
   { key: 'media', title: 'Light in media', blurb: 'Absorption, scattering and the scale at which they show.' },
-  { key: 'surfaces', title: 'Surfaces and microgeometry', blurb: 'Optically flat vs rough; metals vs non-metals; when diffuse is local.' },
+  {
+    key: 'surfaces',
+    title: 'Surfaces and microgeometry',
+    blurb: 'Optically flat vs rough; metals vs non-metals; when diffuse is local.',
+    page: 'surfaces.html',
+    widgets: ['subsurface-scale'],
+  },
   { key: 'brdf', title: 'The BRDF and the reflectance equation', blurb: 'Lobes, and the integral as a weighted average.', page: 'brdf.html', widgets: ['brdf-lobe'] },
   {
     key: 'microfacets',

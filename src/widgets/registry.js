@@ -15,6 +15,11 @@ export const WIDGETS = {
     summary: 'Normal-incidence reflectance of metals and non-metals, linear and sRGB, with swatches.',
     load: () => import('./f0-tables/f0-tables.js'),
   },
+  'subsurface-scale': {
+    title: 'Subsurface scale',
+    summary: 'Random walks in a scattering slab: how far light travels before it re-emerges, against a pixel’s size.',
+    load: () => import('./subsurface-scale/subsurface-scale.js'),
+  },
   'brdf-lobe': {
     title: 'BRDF lobe',
     summary: 'The microfacet BRDF taken apart: polar and 3-D lobes, factors on and off, two BRDFs, (θh, θd), albedo.',
