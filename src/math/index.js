@@ -13,3 +13,4 @@ export * from './ndf-width.js';
 export * from './half-diff.js';
 export * from './diffuse.js';
 export * from './media.js';
+export * from './microsurface.js';

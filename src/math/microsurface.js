@@ -126,3 +126,52 @@ export function segmentNormal(h, i) {
   const len = Math.hypot(1, rise);
   return [-rise / len, 1 / len];
 }
+
+/** The 1-D slope density of the profile: Beckmann exp(-q²/a²)/(a sqrt(pi)), GGX 1/(2a (1 + q²/a²)^(3/2)). */
+export function slopeDensity(kind, alpha, q) {
+  if (kind === 'ggx') return 1 / (2 * alpha * (1 + (q * q) / (alpha * alpha)) ** 1.5);
+  return Math.exp(-(q * q) / (alpha * alpha)) / (alpha * Math.sqrt(Math.PI));
+}
+
+/**
+ * Microfacet prediction, in flatland, of where light from angle thetaI (radians from the mean normal) goes
+ * after its first reflection: the density over the outgoing angle thetaO. Facet normals at angle θm have
+ * (length-weighted) density D(θm) = P(tan θm)/cos³θm; the light sees them in proportion to cos(θi − θm) and
+ * Smith's G1(θi) (G1 of the same slope distribution); a mirror facet sends it to θo = 2θm − θi.
+ */
+export function reflectedAngleDensity(thetaO, thetaI, kind, alpha, G1) {
+  const thetaM = (thetaO + thetaI) / 2;
+  if (Math.abs(thetaM) >= Math.PI / 2) return 0;
+  const seen = Math.cos(thetaI - thetaM);
+  if (seen <= 0) return 0;
+  const D = slopeDensity(kind, alpha, Math.tan(thetaM)) / Math.cos(thetaM) ** 3;
+  return (G1(Math.cos(thetaI), alpha) * seen * D) / Math.cos(thetaI) / 2;
+}
+
+/**
+ * The same, ray-traced: first hits of parallel rays from thetaI on the profile h, found by picking facets
+ * in proportion to their projected length towards the light and keeping those the light reaches.
+ * Returns the outgoing angles of `n` first reflections.
+ */
+export function reflectedAngles(h, thetaI, n, rand) {
+  const bounds = heightBounds(h);
+  const [lx, ly] = [Math.sin(thetaI), Math.cos(thetaI)];
+  const segments = h.length - 1;
+  const lo = Math.floor(segments * 0.25);
+  const span = Math.floor(segments * 0.5);
+  // rejection sampling by projected length: a facet's weight is (l · m) len = ly - lx rise, at most ly + |lx| maxRise
+  let maxWeight = 0;
+  for (let i = lo; i < lo + span; i++) maxWeight = Math.max(maxWeight, ly - lx * (h[i + 1] - h[i]));
+  const out = [];
+  while (out.length < n) {
+    const i = lo + Math.floor(rand() * span);
+    const rise = h[i + 1] - h[i];
+    const w = ly - lx * rise;
+    if (w <= 0 || rand() * maxWeight > w) continue;
+    const t = rand();
+    if (castUp(h, bounds, i + t, h[i] + t * rise + 1e-9, lx, ly) !== null) continue; // in shadow
+    const thetaM = -Math.atan(rise);
+    out.push(2 * thetaM - thetaI);
+  }
+  return out;
+}

@@ -135,3 +135,34 @@ describe('2-D microsurface (independent of the Smith formulas it is compared wit
     }
   });
 });
+
+describe('reflection off a 2-D microsurface', async () => {
+  const { generateProfile, reflectedAngleDensity, reflectedAngles, seededRandom } = await import('../../src/math/microsurface.js');
+  const { smithG1Beckmann, smithG1GGX } = await import('../../src/math/visibility.js');
+  it('ray-traced first reflections follow the microfacet prediction (histogram converges)', () => {
+    for (const [kind, G1] of [['beckmann', smithG1Beckmann], ['ggx', smithG1GGX]]) {
+      for (const deg of [20, 60]) {
+        const ti = (deg * Math.PI) / 180;
+        const h = generateProfile(60000, kind, 0.3, 5);
+        const bins = 36;
+        const lo = -Math.PI;
+        const width = (2 * Math.PI) / bins;
+        const hist = (n) => {
+          const counts = new Float64Array(bins);
+          for (const t of reflectedAngles(h, ti, n, seededRandom(n))) counts[Math.min(Math.floor((t - lo) / width), bins - 1)] += 1 / n / width;
+          return counts;
+        };
+        const predicted = Float64Array.from({ length: bins }, (_, b) => {
+          let s = 0;
+          for (let k = 0; k < 20; k++) s += reflectedAngleDensity(lo + (b + (k + 0.5) / 20) * width, ti, kind, 0.3, G1) / 20;
+          return s;
+        });
+        const l1 = (c) => c.reduce((s, x, b) => s + Math.abs(x - predicted[b]) * width, 0);
+        const [coarse, fine] = [l1(hist(2000)), l1(hist(40000))];
+        expect(fine).toBeLessThan(coarse); // converges as rays are added
+        expect(fine, `${kind} ${deg}°`).toBeLessThan(0.06); // to within the Smith approximation
+        expect(predicted.reduce((s, x) => s + x * width, 0)).toBeCloseTo(1, 1); // a density
+      }
+    }
+  });
+});
