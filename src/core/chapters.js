@@ -6,7 +6,7 @@ export const CHAPTERS = [
     title: 'Surfaces and microgeometry',
     blurb: 'Optically flat vs rough; metals vs non-metals; when diffuse is local.',
     page: 'surfaces.html',
-    widgets: ['subsurface-scale'],
+    widgets: ['surfaces', 'subsurface-scale'],
   },
   { key: 'brdf', title: 'The BRDF and the reflectance equation', blurb: 'Lobes, and the integral as a weighted average.', page: 'brdf.html', widgets: ['brdf-lobe'] },
   {

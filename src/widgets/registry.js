@@ -15,6 +15,11 @@ export const WIDGETS = {
     summary: 'Normal-incidence reflectance of metals and non-metals, linear and sRGB, with swatches.',
     load: () => import('./f0-tables/f0-tables.js'),
   },
+  surfaces: {
+    title: 'Surfaces',
+    summary: 'A flat interface (reflection, refraction, metals vs non-metals), a rough one’s reflection cone, blurrier reflections.',
+    load: () => import('./surfaces/surfaces.js'),
+  },
   'subsurface-scale': {
     title: 'Subsurface scale',
     summary: 'Random walks in a scattering slab: how far light travels before it re-emerges, against a pixel’s size.',

@@ -48,3 +48,21 @@ describe('subsurface-scale', () => {
     await page.close();
   });
 });
+
+describe('surfaces', () => {
+  it('reflects by exact Fresnel, absorbs in metals, and spreads a rough reflection into a cone', async () => {
+    const page = await open(browser, 'surfaces.html?surf.theta=60');
+    await widget(page, 'surf');
+    const F = () => page.evaluate(() => globalThis.__shadingLab.widgets.surf.getReflected());
+    const glass = await F();
+    const before = await shot(page, 'canvas.interface');
+    await setControl(page, 'Material', 'Silver');
+    const silver = await F();
+    expect(silver).toBeGreaterThan(0.9);
+    expect(glass).toBeLessThan(0.2);
+    expect(await page.$eval('.widget-surfaces .widget-about', (el) => el.textContent)).toMatch(/metal swallows/);
+    expect(await shot(page, 'canvas.interface')).not.toBe(before);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+});
