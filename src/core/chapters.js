@@ -1,6 +1,6 @@
 // The app's chapters in the talk's order, and which page and widgets each has.
 export const CHAPTERS = [
-  { key: 'media', title: 'Light in media', blurb: 'Absorption, scattering and the scale at which they show.' },
+  { key: 'media', title: 'Light in media', blurb: 'Absorption, scattering and the scale at which they show.', page: 'media.html', widgets: ['media'] },
   {
     key: 'surfaces',
     title: 'Surfaces and microgeometry',

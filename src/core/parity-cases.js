@@ -90,6 +90,7 @@ export const PARITY_CASES = [
     args: cartesian(GRIDS.cosCoarse, GRIDS.alpha),
   },
   { name: 'diffuseLambert', chunk: 'diffuse.glsl', glsl: 'diffuseLambert(a.x)', outputs: 1, js: M.diffuseLambert, range: [0, 1 / Math.PI], args: cartesian(GRIDS.srgb) },
+  { name: 'transmittance', chunk: 'media.glsl', glsl: 'transmittance(a.x, a.y)', outputs: 1, js: M.transmittance, range: [0, 1], args: cartesian([-1, 0, 1e-6, 0.3, 1, 50, 1e4], [-1, 0, 1e-3, 1, 100, 1e5]) },
   { name: 'fresnelZone', chunk: 'zones.glsl', glsl: 'fresnelZone(a.x)', outputs: 1, js: M.fresnelZone, range: [0, 2], args: cartesian(GRIDS.cos) },
   { name: 'ndfGGX', chunk: 'ndf.glsl', glsl: 'ndfGGX(a.x, a.y)', outputs: 1, js: M.ndfGGX, range: [0, Infinity], args: cartesian(GRIDS.cos, GRIDS.alpha) },
   { name: 'ndfBeckmann', chunk: 'ndf.glsl', glsl: 'ndfBeckmann(a.x, a.y)', outputs: 1, js: M.ndfBeckmann, range: [0, Infinity], args: cartesian(GRIDS.cos, GRIDS.alpha) },

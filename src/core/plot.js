@@ -59,7 +59,7 @@ const decades = (u, axisIdx, min, max) => {
 const axis = (label, extra = {}) => ({ label, labelSize: 22, size: 48, stroke: '#333', grid: { stroke: '#0000001a' }, ...extra });
 
 /**
- * spec: { title, xLabel, yLabel, x: { min, max }, y: { min, max, log } | null (auto), series: [{ label, stroke, dash, width }],
+ * spec: { title, xLabel, yLabel, x: { min, max, log }, y: { min, max, log } | null (auto), series: [{ label, stroke, dash, width }],
  *         data: [xs, ...ys], bands: [...], annotations: [...], filename, legend = true }
  * options.onCursor(index | null): the data index under the pointer, for a readout of the page's own.
  * Returns { setData(spec), dispose() }; setData rebuilds when the series change.
@@ -83,12 +83,12 @@ export function createPlot(container, spec, { onCursor } = {}) {
     const opts = {
       ...size(),
       scales: {
-        x: { time: false, range: [current.x.min, current.x.max] },
+        x: current.x.log ? { time: false, distr: 3, log: 10, range: [current.x.min, current.x.max] } : { time: false, range: [current.x.min, current.x.max] },
         y: current.y?.log ? { distr: 3, log: 10, range: [current.y.min, current.y.max] } : current.y ? { range: [current.y.min, current.y.max] } : { auto: true },
       },
       // on log axes uPlot hands null for the ticks it leaves unlabelled for room
       axes: [
-        axis(current.xLabel, { values: current.xValues }),
+        axis(current.xLabel, current.x.log ? { splits: decades, values: current.xValues } : { values: current.xValues }),
         axis(current.yLabel, current.y?.log ? { splits: decades, values: (u, ticks) => ticks.map((t) => (t == null ? '' : `1e${Math.round(Math.log10(t))}`)), size: 56 } : {}),
       ],
       series: [{ label: current.xLabel, value: (_, v) => (v == null ? '—' : v.toFixed(1)) }, ...current.series.map((s) => ({

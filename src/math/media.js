@@ -71,3 +71,13 @@ export function randomWalk2D({ sigmaS, thickness = Infinity, entryAngle = 0, ran
 
 /** An entry angle for light falling evenly on a 2-D surface from all directions: density cos(theta)/2. */
 export const lambertianEntryAngle2D = (rand) => Math.asin(2 * rand() - 1);
+
+/**
+ * Whole milk, Jensen, Marschner, Levoy & Hanrahan, "A Practical Model for Subsurface Light Transport",
+ * SIGGRAPH 2001 (Table 2): reduced scattering and absorption coefficients per RGB channel, converted to 1/m.
+ */
+export const WHOLE_MILK = {
+  source: 'Jensen et al., SIGGRAPH 2001 (whole milk)',
+  sigmaS: [2550, 3210, 3770],
+  sigmaA: [1.1, 2.4, 14],
+};

@@ -15,6 +15,11 @@ export const WIDGETS = {
     summary: 'Normal-incidence reflectance of metals and non-metals, linear and sRGB, with swatches.',
     load: () => import('./f0-tables/f0-tables.js'),
   },
+  media: {
+    title: 'Light in media',
+    summary: 'Absorption by Beer–Lambert over millimetres to 100 m, scattering from cloudy to opaque, the talk’s grid of glasses.',
+    load: () => import('./media/media.js'),
+  },
   surfaces: {
     title: 'Surfaces',
     summary: 'A flat interface (reflection, refraction, metals vs non-metals), a rough one’s reflection cone, blurrier reflections.',

@@ -14,6 +14,8 @@ const SHOTS = [
   ['f0-tables', 'embed.html?w=f0-tables'],
   ['bad-url', 'embed.html?w=fresnel-zones&mode=banana&lightTheta=400&alpha=x'],
   ['parity', 'parity.html', { fullPage: true }],
+  ['media-page', 'media.html?media.distance=1.3', { fullPage: true }],
+  ['media-grid', 'embed.html?w=media&view=grid&samples=16'],
   ['surfaces-page', 'surfaces.html', { fullPage: true }],
   ['brdf-page', 'brdf.html', { fullPage: true }],
   ['brdf-lobe-compare', 'embed.html?w=brdf-lobe&compare=1&cosine=1&lightTheta=60&viewTheta=20'],

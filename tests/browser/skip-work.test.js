@@ -10,7 +10,7 @@ afterAll(async () => {
   await browser?.close();
 });
 
-const PAGES = ['index.html', 'surfaces.html', 'brdf.html', 'microfacets.html', 'fresnel.html', 'ndf.html', 'visibility.html', 'performance.html', 'parity.html'];
+const PAGES = ['index.html', 'media.html', 'surfaces.html', 'brdf.html', 'microfacets.html', 'fresnel.html', 'ndf.html', 'visibility.html', 'performance.html', 'parity.html'];
 const draws = (page) => page.evaluate(() => window.__drawCalls);
 
 /** Scroll through the page so every view gets its first frame, then let it settle. */
@@ -21,6 +21,11 @@ async function visitAll(page) {
     await settle(page, 300);
   }
   await settle(page, 1500);
+  // progressive views (the media path tracer) run until their sample count is reached, then stop
+  await page.waitForFunction(
+    () => Object.values(globalThis.__shadingLab?.widgets ?? {}).every((w) => !w.getProgress || w.getProgress().frame >= w.getProgress().target),
+    { timeout: 120_000, polling: 250 },
+  );
 }
 
 describe('idle pages draw nothing', () => {
