@@ -21,6 +21,8 @@ describe('pages load cleanly', () => {
       else await settle(page, 1500);
       expect(await page.$('h1, .widget')).not.toBeNull();
       if (path.includes('zones') || path === 'fresnel.html') {
+        await page.$eval(CANVAS, (el) => el.scrollIntoView()); // out of view it draws nothing, by design
+        await settle(page, 800);
         expect(await distinctColors(page, await shot(page, CANVAS))).toBeGreaterThan(20);
       }
       expect(page.errors).toEqual([]);
