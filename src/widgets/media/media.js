@@ -32,7 +32,7 @@ const ABOUT =
   'centimetres but its small absorption of red adds up: over tens of metres only blue-green is left. A strong ' +
   'absorber colours light at once. Scattering does something else: it turns light aside, so the glass first ' +
   'looks cloudy and then, when scattering is strong and absorption weak (milk), opaque and white. The grid sets ' +
-  'absorption (down) against scattering (across), as in the talk. The picture is path traced on the GPU and ' +
+  'absorption (upwards) against scattering (across), as in the talk, milk at the lower right. The picture is path traced on the GPU and ' +
   'refines for a moment after each change.';
 
 const TERMS_USED = ['transmittance'];

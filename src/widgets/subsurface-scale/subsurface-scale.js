@@ -22,7 +22,7 @@ const ABOUT =
   'out where it went in: shading stays local and a diffuse term is enough. Shrink the sample, or lower the ' +
   'scattering, and more of the light leaves outside it: then subsurface scattering has to be rendered.';
 
-const TERMS_USED = ['transmittance', 'randomWalk2D', 'scatteringAlbedo'];
+const TERMS_USED = []; // JS only (src/math/media.js): nothing here runs on the GPU
 const STATS_WALKS = 20000;
 const MAX_EVENTS = 2000;
 const LOCAL_SHARE = 0.9; // "local" when this share of the re-emerging light exits inside the sample
