@@ -82,6 +82,8 @@ export const STRESS_DOMAINS = {
   reflect: { pairs: PAIRS, range: [-1, 1] },
   microfacetBRDF: { pairs: PAIRS, params: BRDF_PARAMS, range: NON_NEGATIVE },
   microfacetTerms: { pairs: PAIRS, params: BRDF_PARAMS, pick: ['F', 'D', 'V', 'G'], range: NON_NEGATIVE },
+  microfacetTermsAt: { tuples: COS.flatMap((c) => BRDF_PARAMS.slice(0, 40).map((p) => [{ nl: c, nv: c, nh: c, lh: c }, p])), pick: ['F', 'D', 'V', 'G'], range: NON_NEGATIVE },
+  microfacetBRDFAt: { tuples: COS.flatMap((c) => BRDF_PARAMS.map((p) => [{ nl: c, nv: 1 - c / 3, nh: c, lh: c }, p])), range: NON_NEGATIVE },
   microfacetFactors: { pairs: PAIRS, params: BRDF_PARAMS, use: { F: true, D: true, G: true, denominator: true }, range: NON_NEGATIVE },
   brdf: { pairs: PAIRS, params: BRDF_PARAMS, range: NON_NEGATIVE },
   diffuseLambert: { args: [SRGB], range: [0, 1 / Math.PI] },

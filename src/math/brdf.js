@@ -61,12 +61,25 @@ export function brdfAngles(l, v) {
  * params: { F, D, V } term names, plus the material and distribution parameters they read.
  */
 export function microfacetTerms(l, v, params) {
-  const a = brdfAngles(l, v);
-  if (!(a.nl > 0 && a.nv > 0) || !a.h) return { F: 0, D: 0, V: 0, G: 0, angles: a };
+  return microfacetTermsAt(brdfAngles(l, v), params);
+}
+
+/**
+ * The same from the cosines alone ({ nl, nv, nh, lh }, as a probe reads them at a surface point); with h
+ * given too, D takes sin²θh from it (precise near the mirror direction).
+ */
+export function microfacetTermsAt(a, params) {
+  if (!(a.nl > 0 && a.nv > 0) || a.h === null) return { F: 0, D: 0, V: 0, G: 0, angles: a };
   const F = FRESNEL_TERMS[params.F](a.lh, params);
-  const D = NDF_TERMS[params.D](a.nh, params, a.h[0] * a.h[0] + a.h[1] * a.h[1]);
+  const D = NDF_TERMS[params.D](a.nh, params, a.h ? a.h[0] * a.h[0] + a.h[1] * a.h[1] : undefined);
   const V = VISIBILITY_TERMS[params.V](a, params);
   return { F, D, V, G: V * a.nl * a.nv, angles: a };
+}
+
+/** f = F D V / 4 from the cosines (see microfacetTermsAt). */
+export function microfacetBRDFAt(a, params) {
+  const t = microfacetTermsAt(a, params);
+  return (t.F * t.D * t.V) / 4;
 }
 
 /** f(l, v) = F D V / 4, in 1/sr. */

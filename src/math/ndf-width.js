@@ -1,7 +1,7 @@
 // Putting NDFs side by side at the same width. The width of a distribution here is its half width at half
 // maximum (HWHM): the angle theta_h at which D falls to half of D(n). Each NDF's width parameter is solved
 // for by bisection so that all five share one HWHM; the shape parameters (ABC's a2, SGD's p) stay as chosen.
-import { ndfABC, ndfBeckmann, ndfBlinnPhong, ndfGGX, ndfSGD } from './ndf.js';
+import { ndfABC, ndfBeckmann, ndfGGX, ndfSGD } from './ndf.js';
 
 const DEG = Math.PI / 180;
 

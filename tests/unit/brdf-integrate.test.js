@@ -17,6 +17,13 @@ describe('microfacet BRDF', () => {
       }
     }
   });
+  it('gives the same value from the cosines alone (as a probe reads them) as from the vectors', async () => {
+    const { microfacetBRDFAt, brdfAngles } = await import('../../src/math/brdf.js');
+    for (const [l, v] of [[dir(0.3, 0), dir(1.1, 2)], [dir(1.4, 1), dir(0.2, -1)]]) {
+      const { h, ...cosines } = brdfAngles(l, v);
+      expect(microfacetBRDFAt(cosines, base)).toBeCloseTo(microfacetBRDF(l, v, base), 9);
+    }
+  });
   it('is 0 below the horizon and for l = -v, and never NaN, Inf or negative', () => {
     expect(microfacetBRDF(dir(2, 0), dir(0.3, 0), base)).toBe(0);
     expect(microfacetBRDF([0, 0, 1], [0, 0, -1], base)).toBe(0);

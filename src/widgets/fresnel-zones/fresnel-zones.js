@@ -15,6 +15,7 @@ import { CONDUCTOR_MODELS, METALS, NON_METALS, fresnelParams, materialByKey } fr
 import { fresnelConductor, fresnelDielectric, fresnelSchlick } from '../../math/fresnel.js';
 import { ndfGGX } from '../../math/ndf.js';
 import { visibilitySmithGGXCorrelated } from '../../math/visibility.js';
+import { microfacetBRDFAt, punctualRadiance } from '../../math/brdf.js';
 import { fresnelZone, sphereZoneFractions } from '../../math/zones.js';
 import { srgbToLinear } from '../../math/color.js';
 import { SHAPES, createShapeGeometry } from './shapes.js';
@@ -242,7 +243,7 @@ export function createFresnelZones(container, initialState = {}, { onStateChange
       ['zone of n·v / l·h', `${zoneOf(a.nv)} / ${zoneOf(a.lh)}`],
       ['D GGX(n·h)', ndfGGX(a.nh, s.alpha).toPrecision(4)],
       ['V Smith corr.', visibilitySmithGGXCorrelated(a.nl, a.nv, s.alpha).toPrecision(4)],
-      ['π·D·V/4·(n·l)', ((Math.PI * ndfGGX(a.nh, s.alpha) * visibilitySmithGGXCorrelated(a.nl, a.nv, s.alpha)) / 4 * Math.max(a.nl, 0)).toPrecision(4)],
+      ['π·D·V/4·(n·l)', punctualRadiance(microfacetBRDFAt(a, { F: 'one', D: 'ggx', V: 'smithGGXCorrelated', alpha: s.alpha }), a.nl, 1).toPrecision(4)],
     ];
   };
 

@@ -5,7 +5,7 @@ import { createPlot } from '../../core/plot.js';
 import { createSphereGrid } from '../../core/sphere-grid.js';
 import { SERIES_COLORS } from '../../core/palettes.js';
 import { lightDirFromAngles } from '../../core/light-control.js';
-import { NDF_TERMS } from '../../math/brdf.js';
+import { NDF_TERMS, microfacetBRDFAt, punctualRadiance } from '../../math/brdf.js';
 import { matchNdfWidths } from '../../math/ndf-width.js';
 import { ndfProjectedIntegral } from '../../math/integrate.js';
 
@@ -106,7 +106,10 @@ export function createNdfExplorer(container, initialState = {}, { onStateChange 
       label: c.label.split(' (')[0],
       defines: { [NDFS[c.key].define]: true, VIS_IMPLICIT: true, F_ONE: true },
       uniforms: { uLightDir: l, uExposure: s.exposure, uAlpha: c.p.alpha ?? 0.3, uExponent: c.p.exponent ?? 1, uA1: c.p.a1 ?? 1, uA2: c.p.a2 ?? 1, uSgdP: c.p.p ?? 0 },
-      probe: (a) => [['D(n·h)', `${NDF_TERMS[c.key](a.nh, c.p).toPrecision(4)} /sr`], ['radiance π·D/4·(n·l)', (Math.PI * NDF_TERMS[c.key](a.nh, c.p) / 4 * Math.max(a.nl, 0)).toPrecision(4)]],
+      probe: (a) => [
+        ['D(n·h)', `${NDF_TERMS[c.key](a.nh, c.p).toPrecision(4)} /sr`],
+        ['radiance π·D/4·(n·l)', punctualRadiance(microfacetBRDFAt(a, { F: 'one', D: c.key, V: 'implicit', ...c.p }), a.nl, 1).toPrecision(4)],
+      ],
     })));
     spheres.setDescription(`Spheres lit by one small light ${s.lightTheta}° from the view, one per NDF (${data.map((c) => c.label).join(', ')}), all at a half width of ${s.hwhm}°.`);
   };
