@@ -90,6 +90,21 @@ export const PARITY_CASES = [
     args: cartesian(GRIDS.cosCoarse, GRIDS.alpha),
   },
   { name: 'diffuseLambert', chunk: 'diffuse.glsl', glsl: 'diffuseLambert(a.x)', outputs: 1, js: M.diffuseLambert, range: [0, 1 / Math.PI], args: cartesian(GRIDS.srgb) },
+  {
+    name: 'diffuseFresnelWeighted', chunk: 'diffuse.glsl', glsl: 'diffuseFresnelWeighted(a.x, a.y, a.z, a.w)', outputs: 1, js: M.diffuseFresnelWeighted,
+    range: [0, 1 / Math.PI], args: cartesian(GRIDS.cosCoarse, GRIDS.cosCoarse, [0, 0.04, 1], [0, 0.5, 1]),
+  },
+  {
+    name: 'diffuseAshikhminShirley', chunk: 'diffuse.glsl', glsl: 'diffuseAshikhminShirley(a.x, a.y, a.z, a.w)', outputs: 1, js: M.diffuseAshikhminShirley,
+    range: [0, 28 / (23 * Math.PI)], args: cartesian(GRIDS.cosCoarse, GRIDS.cosCoarse, [0, 0.04, 1], [0, 0.5, 1]),
+  },
+  ...['diffuseOrenNayar', 'diffuseOrenNayarQualitative'].map((name) => ({
+    name, chunk: 'diffuse.glsl', glsl: `${name}(a.x, a.y, a.z, a.w, 0.8)`, outputs: 1, js: (nl, nv, cp, sigma) => M[name](nl, nv, cp, sigma, Math.fround(0.8)),
+    range: [0, Infinity], args: cartesian(GRIDS.cosCoarse, GRIDS.cosCoarse, [-1, -0.5, 0, 0.5, 1], [0, 0.1, 0.3, 0.6, 1]),
+    // the full model needs the angles themselves, (4ab/pi²)², times tan up to 1e7 at cos = 1e-7: there the
+    // GPU's acos (a polynomial, ~1e-5 relative) sets the accuracy, not the formula
+    ...(name === 'diffuseOrenNayar' ? { tolerance: { atol: 1e-5, rtol: 5e-4 } } : {}),
+  })),
   { name: 'transmittance', chunk: 'media.glsl', glsl: 'transmittance(a.x, a.y)', outputs: 1, js: M.transmittance, range: [0, 1], args: cartesian([-1, 0, 1e-6, 0.3, 1, 50, 1e4], [-1, 0, 1e-3, 1, 100, 1e5]) },
   { name: 'fresnelZone', chunk: 'zones.glsl', glsl: 'fresnelZone(a.x)', outputs: 1, js: M.fresnelZone, range: [0, 2], args: cartesian(GRIDS.cos) },
   { name: 'ndfGGX', chunk: 'ndf.glsl', glsl: 'ndfGGX(a.x, a.y)', outputs: 1, js: M.ndfGGX, range: [0, Infinity], args: cartesian(GRIDS.cos, GRIDS.alpha) },

@@ -41,7 +41,7 @@ function evaluateOnGpu(renderer, testCase) {
 
 /** Compares one case; returns its summary row. */
 export function compareCase(testCase, gpu) {
-  const { atol, rtol } = TOLERANCE;
+  const { atol, rtol } = testCase.tolerance ?? TOLERANCE;
   let maxAbs = 0;
   let maxRel = 0;
   let worst = null;
@@ -63,7 +63,7 @@ export function compareCase(testCase, gpu) {
       if (Math.abs(j) > 1e-6) maxRel = Math.max(maxRel, rel);
     });
   });
-  return { name: testCase.name, count: testCase.args.length, maxAbs, maxRel, worst, failures, invalid, pass: failures === 0 && invalid === 0 };
+  return { name: testCase.name, count: testCase.args.length, maxAbs, maxRel, worst, failures, invalid, tolerance: { atol, rtol }, pass: failures === 0 && invalid === 0 };
 }
 
 export function runParity(renderer, cases) {
