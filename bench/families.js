@@ -94,6 +94,19 @@ export const FAMILIES = [
       { key: 'sgd', label: 'Shifted gamma', js: (c, m, peak) => M.ndfSGD(c, m.sgd.alpha, m.sgd.p) / peak, glsl: 'ndfSGD(x, 0.05 + 0.5 * y, 0.64)' },
     ],
   },
+  {
+    key: 'oren-nayar',
+    title: 'Oren–Nayar, against the full model',
+    domain: 'θl, θv in [0°, 85°] (5° steps) × cos φ in {−1, −0.5, 0, 0.5, 1} × σ in {0.1, 0.3, 0.6, 1} (radians), c_diff = 0.8; error in f (1/sr)',
+    errorOf: 'f',
+    inputs: range(18, 0, 85).flatMap((tl) => range(18, 0, 85).flatMap((tv) => [-1, -0.5, 0, 0.5, 1].flatMap((cp) => [0.1, 0.3, 0.6, 1].map((s) => [Math.cos(tl * DEG), Math.cos(tv * DEG), cp, s])))),
+    reference: (nl, nv, cp, s) => M.diffuseOrenNayar(nl, nv, cp, s, 0.8),
+    variants: [
+      { key: 'full', label: 'Full model (with inter-reflection)', js: (nl, nv, cp, s) => M.diffuseOrenNayar(nl, nv, cp, s, 0.8), glsl: 'diffuseOrenNayar(x, y, 0.5, 0.5, 0.8)' },
+      { key: 'qualitative', label: 'Qualitative (A + B form)', js: (nl, nv, cp, s) => M.diffuseOrenNayarQualitative(nl, nv, cp, s, 0.8), glsl: 'diffuseOrenNayarQualitative(x, y, 0.5, 0.5, 0.8)' },
+      { key: 'lambert', label: 'Lambert', js: () => M.diffuseLambert(0.8), glsl: 'diffuseLambert(0.8 * x)' },
+    ],
+  },
 ];
 
 /** max |error| (and where), and RMS, of each variant against the family's reference over its domain. */

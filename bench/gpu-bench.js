@@ -20,6 +20,7 @@ void main() { gl_Position = vec4(position, 0.0, 1.0); }`;
 function fragment(expr) {
   const body = `#include "fresnel.glsl"
 #include "visibility.glsl"
+#include "diffuse.glsl"
 out vec4 fragColor;
 void main() {
   vec2 p = gl_FragCoord.xy / ${SIZE.toFixed(1)};

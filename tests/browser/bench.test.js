@@ -12,7 +12,7 @@ const num = expect.any(Number);
 function checkShape(report) {
   expect(report).toMatchObject({ version: 1, date: expect.any(String), machine: { cpu: expect.any(String), cores: num, gpuRenderer: expect.any(String) } });
   expect(report.gpuSetup).toMatchObject({ size: num, loops: num, frames: num, baselineMsPerFrame: num });
-  expect(report.families.map((f) => f.key)).toEqual(['fresnel-dielectric', 'fresnel-conductor', 'smith-g1-beckmann', 'visibility', 'ndf']);
+  expect(report.families.map((f) => f.key)).toEqual(['fresnel-dielectric', 'fresnel-conductor', 'smith-g1-beckmann', 'visibility', 'ndf', 'oren-nayar']);
   for (const f of report.families) {
     expect(f).toMatchObject({ title: expect.any(String), domain: expect.any(String), errorOf: expect.any(String) });
     expect(f.variants.length).toBeGreaterThanOrEqual(2);
