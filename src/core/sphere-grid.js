@@ -42,8 +42,9 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
   const labels = document.createElement('div');
   labels.className = 'sphere-labels';
 
+  const drawSize = new THREE.Vector2();
   const draw = (renderer) => {
-    const size = renderer.getSize(new THREE.Vector2());
+    const size = renderer.getSize(drawSize);
     const n = Math.max(cells.length, 1);
     const w = size.x / n;
     renderer.setScissorTest(true);

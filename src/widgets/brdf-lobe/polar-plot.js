@@ -2,6 +2,8 @@
 // The light handle (left) and the view handle (right) can be dragged; n, l, v, the mirror direction and
 // the half vector of l and v are drawn. uPlot has no polar mode, hence a canvas of its own.
 
+import { sizeCanvas2d } from '../../core/canvas2d.js';
+
 const DEG = Math.PI / 180;
 const COLORS = { light: '#e6a700', view: '#0072b2', half: '#cc79a7', mirror: '#777', grid: '#0000001f', a: '#d55e00', b: '#009e73' };
 
@@ -28,12 +30,8 @@ export function createPolarPlot(container, { onDrag }) {
 
   function draw(spec) {
     last = spec;
-    const dpr = window.devicePixelRatio || 1;
+    const { ctx } = sizeCanvas2d(canvas);
     const g = geometry();
-    canvas.width = Math.round(g.w * dpr);
-    canvas.height = Math.round(g.h * dpr);
-    const ctx = canvas.getContext('2d');
-    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
     ctx.clearRect(0, 0, g.w, g.h);
     ctx.font = '11px system-ui, sans-serif';
     // grid: radius rings and angle spokes

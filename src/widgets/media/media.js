@@ -87,6 +87,8 @@ export function createMedia(container, initialState = {}, { onStateChange } = {}
     fragmentShader: assembleGlsl(SHADER_CHUNKS['media-display.frag.glsl']),
   });
 
+  const bufferSize = new THREE.Vector2(); // reused by every progressive frame
+  const traceSize = new THREE.Vector2();
   const restart = () => {
     frame = 0;
     viewport?.invalidate();
@@ -100,9 +102,9 @@ export function createMedia(container, initialState = {}, { onStateChange } = {}
       restart();
     },
     draw(renderer) {
-      const canvasSize = renderer.getDrawingBufferSize(new THREE.Vector2());
+      const canvasSize = renderer.getDrawingBufferSize(bufferSize);
       const scale = Math.min(1, TRACE_MAX_WIDTH / canvasSize.x); // long walks (milk) are costly: trace fewer pixels
-      const size = new THREE.Vector2(Math.max(1, Math.round(canvasSize.x * scale)), Math.max(1, Math.round(canvasSize.y * scale)));
+      const size = traceSize.set(Math.max(1, Math.round(canvasSize.x * scale)), Math.max(1, Math.round(canvasSize.y * scale)));
       if (!targets) {
         targets = [floatTarget(size.x, size.y), floatTarget(size.x, size.y)];
         targets.forEach((t) => {

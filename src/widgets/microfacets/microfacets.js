@@ -3,6 +3,7 @@
 // and the measured share of shadowed microfacets against Smith's G1.
 import { createWidgetShell } from '../../core/widget-shell.js';
 import { createPlot } from '../../core/plot.js';
+import { sizeCanvas2d } from '../../core/canvas2d.js';
 import { castUp, generateProfile, heightBounds, intersectProfile, measuredG1, segmentNormal } from '../../math/microsurface.js';
 import { smithG1Beckmann, smithG1GGX } from '../../math/visibility.js';
 import { reflect } from '../../math/integrate.js';
@@ -88,13 +89,7 @@ export function createMicrofacets(container, initialState = {}, { onStateChange 
 
   function draw() {
     const s = shell.state;
-    const dpr = window.devicePixelRatio || 1;
-    const w = canvas.clientWidth;
-    const hgt = canvas.clientHeight;
-    canvas.width = Math.round(w * dpr);
-    canvas.height = Math.round(hgt * dpr);
-    const ctx = canvas.getContext('2d');
-    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    const { ctx, w, h: hgt } = sizeCanvas2d(canvas);
     ctx.fillStyle = '#f7f7f5';
     ctx.fillRect(0, 0, w, hgt);
     const x0 = Math.floor(PROFILE / 2 - WINDOW / 2);

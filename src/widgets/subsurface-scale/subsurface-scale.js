@@ -3,6 +3,7 @@
 // shows when that distance can be ignored (the pixel is large: diffuse shading is local) and when not.
 import { createWidgetShell } from '../../core/widget-shell.js';
 import { createPlot } from '../../core/plot.js';
+import { sizeCanvas2d } from '../../core/canvas2d.js';
 import { withAlpha } from '../../core/palettes.js';
 import { meanFreePath, randomWalk2D, scatteringAlbedo } from '../../math/media.js';
 import { seededRandom } from '../../math/microsurface.js';
@@ -86,13 +87,7 @@ export function createSubsurfaceScale(container, initialState = {}, { onStateCha
 
   function draw() {
     const s = shell.state;
-    const dpr = window.devicePixelRatio || 1;
-    const w = canvas.clientWidth;
-    const h = canvas.clientHeight;
-    canvas.width = Math.round(w * dpr);
-    canvas.height = Math.round(h * dpr);
-    const ctx = canvas.getContext('2d');
-    ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+    const { ctx, w, h } = sizeCanvas2d(canvas);
     const surfaceY = h * 0.32;
     const span = Math.max(s.pixel * 2.6, stats.median * 8, 2); // mm across the canvas
     const scale = w / span;

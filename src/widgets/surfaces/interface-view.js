@@ -3,18 +3,13 @@
 // scatters it, and some comes back out.
 import { randomWalk2D } from '../../math/media.js';
 import { seededRandom } from '../../math/microsurface.js';
+import { sizeCanvas2d } from '../../core/canvas2d.js';
 
 const DEG = Math.PI / 180;
 
 /** spec: { theta (deg), F (reflected share), etaRefr (real index for Snell), metal, depthNm (metals), name } */
 export function drawInterface(canvas, spec) {
-  const dpr = window.devicePixelRatio || 1;
-  const w = canvas.clientWidth;
-  const h = canvas.clientHeight;
-  canvas.width = Math.round(w * dpr);
-  canvas.height = Math.round(h * dpr);
-  const ctx = canvas.getContext('2d');
-  ctx.setTransform(dpr, 0, 0, dpr, 0, 0);
+  const { ctx, w, h } = sizeCanvas2d(canvas);
   const y0 = h * 0.45;
   const cx = w / 2;
   const L = Math.min(w * 0.42, y0 * 0.95);

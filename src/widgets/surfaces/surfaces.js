@@ -80,6 +80,7 @@ export function createSurfaces(container, initialState = {}, { onStateChange } =
   const mesh = new THREE.Mesh(geometry);
   scene.add(mesh);
   let pmrem = null;
+  const drawSize = new THREE.Vector2();
   const viewport = createViewport(shell.view, {
     label: `Four metal spheres reflecting a room, roughness ${SPHERE_ROUGHNESS.join(', ')}`,
     draw(renderer) {
@@ -90,7 +91,7 @@ export function createSurfaces(container, initialState = {}, { onStateChange } =
         scene.environment = pmrem.texture;
         scene.background = new THREE.Color('#2a2d33');
       }
-      const size = renderer.getSize(new THREE.Vector2());
+      const size = renderer.getSize(drawSize);
       const w = size.x / materials.length;
       renderer.setScissorTest(true);
       materials.forEach((m, i) => {
