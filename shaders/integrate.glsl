@@ -35,3 +35,35 @@ float albedoGGX(float mu, float alpha, int n) {
   }
   return min(sum / float(n), 1.0);
 }
+
+// The split-sum DFG term: (scale, bias) with ∫ f (n·l) dω = F0·scale + bias, mirrors dfgSplitSum.
+vec2 dfgSplitSum(float mu, float alpha, int n) {
+  float m0 = clamp(mu, 1e-6, 1.0);
+  vec3 v = vec3(sqrt(max(sin2FromCos(m0), 0.0)), 0.0, m0);
+  vec2 sum = vec2(0.0);
+  for (int i = 0; i < n; i++) {
+    vec3 m = sampleGGXNormal(hammersley(i, n), alpha);
+    float vm = dot(v, m);
+    if (vm <= 0.0) continue;
+    vec3 l = 2.0 * vm * m - v;
+    if (l.z <= 0.0) continue;
+    float w = visibilitySmithGGXCorrelated(l.z, v.z, alpha) * l.z * vm / m.z;
+    float fc = pow(1.0 - vm, 5.0);
+    sum += vec2(1.0 - fc, fc) * w;
+  }
+  sum /= float(n);
+  return sum / max(sum.x + sum.y, 1.0);
+}
+
+vec3 sampleCosine(vec2 u) {
+  float r = sqrt(u.x);
+  float phi = 2.0 * PI * u.y;
+  return vec3(r * cos(phi), r * sin(phi), sqrt(max(1.0 - u.x, 0.0)));
+}
+
+vec3 sampleCone(vec2 u, float cosMax) {
+  float c = 1.0 - u.x * (1.0 - cosMax);
+  float s = sqrt(max(sin2FromCos(c), 0.0));
+  float phi = 2.0 * PI * u.y;
+  return vec3(s * cos(phi), s * sin(phi), c);
+}

@@ -29,6 +29,10 @@ export const GRIDS = {
  */
 export const TOLERANCE = { atol: 1e-5, rtol: 1e-4 };
 
+const unitDir = (x, y, z) => [x, y, z].map((c) => Math.fround(c / Math.hypot(x, y, z)));
+// unit directions for the sphere light: along n, grazing, and two oblique ones (the ray meets the light or not)
+const LIGHT_DIRS = [[0, 0, 1], [1, 0, 1e-4], [0.6, 0, 0.8], [-0.3, 0.4, 0.866]].map((d) => unitDir(...d));
+
 const cartesian = (...lists) => lists.reduce((acc, list) => acc.flatMap((a) => list.map((x) => [...a, x])), [[]]);
 
 /** { name, chunk, glsl (expression over a.xyzw), outputs, js(...args) -> number | number[], range, args } */
@@ -89,6 +93,22 @@ export const PARITY_CASES = [
     range: [0, 1],
     args: cartesian(GRIDS.cosCoarse, GRIDS.alpha),
   },
+  {
+    name: 'dfgSplitSum (256 samples)', chunk: 'integrate.glsl', glsl: 'dfgSplitSum(a.x, a.y, 256)', outputs: 2,
+    js: (mu, alpha) => M.dfgSplitSum(mu, alpha, 256), range: [0, 1], args: cartesian(GRIDS.cosCoarse, GRIDS.alpha),
+  },
+  { name: 'sampleCosine', chunk: 'integrate.glsl', glsl: 'sampleCosine(a.xy)', outputs: 3, js: M.sampleCosine, range: [-1, 1], args: cartesian([0, 1e-6, 0.3, 0.999, 1], [0, 0.25, 0.7]) },
+  {
+    name: 'sampleCone', chunk: 'integrate.glsl', glsl: 'sampleCone(a.xy, a.z)', outputs: 3, js: M.sampleCone, range: [-1, 1],
+    args: cartesian([0, 0.3, 1], [0, 0.25, 0.7], [-1, 0, 0.9, 0.99999, 1]),
+  },
+  { name: 'sphereLightCLight', chunk: 'lighting.glsl', glsl: 'sphereLightCLight(a.x, a.y)', outputs: 1, js: M.sphereLightCLight, range: [0, Infinity], args: cartesian([0, 1, 500], [0, 1e-4, 0.035, 0.5, 1]) },
+  {
+    name: 'sphereLightRepresentativeDir', chunk: 'lighting.glsl', glsl: 'sphereLightRepresentativeDir(a.xyz, b.xyz, b.w)', outputs: 3,
+    js: (rx, ry, rz, _, dx, dy, dz, s) => M.sphereLightRepresentativeDir([rx, ry, rz], [dx, dy, dz], s), range: [-1, 1],
+    args: cartesian(LIGHT_DIRS, LIGHT_DIRS, [0, 1e-4, 0.05, 0.5]).map(([r, d, s]) => [...r, 0, ...d, s]),
+  },
+  { name: 'sphereLightNormalization', chunk: 'lighting.glsl', glsl: 'sphereLightNormalization(a.x, a.y)', outputs: 1, js: M.sphereLightNormalization, range: [0, 1], args: cartesian(GRIDS.alpha, [0, 1e-4, 0.05, 0.5, 1]) },
   { name: 'diffuseLambert', chunk: 'diffuse.glsl', glsl: 'diffuseLambert(a.x)', outputs: 1, js: M.diffuseLambert, range: [0, 1 / Math.PI], args: cartesian(GRIDS.srgb) },
   {
     name: 'diffuseFresnelWeighted', chunk: 'diffuse.glsl', glsl: 'diffuseFresnelWeighted(a.x, a.y, a.z, a.w)', outputs: 1, js: M.diffuseFresnelWeighted,

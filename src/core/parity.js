@@ -20,7 +20,7 @@ function evaluateOnGpu(renderer, testCase) {
     return t;
   };
   const [input, input2] = [texture(0), texture(4)];
-  const wrap = testCase.outputs === 1 ? `vec4(${testCase.glsl}, 0.0, 0.0, 0.0)` : `vec4(${testCase.glsl}, 0.0)`;
+  const wrap = `vec4(${testCase.glsl}${', 0.0'.repeat(4 - testCase.outputs)})`; // pad to vec4
   const material = new THREE.ShaderMaterial({
     glslVersion: THREE.GLSL3,
     uniforms: { uArgs: { value: input }, uArgs2: { value: input2 } },

@@ -14,3 +14,4 @@ export * from './half-diff.js';
 export * from './diffuse.js';
 export * from './media.js';
 export * from './microsurface.js';
+export * from './lighting.js';

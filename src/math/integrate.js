@@ -116,3 +116,42 @@ export function averageAlbedo(E, n = 64) {
   }
   return (2 * sum) / n;
 }
+
+/**
+ * The split-sum DFG term (Karis 2013) for GGX, height-correlated Smith and Schlick's F:
+ * ∫ f(l, v)(n·l) dω = F0·scale + bias, since F = F0 (1 - Fc) + Fc with Fc = (1 - v·h)^5.
+ * The same estimator as albedoGGX, split by (1 - Fc) and Fc. scale + bias = albedoGGX(mu, alpha) (both capped at 1).
+ */
+export function dfgSplitSum(mu, alpha, n = 1024) {
+  const v = directionFromCos(Math.min(Math.max(mu, 1e-6), 1));
+  let scale = 0;
+  let bias = 0;
+  for (let i = 0; i < n; i++) {
+    const m = sampleGGXNormal(...hammersley(i, n), alpha);
+    const vm = v[0] * m[0] + v[2] * m[2];
+    if (vm <= 0) continue;
+    const l = reflect(v, m);
+    if (l[2] <= 0) continue;
+    const w = (visibilitySmithGGXCorrelated(l[2], v[2], alpha) * l[2] * vm) / m[2];
+    const fc = (1 - vm) ** 5;
+    scale += (1 - fc) * w;
+    bias += fc * w;
+  }
+  const total = Math.max((scale + bias) / n, 1); // few samples at grazing can overshoot: keep the sum an albedo
+  return [scale / n / total, bias / n / total];
+}
+
+/** A cosine-distributed direction for (u1, u2): pdf (n·l)/π, so a Lambert estimate is cdiff·L per sample. */
+export function sampleCosine(u1, u2) {
+  const r = Math.sqrt(u1);
+  const phi = 2 * Math.PI * u2;
+  return [r * Math.cos(phi), r * Math.sin(phi), Math.sqrt(Math.max(1 - u1, 0))];
+}
+
+/** A direction spread uniformly over the cone of half-angle acos(cosMax) around z: pdf 1/(2π(1 - cosMax)). */
+export function sampleCone(u1, u2, cosMax) {
+  const c = 1 - u1 * (1 - cosMax);
+  const s = Math.sqrt(Math.max((1 - c) * (1 + c), 0));
+  const phi = 2 * Math.PI * u2;
+  return [s * Math.cos(phi), s * Math.sin(phi), c];
+}
