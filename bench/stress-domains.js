@@ -102,6 +102,8 @@ export const STRESS_DOMAINS = {
   sampleCone: { args: [[0, 0.5, 1], [0, 0.5, 1], [-1, 0, 0.9999, 1]], range: [-1, 1] },
   sphereLightCLight: { args: [[0, 1, 1e4], [0, 1e-4, 0.05, 1]], range: NON_NEGATIVE },
   sphereLightRepresentativeDir: { tuples: PAIRS.flatMap(([r, d]) => [0, 1e-4, 0.05, 1].map((s) => [r, d, s])), range: [-1, 1] },
+  equirectUv: { tuples: DIRS.map((d) => [d]), range: ZERO_TO_ONE },
+  equirectDirection: { args: [[0, 0.25, 1], [0, 0.5, 1]], range: [-1, 1] },
   sphereLightNormalization: { args: [ALPHA, [0, 1e-4, 0.05, 1]], range: ZERO_TO_ONE },
   transmittance: { args: [[-1, 0, 1e-9, 0.3, 1e3], [-1, 0, 1, 1e6]], range: ZERO_TO_ONE },
   opticalDepth: { args: [[-1, 0, 0.3, 1e3], [-1, 0, 1, 1e6]], range: NON_NEGATIVE },

@@ -44,18 +44,21 @@ float visibilityTerm(float nl, float nv, float nh, float lh, float alpha) {
 #endif
 }
 
-float microfacetBRDF(vec3 l, vec3 v, float alpha, float f0) {
+// RGB F0 (a metal's colour): D and V once, F per channel.
+vec3 microfacetBRDF(vec3 l, vec3 v, float alpha, vec3 f0) {
   float nl = l.z;
   float nv = v.z;
   vec3 hs = l + v;
   float hl = length(hs);
-  if (!(nl > 0.0 && nv > 0.0) || hl < 1e-6) return 0.0;
+  if (!(nl > 0.0 && nv > 0.0) || hl < 1e-6) return vec3(0.0);
   vec3 h = hs / hl;
   float lh = dot(l, h);
 #ifdef F_ONE
-  float F = 1.0;
+  vec3 F = vec3(1.0);
 #else
-  float F = fresnelSchlick(f0, lh);
+  vec3 F = fresnelSchlick(f0, lh);
 #endif
-  return F * ndfTerm(h.z, dot(h.xy, h.xy), alpha) * visibilityTerm(nl, nv, h.z, lh, alpha) / 4.0;
+  return F * (ndfTerm(h.z, dot(h.xy, h.xy), alpha) * visibilityTerm(nl, nv, h.z, lh, alpha) / 4.0);
 }
+
+float microfacetBRDF(vec3 l, vec3 v, float alpha, float f0) { return microfacetBRDF(l, v, alpha, vec3(f0)).x; }

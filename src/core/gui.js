@@ -27,7 +27,9 @@ export function createStateGui(container, { schema, state, onChange, title = 'Co
         ? gui.add(model, key, f.min, f.max, f.step)
         : f.type === 'enum'
           ? gui.add(model, key, Object.fromEntries(Object.entries(f.options).map(([v, l]) => [l, v])))
-          : gui.add(model, key);
+          : f.type === 'color'
+            ? gui.addColor(model, key)
+            : gui.add(model, key);
     ctrl.name(labelOf(key, f)).onChange((v) => onChange({ [key]: v }));
     if (f.hint) ctrl.domElement.title = f.hint;
   }

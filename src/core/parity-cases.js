@@ -109,6 +109,12 @@ export const PARITY_CASES = [
     args: cartesian(LIGHT_DIRS, LIGHT_DIRS, [0, 1e-4, 0.05, 0.5]).map(([r, d, s]) => [...r, 0, ...d, s]),
   },
   { name: 'sphereLightNormalization', chunk: 'lighting.glsl', glsl: 'sphereLightNormalization(a.x, a.y)', outputs: 1, js: M.sphereLightNormalization, range: [0, 1], args: cartesian(GRIDS.alpha, [0, 1e-4, 0.05, 0.5, 1]) },
+  {
+    name: 'equirectUv', chunk: 'env.glsl', glsl: 'equirectUv(a.xyz)', outputs: 2, js: (x, y, z) => M.equirectUv([x, y, z]), range: [0, 1],
+    // away from the seam at u = 0 / 1 (atan2 of ±0), where both sides are right
+    args: [[0, 1, 0], [0, -1, 0], [1, 0, 0], [0, 0, 1], [0, 0, -1], [0.6, 0.8, 0], [-0.48, 0.6, 0.64], [0.3, -0.9, -0.3162]].map((d) => unitDir(...d)),
+  },
+  { name: 'equirectDirection', chunk: 'env.glsl', glsl: 'equirectDirection(a.xy)', outputs: 3, js: M.equirectDirection, range: [-1, 1], args: cartesian([0, 0.1, 0.5, 0.77, 1], [0, 0.2, 0.5, 0.9, 1]) },
   { name: 'diffuseLambert', chunk: 'diffuse.glsl', glsl: 'diffuseLambert(a.x)', outputs: 1, js: M.diffuseLambert, range: [0, 1 / Math.PI], args: cartesian(GRIDS.srgb) },
   {
     name: 'diffuseFresnelWeighted', chunk: 'diffuse.glsl', glsl: 'diffuseFresnelWeighted(a.x, a.y, a.z, a.w)', outputs: 1, js: M.diffuseFresnelWeighted,

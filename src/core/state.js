@@ -7,6 +7,7 @@
 //              { type: 'enum', options: { value: label }, default, label }
 //              { type: 'bool', default, label }
 //              { type: 'set', options: { value: label }, default: [values], label }  (URL: comma list)
+//              { type: 'color', default: '#rrggbb', label }  (sRGB hex; the URL may drop the '#')
 
 export function defaultState(schema) {
   return Object.fromEntries(
@@ -43,6 +44,10 @@ function coerceField(key, f, raw, fallback) {
       return unknown.length
         ? { value: known, notice: `${f.label ?? key}: ignored unknown ${unknown.map(fmt).join(', ')}.` }
         : { value: known };
+    }
+    case 'color': {
+      const hex = typeof raw === 'string' ? raw.trim().replace(/^#?/, '#').toLowerCase() : '';
+      return /^#[0-9a-f]{6}$/.test(hex) ? { value: hex } : bad(`${fmt(raw)} is not a colour like #rrggbb`);
     }
     default:
       throw new Error(`state: unknown field type ${f.type}`);

@@ -34,3 +34,19 @@ export function sphereLightNormalization(alpha, sinRadius) {
   const widened = Math.min(alpha + sinRadius / 2, 1);
   return widened > 0 ? Math.min((alpha / widened) ** 2, 1) : 1;
 }
+
+/**
+ * The equirectangular map of directions (y up), as three.js lays out environment maps: u = atan2(z, x)/2π + ½,
+ * v = asin(y)/π + ½ (v = 1 at the zenith).
+ */
+export function equirectUv(d) {
+  const y = Math.min(Math.max(d[1], -1), 1);
+  return [Math.atan2(d[2], d[0]) / (2 * Math.PI) + 0.5, Math.asin(y) / Math.PI + 0.5];
+}
+
+/** The direction at (u, v) of the equirectangular map: the inverse of equirectUv. */
+export function equirectDirection(u, v) {
+  const phi = (u - 0.5) * 2 * Math.PI;
+  const el = (v - 0.5) * Math.PI;
+  return [Math.cos(el) * Math.cos(phi), Math.sin(el), Math.cos(el) * Math.sin(phi)];
+}

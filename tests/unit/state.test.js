@@ -29,3 +29,17 @@ describe('widget state', () => {
     expect(stateToParams(zonesSchema, defaultState(zonesSchema)).toString()).toBe('');
   });
 });
+
+describe('colour fields', () => {
+  const schema = { tint: { type: 'color', default: '#808080', label: 'Tint' } };
+  it('take #rrggbb or rrggbb (as a URL may carry it), lower-cased, and round-trip', () => {
+    expect(coerceState(schema, { tint: 'A0B0C0' }).state.tint).toBe('#a0b0c0');
+    const { state } = coerceState(schema, { tint: '#102030' });
+    expect(coerceState(schema, paramsToObject(stateToParams(schema, state).toString())).state).toEqual(state);
+  });
+  it('keep the previous colour for anything else and say why', () => {
+    const { state, notices } = coerceState(schema, { tint: 'red' }, { tint: '#112233' });
+    expect(state.tint).toBe('#112233');
+    expect(notices[0]).toMatch(/Tint: "red" is not a colour/);
+  });
+});
