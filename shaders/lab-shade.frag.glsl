@@ -2,7 +2,8 @@
 // lights that are on. Each light is rendered by an approximation, or with REFERENCE by Monte Carlo batches
 // whose running mean converges to the reflectance equation. Alpha is the sphere mask (1 on it, 0 off it).
 // Switches: terms (brdf.glsl, DIFFUSE_*), lights (LIGHT_PUNCTUAL, LIGHT_SPHERE, LIGHT_ENV, LIGHT_AMBIENT),
-// methods (ENV_MIRROR, ENV_IMPORTANCE, ENV_SPLIT_SUM; AREA_CENTRE; else the representative point).
+// methods (ENV_MIRROR, ENV_IMPORTANCE, ENV_SPLIT_SUM; AREA_CENTRE; else the representative point), and
+// SPECULAR_OFF / DIFFUSE_OFF to see one layer alone.
 #include "brdf.glsl"
 #include "diffuse.glsl"
 #include "integrate.glsl"
@@ -27,34 +28,51 @@ uniform sampler2DArray uPrefiltered;
 uniform float uPrefilterLevels;
 uniform sampler2D uIrradiance;
 uniform sampler2D uDfg;
+uniform sampler2D uEnvMarginal;    // environment sampling tables (src/core/lab/env-sampling.js)
+uniform sampler2D uEnvConditional;
+uniform sampler2D uEnvPdf;
+uniform bool uEnvSampling;
 uniform int uSamples;
 uniform vec2 uJitter;
 uniform sampler2D uPrevious;
 uniform float uWeight;
 out vec4 fragColor;
 
+#ifdef SPECULAR_OFF
+const float specularOn = 0.0;
+#else
+const float specularOn = 1.0;
+#endif
+#ifdef DIFFUSE_OFF
+const vec3 diffuseColor = vec3(0.0);
+#else
+#define diffuseColor uDiffuseColor
+#endif
+
+vec3 specularBRDF(vec3 l, vec3 v) { return specularOn * microfacetBRDF(l, v, uAlpha, uF0); }
+
 vec3 diffuseBRDF(vec3 l, vec3 v) {
   if (l.z <= 0.0 || v.z <= 0.0) return vec3(0.0);
 #if defined(DIFFUSE_FRESNEL_WEIGHTED)
-  return vec3(diffuseFresnelWeighted(l.z, v.z, uF0.r, uDiffuseColor.r), diffuseFresnelWeighted(l.z, v.z, uF0.g, uDiffuseColor.g),
-              diffuseFresnelWeighted(l.z, v.z, uF0.b, uDiffuseColor.b));
+  return vec3(diffuseFresnelWeighted(l.z, v.z, uF0.r, diffuseColor.r), diffuseFresnelWeighted(l.z, v.z, uF0.g, diffuseColor.g),
+              diffuseFresnelWeighted(l.z, v.z, uF0.b, diffuseColor.b));
 #elif defined(DIFFUSE_ASHIKHMIN_SHIRLEY)
-  return vec3(diffuseAshikhminShirley(l.z, v.z, uF0.r, uDiffuseColor.r), diffuseAshikhminShirley(l.z, v.z, uF0.g, uDiffuseColor.g),
-              diffuseAshikhminShirley(l.z, v.z, uF0.b, uDiffuseColor.b));
+  return vec3(diffuseAshikhminShirley(l.z, v.z, uF0.r, diffuseColor.r), diffuseAshikhminShirley(l.z, v.z, uF0.g, diffuseColor.g),
+              diffuseAshikhminShirley(l.z, v.z, uF0.b, diffuseColor.b));
 #elif defined(DIFFUSE_OREN_NAYAR) || defined(DIFFUSE_OREN_NAYAR_QUALITATIVE)
   float d = sqrt(dot(l.xy, l.xy) * dot(v.xy, v.xy));
   float cosPhi = d > 1e-12 ? dot(l.xy, v.xy) / d : 0.0; // azimuth undefined along n, where the term does not need it
 #ifdef DIFFUSE_OREN_NAYAR
-  return uDiffuseColor * diffuseOrenNayar(l.z, v.z, cosPhi, uSigma, 1.0);
+  return diffuseColor * diffuseOrenNayar(l.z, v.z, cosPhi, uSigma, 1.0);
 #else
-  return uDiffuseColor * diffuseOrenNayarQualitative(l.z, v.z, cosPhi, uSigma, 1.0);
+  return diffuseColor * diffuseOrenNayarQualitative(l.z, v.z, cosPhi, uSigma, 1.0);
 #endif
 #else
-  return uDiffuseColor * diffuseLambert(1.0);
+  return diffuseColor * diffuseLambert(1.0);
 #endif
 }
 
-vec3 brdfTotal(vec3 l, vec3 v) { return microfacetBRDF(l, v, uAlpha, uF0) + diffuseBRDF(l, v); }
+vec3 brdfTotal(vec3 l, vec3 v) { return specularBRDF(l, v) + diffuseBRDF(l, v); }
 
 // The talk's punctual light: pi f c_light (n·l), n·l clamped.
 vec3 punctual(vec3 l, vec3 v, vec3 cLight) { return PI * brdfTotal(l, v) * cLight * max(l.z, 0.0); }
@@ -77,8 +95,8 @@ vec2 pixelHash(vec2 p) {
   return fract((q.xx + q.yz) * q.zy);
 }
 
-// The reflectance equation against the environment: the specular lobe by GGX importance sampling
-// (pdf D(m)(n·m)/(4 v·m)), the diffuse by cosine sampling (pdf (n·l)/pi), n samples each.
+// The reflectance equation against the environment as a renderer would sample it: the specular lobe by GGX
+// importance sampling (pdf D(m)(n·m)/(4 v·m)), the diffuse by cosine sampling (pdf (n·l)/pi), n samples each.
 vec3 environmentSampled(mat3 toWorld, vec3 v, int n, vec2 shift) {
   vec3 sum = vec3(0.0);
   for (int i = 0; i < n; i++) {
@@ -88,13 +106,75 @@ vec3 environmentSampled(mat3 toWorld, vec3 v, int n, vec2 shift) {
     vec3 l = 2.0 * vm * m - v;
     if (vm > 0.0 && l.z > 0.0) {
       float pdf = ndfGGXFromSin2(m.z, dot(m.xy, m.xy), uAlpha) * m.z / (4.0 * vm);
-      sum += microfacetBRDF(l, v, uAlpha, uF0) * l.z / max(pdf, 1e-30) * envRadiance(toWorld * l, 0.0);
+      sum += specularBRDF(l, v) * l.z / max(pdf, 1e-30) * envRadiance(toWorld * l, 0.0);
     }
     vec3 ld = sampleCosine(u);
     sum += diffuseBRDF(ld, v) * PI * envRadiance(toWorld * ld, 0.0);
   }
   return sum / float(n);
 }
+
+#ifdef REFERENCE
+// Index of the first entry >= u in row `row` of a CDF texture (binary search).
+int searchCdf(sampler2D cdf, int row, int count, float u) {
+  int lo = 0;
+  int hi = count - 1;
+  while (lo < hi) {
+    int mid = (lo + hi) / 2;
+    if (texelFetch(cdf, ivec2(mid, row), 0).r < u) lo = mid + 1;
+    else hi = mid;
+  }
+  return lo;
+}
+
+// Where u lands between the CDF's previous entry and entry k: 0..1, so the point is continuous inside a texel.
+float withinCdf(sampler2D cdf, int row, int k, float u) {
+  float prev = k > 0 ? texelFetch(cdf, ivec2(k - 1, row), 0).r : 0.0;
+  float cur = texelFetch(cdf, ivec2(k, row), 0).r;
+  return cur > prev ? clamp((u - prev) / (cur - prev), 0.0, 1.0) : 0.5;
+}
+
+vec3 sampleEnvironmentMap(vec2 u) {
+  ivec2 size = textureSize(uEnvConditional, 0);
+  int j = searchCdf(uEnvMarginal, 0, size.y, u.x);
+  float dv = withinCdf(uEnvMarginal, 0, j, u.x);
+  int i = searchCdf(uEnvConditional, j, size.x, u.y);
+  float du = withinCdf(uEnvConditional, j, i, u.y);
+  return equirectDirection(vec2((float(i) + du) / float(size.x), (float(j) + dv) / float(size.y)));
+}
+
+// Density per steradian of sampleEnvironmentMap at direction d.
+float environmentMapPdf(vec3 d) {
+  ivec2 size = textureSize(uEnvPdf, 0);
+  vec2 uv = equirectUv(d);
+  ivec2 t = min(ivec2(uv * vec2(size)), size - 1);
+  return texelFetch(uEnvPdf, t, 0).r / max(cos((uv.y - 0.5) * PI), 1e-6);
+}
+
+// One sample from each of three strategies (GGX lobe, cosine, the map's brightness), weighted by the balance
+// heuristic: each contributes f (n·l) L / (sum of the three densities at its direction).
+vec3 referenceSample(vec3 l, vec3 v, mat3 toWorld) {
+  if (l.z <= 0.0) return vec3(0.0);
+  vec3 h = normalize(l + v);
+  float vh = dot(v, h);
+  float pdf = (vh > 0.0 ? ndfGGXFromSin2(h.z, dot(h.xy, h.xy), uAlpha) * h.z / (4.0 * vh) : 0.0) + l.z / PI;
+  vec3 dWorld = toWorld * l;
+  if (uEnvSampling) pdf += environmentMapPdf(dWorld);
+  return brdfTotal(l, v) * l.z * envRadiance(dWorld, 0.0) / max(pdf, 1e-30);
+}
+
+vec3 environmentReference(mat3 toWorld, mat3 toLocal, vec3 v, int n, vec2 shift) {
+  vec3 sum = vec3(0.0);
+  for (int i = 0; i < n; i++) {
+    vec2 u = fract(hammersley(i, n) + shift);
+    vec3 m = sampleGGXNormal(u, uAlpha);
+    sum += referenceSample(2.0 * dot(v, m) * m - v, v, toWorld);
+    sum += referenceSample(sampleCosine(u.yx), v, toWorld);
+    if (uEnvSampling) sum += referenceSample(toLocal * sampleEnvironmentMap(u), v, toWorld);
+  }
+  return sum / float(n);
+}
+#endif
 
 // The sphere light by uniform samples of its cone: pdf 1/(2 pi (1 - cos theta_s)).
 vec3 sphereSampled(mat3 toLocal, vec3 v, int n, vec2 shift) {
@@ -151,13 +231,15 @@ void main() {
 #else
   vec3 cLight = sphereLightCLight(1.0, uSphereSin) * uSphereRadiance;
   vec3 lRep = sphereLightRepresentativeDir(reflect(-v, vec3(0.0, 0.0, 1.0)), d, uSphereSin);
-  Lo += PI * microfacetBRDF(lRep, v, uAlpha, uF0) * cLight * max(lRep.z, 0.0) * sphereLightNormalization(uAlpha, uSphereSin);
+  Lo += PI * specularBRDF(lRep, v) * cLight * max(lRep.z, 0.0) * sphereLightNormalization(uAlpha, uSphereSin);
   Lo += PI * diffuseBRDF(d, v) * cLight * max(d.z, 0.0);
 #endif
 #endif
 
 #if defined(LIGHT_ENV) || defined(LIGHT_AMBIENT)
-#if defined(REFERENCE) || defined(ENV_IMPORTANCE)
+#if defined(REFERENCE)
+  Lo += environmentReference(toWorld, toLocal, v, uSamples, shift);
+#elif defined(ENV_IMPORTANCE)
   Lo += environmentSampled(toWorld, v, uSamples, shift);
 #else
   vec3 rWorld = reflect(-vec3(0.0, 0.0, 1.0), n);
@@ -178,7 +260,7 @@ void main() {
   specular += uAmbient * (uF0 * abAmbient.x + abAmbient.y);
   irradiance += uAmbient;
 #endif
-  Lo += specular + uDiffuseColor * irradiance;
+  Lo += specularOn * specular + diffuseColor * irradiance;
 #endif
 #endif
 

@@ -55,6 +55,11 @@ export const WIDGETS = {
     summary: 'Directional albedo against angle for a sweep of roughness, the energy lost, and furnace spheres.',
     load: () => import('./energy/energy.js'),
   },
+  'material-lab': {
+    title: 'Material lab',
+    summary: 'A material under punctual, sphere, environment and ambient light: each approximation beside a converging Monte Carlo reference, with its error and cost.',
+    load: () => import('./material-lab/material-lab.js'),
+  },
 };
 
 export const isWidgetName = (name) => Object.hasOwn(WIDGETS, name);

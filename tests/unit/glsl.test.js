@@ -10,6 +10,14 @@ describe('GLSL assembly', () => {
     expect(resolveConditionals(src, { B: true }).split('\n')).toEqual(['b', 'notA']);
     expect(resolveConditionals(src, {}).split('\n')).toEqual(['c', 'notA']);
   });
+  it('reads || and && of defined() as the C preprocessor does, and refuses other conditions', () => {
+    const src = '#if defined(A) || defined(B) && !defined(C)\nyes\n#else\nno\n#endif';
+    expect(resolveConditionals(src, { A: 1 })).toBe('yes');
+    expect(resolveConditionals(src, { B: 1 })).toBe('yes');
+    expect(resolveConditionals(src, { B: 1, C: 1 })).toBe('no');
+    expect(resolveConditionals(src, {})).toBe('no');
+    expect(() => resolveConditionals('#if X > 1\n#endif', {})).toThrow(/only 'defined/);
+  });
   it('includes each chunk once and leaves a switched-off term out of the program', () => {
     const frag = SHADER_CHUNKS['fresnel-zones.frag.glsl'];
     const plain = assembleGlsl(frag, { defines: {} });

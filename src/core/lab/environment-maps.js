@@ -1,0 +1,163 @@
+// What image-based lighting needs on the GPU, made once per environment and kept: the environment as an
+// equirectangular half-float map with mips, its GGX-prefiltered layers and its irradiance for the split
+// sum, the DFG table computed by src/math's dfgSplitSum, and three.js's PMREM of it for comparison.
+import * as THREE from 'three';
+import { RoomEnvironment } from 'three/examples/jsm/environments/RoomEnvironment.js';
+import { assembleGlsl } from '../glsl.js';
+import { SHADER_CHUNKS } from '../shader-chunks.js';
+import { dfgSplitSum } from '../../math/integrate.js';
+import { buildEnvSampling } from './env-sampling.js';
+
+export const ENV_SIZE = [256, 128]; // coarse enough that the reference converges on small bright lights, fine enough for a mirror
+export const PREFILTER_SIZE = [128, 64];
+export const PREFILTER_LEVELS = 5; // layer k at perceptual roughness k/5, alpha = (k/5)²; level 0 is the map itself
+const IRRADIANCE_SIZE = [32, 16];
+const DFG_SIZE = 32;
+
+let dfgTable = null;
+/** The DFG table over (n·v, sqrt(alpha)) at texel centres, [scale, bias] per texel; computed once per page. */
+export function dfgTableData() {
+  if (dfgTable) return dfgTable;
+  const data = new Float32Array(DFG_SIZE * DFG_SIZE * 4);
+  for (let j = 0; j < DFG_SIZE; j++) {
+    const r = (j + 0.5) / DFG_SIZE;
+    for (let i = 0; i < DFG_SIZE; i++) {
+      const [scale, bias] = dfgSplitSum((i + 0.5) / DFG_SIZE, r * r, 256);
+      data.set([scale, bias, 0, 1], (j * DFG_SIZE + i) * 4);
+    }
+  }
+  return (dfgTable = { data, size: DFG_SIZE });
+}
+
+const halfTexture = ({ data, width, height }) => {
+  const half = new Uint16Array(data.length);
+  for (let i = 0; i < data.length; i++) half[i] = THREE.DataUtils.toHalfFloat(Math.min(data[i], 65000));
+  const t = new THREE.DataTexture(half, width, height, THREE.RGBAFormat, THREE.HalfFloatType);
+  t.minFilter = THREE.LinearFilter;
+  t.magFilter = THREE.LinearFilter;
+  t.wrapS = THREE.RepeatWrapping;
+  t.needsUpdate = true;
+  return t;
+};
+
+const halfTarget = (w, h, options = {}) => new THREE.WebGLRenderTarget(w, h, {
+  type: THREE.HalfFloatType, format: THREE.RGBAFormat, depthBuffer: false, magFilter: THREE.LinearFilter, minFilter: THREE.LinearFilter, wrapS: THREE.RepeatWrapping, ...options,
+});
+
+export function createEnvironmentMaps(renderer) {
+  const env = halfTarget(...ENV_SIZE, { minFilter: THREE.LinearMipmapLinearFilter, generateMipmaps: true });
+  const prefiltered = new THREE.WebGLArrayRenderTarget(...PREFILTER_SIZE, PREFILTER_LEVELS, {
+    type: THREE.HalfFloatType, depthBuffer: false, magFilter: THREE.LinearFilter, minFilter: THREE.LinearFilter, wrapS: THREE.RepeatWrapping,
+  });
+  const irradiance = halfTarget(...IRRADIANCE_SIZE);
+  const dfg = halfTexture({ data: dfgTableData().data, width: DFG_SIZE, height: DFG_SIZE });
+  dfg.wrapS = THREE.ClampToEdgeWrapping;
+
+  const quad = new THREE.Mesh(new THREE.PlaneGeometry(2, 2));
+  quad.frustumCulled = false;
+  const scene = new THREE.Scene().add(quad);
+  const camera = new THREE.Camera();
+  const pass = (fragment, defines, uniforms) => new THREE.ShaderMaterial({
+    glslVersion: THREE.GLSL3, uniforms, vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
+    fragmentShader: assembleGlsl(SHADER_CHUNKS[fragment], { defines }), depthTest: false, depthWrite: false,
+  });
+  const copyFlat = pass('env-copy.frag.glsl', {}, { uSource: { value: null }, uSize: { value: new THREE.Vector2(...ENV_SIZE) } });
+  const copyCube = pass('env-copy.frag.glsl', { CUBE_SOURCE: 1 }, { uSource: { value: null }, uSize: { value: new THREE.Vector2(...ENV_SIZE) } });
+  const filterUniforms = () => ({
+    uEnv: { value: env.texture }, uEnvSize: { value: new THREE.Vector2(...ENV_SIZE) }, uSize: { value: new THREE.Vector2() }, uAlpha: { value: 0 }, uSamples: { value: 64 },
+  });
+  const ggx = pass('env-prefilter.frag.glsl', {}, filterUniforms());
+  const cosine = pass('env-prefilter.frag.glsl', { IRRADIANCE: 1 }, filterUniforms());
+  const run = (material, target, layer = 0) => {
+    quad.material = material;
+    renderer.setRenderTarget(target, layer);
+    renderer.render(scene, camera);
+  };
+
+  const table = (w, h) => {
+    const t = new THREE.DataTexture(new Float32Array(w * h), w, h, THREE.RedFormat, THREE.FloatType);
+    t.minFilter = t.magFilter = THREE.NearestFilter;
+    return t;
+  };
+  const sampling = { marginal: table(ENV_SIZE[1], 1), conditional: table(...ENV_SIZE), pdf: table(...ENV_SIZE), usable: false };
+  // the reference draws directions by brightness: tables from the map as it now is on the GPU
+  const updateSampling = () => {
+    const half = new Uint16Array(ENV_SIZE[0] * ENV_SIZE[1] * 4);
+    renderer.readRenderTargetPixels(env, 0, 0, ...ENV_SIZE, half);
+    const tables = buildEnvSampling(Float32Array.from(half, THREE.DataUtils.fromHalfFloat), ...ENV_SIZE);
+    sampling.usable = Boolean(tables);
+    if (!tables) return;
+    for (const key of ['marginal', 'conditional', 'pdf']) {
+      sampling[key].image.data.set(tables[key]);
+      sampling[key].needsUpdate = true;
+    }
+  };
+
+  let pmremGenerator = null;
+  let pmrem = null;
+  let version = 0;
+
+  const prefilter = () => {
+    ggx.uniforms.uSize.value.set(...PREFILTER_SIZE);
+    for (let k = 1; k <= PREFILTER_LEVELS; k++) {
+      ggx.uniforms.uAlpha.value = (k / PREFILTER_LEVELS) ** 2;
+      run(ggx, prefiltered, k - 1);
+    }
+    cosine.uniforms.uSize.value.set(...IRRADIANCE_SIZE);
+    cosine.uniforms.uSamples.value = 256;
+    run(cosine, irradiance);
+  };
+
+  const roomCube = () => {
+    const cubeTarget = new THREE.WebGLCubeRenderTarget(256, { type: THREE.HalfFloatType });
+    const room = new RoomEnvironment();
+    new THREE.CubeCamera(0.1, 100, cubeTarget).update(renderer, room);
+    room.dispose();
+    return cubeTarget;
+  };
+
+  return {
+    env: env.texture,
+    prefiltered: prefiltered.texture,
+    irradiance: irradiance.texture,
+    dfg,
+    sampling,
+    /** Bumped whenever the maps change: views compare it to know when to redraw. */
+    get version() {
+      return version;
+    },
+    /** Replaces the environment: 'studio', or pixels { data, width, height } (sky, furnace, a user's file). */
+    load(source) {
+      const previous = renderer.getRenderTarget();
+      if (source === 'studio') {
+        const cube = roomCube();
+        copyCube.uniforms.uSource.value = cube.texture;
+        run(copyCube, env);
+        cube.dispose();
+      } else {
+        const texture = halfTexture(source);
+        copyFlat.uniforms.uSource.value = texture;
+        run(copyFlat, env);
+        texture.dispose();
+      }
+      prefilter();
+      updateSampling();
+      renderer.setRenderTarget(previous);
+      pmrem?.dispose();
+      pmrem = null;
+      version++;
+    },
+    /** three.js's PMREM of the current environment, made when first asked for. */
+    pmrem() {
+      pmremGenerator ??= new THREE.PMREMGenerator(renderer);
+      env.texture.mapping = THREE.EquirectangularReflectionMapping;
+      pmrem ??= pmremGenerator.fromEquirectangular(env.texture);
+      return pmrem.texture;
+    },
+    dispose() {
+      [env, prefiltered, irradiance, dfg, sampling.marginal, sampling.conditional, sampling.pdf, copyFlat, copyCube, ggx, cosine, quad.geometry].forEach((x) => x.dispose());
+      pmrem?.dispose();
+      pmremGenerator?.dispose();
+    },
+  };
+}

@@ -1,0 +1,36 @@
+// From a lab widget's state to the renderer's scene: the material (from the talk's F0 tables or custom), the
+// terms, the lights that are on (directions in view space: z towards the viewer, y up) and the methods.
+import { METALS, NON_METALS, materialByKey, isMetal } from '../../math/materials.js';
+import { srgbToLinear } from '../../math/color.js';
+import { lightDirFromAngles } from '../../core/light-control.js';
+
+export const MATERIAL_OPTIONS = {
+  custom: 'Custom (F0 and diffuse below)',
+  ...Object.fromEntries([...METALS, ...NON_METALS].map((m) => [m.key, `${m.name} (${isMetal(m.key) ? 'metal' : 'non-metal'})`])),
+};
+
+const hexToLinear = (hex) => [1, 3, 5].map((i) => srgbToLinear(parseInt(hex.slice(i, i + 2), 16) / 255));
+const DEG = Math.PI / 180;
+
+/** F0 and diffuse colour (linear) of the chosen material: metals have no diffuse term (the talk). */
+export function materialOf(state) {
+  const table = state.material !== 'custom' ? materialByKey(state.material) : null;
+  const f0 = table ? table.linear : [state.f0, state.f0, state.f0];
+  const diffuse = table && isMetal(state.material) ? [0, 0, 0] : hexToLinear(state.diffuse);
+  return { f0, diffuse, alpha: state.alpha, sigma: (state.sigma ?? 0) * DEG };
+}
+
+export function labScene(state, lights) {
+  return {
+    material: materialOf(state),
+    terms: { F: state.fresnel, D: state.ndf, V: state.visibility, diffuse: state.diffuseModel, layers: state.layers },
+    lights,
+    methods: { env: state.envMethod, area: state.areaMethod, samples: state.samples },
+  };
+}
+
+/** The sphere light: c_light is kept as the radius changes (radiance = c_light / sin²θs), so only the shape of its highlight changes. */
+export function sphereLight(thetaDeg, phiDeg, radiusDeg, cLight) {
+  const sin = Math.sin(radiusDeg * DEG);
+  return { dir: lightDirFromAngles(thetaDeg, phiDeg), sin, radiance: [1, 1, 1].map(() => cLight / (sin * sin)) };
+}

@@ -1,0 +1,105 @@
+// One canvas for the lab: a row of panels (approximation, reference, error), each a res × res image from the
+// lab renderer, drawn with the exposure (or on the error scale), with HTML captions. Also owns the GPU side:
+// environment maps, the lab renderer, and loading environments on first use.
+import * as THREE from 'three';
+import { createViewport } from '../../core/viewport.js';
+import { assembleGlsl } from '../../core/glsl.js';
+import { SHADER_CHUNKS } from '../../core/shader-chunks.js';
+import { createEnvironmentMaps } from '../../core/lab/environment-maps.js';
+import { createLabRenderer } from '../../core/lab/lab-renderer.js';
+import { FURNACE, skyPixels } from '../../core/lab/environments.js';
+
+const viewMaterial = (defines) => new THREE.ShaderMaterial({
+  glslVersion: THREE.GLSL3,
+  uniforms: { uImage: { value: null }, uOther: { value: null }, uRect: { value: new THREE.Vector4() }, uExposure: { value: 1 }, uErrorScale: { value: 0.1 } },
+  vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
+  fragmentShader: assembleGlsl(SHADER_CHUNKS['lab-view.frag.glsl'], { defines }),
+  depthTest: false,
+  depthWrite: false,
+});
+
+/**
+ * frame(lab, maps) runs in each drawn frame and returns the panels to show: [{ image: 'approx' | 'reference' |
+ * 'error', caption }]; it may call again() to ask for another frame (a converging reference).
+ */
+export function createLabView(container, { label, resolution, frame }) {
+  const captions = document.createElement('div');
+  captions.className = 'lab-captions';
+  let lab = null;
+  let maps = null;
+  let loaded = null;
+  const tone = viewMaterial({});
+  const error = viewMaterial({ ERROR_VIEW: 1 });
+  const quad = new THREE.Mesh(new THREE.PlaneGeometry(2, 2));
+  quad.frustumCulled = false;
+  const scene = new THREE.Scene().add(quad);
+  const camera = new THREE.Camera();
+  const size = new THREE.Vector2();
+  let again = false;
+  let settings = { exposure: 1, errorScale: 0.1 };
+
+  const draw = (renderer) => {
+    maps ??= createEnvironmentMaps(renderer);
+    lab ??= createLabRenderer(renderer, maps, resolution);
+    again = false;
+    const panels = frame({ lab, maps, again: () => (again = true) });
+    const pr = renderer.getPixelRatio();
+    renderer.getSize(size);
+    const w = size.x / panels.length;
+    renderer.setScissorTest(true);
+    panels.forEach((panel, i) => {
+      const side = Math.min(w, size.y);
+      const rect = [i * w + (w - side) / 2, (size.y - side) / 2, side, side];
+      const m = panel.image === 'error' ? error : tone;
+      m.uniforms.uImage.value = panel.image === 'reference' ? lab.reference : lab.approx;
+      m.uniforms.uOther.value = lab.reference;
+      m.uniforms.uRect.value.set(...rect.map((x) => x * pr));
+      m.uniforms.uExposure.value = settings.exposure;
+      m.uniforms.uErrorScale.value = settings.errorScale;
+      quad.material = m;
+      renderer.setViewport(...rect);
+      renderer.setScissor(...rect);
+      renderer.render(scene, camera);
+    });
+    renderer.setScissorTest(false);
+    captions.replaceChildren(...panels.map((p) => Object.assign(document.createElement('span'), { textContent: p.caption })));
+    if (again) viewport.invalidate();
+  };
+
+  const viewport = createViewport(container, { draw, label });
+  if (viewport) {
+    viewport.holder.classList.add('lab-view');
+    viewport.holder.append(captions);
+  }
+  return {
+    viewport,
+    get canvas() {
+      return viewport?.canvas;
+    },
+    get lab() {
+      return lab;
+    },
+    resolution,
+    /** Makes environment `key` current ('studio', 'sky', 'sky-no-sun', 'furnace', or any key with its pixels); a no-op if it is. */
+    useEnvironment(key, pixels = null) {
+      if (!maps || loaded === key) return;
+      maps.load(pixels ?? (key === 'studio' ? 'studio' : key === 'furnace' ? FURNACE : skyPixels(512, 256, key !== 'sky-no-sun')));
+      loaded = key;
+    },
+    envVersion: () => maps?.version ?? 0,
+    setDisplay(next) {
+      settings = { ...settings, ...next };
+      viewport?.invalidate();
+    },
+    setAspect(panels) {
+      if (viewport) viewport.holder.style.aspectRatio = `${panels} / 1`;
+    },
+    invalidate: () => viewport?.invalidate(),
+    dispose() {
+      [tone, error, quad.geometry].forEach((x) => x.dispose());
+      lab?.dispose();
+      maps?.dispose();
+      viewport?.dispose();
+    },
+  };
+}

@@ -1,0 +1,194 @@
+// material-lab: the playground of the talk's last part. A sphere with a material from the F0 tables (or your
+// own), the BRDF's terms to choose, and four kinds of light to switch on: punctual, a sphere (area) light, an
+// environment, ambient. Each light is rendered by the approximation chosen for it; beside it the same view by
+// a converging Monte Carlo reference, the error image, and the RMS error and GPU time of the approximation.
+import { createWidgetShell } from '../../core/widget-shell.js';
+import { lightDirFromAngles } from '../../core/light-control.js';
+import { REFERENCE_BATCH } from '../../core/lab/lab-renderer.js';
+import { ENVIRONMENTS, MAX_FILE_BYTES, parseEnvironmentFile } from '../../core/lab/environments.js';
+import { MATERIAL_OPTIONS, labScene, sphereLight } from './lab-scene.js';
+import { createLabView } from './lab-view.js';
+import { attachEnvironmentDrop } from './environment-drop.js';
+
+export const ENV_METHODS = { 'split-sum': 'Split sum (prefiltered + DFG)', importance: 'Importance sampling, N samples', mirror: 'Mirror: F(v, n) × environment', pmrem: 'three.js PMREM (MeshPhysicalMaterial)' };
+export const AREA_METHODS = { representative: 'Representative point (Karis)', centre: 'Punctual at the centre' };
+
+export const schema = {
+  material: { type: 'enum', options: MATERIAL_OPTIONS, default: 'custom', label: 'Material' },
+  f0: { type: 'number', min: 0, max: 1, step: 0.01, default: 0.04, label: 'Custom F0' },
+  diffuse: { type: 'color', default: '#b5532e', label: 'Diffuse colour' },
+  alpha: { type: 'number', min: 0, max: 1, step: 0.005, default: 0.25, label: 'Roughness α' },
+  layers: { type: 'enum', options: { both: 'Specular + diffuse', specular: 'Specular only', diffuse: 'Diffuse only' }, default: 'both', label: 'Layers' },
+  fresnel: { type: 'enum', options: { schlick: 'Schlick', one: 'F = 1' }, default: 'schlick', label: 'F' },
+  ndf: { type: 'enum', options: { ggx: 'GGX', beckmann: 'Beckmann' }, default: 'ggx', label: 'D' },
+  visibility: {
+    type: 'enum', label: 'V',
+    options: { smithGGXCorrelated: 'Smith GGX height-correlated', smithGGXSeparable: 'Smith GGX separable', schlickGGX: 'Schlick-GGX', kelemen: 'Kelemen', cookTorrance: 'Cook-Torrance', implicit: 'Implicit' },
+    default: 'smithGGXCorrelated',
+  },
+  diffuseModel: {
+    type: 'enum', label: 'Diffuse term',
+    options: { lambert: 'Lambert', 'fresnel-weighted': 'Fresnel-weighted Lambert', 'ashikhmin-shirley': 'Ashikhmin-Shirley', 'oren-nayar': 'Oren-Nayar', 'oren-nayar-qualitative': 'Oren-Nayar (qualitative)' },
+    default: 'lambert',
+  },
+  sigma: { type: 'number', min: 0, max: 60, step: 1, default: 20, label: 'Oren-Nayar σ', unit: '°' },
+  punctual: { type: 'bool', default: false, label: 'Punctual light' },
+  lightTheta: { type: 'number', min: 0, max: 180, step: 1, default: 45, label: 'Punctual θ from view', unit: '°' },
+  lightPhi: { type: 'number', min: -180, max: 180, step: 1, default: 45, label: 'Punctual φ', unit: '°' },
+  cLight: { type: 'number', min: 0, max: 10, step: 0.05, default: 1, label: 'Punctual c_light' },
+  area: { type: 'bool', default: false, label: 'Sphere light' },
+  areaTheta: { type: 'number', min: 0, max: 180, step: 1, default: 40, label: 'Sphere light θ', unit: '°' },
+  areaPhi: { type: 'number', min: -180, max: 180, step: 1, default: 135, label: 'Sphere light φ', unit: '°' },
+  areaRadius: { type: 'number', min: 0.5, max: 30, step: 0.5, default: 8, label: 'Sphere light radius', unit: '°' },
+  areaCLight: { type: 'number', min: 0, max: 10, step: 0.05, default: 1, label: 'Sphere light c_light' },
+  areaMethod: { type: 'enum', options: AREA_METHODS, default: 'representative', label: 'Sphere light by' },
+  env: { type: 'bool', default: true, label: 'Environment' },
+  environment: { type: 'enum', options: ENVIRONMENTS, default: 'studio', label: 'Environment map' },
+  envIntensity: { type: 'number', min: 0, max: 4, step: 0.05, default: 1, label: 'Environment intensity' },
+  envMethod: { type: 'enum', options: ENV_METHODS, default: 'split-sum', label: 'Environment by' },
+  samples: { type: 'number', min: 1, max: 256, step: 1, default: 16, label: 'Importance samples N' },
+  ambient: { type: 'bool', default: false, label: 'Ambient light' },
+  ambientLevel: { type: 'number', min: 0, max: 2, step: 0.05, default: 0.3, label: 'Ambient radiance' },
+  refSamples: { type: 'enum', options: { 128: '128', 512: '512', 2048: '2048' }, default: '512', label: 'Reference samples / pixel' },
+  exposure: { type: 'number', min: 0.1, max: 8, step: 0.05, default: 1, label: 'Exposure' },
+  errorScale: { type: 'number', min: 0.005, max: 1, step: 0.005, default: 0.05, label: 'Error image: full scale' },
+};
+
+const ABOUT =
+  'A shading model becomes a picture only with an illumination model. The left sphere is rendered the way a ' +
+  'real-time renderer would (the method chosen for each light); the middle one solves the reflectance equation ' +
+  'by Monte Carlo, adding samples until it converges; the right image is their difference. The punctual light ' +
+  'is exact in both (it is a single direction: L = π f c_light (n·l)). The sphere light, the environment and ' +
+  'ambient light are integrals that the approximations shortcut: a representative point, a prefiltered map with ' +
+  'a DFG table (the split sum), a few importance samples, or the mirror direction alone. Drop an .hdr or .exr ' +
+  'panorama on the widget to light it with your own environment.';
+
+const TERMS_USED = ['microfacetBRDF', 'dfgSplitSum', 'sampleGGXNormal', 'sampleCosine', 'sampleCone', 'sphereLightRepresentativeDir', 'sphereLightNormalization', 'equirectUv', 'diffuseOrenNayar'];
+
+export function lightsOf(state) {
+  const c = (x) => [x, x, x];
+  return {
+    punctual: state.punctual ? { dir: lightDirFromAngles(state.lightTheta, state.lightPhi), cLight: c(state.cLight) } : null,
+    sphere: state.area ? sphereLight(state.areaTheta, state.areaPhi, state.areaRadius, state.areaCLight) : null,
+    env: state.env ? { intensity: state.envIntensity, map: state.environment } : null,
+    ambient: state.ambient ? c(state.ambientLevel) : null,
+  };
+}
+
+const fmt = (x, digits = 4) => (x === null || x === undefined ? '—' : x.toPrecision(digits));
+
+export function createMaterialLab(container, initialState = {}, { onStateChange } = {}) {
+  const shell = createWidgetShell(container, { name: 'material-lab', schema, initialState, about: ABOUT, terms: TERMS_USED });
+  const readout = document.createElement('div');
+  readout.className = 'lab-readout';
+  readout.setAttribute('aria-live', 'polite');
+  let filePixels = null;
+  let fileName = '';
+  let approxKey = '';
+  let refKey = '';
+  let stats = null;
+  let ms = null;
+
+  const frame = ({ lab, again }) => {
+    const st = shell.state;
+    if (st.env) view.useEnvironment(st.environment === 'file' ? `file:${fileName}` : st.environment, st.environment === 'file' ? filePixels : null);
+    const lights = lightsOf(st);
+    const scene = labScene(st, lights);
+    const env = view.envVersion();
+    const aKey = JSON.stringify([scene, env]);
+    const rKey = JSON.stringify([scene.material, scene.terms, scene.lights, env]);
+    if (aKey !== approxKey) {
+      ms = lab.renderApprox(scene);
+      approxKey = aKey;
+    }
+    if (rKey !== refKey) {
+      lab.resetReference();
+      refKey = rKey;
+    }
+    const target = Number(st.refSamples) / REFERENCE_BATCH;
+    if (lab.batches < target) {
+      lab.accumulate(scene);
+      again();
+    }
+    stats = { ...lab.error(), ms, samples: lab.batches * REFERENCE_BATCH, target: Number(st.refSamples) };
+    showReadout(st, lights);
+    return [
+      { image: 'approx', caption: `Approximation: ${methodText(st, lights)}` },
+      { image: 'reference', caption: `Reference: Monte Carlo, ${stats.samples} of ${stats.target} samples / pixel` },
+      { image: 'error', caption: `Error |approx − reference|, 0 to ${st.errorScale}` },
+    ];
+  };
+
+  const methodText = (st, lights) => {
+    const parts = [];
+    if (lights.punctual) parts.push('punctual (exact)');
+    if (lights.sphere) parts.push(`sphere light by ${st.areaMethod === 'centre' ? 'its centre' : 'representative point'}`);
+    if (lights.env) parts.push(`${ENVIRONMENTS[st.environment].split(' (')[0].toLowerCase()} by ${st.envMethod === 'importance' ? `${st.samples} importance samples` : st.envMethod}`);
+    if (lights.ambient) parts.push('ambient');
+    return parts.join(' + ') || 'no light on';
+  };
+
+  const showReadout = (st, lights) => {
+    const converging = stats.samples < stats.target;
+    const anyLight = Object.values(lights).some(Boolean);
+    readout.innerHTML = anyLight
+      ? `<table class="data-table compact"><tbody>
+        <tr><th scope="row">GPU time of the approximation</th><td>${fmt(stats.ms, 3)} ms for ${view.resolution}² pixels</td></tr>
+        <tr><th scope="row">RMS error against the reference</th><td>${fmt(stats.rms)} (radiance), ${fmt(stats.relative * 100, 3)} % of the reference’s RMS${converging ? ' — reference still converging' : ''}</td></tr>
+        </tbody></table>`
+      : '<p class="lab-empty">Every light is off: switch one on in the controls.</p>';
+    view.canvas?.setAttribute('aria-label', `Material lab. A sphere (${st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material}, roughness α ${st.alpha}) lit by ${methodText(st, lights)}; beside it the Monte Carlo reference (${stats.samples} samples per pixel) and the error image. RMS error ${fmt(stats.rms, 3)}, ${fmt(stats.relative * 100, 3)} % relative; ${fmt(stats.ms, 3)} ms.`);
+  };
+
+  const view = createLabView(shell.view, { label: 'Material lab', resolution: 192, frame });
+  view.setAspect(3);
+  shell.view.append(readout);
+
+  const onChanged = (changed) => {
+    if (changed.includes('environment') && shell.state.environment === 'file' && !filePixels) {
+      shell.notices.show('No environment file has been dropped yet: drop an .hdr or .exr panorama on the widget. Kept the studio.');
+      update({ environment: 'studio' });
+      return;
+    }
+    view.setDisplay({ exposure: shell.state.exposure, errorScale: shell.state.errorScale });
+  };
+  const update = shell.connect({ title: 'Material lab', onChanged, onStateChange });
+  onChanged(['environment']);
+
+  const drop = attachEnvironmentDrop(shell.root, {
+    maxBytes: MAX_FILE_BYTES,
+    onFile: (name, buffer) => {
+      try {
+        filePixels = parseEnvironmentFile(name, buffer);
+      } catch (e) {
+        shell.notices.show(`${e.message} Kept the current environment.`);
+        return false;
+      }
+      fileName = name;
+      update({ env: true, environment: 'file' });
+      view.invalidate();
+      return true;
+    },
+  });
+
+  return {
+    update,
+    getState: () => shell.state,
+    getStats: () => stats,
+    getProgress: () => ({ frame: stats?.samples ?? 0, target: Number(shell.state.refSamples) }),
+    read: (which) => view.lab?.read(which),
+    get canvas() {
+      return view.canvas;
+    },
+    get resolution() {
+      return view.resolution;
+    },
+    dispose() {
+      drop.dispose();
+      view.dispose();
+      shell.dispose();
+    },
+  };
+}
+
+export const widget = { name: 'material-lab', schema, create: createMaterialLab };
