@@ -20,6 +20,6 @@ float diffuseTerm(vec3 l, vec3 v) {
 #elif defined(DIFFUSE_MODEL_OREN_NAYAR_QUALITATIVE)
   return diffuseOrenNayarQualitative(l.z, v.z, cosPhiDiff(l, v), uSigma, uDiffuse);
 #else
-  return l.z > 0.0 ? diffuseLambert(uDiffuse) : 0.0;
+  return l.z > 0.0 && v.z > 0.0 ? diffuseLambert(uDiffuse) : 0.0; // 0 below the horizon, as every other model
 #endif
 }
