@@ -78,6 +78,12 @@ describe('diffuse chapter page', () => {
     expect(plots.tradeOff).toHaveLength(8); // x, five models, F alone, the line at 1
     const img = await readSpheres(page);
     for (let i = 0; i < 5; i++) expect(findDisc(img, i, 5).r).toBeGreaterThan(20);
+    // the probe at the centre of the fourth sphere (full Oren–Nayar; defaults sigma 40°, c 0.8, light at the viewer)
+    const box = await (await page.$('.sphere-grid canvas')).boundingBox();
+    await page.mouse.move(box.x + box.width * 0.7, box.y + box.height * 0.5);
+    await settle(page, 200);
+    const ratio = diffuseOrenNayar(1, 1, 1, 40 * DEG, 0.8) / diffuseLambert(0.8);
+    expect(await page.$eval('.widget-diffuse-explorer .probe', (el) => el.textContent)).toContain(`f / Lambert${ratio.toFixed(4)}`);
     expect(page.errors).toEqual([]);
     await page.close();
   });

@@ -53,12 +53,16 @@ export function createDiffuseExplorer(container, initialState = {}, { onStateCha
   const shell = createWidgetShell(container, { name: 'diffuse-explorer', schema, initialState, about: ABOUT, terms: TERMS_USED });
   const lightDir = () => lightDirFromAngles(shell.state.lightTheta, shell.state.lightPhi);
   let update = () => {};
-  const pad = createLightPad(shell.controls, {
+  // the spheres, their probe readout and, beside it, the pad that moves their light
+  const stage = document.createElement('div');
+  stage.className = 'diffuse-stage';
+  shell.view.append(stage);
+  const spheres = createSphereGrid(stage, { label: 'Diffuse models on spheres' });
+  const pad = createLightPad(stage, {
     label: 'Light direction for the spheres and the profile plot',
     get: () => shell.state,
     set: (partial) => update(partial),
   });
-  const spheres = createSphereGrid(shell.view, { label: 'Diffuse models on spheres' });
   const plots = document.createElement('div');
   const table = document.createElement('div');
   shell.view.append(plots);
@@ -70,7 +74,7 @@ export function createDiffuseExplorer(container, initialState = {}, { onStateCha
 
   const profileSpec = () => ({
     title: `Brightness across the sphere, through the side the light is on (${sigmaText(shell.state)})`,
-    xLabel: 'Position on the diameter (radii, + = light side)', yLabel: 'Lo / c_light',
+    xLabel: 'Diameter position (radii, + = light side)', yLabel: 'Lo / c_light',
     x: { min: -1, max: 1 }, y: null, series: series(), data: [PROFILE_XS, ...profileData], filename: 'diffuse-profile', height: 260,
   });
   const sweepSpec = () => {

@@ -3,6 +3,8 @@
 import { attachLightControl } from '../../core/light-control.js';
 
 export function createLightPad(container, { get, set, label }) {
+  const box = document.createElement('div');
+  box.className = 'light-pad-box';
   const holder = document.createElement('div');
   holder.className = 'light-pad';
   const canvas = document.createElement('canvas');
@@ -11,19 +13,24 @@ export function createLightPad(container, { get, set, label }) {
   canvas.setAttribute('aria-label', label);
   const caption = document.createElement('p');
   caption.className = 'light-pad-caption';
-  caption.textContent = 'Light: drag here, or focus and use the arrow keys. Centre = behind the viewer; ring = 90°.';
   holder.append(canvas);
-  container.append(holder, caption);
+  box.append(holder, caption);
+  container.append(box);
   const control = attachLightControl(canvas, holder, { get, set });
-  const resize = new ResizeObserver(() => control.draw());
+  // the angles go in the caption: a pad this small has no room for the marker's own label
+  const draw = () => {
+    control.draw();
+    const { lightTheta, lightPhi } = get();
+    caption.textContent = `Light θ ${lightTheta}°, φ ${lightPhi}°: drag, or focus and use the arrow keys (centre = behind the viewer, ring = 90°).`;
+  };
+  const resize = new ResizeObserver(draw);
   resize.observe(holder);
   return {
-    draw: control.draw,
+    draw,
     dispose() {
       resize.disconnect();
       control.dispose();
-      holder.remove();
-      caption.remove();
+      box.remove();
     },
   };
 }
