@@ -1,15 +1,12 @@
 // A sphere shaded by one microfacet BRDF under one punctual light (the talk's L = pi f c_light (n·l)),
 // (with DIFFUSE_LAMBERT plus a Lambert term), or, with FURNACE, in a uniform white environment with F = 1 (the directional albedo E(n·v)).
 // The term switches of brdf.glsl pick D (NDF_*), V (VIS_*) and F (F_ONE or Schlick); only those compile.
+// With DIFFUSE_ONLY the sphere has a diffuse term alone, picked by DIFFUSE_MODEL_* (Lambert without one).
 #include "color.glsl"
 #ifdef FURNACE
 #include "integrate.glsl"
-#else
+#elif !defined(DIFFUSE_ONLY)
 #include "brdf.glsl"
-#endif
-#ifdef DIFFUSE_LAMBERT
-#include "diffuse.glsl"
-uniform float uDiffuse;
 #endif
 
 in vec3 vNormal;
@@ -20,6 +17,14 @@ uniform float uExposure;
 uniform float uAlpha;
 uniform float uF0;
 out vec4 fragColor;
+
+// either switch brings the diffuse term in (included once)
+#ifdef DIFFUSE_LAMBERT
+#include "diffuse-sphere.glsl"
+#endif
+#ifdef DIFFUSE_ONLY
+#include "diffuse-sphere.glsl"
+#endif
 
 void main() {
   vec3 n = normalize(vNormal);
@@ -32,9 +37,13 @@ void main() {
   vec3 t = normalize(abs(n.z) < 0.999 ? cross(vec3(0.0, 0.0, 1.0), n) : cross(vec3(1.0, 0.0, 0.0), n));
   mat3 toLocal = transpose(mat3(t, cross(n, t), n));
   vec3 l = toLocal * normalize(uLightDir);
+#ifdef DIFFUSE_ONLY
+  float f = diffuseTerm(l, toLocal * v);
+#else
   float f = microfacetBRDF(l, toLocal * v, uAlpha, uF0);
 #ifdef DIFFUSE_LAMBERT
-  f += l.z > 0.0 ? diffuseLambert(uDiffuse) : 0.0;
+  f += diffuseTerm(l, toLocal * v);
+#endif
 #endif
   float radiance = PI * f * uLightIntensity * max(l.z, 0.0);
 #endif

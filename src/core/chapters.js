@@ -25,7 +25,7 @@ export const CHAPTERS = [
   },
   { key: 'ndf', title: 'Normal distribution functions', blurb: 'Five NDFs at matched widths: highlights and tails.', page: 'ndf.html', widgets: ['ndf-explorer'] },
   { key: 'visibility', title: 'Geometry and visibility terms', blurb: 'Implicit, Cook–Torrance, Kelemen, Smith.', page: 'visibility.html', widgets: ['visibility-explorer'] },
-  { key: 'diffuse', title: 'Diffuse', blurb: 'Lambert, the diffuse–specular trade-off, Oren–Nayar.' },
+  { key: 'diffuse', title: 'Diffuse', blurb: 'Lambert, the diffuse–specular trade-off, Oren–Nayar.', page: 'diffuse.html', widgets: ['diffuse-explorer'] },
   {
     key: 'rendering',
     title: 'From math to rendering',

@@ -1,7 +1,7 @@
 // A row of spheres in one canvas, each shaded by its own BRDF variant (brdf-sphere.frag.glsl) under the
 // same punctual light, or in the white furnace. Cells: [{ label, defines, uniforms, probe }]; each cell is
 // one draw in its own viewport. Variants are compiled once and reused. Hovering a sphere probes it: the
-// angles there, and the rows the cell's probe(angles) returns ([[label, text], ...]).
+// angles there, and the rows the cell's probe(angles, n) returns ([[label, text], ...]; n in view space).
 import * as THREE from 'three';
 import { createViewport } from './viewport.js';
 import { assembleGlsl } from './glsl.js';
@@ -9,7 +9,7 @@ import { SHADER_CHUNKS } from './shader-chunks.js';
 import { angleText, probeAngles, showProbeRows } from './probe.js';
 
 const UNIFORM_DEFAULTS = {
-  uLightDir: [0, 0, 1], uLightIntensity: 1, uExposure: 1, uAlpha: 0.3, uExponent: 40, uA1: 20, uA2: 2.5, uSgdP: 0.64, uF0: 1, uDiffuse: 0.5,
+  uLightDir: [0, 0, 1], uLightIntensity: 1, uExposure: 1, uAlpha: 0.3, uExponent: 40, uA1: 20, uA2: 2.5, uSgdP: 0.64, uF0: 1, uDiffuse: 0.5, uSigma: 0,
 };
 
 const HALF_SIZE = 1.08; // the orthographic camera's half extent: the unit sphere fills 1/1.08 of a cell
@@ -92,7 +92,7 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
     const a = probeAngles(n, l, [0, 0, 1]);
     showProbeRows(probePanel, [
       ['sphere', cell.label], ['n·v', angleText(a.nv)], ['n·l', angleText(a.nl)], ['n·h', angleText(a.nh)], ['l·h', angleText(a.lh)],
-      ...(cell.probe?.(a) ?? []),
+      ...(cell.probe?.(a, n) ?? []),
     ]);
   };
   viewport?.canvas.addEventListener('pointermove', onMove);

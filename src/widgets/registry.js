@@ -55,6 +55,11 @@ export const WIDGETS = {
     summary: 'Directional albedo against angle for a sweep of roughness, the energy lost, and furnace spheres.',
     load: () => import('./energy/energy.js'),
   },
+  'diffuse-explorer': {
+    title: 'Diffuse explorer',
+    summary: 'Lambert, the diffuse–specular trade-off and Oren–Nayar on spheres and against angle; the rough “full moon” flattening.',
+    load: () => import('./diffuse-explorer/diffuse-explorer.js'),
+  },
   'material-lab': {
     title: 'Material lab',
     summary: 'A material under punctual, sphere, environment and ambient light: each approximation beside a converging Monte Carlo reference, with its error and cost.',

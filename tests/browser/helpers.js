@@ -68,7 +68,7 @@ export async function shot(page, selector) {
 }
 
 /** Runs fn(imageData) in the page on a decoded base64 PNG. */
-function withPixels(page, png, fn) {
+export function withPixels(page, png, fn) {
   return page.evaluate(
     async (b64, body) => {
       const img = new Image();

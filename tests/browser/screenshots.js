@@ -22,6 +22,7 @@ const SHOTS = [
   ['microfacets-page', 'microfacets.html', { fullPage: true }],
   ['ndf-page', 'ndf.html?ndf.exposure=8', { fullPage: true }],
   ['visibility-page', 'visibility.html', { fullPage: true }],
+  ['diffuse-page', 'diffuse.html', { fullPage: true }],
   ['performance-page', 'performance.html', { fullPage: true }],
 ];
 

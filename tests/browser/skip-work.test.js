@@ -10,7 +10,7 @@ afterAll(async () => {
   await browser?.close();
 });
 
-const PAGES = ['index.html', 'media.html', 'surfaces.html', 'brdf.html', 'microfacets.html', 'fresnel.html', 'ndf.html', 'visibility.html', 'performance.html', 'parity.html'];
+const PAGES = ['index.html', 'media.html', 'surfaces.html', 'brdf.html', 'microfacets.html', 'fresnel.html', 'ndf.html', 'visibility.html', 'diffuse.html', 'performance.html', 'parity.html'];
 const draws = (page) => page.evaluate(() => window.__drawCalls);
 
 /** Scroll through the page so every view gets its first frame, then let it settle. */
