@@ -110,7 +110,7 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
       lab.accumulate(scene);
       again();
     }
-    stats = { ...lab.error(), ms, samples: lab.batches * REFERENCE_BATCH, target: Number(st.refSamples) };
+    stats = { ...lab.error(), ms, samples: lab.batches * REFERENCE_BATCH, target: Number(st.refSamples), samplesN: st.samples, method: st.envMethod };
     showReadout(st, lights);
     return [
       { image: 'approx', caption: `Approximation: ${methodText(st, lights)}` },

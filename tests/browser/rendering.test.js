@@ -1,0 +1,132 @@
+// The rendering chapter in a real Chromium: the material lab's images read back from the canvas against the
+// talk's definitions (c_light, the white furnace), importance sampling converging on the reference, and
+// environment files checked before they are used.
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { getState, launchBrowser, open, shot, widget, withPixels } from './helpers.js';
+import { linearToSrgb, srgbToLinear } from '../../src/math/color.js';
+
+const EXTENT = 1.1; // the lab's view half width (src/core/lab/lab-renderer.js)
+const RES = 192; // the lab's image size (src/widgets/material-lab/material-lab.js)
+/** The centre of the lab texel that holds sphere point [x, y]: the image shows each texel's own normal. */
+const texelCentre = (points) => points.map((p) => p.map((c) => ((Math.floor((c / (2 * EXTENT) + 0.5) * RES) + 0.5) / RES - 0.5) * 2 * EXTENT));
+let browser;
+beforeAll(async () => {
+  browser = await launchBrowser();
+});
+afterAll(async () => {
+  await browser?.close();
+});
+
+const converged = (page) =>
+  page.waitForFunction(() => {
+    const p = globalThis.__shadingLab.widgets.lab.getProgress();
+    return p.frame >= p.target;
+  }, { timeout: 90_000 });
+
+async function openLab(query) {
+  const page = await open(browser, `rendering.html?${query}`, { width: 1200, height: 900 });
+  await widget(page, 'lab');
+  await converged(page);
+  return page;
+}
+
+/**
+ * Linear radiance read back from the canvas (sRGB 8-bit decoded) in panel `panel` (0 approximation, 1 reference)
+ * at sphere coordinates [x, y] (x right, y up; the normal there is (x, y, sqrt(1 - x² - y²))).
+ */
+async function radianceAt(page, panel, points) {
+  await page.addStyleTag({ content: '.lab-captions { display: none; }' });
+  const png = await shot(page, '.lab-view canvas');
+  const bytes = await withPixels(page, png, `(image) => ${JSON.stringify(points)}.map(([x, y]) => {
+    const side = image.height;
+    const px = Math.floor(${panel} * side + (0.5 + x / ${2 * EXTENT}) * side);
+    const py = Math.floor((0.5 - y / ${2 * EXTENT}) * side);
+    return image.data.slice((py * image.width + px) * 4, (py * image.width + px) * 4 + 3);
+  })`);
+  return bytes.map((rgb) => Array.from(Object.values(rgb)).map((b) => srgbToLinear(b / 255)));
+}
+
+// one 8-bit step of sRGB around a linear value, the resolution of a canvas read-back
+const step = (linear) => srgbToLinear(Math.min(linearToSrgb(linear) + 1 / 255, 1)) - linear;
+
+describe('material lab', () => {
+  it('shows c_light on a white Lambertian surface lit head on, and c_light (n·l) elsewhere, in both images', async () => {
+    const cLight = 0.5;
+    const page = await openLab(`lab.env=0&lab.punctual=1&lab.lightTheta=0&lab.cLight=${cLight}&lab.layers=diffuse&lab.diffuse=ffffff&lab.refSamples=128`);
+    const points = texelCentre([[0, 0], [0.5, 0], [0, -0.6], [0.6, 0.6]]);
+    for (const panel of [0, 1]) {
+      const got = await radianceAt(page, panel, points);
+      points.forEach(([x, y], i) => {
+        // l = v = z: n·l is the normal's z. A screen pixel may land on a neighbouring texel: accept the range of
+        // the 3 × 3 texels around, widened by one 8-bit step.
+        const texel = (2 * EXTENT) / RES;
+        const around = [-1, 0, 1].flatMap((dx) => [-1, 0, 1].map((dy) => cLight * Math.sqrt(1 - (x + dx * texel) ** 2 - (y + dy * texel) ** 2)));
+        const [lo, hi] = [Math.min(...around), Math.max(...around)];
+        for (const c of got[i]) {
+          expect(c).toBeGreaterThanOrEqual(lo - step(lo));
+          expect(c).toBeLessThanOrEqual(hi + step(hi));
+        }
+      });
+    }
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('shows 1 for a white Lambertian sphere in the white furnace: approximation and converged reference', async () => {
+    const page = await openLab('lab.environment=furnace&lab.layers=diffuse&lab.diffuse=ffffff&lab.refSamples=128&lab.exposure=0.5');
+    const points = texelCentre([[0, 0], [0.7, 0], [-0.5, 0.5], [0, -0.9], [0.95, 0]]);
+    for (const panel of [0, 1]) {
+      const got = await radianceAt(page, panel, points);
+      // exposure 0.5 keeps 1 off the clip: the canvas shows 0.5
+      for (const rgb of got) for (const c of rgb) expect(Math.abs(c - 0.5)).toBeLessThanOrEqual(step(0.5) + (panel ? 0.02 : 1e-3));
+    }
+    const stats = await page.evaluate(() => globalThis.__shadingLab.widgets.lab.getStats());
+    expect(stats.relative).toBeLessThan(0.02); // what is left is the reference's own noise
+    await page.close();
+  });
+
+  it('importance sampling converges on the reference as N grows', async () => {
+    const page = await openLab('lab.material=gold&lab.alpha=0.3&lab.envMethod=importance&lab.samples=2&lab.refSamples=256');
+    const errors = [];
+    for (const n of [2, 8, 32, 128]) {
+      await page.evaluate((n) => globalThis.__shadingLab.widgets.lab.update({ samples: n }), n);
+      await page.waitForFunction((n) => globalThis.__shadingLab.widgets.lab.getStats()?.samplesN === n, { timeout: 30_000 }, n);
+      errors.push(await page.evaluate(() => globalThis.__shadingLab.widgets.lab.getStats().relative));
+    }
+    console.log('importance sampling, relative RMS error for N = 2, 8, 32, 128:', errors.map((e) => e.toFixed(4)).join(', '));
+    for (let i = 1; i < errors.length; i++) expect(errors[i]).toBeLessThan(errors[i - 1]);
+    expect(errors[3]).toBeLessThan(errors[0] / 4);
+    await page.close();
+  });
+
+  it('takes a dropped .hdr, and refuses a broken or wrongly shaped one with a message, keeping the environment', async () => {
+    const page = await openLab('lab.environment=sky&lab.layers=diffuse&lab.diffuse=ffffff&lab.refSamples=128&lab.exposure=0.5');
+    const drop = (name, bytes) => page.evaluate((name, bytes) => {
+      const dt = new DataTransfer();
+      dt.items.add(new File([new Uint8Array(bytes)], name));
+      document.querySelector('.widget-material-lab').dispatchEvent(new DragEvent('drop', { dataTransfer: dt, bubbles: true, cancelable: true }));
+    }, name, bytes);
+    const notices = () => page.$$eval('.widget-material-lab .notice', (els) => els.map((e) => e.textContent));
+
+    await drop('broken.hdr', [...new TextEncoder().encode('#?RADIANCE\nnot really\n')]);
+    await page.waitForFunction(() => document.querySelectorAll('.widget-material-lab .notice').length > 0);
+    expect((await notices()).join(' ')).toMatch(/broken\.hdr” could not be read as HDR.*Kept the current environment/);
+    expect((await getState(page, 'lab')).environment).toBe('sky');
+
+    // a valid Radiance file of uniform radiance 1 (RGBE 128,128,128,129), first 4 × 4 (not a panorama), then 8 × 4
+    const hdr = (w, h) => [...new TextEncoder().encode(`#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y ${h} +X ${w}\n`), ...Array(w * h).fill([128, 128, 128, 129]).flat()];
+    await drop('square.hdr', hdr(4, 4));
+    await page.waitForFunction(() => [...document.querySelectorAll('.widget-material-lab .notice')].some((n) => n.textContent.includes('square.hdr')));
+    expect((await notices()).join(' ')).toMatch(/square\.hdr” is 4×4: an environment must be equirectangular/);
+    expect((await getState(page, 'lab')).environment).toBe('sky');
+
+    await drop('uniform.hdr', hdr(8, 4));
+    await page.waitForFunction(() => globalThis.__shadingLab.widgets.lab.getState().environment === 'file');
+    await converged(page);
+    // a uniform map of radiance 1 is the furnace: the white Lambertian sphere shows 1 (0.5 at exposure 0.5)
+    const [centre] = await radianceAt(page, 0, [[0, 0]]);
+    for (const c of centre) expect(Math.abs(c - 0.5)).toBeLessThanOrEqual(step(0.5) + 1e-3);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+});
