@@ -60,7 +60,8 @@ export async function validateExercise(raw, { schemaOf }) {
     schema = typeof raw.widget === 'string' ? await schemaOf(raw.widget) : null;
     if (!schema) errors.push(`widget: unknown widget ${show(raw.widget)}`);
   }
-  if (grader?.widget && raw.widget !== grader.widget) errors.push(`widget: grader "${raw.grader}" reads the "${grader.widget}" widget, not ${show(raw.widget ?? null)}`);
+  const widgetFits = !grader?.widget || raw.widget === grader.widget;
+  if (!widgetFits) errors.push(`widget: grader "${raw.grader}" reads the "${grader.widget}" widget, not ${show(raw.widget ?? null)}`);
   const state = raw.state ?? {};
   const locked = raw.locked ?? [];
   if (!isObject(state)) errors.push('state: not an object of widget state keys');
@@ -80,7 +81,7 @@ export async function validateExercise(raw, { schemaOf }) {
   } else if (locked.length && raw.widget == null) errors.push('locked: given without a widget');
 
   // what the grader needs of the state
-  if (grader && schema && isObject(state) && Array.isArray(locked)) {
+  if (grader && widgetFits && schema && isObject(state) && Array.isArray(locked)) {
     const full = { ...defaultState(schema), ...state };
     for (const key of grader.reads ?? []) if (locked.includes(key)) errors.push(`locked: "${key}" is what the student sets for grader "${raw.grader}"; it must stay free`);
     for (const key of grader.given ?? []) if (!locked.includes(key)) errors.push(`locked: must include "${key}" (grader "${raw.grader}" takes the question from it)`);
