@@ -118,7 +118,7 @@ async function openExercise(exercise, { focus = false } = {}) {
   const grader = GRADERS[exercise.grader];
   const hidden = grader.hide?.(exercise.params);
   current = { exercise, widget: null, preview: null, hidden };
-  registry.exercise = { id: exercise.id, hidden }; // for tests: what a hidden question drew
+  registry.exercise = { id: exercise.id, hidden, ready: false }; // for tests: what a hidden question drew, and when it is up
   const heading = el('h2', { tabIndex: -1, textContent: exercise.title });
   const chapter = CHAPTERS.find((c) => c.key === exercise.chapter);
   const meta = el('p', { className: 'exercise-meta' });
@@ -147,7 +147,10 @@ async function openExercise(exercise, { focus = false } = {}) {
   renderList();
   if (focus) heading.focus(); // a chosen exercise takes the focus; the first one shown on load does not
   current.preview = createPreview(pictures, exercise, hidden);
-  if (!exercise.widget) return;
+  if (!exercise.widget) {
+    registry.exercise.ready = true;
+    return;
+  }
   if (exercise.locked.length) {
     const schema = await schemaOf(exercise.widget);
     const names = exercise.locked.map((k) => schema[k].label ?? k);
@@ -164,6 +167,7 @@ async function openExercise(exercise, { focus = false } = {}) {
   if (current !== mine) return widget.dispose(); // another exercise was opened meanwhile
   current.widget = widget;
   current.preview?.update(widget.getState());
+  registry.exercise.ready = true;
 }
 
 function route(event) {
