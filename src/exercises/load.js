@@ -23,7 +23,8 @@ export function parseJson(text) {
   }
 }
 
-const nameOf = (url) => decodeURIComponent(new URL(url, 'http://x/').pathname.split('/').pop() || url);
+/** A short name for messages: the file name, or "data URL" for an inline set. */
+const nameOf = (url) => (url.startsWith('data:') ? 'data URL' : decodeURIComponent(new URL(url).pathname.split('/').pop() || url));
 
 /**
  * Entries of a set and where each came from: [{ source, raw }] or [{ source, error }].

@@ -155,7 +155,7 @@ describe('exercises', () => {
     const page = await open(browser, `exercises.html?src=${encodeURIComponent(`data:application/json,${JSON.stringify(set)}`)}`);
     await page.waitForSelector('.notice-error');
     const text = await page.$eval('#exercise-problems', (el) => el.textContent);
-    expect(text).toContain('#2: 3 problems, not loaded');
+    expect(text).toContain('data URL #2: 3 problems, not loaded');
     expect(text).toContain('tolerance: missing (a positive number)');
     expect(text).toContain('grader: unknown grader "guess"');
     expect(text).toContain('state.depth: unknown key for widget "media"');
