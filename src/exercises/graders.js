@@ -284,7 +284,7 @@ export const GRADERS = {
       return {
         ok: false,
         summary: `${offBy(answer, worst.deg, '°')}; needs to be within ±${fmt(tolerance)}°.`,
-        details: [`At ${fmt(answer)}° Schlick is off by ${fmt(there)}, ${times(worst.error / Math.max(there, 1e-12))} less than its worst error.`],
+        details: [`At ${fmt(answer)}° Schlick is off by ${fmt(there)}; at its worst it is off by ${fmt(worst.error)}, ${times(worst.error / Math.max(there, 1e-12))} as much.`],
       };
     },
   },

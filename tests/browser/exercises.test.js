@@ -17,8 +17,11 @@ afterAll(async () => {
 });
 
 /** Opens an exercise from the list, as a reader would, and waits for its widget (if any). */
-async function choose(page, id) {
-  await page.click(`#exercise-list a[href="#${id}"]`);
+async function choose(page, id, { keyboard = false } = {}) {
+  if (keyboard) {
+    await page.focus(`#exercise-list a[href="#${id}"]`);
+    await page.keyboard.press('Enter');
+  } else await page.click(`#exercise-list a[href="#${id}"]`);
   await page.waitForFunction((i) => globalThis.__shadingLab.exercise?.id === i && globalThis.__shadingLab.exercise.ready, { timeout: 30_000 }, id);
   await settle(page, 300);
 }
@@ -59,7 +62,8 @@ describe('exercises', () => {
     });
     expect((await getState(page, 'exercise')).view).toBe('one');
 
-    await choose(page, 'lake-mirror');
+    await choose(page, 'lake-mirror', { keyboard: true });
+    expect(await page.evaluate(() => document.activeElement.textContent)).toBe('When does a lake become a mirror?'); // the heading takes the focus
     r = await check(page);
     expect(r.ok).toBe(false);
     expect(r.text).toContain('points below the target 25%');
