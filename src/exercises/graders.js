@@ -12,12 +12,11 @@
 //   hide(params, random) → the secret part of the question, drawn when the exercise opens (optional).
 import { fresnelConductor, fresnelDielectric, fresnelSchlick, f0FromIor } from '../math/fresnel.js';
 import { fresnelParams, isMetal, materialByKey } from '../math/materials.js';
-import { NDF_TERMS, VISIBILITY_TERMS, microfacetBRDFAt } from '../math/brdf.js';
+import { NDF_TERMS, VISIBILITY_TERMS, microfacetBRDFAt, punctualRadiance } from '../math/brdf.js';
 import { matchNdfWidths } from '../math/ndf-width.js';
 import { smithG1Beckmann, smithG1GGX } from '../math/visibility.js';
 import { albedoGGX } from '../math/integrate.js';
 import { diffuseLambert } from '../math/diffuse.js';
-import { punctualRadiance } from '../math/brdf.js';
 import { transmittance, waterAbsorptionRgb } from '../math/media.js';
 import { FRESNEL_ZONE_BOUNDS_DEG, fresnelZone } from '../math/zones.js';
 import { displayRms, highlightArea, peakOf, sphereRadiance } from './sphere-image.js';
