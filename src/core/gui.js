@@ -2,9 +2,16 @@
 // each change as a partial state; sync() refreshes it when the state changes from elsewhere.
 import GUI from 'lil-gui';
 
+const lock = (ctrl) => {
+  ctrl.disable();
+  ctrl.domElement.classList.add('locked');
+  ctrl.domElement.title = 'Fixed by the exercise';
+};
+
 const labelOf = (key, f) => (f.unit ? `${f.label ?? key} (${f.unit})` : (f.label ?? key));
 
-export function createStateGui(container, { schema, state, onChange, title = 'Controls', keys = Object.keys(schema) }) {
+/** `locked`: keys shown but not editable (an exercise fixes them); their controls are disabled. */
+export function createStateGui(container, { schema, state, onChange, title = 'Controls', keys = Object.keys(schema), locked = [] }) {
   const gui = new GUI({ container, title, autoPlace: false });
   const model = { ...state };
   const setModels = {}; // set fields: one boolean per option
@@ -16,9 +23,10 @@ export function createStateGui(container, { schema, state, onChange, title = 'Co
       const flags = (setModels[key] = {});
       for (const [value, label] of Object.entries(f.options)) {
         flags[value] = model[key].includes(value);
-        folder.add(flags, value).name(label).onChange(() => {
+        const ctrl = folder.add(flags, value).name(label).onChange(() => {
           onChange({ [key]: Object.keys(f.options).filter((v) => flags[v]) });
         });
+        if (locked.includes(key)) lock(ctrl);
       }
       continue;
     }
@@ -32,6 +40,7 @@ export function createStateGui(container, { schema, state, onChange, title = 'Co
             : gui.add(model, key);
     ctrl.name(labelOf(key, f)).onChange((v) => onChange({ [key]: v }));
     if (f.hint) ctrl.domElement.title = f.hint;
+    if (locked.includes(key)) lock(ctrl);
   }
 
   return {

@@ -2,6 +2,7 @@
 // widgets can share one page), and exposes it for tests and parent pages.
 import { WIDGETS, isWidgetName } from '../widgets/registry.js';
 import { stateToParams } from './state.js';
+import { createLocked } from './widget-shell.js';
 
 const registry = (globalThis.__shadingLab ??= { frames: 0 });
 registry.widgets ??= {};
@@ -28,21 +29,21 @@ function writeUrl(schema, state, prefix) {
 
 /**
  * Creates widget `name` inside `container` with the state found in the URL.
- * options: { prefix, syncUrl = true, onStateChange }
+ * options: { prefix, syncUrl = true, onStateChange, state (instead of the URL's), locked (keys the GUI cannot change) }
  */
-export async function mountWidget(container, name, { prefix = '', syncUrl = true, onStateChange, options = {} } = {}) {
+export async function mountWidget(container, name, { prefix = '', syncUrl = true, onStateChange, options = {}, state, locked = [] } = {}) {
   if (!isWidgetName(name)) throw new Error(`unknown widget ${name}`);
   const { widget } = await WIDGETS[name].load();
   let timer = 0;
-  const instance = widget.create(container, widgetParams(location.search, prefix), {
+  const instance = createLocked(locked, () => widget.create(container, state ?? widgetParams(location.search, prefix), {
     ...options,
-    onStateChange(state) {
-      onStateChange?.(state);
+    onStateChange(next) {
+      onStateChange?.(next);
       if (!syncUrl) return;
       clearTimeout(timer);
-      timer = setTimeout(() => writeUrl(widget.schema, state, prefix), 120);
+      timer = setTimeout(() => writeUrl(widget.schema, next, prefix), 120);
     },
-  });
+  }));
   registry.widgets[prefix || name] = instance;
   return instance;
 }

@@ -4,7 +4,22 @@ import { coerceState, defaultState } from './state.js';
 import { createNoticeArea } from './notice.js';
 import { createStateGui } from './gui.js';
 
+// Keys the host locks for the widget being created (see createLocked): the shell reads them, so every
+// widget gets locking without code of its own.
+let lockedForNext = [];
+
+/** Runs create() with `locked` keys: their controls are disabled and later updates leave them alone. */
+export function createLocked(locked, create) {
+  lockedForNext = locked;
+  try {
+    return create();
+  } finally {
+    lockedForNext = [];
+  }
+}
+
 export function createWidgetShell(container, { name, schema, initialState, about, terms = [] }) {
+  const locked = lockedForNext.filter((k) => Object.hasOwn(schema, k));
   const root = document.createElement('section');
   root.className = `widget widget-${name}`;
   root.dataset.widget = name;
@@ -33,7 +48,8 @@ export function createWidgetShell(container, { name, schema, initialState, about
 
   /** Validates `partial` against the current state; returns the keys whose value changed. */
   const apply = (partial) => {
-    const next = coerceState(schema, partial, state);
+    const free = Object.fromEntries(Object.entries(partial ?? {}).filter(([k]) => !locked.includes(k)));
+    const next = coerceState(schema, free, state);
     if (next.notices.length) notices.show(next.notices);
     const changed = Object.keys(schema).filter((k) => JSON.stringify(next.state[k]) !== JSON.stringify(state[k]));
     state = next.state;
@@ -60,7 +76,7 @@ export function createWidgetShell(container, { name, schema, initialState, about
         onChanged(changed);
         onStateChange?.(state);
       };
-      gui = createStateGui(controls, { schema, state, onChange: update, title });
+      gui = createStateGui(controls, { schema, state, onChange: update, title, locked });
       return update;
     },
     dispose() {

@@ -24,6 +24,7 @@ const SHOTS = [
   ['visibility-page', 'visibility.html', { fullPage: true }],
   ['diffuse-page', 'diffuse.html', { fullPage: true }],
   ['performance-page', 'performance.html', { fullPage: true }],
+  ['exercises-page', 'exercises.html#match-sphere', { fullPage: true }],
 ];
 
 const out = join(ROOT, 'docs/screenshots');

@@ -1,0 +1,67 @@
+// An orthographically viewed unit sphere (view along +z) under a directional light, shaded by the JS math
+// on an N×N grid: the picture a grader compares, and the one the exercises page draws next to the widget.
+import { punctualRadiance } from '../math/brdf.js';
+import { linearToSrgb } from '../math/color.js';
+
+const DEG = Math.PI / 180;
+
+/**
+ * Radiance over the grid, row-major from the top-left; pixels off the disk are NaN.
+ * f(cosines) is the BRDF from { nl, nv, nh, lh } (h = normalize(l + v), view v = (0, 0, 1)); the light,
+ * of intensity cLight, lies lightThetaDeg from the view in the x–z plane.
+ */
+export function sphereRadiance(size, lightThetaDeg, f, cLight = 1) {
+  const l = [Math.sin(lightThetaDeg * DEG), 0, Math.cos(lightThetaDeg * DEG)];
+  const hl = Math.hypot(l[0], l[1], l[2] + 1);
+  const h = hl > 1e-12 ? [l[0] / hl, 0, (l[2] + 1) / hl] : [0, 0, 1];
+  const lh = l[0] * h[0] + l[2] * h[2];
+  const out = new Float64Array(size * size);
+  for (let row = 0; row < size; row++) {
+    for (let col = 0; col < size; col++) {
+      const x = ((col + 0.5) / size) * 2 - 1;
+      const y = 1 - ((row + 0.5) / size) * 2;
+      const r2 = x * x + y * y;
+      if (r2 >= 1) {
+        out[row * size + col] = NaN;
+        continue;
+      }
+      const n = [x, y, Math.sqrt(1 - r2)];
+      const nl = n[0] * l[0] + n[2] * l[2];
+      const a = { nl, nv: n[2], nh: n[0] * h[0] + n[1] * h[1] + n[2] * h[2], lh };
+      out[row * size + col] = nl > 0 ? punctualRadiance(f(a), nl, cLight) : 0;
+    }
+  }
+  return out;
+}
+
+/** What a screen shows for radiance L at an exposure: clamped to [0, 1], sRGB-encoded. */
+export const displayValue = (L, exposure = 1) => linearToSrgb(Math.min(Math.max(L * exposure, 0), 1));
+
+/** RMS difference of the display values of two images over the pixels on the disk. */
+export function displayRms(a, b, exposure = 1) {
+  let sum = 0;
+  let count = 0;
+  for (let i = 0; i < a.length; i++) {
+    if (Number.isNaN(a[i])) continue;
+    const d = displayValue(a[i], exposure) - displayValue(b[i], exposure);
+    sum += d * d;
+    count++;
+  }
+  return Math.sqrt(sum / count);
+}
+
+/** Brightest radiance on the disk. */
+export const peakOf = (img) => img.reduce((m, x) => (x > m ? x : m), 0);
+
+/** Share of the disk's pixels at or above half the image's peak: the highlight's size. */
+export function highlightArea(img) {
+  const half = peakOf(img) / 2;
+  let on = 0;
+  let disk = 0;
+  for (const x of img) {
+    if (Number.isNaN(x)) continue;
+    disk++;
+    if (x >= half) on++;
+  }
+  return on / disk;
+}

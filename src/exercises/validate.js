@@ -1,0 +1,121 @@
+// Checks an exercise file (parsed JSON) against the format in docs/exercises.md. Never throws: returns
+// { exercise, errors }, each error naming the field and what is wrong, so a lecturer can fix the file.
+import { CHAPTERS } from '../core/chapters.js';
+import { defaultState } from '../core/state.js';
+import { GRADERS, isGraderName } from './graders.js';
+
+export const FIELDS = ['id', 'chapter', 'title', 'prompt', 'widget', 'state', 'locked', 'grader', 'params', 'tolerance'];
+
+const show = (v) => (typeof v === 'string' ? `"${v}"` : JSON.stringify(v));
+const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
+const sameValue = (a, b) => JSON.stringify(Array.isArray(a) ? [...a].sort() : a) === JSON.stringify(Array.isArray(b) ? [...b].sort() : b);
+
+/** Why `value` does not fit state field `f` (src/core/state.js kinds), or null. Strict: no strings for numbers. */
+export function fieldProblem(f, value) {
+  switch (f.type) {
+    case 'number':
+      if (typeof value !== 'number' || !Number.isFinite(value)) return `${show(value)} is not a number`;
+      return value < f.min || value > f.max ? `${value} is outside ${f.min}…${f.max}` : null;
+    case 'enum':
+      return typeof value === 'string' && Object.hasOwn(f.options, value) ? null : `${show(value)} is not one of ${Object.keys(f.options).join(', ')}`;
+    case 'bool':
+      return typeof value === 'boolean' ? null : `${show(value)} is not true or false`;
+    case 'set': {
+      if (!Array.isArray(value)) return `${show(value)} is not a list`;
+      const unknown = value.filter((v) => !Object.hasOwn(f.options, v));
+      return unknown.length ? `${unknown.map(show).join(', ')} not among ${Object.keys(f.options).join(', ')}` : null;
+    }
+    default:
+      return `unknown field type ${f.type}`;
+  }
+}
+
+function requiredText(raw, key, errors) {
+  if (typeof raw[key] !== 'string' || !raw[key].trim()) errors.push(`${key}: missing (a non-empty string)`);
+}
+
+/**
+ * raw: the parsed file. schemaOf(name): the widget's state schema (async; the page loads the widget module).
+ * Returns { exercise (normalised: params with defaults, locked and state filled in), errors }.
+ */
+export async function validateExercise(raw, { schemaOf }) {
+  if (!isObject(raw)) return { exercise: null, errors: ['the exercise is not a JSON object'] };
+  const errors = [];
+  for (const key of Object.keys(raw)) if (!FIELDS.includes(key)) errors.push(`${key}: unknown field (fields: ${FIELDS.join(', ')})`);
+
+  if (typeof raw.id !== 'string' || !/^[a-z0-9][a-z0-9-]*$/.test(raw.id)) errors.push(`id: ${raw.id === undefined ? 'missing' : `${show(raw.id)} is not`} a name of lower-case letters, digits and dashes`);
+  const chapters = CHAPTERS.map((c) => c.key);
+  if (!chapters.includes(raw.chapter)) errors.push(`chapter: ${raw.chapter === undefined ? 'missing' : `${show(raw.chapter)} is not a chapter`} (chapters: ${chapters.join(', ')})`);
+  requiredText(raw, 'title', errors);
+  requiredText(raw, 'prompt', errors);
+  if (raw.tolerance === undefined) errors.push('tolerance: missing (a positive number)');
+  else if (typeof raw.tolerance !== 'number' || !(raw.tolerance > 0) || !Number.isFinite(raw.tolerance)) errors.push(`tolerance: ${show(raw.tolerance)} is not a positive number`);
+
+  const grader = isGraderName(raw.grader) ? GRADERS[raw.grader] : null;
+  if (!grader) errors.push(`grader: ${raw.grader === undefined ? 'missing' : `unknown grader ${show(raw.grader)}`} (graders: ${Object.keys(GRADERS).join(', ')})`);
+
+  // the widget and its state
+  let schema = null;
+  if (raw.widget !== undefined && raw.widget !== null) {
+    schema = typeof raw.widget === 'string' ? await schemaOf(raw.widget) : null;
+    if (!schema) errors.push(`widget: unknown widget ${show(raw.widget)}`);
+  }
+  const widgetFits = !grader?.widget || raw.widget === grader.widget;
+  if (!widgetFits) errors.push(`widget: grader "${raw.grader}" reads the "${grader.widget}" widget, not ${show(raw.widget ?? null)}`);
+  const state = raw.state ?? {};
+  const locked = raw.locked ?? [];
+  if (!isObject(state)) errors.push('state: not an object of widget state keys');
+  else if (Object.keys(state).length && !schema && raw.widget == null) errors.push('state: given without a widget');
+  else if (schema) {
+    for (const [key, value] of Object.entries(state)) {
+      if (!Object.hasOwn(schema, key)) errors.push(`state.${key}: unknown key for widget "${raw.widget}" (keys: ${Object.keys(schema).join(', ')})`);
+      else {
+        const why = fieldProblem(schema[key], value);
+        if (why) errors.push(`state.${key}: ${why}`);
+      }
+    }
+  }
+  if (!Array.isArray(locked) || locked.some((k) => typeof k !== 'string')) errors.push('locked: not a list of state keys');
+  else if (schema) {
+    for (const key of locked) if (!Object.hasOwn(schema, key)) errors.push(`locked: "${key}" is not a state key of widget "${raw.widget}"`);
+  } else if (locked.length && raw.widget == null) errors.push('locked: given without a widget');
+
+  // what the grader needs of the state
+  if (grader && widgetFits && schema && isObject(state) && Array.isArray(locked)) {
+    const full = { ...defaultState(schema), ...state };
+    for (const key of grader.reads ?? []) if (locked.includes(key)) errors.push(`locked: "${key}" is what the student sets for grader "${raw.grader}"; it must stay free`);
+    for (const key of grader.given ?? []) if (!locked.includes(key)) errors.push(`locked: must include "${key}" (grader "${raw.grader}" takes the question from it)`);
+    for (const [key, value] of Object.entries(grader.requires ?? {})) {
+      if (!sameValue(full[key], value)) errors.push(`state.${key}: grader "${raw.grader}" needs ${show(value)}, got ${show(full[key])}`);
+      else if (!locked.includes(key)) errors.push(`locked: must include "${key}" (grader "${raw.grader}" assumes ${key} = ${show(value)})`);
+    }
+  }
+
+  // the grader's params
+  const params = {};
+  if (grader) {
+    const given = raw.params ?? {};
+    if (!isObject(given)) errors.push('params: not an object');
+    else {
+      for (const key of Object.keys(given)) {
+        if (!Object.hasOwn(grader.params, key)) errors.push(`params.${key}: unknown for grader "${raw.grader}" (params: ${Object.keys(grader.params).join(', ') || 'none'})`);
+      }
+      for (const [key, f] of Object.entries(grader.params)) {
+        if (given[key] === undefined) {
+          if (f.required) errors.push(`params.${key}: missing (required by grader "${raw.grader}")`);
+          else params[key] = f.default;
+          continue;
+        }
+        const why = fieldProblem(f, given[key]);
+        if (why) errors.push(`params.${key}: ${why}`);
+        else params[key] = given[key];
+      }
+    }
+  }
+
+  if (errors.length) return { exercise: null, errors };
+  return {
+    exercise: { id: raw.id, chapter: raw.chapter, title: raw.title, prompt: raw.prompt, widget: raw.widget ?? null, state, locked, grader: raw.grader, params, tolerance: raw.tolerance },
+    errors,
+  };
+}

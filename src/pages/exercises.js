@@ -1,0 +1,215 @@
+// The exercises page: the list by chapter with progress, one exercise at a time (prompt, the grader's
+// pictures, the widget with its locked controls, an answer, Check, feedback). The set comes from
+// exercises/index.json, from ?src=URL, or from a dropped file; a bad file shows its errors, nothing throws.
+import '../styles.css';
+import { CHAPTERS } from '../core/chapters.js';
+import { mountWidget } from '../core/widget-host.js';
+import { WIDGETS, isWidgetName } from '../widgets/registry.js';
+import { GRADERS } from '../exercises/graders.js';
+import { loadExerciseSet, parseJson, readExerciseSet } from '../exercises/load.js';
+import { createProgress } from '../exercises/progress.js';
+import { createPreview } from '../exercises/previews.js';
+
+const registry = (globalThis.__shadingLab ??= { frames: 0 });
+const listEl = document.getElementById('exercise-list');
+const articleEl = document.getElementById('exercise');
+const problemsEl = document.getElementById('exercise-problems');
+const progress = createProgress();
+
+const schemaOf = async (name) => (isWidgetName(name) ? (await WIDGETS[name].load()).widget.schema : null);
+const el = (tag, props = {}, ...children) => {
+  const node = Object.assign(document.createElement(tag), props);
+  node.append(...children);
+  return node;
+};
+
+let exercises = [];
+let current = null; // { exercise, widget, preview, hidden }
+
+function showProblems(problems) {
+  problemsEl.replaceChildren(...problems.map(({ source, errors }) => el('div', { className: 'notice notice-error' },
+    el('strong', { textContent: `${source}: ${errors.length} problem${errors.length > 1 ? 's' : ''}, not loaded` }),
+    el('ul', {}, ...errors.map((e) => el('li', { textContent: e }))))));
+}
+
+function renderList() {
+  const solved = exercises.filter((e) => progress.of(e.id).solved).length;
+  const summary = el('p', { className: 'exercise-progress' },
+    el('progress', { max: exercises.length || 1, value: solved }),
+    ` ${solved} of ${exercises.length} solved`);
+  summary.firstChild.setAttribute('aria-label', 'Exercises solved');
+  const reset = el('button', { type: 'button', className: 'exercise-reset', textContent: 'Reset progress' });
+  reset.addEventListener('click', () => {
+    if (!confirm('Forget which exercises you solved and how many attempts you made?')) return;
+    progress.reset();
+    renderList();
+    if (current) renderStatus();
+  });
+  const groups = CHAPTERS.filter((ch) => exercises.some((e) => e.chapter === ch.key)).map((ch) => {
+    const items = exercises.filter((e) => e.chapter === ch.key).map((e) => {
+      const p = progress.of(e.id);
+      const a = el('a', { href: `#${e.id}`, textContent: e.title });
+      if (current?.exercise.id === e.id) a.setAttribute('aria-current', 'true');
+      const status = p.solved ? '✓ solved' : p.attempts ? `${p.attempts} attempt${p.attempts > 1 ? 's' : ''}` : '';
+      return el('li', { className: p.solved ? 'solved' : '' }, a, status ? el('span', { className: 'exercise-status', textContent: ` ${status}` }) : '');
+    });
+    return el('section', {}, el('h2', { textContent: `${CHAPTERS.indexOf(ch) + 1}. ${ch.title}` }), el('ol', {}, ...items));
+  });
+  listEl.replaceChildren(summary, reset, ...groups);
+}
+
+function renderStatus() {
+  const p = progress.of(current.exercise.id);
+  articleEl.querySelector('.exercise-meta').textContent = p.solved
+    ? `Solved${p.attempts ? ` (${p.attempts} attempt${p.attempts > 1 ? 's' : ''})` : ''}`
+    : p.attempts ? `Not solved yet: ${p.attempts} attempt${p.attempts > 1 ? 's' : ''}` : 'Not tried yet';
+}
+
+/** The answer part of the form: a number box, a group of options, or a note that the widget is the answer. */
+function answerField(exercise, grader) {
+  const a = grader.answer;
+  if (a.kind === 'number') {
+    const input = el('input', { type: 'text', inputMode: 'decimal', name: 'answer', id: 'exercise-answer', autocomplete: 'off', required: true });
+    const label = el('label', { htmlFor: 'exercise-answer', textContent: `${a.label}${a.unit ? ` (${a.unit})` : ''}` });
+    return { node: el('div', { className: 'exercise-answer' }, label, input), read: () => input.value.trim() };
+  }
+  if (a.kind === 'choice') {
+    const options = Object.entries(a.choices(exercise.params)).map(([value, text]) =>
+      el('label', {}, el('input', { type: 'radio', name: 'answer', value }), ` ${text}`));
+    const fieldset = el('fieldset', { className: 'exercise-answer' }, el('legend', { textContent: 'Your answer' }), ...options);
+    return { node: fieldset, read: () => fieldset.querySelector('input:checked')?.value ?? '' };
+  }
+  return { node: el('p', { className: 'exercise-answer', textContent: 'Answer with the widget’s controls, then check.' }), read: () => null };
+}
+
+/** Grades the current answer; null when there is nothing to grade yet (an empty or unreadable box). */
+function check(read) {
+  const { exercise, widget, hidden } = current;
+  const grader = GRADERS[exercise.grader];
+  const raw = read();
+  let answer = raw;
+  if (grader.answer.kind === 'number') {
+    answer = Number(raw.replace(',', '.'));
+    if (raw === '' || !Number.isFinite(answer)) return { ok: false, counted: false, summary: `Enter a number${grader.answer.unit ? ` in ${grader.answer.unit}` : ''}.`, details: [] };
+  }
+  if (grader.answer.kind === 'choice' && !raw) return { ok: false, counted: false, summary: 'Pick one of the options.', details: [] };
+  try {
+    const result = grader.grade({ state: widget?.getState() ?? {}, answer, params: exercise.params, tolerance: exercise.tolerance, hidden });
+    return { ...result, counted: true };
+  } catch (e) {
+    return { ok: false, counted: false, summary: `The grader could not check this answer (${e.message}).`, details: [] };
+  }
+}
+
+function showFeedback(box, result) {
+  box.className = `exercise-feedback ${result.ok ? 'ok' : 'wrong'}`;
+  box.replaceChildren(el('p', { textContent: result.summary }), ...(result.details.length ? [el('ul', {}, ...result.details.map((d) => el('li', { textContent: d })))] : []));
+}
+
+function closeCurrent() {
+  current?.widget?.dispose();
+  current?.preview?.dispose?.();
+  delete registry.widgets?.exercise;
+  current = null;
+}
+
+async function openExercise(exercise, { focus = false } = {}) {
+  closeCurrent();
+  const grader = GRADERS[exercise.grader];
+  const hidden = grader.hide?.(exercise.params);
+  current = { exercise, widget: null, preview: null, hidden };
+  registry.exercise = { id: exercise.id, hidden, ready: false }; // for tests: what a hidden question drew, and when it is up
+  const heading = el('h2', { tabIndex: -1, textContent: exercise.title });
+  const chapter = CHAPTERS.find((c) => c.key === exercise.chapter);
+  const meta = el('p', { className: 'exercise-meta' });
+  const prompt = el('p', { className: 'exercise-prompt', textContent: exercise.prompt });
+  const pictures = el('div', { className: 'exercise-pictures' });
+  const field = answerField(exercise, grader);
+  const feedback = el('div', { className: 'exercise-feedback', role: 'status' });
+  feedback.setAttribute('aria-live', 'polite');
+  const form = el('form', { className: 'exercise-form' }, field.node, el('button', { type: 'submit', className: 'exercise-check', textContent: 'Check' }));
+  form.addEventListener('submit', (e) => {
+    e.preventDefault();
+    const result = check(field.read);
+    if (result.counted) {
+      progress.record(exercise.id, result.ok);
+      renderStatus();
+      renderList();
+    }
+    showFeedback(feedback, result);
+  });
+  const slot = el('div', { className: 'exercise-widget' });
+  articleEl.replaceChildren(
+    el('p', { className: 'exercise-chapter', textContent: `Chapter ${CHAPTERS.indexOf(chapter) + 1}: ${chapter.title}` }),
+    heading, meta, prompt, pictures, form, feedback, slot,
+  );
+  renderStatus();
+  renderList();
+  if (focus) heading.focus(); // a chosen exercise takes the focus; the first one shown on load does not
+  current.preview = createPreview(pictures, exercise, hidden);
+  if (!exercise.widget) {
+    registry.exercise.ready = true;
+    return;
+  }
+  if (exercise.locked.length) {
+    const schema = await schemaOf(exercise.widget);
+    const names = exercise.locked.map((k) => schema[k].label ?? k);
+    slot.append(el('p', { className: 'exercise-locked', textContent: `Fixed by the exercise (greyed out below): ${names.join(', ')}.` }));
+  }
+  const mine = current;
+  const widget = await mountWidget(slot, exercise.widget, {
+    prefix: 'exercise',
+    syncUrl: false,
+    state: exercise.state,
+    locked: exercise.locked,
+    onStateChange: (state) => mine.preview?.update(state),
+  });
+  if (current !== mine) return widget.dispose(); // another exercise was opened meanwhile
+  current.widget = widget;
+  current.preview?.update(widget.getState());
+  registry.exercise.ready = true;
+}
+
+function route(event) {
+  const id = decodeURIComponent(location.hash.slice(1));
+  const exercise = exercises.find((e) => e.id === id) ?? exercises[0];
+  if (!exercise) {
+    closeCurrent();
+    articleEl.replaceChildren(el('p', { textContent: 'No exercises to show.' }));
+    renderList();
+    return;
+  }
+  if (current?.exercise !== exercise) openExercise(exercise, { focus: event?.type === 'hashchange' });
+}
+
+function useSet({ exercises: list, problems }) {
+  exercises = list;
+  showProblems(problems);
+  closeCurrent();
+  route();
+}
+
+window.addEventListener('hashchange', route);
+
+// A lecturer's own file, chosen or dropped: it replaces the list shown.
+async function readFile(file) {
+  const got = parseJson(await file.text());
+  useSet(got.error
+    ? { exercises: [], problems: [{ source: file.name, errors: [`${file.name} ${got.error}`] }] }
+    : await readExerciseSet(got.json, { source: file.name, schemaOf }));
+}
+document.getElementById('exercise-file').addEventListener('change', (e) => e.target.files[0] && readFile(e.target.files[0]));
+const drop = document.getElementById('exercise-drop');
+drop.addEventListener('dragover', (e) => {
+  e.preventDefault();
+  drop.classList.add('dragging');
+});
+drop.addEventListener('dragleave', () => drop.classList.remove('dragging'));
+drop.addEventListener('drop', (e) => {
+  e.preventDefault();
+  drop.classList.remove('dragging');
+  if (e.dataTransfer.files[0]) readFile(e.dataTransfer.files[0]);
+});
+
+const src = new URLSearchParams(location.search).get('src');
+useSet(await loadExerciseSet(src || 'exercises/index.json', { schemaOf }));

@@ -1,0 +1,180 @@
+// The exercises page in Chromium: every shipped exercise solved through its controls (lil-gui, the answer
+// box, the options) and graded right; a wrong answer graded wrong with feedback naming what is off; locked
+// controls stay put; progress survives a reload and Reset clears it; bad files show their errors.
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { getState, launchBrowser, open, setControl, settle } from './helpers.js';
+
+const DEG = Math.PI / 180;
+let browser;
+beforeAll(async () => {
+  browser = await launchBrowser();
+});
+afterAll(async () => {
+  await browser?.close();
+});
+
+/** Opens an exercise from the list, as a reader would, and waits for its widget (if any). */
+async function choose(page, id, { keyboard = false } = {}) {
+  if (keyboard) {
+    await page.focus(`#exercise-list a[href="#${id}"]`);
+    await page.keyboard.press('Enter');
+  } else await page.click(`#exercise-list a[href="#${id}"]`);
+  await page.waitForFunction((i) => globalThis.__shadingLab.exercise?.id === i && globalThis.__shadingLab.exercise.ready, { timeout: 30_000 }, id);
+  await settle(page, 300);
+}
+
+async function typeAnswer(page, text) {
+  await page.$eval('#exercise-answer', (el) => { el.value = ''; });
+  await page.type('#exercise-answer', text);
+}
+
+/** Presses Check (or Enter in the answer box) and returns { ok, text } of the feedback. */
+async function check(page, { enter = false } = {}) {
+  if (enter) await page.keyboard.press('Enter');
+  else await page.click('.exercise-check');
+  await page.waitForSelector('.exercise-feedback.ok, .exercise-feedback.wrong');
+  return page.$eval('.exercise-feedback', (el) => ({ ok: el.classList.contains('ok'), text: el.textContent }));
+}
+
+const control = (page, label, value) => setControl(page, label, value, '.exercise-widget');
+
+describe('exercises', () => {
+  it('solves each exercise through its controls, and grades a wrong answer wrong with what is off', async () => {
+    const page = await open(browser, 'exercises.html', { width: 1280, height: 1000 });
+    await page.waitForSelector('#exercise-list a');
+    expect(await page.$$eval('#exercise-list a', (as) => as.length)).toBe(10);
+
+    await choose(page, 'water-red-depth');
+    await typeAnswer(page, '5');
+    let r = await check(page, { enter: true });
+    expect(r.ok).toBe(false);
+    expect(r.text).toMatch(/5 m is too low by 9\.52 m/);
+    await typeAnswer(page, '14.5');
+    expect((await check(page)).ok).toBe(true);
+    // a locked control: disabled, and a forced change is ignored
+    expect(await page.$eval('.exercise-widget .lil-controller.locked select', (s) => s.disabled)).toBe(true);
+    await page.$eval('.exercise-widget .lil-controller.locked select', (s) => {
+      s.selectedIndex = 3;
+      s.dispatchEvent(new Event('change'));
+    });
+    expect((await getState(page, 'exercise')).view).toBe('one');
+
+    await choose(page, 'lake-mirror', { keyboard: true });
+    expect(await page.evaluate(() => document.activeElement.textContent)).toBe('When does a lake become a mirror?'); // the heading takes the focus
+    r = await check(page);
+    expect(r.ok).toBe(false);
+    expect(r.text).toContain('points below the target 25%');
+    expect(r.text).toContain('Raise the angle of incidence.');
+    await control(page, 'Angle of incidence (°)', 77);
+    expect((await check(page)).ok).toBe(true);
+
+    await choose(page, 'match-sphere');
+    await control(page, 'F0', 0.5);
+    await control(page, 'A: roughness α (GGX)', 0.1);
+    r = await check(page);
+    expect(r.ok).toBe(false);
+    expect(r.text).toMatch(/RMS error 0\.\d+ \(display value 0–1\), needs < 0\.012/);
+    expect(r.text).toContain('Roughness too low.');
+    await control(page, 'A: roughness α (GGX)', 0.2);
+    expect((await check(page)).ok).toBe(true);
+
+    await choose(page, 'masking-grazing');
+    r = await check(page);
+    expect(r.ok).toBe(false);
+    expect(r.text).toContain('view the surface at a more grazing angle');
+    await control(page, 'View angle θv (°)', 77);
+    expect((await check(page)).ok).toBe(true);
+
+    await choose(page, 'furnace-loss');
+    await typeAnswer(page, '10');
+    expect((await check(page)).text).toMatch(/10% is too low by 21\.\d%/);
+    await typeAnswer(page, '31');
+    expect((await check(page)).ok).toBe(true);
+
+    await choose(page, 'red-zone');
+    r = await check(page);
+    expect(r.ok).toBe(false);
+    expect(r.text).toContain('the object is green');
+    await control(page, 'Light θ from view (°)', 160);
+    expect((await check(page)).ok).toBe(true);
+
+    await choose(page, 'schlick-worst');
+    await typeAnswer(page, '45');
+    expect((await check(page)).text).toMatch(/45° is too low by 40°/);
+    await typeAnswer(page, '85');
+    expect((await check(page)).ok).toBe(true);
+
+    await choose(page, 'which-ndf');
+    const hidden = await page.evaluate(() => globalThis.__shadingLab.exercise.hidden);
+    const NAMES = { ggx: 'GGX', beckmann: 'Beckmann', blinnPhong: 'Blinn-Phong', abc: 'ABC', sgd: 'Shifted gamma (SGD)' };
+    const wrongPick = ['beckmann', 'blinnPhong'].includes(hidden) ? 'ggx' : 'beckmann';
+    await page.click(`input[name=answer][value=${wrongPick}]`);
+    r = await check(page);
+    expect(r.ok).toBe(false);
+    expect(r.text).toContain(`${NAMES[wrongPick]}’s profile is`);
+    await page.click(`input[name=answer][value=${hidden}]`);
+    expect((await check(page)).ok).toBe(true);
+
+    await choose(page, 'separable-smith');
+    const [c, a] = [Math.cos(80 * DEG), 0.5];
+    const R = Math.sqrt(a * a + (1 - a * a) * c * c);
+    await typeAnswer(page, '1');
+    expect((await check(page)).text).toContain('1 is too high by');
+    await typeAnswer(page, ((4 * c * R) / (c + R) ** 2).toFixed(2));
+    expect((await check(page)).ok).toBe(true);
+
+    await choose(page, 'lambert-brightness');
+    await typeAnswer(page, (1.5 * Math.PI).toFixed(3));
+    expect((await check(page)).text).toContain('π times too bright');
+    await typeAnswer(page, '1.5');
+    expect((await check(page)).ok).toBe(true);
+
+    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('10 of 10 solved');
+    expect(page.errors).toEqual([]);
+
+    // progress survives a reload; Reset (confirmed) clears it
+    await page.reload({ waitUntil: 'load' });
+    await page.waitForSelector('#exercise-list a');
+    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('10 of 10 solved');
+    expect(await page.$eval('#exercise-list a[href="#lake-mirror"]', (a) => a.parentElement.textContent)).toContain('✓ solved');
+    page.once('dialog', (d) => d.accept());
+    await page.click('.exercise-reset');
+    await settle(page, 100);
+    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 10 solved');
+    await page.reload({ waitUntil: 'load' });
+    await page.waitForSelector('#exercise-list a');
+    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 10 solved');
+    expect(page.errors).toEqual([]);
+    await page.close();
+  }, 240_000);
+
+  it('shows a bad set’s errors on the page and keeps its good exercises', async () => {
+    const set = [
+      { id: 'good', chapter: 'diffuse', title: 'Good', prompt: 'Lo?', grader: 'lambert-radiance', params: { cLight: 1, thetaDeg: 0 }, tolerance: 0.1 },
+      { id: 'bad', chapter: 'media', title: 'Bad', prompt: 'x', widget: 'media', state: { depth: 1 }, grader: 'guess' },
+    ];
+    const page = await open(browser, `exercises.html?src=${encodeURIComponent(`data:application/json,${JSON.stringify(set)}`)}`);
+    await page.waitForSelector('.notice-error');
+    const text = await page.$eval('#exercise-problems', (el) => el.textContent);
+    expect(text).toContain('data URL #2: 3 problems, not loaded');
+    expect(text).toContain('tolerance: missing (a positive number)');
+    expect(text).toContain('grader: unknown grader "guess"');
+    expect(text).toContain('state.depth: unknown key for widget "media"');
+    expect(await page.$$eval('#exercise-list a', (as) => as.map((a) => a.textContent))).toEqual(['Good']);
+    await typeAnswer(page, '1');
+    expect((await check(page)).ok).toBe(true);
+
+    // a dropped (chosen) file that is not JSON
+    const file = join(tmpdir(), 'not-json.json');
+    writeFileSync(file, '{ "id": ');
+    const input = await page.$('#exercise-file');
+    await input.uploadFile(file);
+    await page.waitForFunction(() => document.querySelector('#exercise-problems').textContent.includes('not-json.json is not valid JSON'));
+    expect(await page.$eval('#exercise', (el) => el.textContent)).toBe('No exercises to show.');
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+});
