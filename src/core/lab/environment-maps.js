@@ -1,6 +1,7 @@
 // What image-based lighting needs on the GPU, made once per environment and kept: the environment as an
 // equirectangular half-float map with mips, its GGX-prefiltered layers and its irradiance for the split
-// sum, the DFG table computed by src/math's dfgSplitSum, and three.js's PMREM of it for comparison.
+// sum, tables to sample it by brightness, and three.js's PMREM of it for comparison. Also the DFG table,
+// computed by src/math's dfgSplitSum, which does not depend on the environment.
 import * as THREE from 'three';
 import { RoomEnvironment } from 'three/examples/jsm/environments/RoomEnvironment.js';
 import { assembleGlsl } from '../glsl.js';
@@ -29,7 +30,14 @@ export function dfgTableData() {
   return (dfgTable = { data, size: DFG_SIZE });
 }
 
-const halfTexture = ({ data, width, height }) => {
+/** The DFG table as a filtered texture (half float), one per renderer. */
+export function createDfgTexture() {
+  const dfg = halfTexture({ data: dfgTableData().data, width: DFG_SIZE, height: DFG_SIZE });
+  dfg.wrapS = THREE.ClampToEdgeWrapping;
+  return dfg;
+}
+
+function halfTexture({ data, width, height }) {
   const half = new Uint16Array(data.length);
   for (let i = 0; i < data.length; i++) half[i] = THREE.DataUtils.toHalfFloat(Math.min(data[i], 65000));
   const t = new THREE.DataTexture(half, width, height, THREE.RGBAFormat, THREE.HalfFloatType);
@@ -38,7 +46,7 @@ const halfTexture = ({ data, width, height }) => {
   t.wrapS = THREE.RepeatWrapping;
   t.needsUpdate = true;
   return t;
-};
+}
 
 const halfTarget = (w, h, options = {}) => new THREE.WebGLRenderTarget(w, h, {
   type: THREE.HalfFloatType, format: THREE.RGBAFormat, depthBuffer: false, magFilter: THREE.LinearFilter, minFilter: THREE.LinearFilter, wrapS: THREE.RepeatWrapping, ...options,
@@ -50,8 +58,6 @@ export function createEnvironmentMaps(renderer) {
     type: THREE.HalfFloatType, depthBuffer: false, magFilter: THREE.LinearFilter, minFilter: THREE.LinearFilter, wrapS: THREE.RepeatWrapping,
   });
   const irradiance = halfTarget(...IRRADIANCE_SIZE);
-  const dfg = halfTexture({ data: dfgTableData().data, width: DFG_SIZE, height: DFG_SIZE });
-  dfg.wrapS = THREE.ClampToEdgeWrapping;
 
   const quad = new THREE.Mesh(new THREE.PlaneGeometry(2, 2));
   quad.frustumCulled = false;
@@ -95,7 +101,6 @@ export function createEnvironmentMaps(renderer) {
 
   let pmremGenerator = null;
   let pmrem = null;
-  let version = 0;
 
   const prefilter = () => {
     ggx.uniforms.uSize.value.set(...PREFILTER_SIZE);
@@ -120,12 +125,7 @@ export function createEnvironmentMaps(renderer) {
     env: env.texture,
     prefiltered: prefiltered.texture,
     irradiance: irradiance.texture,
-    dfg,
     sampling,
-    /** Bumped whenever the maps change: views compare it to know when to redraw. */
-    get version() {
-      return version;
-    },
     /** Replaces the environment: 'studio', or pixels { data, width, height } (sky, furnace, a user's file). */
     load(source) {
       const previous = renderer.getRenderTarget();
@@ -145,7 +145,6 @@ export function createEnvironmentMaps(renderer) {
       renderer.setRenderTarget(previous);
       pmrem?.dispose();
       pmrem = null;
-      version++;
     },
     /** three.js's PMREM of the current environment, made when first asked for. */
     pmrem() {
@@ -155,7 +154,7 @@ export function createEnvironmentMaps(renderer) {
       return pmrem.texture;
     },
     dispose() {
-      [env, prefiltered, irradiance, dfg, sampling.marginal, sampling.conditional, sampling.pdf, copyFlat, copyCube, ggx, cosine, quad.geometry].forEach((x) => x.dispose());
+      [env, prefiltered, irradiance, sampling.marginal, sampling.conditional, sampling.pdf, copyFlat, copyCube, ggx, cosine, quad.geometry].forEach((x) => x.dispose());
       pmrem?.dispose();
       pmremGenerator?.dispose();
     },

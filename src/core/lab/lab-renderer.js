@@ -1,6 +1,7 @@
 // Renders the material lab's sphere: once by the chosen approximations, once as a converging Monte Carlo
 // reference (batches averaged in a float target), and their difference, summed on the GPU to an RMS error.
-// A scene is { material, terms, lights, methods } (see sceneDefines); all images are res × res, linear radiance.
+// A scene is { material, terms, lights, methods, maps } (see sceneDefines; maps: its environment-maps.js maps);
+// `slots` approximations can be kept side by side. Images are res × res, linear radiance.
 import * as THREE from 'three';
 import { assembleGlsl } from '../glsl.js';
 import { SHADER_CHUNKS } from '../shader-chunks.js';
@@ -38,9 +39,9 @@ export function sceneDefines(scene, reference) {
   return d;
 }
 
-export function createLabRenderer(renderer, maps, resolution) {
+export function createLabRenderer(renderer, dfg, resolution, slots = 1) {
   const res = resolution;
-  const approx = new THREE.WebGLRenderTarget(res, res, { type: THREE.HalfFloatType, depthBuffer: false, magFilter: THREE.NearestFilter, minFilter: THREE.NearestFilter });
+  const approxTargets = Array.from({ length: slots }, () => new THREE.WebGLRenderTarget(res, res, { type: THREE.HalfFloatType, depthBuffer: false, magFilter: THREE.NearestFilter, minFilter: THREE.NearestFilter }));
   const ping = [floatTarget(res, res), floatTarget(res, res)];
   const errorTarget = floatTarget(res, res);
   const sum = createGpuSum(renderer);
@@ -54,9 +55,9 @@ export function createLabRenderer(renderer, maps, resolution) {
     uAlpha: { value: 0.3 }, uSigma: { value: 0 }, uExponent: { value: 40 }, uA1: { value: 20 }, uA2: { value: 2.5 }, uSgdP: { value: 0.64 },
     uPunctualDir: { value: new THREE.Vector3(0, 0, 1) }, uPunctualCLight: { value: new THREE.Vector3() },
     uSphereDir: { value: new THREE.Vector3(0, 0, 1) }, uSphereSin: { value: 0.1 }, uSphereRadiance: { value: new THREE.Vector3() },
-    uEnv: { value: maps.env }, uEnvIntensity: { value: 1 }, uAmbient: { value: new THREE.Vector3() },
-    uPrefiltered: { value: maps.prefiltered }, uPrefilterLevels: { value: PREFILTER_LEVELS }, uIrradiance: { value: maps.irradiance }, uDfg: { value: maps.dfg },
-    uEnvMarginal: { value: maps.sampling.marginal }, uEnvConditional: { value: maps.sampling.conditional }, uEnvPdf: { value: maps.sampling.pdf }, uEnvSampling: { value: false },
+    uEnv: { value: null }, uEnvIntensity: { value: 1 }, uAmbient: { value: new THREE.Vector3() },
+    uPrefiltered: { value: null }, uPrefilterLevels: { value: PREFILTER_LEVELS }, uIrradiance: { value: null }, uDfg: { value: dfg },
+    uEnvMarginal: { value: null }, uEnvConditional: { value: null }, uEnvPdf: { value: null }, uEnvSampling: { value: false },
     uSamples: { value: 16 }, uJitter: { value: new THREE.Vector2() }, uPrevious: { value: null }, uWeight: { value: 1 },
   };
   const program = (defines) => {
@@ -70,7 +71,7 @@ export function createLabRenderer(renderer, maps, resolution) {
     return programs.get(key);
   };
   const errorPass = new THREE.ShaderMaterial({
-    glslVersion: THREE.GLSL3, uniforms: { uImage: { value: approx.texture }, uOther: { value: null } }, vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
+    glslVersion: THREE.GLSL3, uniforms: { uImage: { value: null }, uOther: { value: null } }, vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
     fragmentShader: assembleGlsl(SHADER_CHUNKS['lab-error.frag.glsl']), depthTest: false, depthWrite: false,
   });
 
@@ -83,6 +84,13 @@ export function createLabRenderer(renderer, maps, resolution) {
 
   const setUniforms = (scene) => {
     const { material, lights } = scene;
+    const m = scene.maps;
+    uniforms.uEnv.value = m.env;
+    uniforms.uPrefiltered.value = m.prefiltered;
+    uniforms.uIrradiance.value = m.irradiance;
+    uniforms.uEnvMarginal.value = m.sampling.marginal;
+    uniforms.uEnvConditional.value = m.sampling.conditional;
+    uniforms.uEnvPdf.value = m.sampling.pdf;
     uniforms.uF0.value.set(...material.f0);
     uniforms.uDiffuseColor.value.set(...material.diffuse);
     uniforms.uAlpha.value = material.alpha;
@@ -98,7 +106,7 @@ export function createLabRenderer(renderer, maps, resolution) {
       uniforms.uSphereRadiance.value.set(...lights.sphere.radiance);
     }
     uniforms.uEnvIntensity.value = lights.env?.intensity ?? 0;
-    uniforms.uEnvSampling.value = Boolean(lights.env) && maps.sampling.usable;
+    uniforms.uEnvSampling.value = Boolean(lights.env) && m.sampling.usable;
     uniforms.uAmbient.value.set(...(lights.ambient ?? [0, 0, 0]));
   };
   const draw = (material, target) => {
@@ -108,22 +116,23 @@ export function createLabRenderer(renderer, maps, resolution) {
   };
   const pixel = new Float32Array(4);
   const halfPixel = new Uint16Array(4);
-  const sync = (target) => renderer.readRenderTargetPixels(target, 0, 0, 1, 1, target === approx ? halfPixel : pixel);
+  const sync = (target) => renderer.readRenderTargetPixels(target, 0, 0, 1, 1, target.texture.type === THREE.HalfFloatType ? halfPixel : pixel);
 
   let batches = 0;
   let current = 0;
 
   return {
     resolution: res,
-    approx: approx.texture,
+    approx: (slot = 0) => approxTargets[slot].texture,
     get reference() {
       return ping[current].texture;
     },
     get batches() {
       return batches;
     },
-    /** Renders the approximation; returns its GPU time in ms (the draw, waited for by a 1-texel read). */
-    renderApprox(scene) {
+    /** Renders an approximation into `slot`; returns its GPU time in ms (the draw, waited for by a 1-texel read). */
+    renderApprox(scene, slot = 0) {
+      const approx = approxTargets[slot];
       setUniforms(scene);
       uniforms.uSamples.value = scene.methods.samples;
       sync(errorTarget); // finish earlier work so it is not counted
@@ -131,7 +140,7 @@ export function createLabRenderer(renderer, maps, resolution) {
       draw(program(sceneDefines(scene, false)), approx);
       if (scene.lights.env && scene.methods.env === 'pmrem') {
         const { f0, diffuse, alpha } = scene.material;
-        pmremMaterial.envMap = maps.pmrem();
+        pmremMaterial.envMap = scene.maps.pmrem();
         pmremMaterial.envMapIntensity = scene.lights.env.intensity;
         const layers = scene.terms.layers;
         pmremMaterial.color.setRGB(...(layers === 'specular' ? [0, 0, 0] : diffuse), THREE.LinearSRGBColorSpace);
@@ -162,17 +171,18 @@ export function createLabRenderer(renderer, maps, resolution) {
       batches++;
     },
     /** RMS error of the approximation against the reference over the sphere, absolute and relative. */
-    error() {
+    error(slot = 0) {
+      errorPass.uniforms.uImage.value = approxTargets[slot].texture;
       errorPass.uniforms.uOther.value = ping[current].texture;
       draw(errorPass, errorTarget);
       const [sq, ref, count] = sum.sum(errorTarget);
       renderer.setRenderTarget(null);
       return { rms: Math.sqrt(sq / Math.max(count, 1)), relative: ref > 0 ? Math.sqrt(sq / ref) : 0, pixels: count };
     },
-    /** Reads an image back (tests, CSV): 'approx' or 'reference', RGBA float per pixel. */
-    read(which) {
+    /** Reads an image back (tests): 'approx' (of `slot`) or 'reference', RGBA float per pixel. */
+    read(which, slot = 0) {
       const out = new Float32Array(res * res * 4);
-      const target = which === 'approx' ? approx : ping[current];
+      const target = which === 'approx' ? approxTargets[slot] : ping[current];
       if (which === 'approx') {
         const half = new Uint16Array(res * res * 4);
         renderer.readRenderTargetPixels(target, 0, 0, res, res, half);
@@ -184,7 +194,7 @@ export function createLabRenderer(renderer, maps, resolution) {
       return programs.size;
     },
     dispose() {
-      [approx, ...ping, errorTarget, errorPass, pmremMaterial, pmremSphere.geometry, quad.geometry].forEach((x) => x.dispose());
+      [...approxTargets, ...ping, errorTarget, errorPass, pmremMaterial, pmremSphere.geometry, quad.geometry].forEach((x) => x.dispose());
       programs.forEach((p) => p.dispose());
       sum.dispose();
     },

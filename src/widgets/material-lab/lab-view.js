@@ -1,11 +1,11 @@
-// One canvas for the lab: a row of panels (approximation, reference, error), each a res × res image from the
+// One canvas for the lab: a row of panels (approximations, reference, errors), each a res × res image from the
 // lab renderer, drawn with the exposure (or on the error scale), with HTML captions. Also owns the GPU side:
-// environment maps, the lab renderer, and loading environments on first use.
+// the lab renderer, and each environment's maps, made when first asked for and kept for switching back.
 import * as THREE from 'three';
 import { createViewport } from '../../core/viewport.js';
 import { assembleGlsl } from '../../core/glsl.js';
 import { SHADER_CHUNKS } from '../../core/shader-chunks.js';
-import { createEnvironmentMaps } from '../../core/lab/environment-maps.js';
+import { createDfgTexture, createEnvironmentMaps } from '../../core/lab/environment-maps.js';
 import { createLabRenderer } from '../../core/lab/lab-renderer.js';
 import { FURNACE, skyPixels } from '../../core/lab/environments.js';
 
@@ -18,16 +18,19 @@ const viewMaterial = (defines) => new THREE.ShaderMaterial({
   depthWrite: false,
 });
 
+const BUILT_IN = { studio: () => 'studio', furnace: () => FURNACE, sky: () => skyPixels(512, 256, true), 'sky-no-sun': () => skyPixels(512, 256, false) };
+
 /**
- * frame(lab, maps) runs in each drawn frame and returns the panels to show: [{ image: 'approx' | 'reference' |
- * 'error', caption }]; it may call again() to ask for another frame (a converging reference).
+ * frame({ lab, environment, again }) runs in each drawn frame and returns the panels to show: [{ image:
+ * 'approx' | 'reference' | 'error', slot, caption }]. environment(key, pixels?) gives the maps of a built-in
+ * environment or of pixels (a file) under `key`; again() asks for another frame (a converging reference).
  */
-export function createLabView(container, { label, resolution, frame }) {
+export function createLabView(container, { label, resolution, slots = 1, frame }) {
   const captions = document.createElement('div');
   captions.className = 'lab-captions';
   let lab = null;
-  let maps = null;
-  let loaded = null;
+  let dfg = null;
+  const environments = new Map(); // key -> { maps, pixels }
   const tone = viewMaterial({});
   const error = viewMaterial({ ERROR_VIEW: 1 });
   const quad = new THREE.Mesh(new THREE.PlaneGeometry(2, 2));
@@ -38,11 +41,21 @@ export function createLabView(container, { label, resolution, frame }) {
   let again = false;
   let settings = { exposure: 1, errorScale: 0.1 };
 
+  const environment = (renderer) => (key, pixels = null) => {
+    let entry = environments.get(key);
+    if (!entry) environments.set(key, (entry = { maps: createEnvironmentMaps(renderer), pixels: undefined }));
+    if (entry.pixels !== pixels) {
+      entry.maps.load(pixels ?? BUILT_IN[key]());
+      entry.pixels = pixels;
+    }
+    return entry.maps;
+  };
+
   const draw = (renderer) => {
-    maps ??= createEnvironmentMaps(renderer);
-    lab ??= createLabRenderer(renderer, maps, resolution);
+    dfg ??= createDfgTexture();
+    lab ??= createLabRenderer(renderer, dfg, resolution, slots);
     again = false;
-    const panels = frame({ lab, maps, again: () => (again = true) });
+    const panels = frame({ lab, environment: environment(renderer), again: () => (again = true) });
     const pr = renderer.getPixelRatio();
     renderer.getSize(size);
     const w = size.x / panels.length;
@@ -51,7 +64,7 @@ export function createLabView(container, { label, resolution, frame }) {
       const side = Math.min(w, size.y);
       const rect = [i * w + (w - side) / 2, (size.y - side) / 2, side, side];
       const m = panel.image === 'error' ? error : tone;
-      m.uniforms.uImage.value = panel.image === 'reference' ? lab.reference : lab.approx;
+      m.uniforms.uImage.value = panel.image === 'reference' ? lab.reference : lab.approx(panel.slot ?? 0);
       m.uniforms.uOther.value = lab.reference;
       m.uniforms.uRect.value.set(...rect.map((x) => x * pr));
       m.uniforms.uExposure.value = settings.exposure;
@@ -80,13 +93,6 @@ export function createLabView(container, { label, resolution, frame }) {
       return lab;
     },
     resolution,
-    /** Makes environment `key` current ('studio', 'sky', 'sky-no-sun', 'furnace', or any key with its pixels); a no-op if it is. */
-    useEnvironment(key, pixels = null) {
-      if (!maps || loaded === key) return;
-      maps.load(pixels ?? (key === 'studio' ? 'studio' : key === 'furnace' ? FURNACE : skyPixels(512, 256, key !== 'sky-no-sun')));
-      loaded = key;
-    },
-    envVersion: () => maps?.version ?? 0,
     setDisplay(next) {
       settings = { ...settings, ...next };
       viewport?.invalidate();
@@ -97,8 +103,9 @@ export function createLabView(container, { label, resolution, frame }) {
     invalidate: () => viewport?.invalidate(),
     dispose() {
       [tone, error, quad.geometry].forEach((x) => x.dispose());
+      dfg?.dispose();
       lab?.dispose();
-      maps?.dispose();
+      environments.forEach((e) => e.maps.dispose());
       viewport?.dispose();
     },
   };

@@ -83,20 +83,20 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
   readout.className = 'lab-readout';
   readout.setAttribute('aria-live', 'polite');
   let filePixels = null;
-  let fileName = '';
+  let fileKey = ''; // a new key for every file taken, so a second file of the same name is used too
   let approxKey = '';
   let refKey = '';
   let stats = null;
   let ms = null;
 
-  const frame = ({ lab, again }) => {
+  const frame = ({ lab, environment, again }) => {
     const st = shell.state;
-    if (st.env) view.useEnvironment(st.environment === 'file' ? `file:${fileName}` : st.environment, st.environment === 'file' ? filePixels : null);
     const lights = lightsOf(st);
     const scene = labScene(st, lights);
-    const env = view.envVersion();
-    const aKey = JSON.stringify([scene, env]);
-    const rKey = JSON.stringify([scene.material, scene.terms, scene.lights, env]);
+    const envKey = st.env ? (st.environment === 'file' ? fileKey : st.environment) : 'none';
+    const aKey = JSON.stringify([scene, envKey]);
+    const rKey = JSON.stringify([scene.material, scene.terms, scene.lights, envKey]);
+    scene.maps = environment(st.env ? st.environment : 'furnace', st.env && st.environment === 'file' ? filePixels : null);
     if (aKey !== approxKey) {
       ms = lab.renderApprox(scene);
       approxKey = aKey;
@@ -164,7 +164,7 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
         shell.notices.show(`${e.message} Kept the current environment.`);
         return false;
       }
-      fileName = name;
+      fileKey = `file:${name}:${performance.now()}`;
       update({ env: true, environment: 'file' });
       view.invalidate();
       return true;
