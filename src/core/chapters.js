@@ -31,7 +31,7 @@ export const CHAPTERS = [
     title: 'From math to rendering',
     blurb: 'Punctual, image-based, area and ambient light, each against a converged reference.',
     page: 'rendering.html',
-    widgets: ['material-lab'],
+    widgets: ['material-lab', 'lighting-models'],
   },
   { key: 'performance', title: 'Performance and accuracy', blurb: 'Run time against error for every approximation.', page: 'performance.html' },
 ];

@@ -65,6 +65,11 @@ export const WIDGETS = {
     summary: 'A material under punctual, sphere, environment and ambient light: each approximation beside a converging Monte Carlo reference, with its error and cost.',
     load: () => import('./material-lab/material-lab.js'),
   },
+  'lighting-models': {
+    title: 'Lighting models',
+    summary: 'One material under a sky with a sun: general lighting, image-based, area, punctual and ambient light, each with its cost and error.',
+    load: () => import('./lighting-models/lighting-models.js'),
+  },
 };
 
 export const isWidgetName = (name) => Object.hasOwn(WIDGETS, name);

@@ -11,7 +11,7 @@ import { buildEnvSampling } from './env-sampling.js';
 
 export const ENV_SIZE = [256, 128]; // coarse enough that the reference converges on small bright lights, fine enough for a mirror
 export const PREFILTER_SIZE = [128, 64];
-export const PREFILTER_LEVELS = 5; // layer k at perceptual roughness k/5, alpha = (k/5)²; level 0 is the map itself
+export const PREFILTER_LEVELS = 8; // layer k at perceptual roughness k/8, alpha = (k/8)²; level 0 is the map itself
 const IRRADIANCE_SIZE = [32, 16];
 const DFG_SIZE = 32;
 

@@ -6,18 +6,15 @@ import { createWidgetShell } from '../../core/widget-shell.js';
 import { lightDirFromAngles } from '../../core/light-control.js';
 import { REFERENCE_BATCH } from '../../core/lab/lab-renderer.js';
 import { ENVIRONMENTS, MAX_FILE_BYTES, parseEnvironmentFile } from '../../core/lab/environments.js';
-import { MATERIAL_OPTIONS, labScene, sphereLight } from './lab-scene.js';
-import { createLabView } from './lab-view.js';
+import { MATERIAL_FIELDS, labScene, sphereLight } from '../../core/lab/lab-scene.js';
+import { createLabView } from '../../core/lab/lab-view.js';
 import { attachEnvironmentDrop } from './environment-drop.js';
 
 export const ENV_METHODS = { 'split-sum': 'Split sum (prefiltered + DFG)', importance: 'Importance sampling, N samples', mirror: 'Mirror: F(v, n) × environment', pmrem: 'three.js PMREM (MeshPhysicalMaterial)' };
 export const AREA_METHODS = { representative: 'Representative point (Karis)', centre: 'Punctual at the centre' };
 
 export const schema = {
-  material: { type: 'enum', options: MATERIAL_OPTIONS, default: 'custom', label: 'Material' },
-  f0: { type: 'number', min: 0, max: 1, step: 0.01, default: 0.04, label: 'Custom F0' },
-  diffuse: { type: 'color', default: '#b5532e', label: 'Diffuse colour' },
-  alpha: { type: 'number', min: 0, max: 1, step: 0.005, default: 0.25, label: 'Roughness α' },
+  ...MATERIAL_FIELDS,
   layers: { type: 'enum', options: { both: 'Specular + diffuse', specular: 'Specular only', diffuse: 'Diffuse only' }, default: 'both', label: 'Layers' },
   fresnel: { type: 'enum', options: { schlick: 'Schlick', one: 'F = 1' }, default: 'schlick', label: 'F' },
   ndf: { type: 'enum', options: { ggx: 'GGX', beckmann: 'Beckmann' }, default: 'ggx', label: 'D' },

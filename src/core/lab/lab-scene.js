@@ -2,11 +2,19 @@
 // terms, the lights that are on (directions in view space: z towards the viewer, y up) and the methods.
 import { METALS, NON_METALS, materialByKey, isMetal } from '../../math/materials.js';
 import { srgbToLinear } from '../../math/color.js';
-import { lightDirFromAngles } from '../../core/light-control.js';
+import { lightDirFromAngles } from '../light-control.js';
 
 export const MATERIAL_OPTIONS = {
   custom: 'Custom (F0 and diffuse below)',
   ...Object.fromEntries([...METALS, ...NON_METALS].map((m) => [m.key, `${m.name} (${isMetal(m.key) ? 'metal' : 'non-metal'})`])),
+};
+
+/** The material fields every lab widget's schema shares. */
+export const MATERIAL_FIELDS = {
+  material: { type: 'enum', options: MATERIAL_OPTIONS, default: 'custom', label: 'Material' },
+  f0: { type: 'number', min: 0, max: 1, step: 0.01, default: 0.04, label: 'Custom F0' },
+  diffuse: { type: 'color', default: '#b5532e', label: 'Diffuse colour' },
+  alpha: { type: 'number', min: 0, max: 1, step: 0.005, default: 0.25, label: 'Roughness α' },
 };
 
 const hexToLinear = (hex) => [1, 3, 5].map((i) => srgbToLinear(parseInt(hex.slice(i, i + 2), 16) / 255));

@@ -2,12 +2,12 @@
 // lab renderer, drawn with the exposure (or on the error scale), with HTML captions. Also owns the GPU side:
 // the lab renderer, and each environment's maps, made when first asked for and kept for switching back.
 import * as THREE from 'three';
-import { createViewport } from '../../core/viewport.js';
-import { assembleGlsl } from '../../core/glsl.js';
-import { SHADER_CHUNKS } from '../../core/shader-chunks.js';
-import { createDfgTexture, createEnvironmentMaps } from '../../core/lab/environment-maps.js';
-import { createLabRenderer } from '../../core/lab/lab-renderer.js';
-import { FURNACE, skyPixels } from '../../core/lab/environments.js';
+import { createViewport } from '../viewport.js';
+import { assembleGlsl } from '../glsl.js';
+import { SHADER_CHUNKS } from '../shader-chunks.js';
+import { createDfgTexture, createEnvironmentMaps } from './environment-maps.js';
+import { createLabRenderer } from './lab-renderer.js';
+import { FURNACE, skyPixels } from './environments.js';
 
 const viewMaterial = (defines) => new THREE.ShaderMaterial({
   glslVersion: THREE.GLSL3,

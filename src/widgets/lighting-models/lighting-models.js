@@ -1,0 +1,127 @@
+// lighting-models: the talk's ladder of illumination models on one material under one sky with a sun. General
+// lighting (the reference: Monte Carlo over the sky and the sun's disc), then image-based lighting (the whole sky,
+// sun included, by the split sum), an area light (the sun as a sphere light), a punctual light (the sun as a
+// point) and ambient light (one constant for everything), each with its GPU time and its error.
+import { createWidgetShell } from '../../core/widget-shell.js';
+import { REFERENCE_BATCH } from '../../core/lab/lab-renderer.js';
+import { MATERIAL_FIELDS, materialOf } from '../../core/lab/lab-scene.js';
+import { createLabView } from '../../core/lab/lab-view.js';
+import { SUN, skyPixels } from '../../core/lab/environments.js';
+import { sphereLightCLight } from '../../math/lighting.js';
+
+export const schema = {
+  ...MATERIAL_FIELDS,
+  // a dark, fairly smooth dielectric by default: the sun's highlight is where the models differ most
+  diffuse: { ...MATERIAL_FIELDS.diffuse, default: '#2f4f7f' },
+  alpha: { ...MATERIAL_FIELDS.alpha, default: 0.1 },
+  show: { type: 'enum', options: { images: 'Images', errors: 'Error images' }, default: 'images', label: 'Show' },
+  refSamples: { type: 'enum', options: { 128: '128', 512: '512', 2048: '2048' }, default: '512', label: 'Reference samples / pixel' },
+  exposure: { type: 'number', min: 0.1, max: 8, step: 0.05, default: 0.8, label: 'Exposure' },
+  errorScale: { type: 'number', min: 0.005, max: 1, step: 0.005, default: 0.1, label: 'Error image: full scale' },
+};
+
+const sunCLight = SUN.radiance.map((L) => sphereLightCLight(L, SUN.sin));
+
+/** The mean radiance of the sky, sun included, over the whole sphere: the one number ambient light keeps. */
+function skyMean() {
+  const { data, width, height } = skyPixels(256, 128, true);
+  const sum = [0, 0, 0];
+  let weight = 0;
+  for (let j = 0; j < height; j++) {
+    const w = Math.cos(((j + 0.5) / height - 0.5) * Math.PI);
+    for (let i = 0; i < width; i++) for (let c = 0; c < 3; c++) sum[c] += data[(j * width + i) * 4 + c] * w;
+    weight += w * width;
+  }
+  return sum.map((x) => x / weight);
+}
+
+const sky = { intensity: 1 };
+const sunSphere = { dir: SUN.dir, sin: SUN.sin, radiance: SUN.radiance };
+// each model: its lights, which map its sky is (with the sun painted in, or without), and where it fails
+export const MODELS = [
+  { key: 'ibl', name: 'Image-based', lights: { env: sky }, map: 'sky', fails: 'The sun is one more bright patch of a prefiltered map: its highlight is blurred by the map’s resolution and the prefilter assumes n = v = r, wrong at grazing angles.' },
+  { key: 'area', name: 'Area light + IBL sky', lights: { env: sky, sphere: sunSphere }, map: 'sky-no-sun', fails: 'The representative point reshapes the highlight for the sun’s size, with an energy factor that is only approximate; the sky is still prefiltered.' },
+  { key: 'punctual', name: 'Punctual light + IBL sky', lights: { env: sky, punctual: { dir: SUN.dir, cLight: sunCLight } }, map: 'sky-no-sun', fails: 'The sun has no size: on smooth surfaces its highlight is a needle far too bright and far too small.' },
+  { key: 'ambient', name: 'Ambient only', lights: { ambient: skyMean() }, map: 'furnace', fails: 'No direction at all: no shading from the sun, no sky-to-ground gradient, no reflections.' },
+];
+
+const ABOUT =
+  'The same sphere under the same sky, lit five ways. The first image solves the reflectance equation over all ' +
+  'incoming light (the sky and the sun’s disc) by Monte Carlo: the general illumination model, what a path ' +
+  'tracer would converge to. The others are what real-time renderers do instead: prefilter the whole sky into an ' +
+  'environment map (image-based lighting), or keep the sun apart as an area light or as a punctual light and ' +
+  'prefilter only the sky, or replace everything by one ambient colour. The table gives what each costs on this ' +
+  'GPU and how far it lands from the reference. Try a smooth metal (gold, α 0.05) and a rough dielectric.';
+
+const TERMS = { F: 'schlick', D: 'ggx', V: 'smithGGXCorrelated', diffuse: 'lambert', layers: 'both' };
+const METHODS = { env: 'split-sum', area: 'representative', samples: 1 };
+const fmt = (x, digits = 3) => (Number.isFinite(x) ? x.toPrecision(digits) : '—');
+
+export function createLightingModels(container, initialState = {}, { onStateChange } = {}) {
+  const shell = createWidgetShell(container, { name: 'lighting-models', schema, initialState, about: ABOUT, terms: ['dfgSplitSum', 'sphereLightRepresentativeDir', 'sphereLightNormalization', 'sphereLightCLight', 'sampleCone'] });
+  const table = document.createElement('div');
+  table.className = 'lab-readout';
+  let results = [];
+  let samples = 0;
+  let approxKey = '';
+  let refKey = '';
+  const costs = [];
+
+  const frame = ({ lab, environment, again }) => {
+    const st = shell.state;
+    const material = materialOf(st);
+    const scene = (lights, map) => ({ material, terms: TERMS, lights, methods: METHODS, maps: environment(map) });
+    const key = JSON.stringify(material);
+    if (key !== approxKey) {
+      MODELS.forEach((m, slot) => (costs[slot] = lab.renderApprox(scene(m.lights, m.map), slot)));
+      approxKey = key;
+    }
+    if (key !== refKey) {
+      lab.resetReference();
+      refKey = key;
+    }
+    if (lab.batches * REFERENCE_BATCH < Number(st.refSamples)) {
+      lab.accumulate(scene({ env: sky, sphere: sunSphere }, 'sky-no-sun'));
+      again();
+    }
+    samples = lab.batches * REFERENCE_BATCH;
+    results = MODELS.map((m, slot) => ({ ...m, ...lab.error(slot), ms: costs[slot] }));
+    showTable(st);
+    const image = st.show === 'errors' ? 'error' : 'approx';
+    return [
+      { image: 'reference', caption: `General (reference)` },
+      ...MODELS.map((m, slot) => ({ image, slot, caption: m.name })),
+    ];
+  };
+
+  const showTable = (st) => {
+    table.innerHTML = `<table class="data-table compact"><caption>Against the reference (${samples} of ${st.refSamples} samples per pixel${samples < Number(st.refSamples) ? ', still converging' : ''})</caption>
+      <thead><tr><th>Illumination model</th><th>GPU time (${view.resolution}² px)</th><th>RMS error</th><th>relative</th><th>Where it fails</th></tr></thead><tbody>
+      ${results.map((r) => `<tr><th scope="row">${r.name}</th><td>${fmt(r.ms)} ms</td><td>${fmt(r.rms)}</td><td>${fmt(r.relative * 100)} %</td><td>${r.fails}</td></tr>`).join('')}
+      </tbody></table>`;
+    view.canvas?.setAttribute('aria-label', `Lighting models: a sphere (${st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material}, roughness α ${st.alpha}) under a sky with a sun, by the reference and four illumination models. Relative RMS errors: ${results.map((r) => `${r.name} ${fmt(r.relative * 100)} %`).join(', ')}.`);
+  };
+
+  const view = createLabView(shell.view, { label: 'Lighting models', resolution: 160, slots: MODELS.length, frame });
+  view.setAspect(MODELS.length + 1);
+  shell.view.append(table);
+  const onChanged = () => view.setDisplay({ exposure: shell.state.exposure, errorScale: shell.state.errorScale });
+  const update = shell.connect({ title: 'Lighting models', onChanged, onStateChange });
+  onChanged();
+
+  return {
+    update,
+    getState: () => shell.state,
+    getResults: () => results.map(({ key, name, rms, relative, ms }) => ({ key, name, rms, relative, ms })),
+    getProgress: () => ({ frame: samples, target: Number(shell.state.refSamples) }),
+    get canvas() {
+      return view.canvas;
+    },
+    dispose() {
+      view.dispose();
+      shell.dispose();
+    },
+  };
+}
+
+export const widget = { name: 'lighting-models', schema, create: createLightingModels };
