@@ -9,6 +9,7 @@ import { Bench } from 'tinybench';
 import { build } from 'vite';
 import { FAMILIES, measureErrors } from './families.js';
 import { measurePages } from './pages.js';
+import { measureIbl } from './ibl.js';
 import { ROOT, launchBrowser, openPage, serveStatic } from '../tests/browser/harness.js';
 
 const args = process.argv.slice(2);
@@ -50,6 +51,7 @@ async function gpuCosts() {
 
 const gpu = await gpuCosts();
 const pages = await measurePages();
+const ibl = await measureIbl({ quick });
 const families = [];
 for (const family of FAMILIES) {
   const errors = measureErrors(family);
@@ -81,6 +83,7 @@ const report = {
   families,
   versusThree: gpu.versusThree,
   pages,
+  ibl,
 };
 mkdirSync(dirname(out), { recursive: true });
 writeFileSync(out, `${JSON.stringify(report, null, 1)}\n`);
@@ -98,6 +101,12 @@ for (const f of families) {
 const vt = gpu.versusThree;
 console.log(`\nSphere at ${vt.size}² with GGX + height-correlated Smith + Schlick + Lambert + one punctual light:`);
 console.log(`  ours ${vt.oursMsPerFrame.toFixed(2)} ms/frame, three.js MeshStandardMaterial ${vt.threeMsPerFrame.toFixed(2)} ms/frame: ratio ${vt.ratio.toFixed(2)}`);
+console.log(`\nImage-based lighting against the Monte Carlo reference (${ibl.setup.referenceSamples} samples/pixel), ${ibl.setup.resolution}² pixels, median of ${ibl.setup.timingRuns} runs:`);
+console.log(`  ${pad('environment, material', 30)}${pad('method', 22)}${pad('GPU ms', 10)}${pad('RMS', 11)}relative`);
+for (const r of ibl.rows) {
+  const method = r.samples ? `importance, N = ${r.samples}` : r.method;
+  console.log(`  ${pad(`${r.environment}, ${r.material} α ${r.alpha}`, 30)}${pad(method, 22)}${pad(r.ms.toFixed(2), 10)}${pad(r.rms.toExponential(2), 11)}${(r.relative * 100).toFixed(2)} %`);
+}
 console.log(`\n  ${pad('page', 30)}${pad('JS (KiB, uncompressed)', 30)}${pad('files', 7)}${pad('load (ms)', 11)}first frame (ms)`);
 for (const p of pages) console.log(`  ${pad(p.page, 30)}${pad(p.jsKB.toFixed(0), 30)}${pad(p.jsFiles, 7)}${pad(p.loadMs.toFixed(0), 11)}${p.firstFrameMs === null ? '—' : p.firstFrameMs.toFixed(0)}`);
 console.log(`\nWrote ${out}`);

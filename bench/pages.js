@@ -2,7 +2,7 @@
 // time to its first frame (the render loop's first draw) or, for pages without a 3-D view, to load.
 import { buildApp, launchBrowser, openPage, serveStatic, settle } from '../tests/browser/harness.js';
 
-export const MEASURED_PAGES = ['index.html', 'media.html', 'surfaces.html', 'brdf.html', 'microfacets.html', 'fresnel.html', 'ndf.html', 'visibility.html', 'performance.html', 'embed.html?w=fresnel-zones', 'parity.html'];
+export const MEASURED_PAGES = ['index.html', 'media.html', 'surfaces.html', 'brdf.html', 'microfacets.html', 'fresnel.html', 'ndf.html', 'visibility.html', 'diffuse.html', 'rendering.html', 'performance.html', 'exercises.html', 'embed.html?w=fresnel-zones', 'parity.html'];
 
 /** Timestamps the first frame the app's render loop draws (it counts frames in __shadingLab.frames). */
 function recordFirstFrame() {

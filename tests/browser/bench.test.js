@@ -25,6 +25,12 @@ function checkShape(report) {
   }
   expect(report.versusThree).toMatchObject({ size: num, oursMsPerFrame: num, threeMsPerFrame: num, ratio: num });
   expect(report.pages.map((p) => p.page)).toContain('fresnel.html');
+  expect(report.ibl.setup).toMatchObject({ resolution: num, referenceSamples: num, timingRuns: num });
+  expect(report.ibl.rows.length).toBeGreaterThanOrEqual(1);
+  for (const r of report.ibl.rows) {
+    expect(r).toMatchObject({ environment: expect.any(String), material: expect.any(String), method: expect.any(String), ms: num, rms: num, relative: num });
+    for (const x of [r.ms, r.rms, r.relative]) expect(Number.isFinite(x) && x >= 0).toBe(true);
+  }
   for (const p of report.pages) expect(p).toMatchObject({ jsKB: num, jsFiles: num, loadMs: num });
 }
 

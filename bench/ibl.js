@@ -1,0 +1,50 @@
+// Image-based lighting, run time against error: the material lab's environment methods (mirror, split sum,
+// three.js's PMREM, importance sampling with N samples) on a few materials and environments, each against the
+// lab's converged Monte Carlo reference. Time: median GPU time of the approximation's pass at the lab's size.
+import { buildApp, launchBrowser, openPage, serveStatic, settle } from '../tests/browser/harness.js';
+
+const CASES = [
+  { environment: 'studio', material: 'gold', alpha: 0.1 },
+  { environment: 'studio', material: 'custom', alpha: 0.35 },
+  { environment: 'sky', material: 'iron', alpha: 0.5 },
+  { environment: 'sky', material: 'custom', alpha: 0.1 },
+];
+const METHODS = [['mirror', 1], ['split-sum', 1], ['pmrem', 1], ...[4, 16, 64, 256].map((n) => ['importance', n])];
+
+export async function measureIbl({ quick }) {
+  const server = await serveStatic(await buildApp());
+  const browser = await launchBrowser();
+  const refSamples = quick ? 128 : 2048;
+  const runs = quick ? 1 : 7;
+  const rows = [];
+  try {
+    for (const c of quick ? CASES.slice(0, 1) : CASES) {
+      const page = await openPage(browser, server.url, `embed.html?w=material-lab&material=${c.material}&alpha=${c.alpha}&environment=${c.environment}&refSamples=${refSamples}`, { width: 1100, height: 700 });
+      await page.waitForFunction(() => {
+        const lab = globalThis.__shadingLab?.widgets?.['material-lab'];
+        const p = lab?.getProgress();
+        return p && p.frame >= p.target;
+      }, { timeout: 900_000, polling: 500 });
+      for (const [method, samples] of quick ? METHODS.slice(1, 2) : METHODS) {
+        const stats = await page.evaluate(async (method, samples, runs) => {
+          const lab = globalThis.__shadingLab.widgets['material-lab'];
+          lab.update({ envMethod: method, samples });
+          lab.remeasure(runs);
+          for (;;) {
+            await new Promise((r) => setTimeout(r, 100));
+            const s = lab.getStats();
+            if (s.method === method && s.samplesN === samples && s.timingRuns === runs) return s;
+          }
+        }, method, samples, runs);
+        rows.push({ ...c, method, samples: method === 'importance' ? samples : null, ms: stats.ms, rms: stats.rms, relative: stats.relative });
+      }
+      if (page.errors.length) throw new Error(page.errors.join('\n'));
+      await settle(page, 100);
+      await page.close();
+    }
+  } finally {
+    await browser.close();
+    server.close();
+  }
+  return { setup: { resolution: 192, referenceSamples: refSamples, timingRuns: runs }, rows };
+}
