@@ -113,9 +113,6 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
     get variants() {
       return materials.size;
     },
-    setDescription(text) {
-      viewport?.canvas.setAttribute('aria-label', text);
-    },
     dispose() {
       probePanel.remove();
       materials.forEach((m) => m.dispose());

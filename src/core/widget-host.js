@@ -28,13 +28,13 @@ function writeUrl(schema, state, prefix) {
 
 /**
  * Creates widget `name` inside `container` with the state found in the URL.
- * options: { prefix, syncUrl = true, onStateChange }
+ * options: { prefix, syncUrl = true, onStateChange, initialState (under what the URL says) }
  */
-export async function mountWidget(container, name, { prefix = '', syncUrl = true, onStateChange, options = {} } = {}) {
+export async function mountWidget(container, name, { prefix = '', syncUrl = true, onStateChange, initialState = {}, options = {} } = {}) {
   if (!isWidgetName(name)) throw new Error(`unknown widget ${name}`);
   const { widget } = await WIDGETS[name].load();
   let timer = 0;
-  const instance = widget.create(container, widgetParams(location.search, prefix), {
+  const instance = widget.create(container, { ...initialState, ...widgetParams(location.search, prefix) }, {
     ...options,
     onStateChange(state) {
       onStateChange?.(state);

@@ -3,6 +3,7 @@
 import { coerceState, defaultState } from './state.js';
 import { createNoticeArea } from './notice.js';
 import { createStateGui } from './gui.js';
+import { createLiveRegion, describeCanvas } from './describe.js';
 
 export function createWidgetShell(container, { name, schema, initialState, about, terms = [] }) {
   const root = document.createElement('section');
@@ -25,6 +26,7 @@ export function createWidgetShell(container, { name, schema, initialState, about
   }
   if (terms.length) root.append(termLinks(terms));
   container.append(root);
+  const live = createLiveRegion(root);
 
   const first = coerceState(schema, initialState, defaultState(schema));
   if (first.notices.length) notices.show(first.notices);
@@ -49,6 +51,14 @@ export function createWidgetShell(container, { name, schema, initialState, about
       return state;
     },
     /**
+     * The widget's summary in words: read out (once it settles) by the live region, and given to `canvas`,
+     * when passed, as its description. Widgets call it whenever what they show changes.
+     */
+    describe(text, canvas) {
+      describeCanvas(canvas, text);
+      live.say(text);
+    },
+    /**
      * Builds the control panel and returns the widget's update(partial): validate, refresh the panel, let the
      * widget react to the changed keys, tell the host. The GUI, code and the URL all come in through it.
      */
@@ -65,6 +75,7 @@ export function createWidgetShell(container, { name, schema, initialState, about
     },
     dispose() {
       gui?.dispose();
+      live.dispose();
       root.remove();
     },
   };

@@ -23,6 +23,8 @@ const SHOTS = [
   ['ndf-page', 'ndf.html?ndf.exposure=8', { fullPage: true }],
   ['visibility-page', 'visibility.html', { fullPage: true }],
   ['performance-page', 'performance.html', { fullPage: true }],
+  ['tour-fresnel-zones-lh', 'tour.html#fresnel-zones-lh'],
+  ['tour-media-grid', 'tour.html#media-grid', { fullPage: true }],
 ];
 
 const out = join(ROOT, 'docs/screenshots');
