@@ -38,12 +38,22 @@ async function setUp(step, i) {
   const state = { ...defaultState(widget.schema), ...step.state }; // the same picture however one arrives
   if (mounted?.name === step.widget) mounted.instance.update(state);
   else {
-    mounted?.instance.dispose();
+    if (mounted) release(mounted.instance);
     mounted = null;
     stage.replaceChildren();
     mounted = { name: step.widget, instance: await mountWidget(stage, step.widget, { prefix: 'tour', syncUrl: false, initialState: state }) };
   }
   if (i === index) registry.tour = { index: i, id: step.id, widget: step.widget, instance: mounted.instance, ready: true };
+}
+
+/**
+ * Disposes a widget and gives its WebGL contexts back at once: a disposed renderer's context otherwise lives
+ * until garbage collection, and a long tour would run into the browser's limit on live contexts.
+ */
+function release(instance) {
+  const contexts = [...stage.querySelectorAll('.viewport canvas')].map((c) => c.getContext('webgl2')); // the existing ones
+  instance.dispose();
+  for (const gl of contexts) gl?.getExtension('WEBGL_lose_context')?.loseContext();
 }
 
 function renderText(step, i) {
