@@ -215,7 +215,7 @@ export function createMicrofacets(container, initialState = {}, { onStateChange 
       `<tr><td>the same, predicted by Smith (1 − G1)</td><td>${((1 - smith(c)) * 100).toFixed(2)}%</td></tr>` +
       `<tr><td>rays drawn that bounce twice</td><td>${twice} of ${s.rays}</td></tr></tbody></table>`;
     const hDeg = Math.atan2(Math.sin(s.lightTheta * DEG) + Math.sin(s.viewTheta * DEG), Math.cos(s.lightTheta * DEG) + Math.cos(s.viewTheta * DEG)) / DEG;
-    shell.describe(`Magnified cross-section of a rough surface with ${schema.kind.options[s.kind]} slopes, α ${s.alpha}: ${s.rays} rays from the light at ${s.lightTheta}°, ` +
+    shell.describe(`Magnified cross-section of a rough surface, ${schema.kind.options[s.kind]}, α ${s.alpha}: ${s.rays} rays from the light at ${s.lightTheta}°, ` +
       `eye at ${s.viewTheta}°, so the half vector h is ${hDeg.toFixed(1)}° from the mean normal; facets along h are marked. ` +
       `Shadowed share of the facets facing the light: ${((1 - measured) * 100).toFixed(1)}% ray-traced, ${((1 - smith(c)) * 100).toFixed(1)}% by Smith. ` +
       `${twice} of ${s.rays} rays hit the surface a second time${s.bounces ? ' (drawn in red)' : ''}.`, canvas);
