@@ -104,7 +104,7 @@ export const TOUR_STEPS = [
   },
   {
     id: 'brdf-compare', section: 'brdf', widget: 'brdf-lobe', title: 'Two BRDFs side by side',
-    state: { compare: true, lightTheta: 50, viewTheta: 50 },
+    state: { compare: true, lightTheta: 30, viewTheta: 30 },
     text: 'Overlay a second BRDF (dashed) at the same width: GGX against Beckmann. The images over the half and ' +
       'difference angles (θh, θd) show the same functions in the coordinates they really depend on.',
   },
@@ -169,9 +169,9 @@ export const TOUR_STEPS = [
   {
     id: 'fresnel-zones-lh-weighted', section: 'fresnel', widget: 'fresnel-zones', title: 'Weighted by the rest of the BRDF',
     state: { mode: 'zones-lh-weighted', shape: 'torusknot', lightTheta: 140 },
-    text: 'Now weight each pixel by the light the rest of the BRDF actually sends to the eye. Green dominates ' +
-      'again and red shows only at a few edges: averaged over light directions all around the object, about ' +
-      '1% of the reflected light is in the red zone.',
+    text: 'Now weight each pixel by the light the rest of the BRDF actually sends to the eye. From behind, ' +
+      'little light reaches the eye: only thin grazing edges stay bright. Averaged over light directions all ' +
+      'around the object, about two thirds of the reflected light is green and under 1% red (see the legend).',
   },
   {
     id: 'fresnel-f0-tables', section: 'fresnel', widget: 'f0-tables', title: 'F(0°) is the specular colour',
