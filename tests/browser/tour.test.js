@@ -19,8 +19,9 @@ function trackContexts() {
   };
 }
 
+// a presenter's small window: software WebGL's cost grows with the pixels
 const openTour = (browser, hash = '') =>
-  openPage(browser, baseUrl(), `tour.html${hash}`, { beforeLoad: (page) => page.evaluateOnNewDocument(trackContexts) });
+  openPage(browser, baseUrl(), `tour.html${hash}`, { width: 1024, height: 720, beforeLoad: (page) => page.evaluateOnNewDocument(trackContexts) });
 
 /** Waits until step `id` is shown and its widget set up, then for the picture to settle. */
 async function onStep(page, id, ms = 250) {
