@@ -61,6 +61,7 @@ function renderText(step, i) {
   $('.tour-count').textContent = `Step ${i + 1} of ${steps.length}`;
   $('.tour-section').textContent = `${sections.indexOf(section) + 1}. ${section.title} (${i - section.first + 1} of ${section.count})`;
   $('.tour-title').textContent = step.title;
+  $('.tour-spoken-title').textContent = `: ${step.title}`; // the live progress line reads the new title too
   $('.tour-text').textContent = step.text;
   const meter = $('.tour-meter');
   meter.max = steps.length;

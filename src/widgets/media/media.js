@@ -174,7 +174,7 @@ export function createMedia(container, initialState = {}, { onStateChange } = {}
     const depth = d >= 1 ? `${d.toPrecision(3)} m` : d >= 0.01 ? `${(d * 100).toPrecision(3)} cm` : `${(d * 1000).toPrecision(3)} mm`;
     readout.innerHTML = `<span class="swatch big" style="background:${hex}"></span> <span>White light after <strong>${depth}</strong> of ${m.name.toLowerCase()}: ` +
       `R ${(T[0] * 100).toFixed(1)}%, G ${(T[1] * 100).toFixed(1)}%, B ${(T[2] * 100).toFixed(1)}% passes without being absorbed or scattered.</span>`;
-    shell.describe(`A glass of ${m.name.toLowerCase()} ${depth} deep in front of a chequered wall; ${readout.textContent}`, viewport?.canvas);
+    shell.describe(`A glass of ${m.name.toLowerCase()} ${depth} deep in front of a chequered wall; ${readout.textContent.trim()}`, viewport?.canvas);
   };
   describe();
 
