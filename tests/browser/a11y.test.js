@@ -128,6 +128,22 @@ describe('interactive canvases answer the keyboard', () => {
     await page.close();
   });
 
+  it('a row of spheres is probed by keyboard: the arrows move the probe, sphere to sphere', async () => {
+    const page = await openWidget('ndf-explorer');
+    await page.focus('.sphere-grid canvas');
+    for (let i = 0; i < 3; i++) await page.keyboard.press('ArrowRight');
+    const rows = () => page.$$eval('.probe tr', (trs) => Object.fromEntries(trs.map((tr) => [tr.cells[0].textContent, tr.cells[1].textContent])));
+    let probe = await rows();
+    expect(probe.sphere).toBe('Blinn-Phong');
+    expect(Number.parseFloat(probe['n·v'])).toBeCloseTo(Math.sqrt(1 - 0.3 ** 2), 3); // at x = 0.3 on the unit sphere, seen head-on
+    expect(await page.$eval('.probe-marker', (m) => m.hidden)).toBe(false);
+    for (let i = 0; i < 10; i++) await page.keyboard.press('ArrowRight');
+    probe = await rows();
+    expect(probe.sphere).toBe('Beckmann');
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
   it('a plot moves its cursor by keyboard and its readout follows', async () => {
     const page = await openWidget('fresnel-curves');
     const caption = () => page.$eval('.readout caption', (el) => el.textContent);
