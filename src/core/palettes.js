@@ -15,6 +15,15 @@ export const ZONE_LABELS = ['barely changes (< 45°)', 'changes somewhat (45–7
 
 /** Okabe-Ito hues (yellow left out: too light on white) for one series per material. */
 export const SERIES_COLORS = ['#0072b2', '#d55e00', '#009e73', '#cc79a7', '#e69f00', '#56b4e9', '#000000'];
+/**
+ * Line patterns that go with the colours, so that series stay apart without colour (colour blindness, grey
+ * print). Five patterns against seven colours: the first 35 series all differ in colour or pattern.
+ */
+export const SERIES_DASHES = [undefined, [9, 4], [2, 3], [10, 3, 2, 3], [4, 4]];
+/** Colour and line pattern of series i: { stroke, dash } for plot specs. */
+export const seriesStyle = (i) => ({ stroke: SERIES_COLORS[i % SERIES_COLORS.length], dash: SERIES_DASHES[i % SERIES_DASHES.length] });
+/** The colour names in a palette's label, e.g. 'green, yellow, red'. */
+export const paletteColourNames = (key) => ZONE_PALETTES[key].label.match(/\((.*)\)/)[1];
 
 export function withAlpha(hex, alpha) {
   const a = Math.round(alpha * 255).toString(16).padStart(2, '0');

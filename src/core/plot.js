@@ -3,6 +3,7 @@
 import uPlot from 'uplot';
 import 'uplot/dist/uPlot.min.css';
 import { canvasToPng, createToolbar, downloadCsv } from './export.js';
+import { describeCanvas, spokenNumber } from './describe.js';
 
 /** Draws vertical bands behind the series: [{ from, to, color, label }]. */
 function bandsPlugin(getBands) {
@@ -56,6 +57,23 @@ const decades = (u, axisIdx, min, max) => {
   return out;
 };
 
+/** The plot in words: axes, and per series where it starts, ends and peaks (for the canvas's aria-label). */
+export function describePlot(spec) {
+  const xs = spec.data[0];
+  const series = spec.series.map((s, k) => {
+    const ys = spec.data[k + 1];
+    const at = [];
+    for (let i = 0; i < xs.length; i++) if (ys[i] != null && Number.isFinite(ys[i])) at.push(i);
+    if (!at.length) return `${s.label}: no values`;
+    const top = at.reduce((a, i) => (ys[i] > ys[a] ? i : a), at[0]);
+    const [first, last] = [at[0], at[at.length - 1]];
+    return `${s.label}${s.dash ? ' (dashed)' : ''}: ${spokenNumber(ys[first])} at ${spokenNumber(xs[first])}, ` +
+      `${spokenNumber(ys[last])} at ${spokenNumber(xs[last])}, largest ${spokenNumber(ys[top])} at ${spokenNumber(xs[top])}`;
+  });
+  const across = `${spec.xLabel} from ${spokenNumber(spec.x.min)} to ${spokenNumber(spec.x.max)}${spec.x.log ? ' (log scale)' : ''}`;
+  return `Plot: ${spec.title}. Across: ${across}; up: ${spec.yLabel}${spec.y?.log ? ' (log scale)' : ''}. ${series.join('; ')}.`;
+}
+
 const axis = (label, extra = {}) => ({ label, labelSize: 22, size: 48, stroke: '#333', grid: { stroke: '#0000001a' }, ...extra });
 
 /**
@@ -105,8 +123,27 @@ export function createPlot(container, spec, { onCursor } = {}) {
       plugins: [bandsPlugin(() => current.bands ?? []), annotationsPlugin(() => current.annotations ?? [])],
     };
     u = new uPlot(opts, current.data, holder);
+    u.ctx.canvas.tabIndex = 0; // the arrow keys move the cursor, as the pointer does
+    describeCanvas(u.ctx.canvas, describePlot(current));
   };
   build();
+
+  // keyboard cursor: ←/→ one sample (Shift: ten), Home/End, Escape hides it; readouts follow as on hover
+  let cursorIndex = null;
+  holder.addEventListener('keydown', (e) => {
+    const n = current.data[0].length;
+    const step = e.shiftKey ? 10 : 1;
+    const next = { ArrowLeft: (cursorIndex ?? n) - step, ArrowRight: (cursorIndex ?? -1) + step, Home: 0, End: n - 1 }[e.key];
+    if (e.key === 'Escape') {
+      cursorIndex = null;
+      u.setCursor({ left: -10, top: -10 });
+      return;
+    }
+    if (next === undefined) return;
+    e.preventDefault();
+    cursorIndex = Math.min(Math.max(next, 0), n - 1);
+    u.setCursor({ left: u.valToPos(current.data[0][cursorIndex], 'x'), top: u.over.clientHeight / 2 });
+  });
 
   const resize = new ResizeObserver(() => u?.setSize(size()));
   resize.observe(holder);
@@ -135,6 +172,7 @@ export function createPlot(container, spec, { onCursor } = {}) {
         caption.textContent = next.title;
         u.setData(next.data);
         u.redraw(false, true);
+        describeCanvas(u.ctx.canvas, describePlot(next));
       } else build();
     },
     get uplot() {

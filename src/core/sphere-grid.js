@@ -72,17 +72,23 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
   }
   const probePanel = document.createElement('div');
   probePanel.className = 'probe';
-  const idle = 'Probe: point at a sphere to read the angles and terms there.';
+  const idle = 'Probe: point at a sphere (or focus the picture and use the arrow keys) to read the angles and terms there.';
   probePanel.textContent = idle;
   container.append(probePanel);
-  const onMove = (e) => {
+  const marker = document.createElement('span'); // where the keyboard probe is
+  marker.className = 'probe-marker';
+  marker.hidden = true;
+  viewport?.holder.append(marker);
+
+  /** Cell i's layout in CSS pixels: its width, the side of its sphere's square, the canvas height. */
+  const layout = () => {
     const rect = viewport.canvas.getBoundingClientRect();
     const w = rect.width / Math.max(cells.length, 1);
-    const i = Math.floor((e.clientX - rect.left) / w);
+    return { rect, w, side: Math.min(w, rect.height) };
+  };
+  /** Shows the probe at (x, y) on sphere i (sphere coordinates, x² + y² < 1). */
+  const probeAt = (i, x, y) => {
     const cell = cells[i];
-    const side = Math.min(w, rect.height);
-    const x = ((e.clientX - rect.left - i * w - w / 2) / (side / 2)) * HALF_SIZE;
-    const y = -((e.clientY - rect.top - rect.height / 2) / (side / 2)) * HALF_SIZE;
     if (!cell || x * x + y * y >= 1) {
       probePanel.textContent = idle;
       return;
@@ -95,8 +101,35 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
       ...(cell.probe?.(a, n) ?? []),
     ]);
   };
+  const onMove = (e) => {
+    const { rect, w, side } = layout();
+    const i = Math.floor((e.clientX - rect.left) / w);
+    marker.hidden = true;
+    probeAt(i, ((e.clientX - rect.left - i * w - w / 2) / (side / 2)) * HALF_SIZE, -((e.clientY - rect.top - rect.height / 2) / (side / 2)) * HALF_SIZE);
+  };
+  // the keyboard probe: arrows move it over a sphere (Shift: finer); across a sphere's edge it goes on to the next
+  let keyProbe = { i: 0, x: 0, y: 0 };
+  const onKey = (e) => {
+    const d = e.shiftKey ? 0.02 : 0.1;
+    const move = { ArrowLeft: [-d, 0], ArrowRight: [d, 0], ArrowUp: [0, d], ArrowDown: [0, -d] }[e.key];
+    if (!move || !cells.length) return;
+    e.preventDefault();
+    let { i, x, y } = keyProbe;
+    [x, y] = [x + move[0], y + move[1]];
+    if (x * x + y * y >= 1 && move[0] && cells[i + Math.sign(move[0])]) [i, x] = [i + Math.sign(move[0]), -Math.sign(move[0]) * 0.9];
+    const r = Math.hypot(x, y);
+    if (r > 0.98) [x, y] = [(x / r) * 0.98, (y / r) * 0.98];
+    keyProbe = { i: Math.min(i, cells.length - 1), x, y };
+    const { rect, w, side } = layout();
+    marker.style.left = `${keyProbe.i * w + w / 2 + (x / HALF_SIZE) * (side / 2)}px`;
+    marker.style.top = `${rect.height / 2 - (y / HALF_SIZE) * (side / 2)}px`;
+    marker.hidden = false;
+    probeAt(keyProbe.i, x, y);
+  };
   viewport?.canvas.addEventListener('pointermove', onMove);
   viewport?.canvas.addEventListener('pointerleave', () => (probePanel.textContent = idle));
+  viewport?.canvas.addEventListener('keydown', onKey);
+  viewport?.canvas.addEventListener('blur', () => (marker.hidden = true));
   const setAspect = () => viewport && (viewport.holder.style.aspectRatio = `${Math.max(cells.length, 1) * aspectPerCell} / 1`);
 
   return {
@@ -112,9 +145,6 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
     },
     get variants() {
       return materials.size;
-    },
-    setDescription(text) {
-      viewport?.canvas.setAttribute('aria-label', text);
     },
     dispose() {
       probePanel.remove();

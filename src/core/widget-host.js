@@ -29,13 +29,14 @@ function writeUrl(schema, state, prefix) {
 
 /**
  * Creates widget `name` inside `container` with the state found in the URL.
- * options: { prefix, syncUrl = true, onStateChange, state (instead of the URL's), locked (keys the GUI cannot change) }
+ * options: { prefix, syncUrl = true, onStateChange, state (instead of the URL's), initialState (under what the URL
+ * says), locked (keys the GUI cannot change) }
  */
-export async function mountWidget(container, name, { prefix = '', syncUrl = true, onStateChange, options = {}, state, locked = [] } = {}) {
+export async function mountWidget(container, name, { prefix = '', syncUrl = true, onStateChange, options = {}, state, initialState = {}, locked = [] } = {}) {
   if (!isWidgetName(name)) throw new Error(`unknown widget ${name}`);
   const { widget } = await WIDGETS[name].load();
   let timer = 0;
-  const instance = createLocked(locked, () => widget.create(container, state ?? widgetParams(location.search, prefix), {
+  const instance = createLocked(locked, () => widget.create(container, state ?? { ...initialState, ...widgetParams(location.search, prefix) }, {
     ...options,
     onStateChange(next) {
       onStateChange?.(next);

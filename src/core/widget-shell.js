@@ -3,6 +3,7 @@
 import { coerceState, defaultState } from './state.js';
 import { createNoticeArea } from './notice.js';
 import { createStateGui } from './gui.js';
+import { createLiveRegion, describeCanvas } from './describe.js';
 
 // Keys the host locks for the widget being created (see createLocked): the shell reads them, so every
 // widget gets locking without code of its own.
@@ -40,6 +41,7 @@ export function createWidgetShell(container, { name, schema, initialState, about
   }
   if (terms.length) root.append(termLinks(terms));
   container.append(root);
+  const live = createLiveRegion(root);
 
   const first = coerceState(schema, initialState, defaultState(schema));
   if (first.notices.length) notices.show(first.notices);
@@ -65,6 +67,14 @@ export function createWidgetShell(container, { name, schema, initialState, about
       return state;
     },
     /**
+     * The widget's summary in words: read out (once it settles) by the live region, and given to `canvas`,
+     * when passed, as its description. Widgets call it whenever what they show changes.
+     */
+    describe(text, canvas) {
+      describeCanvas(canvas, text);
+      live.say(text);
+    },
+    /**
      * Builds the control panel and returns the widget's update(partial): validate, refresh the panel, let the
      * widget react to the changed keys, tell the host. The GUI, code and the URL all come in through it.
      */
@@ -81,6 +91,7 @@ export function createWidgetShell(container, { name, schema, initialState, about
     },
     dispose() {
       gui?.dispose();
+      live.dispose();
       root.remove();
     },
   };

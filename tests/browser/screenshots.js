@@ -25,6 +25,8 @@ const SHOTS = [
   ['diffuse-page', 'diffuse.html', { fullPage: true }],
   ['performance-page', 'performance.html', { fullPage: true }],
   ['exercises-page', 'exercises.html#match-sphere', { fullPage: true }],
+  ['tour-fresnel-zones-lh', 'tour.html#fresnel-zones-lh'],
+  ['tour-media-grid', 'tour.html#media-grid', { fullPage: true }],
 ];
 
 const out = join(ROOT, 'docs/screenshots');

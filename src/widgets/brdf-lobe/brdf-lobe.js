@@ -84,7 +84,7 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange } =
   const albedoSpec = () => {
     const angles = Float64Array.from({ length: 45 }, (_, i) => i * 2 + 1);
     const series = specs().map((p, i) => ({
-      label: p.label, stroke: i ? '#009e73' : '#d55e00',
+      label: p.label, stroke: i ? '#009e73' : '#d55e00', dash: i ? [6, 4] : undefined, // B dashed, as on the polar plot
       values: angles.map((deg) => reflectanceImportanceGGX((l, v) => microfacetBRDF(l, v, p), directionFromCos(Math.cos(deg * DEG)), p.samplingAlpha, 512)),
     }));
     return {
@@ -109,10 +109,19 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange } =
     const max = Math.max(...lobeA.map((x) => x[1]), ...(lobeB ?? []).map((x) => x[1]), 1e-9);
     const a = brdfAngles(l, v);
     polar.draw({ lobeA, lobeB, max, lightTheta: s.lightTheta, viewTheta: s.viewTheta, halfTheta: a.h ? Math.atan2(a.h[0], a.h[2]) / DEG : null });
-    polar.canvas.setAttribute('aria-label', `Polar plot of f(l, v) with the light ${s.lightTheta}° from n and the view at ${s.viewTheta}°; largest value ${max.toPrecision(3)} per steradian.`);
+    const peakOf = (lobe) => lobe.reduce((a, x) => (x[1] > a[1] ? x : a));
+    const off = ['F', 'D', 'G'].filter((k) => !s[`use${k}`]).concat(s.useDenominator ? [] : ['the denominator']);
+    const what = `${s.cosine ? 'f(l, v) × n·v' : 'f(l, v)'} for ${A.label}${B ? ` and, dashed, ${B.label}` : ''}${off.length ? ` with ${off.join(', ')} switched off` : ''}`;
+    const peaks = [[A, lobeA], [B, lobeB]].filter(([p]) => p).map(([p, lobe]) => {
+      const [theta, value] = peakOf(lobe);
+      return `${p.label.slice(0, 1)} peaks at ${theta.toFixed(1)}° (${value.toPrecision(3)} /sr)`;
+    });
+    shell.describe(`Polar plot in the plane of incidence: ${what}. Light ${s.lightTheta}° from n on the left, view at ${s.viewTheta}°, mirror direction at ${s.lightTheta}°. ${peaks.join('; ')}.`, polar.canvas);
     const max3d = Math.max(max, 1e-9);
     lobe3d.update({
       fA: f(A), fB: B ? f(B) : null, max: max3d,
+      description: `3-D lobe of ${A.label}${B ? ` (solid) and ${B.label} (wireframe)` : ''} over the hemisphere, light ${s.lightTheta}° from n; ` +
+        `each direction's distance from the centre is ${s.cosine ? 'f × n·v' : 'f'}, scaled to ${max3d.toPrecision(3)}. Arrows: n, l, v, h and the mirror direction.`,
       directions: { n: [0, 0, 1], l, v, h: a.h, mirror: [-l[0], 0, l[2]] },
     });
     if (!changed || changed.some((k) => !['lightTheta', 'viewTheta'].includes(k))) {
@@ -120,8 +129,9 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange } =
         const d = directionsFromHalfDiff(th, td, s.phiD * DEG);
         return microfacetFactors(d.l, d.v, p, use());
       };
-      imageA.draw(image(A));
-      imageB.draw(B ? image(B) : () => 0);
+      const words = (p, alpha) => `${p.label}, α ${alpha}, F0 ${s.f0}, at φd ${s.phiD}°`;
+      imageA.draw(image(A), words(A, s.alpha));
+      imageB.draw(B ? image(B) : () => 0, B ? words(B, s.alpha2) : 'not shown (no overlay)');
       images.classList.toggle('single', !B);
     }
     if (changed?.some((k) => ['D', 'V', 'F', 'alpha', 'f0', 'compare', 'D2', 'V2', 'alpha2'].includes(k))) albedo.setData(albedoSpec());

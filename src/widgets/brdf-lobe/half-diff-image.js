@@ -1,6 +1,7 @@
 // A BRDF as an image over the half/difference angles: theta_h across, theta_d up, at one phi_d, with
 // log-scaled viridis colours. Specular peaks lie along theta_h = 0; Fresnel brightens towards theta_d = 90°.
 import { viridis } from '../../core/palettes.js';
+import { describeCanvas } from '../../core/describe.js';
 
 const N = 90;
 const DECADES = 4; // colour range: the top of the scale down to 1e-4 of it
@@ -22,8 +23,8 @@ export function createHalfDiffImage(container, title) {
   cell.height = N;
 
   return {
-    /** value(thetaH, thetaD) in radians; returns the largest value drawn. */
-    draw(value) {
+    /** value(thetaH, thetaD) in radians, and what it is in words; returns the largest value drawn. */
+    draw(value, description) {
       const vals = new Float64Array(N * N);
       for (let j = 0; j < N; j++) {
         for (let i = 0; i < N; i++) vals[j * N + i] = value(((i + 0.5) * Math.PI) / 2 / N, ((j + 0.5) * Math.PI) / 2 / N);
@@ -58,7 +59,7 @@ export function createHalfDiffImage(container, title) {
       ctx.rotate(-Math.PI / 2);
       ctx.fillText('θd (l from h)', 0, 0);
       ctx.restore();
-      canvas.setAttribute('aria-label', `${title}; colour scale tops at ${max.toPrecision(3)} per steradian (99th percentile) over ${DECADES} decades.`);
+      describeCanvas(canvas, `${title}: ${description}; viridis colours on a log scale, brightest (yellow) at ${max.toPrecision(3)} per steradian (99th percentile), darkest ${DECADES} decades below.`);
       return max;
     },
     dispose() {

@@ -4,6 +4,7 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { createViewport } from '../../core/viewport.js';
+import { describeCanvas } from '../../core/describe.js';
 
 const THETA_STEPS = 45;
 const PHI_STEPS = 96;
@@ -76,6 +77,22 @@ export function createLobeView(container) {
     controls.target.set(0, 0.35, 0);
     controls.update();
     controls.addEventListener('change', viewport.invalidate);
+    viewport.canvas.addEventListener('keydown', orbitByKey);
+  }
+
+  // the keyboard orbits as a drag does: ←/→ around the normal, ↑/↓ up and down (Shift: finer)
+  const spherical = new THREE.Spherical();
+  const offset = new THREE.Vector3();
+  function orbitByKey(e) {
+    const step = (e.shiftKey ? 2 : 10) * (Math.PI / 180);
+    const turn = { ArrowLeft: [-step, 0], ArrowRight: [step, 0], ArrowUp: [0, -step], ArrowDown: [0, step] }[e.key];
+    if (!turn) return;
+    e.preventDefault();
+    spherical.setFromVector3(offset.copy(camera.position).sub(controls.target));
+    spherical.theta += turn[0];
+    spherical.phi = Math.min(Math.max(spherical.phi + turn[1], 0.05), Math.PI - 0.05);
+    camera.position.copy(controls.target).add(offset.setFromSpherical(spherical));
+    controls.update();
   }
 
   const fill = (mesh, f, max) => {
@@ -90,8 +107,9 @@ export function createLobeView(container) {
   };
 
   return {
-    /** fA(v), fB(v) | null: the lobes for the current light; dirs: { n, l, v, h, mirror } as arrays (h may be null). */
-    update({ fA, fB, max, directions }) {
+    /** fA(v), fB(v) | null: the lobes for the current light; dirs: { n, l, v, h, mirror } as arrays (h may be null); the view in words. */
+    update({ fA, fB, max, directions, description }) {
+      describeCanvas(viewport?.canvas, description);
       fill(lobeA, fA, max);
       lobeB.visible = Boolean(fB);
       if (fB) fill(lobeB, fB, max);
@@ -103,6 +121,7 @@ export function createLobeView(container) {
     },
     dispose() {
       controls?.dispose();
+      viewport?.canvas.removeEventListener('keydown', orbitByKey);
       [patch, lobeA, lobeB].forEach((m) => {
         m.geometry.dispose();
         m.material.dispose();

@@ -4,7 +4,7 @@
 import { createWidgetShell } from '../../core/widget-shell.js';
 import { createPlot } from '../../core/plot.js';
 import { createSphereGrid } from '../../core/sphere-grid.js';
-import { SERIES_COLORS } from '../../core/palettes.js';
+import { seriesStyle } from '../../core/palettes.js';
 import { albedoGGX, averageAlbedo } from '../../math/integrate.js';
 
 export const schema = {
@@ -34,7 +34,7 @@ function sweep(state) {
   return state.alphas.map(Number).sort((a, b) => a - b).map((alpha, i) => {
     const E = ANGLES.map((deg) => albedoGGX(Math.cos(deg * DEG), alpha, n));
     const avg = averageAlbedo((mu) => albedoGGX(mu, alpha, n));
-    return { alpha, E, loss: E.map((e) => 1 - e), avg, stroke: SERIES_COLORS[i % SERIES_COLORS.length], atNormal: albedoGGX(1, alpha, n) };
+    return { alpha, E, loss: E.map((e) => 1 - e), avg, ...seriesStyle(i), atNormal: albedoGGX(1, alpha, n) };
   });
 }
 
@@ -52,11 +52,11 @@ export function createEnergy(container, initialState = {}, { onStateChange } = {
   const base = { xLabel: 'View angle θv (degrees)', x: { min: 0, max: 90 }, xValues: (u, t) => t.map((v) => `${v}°`) };
   const eSpec = () => ({
     ...base, title: 'Directional albedo E(θv), F = 1', yLabel: 'E', y: { min: 0, max: 1.02 },
-    series: data.map((d) => ({ label: `α = ${d.alpha}`, stroke: d.stroke })), data: [ANGLES, ...data.map((d) => d.E)], filename: 'albedo', height: 260,
+    series: data.map((d) => ({ label: `α = ${d.alpha}`, stroke: d.stroke, dash: d.dash })), data: [ANGLES, ...data.map((d) => d.E)], filename: 'albedo', height: 260,
   });
   const lossSpec = () => ({
     ...base, title: 'Energy lost to ignoring multiple bounces, 1 − E', yLabel: '1 − E', y: { min: 0, max: 0.8 }, legend: false,
-    series: data.map((d) => ({ label: `α = ${d.alpha}`, stroke: d.stroke })), data: [ANGLES, ...data.map((d) => d.loss)], filename: 'energy-loss', height: 220,
+    series: data.map((d) => ({ label: `α = ${d.alpha}`, stroke: d.stroke, dash: d.dash })), data: [ANGLES, ...data.map((d) => d.loss)], filename: 'energy-loss', height: 220,
   });
   const ePlot = createPlot(plots, eSpec());
   const lossPlot = createPlot(plots, lossSpec());
@@ -72,7 +72,8 @@ export function createEnergy(container, initialState = {}, { onStateChange } = {
       uniforms: { uAlpha: d.alpha },
       probe: (a) => [['E(n·v), F = 1', albedoGGX(a.nv, d.alpha, Number(shell.state.sampleCount)).toFixed(4)], ['energy lost', `${((1 - albedoGGX(a.nv, d.alpha, Number(shell.state.sampleCount))) * 100).toFixed(1)}%`]],
     })));
-    spheres.setDescription(`Spheres in a uniform white environment, F = 1, roughness ${data.map((d) => d.alpha).join(', ')}: averaged albedo ${data.map((d) => d.avg.toFixed(3)).join(', ')}.`);
+    shell.describe(`Spheres in a uniform white environment (F = 1, ${shell.state.samples} GPU samples per pixel); a sphere that loses no energy vanishes into it. ` +
+      `${data.map((d) => `α ${d.alpha}: albedo ${d.atNormal.toFixed(3)} head-on, ${d.avg.toFixed(3)} on average, ${((1 - d.avg) * 100).toFixed(1)}% lost`).join('; ') || 'No roughness chosen'}.`, spheres.canvas);
   };
   render();
 

@@ -67,6 +67,13 @@ function buildTable(caption, rows, state, { metal, onPick, onSelect }) {
       if (e.target.closest('a')) return;
       onSelect(m.key);
     });
+    tr.tabIndex = 0; // a row is selected by Enter or Space as by a click
+    tr.title = `Select ${m.name}`;
+    tr.addEventListener('keydown', (e) => {
+      if ((e.key !== 'Enter' && e.key !== ' ') || e.target !== tr) return;
+      e.preventDefault();
+      onSelect(m.key);
+    });
   }
   return table;
 }
@@ -85,11 +92,17 @@ export function createF0Tables(container, initialState = {}, { onStateChange, on
 
   const render = () => {
     const onSelect = (key) => update({ selected: key });
+    const focused = holder.contains(document.activeElement) ? document.activeElement.closest('tr')?.dataset.material : null;
     holder.replaceChildren(
       buildTable('Normal-incidence Fresnel for metals', METALS, shell.state, { metal: true, onPick, onSelect }),
       buildTable('Normal-incidence Fresnel for non-metals', NON_METALS, shell.state, { metal: false, onPick, onSelect }),
       source,
     );
+    if (focused) holder.querySelector(`tr[data-material="${focused}"]`)?.focus(); // keep the keyboard's place
+    const m = [...METALS, ...NON_METALS].find((x) => x.key === shell.state.selected);
+    const metal = METALS.includes(m);
+    shell.describe(`Selected: ${m.name}, a ${metal ? 'metal' : 'non-metal'}; F(0°) linear ${fmt(m.linear)}, sRGB ${fmt(m.srgb)}` +
+      `${metal ? '' : `, so an index of refraction near ${iorFromF0(m.linear[0]).toFixed(3)}`}.`);
   };
 
   const update = shell.connect({ title: 'F0 tables', onChanged: render, onStateChange });

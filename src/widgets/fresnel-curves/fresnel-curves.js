@@ -126,16 +126,22 @@ export function createFresnelCurves(container, initialState = {}, { onStateChang
   const reflectance = createPlot(plots, reflectanceSpec(data, shell.state), { onCursor });
   const error = createPlot(plots, errorSpec(data), { onCursor });
   renderReadout(summary, data, null);
-  const description = () =>
-    `Fresnel reflectance against angle of incidence for ${data.curves.map((c) => c.label).join(', ') || 'no material'}.`;
-  plots.setAttribute('aria-label', description());
+  // the plots describe themselves (core/plot.js); the summary says what a reader would look for
+  const describe = () => {
+    const worst = data.curves.reduce((a, c) => (!a || Math.abs(c.maxError) > Math.abs(a.maxError) ? c : a), null);
+    shell.describe(
+      `Fresnel reflectance against angle of incidence for ${data.curves.map((c) => `${c.label} (F(0°) ${c.f0.toFixed(3)})`).join(', ') || 'no material'}` +
+        (worst ? `. Schlick's largest error: ${worst.maxError.toFixed(4)} for ${worst.label} at ${worst.maxErrorAt.toFixed(1)}°.` : '.'),
+    );
+  };
+  describe();
 
   const refresh = () => {
     data = buildSeries(shell.state);
     reflectance.setData(reflectanceSpec(data, shell.state));
     error.setData(errorSpec(data));
     renderReadout(summary, data, null);
-    plots.setAttribute('aria-label', description());
+    describe();
   };
 
   const update = shell.connect({ title: 'Fresnel curves', onChanged: refresh, onStateChange });

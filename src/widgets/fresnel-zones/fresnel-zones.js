@@ -10,7 +10,7 @@ import { SHADER_CHUNKS } from '../../core/shader-chunks.js';
 import { attachLightControl, lightDirFromAngles } from '../../core/light-control.js';
 import { attachProbe, angleText, probeAngles } from '../../core/probe.js';
 import { createToolbar, canvasToPng, downloadCsv } from '../../core/export.js';
-import { ZONE_LABELS, ZONE_PALETTES, ZONE_PALETTE_FIELD, hexToRgb } from '../../core/palettes.js';
+import { ZONE_LABELS, ZONE_PALETTES, ZONE_PALETTE_FIELD, hexToRgb, paletteColourNames } from '../../core/palettes.js';
 import { CONDUCTOR_MODELS, METALS, NON_METALS, fresnelParams, materialByKey } from '../../math/materials.js';
 import { fresnelConductor, fresnelDielectric, fresnelSchlick } from '../../math/fresnel.js';
 import { ndfGGX } from '../../math/ndf.js';
@@ -303,14 +303,24 @@ export function createFresnelZones(container, initialState = {}, { onStateChange
         averageShares.map((z, i) => `${ZONE_LABELS[i].split(' (')[0]} ${(z * 100).toFixed(1)}%`).join(', ') + '.';
       legend.append(avg);
     }
-    if (viewport) {
-      const m = materialByKey(s.material).name;
-      viewport.canvas.setAttribute(
-        'aria-label',
-        `${SHAPES[s.shape]}, ${MODES[s.mode]}, material ${m}, light ${s.lightTheta.toFixed(0)}° from the view. ` +
-          `Zones: ${zoneShares.map((z, i) => `${ZONE_LABELS[i].split(' (')[0]} ${(z * 100).toFixed(1)}%`).join(', ')}.`,
-      );
-    }
+    shell.describe(describeView(), viewport?.canvas);
+  }
+
+  /** The picture in words: the shape, what colours it, where the light is, and the measured zone shares. */
+  function describeView() {
+    const s = shell.state;
+    const lh = s.mode.startsWith('zones-lh');
+    const pct = (x) => `${(x * 100).toFixed(1)}%`;
+    const zones = (xs) => xs.map((z, i) => `${ZONE_LABELS[i].split(' (')[0]} ${pct(z)}`).join(', ');
+    const f0 = fresnelParams(s.material, s.conductor).f0;
+    const picture = s.mode === 'fresnel-nv'
+      ? `${s.fresnel} Fresnel reflectance of n·v: ${f0.map(pct).join(' / ')} where the surface faces the viewer, rising to 100% at the silhouette`
+      : `${MODES[s.mode]}${s.mode === 'zones-lh-weighted' ? ` (GGX α ${s.alpha})` : ''}, zones coloured ${paletteColourNames(s.palette)}`;
+    const shareOf = s.mode === 'zones-lh-weighted' ? 'reflected light' : 'covered pixels';
+    return `${SHAPES[s.shape]} (${s.camera}), ${materialByKey(s.material).name}: ${picture}. ` +
+      `Light ${s.lightTheta.toFixed(0)}° from the view direction, ${s.lightPhi.toFixed(0)}° around it${s.lightTheta > 90 ? ' (behind the object)' : ''}. ` +
+      `Share of ${shareOf} by zone of ${lh ? 'l·h' : 'n·v'}: ${zones(zoneShares)}.` +
+      (averageShares && s.mode === 'zones-lh-weighted' ? ` Averaged over ${AVERAGE_LIGHTS} light directions: ${zones(averageShares)}.` : '');
   }
   if (!viewport) renderLegend();
 

@@ -9,7 +9,7 @@ import { createViewport } from '../../core/viewport.js';
 import { floatTarget } from '../../core/gpu-sum.js';
 import { assembleGlsl } from '../../core/glsl.js';
 import { SHADER_CHUNKS } from '../../core/shader-chunks.js';
-import { rgbToHex } from '../../core/palettes.js';
+import { SERIES_DASHES, rgbToHex } from '../../core/palettes.js';
 import { linearToSrgb } from '../../math/color.js';
 import { WATER_K, WHOLE_MILK, transmittance, waterAbsorptionRgb } from '../../math/media.js';
 
@@ -152,7 +152,7 @@ export function createMedia(container, initialState = {}, { onStateChange } = {}
       title: `${m.name}: light left unscattered and unabsorbed after a depth d (Beer–Lambert, ${m.source})`,
       xLabel: 'Depth d (m, log scale)', yLabel: 'transmittance', x: { min: 1e-3, max: 100, log: true }, y: { min: 0, max: 1.02 },
       xValues: (u, t) => t.map((v) => (v == null ? '' : v >= 1 ? `${v} m` : v >= 0.01 ? `${v * 100} cm` : `${v * 1000} mm`)),
-      series: ['red (650 nm)', 'green (550 nm)', 'blue (450 nm)'].map((label, i) => ({ label, stroke: ['#d55e00', '#009e73', '#0072b2'][i] })),
+      series: ['red (650 nm)', 'green (550 nm)', 'blue (450 nm)'].map((label, i) => ({ label, stroke: ['#d55e00', '#009e73', '#0072b2'][i], dash: SERIES_DASHES[i] })),
       data: [DISTANCES, ...st.map((sig) => DISTANCES.map((x) => transmittance(sig, x)))],
       bands: [{ from: d / 1.06, to: d * 1.06, color: '#0000002a', label: '' }],
       filename: `transmittance-${shell.state.medium}`, height: 240,
@@ -164,7 +164,7 @@ export function createMedia(container, initialState = {}, { onStateChange } = {}
     const s = shell.state;
     if (s.view === 'grid') {
       readout.textContent = 'Across: no, some and strong scattering. Upwards: no, some and strong absorption (strongest in blue). Bottom right: high scattering, no absorption, white like milk.';
-      viewport?.canvas.setAttribute('aria-label', 'Nine glasses: absorption grows upwards, scattering to the right; the top-left is clear dark red, the bottom-right white and opaque like milk.');
+      shell.describe('Nine glasses in front of a chequered wall: absorption grows upwards, scattering to the right; the top-left is clear dark red, the bottom-right white and opaque like milk.', viewport?.canvas);
       return;
     }
     const m = MEDIA[s.medium];
@@ -172,9 +172,9 @@ export function createMedia(container, initialState = {}, { onStateChange } = {}
     const T = m.sigmaA.map((a, i) => transmittance(a + m.sigmaS[i], d));
     const hex = rgbToHex(T.map(linearToSrgb));
     const depth = d >= 1 ? `${d.toPrecision(3)} m` : d >= 0.01 ? `${(d * 100).toPrecision(3)} cm` : `${(d * 1000).toPrecision(3)} mm`;
-    readout.innerHTML = `<span class="swatch big" style="background:${hex}"></span> White light after <strong>${depth}</strong> of ${m.name.toLowerCase()}: ` +
-      `R ${(T[0] * 100).toFixed(1)}%, G ${(T[1] * 100).toFixed(1)}%, B ${(T[2] * 100).toFixed(1)}% passes without being absorbed or scattered.`;
-    viewport?.canvas.setAttribute('aria-label', `A glass of ${m.name.toLowerCase()} ${depth} deep in front of a chequered wall; ${readout.textContent}`);
+    readout.innerHTML = `<span class="swatch big" style="background:${hex}"></span> <span>White light after <strong>${depth}</strong> of ${m.name.toLowerCase()}: ` +
+      `R ${(T[0] * 100).toFixed(1)}%, G ${(T[1] * 100).toFixed(1)}%, B ${(T[2] * 100).toFixed(1)}% passes without being absorbed or scattered.</span>`;
+    shell.describe(`A glass of ${m.name.toLowerCase()} ${depth} deep in front of a chequered wall; ${readout.textContent.trim()}`, viewport?.canvas);
   };
   describe();
 

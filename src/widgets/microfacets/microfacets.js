@@ -37,12 +37,11 @@ export function createMicrofacets(container, initialState = {}, { onStateChange 
   const shell = createWidgetShell(container, { name: 'microfacets', schema, initialState, about: ABOUT, terms: TERMS_USED });
   const canvas = document.createElement('canvas');
   canvas.className = 'microsurface';
-  canvas.setAttribute('role', 'img');
   shell.view.append(canvas);
   const legend = document.createElement('p');
   legend.className = 'micro-legend';
   legend.innerHTML = '<span style="color:#e6a700">━</span> light rays &nbsp; <span style="color:#d62728">━</span> second bounce &nbsp; ' +
-    '<span style="color:#cc79a7">▮</span> facet normal = h &nbsp; <span style="color:#111">▬</span> shadowed &nbsp; <span style="color:#0072b2">▬</span> masked';
+    '<span style="color:#cc79a7">▮</span> facet normal = h &nbsp; <span style="color:#111">▬</span> shadowed (solid) &nbsp; <span style="color:#0072b2">▭</span> masked (hollow)';
   shell.view.append(legend);
   const stats = document.createElement('div');
   shell.view.append(stats);
@@ -126,6 +125,12 @@ export function createMicrofacets(container, initialState = {}, { onStateChange 
         ctx.moveTo(X(i + ta), Y(profile[i] + ta * rise));
         ctx.lineTo(X(i + tb), Y(profile[i] + tb * rise));
         ctx.stroke();
+        if (lit && !seen) {
+          // masked stretches are hollow as well as blue: told apart from shadowed ones without colour
+          ctx.strokeStyle = '#ffffff';
+          ctx.lineWidth = 1.3;
+          ctx.stroke();
+        }
       }
       const facetAngle = Math.atan2(nx, ny) / DEG;
       if (Math.abs(facetAngle - hAngle) < H_TOLERANCE_DEG) {
@@ -195,7 +200,6 @@ export function createMicrofacets(container, initialState = {}, { onStateChange 
     arrow(l, '#e6a700', 'l', w - 80);
     arrow(v, '#0072b2', 'v', w - 80);
     arrow([Math.sin(hAngle * DEG), Math.cos(hAngle * DEG)], '#cc79a7', 'h', w - 80);
-    canvas.setAttribute('aria-label', `A rough ${s.kind} profile, α ${s.alpha}, lit from ${s.lightTheta}°, seen from ${s.viewTheta}°; ${twice} of ${s.rays} rays bounce twice.`);
     return twice;
   }
 
@@ -210,6 +214,11 @@ export function createMicrofacets(container, initialState = {}, { onStateChange 
       `<tr><td>shadowed share of facets facing the light, ray-traced</td><td>${((1 - measured) * 100).toFixed(2)}%</td></tr>` +
       `<tr><td>the same, predicted by Smith (1 − G1)</td><td>${((1 - smith(c)) * 100).toFixed(2)}%</td></tr>` +
       `<tr><td>rays drawn that bounce twice</td><td>${twice} of ${s.rays}</td></tr></tbody></table>`;
+    const hDeg = Math.atan2(Math.sin(s.lightTheta * DEG) + Math.sin(s.viewTheta * DEG), Math.cos(s.lightTheta * DEG) + Math.cos(s.viewTheta * DEG)) / DEG;
+    shell.describe(`Magnified cross-section of a rough surface, ${schema.kind.options[s.kind]}, α ${s.alpha}: ${s.rays} rays from the light at ${s.lightTheta}°, ` +
+      `eye at ${s.viewTheta}°, so the half vector h is ${hDeg.toFixed(1)}° from the mean normal; facets along h are marked. ` +
+      `Shadowed share of the facets facing the light: ${((1 - measured) * 100).toFixed(1)}% ray-traced, ${((1 - smith(c)) * 100).toFixed(1)}% by Smith. ` +
+      `${twice} of ${s.rays} rays hit the surface a second time${s.bounces ? ' (drawn in red)' : ''}.`, canvas);
     if (rebuild) {
       if (plot) plot.setData(plotSpec());
       else plot = createPlot(shell.view, plotSpec());

@@ -3,7 +3,7 @@
 import { createWidgetShell } from '../../core/widget-shell.js';
 import { createPlot } from '../../core/plot.js';
 import { createSphereGrid } from '../../core/sphere-grid.js';
-import { SERIES_COLORS } from '../../core/palettes.js';
+import { seriesStyle } from '../../core/palettes.js';
 import { lightDirFromAngles } from '../../core/light-control.js';
 import { NDF_TERMS, microfacetBRDFAt, punctualRadiance } from '../../math/brdf.js';
 import { matchNdfWidths } from '../../math/ndf-width.js';
@@ -57,7 +57,7 @@ function curves(state) {
     const p = params[key];
     const D = (c) => NDF_TERMS[key](c, p);
     return {
-      key, p, label: NDFS[key].name, stroke: SERIES_COLORS[Object.keys(NDFS).indexOf(key)],
+      key, p, label: NDFS[key].name, ...seriesStyle(Object.keys(NDFS).indexOf(key)),
       values: ANGLES.map((deg) => D(Math.cos(deg * DEG))), integral: ndfProjectedIntegral(D),
     };
   });
@@ -76,13 +76,13 @@ export function createNdfExplorer(container, initialState = {}, { onStateChange 
   let data = curves(shell.state);
   const linearSpec = () => ({
     ...axis, title: 'D(θh), linear', yLabel: 'D (1/sr)', y: null, legend: true,
-    series: data.map((c) => ({ label: c.label, stroke: c.stroke })), data: [ANGLES, ...data.map((c) => c.values)], filename: 'ndf-linear', height: 260,
+    series: data.map((c) => ({ label: c.label, stroke: c.stroke, dash: c.dash })), data: [ANGLES, ...data.map((c) => c.values)], filename: 'ndf-linear', height: 260,
   });
   const logSpec = () => {
     const peak = Math.max(...data.map((c) => c.values[0]), 1e-3);
     return {
       ...axis, title: 'D(θh), log scale: the tails', yLabel: 'D (1/sr)', y: { min: peak * 1e-7, max: peak * 2, log: true }, legend: false,
-      series: data.map((c) => ({ label: c.label, stroke: c.stroke })),
+      series: data.map((c) => ({ label: c.label, stroke: c.stroke, dash: c.dash })),
       data: [ANGLES, ...data.map((c) => c.values.map((v) => (v > peak * 1e-7 ? v : null)))], filename: 'ndf-log', height: 260,
     };
   };
@@ -111,7 +111,8 @@ export function createNdfExplorer(container, initialState = {}, { onStateChange 
         ['radiance π·D/4·(n·l)', punctualRadiance(microfacetBRDFAt(a, { F: 'one', D: c.key, V: 'implicit', ...c.p }), a.nl, 1).toPrecision(4)],
       ],
     })));
-    spheres.setDescription(`Spheres lit by one small light ${s.lightTheta}° from the view, one per NDF (${data.map((c) => c.label).join(', ')}), all at a half width of ${s.hwhm}°.`);
+    shell.describe(`Spheres lit by one small light ${s.lightTheta}° from the view, exposure ${s.exposure}, F = 1 and V = 1, one per NDF at a half width of ${s.hwhm}°: ` +
+      `${data.map((c) => `${c.label} (${describeParams(c.key, c.p)}, peak D ${c.values[0].toPrecision(3)} /sr)`).join(', ') || 'none chosen'}.`, spheres.canvas);
   };
   renderTable();
   renderSpheres();

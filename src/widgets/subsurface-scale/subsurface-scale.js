@@ -63,7 +63,6 @@ export function createSubsurfaceScale(container, initialState = {}, { onStateCha
   const shell = createWidgetShell(container, { name: 'subsurface-scale', schema, initialState, about: ABOUT, terms: TERMS_USED });
   const canvas = document.createElement('canvas');
   canvas.className = 'subsurface';
-  canvas.setAttribute('role', 'img');
   const verdict = document.createElement('p');
   verdict.className = 'verdict';
   const table = document.createElement('div');
@@ -101,9 +100,11 @@ export function createSubsurfaceScale(container, initialState = {}, { onStateCha
     const local = stats.insideShare >= LOCAL_SHARE;
     ctx.strokeStyle = local ? '#009e73' : '#d62728';
     ctx.lineWidth = 2.5;
+    ctx.setLineDash(local ? [] : [7, 5]);
     ctx.beginPath();
     ctx.arc(w / 2, surfaceY, s.pixel * scale, 0, 2 * Math.PI);
     ctx.stroke();
+    ctx.setLineDash([]);
     // the drawn paths
     const rand = seededRandom(s.seed);
     for (let i = 0; i < s.walks; i++) {
@@ -138,8 +139,9 @@ export function createSubsurfaceScale(container, initialState = {}, { onStateCha
     ctx.font = '12px system-ui, sans-serif';
     ctx.fillText('light in', w / 2 + 10, surfaceY - 42);
     ctx.fillText(`${span.toFixed(1)} mm across`, 8, h - 8);
-    canvas.setAttribute('aria-label', `${s.walks} light paths in a medium with scattering ${s.sigmaS}/mm and absorption ${s.sigmaA}/mm; ` +
-      `${(stats.insideShare * 100).toFixed(0)}% of the light that comes back out leaves within the ${s.pixel} mm shading sample.`);
+    // the verdict in words too, not by the circle's colour alone (dashed when subsurface scattering is needed)
+    ctx.fillStyle = local ? '#0b5d3b' : '#8c1d18';
+    ctx.fillText(`shading sample: ${local ? 'local, diffuse is enough' : 'too small, needs subsurface scattering'}`, Math.min(w / 2 + s.pixel * scale * 0.72 + 6, w - 270), Math.max(surfaceY + s.pixel * scale * 0.72 + 14, surfaceY + 30));
   }
 
   const render = (changed) => {
@@ -154,6 +156,8 @@ export function createSubsurfaceScale(container, initialState = {}, { onStateCha
     verdict.textContent = local
       ? `${(stats.insideShare * 100).toFixed(1)}% of the light that comes back out leaves inside the shading sample: treat it as local, a diffuse term is enough.`
       : `Only ${(stats.insideShare * 100).toFixed(1)}% of the light that comes back out leaves inside the shading sample: the rest appears elsewhere, so subsurface scattering is needed.`;
+    shell.describe(`${s.walks} light paths in a material with scattering ${s.sigmaS}/mm and absorption ${s.sigmaA}/mm, entering at one point; ` +
+      `median entry-to-exit distance ${stats.median.toFixed(2)} mm against a shading sample of radius ${s.pixel} mm. ${verdict.textContent}`, canvas);
     table.innerHTML = '<table class="data-table compact"><caption>From 20 000 paths</caption><tbody>' +
       `<tr><td>mean free path 1/σt</td><td>${meanFreePath(s.sigmaS + s.sigmaA).toFixed(3)} mm</td></tr>` +
       `<tr><td>single-scattering albedo σs/σt</td><td>${scatteringAlbedo(s.sigmaS, s.sigmaA).toFixed(3)}</td></tr>` +

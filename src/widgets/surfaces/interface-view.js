@@ -69,5 +69,10 @@ export function drawInterface(canvas, spec) {
     ctx.fillStyle = '#222';
     ctx.fillText(`refracted ${((1 - spec.F) * 100).toFixed(1)}%: scattered inside; where paths reach the surface again, light leaves (diffuse)`, 12, h - 12);
   }
-  canvas.setAttribute('aria-label', `${spec.name}: at ${spec.theta.toFixed(0)}° incidence ${(spec.F * 100).toFixed(1)}% is reflected; the rest is ${spec.metal ? 'absorbed by the metal' : 'refracted and scattered inside'}.`);
+}
+
+/** The cross-section in words. */
+export function describeInterface(spec) {
+  const rest = spec.metal ? `absorbed by the metal within about ${spec.depthNm.toFixed(0)} nm` : 'refracted and scattered inside; some of it comes back out as diffuse light';
+  return `Optically flat ${spec.name} in cross-section: light at ${spec.theta.toFixed(0)}° incidence, ${(spec.F * 100).toFixed(1)}% reflected; the other ${((1 - spec.F) * 100).toFixed(1)}% is ${rest}.`;
 }

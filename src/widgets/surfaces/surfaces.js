@@ -11,7 +11,7 @@ import { fresnelConductor, fresnelDielectric } from '../../math/fresnel.js';
 import { measuredRgbNk } from '../../math/optical-constants.js';
 import { generateProfile, reflectedAngleDensity, reflectedAngles, seededRandom } from '../../math/microsurface.js';
 import { smithG1Beckmann } from '../../math/visibility.js';
-import { drawInterface } from './interface-view.js';
+import { describeInterface, drawInterface } from './interface-view.js';
 
 export const schema = {
   material: { type: 'enum', options: Object.fromEntries([...NON_METALS, ...METALS].map((m) => [m.key, m.name])), default: 'glass-high', label: 'Material' },
@@ -66,7 +66,6 @@ export function createSurfaces(container, initialState = {}, { onStateChange } =
   const shell = createWidgetShell(container, { name: 'surfaces', schema, initialState, about: ABOUT, terms: TERMS_USED });
   const flat = document.createElement('canvas');
   flat.className = 'interface';
-  flat.setAttribute('role', 'img');
   shell.view.append(flat);
   let profile = generateProfile(PROFILE, 'beckmann', shell.state.alpha, 2);
   const cone = createPlot(shell.view, coneSpec(shell.state, profile));
@@ -115,7 +114,9 @@ export function createSurfaces(container, initialState = {}, { onStateChange } =
   }
 
   const render = (changed) => {
-    drawInterface(flat, interfaceSpec(shell.state));
+    const spec = interfaceSpec(shell.state);
+    drawInterface(flat, spec);
+    shell.describe(`${describeInterface(spec)} With microgeometry of roughness α ${shell.state.alpha}, the reflection spreads into a cone around the mirror direction (plot below).`, flat);
     if (changed?.includes('alpha')) profile = generateProfile(PROFILE, 'beckmann', shell.state.alpha, 2);
     if (!changed || changed.some((k) => k === 'alpha' || k === 'theta')) cone.setData(coneSpec(shell.state, profile));
   };

@@ -3,7 +3,7 @@
 import { createWidgetShell } from '../../core/widget-shell.js';
 import { createPlot } from '../../core/plot.js';
 import { createSphereGrid } from '../../core/sphere-grid.js';
-import { SERIES_COLORS } from '../../core/palettes.js';
+import { seriesStyle } from '../../core/palettes.js';
 import { lightDirFromAngles } from '../../core/light-control.js';
 import { VISIBILITY_TERMS, brdfAngles } from '../../math/brdf.js';
 
@@ -68,7 +68,7 @@ function curves(state) {
     const G = evalTerm(key);
     const error = G.map((g, i) => (reference[i] > 1e-9 ? (100 * (g - reference[i])) / reference[i] : null));
     const within = error.filter((e, i) => e !== null && ANGLES[i] <= 80);
-    return { key, label: TERMS[key].name, stroke: SERIES_COLORS[Object.keys(TERMS).indexOf(key) % SERIES_COLORS.length], G, error, worst: Math.max(...within.map(Math.abs)) };
+    return { key, label: TERMS[key].name, ...seriesStyle(Object.keys(TERMS).indexOf(key)), G, error, worst: Math.max(...within.map(Math.abs)) };
   });
 }
 
@@ -82,12 +82,12 @@ export function createVisibilityExplorer(container, initialState = {}, { onState
   const xLabel = () => (shell.state.config === 'mirror' ? 'Angle of l and of v from n (degrees)' : `Light angle θl, view fixed at ${shell.state.viewTheta}° (degrees)`);
   const gSpec = () => ({
     title: `G = V·(n·l)(n·v) at α = ${shell.state.alpha}`, xLabel: xLabel(), yLabel: 'G', x: { min: 0, max: 90 }, y: { min: 0, max: 1.05 },
-    xValues: (u, t) => t.map((v) => `${v}°`), series: data.map((c) => ({ label: c.label, stroke: c.stroke })),
+    xValues: (u, t) => t.map((v) => `${v}°`), series: data.map((c) => ({ label: c.label, stroke: c.stroke, dash: c.dash })),
     data: [ANGLES, ...data.map((c) => c.G)], filename: 'visibility-G', height: 280,
   });
   const errSpec = () => ({
     title: 'Difference from height-correlated Smith (%)', xLabel: xLabel(), yLabel: 'error (%)', x: { min: 0, max: 90 }, y: { min: -100, max: 100 },
-    xValues: (u, t) => t.map((v) => `${v}°`), legend: false, series: data.map((c) => ({ label: c.label, stroke: c.stroke })),
+    xValues: (u, t) => t.map((v) => `${v}°`), legend: false, series: data.map((c) => ({ label: c.label, stroke: c.stroke, dash: c.dash })),
     data: [ANGLES, ...data.map((c) => c.error)], filename: 'visibility-error', height: 220,
   });
   const gPlot = createPlot(plots, gSpec());
@@ -112,7 +112,9 @@ export function createVisibilityExplorer(container, initialState = {}, { onState
         return [['V', V.toPrecision(4)], ['G = V (n·l)(n·v)', (V * Math.max(a.nl, 0) * Math.max(a.nv, 0)).toFixed(4)], ['V / V Smith corr.', (V / VISIBILITY_TERMS[REFERENCE](a, { alpha: s.alpha })).toFixed(4)]];
       },
     })));
-    spheres.setDescription(`Spheres with GGX α ${s.alpha}, one per visibility term: ${data.map((c) => c.label).join(', ')}.`);
+    shell.describe(`Spheres with GGX D at α ${s.alpha} and F = 1, light ${s.lightTheta}° from the view, exposure ${s.exposure}, one per visibility term. ` +
+      `Largest difference from height-correlated Smith up to 80° (${s.config === 'mirror' ? 'l and v mirrored' : `view at ${s.viewTheta}°`}): ` +
+      `${data.map((c) => `${c.label} ${c.worst.toFixed(1)}%`).join(', ') || 'no term chosen'}.`, spheres.canvas);
   };
   renderTable();
   renderSpheres();

@@ -1,0 +1,48 @@
+// Words for what a widget draws, for people who cannot see it. Every canvas carries role="img" and an
+// aria-label that is rewritten whenever the picture changes; each widget also has one visually hidden
+// live region that reads out a short summary after the state settles (not on every step of a drag).
+
+/** Marks `canvas` as an image and sets its text description. */
+export function describeCanvas(canvas, text) {
+  if (!canvas) return;
+  canvas.setAttribute('role', 'img');
+  canvas.setAttribute('aria-label', text);
+}
+
+const SETTLE_MS = 500; // a slider drag announces once, when it stops
+
+/** A visually hidden polite live region inside `parent`; say(text) updates it once changes settle. */
+export function createLiveRegion(parent) {
+  const region = document.createElement('div');
+  region.className = 'visually-hidden widget-live';
+  region.setAttribute('role', 'status');
+  region.setAttribute('aria-live', 'polite');
+  parent.append(region);
+  let timer = 0;
+  let pending = null;
+  return {
+    element: region,
+    say(text) {
+      pending = text;
+      if (!region.textContent) {
+        region.textContent = text; // the first description is there at once (read with the widget)
+        return;
+      }
+      clearTimeout(timer);
+      timer = setTimeout(() => {
+        if (region.textContent !== pending) region.textContent = pending;
+      }, SETTLE_MS);
+    },
+    dispose() {
+      clearTimeout(timer);
+    },
+  };
+}
+
+/** Numbers in descriptions: 3 significant digits, no exponent for ordinary magnitudes. */
+export function spokenNumber(x) {
+  if (!Number.isFinite(x)) return String(x);
+  const a = Math.abs(x);
+  if (a !== 0 && (a < 1e-3 || a >= 1e5)) return x.toExponential(2);
+  return String(Number(x.toPrecision(3)));
+}

@@ -1,0 +1,155 @@
+// The guided tour: the talk's ideas one step at a time, each with the widget that shows it set up for it.
+// Every step has its own URL (tour.html#<step id>), so a slide can link to it and the browser's back and
+// forward walk the tour. A widget that goes on from one step to the next is kept and only given the new
+// state; a different one replaces it, and the old one is disposed (its WebGL context with it).
+import '../styles.css';
+import { mountWidget } from '../core/widget-host.js';
+import { defaultState } from '../core/state.js';
+import { createNoticeArea } from '../core/notice.js';
+import { WIDGETS, isWidgetName } from '../widgets/registry.js';
+import { tourPlan } from '../tour/steps.js';
+
+const { steps, sections } = tourPlan(isWidgetName);
+const root = document.getElementById('tour');
+const $ = (selector) => root.querySelector(selector);
+const stage = $('.tour-stage');
+const notices = createNoticeArea($('.tour-messages'));
+const [prevButton, nextButton, fullscreenButton] = ['.tour-prev', '.tour-next', '.tour-fullscreen'].map($);
+const registry = (globalThis.__shadingLab ??= { frames: 0 });
+
+renderSections();
+
+let index = -1; // the step shown, or being set up
+let mounted = null; // { name, instance }
+let queue = Promise.resolve(); // steps are set up one after another; only the latest request is shown
+
+function show(i) {
+  index = i;
+  renderText(steps[i], i);
+  registry.tour = { index: i, id: steps[i].id, ready: false };
+  queue = queue
+    .then(() => (i === index ? setUp(steps[i], i) : null))
+    .catch((err) => notices.show(`This step could not be set up: ${err.message}`));
+  return queue;
+}
+
+async function setUp(step, i) {
+  const { widget } = await WIDGETS[step.widget].load();
+  const state = { ...defaultState(widget.schema), ...step.state }; // the same picture however one arrives
+  if (mounted?.name === step.widget) mounted.instance.update(state);
+  else {
+    if (mounted) release(mounted.instance);
+    mounted = null;
+    stage.replaceChildren();
+    mounted = { name: step.widget, instance: await mountWidget(stage, step.widget, { prefix: 'tour', syncUrl: false, initialState: state }) };
+  }
+  if (i === index) registry.tour = { index: i, id: step.id, widget: step.widget, instance: mounted.instance, ready: true };
+}
+
+/**
+ * Disposes a widget and gives its WebGL contexts back at once: a disposed renderer's context otherwise lives
+ * until garbage collection, and a long tour would run into the browser's limit on live contexts.
+ */
+function release(instance) {
+  const contexts = [...stage.querySelectorAll('.viewport canvas')].map((c) => c.getContext('webgl2')); // the existing ones
+  instance.dispose();
+  for (const gl of contexts) gl?.getExtension('WEBGL_lose_context')?.loseContext();
+}
+
+function renderText(step, i) {
+  const section = sections.find((s) => s.key === step.section);
+  $('.tour-count').textContent = `Step ${i + 1} of ${steps.length}`;
+  $('.tour-section').textContent = `${sections.indexOf(section) + 1}. ${section.title} (${i - section.first + 1} of ${section.count})`;
+  $('.tour-title').textContent = step.title;
+  $('.tour-spoken-title').textContent = `: ${step.title}`; // the live progress line reads the new title too
+  $('.tour-text').textContent = step.text;
+  const meter = $('.tour-meter');
+  meter.max = steps.length;
+  meter.value = i + 1;
+  const coming = sections.filter((s) => !s.count).map((s) => s.title);
+  const end = $('.tour-end');
+  end.hidden = i !== steps.length - 1;
+  end.textContent = `End of the tour${coming.length ? ` so far. Still to come: ${coming.join(', ')}` : ''}.`;
+  prevButton.setAttribute('aria-disabled', String(i === 0));
+  nextButton.setAttribute('aria-disabled', String(i === steps.length - 1));
+  for (const li of $('.tour-sections ol').children) {
+    if (li.dataset.section === step.section) li.setAttribute('aria-current', 'step');
+    else li.removeAttribute('aria-current');
+  }
+  document.title = `${step.title} — Guided tour — Shading Lab`;
+}
+
+/** The talk's sections: a link to the first step of each, or "coming" where there is none yet. */
+function renderSections() {
+  $('.tour-sections ol').replaceChildren(...sections.map((s) => {
+    const li = document.createElement('li');
+    li.dataset.section = s.key;
+    if (s.count) li.append(Object.assign(document.createElement('a'), { href: `#${steps[s.first].id}`, textContent: s.title }));
+    else {
+      li.className = 'coming';
+      li.append(s.title, ' ', Object.assign(document.createElement('span'), { className: 'tag', textContent: 'coming' }));
+    }
+    return li;
+  }));
+}
+
+/** Moves to step i; the URL changes with a history entry, and the hashchange shows the step. */
+function go(i) {
+  const j = Math.min(Math.max(i, 0), steps.length - 1);
+  if (j !== index) location.hash = steps[j].id;
+}
+
+function route() {
+  const id = decodeURIComponent(location.hash.slice(1));
+  const i = steps.findIndex((s) => s.id === id);
+  if (i >= 0) {
+    if (i !== index) show(i);
+    return;
+  }
+  const keep = Math.max(index, 0);
+  if (id) notices.show(`There is no step “${id}” in the tour; ${index >= 0 ? 'stayed on' : 'showing'} “${steps[keep].title}”.`);
+  history.replaceState(history.state, '', `#${steps[keep].id}`);
+  if (index < 0) show(keep);
+}
+
+// Keys: a control that has the focus keeps its own (sliders, inputs, lists; a canvas that moves a light or a
+// plot cursor marks the keys it used with preventDefault); everything else drives the tour.
+const NEXT = new Set(['ArrowRight', 'PageDown', ' ']);
+const PREVIOUS = new Set(['ArrowLeft', 'PageUp']);
+const typingIn = (el) => el instanceof Element && (el.isContentEditable || el.matches('input, select, textarea, [role=slider], [role=spinbutton]'));
+window.addEventListener('keydown', (e) => {
+  if (e.defaultPrevented || e.altKey || e.ctrlKey || e.metaKey || typingIn(e.target)) return;
+  if (e.key === ' ' && e.target instanceof Element && e.target.closest('button, a, summary, [role=button]')) return; // Space presses it
+  const to = NEXT.has(e.key) ? index + 1 : PREVIOUS.has(e.key) ? index - 1 : e.key === 'Home' ? 0 : e.key === 'End' ? steps.length - 1 : null;
+  if (to !== null) {
+    e.preventDefault();
+    go(to);
+  } else if (e.key === 'f' || e.key === 'F') {
+    e.preventDefault();
+    toggleFullscreen();
+  }
+});
+// Escape hands the keys back to the tour from inside the widget (lil-gui keeps its keys from bubbling)
+window.addEventListener('keydown', (e) => {
+  if (e.key === 'Escape' && stage.contains(document.activeElement)) document.activeElement.blur();
+}, true);
+
+prevButton.addEventListener('click', () => go(index - 1));
+nextButton.addEventListener('click', () => go(index + 1));
+fullscreenButton.addEventListener('click', toggleFullscreen);
+
+async function toggleFullscreen() {
+  if (document.fullscreenElement) return document.exitFullscreen();
+  try {
+    if (!document.fullscreenEnabled) throw new Error('full screen is not enabled');
+    await root.requestFullscreen();
+  } catch {
+    notices.show('The browser did not allow full screen here (a frame or a setting may forbid it). Use the browser’s own full-screen key instead, usually F11.');
+  }
+}
+document.addEventListener('fullscreenchange', () => {
+  fullscreenButton.textContent = document.fullscreenElement ? 'Exit full screen' : 'Full screen';
+});
+
+window.addEventListener('hashchange', route);
+route();

@@ -1,0 +1,261 @@
+// The guided tour as plain data: one step per idea of the talk, in its order. A step names the widget that
+// shows the idea and the state that sets it up (only the keys that matter: the rest take the widget's
+// defaults, so a step looks the same however the reader arrived). Its id is its URL: tour.html#<id>.
+//
+// To extend the tour, append steps; nothing else changes. A step whose widget is not registered yet is left
+// out, and a section without steps is shown as "coming" (the diffuse and rendering chapters, for now).
+import { CHAPTERS } from '../core/chapters.js';
+
+/** The talk's sections the tour walks through, in order (the performance chapter is not part of the talk). */
+export const TOUR_SECTIONS = CHAPTERS.filter((c) => c.key !== 'performance').map(({ key, title }) => ({ key, title }));
+
+export const TOUR_STEPS = [
+  // 1. Light in media
+  {
+    id: 'media-straight-line', section: 'media', widget: 'media', title: 'Light in a clear medium',
+    state: { medium: 'water', distance: -1.3 },
+    text: 'Where a medium is the same everywhere, light travels in straight lines. Five centimetres of clean water ' +
+      'hardly touch it: the chequered wall shows through unchanged, and almost all of the light gets across.',
+  },
+  {
+    id: 'media-water-depth', section: 'media', widget: 'media', title: 'Absorption depends on distance',
+    state: { medium: 'water', distance: 1.5 },
+    text: 'Water does absorb a little red. Over centimetres that is invisible, but Beer–Lambert makes the loss ' +
+      'exponential in depth: after about thirty metres almost no red is left and the light is blue-green. ' +
+      'The plot below follows each channel from a millimetre to a hundred metres.',
+  },
+  {
+    id: 'media-red-absorber', section: 'media', widget: 'media', title: 'Absorption changes colour',
+    state: { medium: 'red', distance: -1.3 },
+    text: 'A stronger absorber that takes more blue and green than red tints light within millimetres, like wine. ' +
+      'Absorption changes how much light there is and what colour it has, never its direction.',
+  },
+  {
+    id: 'media-scattering', section: 'media', widget: 'media', title: 'Scattering makes a medium cloudy',
+    state: { medium: 'cloudy', distance: -1.3 },
+    text: 'Particles whose index of refraction differs from their surroundings turn light aside. A few of them ' +
+      'blur the wall behind the glass; the light is not lost, it leaves in other directions.',
+  },
+  {
+    id: 'media-grid', section: 'media', widget: 'media', title: 'Absorption and scattering together',
+    state: { view: 'grid', samples: '64' },
+    text: 'The talk’s grid of glasses: absorption grows upwards, scattering to the right. Strong scattering with ' +
+      'little absorption (bottom right) sends light back out in every direction: the medium looks white and ' +
+      'opaque, like milk.',
+  },
+
+  // 2. Surfaces and microgeometry
+  {
+    id: 'surfaces-flat', section: 'surfaces', widget: 'surfaces', title: 'An optically flat surface',
+    state: { material: 'glass-high', theta: 40 },
+    text: 'A surface is a sudden change of refractive index. When its bumps are smaller than a wavelength it is ' +
+      'optically flat and splits light into exactly two directions: reflected and refracted. The Fresnel ' +
+      'equations give the split.',
+  },
+  {
+    id: 'surfaces-metal', section: 'surfaces', widget: 'surfaces', title: 'Metals and non-metals',
+    state: { material: 'copper', theta: 40 },
+    text: 'What happens to the refracted light depends on the material. A metal absorbs it within nanometres, so ' +
+      'all we see is the reflection; a non-metal (switch the material back to glass) scatters it inside, and some ' +
+      'comes back out elsewhere.',
+  },
+  {
+    id: 'surfaces-rough', section: 'surfaces', widget: 'surfaces', title: 'Rougher means blurrier',
+    state: { material: 'glass-high', theta: 30, alpha: 0.5 },
+    text: 'Most surfaces have microgeometry: facets too small to see but larger than a wavelength. Each one is a ' +
+      'mirror, but they face different ways, so the reflection spreads into a cone, and the ray-traced histogram ' +
+      'follows the microfacet prediction. The spheres below show the result: rougher, blurrier reflections.',
+  },
+  {
+    id: 'subsurface-local', section: 'surfaces', widget: 'subsurface-scale', title: 'When diffuse is local',
+    state: { pixel: 4 },
+    text: 'Light refracted into a non-metal wanders and re-emerges some distance from where it entered. If a pixel ' +
+      'covers much more than that distance, we may pretend it comes out where it went in: shading stays local, ' +
+      'and this re-emerging light is the diffuse term.',
+  },
+  {
+    id: 'subsurface-needed', section: 'surfaces', widget: 'subsurface-scale', title: 'When subsurface scattering is needed',
+    state: { pixel: 0.3 },
+    text: 'Shrink the shading sample below the typical exit distance (a close-up of skin, say) and most of the ' +
+      'light leaves outside it. The physics is the same as diffuse; only the scale has changed, and now ' +
+      'subsurface scattering has to be rendered.',
+  },
+
+  // 3. The BRDF and the reflectance equation
+  {
+    id: 'brdf-lobe', section: 'brdf', widget: 'brdf-lobe', title: 'The BRDF f(l, v)',
+    state: { lightTheta: 45, viewTheta: 45 },
+    text: 'With shading local, a surface point answers one question: of the light arriving from l, how much ' +
+      'leaves towards v? That is the BRDF. Fix the light and sweep the view, and f traces a lobe around the ' +
+      'mirror direction. Drag l or v on the polar plot.',
+  },
+  {
+    id: 'brdf-intensity', section: 'brdf', widget: 'brdf-lobe', title: 'BRDF times the cosine',
+    state: { lightTheta: 60, viewTheta: 60, cosine: true },
+    text: 'The BRDF is a density per steradian, largest towards the horizon. Multiplying by n·v shows how much ' +
+      'light actually leaves in each direction, and the reflectance equation is exactly this: the integral of ' +
+      'f × incoming light × n·l, a weighted average over all incoming directions (the albedo plot).',
+  },
+  {
+    id: 'brdf-factors', section: 'brdf', widget: 'brdf-lobe', title: 'Taking the BRDF apart',
+    state: { lightTheta: 60, viewTheta: 60, useDenominator: false },
+    text: 'A microfacet BRDF is F·G·D / (4 (n·l)(n·v)). Here the denominator is switched off: the lobe stops ' +
+      'growing at grazing angles. Turn factors off one at a time to see what each contributes.',
+  },
+  {
+    id: 'brdf-compare', section: 'brdf', widget: 'brdf-lobe', title: 'Two BRDFs side by side',
+    state: { compare: true, lightTheta: 30, viewTheta: 30 },
+    text: 'Overlay a second BRDF (dashed) at the same width: GGX against Beckmann. The images over the half and ' +
+      'difference angles (θh, θd) show the same functions in the coordinates they really depend on.',
+  },
+
+  // 4. Microfacet theory
+  {
+    id: 'microfacets-half-vector', section: 'microfacets', widget: 'microfacets', title: 'The half vector',
+    state: { lightTheta: 35, viewTheta: -15, alpha: 0.5, bounces: false },
+    text: 'Each microfacet is a perfect mirror, so it reflects l into v only if its normal m lies halfway ' +
+      'between them: m = h. The marked facets are the only ones that send this light to the eye; D(h) counts ' +
+      'how many there are.',
+  },
+  {
+    id: 'microfacets-shadowing', section: 'microfacets', widget: 'microfacets', title: 'Shadowing and masking',
+    state: { lightTheta: 75, viewTheta: -60, alpha: 0.6, bounces: false },
+    text: 'Not every facet facing along h contributes: some are hidden from the light (shadowed, solid black) ' +
+      'and some from the eye (masked, hollow blue). Towards grazing angles more are lost; the plot compares the ' +
+      'ray-traced share with Smith’s G1.',
+  },
+  {
+    id: 'microfacets-bounces', section: 'microfacets', widget: 'microfacets', title: 'Light that bounces twice',
+    state: { kind: 'ggx', alpha: 1, lightTheta: 60, viewTheta: -40, bounces: true },
+    text: 'Blocked light does not vanish: it bounces again (red) and some of it still reaches the eye. The ' +
+      'microfacet BRDF drops it, so it assumes all blocked light is lost.',
+  },
+  {
+    id: 'microfacets-furnace', section: 'microfacets', widget: 'energy', title: 'The energy that is lost',
+    state: {},
+    text: 'How much does dropping the second bounces cost? In a uniform white environment a surface that loses ' +
+      'nothing would vanish. Smooth spheres nearly do; rough ones stay grey, and at α = 1 most of the light ' +
+      'arriving head-on is lost (the table has the figures).',
+  },
+
+  // 5. Fresnel reflectance
+  {
+    id: 'fresnel-curves', section: 'fresnel', widget: 'fresnel-curves', title: 'Fresnel reflectance against angle',
+    state: { materials: ['copper', 'aluminum', 'glass-low', 'diamond'], schlick: false, zones: true },
+    text: 'The share of light reflected by an optically flat surface depends on the material and on the angle. ' +
+      'Up to about 45° it barely changes, to 75° it changes somewhat, and at grazing angles it rises quickly to ' +
+      '100% for every material. Metals get one curve per colour channel.',
+  },
+  {
+    id: 'fresnel-nv-glass', section: 'fresnel', widget: 'fresnel-zones', title: 'Fresnel of n·v on a shape',
+    state: { mode: 'fresnel-nv', material: 'glass-low', shape: 'sphere' },
+    text: 'Under even, directionless light the angle that matters is the one between the view and the normal. ' +
+      'Glass on a sphere: about 3% reflected where it faces us, brightening to white at the silhouette.',
+  },
+  {
+    id: 'fresnel-zones-nv', section: 'fresnel', widget: 'fresnel-zones', title: 'Zones of n·v',
+    state: { mode: 'zones-nv', shape: 'sphere' },
+    text: 'Colour the same angles by zone. Most of the picture lies where reflectance barely changes: for an ' +
+      'orthographic sphere exactly sin²45° = 50%, then 43.3% where it changes somewhat, and only 6.7% in the ' +
+      'rapidly rising zone at the rim. The widget measures the shares on the GPU beside the analytic values.',
+  },
+  {
+    id: 'fresnel-zones-lh', section: 'fresnel', widget: 'fresnel-zones', title: 'Zones of l·h',
+    state: { mode: 'zones-lh', shape: 'torusknot', lightTheta: 140 },
+    text: 'In a microfacet BRDF the facets that reflect are those facing along h, so Fresnel takes the angle ' +
+      'between l and h. With the light behind the object the whole shape turns yellow or red. Move the light ' +
+      'around (drag, or the arrow keys on the picture).',
+  },
+  {
+    id: 'fresnel-zones-lh-weighted', section: 'fresnel', widget: 'fresnel-zones', title: 'Weighted by the rest of the BRDF',
+    state: { mode: 'zones-lh-weighted', shape: 'torusknot', lightTheta: 140 },
+    text: 'Now weight each pixel by the light the rest of the BRDF actually sends to the eye. From behind, ' +
+      'little light reaches the eye: only thin grazing edges stay bright. Averaged over light directions all ' +
+      'around the object, about two thirds of the reflected light is green and under 1% red (see the legend).',
+  },
+  {
+    id: 'fresnel-f0-tables', section: 'fresnel', widget: 'f0-tables', title: 'F(0°) is the specular colour',
+    state: { selected: 'gold' },
+    text: 'Since reflectance hardly moves over most angles, its value at normal incidence, F(0°), serves as the ' +
+      'surface’s specular colour. Metals are bright and often coloured; non-metals are dark and grey, a few ' +
+      'percent. Mind linear against sRGB values.',
+  },
+  {
+    id: 'fresnel-gold', section: 'fresnel', widget: 'fresnel-zones', title: 'A metal’s colour is its reflection',
+    state: { mode: 'fresnel-nv', material: 'gold', shape: 'teapot', camera: 'perspective' },
+    text: 'A metal has no diffuse term: everything refracted is absorbed, so its Fresnel reflectance is all the ' +
+      'colour it has. Gold keeps its yellow over most of the teapot and whitens only at grazing angles.',
+  },
+  {
+    id: 'fresnel-schlick', section: 'fresnel', widget: 'fresnel-curves', title: 'Schlick’s approximation',
+    state: { materials: ['gold', 'copper', 'glass-low', 'diamond'], schlick: true, zones: true },
+    text: 'Schlick’s approximation needs only F(0°): F0 + (1 − F0)(1 − cos θ)⁵. The dashed curves follow the ' +
+      'exact ones closely; the error plot shows it is largest towards grazing angles, where little of the ' +
+      'picture lies.',
+  },
+
+  // 6. Normal distribution functions
+  {
+    id: 'ndf-matched', section: 'ndf', widget: 'ndf-explorer', title: 'Five NDFs at one width',
+    state: { hwhm: 8 },
+    text: 'The normal distribution function D(h) is the density of facets facing along h: it sets the size and ' +
+      'shape of the highlight. Given the same half width, the five distributions of the talk share a core and ' +
+      'differ in shape.',
+  },
+  {
+    id: 'ndf-tails', section: 'ndf', widget: 'ndf-explorer', title: 'Long tails, soft halos',
+    state: { hwhm: 8, exposure: 8 },
+    text: 'On the log plot the tails part ways: GGX, ABC and the shifted gamma keep many more facets far from the ' +
+      'peak than Beckmann or Blinn-Phong. Raised exposure shows what that does: a glow around the highlight.',
+  },
+  {
+    id: 'ndf-rough', section: 'ndf', widget: 'ndf-explorer', title: 'Roughness is width',
+    state: { hwhm: 25 },
+    text: 'Widen the distribution and the highlight grows and dims. D is normalised, so the projected area of ' +
+      'the facets always integrates to one, as the table measures.',
+  },
+
+  // 7. Geometry and visibility terms
+  {
+    id: 'visibility-terms', section: 'visibility', widget: 'visibility-explorer', title: 'The visibility term',
+    state: { config: 'view-fixed', viewTheta: 60, alpha: 0.5 },
+    text: 'G gives the share of facets along h that are neither shadowed nor masked; the talk folds it with the ' +
+      'denominator into V = G / ((n·l)(n·v)). The plots show G for every term against the light angle, and ' +
+      'how far each is from height-correlated Smith.',
+  },
+  {
+    id: 'visibility-implicit', section: 'visibility', widget: 'visibility-explorer', title: 'The implicit term ignores roughness',
+    state: { config: 'view-fixed', viewTheta: 60, alpha: 0.1 },
+    text: 'The implicit term, G = (n·l)(n·v), costs nothing but is the same at every roughness. At α = 0.1 the ' +
+      'Smith terms stay near 1 until grazing angles, while the implicit one is at most n·v = 0.5 here and falls ' +
+      'with the light’s cosine.',
+  },
+  {
+    id: 'visibility-mirror', section: 'visibility', widget: 'visibility-explorer', title: 'Cook-Torrance and Kelemen',
+    state: { config: 'mirror', alpha: 0.5 },
+    text: 'With l and v mirrored about the normal, h = n: Cook-Torrance and Kelemen both give G = 1 whatever the ' +
+      'angle, while the Smith terms darken towards grazing.',
+  },
+  {
+    id: 'visibility-smith', section: 'visibility', widget: 'visibility-explorer', title: 'The Smith family',
+    state: { alpha: 0.8, terms: ['smithGGXSeparable', 'smithGGXCorrelated', 'smithGGXCorrelatedFast', 'schlickGGX'] },
+    text: 'Smith’s terms are derived from the NDF itself. The height-correlated form is the more accurate; the ' +
+      'separable form shadows a little too much. The error plot shows how closely the cheaper approximations ' +
+      'follow it, and where they part.',
+  },
+];
+
+/**
+ * The tour as shown: the steps whose widget `isAvailable(name)`, and every section with the index of its
+ * first step and its number of steps (0: "coming").
+ */
+export function tourPlan(isAvailable, steps = TOUR_STEPS, sections = TOUR_SECTIONS) {
+  const live = steps.filter((s) => isAvailable(s.widget));
+  return {
+    steps: live,
+    sections: sections.map((sec) => {
+      const first = live.findIndex((s) => s.section === sec.key);
+      return { ...sec, first, count: live.filter((s) => s.section === sec.key).length };
+    }),
+  };
+}

@@ -1,0 +1,198 @@
+// Accessibility of every registered widget in a real Chromium: each canvas says in words what it shows and
+// says something new when the state changes, every control is reachable by Tab, the interactive canvases
+// answer the keyboard, and the words carry the numbers (checked against closed forms and the F0 table).
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { getState, launchBrowser, open, settle, shot, widget } from './helpers.js';
+import { WIDGETS } from '../../src/widgets/registry.js';
+import { sphereZoneFractions } from '../../src/math/zones.js';
+import { materialByKey } from '../../src/math/materials.js';
+
+/** Per widget, a change that alters everything it draws. A new widget must add its own here. */
+const CHANGES = {
+  'fresnel-curves': { materials: ['gold', 'water'] },
+  'fresnel-zones': { lightTheta: 100 },
+  'f0-tables': { selected: 'silver' },
+  media: { medium: 'red' },
+  surfaces: { theta: 60 },
+  'subsurface-scale': { sigmaS: 5 },
+  'brdf-lobe': { alpha: 0.6 },
+  'ndf-explorer': { hwhm: 15 },
+  'visibility-explorer': { alpha: 0.2 },
+  microfacets: { alpha: 0.8 },
+  energy: { alphas: ['0.25', '0.75'] },
+};
+/** Extra URL state to keep software rendering quick (fewer path-traced samples). */
+const QUICK = { media: '&samples=16' };
+const STATIC_PICTURE = /^Four metal spheres/; // the surfaces widget's room reflections do not depend on its state
+
+let browser;
+beforeAll(async () => {
+  browser = await launchBrowser();
+});
+afterAll(async () => {
+  await browser?.close();
+});
+
+/** The widget's visible canvases (role, description) and its live summary. */
+const readWords = (page) =>
+  page.evaluate(() => ({
+    canvases: [...document.querySelectorAll('.widget canvas')].filter((c) => c.getClientRects().length)
+      .map((c) => ({ role: c.getAttribute('role'), label: c.getAttribute('aria-label') ?? '' })),
+    live: document.querySelector('.widget-live')?.textContent ?? '',
+  }));
+
+const openWidget = async (query) => {
+  const page = await open(browser, `embed.html?w=${query}`, { width: 1280, height: 2600 }); // tall: every view in sight draws
+  await widget(page, query.split('&')[0]);
+  return page;
+};
+
+describe('every widget describes its canvases and is usable by keyboard', () => {
+  for (const name of Object.keys(WIDGETS)) {
+    it(name, async () => {
+      expect(CHANGES[name], `add a state change for ${name} to CHANGES`).toBeDefined();
+      const page = await openWidget(`${name}${QUICK[name] ?? ''}`);
+      const before = await readWords(page);
+      for (const c of before.canvases) {
+        expect(c.role).toBe('img');
+        expect(c.label.length, c.label).toBeGreaterThan(30);
+      }
+      expect(before.live.length).toBeGreaterThan(30);
+
+      await page.evaluate((n, change) => globalThis.__shadingLab.widgets[n].update(change), name, CHANGES[name]);
+      await settle(page, 1000); // the live region speaks once changes settle
+      const after = await readWords(page);
+      expect(after.canvases.length).toBe(before.canvases.length);
+      after.canvases.forEach((c, i) => {
+        if (!STATIC_PICTURE.test(c.label)) expect(c.label, `canvas ${i} kept its words: ${c.label}`).not.toBe(before.canvases[i].label);
+      });
+      expect(after.live).not.toBe(before.live);
+
+      // Tab reaches every control of the panel, and each has a name a screen reader can read
+      const controls = await page.evaluate(() => {
+        const els = [...document.querySelectorAll('.lil-gui input, .lil-gui select, .lil-gui button')]
+          .filter((el) => el.tabIndex >= 0 && !el.disabled && el.getClientRects().length);
+        els.forEach((el, i) => (el.dataset.a11yIndex = i));
+        const nameOf = (el) => (el.getAttribute('aria-labelledby') ? document.getElementById(el.getAttribute('aria-labelledby'))?.textContent : el.textContent)?.trim();
+        return { count: els.length, unnamed: els.filter((el) => !nameOf(el)).map((el) => el.outerHTML.slice(0, 80)), stops: document.querySelectorAll('a[href], button, input, select, [tabindex]').length };
+      });
+      expect(controls.count).toBeGreaterThan(0);
+      expect(controls.unnamed).toEqual([]);
+      await page.evaluate(() => document.activeElement?.blur());
+      const reached = new Set();
+      for (let i = 0; i < controls.stops + 2; i++) {
+        await page.keyboard.press('Tab');
+        const at = await page.evaluate(() => document.activeElement?.dataset?.a11yIndex ?? null);
+        if (at !== null) reached.add(at);
+      }
+      expect(reached.size).toBe(controls.count);
+      expect(page.errors).toEqual([]);
+      await page.close();
+    });
+  }
+});
+
+describe('interactive canvases answer the keyboard', () => {
+  it('the Fresnel-zones view moves its light with the arrow keys', async () => {
+    const page = await openWidget('fresnel-zones');
+    const before = await getState(page, 'fresnel-zones');
+    await page.focus('.viewport canvas');
+    await page.keyboard.press('ArrowDown');
+    await page.keyboard.down('Shift');
+    await page.keyboard.press('ArrowLeft');
+    await page.keyboard.up('Shift');
+    await settle(page, 300);
+    const after = await getState(page, 'fresnel-zones');
+    expect(after.lightTheta).toBeCloseTo(before.lightTheta + 5, 6);
+    expect(after.lightPhi).toBeCloseTo(before.lightPhi + 1, 6);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('the BRDF polar plot moves l and v, and the 3-D lobe orbits', async () => {
+    const page = await openWidget('brdf-lobe');
+    const before = await getState(page, 'brdf-lobe');
+    await page.focus('.polar-plot canvas');
+    await page.keyboard.press('ArrowDown');
+    await page.keyboard.press('ArrowLeft');
+    await settle(page, 300);
+    const after = await getState(page, 'brdf-lobe');
+    expect([after.lightTheta, after.viewTheta]).toEqual([before.lightTheta + 5, before.viewTheta - 5]);
+    const lobe = await shot(page, '.lobe-3d canvas');
+    await page.focus('.lobe-3d canvas');
+    await page.keyboard.press('ArrowLeft');
+    await settle(page, 300);
+    expect(await shot(page, '.lobe-3d canvas')).not.toBe(lobe);
+    expect(await getState(page, 'brdf-lobe')).toEqual(after); // orbiting is a view, not state
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('a row of spheres is probed by keyboard: the arrows move the probe, sphere to sphere', async () => {
+    const page = await openWidget('ndf-explorer');
+    await page.focus('.sphere-grid canvas');
+    for (let i = 0; i < 3; i++) await page.keyboard.press('ArrowRight');
+    const rows = () => page.$$eval('.probe tr', (trs) => Object.fromEntries(trs.map((tr) => [tr.cells[0].textContent, tr.cells[1].textContent])));
+    let probe = await rows();
+    expect(probe.sphere).toBe('Blinn-Phong');
+    expect(Number.parseFloat(probe['n·v'])).toBeCloseTo(Math.sqrt(1 - 0.3 ** 2), 3); // at x = 0.3 on the unit sphere, seen head-on
+    expect(await page.$eval('.probe-marker', (m) => m.hidden)).toBe(false);
+    for (let i = 0; i < 10; i++) await page.keyboard.press('ArrowRight');
+    probe = await rows();
+    expect(probe.sphere).toBe('Beckmann');
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('a plot moves its cursor by keyboard and its readout follows', async () => {
+    const page = await openWidget('fresnel-curves');
+    const caption = () => page.$eval('.readout caption', (el) => el.textContent);
+    expect(await caption()).toMatch(/θ = 60\.00°/);
+    await page.focus('.plot-canvas canvas');
+    await page.keyboard.press('End');
+    expect(await caption()).toMatch(/θ = 90\.00°/);
+    await page.keyboard.press('Home');
+    await page.keyboard.press('ArrowRight');
+    expect(await caption()).toMatch(/θ = 0\.25°/);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('a row of the F0 tables is selected by Enter and keeps the focus', async () => {
+    const page = await openWidget('f0-tables');
+    await page.focus('tr[data-material="copper"]');
+    await page.keyboard.press('Enter');
+    await settle(page, 800); // the live region speaks once changes settle
+    expect((await getState(page, 'f0-tables')).selected).toBe('copper');
+    expect(await page.evaluate(() => document.activeElement.dataset.material)).toBe('copper');
+    expect(await page.$eval('.widget-live', (el) => el.textContent)).toMatch(/Copper, a metal; F\(0°\) linear 0\.95, 0\.64, 0\.54/);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+});
+
+describe('the words carry the numbers', () => {
+  it('the zones of n·v on an orthographic sphere are read out with their shares: 50%, 43.3%, 6.7%', async () => {
+    const page = await openWidget('fresnel-zones&mode=zones-nv');
+    await settle(page, 500);
+    const label = await page.$eval('.viewport canvas', (c) => c.getAttribute('aria-label'));
+    const shares = [...label.matchAll(/(barely changes|changes somewhat|goes rapidly to 1) ([\d.]+)%/g)].map((m) => Number(m[2]) / 100);
+    expect(shares).toHaveLength(3);
+    sphereZoneFractions().forEach((f, i) => expect(Math.abs(shares[i] - f)).toBeLessThan(0.01));
+    expect(label).toMatch(/Light 60° from the view direction/);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('a plot reads out its values: water reflects its tabulated F(0°) head-on and all light at 90°', async () => {
+    const page = await openWidget('fresnel-curves&materials=water');
+    const label = await page.$eval('.plot-canvas canvas', (c) => c.getAttribute('aria-label'));
+    const m = label.match(/Water exact: ([\d.]+) at 0, ([\d.]+) at 90/);
+    expect(m, label).not.toBeNull();
+    expect(Number(m[1])).toBeCloseTo(materialByKey('water').linear[0], 3);
+    expect(Number(m[2])).toBeCloseTo(1, 3);
+    expect(label).toMatch(/Water Schlick \(dashed\)/);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+});

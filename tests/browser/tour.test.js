@@ -1,0 +1,224 @@
+// The guided tour in a real Chromium: the whole tour walked by keyboard (however many steps it has), step
+// URLs, history, keys that belong to a focused control, widget reuse and WebGL contexts given back.
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { baseUrl, distinctColors, getState, launchBrowser, settle, shot } from './helpers.js';
+import { openPage } from './harness.js';
+import { tourPlan } from '../../src/tour/steps.js';
+import { isWidgetName } from '../../src/widgets/registry.js';
+
+const { steps, sections } = tourPlan(isWidgetName);
+
+/** Records every WebGL context the page creates, with its canvas, to find the ones never given back. */
+function trackContexts() {
+  window.__glContexts = [];
+  const getContext = HTMLCanvasElement.prototype.getContext;
+  HTMLCanvasElement.prototype.getContext = function tracked(type, ...rest) {
+    const ctx = getContext.call(this, type, ...rest);
+    if (ctx && type.startsWith('webgl') && !window.__glContexts.some((c) => c.ctx === ctx)) window.__glContexts.push({ canvas: this, ctx });
+    return ctx;
+  };
+}
+
+// a presenter's small window: software WebGL's cost grows with the pixels
+const openTour = (browser, hash = '') =>
+  openPage(browser, baseUrl(), `tour.html${hash}`, { width: 1024, height: 720, beforeLoad: (page) => page.evaluateOnNewDocument(trackContexts) });
+
+/** Waits until step `id` is shown and its widget set up, then for the picture to settle. */
+async function onStep(page, id, ms = 250) {
+  await page.waitForFunction((id) => globalThis.__shadingLab?.tour?.ready && globalThis.__shadingLab.tour.id === id, { timeout: 45_000 }, id);
+  await settle(page, ms);
+}
+
+const sameValue = (a, b) => JSON.stringify(a) === JSON.stringify(b);
+
+let browser;
+beforeAll(async () => {
+  browser = await launchBrowser();
+});
+afterAll(async () => {
+  await browser?.close();
+});
+
+describe('guided tour', () => {
+  it('has one step per idea over every live chapter, and shows the chapters without steps as coming', async () => {
+    expect(steps.length).toBeGreaterThanOrEqual(25);
+    const page = await openTour(browser);
+    await onStep(page, steps[0].id);
+    const shown = await page.$$eval('.tour-sections li', (lis) => lis.map((li) => ({ key: li.dataset.section, coming: li.classList.contains('coming'), href: li.querySelector('a')?.getAttribute('href') ?? null })));
+    expect(shown.map((s) => s.key)).toEqual(sections.map((s) => s.key));
+    for (const s of sections) {
+      const li = shown.find((x) => x.key === s.key);
+      expect(li.coming).toBe(s.count === 0);
+      if (s.count) expect(li.href).toBe(`#${steps[s.first].id}`);
+    }
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('walks from the first step to the last by keyboard, each with its widget, state, URL and picture', async () => {
+    const page = await openTour(browser);
+    await onStep(page, steps[0].id);
+    const keys = ['ArrowRight', 'PageDown', 'Space']; // arrows, a presenter remote, the space bar
+    let reused = 0;
+    for (let k = 0; k < steps.length; k++) {
+      const step = steps[k];
+      if (k > 0) {
+        await page.evaluate(() => (document.querySelector('.tour-stage .widget').__previous = true));
+        await page.keyboard.press(keys[k % keys.length]);
+        await onStep(page, step.id);
+      }
+      const where = `step ${k + 1} (${step.id})`;
+      expect(page.url(), where).toMatch(new RegExp(`tour\\.html#${step.id}$`));
+      const view = await page.evaluate(() => ({
+        widgets: [...document.querySelectorAll('.tour-stage .widget')].map((w) => ({ name: w.dataset.widget, previous: Boolean(w.__previous) })),
+        count: document.querySelector('.tour-count').textContent,
+        title: document.querySelector('.tour-title').textContent,
+        notices: document.querySelectorAll('.notice').length,
+      }));
+      expect(view.widgets.map((w) => w.name), where).toEqual([step.widget]);
+      // the same widget going on is kept (and only updated); a different one replaces it
+      if (k > 0 && steps[k - 1].widget === step.widget) {
+        expect(view.widgets[0].previous, where).toBe(true);
+        reused++;
+      } else expect(view.widgets[0].previous, where).toBe(false);
+      expect(view.count).toBe(`Step ${k + 1} of ${steps.length}`);
+      expect(view.title).toBe(step.title);
+      expect(view.notices, where).toBe(0);
+      const state = await getState(page, 'tour');
+      for (const [key, value] of Object.entries(step.state)) expect(sameValue(state[key], value), `${where}: ${key} = ${JSON.stringify(state[key])}`).toBe(true);
+      // the picture: the widget's first canvas has drawn something (the F0 tables have none: their rows instead)
+      const canvas = await page.$('.tour-stage .widget-view canvas');
+      if (canvas) {
+        await canvas.evaluate((c) => c.scrollIntoView({ block: 'center' }));
+        await settle(page, 150);
+        expect(await distinctColors(page, await canvas.screenshot({ encoding: 'base64' })), where).toBeGreaterThan(8);
+        await page.evaluate(() => window.scrollTo(0, 0));
+      } else expect(await page.$$eval('.tour-stage tbody tr', (rows) => rows.length), where).toBeGreaterThan(5);
+      expect(page.errors, where).toEqual([]);
+    }
+    expect(reused).toBeGreaterThan(steps.length / 2);
+    expect(await page.$eval('.tour-end', (el) => !el.hidden && el.textContent)).toMatch(/End of the tour/);
+    // past the end nothing happens
+    await page.keyboard.press('ArrowRight');
+    await settle(page, 200);
+    expect(page.url()).toMatch(new RegExp(`#${steps.at(-1).id}$`));
+    // PageUp (a remote's "back") and the browser's back button both go one step back; forward returns
+    await page.keyboard.press('PageUp');
+    await onStep(page, steps.at(-2).id);
+    await page.keyboard.press('PageUp');
+    await onStep(page, steps.at(-3).id);
+    await page.goBack();
+    await onStep(page, steps.at(-2).id);
+    await page.goForward();
+    await onStep(page, steps.at(-3).id);
+    await page.keyboard.press('Home');
+    await onStep(page, steps[0].id);
+    await page.keyboard.press('End');
+    await onStep(page, steps.at(-1).id);
+    // every widget that was replaced gave its WebGL contexts back: live contexts are the mounted widget's only
+    const contexts = await page.evaluate(() => ({
+      created: window.__glContexts.length,
+      leaked: window.__glContexts.filter((c) => !c.canvas.isConnected && !c.ctx.isContextLost()).length,
+      live: window.__glContexts.filter((c) => !c.ctx.isContextLost()).length,
+      mounted: document.querySelectorAll('.tour-stage .viewport canvas').length,
+    }));
+    console.log(`tour: ${steps.length} steps walked, ${reused} reused their widget; WebGL contexts created ${contexts.created}, live ${contexts.live}`);
+    expect(contexts.created).toBeGreaterThan(contexts.mounted);
+    expect(contexts.leaked).toBe(0);
+    expect(contexts.live).toBe(contexts.mounted);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  }, 300_000);
+
+  it('opens a step URL directly on that step, with the state it has when walked to', async () => {
+    // a step that follows another of the same widget: whatever the walk left behind must not leak into it
+    const k = steps.findIndex((s, i) => i > 0 && steps[i - 1].widget === s.widget && Object.keys(steps[i - 1].state).some((key) => !(key in s.state)));
+    expect(k).toBeGreaterThan(0);
+    const walked = await openTour(browser, `#${steps[k - 1].id}`);
+    await onStep(walked, steps[k - 1].id);
+    await walked.keyboard.press('ArrowRight');
+    await onStep(walked, steps[k].id);
+    const direct = await openTour(browser, `#${steps[k].id}`);
+    await onStep(direct, steps[k].id);
+    expect(await getState(direct, 'tour')).toEqual(await getState(walked, 'tour'));
+    expect(await direct.$eval('.tour-count', (el) => el.textContent)).toBe(`Step ${k + 1} of ${steps.length}`);
+    expect(await direct.evaluate(() => document.title)).toContain(steps[k].title);
+    expect([...walked.errors, ...direct.errors]).toEqual([]);
+    await Promise.all([walked.close(), direct.close()]);
+  });
+
+  it('says so for an unknown step and shows the first one', async () => {
+    const page = await openTour(browser, '#no-such-step');
+    await onStep(page, steps[0].id);
+    expect(await page.$eval('.tour-messages', (el) => el.textContent)).toMatch(/no step “no-such-step”/);
+    expect(page.url()).toMatch(new RegExp(`#${steps[0].id}$`));
+    // a bad hash later keeps the step that was shown
+    await page.evaluate((id) => (location.hash = id), steps[2].id);
+    await onStep(page, steps[2].id);
+    await page.evaluate(() => (location.hash = 'banana'));
+    await settle(page, 300);
+    expect(page.url()).toMatch(new RegExp(`#${steps[2].id}$`));
+    expect(await page.evaluate(() => globalThis.__shadingLab.tour.id)).toBe(steps[2].id);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('leaves the arrow keys to a focused slider or light, and takes them back on Escape', async () => {
+    const id = steps.find((s) => s.widget === 'fresnel-zones').id;
+    const page = await openTour(browser, `#${id}`);
+    await onStep(page, id);
+    const before = await getState(page, 'tour');
+    // the number box of a lil-gui slider: ↑ changes its value, ←/→ move the caret, Page keys stay with it
+    const input = await page.evaluateHandle(() =>
+      [...document.querySelectorAll('.tour-stage .lil-controller')].find((c) => c.querySelector('.lil-name').textContent.startsWith('Light θ')).querySelector('input'));
+    await input.focus();
+    for (const key of ['ArrowRight', 'ArrowLeft', 'PageDown', 'Space', 'ArrowUp']) await page.keyboard.press(key);
+    await settle(page, 400);
+    expect(await page.evaluate(() => globalThis.__shadingLab.tour.id)).toBe(id);
+    expect((await getState(page, 'tour')).lightTheta).not.toBe(before.lightTheta);
+    // the 3-D view: its arrow keys move the light
+    await page.focus('.tour-stage .viewport canvas');
+    await page.keyboard.press('ArrowLeft');
+    await settle(page, 300);
+    expect(await page.evaluate(() => globalThis.__shadingLab.tour.id)).toBe(id);
+    expect((await getState(page, 'tour')).lightPhi).not.toBe(before.lightPhi);
+    // Escape gives the keys back to the tour
+    await page.keyboard.press('Escape');
+    await page.keyboard.press('ArrowRight');
+    const next = steps[steps.findIndex((s) => s.id === id) + 1].id;
+    await onStep(page, next);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('goes full screen by the button and by f, or says why not', async () => {
+    const light = steps.find((s) => s.widget === 'f0-tables') ?? steps[0]; // a step without WebGL: quick in software
+    const page = await openTour(browser, `#${light.id}`);
+    await onStep(page, light.id, 200);
+    const status = () => page.evaluate(() => ({ full: document.fullscreenElement?.id ?? null, message: document.querySelector('.tour-messages').textContent }));
+    await page.keyboard.press('f');
+    await settle(page, 400);
+    const afterKey = await status();
+    expect(afterKey.full === 'tour' || /did not allow full screen/.test(afterKey.message)).toBe(true);
+    if (afterKey.full) {
+      expect(await page.$eval('.tour-fullscreen', (b) => b.textContent)).toBe('Exit full screen');
+      await page.click('.tour-fullscreen');
+      await settle(page, 400);
+      expect((await status()).full).toBeNull();
+      await page.click('.tour-fullscreen');
+      await settle(page, 400);
+      expect((await status()).full).toBe('tour');
+    }
+    // a refusal (here: the Fullscreen API taken away) gives a message, not an error
+    if ((await status()).full) await page.click('.tour-fullscreen');
+    await settle(page, 300);
+    expect((await status()).full).toBeNull();
+    await page.evaluate(() => void Object.defineProperty(Document.prototype, 'fullscreenEnabled', { get: () => false }));
+    await page.click('.tour-fullscreen');
+    await settle(page, 200);
+    expect((await status()).message).toMatch(/did not allow full screen/);
+    console.log(`tour: full screen by key ${afterKey.full ? 'granted' : 'refused'} in this Chromium`);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+});
