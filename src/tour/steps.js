@@ -3,7 +3,7 @@
 // defaults, so a step looks the same however the reader arrived). Its id is its URL: tour.html#<id>.
 //
 // To extend the tour, append steps; nothing else changes. A step whose widget is not registered yet is left
-// out, and a section without steps is shown as "coming" (the diffuse and rendering chapters, for now).
+// out, and a section without steps is shown as "coming".
 import { CHAPTERS } from '../core/chapters.js';
 
 /** The talk's sections the tour walks through, in order (the performance chapter is not part of the talk). */
@@ -242,6 +242,70 @@ export const TOUR_STEPS = [
     text: 'Smith’s terms are derived from the NDF itself. The height-correlated form is the more accurate; the ' +
       'separable form shadows a little too much. The error plot shows how closely the cheaper approximations ' +
       'follow it, and where they part.',
+  },
+  // 8. Diffuse
+  {
+    id: 'diffuse-lambert', section: 'diffuse', widget: 'diffuse-explorer', title: 'Lambert: the same from every direction',
+    state: { models: ['lambert'], lightTheta: 50, lightPhi: 30 },
+    text: 'Light that enters a non-metal, scatters inside and comes out again close to where it went in is seen ' +
+      'from afar as diffuse reflection. Lambert’s model makes it a constant, c_diff/π: the sphere’s brightness ' +
+      'follows n·l alone and does not depend on where you look from.',
+  },
+  {
+    id: 'diffuse-tradeoff', section: 'diffuse', widget: 'diffuse-explorer', title: 'The diffuse–specular trade-off',
+    state: { models: ['lambert', 'fresnelWeighted', 'ashikhminShirley'], lightTheta: 70, lightPhi: 0 },
+    text: 'Light reflected at the surface never enters it, so it cannot come back out as diffuse. Where Fresnel ' +
+      'reflects more, at grazing angles, there must be less diffuse. Plain Lambert ignores this; the ' +
+      'Fresnel-weighted and Ashikhmin–Shirley terms dim towards the rim to keep the budget at most 1.',
+  },
+  {
+    id: 'diffuse-full-moon', section: 'diffuse', widget: 'diffuse-explorer', title: 'Rough diffuse: the full moon',
+    state: { models: ['lambert', 'orenNayar', 'orenNayarQualitative'], sigma: 60, lightTheta: 0, lightPhi: 0 },
+    text: 'When the surface is rough on a scale larger than the distance light travels inside it, the bumps ' +
+      'themselves shade each other. Lit from behind the viewer, a rough sphere looks flat, like the full moon: ' +
+      'Oren–Nayar keeps its rim nearly as bright as its centre, where Lambert falls off with n·l.',
+  },
+  // 9. From math to rendering
+  {
+    id: 'rendering-punctual', section: 'rendering', widget: 'material-lab', title: 'Punctual lights and c_light',
+    state: { env: false, punctual: true, lightTheta: 0, cLight: 1, layers: 'diffuse', diffuse: '#ffffff', refSamples: '128' },
+    text: 'A punctual light is a direction and a colour. Its colour c_light is defined as the radiance of a white ' +
+      'Lambertian surface that faces it: the centre of this white sphere shows exactly c_light. The integral ' +
+      'collapses to π f(l, v) c_light (n·l); the π is what turns a BRDF into that definition.',
+  },
+  {
+    id: 'rendering-area', section: 'rendering', widget: 'material-lab', title: 'Area lights have a size',
+    state: { env: false, area: true, areaRadius: 15, material: 'silver', alpha: 0.1, refSamples: '128', errorScale: 0.2 },
+    text: 'A real lamp has a size, and on a smooth surface its reflection shows it. The representative-point ' +
+      'approximation bends the light direction towards the reflected ray to draw a highlight of the right shape; ' +
+      'the reference integrates over the sphere light, and the error image shows what the shortcut misses.',
+  },
+  {
+    id: 'rendering-mirror', section: 'rendering', widget: 'material-lab', title: 'Image-based lighting: a mirror',
+    state: { material: 'silver', alpha: 0.01, envMethod: 'mirror', environment: 'studio', refSamples: '128' },
+    text: 'For an optically flat surface, image-based lighting is easy: the environment seen in the mirror ' +
+      'direction, times Fresnel at the angle between view and normal. On this near-mirror the error is small.',
+  },
+  {
+    id: 'rendering-split-sum', section: 'rendering', widget: 'material-lab', title: 'Glossy reflections by prefiltering',
+    state: { material: 'gold', alpha: 0.3, envMethod: 'split-sum', environment: 'studio', refSamples: '128' },
+    text: 'A glossy surface needs the environment averaged over its lobe. Prefiltering does that once per ' +
+      'roughness and splits off the rest of the BRDF into a small table (the split sum): cheap, and close to the ' +
+      'reference except at grazing angles, where its assumption that the view looks straight at the surface fails.',
+  },
+  {
+    id: 'rendering-importance', section: 'rendering', widget: 'material-lab', title: 'Glossy reflections by importance sampling',
+    state: { material: 'gold', alpha: 0.3, envMethod: 'importance', samples: 16, environment: 'studio', refSamples: '128' },
+    text: 'Importance sampling takes a few directions where the BRDF is large and averages the environment ' +
+      'there. With 16 samples the same pattern repeats on every pixel; more samples converge on the reference ' +
+      'at a proportional cost. Raise N and watch the RMS error fall.',
+  },
+  {
+    id: 'rendering-models', section: 'rendering', widget: 'lighting-models', title: 'From general lighting to ambient',
+    state: { refSamples: '128' },
+    text: 'The illumination models side by side on one sky with a sun: general lighting (the reference), ' +
+      'image-based, area, punctual and ambient light. Each step down is cheaper and assumes more about where ' +
+      'light comes from; the table says how much each costs and how far it falls from the reference.',
   },
 ];
 

@@ -20,9 +20,12 @@ const CHANGES = {
   'visibility-explorer': { alpha: 0.2 },
   microfacets: { alpha: 0.8 },
   energy: { alphas: ['0.25', '0.75'] },
+  'diffuse-explorer': { lightTheta: 60 },
+  'material-lab': { alpha: 0.6 },
+  'lighting-models': { alpha: 0.5 },
 };
 /** Extra URL state to keep software rendering quick (fewer path-traced samples). */
-const QUICK = { media: '&samples=16' };
+const QUICK = { media: '&samples=16', 'material-lab': '&refSamples=128', 'lighting-models': '&refSamples=128' };
 const STATIC_PICTURE = /^Four metal spheres/; // the surfaces widget's room reflections do not depend on its state
 
 let browser;

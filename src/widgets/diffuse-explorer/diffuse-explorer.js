@@ -133,7 +133,7 @@ export function createDiffuseExplorer(container, initialState = {}, { onStateCha
         ];
       },
     })));
-    spheres.setDescription(`Spheres with a diffuse term only (c_diff ${s.cdiff}, F0 ${s.f0}, ${sigmaText(s)}), light ${s.lightTheta}° from the view: ${s.models.map((k) => MODELS[k].name).join(', ')}.`);
+    shell.describe(`Spheres with a diffuse term only (c_diff ${s.cdiff}, F0 ${s.f0}, ${sigmaText(s)}), light ${s.lightTheta}° from the view: ${s.models.map((k) => MODELS[k].name).join(', ')}.`, spheres.canvas);
   };
   renderTable();
   renderSpheres();

@@ -1,6 +1,7 @@
 // A square pad for placing the light of a row of spheres: the shared light control (drag, or focus and use
 // the arrow keys) on a canvas of its own, since a row of spheres has no single centre to drag around.
 import { attachLightControl } from '../../core/light-control.js';
+import { describeCanvas } from '../../core/describe.js';
 
 export function createLightPad(container, { get, set, label }) {
   const box = document.createElement('div');
@@ -9,8 +10,6 @@ export function createLightPad(container, { get, set, label }) {
   holder.className = 'light-pad';
   const canvas = document.createElement('canvas');
   canvas.tabIndex = 0;
-  canvas.setAttribute('role', 'application');
-  canvas.setAttribute('aria-label', label);
   const caption = document.createElement('p');
   caption.className = 'light-pad-caption';
   holder.append(canvas);
@@ -22,6 +21,7 @@ export function createLightPad(container, { get, set, label }) {
     control.draw();
     const { lightTheta, lightPhi } = get();
     caption.textContent = `Light θ ${lightTheta}°, φ ${lightPhi}°: drag, or focus and use the arrow keys (centre = behind the viewer, ring = 90°).`;
+    describeCanvas(canvas, `${label}: the light is ${lightTheta}° from the viewing direction, at ${lightPhi}° around it. Arrow keys move it 5° at a time.`);
   };
   const resize = new ResizeObserver(draw);
   resize.observe(holder);
