@@ -23,6 +23,7 @@ export function createLiveRegion(parent) {
   return {
     element: region,
     say(text) {
+      if (text === pending) return; // the same words again (a converging view redraws): keep the timer running
       pending = text;
       if (!region.textContent) {
         region.textContent = text; // the first description is there at once (read with the widget)

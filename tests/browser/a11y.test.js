@@ -20,7 +20,7 @@ const CHANGES = {
   'visibility-explorer': { alpha: 0.2 },
   microfacets: { alpha: 0.8 },
   energy: { alphas: ['0.25', '0.75'] },
-  'diffuse-explorer': { lightTheta: 60 },
+  'diffuse-explorer': { sigma: 20, lightTheta: 60 },
   'material-lab': { alpha: 0.6 },
   'lighting-models': { alpha: 0.5 },
 };

@@ -99,7 +99,7 @@ export function createLightingModels(container, initialState = {}, { onStateChan
       <thead><tr><th>Illumination model</th><th>GPU time (${view.resolution}² px)</th><th>RMS error</th><th>relative</th><th>Where it fails</th></tr></thead><tbody>
       ${results.map((r) => `<tr><th scope="row">${r.name}</th><td>${fmt(r.ms)} ms</td><td>${fmt(r.rms)}</td><td>${fmt(r.relative * 100)} %</td><td>${r.fails}</td></tr>`).join('')}
       </tbody></table>`;
-    shell.describe(`Lighting models: a sphere (${st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material}, roughness α ${st.alpha}) under a sky with a sun, by the reference and four illumination models. Relative RMS errors: ${results.map((r) => `${r.name} ${fmt(r.relative * 100)} %`).join(', ')}.`, view.canvas);
+    shell.describe(`Lighting models: a sphere (${st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material}, roughness α ${st.alpha}) under a sky with a sun, by the reference and four illumination models. ${samples < Number(st.refSamples) ? 'The reference is still converging.' : `Relative RMS errors: ${results.map((r) => `${r.name} ${fmt(r.relative * 100)} %`).join(', ')}.`}`, view.canvas);
   };
 
   const view = createLabView(shell.view, { label: 'Lighting models', resolution: 160, slots: MODELS.length, frame });

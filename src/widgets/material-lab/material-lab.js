@@ -136,7 +136,8 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
         <tr><th scope="row">RMS error against the reference</th><td>${fmt(stats.rms)} (radiance), ${fmt(stats.relative * 100, 3)} % of the reference’s RMS${converging ? ' — reference still converging' : ''}</td></tr>
         </tbody></table>`
       : '<p class="lab-empty">Every light is off: switch one on in the controls.</p>';
-    shell.describe(`Material lab. A sphere (${st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material}, roughness α ${st.alpha}) lit by ${methodText(st, lights)}; beside it the Monte Carlo reference (${stats.samples} samples per pixel) and the error image. RMS error ${fmt(stats.rms, 3)}, ${fmt(stats.relative * 100, 3)} % relative; ${fmt(stats.ms, 3)} ms.`, view.canvas);
+    const errorWords = converging ? 'The reference is still converging.' : `RMS error ${fmt(stats.rms, 3)}, ${fmt(stats.relative * 100, 3)} % relative; ${fmt(stats.ms, 3)} ms.`;
+    shell.describe(`Material lab. A sphere (${st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material}, roughness α ${st.alpha}) lit by ${methodText(st, lights)}; beside it the Monte Carlo reference (${stats.target} samples per pixel) and the error image. ${errorWords}`, view.canvas);
   };
 
   const view = createLabView(shell.view, { label: 'Material lab', resolution: 192, frame });
