@@ -1,5 +1,7 @@
 // Writes an environment into the app's equirectangular float target: from an equirectangular texture (any
 // size: a dropped file, the sky, the furnace) or, with CUBE_SOURCE, from a cube map (three.js's room).
+// With WEIGHTED it writes (L cos(el), cos(el)): mip-maps of that, divided rgb / a, average radiance by solid
+// angle, where plain mips of an equirectangular map would smear the small polar texels over large ones.
 #include "env.glsl"
 #ifdef CUBE_SOURCE
 uniform samplerCube uSource;
@@ -16,5 +18,10 @@ void main() {
 #else
   vec3 c = texture(uSource, uv).rgb;
 #endif
+#ifdef WEIGHTED
+  float w = cos((uv.y - 0.5) * PI);
+  fragColor = vec4(max(c, vec3(0.0)) * w, w);
+#else
   fragColor = vec4(max(c, vec3(0.0)), 1.0);
+#endif
 }

@@ -1,7 +1,7 @@
 // Prefilters the environment for the split sum (Karis 2013): each texel, a direction N, averages the map over
-// a GGX lobe around N with n = v = r, weighted by n·l; with IRRADIANCE, the cosine-weighted mean radiance
-// (the radiance of a white Lambertian surface facing N). Samples read a coarser mip where each covers more
-// of the sphere (filtered importance sampling), so few samples do not alias.
+// a GGX lobe around N with n = v = r, weighted by n·l. Samples read a coarser mip where each covers more of
+// the sphere (filtered importance sampling), so few samples do not alias; the mips are of the solid-angle
+// weighted map (env-copy WEIGHTED), so a coarse texel near a pole carries no more light than it should.
 #include "integrate.glsl"
 #include "env.glsl"
 uniform sampler2D uEnv;
@@ -23,18 +23,13 @@ void main() {
   float weight = 0.0;
   for (int i = 0; i < uSamples; i++) {
     vec2 u = hammersley(i, uSamples);
-#ifdef IRRADIANCE
-    vec3 l = sampleCosine(u);
-    float pdf = l.z / PI;
-    float w = 1.0;
-#else
     vec3 m = sampleGGXNormal(u, uAlpha);
     vec3 l = 2.0 * m.z * m - vec3(0.0, 0.0, 1.0);
     if (l.z <= 0.0) continue;
     float pdf = ndfGGX(m.z, uAlpha) / 4.0; // D(m)(n·m)/(4 v·m) with v = n: n·m = v·m
     float w = l.z;
-#endif
-    sum += w * textureLod(uEnv, equirectUv(toWorld * l), lodFor(pdf)).rgb;
+    vec4 c = textureLod(uEnv, equirectUv(toWorld * l), lodFor(pdf));
+    sum += w * c.rgb / max(c.a, 1e-6);
     weight += w;
   }
   fragColor = vec4(sum / max(weight, 1e-8), 1.0);

@@ -15,11 +15,18 @@ export function createStateGui(container, { schema, state, onChange, title = 'Co
   const gui = new GUI({ container, title, autoPlace: false });
   const model = { ...state };
   const setModels = {}; // set fields: one boolean per option
+  const groups = new Map(); // a field's `group` puts it in a folder of that name (long panels stay readable)
+  const parentOf = (f) => {
+    if (!f.group) return gui;
+    if (!groups.has(f.group)) groups.set(f.group, gui.addFolder(f.group));
+    return groups.get(f.group);
+  };
 
   for (const key of keys) {
     const f = schema[key];
+    const parent = parentOf(f);
     if (f.type === 'set') {
-      const folder = gui.addFolder(labelOf(key, f));
+      const folder = parent.addFolder(labelOf(key, f));
       const flags = (setModels[key] = {});
       for (const [value, label] of Object.entries(f.options)) {
         flags[value] = model[key].includes(value);
@@ -32,12 +39,12 @@ export function createStateGui(container, { schema, state, onChange, title = 'Co
     }
     const ctrl =
       f.type === 'number'
-        ? gui.add(model, key, f.min, f.max, f.step)
+        ? parent.add(model, key, f.min, f.max, f.step)
         : f.type === 'enum'
-          ? gui.add(model, key, Object.fromEntries(Object.entries(f.options).map(([v, l]) => [l, v])))
+          ? parent.add(model, key, Object.fromEntries(Object.entries(f.options).map(([v, l]) => [l, v])))
           : f.type === 'color'
-            ? gui.addColor(model, key)
-            : gui.add(model, key);
+            ? parent.addColor(model, key)
+            : parent.add(model, key);
     ctrl.name(labelOf(key, f)).onChange((v) => onChange({ [key]: v }));
     if (f.hint) ctrl.domElement.title = f.hint;
     if (locked.includes(key)) lock(ctrl);

@@ -2,7 +2,7 @@
 // talk's definitions (c_light, the white furnace), importance sampling converging on the reference, and
 // environment files checked before they are used.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { getState, launchBrowser, open, shot, widget, withPixels } from './helpers.js';
+import { getState, launchBrowser, open, settle, shot, widget, withPixels } from './helpers.js';
 import { linearToSrgb, srgbToLinear } from '../../src/math/color.js';
 
 const EXTENT = 1.1; // the lab's view half width (src/core/lab/lab-renderer.js)
@@ -96,6 +96,20 @@ describe('material lab', () => {
     console.log('importance sampling, relative RMS error for N = 2, 8, 32, 128:', errors.map((e) => e.toFixed(4)).join(', '));
     for (let i = 1; i < errors.length; i++) expect(errors[i]).toBeLessThan(errors[i - 1]);
     expect(errors[3]).toBeLessThan(errors[0] / 4);
+    await page.close();
+  });
+
+  it('a sphere light by its representative point lands closer to the Monte Carlo reference than a point at its centre', async () => {
+    const page = await openLab('lab.env=0&lab.area=1&lab.areaRadius=15&lab.areaTheta=30&lab.material=silver&lab.alpha=0.1&lab.refSamples=128');
+    const errorOf = async (method) => {
+      await page.evaluate((m) => globalThis.__shadingLab.widgets.lab.update({ areaMethod: m }), method);
+      await settle(page, 600);
+      return page.evaluate(() => globalThis.__shadingLab.widgets.lab.getStats().relative);
+    };
+    const representative = await errorOf('representative');
+    const centre = await errorOf('centre');
+    console.log(`sphere light (15°, silver, α 0.1): relative RMS error, representative point ${representative.toFixed(4)}, punctual at the centre ${centre.toFixed(4)}`);
+    expect(representative).toBeLessThan(centre / 2);
     await page.close();
   });
 

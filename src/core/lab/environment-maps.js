@@ -1,6 +1,6 @@
 // What image-based lighting needs on the GPU, made once per environment and kept: the environment as an
-// equirectangular half-float map with mips, its GGX-prefiltered layers and its irradiance for the split
-// sum, tables to sample it by brightness, and three.js's PMREM of it for comparison. Also the DFG table,
+// equirectangular half-float map with mips, its GGX-prefiltered layers for the split sum, its irradiance
+// (summed exactly in JS from the map read back), tables to sample it by brightness, and three.js's PMREM of it for comparison. Also the DFG table,
 // computed by src/math's dfgSplitSum, which does not depend on the environment.
 import * as THREE from 'three';
 import { RoomEnvironment } from 'three/examples/jsm/environments/RoomEnvironment.js';
@@ -8,6 +8,7 @@ import { assembleGlsl } from '../glsl.js';
 import { SHADER_CHUNKS } from '../shader-chunks.js';
 import { dfgSplitSum } from '../../math/integrate.js';
 import { buildEnvSampling } from './env-sampling.js';
+import { irradianceMap } from './env-irradiance.js';
 
 export const ENV_SIZE = [256, 128]; // coarse enough that the reference converges on small bright lights, fine enough for a mirror
 export const PREFILTER_SIZE = [128, 64];
@@ -37,10 +38,13 @@ export function createDfgTexture() {
   return dfg;
 }
 
+const toHalf = (data, out = new Uint16Array(data.length)) => {
+  for (let i = 0; i < data.length; i++) out[i] = THREE.DataUtils.toHalfFloat(Math.min(data[i], 65000));
+  return out;
+};
+
 function halfTexture({ data, width, height }) {
-  const half = new Uint16Array(data.length);
-  for (let i = 0; i < data.length; i++) half[i] = THREE.DataUtils.toHalfFloat(Math.min(data[i], 65000));
-  const t = new THREE.DataTexture(half, width, height, THREE.RGBAFormat, THREE.HalfFloatType);
+  const t = new THREE.DataTexture(toHalf(data), width, height, THREE.RGBAFormat, THREE.HalfFloatType);
   t.minFilter = THREE.LinearFilter;
   t.magFilter = THREE.LinearFilter;
   t.wrapS = THREE.RepeatWrapping;
@@ -54,10 +58,11 @@ const halfTarget = (w, h, options = {}) => new THREE.WebGLRenderTarget(w, h, {
 
 export function createEnvironmentMaps(renderer) {
   const env = halfTarget(...ENV_SIZE, { minFilter: THREE.LinearMipmapLinearFilter, generateMipmaps: true });
+  const weighted = halfTarget(...ENV_SIZE, { minFilter: THREE.LinearMipmapLinearFilter, generateMipmaps: true }); // for the prefilter
   const prefiltered = new THREE.WebGLArrayRenderTarget(...PREFILTER_SIZE, PREFILTER_LEVELS, {
     type: THREE.HalfFloatType, depthBuffer: false, magFilter: THREE.LinearFilter, minFilter: THREE.LinearFilter, wrapS: THREE.RepeatWrapping,
   });
-  const irradiance = halfTarget(...IRRADIANCE_SIZE);
+  const irradiance = halfTexture({ data: new Float32Array(IRRADIANCE_SIZE[0] * IRRADIANCE_SIZE[1] * 4), width: IRRADIANCE_SIZE[0], height: IRRADIANCE_SIZE[1] });
 
   const quad = new THREE.Mesh(new THREE.PlaneGeometry(2, 2));
   quad.frustumCulled = false;
@@ -68,12 +73,12 @@ export function createEnvironmentMaps(renderer) {
     fragmentShader: assembleGlsl(SHADER_CHUNKS[fragment], { defines }), depthTest: false, depthWrite: false,
   });
   const copyFlat = pass('env-copy.frag.glsl', {}, { uSource: { value: null }, uSize: { value: new THREE.Vector2(...ENV_SIZE) } });
+  const copyWeighted = pass('env-copy.frag.glsl', { WEIGHTED: 1 }, { uSource: { value: env.texture }, uSize: { value: new THREE.Vector2(...ENV_SIZE) } });
   const copyCube = pass('env-copy.frag.glsl', { CUBE_SOURCE: 1 }, { uSource: { value: null }, uSize: { value: new THREE.Vector2(...ENV_SIZE) } });
   const filterUniforms = () => ({
-    uEnv: { value: env.texture }, uEnvSize: { value: new THREE.Vector2(...ENV_SIZE) }, uSize: { value: new THREE.Vector2() }, uAlpha: { value: 0 }, uSamples: { value: 64 },
+    uEnv: { value: weighted.texture }, uEnvSize: { value: new THREE.Vector2(...ENV_SIZE) }, uSize: { value: new THREE.Vector2() }, uAlpha: { value: 0 }, uSamples: { value: 64 },
   });
   const ggx = pass('env-prefilter.frag.glsl', {}, filterUniforms());
-  const cosine = pass('env-prefilter.frag.glsl', { IRRADIANCE: 1 }, filterUniforms());
   const run = (material, target, layer = 0) => {
     quad.material = material;
     renderer.setRenderTarget(target, layer);
@@ -86,11 +91,14 @@ export function createEnvironmentMaps(renderer) {
     return t;
   };
   const sampling = { marginal: table(ENV_SIZE[1], 1), conditional: table(...ENV_SIZE), pdf: table(...ENV_SIZE), usable: false };
-  // the reference draws directions by brightness: tables from the map as it now is on the GPU
-  const updateSampling = () => {
+  // from the map as it now is on the GPU: its irradiance, and tables for the reference to sample it by brightness
+  const updateFromPixels = () => {
     const half = new Uint16Array(ENV_SIZE[0] * ENV_SIZE[1] * 4);
     renderer.readRenderTargetPixels(env, 0, 0, ...ENV_SIZE, half);
-    const tables = buildEnvSampling(Float32Array.from(half, THREE.DataUtils.fromHalfFloat), ...ENV_SIZE);
+    const pixels = Float32Array.from(half, THREE.DataUtils.fromHalfFloat);
+    toHalf(irradianceMap(pixels, ...ENV_SIZE, ...IRRADIANCE_SIZE), irradiance.image.data);
+    irradiance.needsUpdate = true;
+    const tables = buildEnvSampling(pixels, ...ENV_SIZE);
     sampling.usable = Boolean(tables);
     if (!tables) return;
     for (const key of ['marginal', 'conditional', 'pdf']) {
@@ -103,14 +111,12 @@ export function createEnvironmentMaps(renderer) {
   let pmrem = null;
 
   const prefilter = () => {
+    run(copyWeighted, weighted);
     ggx.uniforms.uSize.value.set(...PREFILTER_SIZE);
     for (let k = 1; k <= PREFILTER_LEVELS; k++) {
       ggx.uniforms.uAlpha.value = (k / PREFILTER_LEVELS) ** 2;
       run(ggx, prefiltered, k - 1);
     }
-    cosine.uniforms.uSize.value.set(...IRRADIANCE_SIZE);
-    cosine.uniforms.uSamples.value = 256;
-    run(cosine, irradiance);
   };
 
   const roomCube = () => {
@@ -124,7 +130,7 @@ export function createEnvironmentMaps(renderer) {
   return {
     env: env.texture,
     prefiltered: prefiltered.texture,
-    irradiance: irradiance.texture,
+    irradiance,
     sampling,
     /** Replaces the environment: 'studio', or pixels { data, width, height } (sky, furnace, a user's file). */
     load(source) {
@@ -141,7 +147,7 @@ export function createEnvironmentMaps(renderer) {
         texture.dispose();
       }
       prefilter();
-      updateSampling();
+      updateFromPixels();
       renderer.setRenderTarget(previous);
       pmrem?.dispose();
       pmrem = null;
@@ -154,7 +160,7 @@ export function createEnvironmentMaps(renderer) {
       return pmrem.texture;
     },
     dispose() {
-      [env, prefiltered, irradiance, sampling.marginal, sampling.conditional, sampling.pdf, copyFlat, copyCube, ggx, cosine, quad.geometry].forEach((x) => x.dispose());
+      [env, weighted, prefiltered, irradiance, sampling.marginal, sampling.conditional, sampling.pdf, copyFlat, copyCube, copyWeighted, ggx, quad.geometry].forEach((x) => x.dispose());
       pmrem?.dispose();
       pmremGenerator?.dispose();
     },
