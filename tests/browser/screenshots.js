@@ -23,6 +23,7 @@ const SHOTS = [
   ['ndf-page', 'ndf.html?ndf.exposure=8', { fullPage: true }],
   ['visibility-page', 'visibility.html', { fullPage: true }],
   ['diffuse-page', 'diffuse.html', { fullPage: true }],
+  ['rendering-page', 'rendering.html', { fullPage: true }],
   ['performance-page', 'performance.html', { fullPage: true }],
   ['exercises-page', 'exercises.html#match-sphere', { fullPage: true }],
   ['tour-fresnel-zones-lh', 'tour.html#fresnel-zones-lh'],
