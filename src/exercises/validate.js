@@ -25,6 +25,8 @@ export function fieldProblem(f, value) {
       const unknown = value.filter((v) => !Object.hasOwn(f.options, v));
       return unknown.length ? `${unknown.map(show).join(', ')} not among ${Object.keys(f.options).join(', ')}` : null;
     }
+    case 'color':
+      return typeof value === 'string' && /^#[0-9a-f]{6}$/i.test(value) ? null : `${show(value)} is not a colour like "#rrggbb"`;
     default:
       return `unknown field type ${f.type}`;
   }

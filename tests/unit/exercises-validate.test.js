@@ -55,6 +55,11 @@ describe('validator messages', () => {
     });
   }
 
+  it('checks a colour field of the widget', async () => {
+    const lambert = JSON.parse(readFileSync(join(DIR, 'lambert-brightness.json'), 'utf8'));
+    expect(await errorsOf({ ...lambert, state: { ...lambert.state, diffuse: 'white' } })).toEqual(['state.diffuse: "white" is not a colour like "#rrggbb"']);
+  });
+
   it('names what a grader needs of the widget', async () => {
     const sphere = JSON.parse(readFileSync(join(DIR, 'match-sphere.json'), 'utf8'));
     expect(await errorsOf({ ...sphere, locked: ['D', 'V', 'F', 'alpha'] })).toEqual(['locked: "alpha" is what the student sets for grader "sphere-match"; it must stay free']);
