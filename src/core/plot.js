@@ -77,7 +77,7 @@ export function describePlot(spec) {
 const axis = (label, extra = {}) => ({ label, labelSize: 22, size: 48, stroke: '#333', grid: { stroke: '#0000001a' }, ...extra });
 
 /**
- * spec: { title, xLabel, yLabel, x: { min, max, log }, y: { min, max, log } | null (auto), series: [{ label, stroke, dash, width }],
+ * spec: { title, xLabel, yLabel, x: { min, max, log }, y: { min, max, log } | null (auto), series: [{ label, stroke, dash, width, points, spanGaps }],
  *         data: [xs, ...ys], bands: [...], annotations: [...], filename, legend = true }
  * options.onCursor(index | null): the data index under the pointer, for a readout of the page's own.
  * Returns { setData(spec), dispose() }; setData rebuilds when the series change.
@@ -115,6 +115,7 @@ export function createPlot(container, spec, { onCursor } = {}) {
         width: s.width ?? 2,
         dash: s.dash,
         points: { show: Boolean(s.points), size: 7, fill: s.stroke },
+        spanGaps: Boolean(s.spanGaps), // a curve over x values other series own
         value: (_, v) => (v == null ? '—' : v.toFixed(4)),
       }))],
       legend: { show: current.legend ?? true, live: true },

@@ -50,6 +50,40 @@ function render() {
 costSelect.addEventListener('change', render);
 render();
 
+// image-based lighting: each method's error against the lab's Monte Carlo reference, against its GPU time
+function renderIbl(ibl) {
+  const section = document.createElement('section');
+  section.innerHTML = '<h2>Image-based lighting against the reference</h2>' +
+    `<p class="domain">The material lab's environment methods on a ${ibl.setup.resolution}² sphere, each against the lab's converged ` +
+    `Monte Carlo reference (${ibl.setup.referenceSamples} samples per pixel): relative RMS error over the sphere against the GPU time ` +
+    `of the method's pass (median of ${ibl.setup.timingRuns}). Importance sampling is one curve, N = 4 to 256 samples.</p>`;
+  extra.before(section);
+  const cases = [...new Set(ibl.rows.map((r) => `${r.environment}|${r.material}|${r.alpha}`))];
+  for (const c of cases) {
+    const rows = ibl.rows.filter((r) => `${r.environment}|${r.material}|${r.alpha}` === c);
+    const [environment, material, alpha] = c.split('|');
+    const methods = [...new Set(rows.map((r) => r.method))];
+    const xs = [...new Set(rows.map((r) => r.ms))].sort((a, b) => a - b);
+    plots.push(createPlot(section, {
+      title: `${environment}, ${material} α ${alpha}: relative RMS error against GPU time (lower left is better)`,
+      xLabel: 'GPU time of the pass (ms)',
+      yLabel: 'relative RMS error',
+      x: { min: xs[0] * 0.8, max: xs[xs.length - 1] * 1.2, log: true },
+      y: { min: 0.005, max: 4, log: true },
+      series: methods.map((m, i) => ({ label: m, stroke: SERIES_COLORS[i % SERIES_COLORS.length], width: m === 'importance' ? 1.5 : 0, points: true, spanGaps: true })),
+      data: [xs, ...methods.map((m) => xs.map((x) => rows.find((r) => r.method === m && r.ms === x)?.relative ?? null))],
+      filename: `ibl-${environment}-${material}`,
+      height: 220,
+    }));
+  }
+  const table = document.createElement('table');
+  table.className = 'data-table compact';
+  table.innerHTML = '<thead><tr><th>Environment, material</th><th>Method</th><th>GPU ms</th><th>RMS error</th><th>relative</th></tr></thead><tbody>' +
+    ibl.rows.map((r) => `<tr><td>${r.environment}, ${r.material} α ${r.alpha}</td><td>${r.samples ? `importance, N = ${r.samples}` : r.method}</td>` +
+      `<td>${r.ms.toFixed(2)}</td><td>${r.rms.toExponential(2)}</td><td>${(r.relative * 100).toFixed(2)} %</td></tr>`).join('') + '</tbody>';
+  section.append(table);
+}
+
 // three.js for scale, and what each page costs to open
 const vt = report.versusThree;
 const extra = document.getElementById('pages');
@@ -60,4 +94,5 @@ extra.innerHTML =
   '<h2>What each page loads</h2><table class="data-table compact"><thead><tr><th>Page</th><th>JavaScript (KiB, uncompressed)</th><th>files</th><th>load (ms)</th><th>first 3-D frame (ms)</th></tr></thead><tbody>' +
   report.pages.map((p) => `<tr><td>${p.page}</td><td>${p.jsKB.toFixed(0)}</td><td>${p.jsFiles}</td><td>${p.loadMs.toFixed(0)}</td><td>${p.firstFrameMs === null ? '—' : p.firstFrameMs.toFixed(0)}</td></tr>`).join('') +
   '</tbody></table>';
+if (report.ibl) renderIbl(report.ibl);
 (globalThis.__shadingLab ??= {}).performance = report;
