@@ -16,25 +16,28 @@ export function widgetParams(search, prefix) {
   return out;
 }
 
+// Parameters of embed.html that are not widget state: the widget's name and the origins allowed to message it.
+const EMBED_PARAMS = new Set(['w', 'origins']);
+
 function writeUrl(schema, state, prefix) {
   const url = new URL(location.href);
   const own = stateToParams(schema, state);
   for (const k of [...url.searchParams.keys()]) {
-    if (prefix ? k.startsWith(`${prefix}.`) : k !== 'w') url.searchParams.delete(k);
+    if (prefix ? k.startsWith(`${prefix}.`) : !EMBED_PARAMS.has(k)) url.searchParams.delete(k);
   }
   for (const [k, v] of own) url.searchParams.set(prefix ? `${prefix}.${k}` : k, v);
   history.replaceState(history.state, '', url);
 }
 
 /**
- * Creates widget `name` inside `container` with the state found in the URL.
- * options: { prefix, syncUrl = true, onStateChange }
+ * Creates widget `name` inside `container` with the state found in the URL (over `state`, if given).
+ * options: { prefix, syncUrl = true, onStateChange, state }
  */
-export async function mountWidget(container, name, { prefix = '', syncUrl = true, onStateChange, options = {} } = {}) {
+export async function mountWidget(container, name, { prefix = '', syncUrl = true, onStateChange, state = {}, options = {} } = {}) {
   if (!isWidgetName(name)) throw new Error(`unknown widget ${name}`);
   const { widget } = await WIDGETS[name].load();
   let timer = 0;
-  const instance = widget.create(container, widgetParams(location.search, prefix), {
+  const instance = widget.create(container, { ...state, ...widgetParams(location.search, prefix) }, {
     ...options,
     onStateChange(state) {
       onStateChange?.(state);
