@@ -27,8 +27,8 @@ function skipStaleDeletes(gl) {
   for (const kind of GL_OBJECT_KINDS) {
     const create = gl[`create${kind}`].bind(gl);
     const remove = gl[`delete${kind}`].bind(gl);
-    gl[`create${kind}`] = () => {
-      const object = create();
+    gl[`create${kind}`] = (...args) => {
+      const object = create(...args);
       if (object) born.set(object, generation);
       return object;
     };
