@@ -220,12 +220,21 @@ function countContexts() {
     const ctx = getContext.call(this, kind, ...rest);
     if (ctx && kind === 'webgl2' && !this.__counted) {
       this.__counted = true;
+      this.__gl = ctx;
+      this.__draws = 0; // draw calls since the context was (re)made: what is on screen was drawn by it
       up(this, false);
-      this.addEventListener('webglcontextlost', () => down(this));
-      this.addEventListener('webglcontextrestored', () => up(this, true));
+      this.addEventListener('webglcontextlost', () => ((this.__draws = 0), down(this)));
+      this.addEventListener('webglcontextrestored', () => ((this.__draws = 0), up(this, true)));
     }
     return ctx;
   };
+  for (const fn of ['drawArrays', 'drawElements', 'drawArraysInstanced', 'drawElementsInstanced', 'drawRangeElements']) {
+    const draw = WebGL2RenderingContext.prototype[fn];
+    WebGL2RenderingContext.prototype[fn] = function counted(...args) {
+      this.canvas.__draws++;
+      return draw.apply(this, args);
+    };
+  }
   const getExtension = WebGL2RenderingContext.prototype.getExtension;
   WebGL2RenderingContext.prototype.getExtension = function withLoss(name) {
     const ext = getExtension.call(this, name);
@@ -269,13 +278,16 @@ async function viewsInSight(page, cardSelector) {
   return out;
 }
 
-/** Waits until a canvas shows a picture (many colours), not a blank or cleared one. */
+/**
+ * Waits until a view's context is live and has drawn since it was (re)made, then checks that the canvas shows
+ * a picture (many colours), not a blank one. (A canvas whose context is lost may still show its last picture,
+ * so the picture alone proves nothing.)
+ */
 async function expectDrawn(page, handle, what) {
-  let colors = 0;
-  for (let i = 0; i < 40 && colors < 12; i++) {
-    if (i) await sleep(250);
-    colors = await distinctColors(page, await handle.screenshot({ encoding: 'base64' }));
-  }
+  const fresh = () => handle.evaluate((c) => !c.__gl.isContextLost() && c.__draws > 0);
+  for (let i = 0; i < 60 && !(await fresh()); i++) await sleep(250);
+  expect(await fresh(), `${what}: live and drawn`).toBe(true);
+  const colors = await distinctColors(page, await handle.screenshot({ encoding: 'base64' }));
   expect(colors, `${what} shows a picture`).toBeGreaterThanOrEqual(12);
 }
 
@@ -313,6 +325,55 @@ describe('twenty 3-D widgets on one page (wall.html)', () => {
     expect(gl.restored).toBeGreaterThan(0); // ...and taken back
     expect(gl.most).toBeLessThanOrEqual(limit);
     expect(await page.evaluate(() => window.__shadingLabGl.peak)).toBeLessThanOrEqual(limit);
+    expect(page.glWarnings).toEqual([]);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  }, 240_000);
+});
+
+describe('embeds in same-origin frames share one context budget', () => {
+  it('a gallery with a budget of 3 draws every 3-D preview it scrolls past, with at most 3 contexts live', async () => {
+    const LIMIT = 3; // seeded in the top window before any frame loads: the frames must find and use it
+    const page = await openCounted('gallery.html', {
+      beforeLoad: (p) => p.evaluateOnNewDocument((limit) => {
+        if (window === window.top) window.__shadingLabGl = { limit, views: [], clock: 0, peak: 0 };
+      }, LIMIT),
+    });
+    const drawn = new Set();
+    const height = await page.evaluate(() => document.body.scrollHeight);
+    for (let y = 0; y < height; y += 400) {
+      await page.evaluate((top) => window.scrollTo(0, top), y);
+      await settle(page, 300);
+      for (const card of await page.$$('.gallery-card')) {
+        const name = await card.evaluate((c) => c.dataset.widget);
+        const iframe = await card.$('iframe');
+        if (drawn.has(name) || !iframe) continue;
+        const frame = await iframe.contentFrame();
+        await frame.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 1, { timeout: 30_000 });
+        const canvas = await frame.$('.viewport > canvas');
+        if (!canvas) continue; // a 2-D widget
+        const frameTop = await iframe.evaluate((f) => f.getBoundingClientRect().top);
+        const { top, height: h } = await canvas.evaluate((c) => c.getBoundingClientRect().toJSON());
+        const inSight = frameTop + top >= 0 && frameTop + top + h <= (await page.evaluate(() => innerHeight));
+        if (!inSight) continue;
+        await expectDrawn(page, canvas, `${name} preview at scroll ${y}`);
+        drawn.add(name);
+      }
+    }
+    const threeD = ['fresnel-zones', 'media', 'surfaces', 'brdf-lobe', 'ndf-explorer', 'visibility-explorer', 'energy'];
+    expect([...drawn].sort()).toEqual([...threeD].sort());
+
+    // back to the first 3-D preview, which gave its context up on the way down: drawn again
+    await page.$eval('[data-widget="fresnel-zones"] .gallery-preview', (el) => el.scrollIntoView());
+    await settle(page, 300);
+    const frame = await (await page.$('[data-widget="fresnel-zones"] iframe')).contentFrame();
+    await expectDrawn(page, await frame.$('.viewport > canvas'), 'fresnel-zones preview back in sight');
+
+    const gl = await page.evaluate(() => window.__gl);
+    expect(gl.lost).toBeGreaterThan(0);
+    expect(gl.restored).toBeGreaterThan(0);
+    expect(gl.most).toBeLessThanOrEqual(LIMIT);
+    expect(await page.evaluate(() => window.__shadingLabGl.peak)).toBeLessThanOrEqual(LIMIT);
     expect(page.glWarnings).toEqual([]);
     expect(page.errors).toEqual([]);
     await page.close();
