@@ -21,6 +21,16 @@ function sharedBudget() {
 }
 
 const budget = sharedBudget();
+// A frame that goes away (an iframe removed or navigated) takes its views out of the shared budget.
+const ownViews = new Set();
+addEventListener('pagehide', () => ownViews.forEach(leave));
+
+function leave(view) {
+  ownViews.delete(view);
+  const i = budget.views.indexOf(view);
+  if (i >= 0) budget.views.splice(i, 1);
+  serveWaiting();
+}
 const holders = () => budget.views.filter((v) => v.holds);
 
 /** Frees a slot if none is free, by taking the one of the view out of sight the longest. False if it cannot. */
@@ -50,15 +60,17 @@ function serveWaiting() {
 }
 
 /**
- * Registers a view (visible: whether it is in sight now) and makes room for its context, which the caller
- * creates right after. `view` supplies release() (give the context up) and grant() (take it back); both
- * must set the view's slot through the returned handle. Returns { admitted, ... }: when not admitted, the
- * caller creates its context and releases it at once (the browser still counts it for a moment only).
+ * Registers a view (visible: whether it is near sight now) and makes room for its context, which the caller
+ * creates right after. `view` supplies canRelease(); release(), which gives the context up and sets
+ * view.holds = false (the browser stops counting it at once); and grant(), which takes the context back and
+ * calls held(). Returns { admitted, ... }: when not admitted, the caller gives its new context up at once
+ * (the browser counted it for that moment only) and it waits for a slot.
  */
 export function joinGlBudget(view, visible) {
   Object.assign(view, { holds: false, waiting: false, visible, seen: ++budget.clock });
   const admitted = makeRoom();
   budget.views.push(view);
+  ownViews.add(view);
   if (admitted) take(view);
   return {
     admitted,
@@ -85,10 +97,7 @@ export function joinGlBudget(view, visible) {
     get waiting() {
       return view.waiting;
     },
-    leave() {
-      budget.views.splice(budget.views.indexOf(view), 1);
-      serveWaiting();
-    },
+    leave: () => leave(view),
   };
 }
 

@@ -23,6 +23,8 @@ const SHOTS = [
   ['ndf-page', 'ndf.html?ndf.exposure=8', { fullPage: true }],
   ['visibility-page', 'visibility.html', { fullPage: true }],
   ['performance-page', 'performance.html', { fullPage: true }],
+  ['gallery-page', 'gallery.html', { fullPage: true }],
+  ['wall-page', 'wall.html'], // not full page: that would put all twenty views in sight at once
 ];
 
 const out = join(ROOT, 'docs/screenshots');
