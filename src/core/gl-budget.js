@@ -9,21 +9,22 @@
 
 export const GL_CONTEXT_BUDGET = 12; // of Chromium's 16, leaving room for a parity page or another tab
 
-function sharedBudget() {
+function budgetHost() {
   let host = window;
   try {
     while (host.parent !== host && host.parent.location.origin === location.origin) host = host.parent;
   } catch {
     /* a cross-origin parent: this frame keeps a budget of its own */
   }
-  host.__shadingLabGl ??= { limit: GL_CONTEXT_BUDGET, views: [], clock: 0, peak: 0 };
-  return host.__shadingLabGl;
+  return host;
 }
 
-const budget = sharedBudget();
-// A frame that goes away (an iframe removed or navigated) takes its views out of the shared budget.
+const host = budgetHost();
+host.__shadingLabGl ??= { limit: GL_CONTEXT_BUDGET, views: [], clock: 0, peak: 0 };
+const budget = host.__shadingLabGl;
+// A frame that goes away (an iframe removed or navigated) takes its views out of the budget it shares.
 const ownViews = new Set();
-addEventListener('pagehide', () => ownViews.forEach(leave));
+if (host !== window) addEventListener('pagehide', () => ownViews.forEach(leave));
 
 function leave(view) {
   ownViews.delete(view);

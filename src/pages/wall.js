@@ -50,7 +50,7 @@ for (const [i, [name, caption, state]] of TILES.entries()) {
   wall.append(tile);
   const { widget } = await WIDGETS[name].load();
   const alone = Object.assign(document.createElement('a'), { className: 'wall-open', textContent: 'open alone' });
-  const link = (s) => (alone.href = `embed.html?w=${name}&${stateToParams(widget.schema, s)}`);
+  const link = (s) => (alone.href = `embed.html?${new URLSearchParams([['w', name], ...stateToParams(widget.schema, s)])}`);
   heading.append(' ', alone);
   link((await mountWidget(slot, name, { prefix: `tile${i + 1}`, syncUrl: false, state, onStateChange: link })).getState());
   showStatus();

@@ -378,4 +378,22 @@ describe('embeds in same-origin frames share one context budget', () => {
     expect(page.errors).toEqual([]);
     await page.close();
   }, 240_000);
+
+  it('a frame that is removed gives its slots back', async () => {
+    const page = await open(browser, 'index.html');
+    const budget = () => page.evaluate(() => ({ views: window.__shadingLabGl?.views.length, held: window.__shadingLabGl?.views.filter((v) => v.holds).length }));
+    await page.evaluate((src) => {
+      document.body.replaceChildren(...['a', 'b'].map((id) => Object.assign(document.createElement('iframe'), { id, src, style: 'width: 900px; height: 400px' })));
+    }, new URL('embed.html?w=ndf-explorer', baseUrl()).href);
+    for (const id of ['a', 'b']) {
+      const frame = await (await page.$(`#${id}`)).contentFrame();
+      await frame.waitForFunction(() => globalThis.__shadingLab?.widgets?.['ndf-explorer'], { timeout: 30_000 });
+    }
+    expect(await budget()).toEqual({ views: 2, held: 2 });
+    await page.$eval('#a', (f) => f.remove());
+    await page.waitForFunction(() => window.__shadingLabGl.views.length === 1, { timeout: 5000 });
+    expect(await budget()).toEqual({ views: 1, held: 1 });
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
 });
