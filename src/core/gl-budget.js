@@ -19,12 +19,18 @@ function budgetHost() {
   return host;
 }
 
-const host = budgetHost();
-host.__shadingLabGl ??= { limit: GL_CONTEXT_BUDGET, views: [], clock: 0, peak: 0 };
-const budget = host.__shadingLabGl;
-// A frame that goes away (an iframe removed or navigated) takes its views out of the budget it shares.
+let budget = null; // found (or made) when the first view joins: importing this module touches no window
 const ownViews = new Set();
-if (host !== window) addEventListener('pagehide', () => ownViews.forEach(leave));
+
+function sharedBudget() {
+  if (budget) return budget;
+  const host = budgetHost();
+  host.__shadingLabGl ??= { limit: GL_CONTEXT_BUDGET, views: [], clock: 0, peak: 0 };
+  budget = host.__shadingLabGl;
+  // a frame that goes away (an iframe removed or navigated) takes its views out of the budget it shares
+  if (host !== window) addEventListener('pagehide', () => ownViews.forEach(leave));
+  return budget;
+}
 
 function leave(view) {
   ownViews.delete(view);
@@ -68,6 +74,7 @@ function serveWaiting() {
  * (the browser counted it for that moment only) and it waits for a slot.
  */
 export function joinGlBudget(view, visible) {
+  sharedBudget();
   Object.assign(view, { holds: false, waiting: false, visible, seen: ++budget.clock });
   const admitted = makeRoom();
   budget.views.push(view);
@@ -103,4 +110,7 @@ export function joinGlBudget(view, visible) {
 }
 
 /** For tests and diagnostics: the budget, the slots held now, and the most ever held at once. */
-export const glBudgetStatus = () => ({ limit: budget.limit, held: holders().length, peak: budget.peak, views: budget.views.length });
+export function glBudgetStatus() {
+  const { limit, peak, views } = sharedBudget();
+  return { limit, held: holders().length, peak, views: views.length };
+}

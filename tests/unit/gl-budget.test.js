@@ -11,7 +11,7 @@ beforeAll(async () => {
   vi.stubGlobal('location', { origin: 'https://lab.example.org' });
   vi.stubGlobal('addEventListener', () => {});
   ({ joinGlBudget, glBudgetStatus } = await import('../../src/core/gl-budget.js'));
-  window.__shadingLabGl.limit = 3;
+  window.__shadingLabGl = { limit: 3, views: [], clock: 0, peak: 0 }; // seeded, as a test page can
 });
 
 /** A view as gl-context.js makes it: release() frees its slot at once; grant() takes one. */
