@@ -285,8 +285,9 @@ async function viewsInSight(page, cardSelector) {
  */
 async function expectDrawn(page, handle, what) {
   const fresh = () => handle.evaluate((c) => !c.__gl.isContextLost() && c.__draws > 0);
-  for (let i = 0; i < 60 && !(await fresh()); i++) await sleep(250);
-  expect(await fresh(), `${what}: live and drawn`).toBe(true);
+  for (let i = 0; i < 120 && !(await fresh()); i++) await sleep(250);
+  const why = await handle.evaluate((c) => `lost ${c.__gl.isContextLost()}, draws ${c.__draws}, message “${c.parentElement.querySelector('.blocking-message')?.textContent ?? ''}”`);
+  expect(await fresh(), `${what}: live and drawn (${why})`).toBe(true);
   const colors = await distinctColors(page, await handle.screenshot({ encoding: 'base64' }));
   expect(colors, `${what} shows a picture`).toBeGreaterThanOrEqual(12);
 }
