@@ -30,14 +30,14 @@ function writeUrl(schema, state, prefix) {
 }
 
 /**
- * Creates widget `name` inside `container` with the state found in the URL (over `state`, if given).
- * options: { prefix, syncUrl = true, onStateChange, state }
+ * Creates widget `name` inside `container` with the state found in the URL (over `initialState`, if given).
+ * options: { prefix, syncUrl = true, onStateChange, initialState }
  */
-export async function mountWidget(container, name, { prefix = '', syncUrl = true, onStateChange, state = {}, options = {} } = {}) {
+export async function mountWidget(container, name, { prefix = '', syncUrl = true, onStateChange, initialState = {}, options = {} } = {}) {
   if (!isWidgetName(name)) throw new Error(`unknown widget ${name}`);
   const { widget } = await WIDGETS[name].load();
   let timer = 0;
-  const instance = widget.create(container, { ...state, ...widgetParams(location.search, prefix) }, {
+  const instance = widget.create(container, { ...initialState, ...widgetParams(location.search, prefix) }, {
     ...options,
     onStateChange(state) {
       onStateChange?.(state);

@@ -52,6 +52,6 @@ for (const [i, [name, caption, state]] of TILES.entries()) {
   const alone = Object.assign(document.createElement('a'), { className: 'wall-open', textContent: 'open alone' });
   const link = (s) => (alone.href = `embed.html?${new URLSearchParams([['w', name], ...stateToParams(widget.schema, s)])}`);
   heading.append(' ', alone);
-  link((await mountWidget(slot, name, { prefix: `tile${i + 1}`, syncUrl: false, state, onStateChange: link })).getState());
+  link((await mountWidget(slot, name, { prefix: `tile${i + 1}`, syncUrl: false, initialState: state, onStateChange: link })).getState());
   showStatus();
 }
