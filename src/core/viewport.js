@@ -1,10 +1,16 @@
 // A WebGL2 canvas for a 3-D view: checks for WebGL2 (a clear message instead of a blank canvas), follows
-// its container's size, draws on demand, and survives context loss.
+// its container's size, draws on demand, and survives context loss. Its context is one of the page's
+// budget (gl-budget.js): given up while the view is far out of sight if another view needs it, taken back
+// before the view returns, and the frame redrawn from the widget's state.
+//
+// onContextLost(): GPU content the widget filled once and keeps (a prefiltered environment, an
+// accumulation buffer) is gone with the context; drop it so that draw() builds it again.
 import * as THREE from 'three';
 import { createRenderLoop } from './render-loop.js';
+import { createBudgetedContext } from './gl-context.js';
 import { showBlockingMessage } from './notice.js';
 
-export function createViewport(container, { draw, onResize, label }) {
+export function createViewport(container, { draw, onResize, onContextLost, label }) {
   const holder = document.createElement('div');
   holder.className = 'viewport';
   const canvas = document.createElement('canvas');
@@ -14,28 +20,35 @@ export function createViewport(container, { draw, onResize, label }) {
   holder.append(canvas);
   container.append(holder);
 
-  const gl = canvas.getContext('webgl2', { antialias: true, alpha: false });
-  if (!gl) {
+  let message = null; // { kind, box }
+  const say = (kind, title, text) => {
+    message?.box.remove();
+    message = kind ? { kind, box: showBlockingMessage(holder, title, text) } : null;
+  };
+  let loop = null;
+  const context = createBudgetedContext(canvas, { antialias: true, alpha: false }, {
+    onLost(planned) {
+      onContextLost?.();
+      if (!planned) say('lost', 'The graphics context was lost.', 'It will come back by itself; if it does not, reload the page.');
+    },
+    onRestored() {
+      say(null);
+      loop.invalidate();
+    },
+    onWaiting(waiting) {
+      if (waiting) say('paused', 'This view is paused.', 'More 3-D views are in sight than the browser can draw at once; it draws again when some scroll away.');
+      else if (message?.kind === 'paused') say(null);
+    },
+  });
+  if (!context) {
     canvas.remove();
     showBlockingMessage(holder, 'This view needs WebGL2.', 'Your browser or device did not provide a WebGL2 context. Try a current Chrome, Firefox or Safari, or enable hardware acceleration. The rest of the page still works.');
     return null;
   }
-  const renderer = new THREE.WebGLRenderer({ canvas, context: gl, antialias: true });
+  const renderer = new THREE.WebGLRenderer({ canvas, context: context.gl, antialias: true });
   renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
-  const loop = createRenderLoop(holder, () => draw(renderer));
-
-  let lostMessage = null;
-  const onLost = (e) => {
-    e.preventDefault();
-    lostMessage ??= showBlockingMessage(holder, 'The graphics context was lost.', 'It will come back by itself; if it does not, reload the page.');
-  };
-  const onRestored = () => {
-    lostMessage?.remove();
-    lostMessage = null;
-    loop.invalidate();
-  };
-  canvas.addEventListener('webglcontextlost', onLost);
-  canvas.addEventListener('webglcontextrestored', onRestored);
+  loop = createRenderLoop(holder, () => draw(renderer), () => context.live);
+  context.start();
 
   const resize = new ResizeObserver(() => {
     const w = Math.max(holder.clientWidth, 1);
@@ -57,9 +70,8 @@ export function createViewport(container, { draw, onResize, label }) {
     dispose() {
       resize.disconnect();
       loop.dispose();
-      canvas.removeEventListener('webglcontextlost', onLost);
-      canvas.removeEventListener('webglcontextrestored', onRestored);
       renderer.dispose();
+      context.dispose();
       holder.remove();
     },
   };

@@ -17,11 +17,14 @@ export function widgetParams(search, prefix) {
   return out;
 }
 
+// Parameters of embed.html that are not widget state: the widget's name and the origins allowed to message it.
+const EMBED_PARAMS = new Set(['w', 'origins']);
+
 function writeUrl(schema, state, prefix) {
   const url = new URL(location.href);
   const own = stateToParams(schema, state);
   for (const k of [...url.searchParams.keys()]) {
-    if (prefix ? k.startsWith(`${prefix}.`) : k !== 'w') url.searchParams.delete(k);
+    if (prefix ? k.startsWith(`${prefix}.`) : !EMBED_PARAMS.has(k)) url.searchParams.delete(k);
   }
   for (const [k, v] of own) url.searchParams.set(prefix ? `${prefix}.${k}` : k, v);
   history.replaceState(history.state, '', url);

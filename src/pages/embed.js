@@ -1,14 +1,27 @@
-// embed.html?w=NAME&...: one widget alone, no page chrome, filling its frame.
+// embed.html?w=NAME&...: one widget alone, no page chrome, filling its frame. In an iframe it speaks the
+// postMessage protocol of src/core/embed-protocol.js with its parent, if the parent's origin is allowed
+// (`origins=`, a comma list; the widget's own origin always is).
 import '../styles.css';
 import { mountWidget } from '../core/widget-host.js';
+import { connectEmbedProtocol, parseAllowedOrigins } from '../core/embed-protocol.js';
 import { WIDGETS, isWidgetName } from '../widgets/registry.js';
-import { showBlockingMessage } from '../core/notice.js';
+import { createNoticeArea, showBlockingMessage } from '../core/notice.js';
 
 const root = document.getElementById('embed');
-const name = new URLSearchParams(location.search).get('w');
+const params = new URLSearchParams(location.search);
+const name = params.get('w');
 if (isWidgetName(name)) {
   document.title = `${WIDGETS[name].title} — Shading Lab`;
-  mountWidget(root, name);
+  const notices = createNoticeArea(root);
+  const { origins, notices: originProblems } = parseAllowedOrigins(params.get('origins'), location.origin);
+  if (originProblems.length) notices.show(originProblems);
+  let link = null;
+  const instance = await mountWidget(root, name, { onStateChange: () => link?.userChanged() });
+  if (window.parent !== window) {
+    const { widget } = await WIDGETS[name].load();
+    link = connectEmbedProtocol({ name, schema: widget.schema, instance, origins, notices });
+    link.ready();
+  }
 } else {
   const known = Object.keys(WIDGETS).join(', ');
   showBlockingMessage(root, name ? `There is no widget called “${name}”.` : 'No widget named.', `Use embed.html?w=NAME with one of: ${known}.`);

@@ -28,6 +28,8 @@ const SHOTS = [
   ['exercises-page', 'exercises.html#match-sphere', { fullPage: true }],
   ['tour-fresnel-zones-lh', 'tour.html#fresnel-zones-lh'],
   ['tour-media-grid', 'tour.html#media-grid', { fullPage: true }],
+  ['gallery-page', 'gallery.html', { fullPage: true }],
+  ['wall-page', 'wall.html'], // not full page: that would put all twenty views in sight at once
 ];
 
 const out = join(ROOT, 'docs/screenshots');

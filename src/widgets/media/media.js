@@ -94,13 +94,15 @@ export function createMedia(container, initialState = {}, { onStateChange } = {}
     viewport?.invalidate();
   };
 
+  const dropTargets = () => {
+    targets?.forEach((t) => t.dispose());
+    targets = null;
+    restart();
+  };
   const viewport = createViewport(shell.view, {
     label: 'Glasses of a medium in front of a chequered wall',
-    onResize: (w, h) => {
-      targets?.forEach((t) => t.dispose());
-      targets = null;
-      restart();
-    },
+    onResize: dropTargets,
+    onContextLost: dropTargets, // the running sum is gone with the context: start the accumulation over
     draw(renderer) {
       const canvasSize = renderer.getDrawingBufferSize(bufferSize);
       const scale = Math.min(1, TRACE_MAX_WIDTH / canvasSize.x); // long walks (milk) are costly: trace fewer pixels

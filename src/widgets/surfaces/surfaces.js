@@ -82,6 +82,10 @@ export function createSurfaces(container, initialState = {}, { onStateChange } =
   const drawSize = new THREE.Vector2();
   const viewport = createViewport(shell.view, {
     label: `Four metal spheres reflecting a room, roughness ${SPHERE_ROUGHNESS.join(', ')}`,
+    onContextLost() {
+      pmrem?.dispose(); // its texels were on the lost context: prefilter again on the next frame
+      pmrem = null;
+    },
     draw(renderer) {
       if (!pmrem) {
         const generator = new THREE.PMREMGenerator(renderer);

@@ -1,0 +1,126 @@
+// The postMessage protocol of embed.html: a parent page reads and sets the state of the widget in its
+// iframe, and hears when the widget is ready and when the user changes it (README, "Embedding").
+//
+//   parent → widget   { type: 'shading-lab:get', id? }
+//                     { type: 'shading-lab:set', state: { key: value, ... }, id? }
+//   widget → parent   { type: 'shading-lab:ready', widget, state, query }        once mounted
+//                     { type: 'shading-lab:state', id, widget, state, query }    reply to get and to set
+//                     { type: 'shading-lab:error', id, widget, errors, state }   set had bad values (kept the good state)
+//                     { type: 'shading-lab:changed', widget, state, query }      the user changed it (debounced)
+//
+// `query` is the state as embed URL parameters (only what differs from the defaults). Messages are taken only
+// from the parent window and from an allowed origin; anything else, or of another shape, is ignored. Replies
+// go to the origin that asked, never to '*'.
+import { coerceState, stateToParams } from './state.js';
+
+export const MESSAGE_PREFIX = 'shading-lab:';
+export const CHANGED_DEBOUNCE_MS = 150;
+const MAX_ID_LENGTH = 200;
+
+const isPlainObject = (x) => x !== null && typeof x === 'object' && Object.getPrototypeOf(x) === Object.prototype;
+const isId = (id) => id === undefined || (typeof id === 'string' && id.length <= MAX_ID_LENGTH) || Number.isFinite(id);
+
+/**
+ * The origins allowed to message the widget, from the `origins=` parameter (a comma list of origins such as
+ * https://slides.example.org). The widget's own origin is always allowed. Returns { origins: Set, notices }.
+ */
+export function parseAllowedOrigins(param, ownOrigin) {
+  const origins = new Set([ownOrigin]);
+  const notices = [];
+  for (const item of (param ?? '').split(',').map((s) => s.trim()).filter(Boolean)) {
+    let origin = null;
+    try {
+      const url = new URL(item);
+      if ((url.protocol === 'https:' || url.protocol === 'http:') && url.pathname === '/' && !url.search && !url.hash) origin = url.origin;
+    } catch {
+      /* not a URL: reported below */
+    }
+    if (origin) origins.add(origin);
+    else notices.push(`origins: “${item}” is not an origin like https://example.org; ignored.`);
+  }
+  return { origins, notices };
+}
+
+/** A message from the parent as { kind: 'get' | 'set', id, state }, or null when it has another shape. */
+export function parseMessage(data) {
+  if (!isPlainObject(data) || typeof data.type !== 'string' || !isId(data.id)) return null;
+  if (data.type === `${MESSAGE_PREFIX}get`) return { kind: 'get', id: data.id };
+  if (data.type === `${MESSAGE_PREFIX}set` && isPlainObject(data.state)) return { kind: 'set', id: data.id, state: data.state };
+  return null;
+}
+
+/**
+ * What applying `partial` over `current` would report: `invalid` values (the field keeps its value, or a
+ * number is clamped) and `unknown` keys (ignored).
+ */
+export function checkIncomingState(schema, partial, current) {
+  const unknown = Object.keys(partial).filter((k) => !Object.hasOwn(schema, k));
+  return {
+    invalid: coerceState(schema, partial, current).notices,
+    unknown: unknown.map((k) => `“${k}” is not a setting of this widget (it has: ${Object.keys(schema).join(', ')}); ignored.`),
+  };
+}
+
+/** The parent's origin, when the browser tells it (ancestorOrigins, else the referrer). */
+function parentOriginHint() {
+  const ancestor = location.ancestorOrigins?.[0];
+  if (ancestor) return ancestor;
+  try {
+    return document.referrer ? new URL(document.referrer).origin : null;
+  } catch {
+    return null;
+  }
+}
+
+/**
+ * Connects a mounted widget to its parent window. `instance` is the widget ({ update, getState }), `notices`
+ * a notice area for problems the widget itself does not report (unknown keys). Returns
+ * { ready(), userChanged() (call on every state change), dispose() }.
+ */
+export function connectEmbedProtocol({ name, schema, instance, origins, notices, parent = window.parent }) {
+  const hint = parentOriginHint();
+  let parentOrigin = hint && origins.has(hint) ? hint : null; // where unsolicited messages go; null: nowhere yet
+  let fromParent = false; // true while a `set` is applied: that is not a user change
+  let timer = 0;
+
+  const snapshot = () => {
+    const state = instance.getState();
+    return { widget: name, state: structuredClone(state), query: stateToParams(schema, state).toString() };
+  };
+  const post = (type, origin, fields = {}) => parent.postMessage({ type: `${MESSAGE_PREFIX}${type}`, ...snapshot(), ...fields }, origin);
+
+  const onMessage = (e) => {
+    if (e.source !== parent || !origins.has(e.origin)) return;
+    const msg = parseMessage(e.data);
+    if (!msg) return;
+    parentOrigin = e.origin;
+    if (msg.kind === 'set') {
+      const { invalid, unknown } = checkIncomingState(schema, msg.state, instance.getState());
+      if (unknown.length) notices.show(unknown); // the widget shows the invalid values itself
+      fromParent = true;
+      try {
+        instance.update(msg.state);
+      } finally {
+        fromParent = false;
+      }
+      if (invalid.length || unknown.length) post('error', e.origin, { id: msg.id, errors: [...invalid, ...unknown] });
+    }
+    post('state', e.origin, { id: msg.id });
+  };
+  window.addEventListener('message', onMessage);
+
+  return {
+    ready() {
+      if (parentOrigin) post('ready', parentOrigin);
+    },
+    userChanged() {
+      if (fromParent || !parentOrigin) return;
+      clearTimeout(timer);
+      timer = setTimeout(() => parentOrigin && post('changed', parentOrigin), CHANGED_DEBOUNCE_MS);
+    },
+    dispose() {
+      clearTimeout(timer);
+      window.removeEventListener('message', onMessage);
+    },
+  };
+}

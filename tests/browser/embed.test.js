@@ -1,0 +1,400 @@
+// Embedding: the postMessage protocol between a parent page and embed.html, the gallery of embeds, and a
+// page of twenty 3-D widgets held within the browser's cap on live WebGL contexts.
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { WIDGETS } from '../../src/widgets/registry.js';
+import { baseUrl, distinctColors, launchBrowser, open, setControl, settle } from './helpers.js';
+import { openPage } from './harness.js';
+
+let browser;
+beforeAll(async () => {
+  browser = await launchBrowser();
+});
+afterAll(async () => {
+  await browser?.close();
+});
+
+const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
+// the same server under a second name: another origin, as an embedding site on another host would be
+const otherOrigin = () => baseUrl().replace('127.0.0.1', 'localhost');
+const originOf = (url) => new URL(url).origin;
+
+/**
+ * Turns the page into a parent that embeds `src` in an iframe and records every message it receives
+ * (window.__inbox: { origin, data }). Returns the iframe's frame once its widget is registered.
+ */
+async function embedIn(page, src) {
+  await page.evaluate((src) => {
+    window.__inbox = [];
+    window.addEventListener('message', (e) => window.__inbox.push({ origin: e.origin, data: e.data }));
+    const frame = Object.assign(document.createElement('iframe'), { src, id: 'embedded' });
+    frame.style.cssText = 'width: 1000px; height: 700px; border: 0';
+    document.body.replaceChildren(frame);
+  }, src);
+  const handle = await page.waitForSelector('#embedded');
+  const frame = await handle.contentFrame();
+  await frame.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 1, { timeout: 30_000 });
+  return frame;
+}
+
+/** Posts `message` to the iframe from the parent, with the given target origin. */
+const post = (page, message, targetOrigin) =>
+  page.evaluate((m, t) => document.getElementById('embedded').contentWindow.postMessage(m, t), message, targetOrigin);
+
+const inbox = (page) => page.evaluate(() => window.__inbox);
+const waitForMessage = (page, test) =>
+  page.waitForFunction(`window.__inbox.map((m) => m.data).find(${test})`, { timeout: 15_000 }).then((h) => h.jsonValue());
+const widgetState = (frame) => frame.evaluate(() => Object.values(globalThis.__shadingLab.widgets)[0].getState());
+
+describe('postMessage protocol of embed.html', () => {
+  it('announces itself, answers get, applies a set through validation, reports bad values, and follows the user', async () => {
+    const page = await open(browser, 'index.html');
+    const frame = await embedIn(page, new URL('embed.html?w=fresnel-zones', baseUrl()).href);
+    const own = originOf(baseUrl());
+
+    const ready = await waitForMessage(page, (d) => d.type === 'shading-lab:ready');
+    expect(ready.widget).toBe('fresnel-zones');
+    expect(ready.state).toEqual(await widgetState(frame));
+    expect(ready.query).toBe('');
+    expect((await inbox(page)).every((m) => m.origin === own)).toBe(true);
+
+    await post(page, { type: 'shading-lab:get', id: 'g1' }, own);
+    const got = await waitForMessage(page, (d) => d.type === 'shading-lab:state' && d.id === 'g1');
+    expect(got.state).toEqual(ready.state);
+
+    // good values are applied, a number out of range is clamped, a bad enum keeps the last good value
+    await post(page, { type: 'shading-lab:set', id: 's1', state: { mode: 'zones-lh', alpha: 0.5, lightTheta: 400, shape: 'banana', colour: 'red' } }, own);
+    const reply = await waitForMessage(page, (d) => d.type === 'shading-lab:state' && d.id === 's1');
+    const error = await waitForMessage(page, (d) => d.type === 'shading-lab:error' && d.id === 's1');
+    expect(reply.state).toMatchObject({ mode: 'zones-lh', alpha: 0.5, lightTheta: 180, shape: 'sphere' });
+    expect(reply.state).not.toHaveProperty('colour');
+    expect(reply.query).toBe(new URLSearchParams({ mode: 'zones-lh', alpha: '0.5', lightTheta: '180' }).toString());
+    expect(error.errors.join(' ')).toMatch(/400 is outside 0…180; clamped to 180/);
+    expect(error.errors.join(' ')).toMatch(/"banana" is not one of/);
+    expect(error.errors.join(' ')).toMatch(/“colour” is not a setting/);
+    expect(await widgetState(frame)).toEqual(reply.state);
+    // reported on the page too, and the iframe's own URL carries the new state
+    const noticeText = await frame.$eval('body', (b) => [...b.querySelectorAll('.notice')].map((n) => n.textContent).join(' '));
+    expect(noticeText).toMatch(/banana/);
+    expect(noticeText).toMatch(/colour/);
+    await sleep(300);
+    expect(new URL(frame.url()).searchParams.get('mode')).toBe('zones-lh');
+    // a change the parent made is not echoed back as a user change
+    expect((await inbox(page)).some((m) => m.data.type === 'shading-lab:changed')).toBe(false);
+
+    // the user edits the widget: one debounced `changed`, with the new state
+    await setControl(frame, 'Mode', 'Zones of n·v');
+    const changed = await waitForMessage(page, (d) => d.type === 'shading-lab:changed');
+    expect(changed.state.mode).toBe('zones-nv');
+    expect(changed.state).toEqual(await widgetState(frame));
+    expect(changed.query).toContain('mode=zones-nv');
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('ignores messages of the wrong shape without a reply, a change or an error', async () => {
+    const page = await open(browser, 'index.html');
+    const frame = await embedIn(page, new URL('embed.html?w=ndf-explorer', baseUrl()).href);
+    const own = originOf(baseUrl());
+    await waitForMessage(page, (d) => d.type === 'shading-lab:ready');
+    const before = await widgetState(frame);
+    const bad = [
+      'shading-lab:get', null, 42, [1, 2], { type: 'shading-lab:set', state: 'hwhm=20' }, { type: 'shading-lab:set', state: [20] },
+      { type: 'shading-lab:set', id: { x: 1 }, state: { hwhm: 20 } }, { type: 'shading-lab:sett', state: { hwhm: 20 } },
+      { type: 'shading-lab:state', state: { hwhm: 20 } }, { state: { hwhm: 20 } },
+    ];
+    for (const m of bad) await post(page, m, own);
+    await post(page, { type: 'shading-lab:get', id: 'last' }, own);
+    await waitForMessage(page, (d) => d.id === 'last');
+    await sleep(300);
+    const replies = (await inbox(page)).filter((m) => m.data?.type !== 'shading-lab:ready');
+    expect(replies.map((m) => m.data.id)).toEqual(['last']);
+    expect(await widgetState(frame)).toEqual(before);
+    expect(await frame.$$eval('.notice', (n) => n.length)).toBe(0);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('ignores a parent on an origin it was not given, and talks to one listed in origins=', async () => {
+    const page = await open(browser, new URL('index.html', otherOrigin()).href);
+    const parentOrigin = originOf(otherOrigin());
+    const widgetOrigin = originOf(baseUrl());
+    expect(parentOrigin).not.toBe(widgetOrigin);
+
+    const frame = await embedIn(page, new URL('embed.html?w=fresnel-zones', baseUrl()).href);
+    const before = await widgetState(frame);
+    await post(page, { type: 'shading-lab:set', id: 's', state: { mode: 'zones-lh' } }, widgetOrigin);
+    await post(page, { type: 'shading-lab:get', id: 'g' }, '*');
+    await sleep(800);
+    expect(await inbox(page)).toEqual([]); // not even `ready`: nothing goes to an origin that was not allowed
+    expect(await widgetState(frame)).toEqual(before);
+
+    const allowed = await embedIn(page, new URL(`embed.html?w=fresnel-zones&origins=${encodeURIComponent(parentOrigin)}`, baseUrl()).href);
+    const ready = await waitForMessage(page, (d) => d.type === 'shading-lab:ready');
+    expect(ready.widget).toBe('fresnel-zones');
+    await post(page, { type: 'shading-lab:set', id: 's2', state: { mode: 'zones-lh' } }, widgetOrigin);
+    await waitForMessage(page, (d) => d.type === 'shading-lab:state' && d.id === 's2');
+    expect((await widgetState(allowed)).mode).toBe('zones-lh');
+    expect((await inbox(page)).every((m) => m.origin === widgetOrigin)).toBe(true);
+    await sleep(300);
+    expect(new URL(allowed.url()).searchParams.get('origins')).toBe(parentOrigin); // kept when the state is written back
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+});
+
+/** The src of the iframe in a card's snippet, as an HTML parser reads it. */
+const snippetSrc = (page, name) =>
+  page.$eval(`#${name}-snippet`, (t) => new DOMParser().parseFromString(t.value, 'text/html').querySelector('iframe')?.getAttribute('src'));
+
+describe('gallery.html', () => {
+  it('has a card with an embed snippet for every registered widget, and loads previews only when scrolled to', async () => {
+    const page = await open(browser, 'gallery.html');
+    await settle(page, 500);
+    for (const name of Object.keys(WIDGETS)) {
+      expect(await snippetSrc(page, name)).toBe(new URL(`embed.html?w=${name}`, baseUrl()).href);
+      expect(await page.$eval(`[data-widget="${name}"] h2`, (h) => h.textContent)).toBe(WIDGETS[name].title);
+    }
+    const loaded = await page.$$eval('.gallery-preview iframe', (fs) => fs.map((f) => new URL(f.src).searchParams.get('w')));
+    expect(loaded.length).toBeGreaterThan(0);
+    expect(loaded).not.toContain('energy'); // the last card, far below
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('a snippet follows the state the user leaves the preview in, and opens in that state; Copy works from the keyboard', async () => {
+    const page = await open(browser, 'gallery.html');
+    await page.$eval('[data-widget="fresnel-zones"]', (el) => el.scrollIntoView());
+    const handle = await page.waitForSelector('[data-widget="fresnel-zones"] iframe');
+    const frame = await handle.contentFrame();
+    await frame.waitForFunction(() => globalThis.__shadingLab?.widgets?.['fresnel-zones'], { timeout: 30_000 });
+    await settle(frame, 400);
+    await setControl(frame, 'Shape', 'Torus knot');
+    await setControl(frame, 'Mode', 'Zones of l·h');
+    await page.waitForFunction(
+      () => document.getElementById('fresnel-zones-snippet').value.includes('mode=zones-lh'),
+      { timeout: 10_000 },
+    );
+    const src = await snippetSrc(page, 'fresnel-zones');
+    expect(new URL(src).searchParams.get('mode')).toBe('zones-lh');
+    expect(new URL(src).searchParams.get('shape')).toBe('torusknot');
+    expect(new URL(src).origin).toBe(new URL(baseUrl()).origin); // absolute, from the page's location
+
+    const copy = await page.$('[data-widget="fresnel-zones"] .gallery-copy button');
+    await copy.focus();
+    await page.keyboard.press('Enter');
+    await page.waitForFunction(() => document.querySelector('[data-widget="fresnel-zones"] .gallery-status').textContent !== '', { timeout: 5000 });
+
+    const opened = await open(browser, src);
+    await opened.waitForFunction(() => globalThis.__shadingLab?.widgets?.['fresnel-zones'], { timeout: 30_000 });
+    const state = await opened.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].getState());
+    expect(state).toMatchObject({ mode: 'zones-lh', shape: 'torusknot' });
+    expect(page.errors).toEqual([]);
+    expect(opened.errors).toEqual([]);
+    await opened.close();
+    await page.close();
+  });
+});
+
+/**
+ * Counts live WebGL contexts in every frame independently of the app, as Chromium counts them: a context is
+ * live from getContext until WEBGL_lose_context.loseContext() (or a loss event), and again once restored.
+ * window.top.__gl: { live, most, lost, restored }.
+ */
+function countContexts() {
+  const gl = (window.top.__gl ??= { live: 0, most: 0, lost: 0, restored: 0 }); // the top is same-origin here
+  const live = new WeakSet();
+  const up = (canvas, restored) => {
+    if (live.has(canvas)) return;
+    live.add(canvas);
+    gl.live++;
+    if (restored) gl.restored++;
+    gl.most = Math.max(gl.most, gl.live);
+  };
+  const down = (canvas) => {
+    if (!live.delete(canvas)) return;
+    gl.live--;
+    gl.lost++;
+  };
+  const getContext = HTMLCanvasElement.prototype.getContext;
+  HTMLCanvasElement.prototype.getContext = function counted(kind, ...rest) {
+    const ctx = getContext.call(this, kind, ...rest);
+    if (ctx && kind === 'webgl2' && !this.__counted) {
+      this.__counted = true;
+      this.__gl = ctx;
+      this.__draws = 0; // draw calls since the context was (re)made: what is on screen was drawn by it
+      up(this, false);
+      this.addEventListener('webglcontextlost', () => ((this.__draws = 0), down(this)));
+      this.addEventListener('webglcontextrestored', () => ((this.__draws = 0), up(this, true)));
+    }
+    return ctx;
+  };
+  for (const fn of ['drawArrays', 'drawElements', 'drawArraysInstanced', 'drawElementsInstanced', 'drawRangeElements']) {
+    const draw = WebGL2RenderingContext.prototype[fn];
+    WebGL2RenderingContext.prototype[fn] = function counted(...args) {
+      this.canvas.__draws++;
+      return draw.apply(this, args);
+    };
+  }
+  const getExtension = WebGL2RenderingContext.prototype.getExtension;
+  WebGL2RenderingContext.prototype.getExtension = function withLoss(name) {
+    const ext = getExtension.call(this, name);
+    if (ext && name === 'WEBGL_lose_context' && !ext.__counted) {
+      ext.__counted = true;
+      const lose = ext.loseContext.bind(ext);
+      ext.loseContext = () => (down(this.canvas), lose());
+    }
+    return ext;
+  };
+}
+
+const WEBGL_WARNING = /WebGL|Too many active/;
+
+/** Opens `path` with its WebGL contexts counted (countContexts) and its WebGL console warnings kept. */
+async function openCounted(path, { beforeLoad } = {}) {
+  const warnings = [];
+  const page = await openPage(browser, baseUrl(), path, {
+    beforeLoad: async (p) => {
+      p.on('console', (m) => /^warn/.test(m.type()) && WEBGL_WARNING.test(m.text()) && !m.text().includes('GPU stall') && warnings.push(m.text()));
+      await p.evaluateOnNewDocument(countContexts);
+      await beforeLoad?.(p);
+    },
+  });
+  page.glWarnings = warnings;
+  return page;
+}
+
+/** Canvases of 3-D views entirely in sight: [{ index, handle }], index of the wall tile or gallery card. */
+async function viewsInSight(page, cardSelector) {
+  const handles = await page.$$(`${cardSelector} .viewport > canvas`);
+  const out = [];
+  for (const handle of handles) {
+    const where = await handle.evaluate((c, sel) => {
+      const r = c.getBoundingClientRect();
+      const card = c.closest(sel);
+      return { inSight: r.top >= 0 && r.bottom <= innerHeight && r.height > 20, index: [...document.querySelectorAll(sel)].indexOf(card) };
+    }, cardSelector);
+    if (where.inSight) out.push({ index: where.index, handle });
+  }
+  return out;
+}
+
+/**
+ * Waits until a view's context is live and has drawn since it was (re)made, then checks that the canvas shows
+ * a picture (many colours), not a blank one. (A canvas whose context is lost may still show its last picture,
+ * so the picture alone proves nothing.)
+ */
+async function expectDrawn(page, handle, what) {
+  const fresh = () => handle.evaluate((c) => !c.__gl.isContextLost() && c.__draws > 0);
+  for (let i = 0; i < 120 && !(await fresh()); i++) await sleep(250);
+  const why = await handle.evaluate((c) => `lost ${c.__gl.isContextLost()}, draws ${c.__draws}, message “${c.parentElement.querySelector('.blocking-message')?.textContent ?? ''}”`);
+  expect(await fresh(), `${what}: live and drawn (${why})`).toBe(true);
+  const colors = await distinctColors(page, await handle.screenshot({ encoding: 'base64' }));
+  expect(colors, `${what} shows a picture`).toBeGreaterThanOrEqual(12);
+}
+
+describe('twenty 3-D widgets on one page (wall.html)', () => {
+  it('draws every widget when it is in view, never holds more contexts than the budget, and loses none unplanned', async () => {
+    const page = await openCounted('wall.html');
+    await page.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 20, { timeout: 120_000, polling: 500 });
+    const limit = await page.evaluate(() => window.__shadingLabGl.limit);
+    expect(limit).toBeLessThan(16);
+    expect(await page.$$eval('.wall-tile .viewport > canvas', (c) => c.length)).toBe(20);
+
+    const drawn = new Set();
+    const height = await page.evaluate(() => document.body.scrollHeight);
+    for (let y = 0; y < height; y += 450) { // less than a screen minus a view: each view is once wholly in sight
+      await page.evaluate((top) => window.scrollTo(0, top), y);
+      await settle(page, 300);
+      for (const { index, handle } of await viewsInSight(page, '.wall-tile')) {
+        if (drawn.has(index)) continue;
+        await expectDrawn(page, handle, `tile ${index + 1} at scroll ${y}`);
+        drawn.add(index);
+      }
+      expect(await page.$$eval('.wall-tile .blocking-message', (m) => m.length), `paused or lost views at scroll ${y}`).toBe(0);
+    }
+    expect([...drawn].sort((a, b) => a - b)).toEqual([...Array(20).keys()]);
+
+    // back to the top: the first tiles gave their contexts up on the way down and draw again
+    await page.evaluate(() => window.scrollTo(0, 0));
+    await settle(page, 300);
+    const top = await viewsInSight(page, '.wall-tile');
+    expect(top.length).toBeGreaterThan(0);
+    for (const { index, handle } of top) await expectDrawn(page, handle, `tile ${index + 1} back at the top`);
+
+    const gl = await page.evaluate(() => window.__gl);
+    expect(gl.lost).toBeGreaterThan(0); // the budget really was used: contexts were given up...
+    expect(gl.restored).toBeGreaterThan(0); // ...and taken back
+    expect(gl.most).toBeLessThanOrEqual(limit);
+    expect(await page.evaluate(() => window.__shadingLabGl.peak)).toBeLessThanOrEqual(limit);
+    expect(page.glWarnings).toEqual([]);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  }, 240_000);
+});
+
+describe('embeds in same-origin frames share one context budget', () => {
+  it('a gallery with a budget of 3 draws every 3-D preview it scrolls past, with at most 3 contexts live', async () => {
+    const LIMIT = 3; // seeded in the top window before any frame loads: the frames must find and use it
+    const page = await openCounted('gallery.html', {
+      beforeLoad: (p) => p.evaluateOnNewDocument((limit) => {
+        if (window === window.top) window.__shadingLabGl = { limit, views: [], clock: 0, peak: 0 };
+      }, LIMIT),
+    });
+    const drawn = new Set();
+    const height = await page.evaluate(() => document.body.scrollHeight);
+    for (let y = 0; y < height; y += 400) {
+      await page.evaluate((top) => window.scrollTo(0, top), y);
+      await settle(page, 300);
+      for (const card of await page.$$('.gallery-card')) {
+        const name = await card.evaluate((c) => c.dataset.widget);
+        const iframe = await card.$('iframe');
+        if (drawn.has(name) || !iframe) continue;
+        const frame = await iframe.contentFrame();
+        await frame.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 1, { timeout: 30_000 });
+        const canvas = await frame.$('.viewport > canvas');
+        if (!canvas) continue; // a 2-D widget
+        const frameTop = await iframe.evaluate((f) => f.getBoundingClientRect().top);
+        const { top, height: h } = await canvas.evaluate((c) => c.getBoundingClientRect().toJSON());
+        const inSight = frameTop + top >= 0 && frameTop + top + h <= (await page.evaluate(() => innerHeight));
+        if (!inSight) continue;
+        await expectDrawn(page, canvas, `${name} preview at scroll ${y}`);
+        drawn.add(name);
+      }
+    }
+    const threeD = ['fresnel-zones', 'media', 'surfaces', 'brdf-lobe', 'ndf-explorer', 'visibility-explorer', 'energy'];
+    expect([...drawn].sort()).toEqual([...threeD].sort());
+
+    // back to the first 3-D preview, which gave its context up on the way down: drawn again
+    await page.$eval('[data-widget="fresnel-zones"] .gallery-preview', (el) => el.scrollIntoView());
+    await settle(page, 300);
+    const frame = await (await page.$('[data-widget="fresnel-zones"] iframe')).contentFrame();
+    await expectDrawn(page, await frame.$('.viewport > canvas'), 'fresnel-zones preview back in sight');
+
+    const gl = await page.evaluate(() => window.__gl);
+    expect(gl.lost).toBeGreaterThan(0);
+    expect(gl.restored).toBeGreaterThan(0);
+    expect(gl.most).toBeLessThanOrEqual(LIMIT);
+    expect(await page.evaluate(() => window.__shadingLabGl.peak)).toBeLessThanOrEqual(LIMIT);
+    expect(page.glWarnings).toEqual([]);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  }, 240_000);
+
+  it('a frame that is removed gives its slots back', async () => {
+    const page = await open(browser, 'index.html');
+    const budget = () => page.evaluate(() => ({ views: window.__shadingLabGl?.views.length, held: window.__shadingLabGl?.views.filter((v) => v.holds).length }));
+    await page.evaluate((src) => {
+      document.body.replaceChildren(...['a', 'b'].map((id) => Object.assign(document.createElement('iframe'), { id, src, style: 'width: 900px; height: 400px' })));
+    }, new URL('embed.html?w=ndf-explorer', baseUrl()).href);
+    for (const id of ['a', 'b']) {
+      const frame = await (await page.$(`#${id}`)).contentFrame();
+      await frame.waitForFunction(() => globalThis.__shadingLab?.widgets?.['ndf-explorer'], { timeout: 30_000 });
+    }
+    expect(await budget()).toEqual({ views: 2, held: 2 });
+    await page.$eval('#a', (f) => f.remove());
+    await page.waitForFunction(() => window.__shadingLabGl.views.length === 1, { timeout: 5000 });
+    expect(await budget()).toEqual({ views: 1, held: 1 });
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+});
