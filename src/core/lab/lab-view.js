@@ -24,8 +24,9 @@ const BUILT_IN = { studio: () => 'studio', furnace: () => FURNACE, sky: () => sk
  * frame({ lab, environment, again }) runs in each drawn frame and returns the panels to show: [{ image:
  * 'approx' | 'reference' | 'error', slot, caption }]. environment(key, pixels?) gives the maps of a built-in
  * environment or of pixels (a file) under `key`; again() asks for another frame (a converging reference).
+ * onReset(): the GPU content is gone (the context was given up): the widget must render everything again.
  */
-export function createLabView(container, { label, resolution, slots = 1, frame }) {
+export function createLabView(container, { label, resolution, slots = 1, frame, onReset }) {
   const captions = document.createElement('div');
   captions.className = 'lab-captions';
   let lab = null;
@@ -79,7 +80,16 @@ export function createLabView(container, { label, resolution, slots = 1, frame }
     if (again) viewport.invalidate();
   };
 
-  const viewport = createViewport(container, { draw, label });
+  // everything on the GPU went with the context: rebuilt by the next draw, from the state
+  const onContextLost = () => {
+    lab?.dispose();
+    dfg?.dispose();
+    environments.forEach((e) => e.maps.dispose());
+    environments.clear();
+    [lab, dfg] = [null, null];
+    onReset?.();
+  };
+  const viewport = createViewport(container, { draw, label, onContextLost });
   if (viewport) {
     viewport.holder.classList.add('lab-view');
     viewport.holder.append(captions);

@@ -102,7 +102,8 @@ export function createLightingModels(container, initialState = {}, { onStateChan
     shell.describe(`Lighting models: a sphere (${st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material}, roughness α ${st.alpha}) under a sky with a sun, by the reference and four illumination models. ${samples < Number(st.refSamples) ? 'The reference is still converging.' : `Relative RMS errors: ${results.map((r) => `${r.name} ${fmt(r.relative * 100)} %`).join(', ')}.`}`, view.canvas);
   };
 
-  const view = createLabView(shell.view, { label: 'Lighting models', resolution: 160, slots: MODELS.length, frame });
+  const onReset = () => ([approxKey, refKey] = ['', '']);
+  const view = createLabView(shell.view, { label: 'Lighting models', resolution: 160, slots: MODELS.length, frame, onReset });
   view.setAspect(MODELS.length + 1);
   shell.view.append(table);
   const onChanged = () => view.setDisplay({ exposure: shell.state.exposure, errorScale: shell.state.errorScale });

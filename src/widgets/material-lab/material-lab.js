@@ -140,7 +140,8 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
     shell.describe(`Material lab. A sphere (${st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material}, roughness α ${st.alpha}) lit by ${methodText(st, lights)}; beside it the Monte Carlo reference (${stats.target} samples per pixel) and the error image. ${errorWords}`, view.canvas);
   };
 
-  const view = createLabView(shell.view, { label: 'Material lab', resolution: 192, frame });
+  const onReset = () => ([approxKey, refKey] = ['', '']);
+  const view = createLabView(shell.view, { label: 'Material lab', resolution: 192, frame, onReset });
   view.setAspect(3);
   shell.view.append(readout);
 
