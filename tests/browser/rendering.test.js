@@ -2,7 +2,8 @@
 // talk's definitions (c_light, the white furnace), importance sampling converging on the reference, and
 // environment files checked before they are used.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { getState, launchBrowser, open, settle, shot, widget, withPixels } from './helpers.js';
+import { baseUrl, getState, launchBrowser, open, settle, shot, widget, withPixels } from './helpers.js';
+import { openPage } from './harness.js';
 import { linearToSrgb, srgbToLinear } from '../../src/math/color.js';
 
 const EXTENT = 1.1; // the lab's view half width (src/core/lab/lab-renderer.js)
@@ -110,6 +111,30 @@ describe('material lab', () => {
     const centre = await errorOf('centre');
     console.log(`sphere light (15°, silver, α 0.1): relative RMS error, representative point ${representative.toFixed(4)}, punctual at the centre ${centre.toFixed(4)}`);
     expect(representative).toBeLessThan(centre * 0.7); // measured 0.34 against 0.62: better, far from exact (the energy factor is rough)
+    await page.close();
+  });
+
+  it('gives its context up to the other lab on a budget of one, and takes it back with the picture rebuilt', async () => {
+    const page = await openPage(browser, baseUrl(), 'rendering.html?lab.env=0&lab.punctual=1&lab.lightTheta=0&lab.cLight=0.5&lab.layers=diffuse&lab.diffuse=ffffff&lab.refSamples=128&models.refSamples=128', {
+      width: 1200, height: 900, beforeLoad: (p) => p.evaluateOnNewDocument(() => (window.__shadingLabGl = { limit: 1, views: [], clock: 0, peak: 0 })),
+    });
+    await widget(page, 'lab');
+    await converged(page);
+    await page.$eval('.widget-material-lab canvas', (c) => c.addEventListener('webglcontextlost', () => (window.__labLost = (window.__labLost ?? 0) + 1)));
+    const done = (key) => page.waitForFunction((k) => {
+      const p = globalThis.__shadingLab.widgets[k].getProgress();
+      return p.frame >= p.target;
+    }, { timeout: 90_000 }, key);
+    await page.$eval('[data-prefix="models"]', (el) => el.scrollIntoView());
+    await done('models');
+    await page.evaluate(() => window.scrollTo(0, 0));
+    await settle(page, 500);
+    await converged(page);
+    const [centre] = await radianceAt(page, 0, texelCentre([[0, 0]]));
+    for (const c of centre) expect(Math.abs(c - 0.5)).toBeLessThanOrEqual(step(0.5) + 1e-3);
+    expect(await page.evaluate(() => window.__labLost)).toBe(1); // it really gave its context up
+    expect(await page.evaluate(() => window.__shadingLabGl.peak)).toBe(1);
+    expect(page.errors).toEqual([]);
     await page.close();
   });
 
