@@ -1,5 +1,5 @@
-// Directional albedo by importance sampling, mirrors albedoGGX of src/math/integrate.js: the same
-// Hammersley points, the same GGX normal sampling, the same estimator V nl (v·m)/(n·m).
+// The reflectance equation by importance sampling, mirrors src/math/integrate.js: the same Hammersley points,
+// the same GGX normal sampling, the same estimator V nl (v·m)/(n·m).
 #include "visibility.glsl"
 
 vec2 hammersley(int i, int n) {
@@ -21,21 +21,6 @@ vec3 sampleGGXNormal(vec2 u, float alpha) {
   return vec3(s * cos(phi), s * sin(phi), c);
 }
 
-float albedoGGX(float mu, float alpha, int n) {
-  float m0 = clamp(mu, 1e-6, 1.0);
-  vec3 v = vec3(sqrt(max(sin2FromCos(m0), 0.0)), 0.0, m0);
-  float sum = 0.0;
-  for (int i = 0; i < n; i++) {
-    vec3 m = sampleGGXNormal(hammersley(i, n), alpha);
-    float vm = dot(v, m);
-    if (vm <= 0.0) continue;
-    vec3 l = 2.0 * vm * m - v;
-    if (l.z <= 0.0) continue;
-    sum += visibilitySmithGGXCorrelated(l.z, v.z, alpha) * l.z * vm / m.z;
-  }
-  return min(sum / float(n), 1.0);
-}
-
 // The split-sum DFG term: (scale, bias) with ∫ f (n·l) dω = F0·scale + bias, mirrors dfgSplitSum.
 vec2 dfgSplitSum(float mu, float alpha, int n) {
   float m0 = clamp(mu, 1e-6, 1.0);
@@ -53,6 +38,12 @@ vec2 dfgSplitSum(float mu, float alpha, int n) {
   }
   sum /= float(n);
   return sum / max(sum.x + sum.y, 1.0);
+}
+
+// Directional albedo with F = 1, mirrors albedoGGX: the split sum's scale + bias.
+float albedoGGX(float mu, float alpha, int n) {
+  vec2 ab = dfgSplitSum(mu, alpha, n);
+  return ab.x + ab.y;
 }
 
 vec3 sampleCosine(vec2 u) {

@@ -74,21 +74,12 @@ export function reflectanceImportanceGGX(f, v, alpha, n = 1024) {
 }
 
 /**
- * Directional albedo with GGX, height-correlated Smith and F = 1. With the GGX pdf the D cancels:
- * f nl / pdf = (D V / 4) nl · 4 (v·m) / (D (n·m)) = V nl (v·m) / (n·m).
+ * Directional albedo with GGX, height-correlated Smith and F = 1: the split sum's scale + bias (with F = 1 the
+ * Fresnel split adds back up). With the GGX pdf the D cancels: f nl / pdf = V nl (v·m) / (n·m).
  */
 export function albedoGGX(mu, alpha, n = 1024) {
-  const v = directionFromCos(Math.min(Math.max(mu, 1e-6), 1));
-  let sum = 0;
-  for (let i = 0; i < n; i++) {
-    const m = sampleGGXNormal(...hammersley(i, n), alpha);
-    const vm = v[0] * m[0] + v[2] * m[2];
-    if (vm <= 0) continue;
-    const l = reflect(v, m);
-    if (l[2] <= 0) continue;
-    sum += (visibilitySmithGGXCorrelated(l[2], v[2], alpha) * l[2] * vm) / m[2];
-  }
-  return Math.min(sum / n, 1);
+  const [scale, bias] = dfgSplitSum(mu, alpha, n);
+  return scale + bias;
 }
 
 /**

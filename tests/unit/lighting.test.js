@@ -2,7 +2,7 @@
 // densities, and the sphere light (its c_light and its representative point) against quadrature.
 import { describe, expect, it } from 'vitest';
 import { microfacetBRDF } from '../../src/math/brdf.js';
-import { dfgSplitSum, directionFromCos, hemisphereIntegral, sampleCone, sampleCosine, albedoGGX } from '../../src/math/integrate.js';
+import { dfgSplitSum, directionFromCos, hemisphereIntegral, sampleCone, sampleCosine } from '../../src/math/integrate.js';
 import { sphereLightCLight, sphereLightNormalization, sphereLightRepresentativeDir } from '../../src/math/lighting.js';
 import { diffuseLambert } from '../../src/math/diffuse.js';
 
@@ -18,11 +18,7 @@ describe('split-sum DFG term', () => {
     expect(bias).toBeCloseTo(withF0(0), 2);
     expect(scale + bias).toBeCloseTo(withF0(1), 2);
   });
-  it('adds up to the directional albedo, and gives F0·scale + bias = F0 for a mirror seen head on', () => {
-    for (const [mu, alpha] of [[0.7, 0.2], [0.1, 0.6]]) {
-      const [s, b] = dfgSplitSum(mu, alpha, 512);
-      expect(s + b).toBeCloseTo(albedoGGX(mu, alpha, 512), 12);
-    }
+  it('gives F0·scale + bias = F0 for a mirror seen head on', () => {
     const [s, b] = dfgSplitSum(1, 1e-4, 64);
     expect(s).toBeCloseTo(1, 4);
     expect(b).toBeCloseTo(0, 6);
