@@ -69,7 +69,7 @@ function renderIbl(ibl) {
       xLabel: 'GPU time of the pass (ms)',
       yLabel: 'relative RMS error',
       x: { min: xs[0] * 0.8, max: xs[xs.length - 1] * 1.2, log: true },
-      y: { min: 0.005, max: 4, log: true },
+      y: { min: 0.005, max: 10 ** Math.ceil(Math.log10(Math.max(...rows.map((r) => r.relative)) * 1.5)), log: true },
       series: methods.map((m, i) => ({ label: m, stroke: SERIES_COLORS[i % SERIES_COLORS.length], width: m === 'importance' ? 1.5 : 0, points: true, spanGaps: true })),
       data: [xs, ...methods.map((m) => xs.map((x) => rows.find((r) => r.method === m && r.ms === x)?.relative ?? null))],
       filename: `ibl-${environment}-${material}`,

@@ -42,7 +42,7 @@ describe('npm run bench', () => {
     const report = JSON.parse(readFileSync(out, 'utf8'));
     expect(report.quick).toBe(true);
     checkShape(report);
-  });
+  }, 300_000);
   it('the committed results the performance page plots have the same shape', () => {
     checkShape(JSON.parse(readFileSync(join(ROOT, 'bench/results/latest.json'), 'utf8')));
   });

@@ -361,7 +361,7 @@ describe('embeds in same-origin frames share one context budget', () => {
         drawn.add(name);
       }
     }
-    const threeD = ['fresnel-zones', 'media', 'surfaces', 'brdf-lobe', 'ndf-explorer', 'visibility-explorer', 'energy'];
+    const threeD = ['fresnel-zones', 'media', 'surfaces', 'brdf-lobe', 'ndf-explorer', 'visibility-explorer', 'energy', 'diffuse-explorer', 'material-lab', 'lighting-models'];
     expect([...drawn].sort()).toEqual([...threeD].sort());
 
     // back to the first 3-D preview, which gave its context up on the way down: drawn again
