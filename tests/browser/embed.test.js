@@ -293,6 +293,14 @@ async function expectDrawn(page, handle, what) {
 }
 
 describe('twenty 3-D widgets on one page (wall.html)', () => {
+  // The wall makes and gives up dozens of WebGL contexts. Later tests get a fresh Chromium: in the same one, right
+  // after the wall, a gallery preview with a live context was seen (in 2 of 5 full runs) never to draw; the cause,
+  // in the app or in Chromium's GPU process, is not found yet.
+  afterAll(async () => {
+    await browser?.close();
+    browser = await launchBrowser();
+  });
+
   it('draws every widget when it is in view, never holds more contexts than the budget, and loses none unplanned', async () => {
     const page = await openCounted('wall.html');
     await page.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 20, { timeout: 120_000, polling: 500 });
