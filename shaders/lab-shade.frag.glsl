@@ -88,19 +88,22 @@ vec3 envRadiance(vec3 dWorld, float lod) {
   return L;
 }
 
+#ifdef REFERENCE
 // Per-pixel offset of the sample pattern (a hash), so neighbouring pixels do not share one pattern.
 vec2 pixelHash(vec2 p) {
   vec3 q = fract(vec3(p.xyx) * vec3(0.1031, 0.1030, 0.0973));
   q += dot(q, q.yzx + 33.33);
   return fract((q.xx + q.yz) * q.zy);
 }
+#endif
 
+#ifdef ENV_IMPORTANCE
 // The reflectance equation against the environment as a renderer would sample it: the specular lobe by GGX
 // importance sampling (pdf D(m)(n·m)/(4 v·m)), the diffuse by cosine sampling (pdf (n·l)/pi), n samples each.
-vec3 environmentSampled(mat3 toWorld, vec3 v, int n, vec2 shift) {
+vec3 environmentSampled(mat3 toWorld, vec3 v, int n) {
   vec3 sum = vec3(0.0);
   for (int i = 0; i < n; i++) {
-    vec2 u = fract(hammersley(i, n) + shift);
+    vec2 u = hammersley(i, n); // the same pattern on every pixel, as a renderer would use it
     vec3 m = sampleGGXNormal(u, uAlpha);
     float vm = dot(v, m);
     vec3 l = 2.0 * vm * m - v;
@@ -113,6 +116,7 @@ vec3 environmentSampled(mat3 toWorld, vec3 v, int n, vec2 shift) {
   }
   return sum / float(n);
 }
+#endif
 
 #ifdef REFERENCE
 // Index of the first entry >= u in row `row` of a CDF texture (binary search).
@@ -176,6 +180,7 @@ vec3 environmentReference(mat3 toWorld, mat3 toLocal, vec3 v, int n, vec2 shift)
 }
 #endif
 
+#if defined(REFERENCE) && defined(LIGHT_SPHERE)
 // The sphere light by uniform samples of its cone: pdf 1/(2 pi (1 - cos theta_s)).
 vec3 sphereSampled(mat3 toLocal, vec3 v, int n, vec2 shift) {
   float cosMax = sqrt(max(1.0 - uSphereSin * uSphereSin, 0.0));
@@ -187,7 +192,9 @@ vec3 sphereSampled(mat3 toLocal, vec3 v, int n, vec2 shift) {
   }
   return sum * uSphereRadiance * (2.0 * PI * (1.0 - cosMax)) / float(n);
 }
+#endif
 
+#ifdef ENV_SPLIT_SUM
 vec3 prefiltered(vec3 r, float alpha) {
   float level = sqrt(alpha) * uPrefilterLevels; // layers at perceptual roughness k/levels; level 0 is the map
   float k = min(floor(level), uPrefilterLevels - 1.0);
@@ -197,7 +204,11 @@ vec3 prefiltered(vec3 r, float alpha) {
   return mix(lo, hi, t);
 }
 
+#endif
+
+#if defined(ENV_SPLIT_SUM) || defined(LIGHT_AMBIENT)
 vec2 dfg(float nv) { return texture(uDfg, vec2(nv, sqrt(uAlpha))).rg; }
+#endif
 
 void main() {
   vec2 p = (2.0 * gl_FragCoord.xy / uSize - 1.0) * uExtent;
@@ -214,8 +225,6 @@ void main() {
   vec3 Lo = vec3(0.0);
 #ifdef REFERENCE
   vec2 shift = fract(uJitter + pixelHash(gl_FragCoord.xy));
-#else
-  vec2 shift = vec2(0.0);
 #endif
 
 #ifdef LIGHT_PUNCTUAL
@@ -240,7 +249,7 @@ void main() {
 #if defined(REFERENCE)
   Lo += environmentReference(toWorld, toLocal, v, uSamples, shift);
 #elif defined(ENV_IMPORTANCE)
-  Lo += environmentSampled(toWorld, v, uSamples, shift);
+  Lo += environmentSampled(toWorld, v, uSamples);
 #else
   vec3 rWorld = reflect(-vec3(0.0, 0.0, 1.0), n);
   vec3 irradiance = vec3(0.0); // mean radiance seen by a white Lambertian surface facing n

@@ -3,6 +3,7 @@
 import { METALS, NON_METALS, materialByKey, isMetal } from '../../math/materials.js';
 import { srgbToLinear } from '../../math/color.js';
 import { lightDirFromAngles } from '../light-control.js';
+import { hexToRgb } from '../palettes.js';
 
 export const MATERIAL_OPTIONS = {
   custom: 'Custom (F0 and diffuse below)',
@@ -17,14 +18,13 @@ export const MATERIAL_FIELDS = {
   alpha: { type: 'number', min: 0, max: 1, step: 0.005, default: 0.25, label: 'Roughness α' },
 };
 
-const hexToLinear = (hex) => [1, 3, 5].map((i) => srgbToLinear(parseInt(hex.slice(i, i + 2), 16) / 255));
 const DEG = Math.PI / 180;
 
 /** F0 and diffuse colour (linear) of the chosen material: metals have no diffuse term (the talk). */
 export function materialOf(state) {
   const table = state.material !== 'custom' ? materialByKey(state.material) : null;
   const f0 = table ? table.linear : [state.f0, state.f0, state.f0];
-  const diffuse = table && isMetal(state.material) ? [0, 0, 0] : hexToLinear(state.diffuse);
+  const diffuse = table && isMetal(state.material) ? [0, 0, 0] : hexToRgb(state.diffuse).map(srgbToLinear);
   return { f0, diffuse, alpha: state.alpha, sigma: (state.sigma ?? 0) * DEG };
 }
 
