@@ -5,6 +5,9 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { baseUrl, getState, launchBrowser, open, settle, shot, widget, withPixels } from './helpers.js';
 import { openPage } from './harness.js';
 import { linearToSrgb, srgbToLinear } from '../../src/math/color.js';
+import { diffuseOrenNayar } from '../../src/math/diffuse.js';
+import { lightDirFromAngles } from '../../src/core/light-control.js';
+import { hexToRgb } from '../../src/core/palettes.js';
 
 const EXTENT = 1.1; // the lab's view half width (src/core/lab/lab-renderer.js)
 const RES = 192; // the lab's image size (src/widgets/material-lab/material-lab.js)
@@ -45,6 +48,25 @@ async function radianceAt(page, panel, points) {
     return image.data.slice((py * image.width + px) * 4, (py * image.width + px) * 4 + 3);
   })`);
   return bytes.map((rgb) => Array.from(Object.values(rgb)).map((b) => srgbToLinear(b / 255)));
+}
+
+/** The lab's float images ('approx' or 'reference') at texels [i, j] (i right, j up, from the bottom left). */
+const texels = (page, which, list) => page.evaluate((which, list, res) => {
+  const image = globalThis.__shadingLab.widgets.lab.read(which);
+  return list.map(([i, j]) => Array.from(image.slice((j * res + i) * 4, (j * res + i) * 4 + 3)));
+}, which, list, RES);
+
+/** The sphere's normal at texel [i, j] (the lab shades each texel with the normal at its centre). */
+function normalAt([i, j]) {
+  const [x, y] = [i, j].map((k) => ((2 * (k + 0.5)) / RES - 1) * EXTENT);
+  return [x, y, Math.sqrt(1 - x * x - y * y)];
+}
+
+const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+/** cos of the azimuth between l and v about n: their projections on the tangent plane. */
+function cosPhiAbout(n, l, v) {
+  const [lt, vt] = [l, v].map((d) => d.map((c, k) => c - dot(d, n) * n[k]));
+  return dot(lt, vt) / Math.sqrt(dot(lt, lt) * dot(vt, vt));
 }
 
 // one 8-bit step of sRGB around a linear value, the resolution of a canvas read-back
@@ -111,6 +133,34 @@ describe('material lab', () => {
     const centre = await errorOf('centre');
     console.log(`sphere light (15°, silver, α 0.1): relative RMS error, representative point ${representative.toFixed(4)}, punctual at the centre ${centre.toFixed(4)}`);
     expect(representative).toBeLessThan(centre * 0.7); // measured 0.34 against 0.62: better, far from exact (the energy factor is rough)
+    await page.close();
+  });
+
+  it('Oren-Nayar lit by a punctual light matches diffuseOrenNayar of src/math with the colour passed in (ρ², not ρ × the term at ρ = 1)', async () => {
+    const [theta, phi, sigmaDeg, hex] = [60, 0, 60, '#959595']; // linear ρ = 0.30
+    const page = await openLab(`lab.env=0&lab.punctual=1&lab.lightTheta=${theta}&lab.lightPhi=${phi}&lab.cLight=1&lab.layers=diffuse&lab.diffuseModel=oren-nayar&lab.sigma=${sigmaDeg}&lab.diffuse=${hex.slice(1)}&lab.refSamples=128`);
+    const rho = hexToRgb(hex).map(srgbToLinear);
+    const l = lightDirFromAngles(theta, phi);
+    const v = [0, 0, 1];
+    const sigma = (sigmaDeg * Math.PI) / 180;
+    const spots = [[110, 96], [140, 96], [60, 96], [96, 150], [120, 40], [170, 110], [150, 150], [175, 96]]; // all lit
+    const got = await texels(page, 'approx', spots);
+    let worst = 0;
+    let scaledOff = Infinity;
+    spots.forEach((spot, k) => {
+      const n = normalAt(spot);
+      const [nl, nv, cp] = [dot(n, l), dot(n, v), cosPhiAbout(n, l, v)];
+      const radiance = (f) => Math.PI * f * Math.max(nl, 0);
+      rho.forEach((r, c) => {
+        const want = radiance(diffuseOrenNayar(nl, nv, cp, sigma, r));
+        worst = Math.max(worst, Math.abs(got[k][c] - want) / want);
+        scaledOff = Math.min(scaledOff, radiance(r * diffuseOrenNayar(nl, nv, cp, sigma, 1)) / want - 1);
+      });
+    });
+    console.log(`Oren-Nayar σ 60°, ρ ${rho[0].toFixed(3)}: worst relative difference from the JS term ${worst.toExponential(2)}; ρ × the term at ρ = 1 is at least ${(scaledOff * 100).toFixed(1)} % brighter at these pixels`);
+    expect(worst).toBeLessThan(2e-3); // half-float image (2^-11) and float32 shading
+    expect(scaledOff).toBeGreaterThan(0.05); // the old form would fail by far more than the tolerance
+    expect(page.errors).toEqual([]);
     await page.close();
   });
 
