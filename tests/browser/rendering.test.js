@@ -8,6 +8,9 @@ import { linearToSrgb, srgbToLinear } from '../../src/math/color.js';
 import { diffuseOrenNayar } from '../../src/math/diffuse.js';
 import { lightDirFromAngles } from '../../src/core/light-control.js';
 import { hexToRgb } from '../../src/core/palettes.js';
+import { fresnelSchlick } from '../../src/math/fresnel.js';
+import { dfgSplitSum } from '../../src/math/integrate.js';
+import { dfgTableData } from '../../src/core/lab/environment-maps.js';
 
 const EXTENT = 1.1; // the lab's view half width (src/core/lab/lab-renderer.js)
 const RES = 192; // the lab's image size (src/widgets/material-lab/material-lab.js)
@@ -55,6 +58,18 @@ const texels = (page, which, list) => page.evaluate((which, list, res) => {
   const image = globalThis.__shadingLab.widgets.lab.read(which);
   return list.map(([i, j]) => Array.from(image.slice((j * res + i) * 4, (j * res + i) * 4 + 3)));
 }, which, list, RES);
+
+/** Bilinear lookup of a DFG table (texel centres at (k + 0.5)/size, clamped at the edges), as the GPU samples it. */
+function dfgLookup({ data, size }, nv, alpha) {
+  const at = (x) => {
+    const f = Math.min(Math.max(x * size - 0.5, 0), size - 1);
+    const k = Math.min(Math.floor(f), size - 2);
+    return [k, f - k];
+  };
+  const [[i, fx], [j, fy]] = [at(nv), at(Math.sqrt(alpha))];
+  const texel = (a, b, c) => data[((j + b) * size + i + a) * 4 + c];
+  return [0, 1].map((c) => (1 - fy) * ((1 - fx) * texel(0, 0, c) + fx * texel(1, 0, c)) + fy * ((1 - fx) * texel(0, 1, c) + fx * texel(1, 1, c)));
+}
 
 /** The sphere's normal at texel [i, j] (the lab shades each texel with the normal at its centre). */
 function normalAt([i, j]) {
@@ -160,6 +175,46 @@ describe('material lab', () => {
     console.log(`Oren-Nayar σ 60°, ρ ${rho[0].toFixed(3)}: worst relative difference from the JS term ${worst.toExponential(2)}; ρ × the term at ρ = 1 is at least ${(scaledOff * 100).toFixed(1)} % brighter at these pixels`);
     expect(worst).toBeLessThan(2e-3); // half-float image (2^-11) and float32 shading
     expect(scaledOff).toBeGreaterThan(0.05); // the old form would fail by far more than the tolerance
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('in the white furnace each approximation follows the chosen F, D and V: Schlick or 1 for the mirror, the DFG table of the chosen D and V (A + B for F = 1) for the split sum and ambient light, against dfgSplitSum of src/math', async () => {
+    const alpha = 0.3;
+    const page = await openLab(`lab.environment=furnace&lab.layers=specular&lab.f0=0.04&lab.alpha=${alpha}&lab.envMethod=mirror&lab.refSamples=128`);
+    const spots = [[110, 96], [150, 96], [96, 170], [40, 60], [180, 96]];
+    const nvs = spots.map((s) => normalAt(s)[2]); // v = z: n·v is the normal's z
+    const cases = [
+      { name: 'mirror, Schlick', state: {}, want: (nv) => fresnelSchlick(0.04, nv) },
+      { name: 'mirror, F = 1', state: { fresnel: 'one' }, want: () => 1 },
+      { name: 'split sum, F = 1, GGX + height-correlated Smith', state: { envMethod: 'split-sum' }, terms: { ndf: 'ggx', visibility: 'smithGGXCorrelated' }, f0: null },
+      { name: 'split sum, F = 1, Beckmann + Kelemen', state: { ndf: 'beckmann', visibility: 'kelemen' }, terms: { ndf: 'beckmann', visibility: 'kelemen' }, f0: null },
+      { name: 'split sum, Schlick, Beckmann + Cook-Torrance', state: { fresnel: 'schlick', visibility: 'cookTorrance' }, terms: { ndf: 'beckmann', visibility: 'cookTorrance' }, f0: 0.04 },
+      { name: 'ambient, Schlick, Beckmann + Cook-Torrance', state: { env: false, ambient: true, ambientLevel: 1 }, terms: { ndf: 'beckmann', visibility: 'cookTorrance' }, f0: 0.04 },
+      { name: 'ambient, F = 1, GGX + Schlick-GGX', state: { fresnel: 'one', ndf: 'ggx', visibility: 'schlickGGX' }, terms: { ndf: 'ggx', visibility: 'schlickGGX' }, f0: null },
+    ];
+    const albedo = ([a, b], f0) => (f0 === null ? a + b : f0 * a + b);
+    for (const c of cases) {
+      await page.evaluate((s) => globalThis.__shadingLab.widgets.lab.update(s), c.state);
+      await settle(page, 300);
+      await converged(page);
+      const got = await texels(page, 'approx', spots);
+      nvs.forEach((nv, k) => {
+        for (const x of got[k]) {
+          if (c.want) {
+            expect(Math.abs(x - c.want(nv))).toBeLessThan(1e-3 * c.want(nv));
+            continue;
+          }
+          // the table the lab samples, bilinear between its texel centres; and the float64 value it tabulates
+          const table = albedo(dfgLookup(dfgTableData(c.terms), nv, alpha), c.f0);
+          const exact = albedo(dfgSplitSum(nv, alpha, c.terms), c.f0);
+          expect(Math.abs(x - table)).toBeLessThan(2e-3 * table);
+          expect(Math.abs(x - exact)).toBeLessThan(1e-2 * exact);
+        }
+      });
+      const exactAt = (k) => (c.want ? c.want(nvs[k]) : albedo(dfgSplitSum(nvs[k], alpha, c.terms), c.f0));
+      console.log(`furnace, α ${alpha}, ${c.name}: n·v ${nvs.map((x) => x.toFixed(3)).join(', ')} → lab ${got.map((g) => g[0].toFixed(4)).join(', ')}, expected ${nvs.map((_, k) => exactAt(k).toFixed(4)).join(', ')}`);
+    }
     expect(page.errors).toEqual([]);
     await page.close();
   });

@@ -61,11 +61,13 @@ function specularNotes({ terms, lights, methods }) {
  */
 export function diffuseUnderSurround({ terms, lights, methods }) {
   const byIrradiance = [];
-  if (lights.env && (methods.env === 'split-sum' || methods.env === 'mirror')) byIrradiance.push(`the environment (${methods.env})`);
+  if (lights.env && (methods.env === 'split-sum' || methods.env === 'mirror')) {
+    byIrradiance.push(`the environment (${methods.env === 'mirror' ? 'mirror' : 'split sum'})`);
+  }
   if (lights.ambient) byIrradiance.push('ambient light');
   if (!byIrradiance.length) return null;
   const where = byIrradiance.join(' and ');
-  if (terms.diffuse === 'lambert') return `Diffuse under ${where}: irradiance × c_diff/π, exact for Lambert.`;
+  if (terms.diffuse === 'lambert') return `Diffuse under ${where}: irradiance × c_diff/π, Lambert’s exact answer (irradiance summed from the map).`;
   return `Diffuse under ${where}: these methods have no form for ${LAB_TERMS.diffuse[terms.diffuse]}, so it is approximated by Lambert (irradiance × c_diff/π) while the reference uses ${LAB_TERMS.diffuse[terms.diffuse]}: that substitution is part of the error image.`;
 }
 
