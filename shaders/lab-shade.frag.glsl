@@ -76,7 +76,8 @@ vec3 diffuseBRDF(vec3 l, vec3 v) {
               diffuseOrenNayar(l.z, v.z, cp, uSigma, c.b));
 #elif defined(DIFFUSE_OREN_NAYAR_QUALITATIVE)
   float cp = cosPhiBetween(l, v);
-  return vec3(diffuseOrenNayarQualitative(l.z, v.z, cp, uSigma, c.r), diffuseOrenNayarQualitative(l.z, v.z, cp, uSigma, c.g),
+  return vec3(diffuseOrenNayarQualitative(l.z, v.z, cp, uSigma, c.r),
+              diffuseOrenNayarQualitative(l.z, v.z, cp, uSigma, c.g),
               diffuseOrenNayarQualitative(l.z, v.z, cp, uSigma, c.b));
 #else
   return vec3(diffuseLambert(c.r), diffuseLambert(c.g), diffuseLambert(c.b));
@@ -155,8 +156,9 @@ vec3 prefiltered(vec3 r, float alpha) {
   float level = sqrt(alpha) * uPrefilterLevels;
   float k = min(floor(level), uPrefilterLevels - 1.0);
   float t = level - k;
-  vec3 lo = k < 0.5 ? textureLod(uEnv, equirectUv(r), 0.0).rgb : texture(uPrefiltered, vec3(equirectUv(r), k - 1.0)).rgb;
-  vec3 hi = texture(uPrefiltered, vec3(equirectUv(r), k)).rgb;
+  vec2 uv = equirectUv(r);
+  vec3 lo = k < 0.5 ? textureLod(uEnv, uv, 0.0).rgb : texture(uPrefiltered, vec3(uv, k - 1.0)).rgb;
+  vec3 hi = texture(uPrefiltered, vec3(uv, k)).rgb;
   return uEnvIntensity * mix(lo, hi, t);
 }
 #endif
@@ -191,7 +193,9 @@ vec3 environmentLight(vec3 n, mat3 toWorld, vec3 v) {
     vec3 m = sampleLobeNormal(u, uAlpha);
     float vm = dot(v, m);
     vec3 l = 2.0 * vm * m - v;
-    if (vm > 0.0 && l.z > 0.0) sum += specularBRDF(l, v) * l.z / max(reflectedPdf(m, vm, uAlpha), 1e-30) * envMap(toWorld * l, 0.0);
+    if (vm > 0.0 && l.z > 0.0) {
+      sum += specularBRDF(l, v) * l.z / max(reflectedPdf(m, vm, uAlpha), 1e-30) * envMap(toWorld * l, 0.0);
+    }
     vec3 ld = sampleCosine(u);
     sum += diffuseBRDF(ld, v) * PI * envMap(toWorld * ld, 0.0);
   }

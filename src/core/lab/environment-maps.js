@@ -114,7 +114,8 @@ export function createEnvironmentMaps(renderer) {
     let entry = prefilteredByNdf.get(ndf);
     if (!entry) {
       const target = new THREE.WebGLArrayRenderTarget(...PREFILTER_SIZE, PREFILTER_LEVELS, {
-        type: THREE.HalfFloatType, depthBuffer: false, magFilter: THREE.LinearFilter, minFilter: THREE.LinearFilter, wrapS: THREE.RepeatWrapping,
+        type: THREE.HalfFloatType, depthBuffer: false, magFilter: THREE.LinearFilter, minFilter: THREE.LinearFilter,
+        wrapS: THREE.RepeatWrapping,
       });
       const filter = pass('env-prefilter.frag.glsl', PREFILTER_DEFINES[ndf], filterUniforms());
       filter.uniforms.uSize.value.set(...PREFILTER_SIZE);
@@ -175,7 +176,8 @@ export function createEnvironmentMaps(renderer) {
       return pmrem.texture;
     },
     dispose() {
-      [env, weighted, irradiance, sampling.marginal, sampling.conditional, sampling.pdf, copyFlat, copyCube, copyWeighted, quad.geometry].forEach((x) => x.dispose());
+      [env, weighted, irradiance, sampling.marginal, sampling.conditional, sampling.pdf].forEach((x) => x.dispose());
+      [copyFlat, copyCube, copyWeighted, quad.geometry].forEach((x) => x.dispose());
       prefilteredByNdf.forEach(({ target, filter }) => [target, filter].forEach((x) => x.dispose()));
       pmrem?.dispose();
       pmremGenerator?.dispose();

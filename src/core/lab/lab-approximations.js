@@ -8,8 +8,8 @@ export const LAB_TERMS = {
   fresnel: { schlick: 'Schlick', one: 'F = 1' },
   ndf: { ggx: 'GGX', beckmann: 'Beckmann' },
   visibility: {
-    smithGGXCorrelated: 'Smith GGX height-correlated', smithGGXSeparable: 'Smith GGX separable', schlickGGX: 'Schlick-GGX',
-    kelemen: 'Kelemen', cookTorrance: 'Cook-Torrance', implicit: 'Implicit',
+    smithGGXCorrelated: 'Smith GGX height-correlated', smithGGXSeparable: 'Smith GGX separable',
+    schlickGGX: 'Schlick-GGX', kelemen: 'Kelemen', cookTorrance: 'Cook-Torrance', implicit: 'Implicit',
   },
   diffuse: {
     lambert: 'Lambert', 'fresnel-weighted': 'Fresnel-weighted Lambert', 'ashikhmin-shirley': 'Ashikhmin-Shirley',
@@ -37,20 +37,27 @@ const fresnelWords = (terms) => (terms.F === 'one' ? 'A + B, as F = 1' : 'F0·A 
 /** The specular part of each light's method, in words: what it follows of the chosen terms. */
 function specularNotes({ terms, lights, methods }) {
   const notes = [];
-  if (lights.env && methods.env === 'split-sum') {
-    notes.push(`Split sum: the map prefiltered with the ${LAB_TERMS.ndf[terms.D]} lobe (n = v = r) times the DFG table of ${specularWords(terms)} (${fresnelWords(terms)}).`);
+  const ndf = LAB_TERMS.ndf[terms.D];
+  const env = lights.env ? methods.env : null;
+  if (env === 'split-sum') {
+    notes.push(`Split sum: the map prefiltered with the ${ndf} lobe (n = v = r) times the DFG table of ` +
+      `${specularWords(terms)} (${fresnelWords(terms)}).`);
   }
-  if (lights.env && methods.env === 'mirror') {
-    notes.push(`Mirror: ${terms.F === 'one' ? 'F = 1' : 'Schlick’s F at n·v'} times the map in the reflected direction; the roughness is ignored, which is the method’s error.`);
+  if (env === 'mirror') {
+    notes.push(`Mirror: ${terms.F === 'one' ? 'F = 1' : 'Schlick’s F at n·v'} times the map in the reflected ` +
+      'direction; the roughness is ignored, which is the method’s error.');
   }
-  if (lights.env && methods.env === 'importance') {
-    notes.push(`Importance sampling: N normals drawn from ${LAB_TERMS.ndf[terms.D]}, every term evaluated at each sample; the diffuse term by N cosine-distributed directions.`);
+  if (env === 'importance') {
+    notes.push(`Importance sampling: N normals drawn from ${ndf}, every term evaluated at each sample; the diffuse ` +
+      'term by N cosine-distributed directions.');
   }
   if (lights.ambient) {
-    notes.push(`Ambient: the directional albedo from the DFG table of ${specularWords(terms)} (${fresnelWords(terms)}).`);
+    notes.push(`Ambient: the directional albedo from the DFG table of ${specularWords(terms)} ` +
+      `(${fresnelWords(terms)}).`);
   }
   if (lights.sphere && methods.area !== 'centre' && terms.D !== 'ggx') {
-    notes.push(`Sphere light: the representative point’s energy factor (α/α′)² is Karis’s (2013) for GGX, kept for ${LAB_TERMS.ndf[terms.D]}.`);
+    notes.push(`Sphere light: the representative point’s energy factor (α/α′)² is Karis’s (2013) for GGX, ` +
+      `kept for ${ndf}.`);
   }
   return notes;
 }
@@ -67,8 +74,10 @@ export function diffuseUnderSurround({ terms, lights, methods }) {
   if (lights.ambient) byIrradiance.push('ambient light');
   if (!byIrradiance.length) return null;
   const where = byIrradiance.join(' and ');
-  if (terms.diffuse === 'lambert') return `Diffuse under ${where}: irradiance × c_diff/π, Lambert’s exact answer (irradiance summed from the map).`;
-  return `Diffuse under ${where}: these methods have no form for ${LAB_TERMS.diffuse[terms.diffuse]}, so it is approximated by Lambert (irradiance × c_diff/π) while the reference uses ${LAB_TERMS.diffuse[terms.diffuse]}: that substitution is part of the error image.`;
+  if (terms.diffuse === 'lambert') return `Diffuse under ${where}: irradiance × c_diff/π, Lambert’s exact answer.`;
+  const name = LAB_TERMS.diffuse[terms.diffuse];
+  return `Diffuse under ${where}: these methods have no form for ${name}, so it is approximated by Lambert ` +
+    `(irradiance × c_diff/π) while the reference uses ${name}: that substitution is part of the error image.`;
 }
 
 const PMREM_NOTE =
