@@ -239,7 +239,7 @@ describe('material lab', () => {
     }
     expect(page.errors).toEqual([]);
     await page.close();
-  });
+  }, 240_000); // a DFG table and a reference per case
 
   it('the split sum prefilters with the chosen NDF: under radiance 1 + d_y it shows 1 + c r_y, and c of Beckmann exceeds c of GGX as the mean of l·r over their lobes does (1-D quadrature)', async () => {
     const alpha = 0.25; // a layer of the prefiltered map: no blend between layers
@@ -282,7 +282,7 @@ describe('material lab', () => {
     });
     expect(page.errors).toEqual([]);
     await page.close();
-  });
+  }, 240_000);
 
   it('gives its context up to the other lab on a budget of one, and takes it back with the picture rebuilt', async () => {
     const page = await openPage(browser, baseUrl(), 'rendering.html?lab.env=0&lab.punctual=1&lab.lightTheta=0&lab.cLight=0.5&lab.layers=diffuse&lab.diffuse=ffffff&lab.refSamples=128&models.refSamples=128', {
