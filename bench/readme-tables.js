@@ -10,13 +10,25 @@ const esc = (s) => s.replaceAll('|', '\\|');
 const lines = [
   `Measured ${report.date.slice(0, 10)} on ${m.cpu} (${m.cores} cores), Node ${m.node}, ${m.chromium}, GPU: ${m.gpuRenderer}. ` +
     `On this software renderer the GPU columns move by up to about 30% between runs (the empty pass alone is ${g.baselineMsPerFrame.toFixed(1)} ms ` +
-    'of every frame) and the CPU column by about 15%; the errors of the term families are exact.',
+    'of every frame) and the CPU column by about 15%; the errors and differences of the term families are exact.',
   '',
 ];
+if (report.familiesMeasured) {
+  lines.push(`The term families' errors and CPU costs below were measured again on ${report.familiesMeasured.date.slice(0, 10)} ` +
+    `(\`npm run bench -- --only families\`, ${report.familiesMeasured.cpu}, shared with other work: CPU times may read high); their GPU ` +
+    'columns are from the full run.', '');
+}
+const row = (v, m) => `| ${esc(v.label)} | ${v.kind === 'reference' ? 'reference' : esc(v.againstLabel)} | ${v.kind === 'reference' ? '0' : m.maxAbs.toExponential(2)} | ` +
+  `${m.rms.toExponential(2)} | ${v.cpuNsPerEval.toFixed(0)} | ${v.gpuRelative.toFixed(2)}× |`;
 for (const f of report.families) {
-  lines.push(`**${f.title}** — max \\|error\\| of ${esc(f.errorOf)} over ${esc(f.domain)}`, '', '| variant | max \\|error\\| | RMS | CPU ns/eval | GPU relative |', '|---|---|---|---|---|');
-  for (const v of f.variants) {
-    lines.push(`| ${esc(v.label)} | ${v.error.maxAbs === 0 ? '0 (reference)' : v.error.maxAbs.toExponential(2)} | ${v.error.rms.toExponential(2)} | ${v.cpuNsPerEval.toFixed(0)} | ${v.gpuRelative.toFixed(2)}× |`);
+  const others = f.variants.filter((v) => v.kind === 'difference');
+  lines.push(`**${f.title}** — ${esc(f.errorOf)} over ${esc(f.domain)}`, '');
+  lines.push('| approximation | error against | max \\|error\\| | RMS | CPU ns/eval | GPU relative |', '|---|---|---|---|---|---|');
+  for (const v of f.variants.filter((w) => w.kind !== 'difference')) lines.push(row(v, v.error));
+  if (others.length) {
+    lines.push('', `Other models, as a difference from ${esc(others[0].againstLabel)} (not an error: neither approximates the other):`, '');
+    lines.push('| model | difference from | max \\|difference\\| | RMS | CPU ns/eval | GPU relative |', '|---|---|---|---|---|---|');
+    for (const v of others) lines.push(row(v, v.difference));
   }
   lines.push('');
 }
