@@ -27,8 +27,9 @@ export const TOUR_STEPS = [
   {
     id: 'media-red-absorber', section: 'media', widget: 'media', title: 'Absorption changes colour',
     state: { medium: 'red', distance: -1.3 },
-    text: 'A stronger absorber that takes more blue and green than red tints light within millimetres, like wine. ' +
-      'Absorption changes how much light there is and what colour it has, never its direction.',
+    text: 'A stronger absorber that takes far more blue and green than red (an illustrative one, wine-like) tints ' +
+      'light within a centimetre: 1 cm leaves 97% of red, 55% of green and 41% of blue; the 5 cm shown leave 86%, ' +
+      '5% and 1%. Absorption changes how much light there is and what colour it has, never its direction.',
   },
   {
     id: 'media-scattering', section: 'media', widget: 'media', title: 'Scattering makes a medium cloudy',
