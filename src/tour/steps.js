@@ -70,8 +70,8 @@ export const TOUR_STEPS = [
   {
     id: 'subsurface-local', section: 'surfaces', widget: 'subsurface-scale', title: 'When diffuse is local',
     state: { pixel: 4 },
-    text: 'Light refracted into a non-metal wanders and re-emerges some distance from where it entered. If a pixel ' +
-      'covers much more than that distance, we may pretend it comes out where it went in: shading stays local, ' +
+    text: 'Light refracted into a non-metal wanders and re-emerges some distance from where it entered. If a pixel’s ' +
+      'footprint on the surface is much wider than that distance, we may pretend it comes out where it went in: shading stays local, ' +
       'and this re-emerging light is the diffuse term.',
   },
   {
@@ -93,9 +93,11 @@ export const TOUR_STEPS = [
   {
     id: 'brdf-intensity', section: 'brdf', widget: 'brdf-lobe', title: 'BRDF times the cosine',
     state: { lightTheta: 60, viewTheta: 60, cosine: true },
-    text: 'The BRDF is a density per steradian, largest towards the horizon. Multiplying by n·v shows how much ' +
-      'light actually leaves in each direction, and the reflectance equation is exactly this: the integral of ' +
-      'f × incoming light × n·l, a weighted average over all incoming directions (the albedo plot).',
+    text: 'The BRDF is a density per steradian. In this state (light at 60°, α = 0.3) it is largest at the horizon: ' +
+      '1.00/sr at θv = 89° against 0.22 in the mirror direction; on a smoother surface (α = 0.1) it peaks near the ' +
+      'mirror direction instead. The lobe is drawn × n·v, the cosine of the view, which shows how much light leaves ' +
+      'towards each direction (most near 70° here). That is not the reflectance equation’s cosine: for one view ' +
+      'direction it integrates f × incoming radiance × n·l over incoming directions l (the albedo plot).',
   },
   {
     id: 'brdf-factors', section: 'brdf', widget: 'brdf-lobe', title: 'Taking the BRDF apart',

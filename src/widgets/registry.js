@@ -27,7 +27,7 @@ export const WIDGETS = {
   },
   'subsurface-scale': {
     title: 'Subsurface scale',
-    summary: 'Random walks in a scattering slab: how far light travels before it re-emerges, against a pixel’s size.',
+    summary: 'Random walks in a scattering slab: how far light travels before it re-emerges, against a pixel’s footprint radius.',
     load: () => import('./subsurface-scale/subsurface-scale.js'),
   },
   'brdf-lobe': {
