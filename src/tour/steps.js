@@ -84,11 +84,26 @@ export const TOUR_STEPS = [
 
   // 3. The BRDF and the reflectance equation
   {
+    id: 'brdf-radiance', section: 'brdf', widget: 'radiance', title: 'Light as a number: radiance',
+    state: { distance: 4, lampRadius: 0.05, light: 'daylight', surface: 'grey' },
+    text: 'Shading measures light as radiance: power along a single ray, per area across it and per solid angle ' +
+      'around it. Radiance does not fade with distance: the lamp, 4 m away here, is smaller than at 1 m but no ' +
+      'dimmer. What fades is the irradiance a surface receives from the whole lamp, as 1/d² (16 times less than ' +
+      'at 1 m). Drag the distance and watch the two curves.',
+  },
+  {
+    id: 'brdf-spectral', section: 'brdf', widget: 'radiance', title: 'Spectra become RGB',
+    state: { distance: 1, light: 'sodium', surface: 'red' },
+    text: 'Light is a spectrum, but a renderer keeps three numbers and multiplies them channel by channel (the ⊗ ' +
+      'of the reflectance equation). Under a sodium lamp, whose light sits almost all at 589 nm, that shortcut ' +
+      'makes this red paint’s red channel 2.4 times too bright. Under the daylight-like white the two agree.',
+  },
+  {
     id: 'brdf-lobe', section: 'brdf', widget: 'brdf-lobe', title: 'The BRDF f(l, v)',
     state: { lightTheta: 45, viewTheta: 45 },
     text: 'With shading local, a surface point answers one question: of the light arriving from l, how much ' +
-      'leaves towards v? That is the BRDF. Fix the light and sweep the view, and f traces a lobe around the ' +
-      'mirror direction. Drag l or v on the polar plot.',
+      'leaves towards v? That is the BRDF, defined only for l and v above the surface. Fix the light and sweep ' +
+      'the view, and f traces a lobe around the mirror direction. Drag l or v on the polar plot.',
   },
   {
     id: 'brdf-intensity', section: 'brdf', widget: 'brdf-lobe', title: 'BRDF times the cosine',

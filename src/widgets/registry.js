@@ -30,6 +30,11 @@ export const WIDGETS = {
     summary: 'Random walks in a scattering slab: how far light travels before it re-emerges, against a pixel’s footprint radius.',
     load: () => import('./subsurface-scale/subsurface-scale.js'),
   },
+  radiance: {
+    title: 'Radiance and colour',
+    summary: 'Radiance along a ray stays put while a lamp’s irradiance falls as 1/d²; a spectrum reduced to RGB, and where RGB ⊗ RGB misleads.',
+    load: () => import('./radiance/radiance.js'),
+  },
   'brdf-lobe': {
     title: 'BRDF lobe',
     summary: 'The microfacet BRDF taken apart: polar and 3-D lobes, factors on and off, two BRDFs, (θh, θd), albedo.',
