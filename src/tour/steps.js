@@ -186,10 +186,11 @@ export const TOUR_STEPS = [
   },
   {
     id: 'fresnel-zones-lh-weighted', section: 'fresnel', widget: 'fresnel-zones', title: 'Weighted by the rest of the BRDF',
-    state: { mode: 'zones-lh-weighted', shape: 'torusknot', lightTheta: 140 },
+    state: { mode: 'zones-lh-weighted', shape: 'torusknot', lightTheta: 140, alpha: 0.3 },
     text: 'Now weight each pixel by the light the rest of the BRDF actually sends to the eye. From behind, ' +
       'little light reaches the eye: only thin grazing edges stay bright. Averaged over light directions all ' +
-      'around the object, about two thirds of the reflected light is green and under 1% red (see the legend).',
+      'around the object, at this roughness (GGX α = 0.3) about two thirds of the reflected light is green and ' +
+      'under 1% red (see the legend); a smoother surface (α = 0.1) sends about 2% red.',
   },
   {
     id: 'fresnel-f0-tables', section: 'fresnel', widget: 'f0-tables', title: 'F(0°) is the specular colour',

@@ -23,6 +23,7 @@ const ABOUT =
   'them channel by channel (the ⊗ of the reflectance equation). Under white light the shortcut is exact by ' +
   'construction; under a peaked spectrum, such as a sodium lamp, it can be far off.';
 
+const FIELD_DEG = 60; // the drawn eye's field of view: the lamp spans it at 0.1 m and about a pixel at 30 m
 const DISTANCES = Float64Array.from({ length: 200 }, (_, i) => 0.1 * 300 ** (i / 199));
 const WAVELENGTHS = Float64Array.from({ length: 401 }, (_, i) => 380 + i);
 const fmt = (x) => (Math.abs(x) >= 0.01 || x === 0 ? x.toFixed(3) : x.toExponential(2));
@@ -36,8 +37,8 @@ function drawLamp(canvas, state, view) {
   const { ctx, w, h } = sizeCanvas2d(canvas);
   ctx.fillStyle = '#1b1e24';
   ctx.fillRect(0, 0, w, h);
-  const pixel = 8; // one drawn "pixel" of an eye whose field is 20° across
-  const scale = w / 20;
+  const pixel = 8; // one drawn "pixel" of an eye whose field is FIELD_DEG across
+  const scale = w / FIELD_DEG;
   ctx.strokeStyle = '#ffffff14';
   for (let x = 0; x < w; x += pixel) ctx.strokeRect(x, 0, pixel, h);
   for (let y = 0; y < h; y += pixel) ctx.strokeRect(0, y, w, pixel);
@@ -48,14 +49,14 @@ function drawLamp(canvas, state, view) {
   ctx.fill();
   ctx.fillStyle = '#e8e8e8';
   ctx.font = '12px system-ui, sans-serif';
-  ctx.fillText(`the eye's view, 20° across: the lamp at ${state.distance} m spans ${(2 * view.angularRadiusDeg).toFixed(2)}°`, 8, h - 10);
+  ctx.fillText(`the eye's view, ${FIELD_DEG}° across: the lamp at ${state.distance} m spans ${(2 * view.angularRadiusDeg).toFixed(2)}°`, 8, h - 10);
 }
 
 function lampPlotSpec(state) {
   const views = [...DISTANCES].map((d) => lampView({ ...state, distance: d }));
   return {
     title: 'Radiance along a ray to the lamp, and irradiance from the whole lamp, against distance',
-    xLabel: 'distance d (m, log scale)', yLabel: 'relative to the lamp’s radiance L', x: { min: 0.1, max: 30, log: true }, y: { min: 1e-6, max: 10, log: true },
+    xLabel: 'distance d (m, log scale)', yLabel: 'value / L', x: { min: 0.1, max: 30, log: true }, y: { min: 1e-6, max: 10, log: true },
     series: [{ label: 'radiance of a ray that meets the lamp (W sr⁻¹ m⁻², /L)', stroke: '#d55e00' }, { label: 'irradiance on a facing surface (W m⁻², /L)', stroke: '#0072b2', dash: [9, 4] }],
     data: [DISTANCES, views.map((v) => v.radiance), views.map((v) => v.irradiance)],
     bands: [{ from: state.distance / 1.04, to: state.distance * 1.04, color: '#0000002a', label: '' }],
