@@ -279,7 +279,7 @@ export const TOUR_STEPS = [
   },
   {
     id: 'diffuse-full-moon', section: 'diffuse', widget: 'diffuse-explorer', title: 'Rough diffuse: the full moon',
-    state: { models: ['lambert', 'orenNayar', 'orenNayarQualitative'], sigma: 60, lightTheta: 0, lightPhi: 0 },
+    state: { models: ['lambert', 'orenNayar', 'orenNayarQualitative'], sigma: 40, lightTheta: 0, lightPhi: 0 },
     text: 'When the surface is rough on a scale larger than the distance light travels inside it, the bumps ' +
       'themselves shade each other. Lit from behind the viewer, a rough sphere looks flat, like the full moon: ' +
       'Oren–Nayar keeps its rim nearly as bright as its centre, where Lambert falls off with n·l.',
