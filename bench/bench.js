@@ -20,6 +20,7 @@ const only = args.includes('--only') ? args[args.indexOf('--only') + 1] : null;
 if (only !== null && only !== 'families') throw new Error(`--only ${only}: the only part that runs alone is "families"`);
 const out = args.includes('--out') ? resolve(args[args.indexOf('--out') + 1]) : join(ROOT, 'bench/results/latest.json');
 const CPU_SAMPLE = 2048; // inputs per timed call
+const cpuModel = () => cpus()[0]?.model ?? 'unknown';
 
 async function cpuCosts(family) {
   const bench = new Bench({ time: quick ? 5 : 250, warmupTime: quick ? 2 : 50 });
@@ -64,25 +65,31 @@ async function measureFamily(family, gpuMs) {
     title: family.title,
     domain: family.domain,
     errorOf: family.errorOf,
-    variants: family.variants.map((v, i) => ({
-      key: v.key,
-      label: v.label,
-      kind: v.kind,
-      against: v.against ?? null,
-      againstLabel: labelOf(v.against),
-      [v.kind === 'difference' ? 'difference' : 'error']: { maxAbs: errors[i].maxAbs, rms: errors[i].rms, maxAt: errors[i].maxAt },
-      cpuNsPerEval: cpu[v.key],
-      gpuMsPerFrame: gpuMs[v.key],
-      gpuRelative: gpuMs[v.key] / cheapest,
-    })),
+    variants: family.variants.map((v, i) => {
+      const { maxAbs, rms, maxAt } = errors[i];
+      return {
+        key: v.key,
+        label: v.label,
+        kind: v.kind,
+        against: v.against ?? null,
+        againstLabel: labelOf(v.against),
+        [v.kind === 'difference' ? 'difference' : 'error']: { maxAbs, rms, maxAt },
+        cpuNsPerEval: cpu[v.key],
+        gpuMsPerFrame: gpuMs[v.key],
+        gpuRelative: gpuMs[v.key] / cheapest,
+      };
+    }),
   };
 }
 
 /** Only the families, measured now, into the last full report (whose GPU times they keep). */
 async function familiesOnly() {
-  if (!existsSync(out)) throw new Error(`--only families updates ${out}, which does not exist: run the whole bench once`);
+  if (!existsSync(out)) throw new Error(`--only families updates ${out}, which does not exist: run the whole bench`);
   const last = JSON.parse(readFileSync(out, 'utf8'));
-  const gpuOf = (key) => Object.fromEntries((last.families.find((f) => f.key === key)?.variants ?? []).map((v) => [v.key, v.gpuMsPerFrame]));
+  const gpuOf = (key) => {
+    const variants = last.families.find((f) => f.key === key)?.variants ?? [];
+    return Object.fromEntries(variants.map((v) => [v.key, v.gpuMsPerFrame]));
+  };
   const families = [];
   for (const family of FAMILIES) {
     const gpuMs = gpuOf(family.key);
@@ -90,7 +97,8 @@ async function familiesOnly() {
     if (missing.length) throw new Error(`no GPU time measured for ${missing.join(', ')}: run the whole bench`);
     families.push(await measureFamily(family, gpuMs));
   }
-  return { ...last, families, familiesMeasured: { date: new Date().toISOString(), cpu: cpus()[0]?.model ?? 'unknown', node: process.version } };
+  const familiesMeasured = { date: new Date().toISOString(), cpu: cpuModel(), node: process.version };
+  return { ...last, families, familiesMeasured };
 }
 
 async function everything() {
@@ -103,7 +111,7 @@ async function everything() {
     version: 1,
     date: new Date().toISOString(),
     quick,
-    machine: { cpu: cpus()[0]?.model ?? 'unknown', cores: cpus().length, node: process.version, chromium: gpu.chromium, gpuRenderer: gpu.renderer },
+    machine: { cpu: cpuModel(), cores: cpus().length, node: process.version, chromium: gpu.chromium, gpuRenderer: gpu.renderer },
     gpuSetup: { ...gpu.setup, baselineMsPerFrame: gpu.baselineMs },
     families,
     versusThree: gpu.versusThree,

@@ -14,20 +14,26 @@ const lines = [
   '',
 ];
 if (report.familiesMeasured) {
-  lines.push(`The term families' errors and CPU costs below were measured again on ${report.familiesMeasured.date.slice(0, 10)} ` +
-    `(\`npm run bench -- --only families\`, ${report.familiesMeasured.cpu}, shared with other work: CPU times may read high); their GPU ` +
-    'columns are from the full run.', '');
+  const { date, cpu } = report.familiesMeasured;
+  lines.push(`The term families' errors and CPU costs below were measured again on ${date.slice(0, 10)} ` +
+    `(\`npm run bench -- --only families\`, ${cpu}, shared with other work: CPU times may read high); ` +
+    'their GPU columns are from the full run.', '');
 }
-const row = (v, m) => `| ${esc(v.label)} | ${v.kind === 'reference' ? 'reference' : esc(v.againstLabel)} | ${v.kind === 'reference' ? '0' : m.maxAbs.toExponential(2)} | ` +
-  `${m.rms.toExponential(2)} | ${v.cpuNsPerEval.toFixed(0)} | ${v.gpuRelative.toFixed(2)}× |`;
+const HEAD = (first, what) => [`| ${first} | ${what === 'error' ? 'error against' : 'difference from'} | max \\|${what}\\| | RMS | ` +
+  'CPU ns/eval | GPU relative |', '|---|---|---|---|---|---|'];
+const row = (v, m) => {
+  const reference = v.kind === 'reference';
+  return `| ${esc(v.label)} | ${reference ? 'reference' : esc(v.againstLabel)} | ${reference ? '0' : m.maxAbs.toExponential(2)} | ` +
+    `${m.rms.toExponential(2)} | ${v.cpuNsPerEval.toFixed(0)} | ${v.gpuRelative.toFixed(2)}× |`;
+};
 for (const f of report.families) {
   const others = f.variants.filter((v) => v.kind === 'difference');
-  lines.push(`**${f.title}** — ${esc(f.errorOf)} over ${esc(f.domain)}`, '');
-  lines.push('| approximation | error against | max \\|error\\| | RMS | CPU ns/eval | GPU relative |', '|---|---|---|---|---|---|');
+  lines.push(`**${f.title}** — ${esc(f.errorOf)} over ${esc(f.domain)}`, '', ...HEAD('approximation', 'error'));
   for (const v of f.variants.filter((w) => w.kind !== 'difference')) lines.push(row(v, v.error));
   if (others.length) {
-    lines.push('', `Other models, as a difference from ${esc(others[0].againstLabel)} (not an error: neither approximates the other):`, '');
-    lines.push('| model | difference from | max \\|difference\\| | RMS | CPU ns/eval | GPU relative |', '|---|---|---|---|---|---|');
+    const from = esc(others[0].againstLabel);
+    lines.push('', `Other models, as a difference from ${from} (not an error: neither approximates the other):`, '');
+    lines.push(...HEAD('model', 'difference'));
     for (const v of others) lines.push(row(v, v.difference));
   }
   lines.push('');

@@ -1,6 +1,8 @@
 // The radiance widget's model, pure: what the eye gets from a lamp at a distance, and the RGB a renderer keeps
 // for a light and a surface against the RGB of the light the surface really reflects.
-import { planckRadiance, spectrumToXyz, sphereLightIrradiance, sphereSolidAngle, xyzToLinearSrgb } from '../../math/radiometry.js';
+import {
+  planckRadiance, spectrumToXyz, sphereLightIrradiance, sphereSolidAngle, xyzToLinearSrgb,
+} from '../../math/radiometry.js';
 
 export const LAMP_RADIANCE = 1; // W sr⁻¹ m⁻²: the units cancel in every ratio the widget shows
 
@@ -30,7 +32,10 @@ export const LIGHTS = {
 /** Surface reflectance spectra: illustrative smooth curves, not measurements. */
 export const SURFACES = {
   red: { name: 'Red paint (illustrative)', reflectance: (l) => 0.05 + 0.8 / (1 + Math.exp(-(l - 600) / 12)) },
-  green: { name: 'Leaf green (illustrative)', reflectance: (l) => 0.04 + 0.4 * gauss(l, 550, 30) + 0.5 / (1 + Math.exp(-(l - 710) / 10)) },
+  green: {
+    name: 'Leaf green (illustrative)',
+    reflectance: (l) => 0.04 + 0.4 * gauss(l, 550, 30) + 0.5 / (1 + Math.exp(-(l - 710) / 10)),
+  },
   grey: { name: 'Grey (50% at every wavelength)', reflectance: () => 0.5 },
 };
 

@@ -8,11 +8,13 @@ import { rgbToHex } from '../../core/palettes.js';
 import { linearToSrgb } from '../../math/color.js';
 import { LIGHTS, SURFACES, colours, lampView } from './model.js';
 
+const names = (table) => Object.fromEntries(Object.entries(table).map(([k, v]) => [k, v.name]));
+
 export const schema = {
   distance: { type: 'number', min: 0.1, max: 30, step: 0.1, default: 1, label: 'Distance to the lamp', unit: 'm' },
   lampRadius: { type: 'number', min: 0.01, max: 0.1, step: 0.01, default: 0.05, label: 'Lamp radius', unit: 'm' },
-  light: { type: 'enum', options: Object.fromEntries(Object.entries(LIGHTS).map(([k, v]) => [k, v.name])), default: 'incandescent', label: 'Light spectrum' },
-  surface: { type: 'enum', options: Object.fromEntries(Object.entries(SURFACES).map(([k, v]) => [k, v.name])), default: 'red', label: 'Surface reflectance' },
+  light: { type: 'enum', options: names(LIGHTS), default: 'incandescent', label: 'Light spectrum' },
+  surface: { type: 'enum', options: names(SURFACES), default: 'red', label: 'Surface reflectance' },
 };
 
 const ABOUT =
@@ -49,18 +51,26 @@ function drawLamp(canvas, state, view) {
   ctx.fill();
   ctx.fillStyle = '#e8e8e8';
   ctx.font = '12px system-ui, sans-serif';
-  ctx.fillText(`the eye's view, ${FIELD_DEG}° across: the lamp at ${state.distance} m spans ${(2 * view.angularRadiusDeg).toFixed(2)}°`, 8, h - 10);
+  const span = `${(2 * view.angularRadiusDeg).toFixed(2)}°`;
+  ctx.fillText(`the eye's view, ${FIELD_DEG}° across: the lamp at ${state.distance} m spans ${span}`, 8, h - 10);
 }
 
 function lampPlotSpec(state) {
   const views = [...DISTANCES].map((d) => lampView({ ...state, distance: d }));
   return {
     title: 'Radiance along a ray to the lamp, and irradiance from the whole lamp, against distance',
-    xLabel: 'distance d (m, log scale)', yLabel: 'value / L', x: { min: 0.1, max: 30, log: true }, y: { min: 1e-6, max: 10, log: true },
-    series: [{ label: 'radiance of a ray that meets the lamp (W sr⁻¹ m⁻², /L)', stroke: '#d55e00' }, { label: 'irradiance on a facing surface (W m⁻², /L)', stroke: '#0072b2', dash: [9, 4] }],
+    xLabel: 'distance d (m, log scale)',
+    yLabel: 'value / L',
+    x: { min: 0.1, max: 30, log: true },
+    y: { min: 1e-6, max: 10, log: true },
+    series: [
+      { label: 'radiance of a ray that meets the lamp (W sr⁻¹ m⁻², /L)', stroke: '#d55e00' },
+      { label: 'irradiance on a facing surface (W m⁻², /L)', stroke: '#0072b2', dash: [9, 4] },
+    ],
     data: [DISTANCES, views.map((v) => v.radiance), views.map((v) => v.irradiance)],
     bands: [{ from: state.distance / 1.04, to: state.distance * 1.04, color: '#0000002a', label: '' }],
-    filename: 'radiance-irradiance', height: 220,
+    filename: 'radiance-irradiance',
+    height: 220,
   };
 }
 
@@ -69,15 +79,46 @@ function spectrumPlotSpec(state) {
   const { reflectance } = SURFACES[state.surface];
   return {
     title: `${LIGHTS[state.light].name} on ${SURFACES[state.surface].name.toLowerCase()}, per wavelength`,
-    xLabel: 'wavelength (nm)', yLabel: 'relative power / reflectance', x: { min: 380, max: 780 }, y: { min: 0, max: 1.05 },
+    xLabel: 'wavelength (nm)',
+    yLabel: 'relative power / reflectance',
+    x: { min: 380, max: 780 },
+    y: { min: 0, max: 1.05 },
     series: [
       { label: 'light (relative power)', stroke: '#e69f00' },
       { label: 'surface reflectance', stroke: '#009e73', dash: [9, 4] },
       { label: 'reflected light = light × reflectance', stroke: '#000000', dash: [2, 3] },
     ],
-    data: [WAVELENGTHS, [...WAVELENGTHS].map(spectrum), [...WAVELENGTHS].map(reflectance), [...WAVELENGTHS].map((l) => spectrum(l) * reflectance(l))],
-    filename: `spectrum-${state.light}-${state.surface}`, height: 220,
+    data: [WAVELENGTHS, ...[spectrum, reflectance, (l) => spectrum(l) * reflectance(l)].map((f) => WAVELENGTHS.map(f))],
+    filename: `spectrum-${state.light}-${state.surface}`,
+    height: 220,
   };
+}
+
+const row = (label, value) => `<tr><td>${label}</td><td>${value}</td></tr>`;
+const table = (caption, rows) =>
+  `<table class="data-table compact"><caption>${caption}</caption><tbody>${rows.join('')}</tbody></table>`;
+
+function lampTableHtml(s, view) {
+  return table(`A lamp of radiance L, radius ${s.lampRadius} m, at ${s.distance} m`, [
+    row('radiance along each ray that meets it', `${fmt(view.radiance)} L, at any distance`),
+    row('solid angle it covers', `${fmt(view.solidAngle)} sr`),
+    row('irradiance on a surface facing it, π L (r/d)²', `${fmt(view.irradiance)} L`),
+  ]);
+}
+
+function rgbTableHtml(c) {
+  const ratio = c.product.map((p, i) =>
+    (Math.abs(c.spectral[i]) > 1e-6 ? `${(p / c.spectral[i]).toFixed(2)}×` : '—'));
+  const shown = (rgb) => `${swatch(rgb)} ${triple(rgb)}`;
+  const caption = 'Linear RGB, white (the 6504 K black body) = (1, 1, 1); values outside 0…1 are outside the sRGB ' +
+    'gamut (swatches clip them)';
+  return table(caption, [
+    row('the light', shown(c.light)),
+    row('the surface under white light (its stored colour)', shown(c.surface)),
+    row('reflected light, wavelength by wavelength', shown(c.spectral)),
+    row('the renderer’s shortcut: light ⊗ surface', shown(c.product)),
+    row('shortcut ÷ wavelength by wavelength, per channel', ratio.join(', ')),
+  ]);
 }
 
 export function createRadiance(container, initialState = {}, { onStateChange } = {}) {
@@ -95,25 +136,17 @@ export function createRadiance(container, initialState = {}, { onStateChange } =
   const render = (changed) => {
     const s = shell.state;
     const view = lampView(s);
-    if (!changed || changed.some((k) => k === 'distance' || k === 'lampRadius')) lampPlot.setData(lampPlotSpec(s));
-    if (!changed || changed.some((k) => k === 'light' || k === 'surface')) spectrumPlot.setData(spectrumPlotSpec(s));
+    const touched = (...keys) => !changed || changed.some((k) => keys.includes(k));
+    if (touched('distance', 'lampRadius')) lampPlot.setData(lampPlotSpec(s));
+    if (touched('light', 'surface')) spectrumPlot.setData(spectrumPlotSpec(s));
     drawLamp(canvas, s, view);
-    lampTable.innerHTML = `<table class="data-table compact"><caption>A lamp of radiance L, radius ${s.lampRadius} m, at ${s.distance} m</caption><tbody>` +
-      `<tr><td>radiance along each ray that meets it</td><td>${fmt(view.radiance)} L, at any distance</td></tr>` +
-      `<tr><td>solid angle it covers</td><td>${fmt(view.solidAngle)} sr</td></tr>` +
-      `<tr><td>irradiance on a surface facing it, π L (r/d)²</td><td>${fmt(view.irradiance)} L</td></tr></tbody></table>`;
+    lampTable.innerHTML = lampTableHtml(s, view);
     const c = colours(s.light, s.surface);
-    const ratio = c.product.map((p, i) => (Math.abs(c.spectral[i]) > 1e-6 ? p / c.spectral[i] : NaN));
-    rgbTable.innerHTML = '<table class="data-table compact"><caption>Linear RGB, white (the 6504 K black body) = (1, 1, 1); ' +
-      'values outside 0…1 are outside the sRGB gamut (swatches clip them)</caption><tbody>' +
-      `<tr><td>the light</td><td>${swatch(c.light)} ${triple(c.light)}</td></tr>` +
-      `<tr><td>the surface under white light (its stored colour)</td><td>${swatch(c.surface)} ${triple(c.surface)}</td></tr>` +
-      `<tr><td>reflected light, wavelength by wavelength</td><td>${swatch(c.spectral)} ${triple(c.spectral)}</td></tr>` +
-      `<tr><td>the renderer’s shortcut: light ⊗ surface</td><td>${swatch(c.product)} ${triple(c.product)}</td></tr>` +
-      `<tr><td>shortcut / per wavelength</td><td>${ratio.map((x) => (Number.isFinite(x) ? `${x.toFixed(2)}×` : '—')).join(', ')}</td></tr></tbody></table>`;
-    shell.describe(`A lamp ${s.distance} m away covers ${(2 * view.angularRadiusDeg).toFixed(2)}° and still shows radiance L; the irradiance ` +
-      `it gives is ${fmt(view.irradiance)} L. ${LIGHTS[s.light].name} on ${SURFACES[s.surface].name.toLowerCase()}: reflected ` +
-      `light per wavelength is RGB ${triple(c.spectral)}, the RGB shortcut gives ${triple(c.product)}.`, canvas);
+    rgbTable.innerHTML = rgbTableHtml(c);
+    shell.describe(`A lamp ${s.distance} m away covers ${(2 * view.angularRadiusDeg).toFixed(2)}° and still shows ` +
+      `radiance L; the irradiance it gives is ${fmt(view.irradiance)} L. ${LIGHTS[s.light].name} on ` +
+      `${SURFACES[s.surface].name.toLowerCase()}: reflected light per wavelength is RGB ${triple(c.spectral)}, ` +
+      `the RGB shortcut gives ${triple(c.product)}.`, canvas);
   };
   render(null);
   const resize = new ResizeObserver(() => drawLamp(canvas, shell.state, lampView(shell.state)));
