@@ -2,8 +2,9 @@
 // documented domain, its CPU cost (tinybench, ns per evaluation) and its GPU cost (a full-screen pass in
 // headless Chromium). Prints a table and writes JSON (bench/results/latest.json, or --out FILE).
 // --quick: a tiny budget, for the test suite.
-// --only families: only the term families' errors and CPU costs (Node, seconds), merged into the existing
-// JSON; its GPU columns, pages and IBL rows stay as last measured.
+// --only families: only the term families' errors (Node, seconds), merged into the existing JSON; every cost
+// column, the pages and the IBL rows stay as last measured. With --time-cpu the CPU column is timed again too
+// (on a quiet machine only: timings taken beside other work are not comparable with the rest).
 import { existsSync, mkdirSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { cpus, tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
@@ -17,6 +18,7 @@ import { ROOT, launchBrowser, openPage, serveStatic } from '../tests/browser/har
 const args = process.argv.slice(2);
 const quick = args.includes('--quick');
 const only = args.includes('--only') ? args[args.indexOf('--only') + 1] : null;
+const timeCpu = only === null || args.includes('--time-cpu');
 if (only !== null && only !== 'families') throw new Error(`--only ${only}: the only part that runs alone is "families"`);
 const out = args.includes('--out') ? resolve(args[args.indexOf('--out') + 1]) : join(ROOT, 'bench/results/latest.json');
 const CPU_SAMPLE = 2048; // inputs per timed call
@@ -55,9 +57,9 @@ async function gpuCosts() {
 }
 
 /** A family's rows: each variant's kind, what it is measured against, that distance, and its costs. */
-async function measureFamily(family, gpuMs) {
+async function measureFamily(family, gpuMs, lastCpu) {
   const errors = measureErrors(family);
-  const cpu = await cpuCosts(family);
+  const cpu = timeCpu ? await cpuCosts(family) : lastCpu;
   const cheapest = Math.min(...Object.values(gpuMs));
   const labelOf = (key) => family.variants.find((v) => v.key === key)?.label ?? null;
   return {
@@ -82,22 +84,22 @@ async function measureFamily(family, gpuMs) {
   };
 }
 
-/** Only the families, measured now, into the last full report (whose GPU times they keep). */
+/** Only the families' errors (and, asked, CPU times), measured now, into the last full report. */
 async function familiesOnly() {
   if (!existsSync(out)) throw new Error(`--only families updates ${out}, which does not exist: run the whole bench`);
   const last = JSON.parse(readFileSync(out, 'utf8'));
-  const gpuOf = (key) => {
+  const lastOf = (key, field) => {
     const variants = last.families.find((f) => f.key === key)?.variants ?? [];
-    return Object.fromEntries(variants.map((v) => [v.key, v.gpuMsPerFrame]));
+    return Object.fromEntries(variants.map((v) => [v.key, v[field]]));
   };
   const families = [];
   for (const family of FAMILIES) {
-    const gpuMs = gpuOf(family.key);
-    const missing = family.variants.filter((v) => !(gpuMs[v.key] >= 0)).map((v) => `${family.key}/${v.key}`);
-    if (missing.length) throw new Error(`no GPU time measured for ${missing.join(', ')}: run the whole bench`);
-    families.push(await measureFamily(family, gpuMs));
+    const [gpuMs, cpu] = [lastOf(family.key, 'gpuMsPerFrame'), lastOf(family.key, 'cpuNsPerEval')];
+    const missing = family.variants.filter((v) => !(gpuMs[v.key] >= 0 && cpu[v.key] >= 0)).map((v) => `${family.key}/${v.key}`);
+    if (missing.length) throw new Error(`no cost measured for ${missing.join(', ')}: run the whole bench`);
+    families.push(await measureFamily(family, gpuMs, cpu));
   }
-  const familiesMeasured = { date: new Date().toISOString(), cpu: cpuModel(), node: process.version };
+  const familiesMeasured = { date: new Date().toISOString(), cpu: cpuModel(), node: process.version, timedCpu: timeCpu };
   return { ...last, families, familiesMeasured };
 }
 
@@ -138,7 +140,8 @@ for (const f of report.families) {
   }
 }
 if (only === 'families') {
-  console.log(`\nWrote ${out} (families only; the GPU columns are from the run of ${report.date.slice(0, 10)})`);
+  const kept = timeCpu ? 'the GPU columns' : 'the CPU and GPU columns';
+  console.log(`\nWrote ${out} (families only; ${kept} are from the run of ${report.date.slice(0, 10)})`);
   process.exit(0);
 }
 const { versusThree: vt, ibl, pages } = report;

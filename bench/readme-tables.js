@@ -14,10 +14,10 @@ const lines = [
   '',
 ];
 if (report.familiesMeasured) {
-  const { date, cpu } = report.familiesMeasured;
-  lines.push(`The term families' errors and CPU costs below were measured again on ${date.slice(0, 10)} ` +
-    `(\`npm run bench -- --only families\`, ${cpu}, shared with other work: CPU times may read high); ` +
-    'their GPU columns are from the full run.', '');
+  const { date, timedCpu } = report.familiesMeasured;
+  lines.push(`The term families' ${timedCpu ? 'errors and CPU costs' : 'errors'} below were measured again on ` +
+    `${date.slice(0, 10)} (\`npm run bench -- --only families\`); their ${timedCpu ? 'GPU columns are' : 'costs are'} ` +
+    'from the full run.', '');
 }
 const HEAD = (first, what) => [`| ${first} | ${what === 'error' ? 'error against' : 'difference from'} | max \\|${what}\\| | RMS | ` +
   'CPU ns/eval | GPU relative |', '|---|---|---|---|---|---|'];

@@ -13,8 +13,9 @@ document.getElementById('machine').textContent =
   `${report.machine.chromium}, GPU: ${report.machine.gpuRenderer}. GPU pass: ${report.gpuSetup.size}² pixels × ${report.gpuSetup.loops} ` +
   `evaluations per pixel, median of ${report.gpuSetup.frames} drained frames; the empty pass takes ${report.gpuSetup.baselineMsPerFrame?.toFixed(2) ?? '?'} ms of each.` +
   (report.familiesMeasured
-    ? ` The term families' errors and CPU costs were measured again on ${report.familiesMeasured.date.slice(0, 10)} ` +
-      '(npm run bench -- --only families); their GPU columns are from the full run.'
+    ? ` The term families' ${report.familiesMeasured.timedCpu ? 'errors and CPU costs' : 'errors'} were measured again on ` +
+      `${report.familiesMeasured.date.slice(0, 10)} (npm run bench -- --only families); their ` +
+      `${report.familiesMeasured.timedCpu ? 'GPU columns are' : 'costs are'} from the full run.`
     : '');
 
 const costOf = (v) => (costSelect.value === 'gpu' ? v.gpuRelative : v.cpuNsPerEval);
