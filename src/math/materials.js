@@ -19,7 +19,7 @@ export const NON_METALS = [
   // printed as in the talk, though the pair disagrees: 0.03 linear is 0.19 sRGB, and 0.21 sRGB is 0.036 linear
   {
     key: 'glass-low', name: 'Plastic / Glass (Low)', linear: [0.03, 0.03, 0.03], srgb: [0.21, 0.21, 0.21],
-    note: 'The printed pair disagrees: 0.03 linear is 0.19 in sRGB, and the printed 0.21 sRGB is 0.036 linear.',
+    note: 'the printed pair disagrees: 0.03 linear is 0.19 in sRGB, and the printed 0.21 sRGB is 0.036 linear.',
   },
   { key: 'plastic-high', name: 'Plastic High', linear: [0.05, 0.05, 0.05], srgb: [0.24, 0.24, 0.24] },
   { key: 'glass-high', name: 'Glass (High) / Ruby', linear: [0.08, 0.08, 0.08], srgb: [0.31, 0.31, 0.31] },

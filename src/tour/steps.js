@@ -107,7 +107,7 @@ export const TOUR_STEPS = [
   },
   {
     id: 'brdf-intensity', section: 'brdf', widget: 'brdf-lobe', title: 'BRDF times the cosine',
-    state: { lightTheta: 60, viewTheta: 60, cosine: true },
+    state: { lightTheta: 60, viewTheta: 60, cosine: true, alpha: 0.3 },
     text: 'The BRDF is a density per steradian. In this state (light at 60°, α = 0.3) it is largest at the horizon: ' +
       '1.00/sr at θv = 89° against 0.22 in the mirror direction; on a smoother surface (α = 0.1) it peaks near the ' +
       'mirror direction instead. The lobe is drawn × n·v, the cosine of the view, which shows how much light leaves ' +
