@@ -14,6 +14,9 @@ const range = (n, lo, hi) => Array.from({ length: n }, (_, i) => lo + ((hi - lo)
 const COS = range(1001, 0, 1);
 const DEG = Math.PI / 180;
 
+/** G = V (n·l)(n·v) of a visibility term V(n·l, n·v, α), over the visibility family's inputs. */
+const asG = (V) => (nl, nv, nh, lh, a) => V(nl, nv, a) * nl * nv;
+
 const measuredChannels = M.METALS.flatMap((m) => M.measuredRgbNk(m.key).map(([n, k], ch) => ({ n, k, f0: M.f0FromIor(n, k), label: `${m.key} ${'RGB'[ch]}` })));
 
 export const FAMILIES = [
@@ -84,16 +87,16 @@ export const FAMILIES = [
     }))),
     variants: [
       { key: 'correlated', label: 'Height-correlated Smith (Heitz 2014)', kind: 'reference', model: 'smith-ggx-correlated',
-        js: (nl, nv, nh, lh, a) => M.visibilitySmithGGXCorrelated(nl, nv, a) * nl * nv,
+        js: asG(M.visibilitySmithGGXCorrelated),
         glsl: 'visibilitySmithGGXCorrelated(x, y, 0.3)' },
       { key: 'separable', label: 'Separable Smith', kind: 'difference', against: 'correlated', model: 'smith-ggx-separable',
-        js: (nl, nv, nh, lh, a) => M.visibilitySmithGGXSeparable(nl, nv, a) * nl * nv,
+        js: asG(M.visibilitySmithGGXSeparable),
         glsl: 'visibilitySmithGGXSeparable(x, y, 0.3)' },
       { key: 'hammon', label: 'Hammon 2017', kind: 'approximation', against: 'correlated', model: 'smith-ggx-correlated',
-        js: (nl, nv, nh, lh, a) => M.visibilitySmithGGXCorrelatedFast(nl, nv, a) * nl * nv,
+        js: asG(M.visibilitySmithGGXCorrelatedFast),
         glsl: 'visibilitySmithGGXCorrelatedFast(x, y, 0.3)' },
       { key: 'schlick-ggx', label: 'Schlick-GGX (k = α/2, Karis 2013)', kind: 'approximation', against: 'separable', model: 'smith-ggx-separable',
-        js: (nl, nv, nh, lh, a) => M.visibilitySchlickGGX(nl, nv, a) * nl * nv,
+        js: asG(M.visibilitySchlickGGX),
         glsl: 'visibilitySchlickGGX(x, y, 0.3)' },
       { key: 'cook-torrance', label: 'Cook-Torrance', kind: 'difference', against: 'correlated', model: 'cook-torrance',
         js: (nl, nv, nh, lh) => M.visibilityCookTorrance(nl, nv, nh, lh) * nl * nv,
