@@ -95,6 +95,7 @@ export const STRESS_DOMAINS = {
   directionFromCos: { args: [COS], range: [-1, 1] },
   directionsFromHalfDiff: { args: [ANGLE, ANGLE, ANGLE], range: [-1, 1] },
   sampleGGXNormal: { args: [[0, 0.5, 1 - 1e-12], [0, 0.5, 1], ALPHA], range: [-1, 1] },
+  sampleBeckmannNormal: { args: [[0, 0.5, 1 - 1e-12], [0, 0.5, 1], ALPHA], range: [-1, 1] },
   hammersley: { tuples: [[0, 1], [0, 256], [255, 256], [2 ** 31, 2 ** 32], [2 ** 32 - 1, 2 ** 32]], range: ZERO_TO_ONE },
   albedoGGX: { args: [COS, ALPHA, [16]], range: ZERO_TO_ONE },
   dfgSplitSum: { args: [COS, ALPHA, [16]], range: ZERO_TO_ONE },

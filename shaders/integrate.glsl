@@ -21,6 +21,16 @@ vec3 sampleGGXNormal(vec2 u, float alpha) {
   return vec3(s * cos(phi), s * sin(phi), c);
 }
 
+// mirrors sampleBeckmannNormal: tan² = -alpha² ln(1 - u.x), with ln(1 - x) kept precise for small x
+vec3 sampleBeckmannNormal(vec2 u, float alpha) {
+  float a = clampAlpha(alpha);
+  float t2 = -a * a * log1pSmall(-u.x);
+  float c = inversesqrt(1.0 + t2);
+  float s = sqrt(t2) * c;
+  float phi = 2.0 * PI * u.y;
+  return vec3(s * cos(phi), s * sin(phi), c);
+}
+
 // The split-sum DFG term: (scale, bias) with ∫ f (n·l) dω = F0·scale + bias, mirrors dfgSplitSum.
 vec2 dfgSplitSum(float mu, float alpha, int n) {
   float m0 = clamp(mu, 1e-6, 1.0);

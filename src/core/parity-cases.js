@@ -104,6 +104,11 @@ export const PARITY_CASES = [
     name: 'sampleCosine', chunk: 'integrate.glsl', glsl: 'sampleCosine(a.xy)', outputs: 3, js: M.sampleCosine, range: [-1, 1], args: cartesian([0, 1e-6, 0.3, 0.999, 1], [0, 0.25, 0.7]),
     tolerance: TRIG_TOLERANCE,
   },
+  // u1 up to 1 - 1e-6 (the samplers take u1 in [0, 1)), alpha from the clamp to 1
+  ...['sampleGGXNormal', 'sampleBeckmannNormal'].map((fn) => ({
+    name: fn, chunk: 'integrate.glsl', glsl: `${fn}(a.xy, a.z)`, outputs: 3, js: M[fn], range: [-1, 1],
+    args: cartesian([0, 1e-6, 0.3, 0.9, 0.999, 1 - 1e-6], [0, 0.25, 0.7], [0, 1e-4, 0.01, 0.3, 1]), tolerance: TRIG_TOLERANCE,
+  })),
   {
     name: 'sampleCone', chunk: 'integrate.glsl', glsl: 'sampleCone(a.xy, a.z)', outputs: 3, js: M.sampleCone, range: [-1, 1],
     args: cartesian([0, 0.3, 1], [0, 0.25, 0.7], [-1, 0, 0.9, 0.99999, 1]), tolerance: TRIG_TOLERANCE,

@@ -230,7 +230,7 @@ export const GRADERS = {
     },
     tolerance: 'percentage points either side',
     grade({ answer, params, tolerance }) {
-      const loss = 100 * (1 - albedoGGX(Math.cos(params.thetaDeg * DEG), params.alpha, 4096));
+      const loss = 100 * (1 - albedoGGX(Math.cos(params.thetaDeg * DEG), params.alpha));
       if (Math.abs(answer - loss) <= tolerance) return { ok: true, summary: `Right: the white furnace loses ${fmt(loss)}% at α = ${params.alpha}, θ = ${params.thetaDeg}° (within ±${fmt(tolerance)} points).`, details: [] };
       return {
         ok: false,

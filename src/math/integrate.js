@@ -3,7 +3,8 @@
 // light from direction v that the BRDF sends back out; with F = 1 it measures what the microfacet model
 // loses by ignoring light that bounces more than once (the white furnace).
 import { ndfGGX, clampAlpha } from './ndf.js';
-import { visibilitySmithGGXCorrelated } from './visibility.js';
+import { VISIBILITY_TERMS } from './brdf.js';
+import { integrateVector } from './quadrature.js';
 
 /** Direction of polar angle cos = mu in the x-z plane (the view of an isotropic BRDF loses nothing). */
 export function directionFromCos(mu) {
@@ -22,10 +23,20 @@ export function hammersley(i, n) {
   return [(i + 0.5) / n, bits / 2 ** 32];
 }
 
-/** A GGX microfacet normal for (u1, u2): pdf D(m)(n·m). tan²theta = alpha² u1/(1 - u1). */
+/** A GGX microfacet normal for (u1, u2), u1 in [0, 1): pdf D(m)(n·m). tan²theta = alpha² u1/(1 - u1). */
 export function sampleGGXNormal(u1, u2, alpha) {
   const a = clampAlpha(alpha);
   const t2 = (a * a * u1) / (1 - u1);
+  const c = 1 / Math.sqrt(1 + t2);
+  const s = Math.sqrt(t2) * c;
+  const phi = 2 * Math.PI * u2;
+  return [s * Math.cos(phi), s * Math.sin(phi), c];
+}
+
+/** A Beckmann microfacet normal for (u1, u2), u1 in [0, 1): pdf D(m)(n·m). tan²theta = -alpha² ln(1 - u1). */
+export function sampleBeckmannNormal(u1, u2, alpha) {
+  const a = clampAlpha(alpha);
+  const t2 = -a * a * Math.log1p(-u1);
   const c = 1 / Math.sqrt(1 + t2);
   const s = Math.sqrt(t2) * c;
   const phi = 2 * Math.PI * u2;
@@ -74,15 +85,6 @@ export function reflectanceImportanceGGX(f, v, alpha, n = 1024) {
 }
 
 /**
- * Directional albedo with GGX, height-correlated Smith and F = 1: the split sum's scale + bias (with F = 1 the
- * Fresnel split adds back up). With the GGX pdf the D cancels: f nl / pdf = V nl (v·m) / (n·m).
- */
-export function albedoGGX(mu, alpha, n = 1024) {
-  const [scale, bias] = dfgSplitSum(mu, alpha, n);
-  return scale + bias;
-}
-
-/**
  * ∫ D(m)(n·m) dω for an isotropic D(cos): 2π ∫_0^{π/2} D(cos θ) cos θ sin θ dθ by Simpson's rule in s with
  * θ = (π/2) s², which crowds the nodes near θ = 0 where narrow lobes are. Should be 1 for every NDF.
  */
@@ -108,28 +110,82 @@ export function averageAlbedo(E, n = 64) {
   return (2 * sum) / n;
 }
 
+/** The split sum's terms and their defaults: GGX with height-correlated Smith. */
+export const DFG_DEFAULT_TERMS = Object.freeze({ ndf: 'ggx', visibility: 'smithGGXCorrelated' });
+
+// Per NDF, tan²θm at r = sqrt(1 - u), where u is the share of D(m)(n·m) with a polar angle below θm, and r at
+// tan²θm. In (u, φ) the measure D(m)(n·m) dω_m is du dφ/2π, so no peak is left however small alpha is; r also
+// absorbs the tail u -> 1, where the integrand grows like tan θm ~ (1 - u)^-1/2 at grazing view (GGX).
+const NDF_TAN2 = {
+  ggx: (r, a2) => (a2 * (1 - r) * (1 + r)) / (r * r),
+  beckmann: (r, a2) => -2 * a2 * Math.log(r),
+};
+const NDF_R = {
+  ggx: (t2, a2) => Math.sqrt(a2 / (a2 + t2)),
+  beckmann: (t2, a2) => Math.exp(-t2 / (2 * a2)),
+};
+const MU_MIN = 1e-6;
+const PHI_TOL = 1e-8; // absolute, per φ integral
+const R_TOL = 1e-7; // absolute, per piece of the r integral (E is 1/π of the sum)
+
+/** ∫_lo^hi g with x = lo + (hi - lo) s²(3 - 2s): a kink (x - lo)^3/2 at either end becomes smooth in s. */
+function smoothedIntegral(g, lo, hi, tol) {
+  if (!(hi > lo)) return [0, 0];
+  return integrateVector((s) => {
+    const w = 6 * s * (1 - s) * (hi - lo);
+    return g(lo + (hi - lo) * s * s * (3 - 2 * s)).map((y) => y * w);
+  }, 0, 1, tol, 2);
+}
+
 /**
- * The split-sum DFG term (Karis 2013) for GGX, height-correlated Smith and Schlick's F:
- * ∫ f(l, v)(n·l) dω = F0·scale + bias, since F = F0 (1 - Fc) + Fc with Fc = (1 - v·h)^5.
- * The same estimator as albedoGGX, split by (1 - Fc) and Fc. scale + bias = albedoGGX(mu, alpha) (both capped at 1).
+ * The split-sum DFG term (Karis 2013): ∫ f(l, v)(n·l) dω = F0·scale + bias for Schlick's F, as [scale, bias],
+ * since F = F0 (1 - Fc) + Fc with Fc = (1 - v·h)^5. `terms`: { ndf: 'ggx' | 'beckmann', visibility: a key of
+ * VISIBILITY_TERMS }, both with roughness alpha (default GGX + height-correlated Smith).
+ *
+ * Deterministic quadrature over the microfacet normal m, l = reflect(v, m): with dω_l = 4 (v·m) dω_m,
+ *   E = ∫ F V (n·l)(v·m)/(n·m) · D(m)(n·m) dω_m = (1/π) ∫_0^1 2r dr ∫_0^φmax F V (n·l)(v·m)/(n·m) dφ
+ * in the variable r above (even in φ). l is above the horizon iff cos φ > cot θv (tan²θm - 1)/(2 tan θm), so
+ * φmax is π for θm < θ1 = (π/2 - θv)/2, 0 beyond θ2 = (π/2 + θv)/2, and acos of that between: the r integral
+ * is split at θ1 and θ2, where it has kinks, and each piece goes to adaptive Gauss-Kronrod. No cap: terms
+ * that are not energy conserving (implicit, Kelemen) may give more than 1.
  */
-export function dfgSplitSum(mu, alpha, n = 1024) {
-  const v = directionFromCos(Math.min(Math.max(mu, 1e-6), 1));
-  let scale = 0;
-  let bias = 0;
-  for (let i = 0; i < n; i++) {
-    const m = sampleGGXNormal(...hammersley(i, n), alpha);
-    const vm = v[0] * m[0] + v[2] * m[2];
-    if (vm <= 0) continue;
-    const l = reflect(v, m);
-    if (l[2] <= 0) continue;
-    const w = (visibilitySmithGGXCorrelated(l[2], v[2], alpha) * l[2] * vm) / m[2];
-    const fc = (1 - vm) ** 5;
-    scale += (1 - fc) * w;
-    bias += fc * w;
-  }
-  const total = Math.max((scale + bias) / n, 1); // few samples at grazing can overshoot: keep the sum an albedo
-  return [scale / n / total, bias / n / total];
+export function dfgSplitSum(mu, alpha, terms = {}) {
+  const { ndf, visibility } = { ...DFG_DEFAULT_TERMS, ...terms };
+  const tan2 = NDF_TAN2[ndf];
+  const vis = VISIBILITY_TERMS[visibility];
+  if (!tan2 || !vis) throw new Error(`dfgSplitSum: no split sum for D = ${ndf}, V = ${visibility}`);
+  const a = clampAlpha(alpha);
+  const a2 = a * a;
+  const nv = Math.min(Math.max(mu, MU_MIN), 1);
+  const sv = Math.sqrt((1 - nv) * (1 + nv));
+  const params = { alpha: a };
+  const overPhi = (r) => {
+    const t2 = tan2(r, a2);
+    const cm = 1 / Math.sqrt(1 + t2);
+    const sm = Math.sqrt(t2) * cm;
+    const c = (nv * (t2 - 1)) / (2 * sv * Math.sqrt(t2)); // cos φmax (±Inf or NaN only outside (θ1, θ2))
+    const phiMax = c <= -1 ? Math.PI : c >= 1 ? 0 : Math.acos(c);
+    const sum = integrateVector((phi) => {
+      const vm = sv * sm * Math.cos(phi) + nv * cm;
+      const nl = 2 * vm * cm - nv;
+      const w = (vis({ nl, nv, nh: cm, lh: vm }, params) * nl * vm) / cm;
+      const fc = (1 - vm) ** 5;
+      return [(1 - fc) * w, fc * w];
+    }, 0, phiMax, PHI_TOL, 2);
+    return [2 * r * sum[0], 2 * r * sum[1]];
+  };
+  // tan θ1 = μ/(1 + sin θv) and tan θ2 = (1 + sin θv)/μ, by the half-angle tangent
+  const r1 = NDF_R[ndf]((nv / (1 + sv)) ** 2, a2);
+  const r2 = NDF_R[ndf](((1 + sv) / nv) ** 2, a2);
+  const full = smoothedIntegral(overPhi, r1, 1, R_TOL);
+  const part = smoothedIntegral(overPhi, r2, r1, R_TOL);
+  return [(full[0] + part[0]) / Math.PI, (full[1] + part[1]) / Math.PI];
+}
+
+/** Directional albedo with F = 1 (the white furnace): the split sum's scale + bias, for the same terms. */
+export function albedoGGX(mu, alpha, terms = {}) {
+  const [scale, bias] = dfgSplitSum(mu, alpha, terms);
+  return scale + bias;
 }
 
 /** A cosine-distributed direction for (u1, u2): pdf (n·l)/π, so a Lambert estimate is cdiff·L per sample. */

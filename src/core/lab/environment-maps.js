@@ -6,7 +6,7 @@ import * as THREE from 'three';
 import { RoomEnvironment } from 'three/examples/jsm/environments/RoomEnvironment.js';
 import { assembleGlsl } from '../glsl.js';
 import { SHADER_CHUNKS } from '../shader-chunks.js';
-import { dfgSplitSum } from '../../math/integrate.js';
+import { DFG_DEFAULT_TERMS, dfgSplitSum } from '../../math/integrate.js';
 import { buildEnvSampling } from './env-sampling.js';
 import { irradianceMap } from './env-irradiance.js';
 
@@ -16,24 +16,31 @@ export const PREFILTER_LEVELS = 8; // layer k at perceptual roughness k/8, alpha
 const IRRADIANCE_SIZE = [32, 16];
 const DFG_SIZE = 32;
 
-let dfgTable = null;
-/** The DFG table over (n·v, sqrt(alpha)) at texel centres, [scale, bias] per texel; computed once per page. */
-export function dfgTableData() {
-  if (dfgTable) return dfgTable;
+const dfgTables = new Map();
+/**
+ * The DFG table over (n·v, sqrt(alpha)) at texel centres, [scale, bias] per texel, for terms { ndf, visibility }
+ * (see dfgSplitSum; default GGX + height-correlated Smith); computed once per page and per pair of terms.
+ */
+export function dfgTableData(terms = {}) {
+  const t = { ...DFG_DEFAULT_TERMS, ...terms };
+  const key = `${t.ndf}/${t.visibility}`;
+  if (dfgTables.has(key)) return dfgTables.get(key);
   const data = new Float32Array(DFG_SIZE * DFG_SIZE * 4);
   for (let j = 0; j < DFG_SIZE; j++) {
     const r = (j + 0.5) / DFG_SIZE;
     for (let i = 0; i < DFG_SIZE; i++) {
-      const [scale, bias] = dfgSplitSum((i + 0.5) / DFG_SIZE, r * r, 256);
+      const [scale, bias] = dfgSplitSum((i + 0.5) / DFG_SIZE, r * r, t);
       data.set([scale, bias, 0, 1], (j * DFG_SIZE + i) * 4);
     }
   }
-  return (dfgTable = { data, size: DFG_SIZE });
+  const table = { data, size: DFG_SIZE };
+  dfgTables.set(key, table);
+  return table;
 }
 
-/** The DFG table as a filtered texture (half float), one per renderer. */
-export function createDfgTexture() {
-  const dfg = halfTexture({ data: dfgTableData().data, width: DFG_SIZE, height: DFG_SIZE });
+/** The DFG table for terms { ndf, visibility } as a filtered texture (half float), one per renderer and terms. */
+export function createDfgTexture(terms = {}) {
+  const dfg = halfTexture({ data: dfgTableData(terms).data, width: DFG_SIZE, height: DFG_SIZE });
   dfg.wrapS = THREE.ClampToEdgeWrapping;
   return dfg;
 }
