@@ -4,7 +4,7 @@
 // loses by ignoring light that bounces more than once (the white furnace).
 import { ndfGGX, clampAlpha } from './ndf.js';
 import { VISIBILITY_TERMS } from './brdf.js';
-import { integrateVector } from './quadrature.js';
+import { gaussLegendreVector, integrateVector } from './quadrature.js';
 
 /** Direction of polar angle cos = mu in the x-z plane (the view of an isotropic BRDF loses nothing). */
 export function directionFromCos(mu) {
@@ -124,14 +124,19 @@ const NDF_R = {
   ggx: (t2, a2) => Math.sqrt(a2 / (a2 + t2)),
   beckmann: (t2, a2) => Math.exp(-t2 / (2 * a2)),
 };
+// Where a visibility term has kinks along the φ integral, as values of v·m (the integrand depends on φ through
+// v·m alone, with n·l = 2 (v·m)(n·m) - n·v): Cook-Torrance's min() of vm/(nv nm), 2 and 2 nl/nv switches there.
+const VISIBILITY_KINKS = {
+  cookTorrance: (nv, cm) => [2 * nv * cm, nv / cm, ...(4 * cm * cm > 1 ? [(2 * nv * cm) / (4 * cm * cm - 1)] : [])],
+};
 const MU_MIN = 1e-6;
-const PHI_TOL = 1e-8; // absolute, per φ integral
+const PHI_TOL = 1e-7; // absolute, per φ integral times its weight 2r
 const R_TOL = 1e-7; // absolute, per piece of the r integral (E is 1/π of the sum)
 
 /** ∫_lo^hi g with x = lo + (hi - lo) s²(3 - 2s): a kink (x - lo)^3/2 at either end becomes smooth in s. */
-function smoothedIntegral(g, lo, hi, tol) {
+function smoothedIntegral(integrate, g, lo, hi, tol) {
   if (!(hi > lo)) return [0, 0];
-  return integrateVector((s) => {
+  return integrate((s) => {
     const w = 6 * s * (1 - s) * (hi - lo);
     return g(lo + (hi - lo) * s * s * (3 - 2 * s)).map((y) => y * w);
   }, 0, 1, tol, 2);
@@ -149,7 +154,7 @@ function smoothedIntegral(g, lo, hi, tol) {
  * is split at θ1 and θ2, where it has kinks, and each piece goes to adaptive Gauss-Kronrod. No cap: terms
  * that are not energy conserving (implicit, Kelemen) may give more than 1.
  */
-export function dfgSplitSum(mu, alpha, terms = {}) {
+export function dfgSplitSum(mu, alpha, terms = {}, { nodes = 0 } = {}) {
   const { ndf, visibility } = { ...DFG_DEFAULT_TERMS, ...terms };
   const tan2 = NDF_TAN2[ndf];
   const vis = VISIBILITY_TERMS[visibility];
@@ -159,26 +164,48 @@ export function dfgSplitSum(mu, alpha, terms = {}) {
   const nv = Math.min(Math.max(mu, MU_MIN), 1);
   const sv = Math.sqrt((1 - nv) * (1 + nv));
   const params = { alpha: a };
+  const angles = { nl: 0, nv, nh: 0, lh: 0 }; // reused: the φ integrand runs ~10⁴ times per call
+  const integrate = nodes ? (f, lo, hi, tol, dim) => gaussLegendreVector(f, lo, hi, nodes, dim) : integrateVector;
   const overPhi = (r) => {
     const t2 = tan2(r, a2);
     const cm = 1 / Math.sqrt(1 + t2);
     const sm = Math.sqrt(t2) * cm;
     const c = (nv * (t2 - 1)) / (2 * sv * Math.sqrt(t2)); // cos φmax (±Inf or NaN only outside (θ1, θ2))
     const phiMax = c <= -1 ? Math.PI : c >= 1 ? 0 : Math.acos(c);
-    const sum = integrateVector((phi) => {
+    const integrand = (phi) => {
       const vm = sv * sm * Math.cos(phi) + nv * cm;
       const nl = 2 * vm * cm - nv;
-      const w = (vis({ nl, nv, nh: cm, lh: vm }, params) * nl * vm) / cm;
+      angles.nl = nl;
+      angles.nh = cm;
+      angles.lh = vm;
+      const w = (vis(angles, params) * nl * vm) / cm;
       const fc = (1 - vm) ** 5;
       return [(1 - fc) * w, fc * w];
-    }, 0, phiMax, PHI_TOL, 2);
+    };
+    // pieces between the kinks of V, the last with its nodes crowded toward φmax by φ = φmax - Δ(1 - s)³:
+    // there n·l -> 0 and V (n·l) turns over within a layer as thin as the lesser of n·v and alpha
+    const cuts = [0, ...(VISIBILITY_KINKS[visibility]?.(nv, cm) ?? [])
+      .map((vm) => Math.acos(Math.min(Math.max((vm - nv * cm) / (sv * sm), -1), 1)))
+      .filter((phi) => phi > 0 && phi < phiMax).sort((x, y) => x - y), phiMax];
+    const tol = PHI_TOL / (2 * r) / (cuts.length - 1); // the tolerance of what the r integral adds
+    const sum = [0, 0];
+    for (let k = 0; k + 1 < cuts.length; k++) {
+      const [lo, hi] = [cuts[k], cuts[k + 1]];
+      const piece = integrate((s) => {
+        const q = 1 - s;
+        const y = integrand(hi - (hi - lo) * q * q * q);
+        return [y[0] * 3 * q * q * (hi - lo), y[1] * 3 * q * q * (hi - lo)];
+      }, 0, 1, tol, 2);
+      sum[0] += piece[0];
+      sum[1] += piece[1];
+    }
     return [2 * r * sum[0], 2 * r * sum[1]];
   };
   // tan θ1 = μ/(1 + sin θv) and tan θ2 = (1 + sin θv)/μ, by the half-angle tangent
   const r1 = NDF_R[ndf]((nv / (1 + sv)) ** 2, a2);
   const r2 = NDF_R[ndf](((1 + sv) / nv) ** 2, a2);
-  const full = smoothedIntegral(overPhi, r1, 1, R_TOL);
-  const part = smoothedIntegral(overPhi, r2, r1, R_TOL);
+  const full = smoothedIntegral(integrate, overPhi, r1, 1, R_TOL);
+  const part = smoothedIntegral(integrate, overPhi, r2, r1, R_TOL);
   return [(full[0] + part[0]) / Math.PI, (full[1] + part[1]) / Math.PI];
 }
 

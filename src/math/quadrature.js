@@ -83,3 +83,42 @@ export function integrateVector(f, a, b, tol, dim) {
 export function integrate(f, a, b, tol = 1e-10) {
   return integrateVector((x) => [f(x)], a, b, tol, 1)[0];
 }
+
+const legendreCache = new Map();
+/** Nodes and weights of the n-point Gauss-Legendre rule on [-1, 1] (Newton's method on P_n; exact to ~1e-15). */
+export function gaussLegendre(n) {
+  if (legendreCache.has(n)) return legendreCache.get(n);
+  const x = new Float64Array(n);
+  const w = new Float64Array(n);
+  for (let i = 0; i < n; i++) {
+    let z = Math.cos((Math.PI * (i + 0.75)) / (n + 0.5));
+    let dp = 1;
+    for (let it = 0; it < 100; it++) {
+      let p0 = 1;
+      let p1 = z;
+      for (let k = 2; k <= n; k++) [p0, p1] = [p1, ((2 * k - 1) * z * p1 - (k - 1) * p0) / k];
+      dp = (n * (z * p1 - p0)) / (z * z - 1);
+      const dz = p1 / dp;
+      z -= dz;
+      if (Math.abs(dz) < 1e-16) break;
+    }
+    x[i] = z;
+    w[i] = 2 / ((1 - z * z) * dp * dp);
+  }
+  const rule = { x, w };
+  legendreCache.set(n, rule);
+  return rule;
+}
+
+/** ∫_a^b f by the fixed n-point Gauss-Legendre rule, for an f returning `dim` values. */
+export function gaussLegendreVector(f, a, b, n, dim) {
+  const sum = new Float64Array(dim);
+  if (!(b > a)) return sum;
+  const { x, w } = gaussLegendre(n);
+  const half = (b - a) / 2;
+  for (let i = 0; i < n; i++) {
+    const y = f(a + half * (1 + x[i]));
+    for (let d = 0; d < dim; d++) sum[d] += w[i] * half * y[d];
+  }
+  return sum;
+}
