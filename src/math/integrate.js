@@ -124,14 +124,15 @@ const NDF_R = {
   ggx: (t2, a2) => Math.sqrt(a2 / (a2 + t2)),
   beckmann: (t2, a2) => Math.exp(-t2 / (2 * a2)),
 };
-// Where a visibility term has kinks along the φ integral, as values of v·m (the integrand depends on φ through
+// Where a visibility term has kinks, as values of v·m given n·v and n·m (the φ integrand depends on φ through
 // v·m alone, with n·l = 2 (v·m)(n·m) - n·v): Cook-Torrance's min() of vm/(nv nm), 2 and 2 nl/nv switches there.
 const VISIBILITY_KINKS = {
-  cookTorrance: (nv, cm) => [2 * nv * cm, nv / cm, ...(4 * cm * cm > 1 ? [(2 * nv * cm) / (4 * cm * cm - 1)] : [])],
+  cookTorrance: [(nv, cm) => 2 * nv * cm, (nv, cm) => nv / cm, (nv, cm) => (4 * cm * cm > 1 ? (2 * nv * cm) / (4 * cm * cm - 1) : Infinity)],
 };
 const MU_MIN = 1e-6;
 const PHI_TOL = 1e-7; // absolute, per φ integral times its weight 2r
-const R_TOL = 1e-7; // absolute, per piece of the r integral (E is 1/π of the sum)
+const R_TOL = 1e-7; // absolute, for the r integral (E is 1/π of it)
+const KINK_SCAN = 96; // steps in θm when looking for where a kink enters the φ range
 
 /** ∫_lo^hi g with x = lo + (hi - lo) s²(3 - 2s): a kink (x - lo)^3/2 at either end becomes smooth in s. */
 function smoothedIntegral(integrate, g, lo, hi, tol) {
@@ -142,17 +143,76 @@ function smoothedIntegral(integrate, g, lo, hi, tol) {
   }, 0, 1, tol, 2);
 }
 
+/** Roots of h in (0, b) by a scan of `steps` and bisection. */
+function roots(h, b, steps) {
+  const found = [];
+  for (let i = 0, x0 = 0, h0 = h(0); i < steps; i++) {
+    const x1 = (b * (i + 1)) / steps;
+    const h1 = h(x1);
+    if (h0 * h1 < 0) {
+      let [lo, hi] = [x0, x1];
+      for (let k = 0; k < 60; k++) [lo, hi] = h(lo) * h((lo + hi) / 2) <= 0 ? [lo, (lo + hi) / 2] : [(lo + hi) / 2, hi];
+      found.push((lo + hi) / 2);
+    }
+    [x0, h0] = [x1, h1];
+  }
+  return found;
+}
+
+/**
+ * The polar angles θm below θ2 where a kink of V enters the φ range: where it meets v·m at φ = 0, cos(θm - θv),
+ * at φ = π, cos(θm + θv), or at φmax, where n·l = 0: v·m = n·v/(2 n·m). The r integral is cut there too.
+ */
+function kinkAngles(kinks, nv, sv, theta2) {
+  const tv = Math.atan2(sv, nv);
+  const ends = [(t) => Math.cos(t - tv), (t) => Math.cos(t + tv), (t) => nv / (2 * Math.cos(t))];
+  return kinks.flatMap((k) => ends.flatMap((end) => roots((t) => k(nv, Math.cos(t)) - end(t), theta2, KINK_SCAN)));
+}
+
+/**
+ * ∫_0^φmax of the split sum's integrand [(1 - Fc) w, Fc w], w = V (n·l)(v·m)/(n·m), for the normals at polar
+ * angle θm (cos cm, sin sm): in pieces between the kinks of V, each with its nodes crowded toward its end by
+ * φ = hi - Δ(1 - s)³, for at φmax n·l -> 0 and V (n·l) turns over in a layer as thin as the lesser of n·v and alpha.
+ */
+function phiIntegral({ nv, sv, vis, kinks, params, integrate }, cm, sm, phiMax, tol) {
+  const angles = { nl: 0, nv, nh: cm, lh: 0 };
+  const integrand = (phi) => {
+    const vm = sv * sm * Math.cos(phi) + nv * cm;
+    const nl = 2 * vm * cm - nv;
+    angles.nl = nl;
+    angles.lh = vm;
+    const w = (vis(angles, params) * nl * vm) / cm;
+    const fc = (1 - vm) ** 5;
+    return [(1 - fc) * w, fc * w];
+  };
+  const cuts = [0, ...kinks.map((k) => Math.acos(Math.min(Math.max((k(nv, cm) - nv * cm) / (sv * sm), -1), 1)))
+    .filter((phi) => phi > 0 && phi < phiMax).sort((x, y) => x - y), phiMax];
+  const sum = [0, 0];
+  for (let k = 0; k + 1 < cuts.length; k++) {
+    const [lo, hi] = [cuts[k], cuts[k + 1]];
+    const piece = integrate((s) => {
+      const q = 1 - s;
+      const y = integrand(hi - (hi - lo) * q * q * q);
+      return [y[0] * 3 * q * q * (hi - lo), y[1] * 3 * q * q * (hi - lo)];
+    }, 0, 1, tol / (cuts.length - 1), 2);
+    sum[0] += piece[0];
+    sum[1] += piece[1];
+  }
+  return sum;
+}
+
 /**
  * The split-sum DFG term (Karis 2013): ∫ f(l, v)(n·l) dω = F0·scale + bias for Schlick's F, as [scale, bias],
  * since F = F0 (1 - Fc) + Fc with Fc = (1 - v·h)^5. `terms`: { ndf: 'ggx' | 'beckmann', visibility: a key of
- * VISIBILITY_TERMS }, both with roughness alpha (default GGX + height-correlated Smith).
+ * VISIBILITY_TERMS }, both with roughness alpha (default GGX + height-correlated Smith). Adaptive to ~1e-7
+ * unless `nodes` asks for a fixed Gauss-Legendre rule of that many nodes on every piece (faster, for tables).
  *
  * Deterministic quadrature over the microfacet normal m, l = reflect(v, m): with dω_l = 4 (v·m) dω_m,
  *   E = ∫ F V (n·l)(v·m)/(n·m) · D(m)(n·m) dω_m = (1/π) ∫_0^1 2r dr ∫_0^φmax F V (n·l)(v·m)/(n·m) dφ
  * in the variable r above (even in φ). l is above the horizon iff cos φ > cot θv (tan²θm - 1)/(2 tan θm), so
  * φmax is π for θm < θ1 = (π/2 - θv)/2, 0 beyond θ2 = (π/2 + θv)/2, and acos of that between: the r integral
- * is split at θ1 and θ2, where it has kinks, and each piece goes to adaptive Gauss-Kronrod. No cap: terms
- * that are not energy conserving (implicit, Kelemen) may give more than 1.
+ * is cut at θ1 and θ2 (and at the kinks of V), where it has kinks, and each piece goes to Gauss-Kronrod. No
+ * cap: terms that do not conserve energy (e.g. a V that does not match the D) may give more than 1.
  */
 export function dfgSplitSum(mu, alpha, terms = {}, { nodes = 0 } = {}) {
   const { ndf, visibility } = { ...DFG_DEFAULT_TERMS, ...terms };
@@ -163,50 +223,30 @@ export function dfgSplitSum(mu, alpha, terms = {}, { nodes = 0 } = {}) {
   const a2 = a * a;
   const nv = Math.min(Math.max(mu, MU_MIN), 1);
   const sv = Math.sqrt((1 - nv) * (1 + nv));
-  const params = { alpha: a };
-  const angles = { nl: 0, nv, nh: 0, lh: 0 }; // reused: the φ integrand runs ~10⁴ times per call
+  const kinks = VISIBILITY_KINKS[visibility] ?? [];
   const integrate = nodes ? (f, lo, hi, tol, dim) => gaussLegendreVector(f, lo, hi, nodes, dim) : integrateVector;
+  const context = { nv, sv, vis, kinks, params: { alpha: a }, integrate };
   const overPhi = (r) => {
     const t2 = tan2(r, a2);
     const cm = 1 / Math.sqrt(1 + t2);
     const sm = Math.sqrt(t2) * cm;
     const c = (nv * (t2 - 1)) / (2 * sv * Math.sqrt(t2)); // cos φmax (±Inf or NaN only outside (θ1, θ2))
     const phiMax = c <= -1 ? Math.PI : c >= 1 ? 0 : Math.acos(c);
-    const integrand = (phi) => {
-      const vm = sv * sm * Math.cos(phi) + nv * cm;
-      const nl = 2 * vm * cm - nv;
-      angles.nl = nl;
-      angles.nh = cm;
-      angles.lh = vm;
-      const w = (vis(angles, params) * nl * vm) / cm;
-      const fc = (1 - vm) ** 5;
-      return [(1 - fc) * w, fc * w];
-    };
-    // pieces between the kinks of V, the last with its nodes crowded toward φmax by φ = φmax - Δ(1 - s)³:
-    // there n·l -> 0 and V (n·l) turns over within a layer as thin as the lesser of n·v and alpha
-    const cuts = [0, ...(VISIBILITY_KINKS[visibility]?.(nv, cm) ?? [])
-      .map((vm) => Math.acos(Math.min(Math.max((vm - nv * cm) / (sv * sm), -1), 1)))
-      .filter((phi) => phi > 0 && phi < phiMax).sort((x, y) => x - y), phiMax];
-    const tol = PHI_TOL / (2 * r) / (cuts.length - 1); // the tolerance of what the r integral adds
-    const sum = [0, 0];
-    for (let k = 0; k + 1 < cuts.length; k++) {
-      const [lo, hi] = [cuts[k], cuts[k + 1]];
-      const piece = integrate((s) => {
-        const q = 1 - s;
-        const y = integrand(hi - (hi - lo) * q * q * q);
-        return [y[0] * 3 * q * q * (hi - lo), y[1] * 3 * q * q * (hi - lo)];
-      }, 0, 1, tol, 2);
-      sum[0] += piece[0];
-      sum[1] += piece[1];
-    }
+    const sum = phiIntegral(context, cm, sm, phiMax, PHI_TOL / (2 * r)); // the tolerance of what the r integral adds
     return [2 * r * sum[0], 2 * r * sum[1]];
   };
   // tan θ1 = μ/(1 + sin θv) and tan θ2 = (1 + sin θv)/μ, by the half-angle tangent
-  const r1 = NDF_R[ndf]((nv / (1 + sv)) ** 2, a2);
-  const r2 = NDF_R[ndf](((1 + sv) / nv) ** 2, a2);
-  const full = smoothedIntegral(integrate, overPhi, r1, 1, R_TOL);
-  const part = smoothedIntegral(integrate, overPhi, r2, r1, R_TOL);
-  return [(full[0] + part[0]) / Math.PI, (full[1] + part[1]) / Math.PI];
+  const rOf = (tanTheta) => NDF_R[ndf](tanTheta * tanTheta, a2);
+  const theta2 = Math.atan((1 + sv) / nv);
+  const cuts = [...new Set([rOf((1 + sv) / nv), rOf(nv / (1 + sv)), 1,
+    ...kinkAngles(kinks, nv, sv, theta2).map((t) => rOf(Math.tan(t)))])].sort((x, y) => x - y);
+  const sum = [0, 0];
+  for (let k = 0; k + 1 < cuts.length; k++) {
+    const piece = smoothedIntegral(integrate, overPhi, cuts[k], cuts[k + 1], R_TOL / (cuts.length - 1));
+    sum[0] += piece[0];
+    sum[1] += piece[1];
+  }
+  return [sum[0] / Math.PI, sum[1] / Math.PI];
 }
 
 /** Directional albedo with F = 1 (the white furnace): the split sum's scale + bias, for the same terms. */
