@@ -101,6 +101,7 @@ export const STRESS_DOMAINS = {
   albedoGGX: { args: [COS, ALPHA], range: ZERO_TO_ONE },
   // a mismatched pair (GGX's D with Beckmann's Smith) sends back up to ~1.6 at grazing
   dfgSplitSum: { args: [COS, ALPHA, SPLIT_SUM_TERMS], range: [0, 2] },
+  dfgTableUv: { args: [COS, ALPHA], range: ZERO_TO_ONE },
   sampleCosine: { args: [[0, 0.5, 1 - 1e-12, 1], [0, 0.5, 1]], range: [-1, 1] },
   sampleCone: { args: [[0, 0.5, 1], [0, 0.5, 1], [-1, 0, 0.9999, 1]], range: [-1, 1] },
   sphereLightCLight: { args: [[0, 1, 1e4], [0, 1e-4, 0.05, 1]], range: NON_NEGATIVE },

@@ -56,6 +56,14 @@ float albedoGGX(float mu, float alpha, int n) {
   return ab.x + ab.y;
 }
 
+// Texture coordinates of (n·v, alpha) in the DFG table, mirrors dfgTableUv: texel centres edge to edge over
+// (n·v)^0.4 and alpha^(1/3) (DFG_TABLE_SIZE and the warp are those of src/math/integrate.js)
+#define DFG_TABLE_SIZE 64.0
+vec2 dfgTableUv(float nv, float alpha) {
+  vec2 x = pow(clamp(vec2(nv, alpha), 0.0, 1.0), vec2(0.4, 1.0 / 3.0));
+  return (x * (DFG_TABLE_SIZE - 1.0) + 0.5) / DFG_TABLE_SIZE;
+}
+
 vec3 sampleCosine(vec2 u) {
   float r = sqrt(u.x);
   float phi = 2.0 * PI * u.y;

@@ -104,6 +104,10 @@ export const PARITY_CASES = [
     name: 'sampleCosine', chunk: 'integrate.glsl', glsl: 'sampleCosine(a.xy)', outputs: 3, js: M.sampleCosine, range: [-1, 1], args: cartesian([0, 1e-6, 0.3, 0.999, 1], [0, 0.25, 0.7]),
     tolerance: TRIG_TOLERANCE,
   },
+  {
+    name: 'dfgTableUv', chunk: 'integrate.glsl', glsl: 'dfgTableUv(a.x, a.y)', outputs: 2, js: M.dfgTableUv, range: [0, 1],
+    args: cartesian(GRIDS.cosCoarse, GRIDS.alpha),
+  },
   // u1 up to 1 - 1e-6 (the samplers take u1 in [0, 1)), alpha from the clamp to 1
   ...['sampleGGXNormal', 'sampleBeckmannNormal'].map((fn) => ({
     name: fn, chunk: 'integrate.glsl', glsl: `${fn}(a.xy, a.z)`, outputs: 3, js: M[fn], range: [-1, 1],

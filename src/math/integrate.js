@@ -249,6 +249,24 @@ export function dfgSplitSum(mu, alpha, terms = {}, { nodes = 0 } = {}) {
   return [sum[0] / Math.PI, sum[1] / Math.PI];
 }
 
+/** Texels per side of the DFG table the GPU samples (environment-maps.js builds it). */
+export const DFG_TABLE_SIZE = 64;
+/** Where the DFG table keeps (n·v, alpha): texel i, j (0-based) holds n·v = (i/63)^2.5, alpha = (j/63)³. */
+export const DFG_TABLE_WARP = [2.5, 3];
+
+/**
+ * Texture coordinates of (n·v, alpha) in the DFG table: texel centres run edge to edge over (n·v)^0.4 and
+ * alpha^(1/3), which spend the texels where the split sum changes fast (grazing view, low roughness), so that
+ * bilinear filtering of half floats stays within 1e-3 of dfgSplitSum for alpha >= 0.02, 1.5e-3 down to 0.01
+ * (tests/unit/dfg-table.test.js).
+ */
+export function dfgTableUv(nv, alpha) {
+  const n = DFG_TABLE_SIZE;
+  const x = Math.min(Math.max(nv, 0), 1) ** (1 / DFG_TABLE_WARP[0]);
+  const y = Math.min(Math.max(alpha, 0), 1) ** (1 / DFG_TABLE_WARP[1]);
+  return [(x * (n - 1) + 0.5) / n, (y * (n - 1) + 0.5) / n];
+}
+
 /** Directional albedo with F = 1 (the white furnace): the split sum's scale + bias, for the same terms. */
 export function albedoGGX(mu, alpha, terms = {}) {
   const [scale, bias] = dfgSplitSum(mu, alpha, terms);

@@ -1,0 +1,61 @@
+// The DFG table as the GPU samples it (half floats, bilinear between texel centres, clamped at the edges)
+// against the adaptive quadrature dfgSplitSum it is built from.
+import { describe, expect, it } from 'vitest';
+import { DataUtils } from 'three';
+import { DFG_TABLE_SIZE, dfgSplitSum, dfgTableUv } from '../../src/math/integrate.js';
+import { dfgTableData } from '../../src/core/lab/environment-maps.js';
+
+const half = (x) => DataUtils.fromHalfFloat(DataUtils.toHalfFloat(x));
+
+/** texture(table, uv).rg with LinearFilter and ClampToEdge, from half-float texels. */
+function sampleTable({ data, size }, [u, v]) {
+  const texel = (c) => Math.min(Math.max(c * size - 0.5, 0), size - 1);
+  const [x, y] = [texel(u), texel(v)];
+  const [i, j] = [Math.min(Math.floor(x), size - 2), Math.min(Math.floor(y), size - 2)];
+  const [fx, fy] = [x - i, y - j];
+  const at = (ii, jj, k) => half(data[(jj * size + ii) * 4 + k]);
+  return [0, 1].map((k) => (1 - fy) * ((1 - fx) * at(i, j, k) + fx * at(i + 1, j, k)) + fy * ((1 - fx) * at(i, j + 1, k) + fx * at(i + 1, j + 1, k)));
+}
+
+// probes between and on texel centres, denser toward grazing view and low roughness
+const MUS = [1e-3, 0.004, 0.012, 0.025, 0.04, 0.065, 0.1, 0.17, 0.3, 0.5, 0.75, 0.95, 1];
+const ALPHAS = [0.02, 0.025, 0.033, 0.045, 0.07, 0.12, 0.22, 0.4, 0.7, 1];
+const LOW_ALPHAS = [0.01, 0.011, 0.013, 0.016];
+
+function worstError(terms, mus = MUS, alphas = ALPHAS) {
+  const table = dfgTableData(terms);
+  let worst = { error: 0 };
+  for (const alpha of alphas) {
+    for (const mu of mus) {
+      const got = sampleTable(table, dfgTableUv(mu, alpha));
+      const ref = dfgSplitSum(mu, alpha, terms);
+      const error = Math.max(Math.abs(got[0] - ref[0]), Math.abs(got[1] - ref[1]));
+      if (error > worst.error) worst = { error, mu, alpha };
+    }
+  }
+  return worst;
+}
+
+describe('DFG table as the GPU samples it', { timeout: 60_000 }, () => {
+  it.each([
+    [{}], [{ ndf: 'beckmann', visibility: 'smithBeckmannSeparable' }], [{ visibility: 'cookTorrance' }], [{ visibility: 'kelemen' }],
+  ])('is within 1e-3 of dfgSplitSum over n·v in [1e-3, 1], alpha in [0.02, 1], 1.5e-3 down to alpha 0.01, for %o', (terms) => {
+    const worst = worstError(terms);
+    expect(worst.error, JSON.stringify(worst)).toBeLessThan(1e-3);
+    const low = worstError(terms, MUS.slice(0, 8), LOW_ALPHAS);
+    expect(low.error, JSON.stringify(low)).toBeLessThan(1.5e-3);
+  });
+  it('is not, below alpha = 0.01 at grazing view (where the split sum turns over within n·v ~ alpha)', () => {
+    expect(worstError({}, [1e-3, 0.003, 0.007], [1e-3, 0.003]).error).toBeGreaterThan(1e-3);
+  });
+  it('is cached per pair of terms, the default being GGX with height-correlated Smith', () => {
+    expect(dfgTableData()).toBe(dfgTableData({ ndf: 'ggx', visibility: 'smithGGXCorrelated' }));
+    expect(dfgTableData({ visibility: 'kelemen' })).not.toBe(dfgTableData());
+    expect(dfgTableData().size).toBe(DFG_TABLE_SIZE);
+  });
+  it('puts n·v = 0 and 1, alpha = 0 and 1 on the first and last texel centres', () => {
+    const n = DFG_TABLE_SIZE;
+    expect(dfgTableUv(0, 0)).toEqual([0.5 / n, 0.5 / n]);
+    expect(dfgTableUv(1, 1)).toEqual([1 - 0.5 / n, 1 - 0.5 / n]);
+  });
+});
