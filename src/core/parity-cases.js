@@ -85,19 +85,6 @@ export const PARITY_CASES = [
       Math.sin(tl), 0, Math.cos(tl), alpha, Math.sin(tv) * Math.cos(phi), Math.sin(tv) * Math.sin(phi), Math.cos(tv), 0,
     ]),
   },
-  {
-    name: 'albedoGGX (256 samples)',
-    chunk: 'integrate.glsl',
-    glsl: 'albedoGGX(a.x, a.y, 256)',
-    outputs: 1,
-    js: (mu, alpha) => M.albedoGGX(mu, alpha, 256),
-    range: [0, 1],
-    args: cartesian(GRIDS.cosCoarse, GRIDS.alpha),
-  },
-  {
-    name: 'dfgSplitSum (256 samples)', chunk: 'integrate.glsl', glsl: 'dfgSplitSum(a.x, a.y, 256)', outputs: 2,
-    js: (mu, alpha) => M.dfgSplitSum(mu, alpha, 256), range: [0, 1], args: cartesian(GRIDS.cosCoarse, GRIDS.alpha),
-  },
   // directions built from sin and cos of an angle: there the GPU's own sin and cos set the accuracy (SwiftShader's
   // are up to ~1.8e-4 off; hardware's ~1e-6), not the formulas
   {

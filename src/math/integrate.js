@@ -100,14 +100,12 @@ export function ndfProjectedIntegral(D, n = 4000) {
   return ((2 * Math.PI * sum * h) / 3);
 }
 
-/** Cosine-weighted average of E over incoming directions, E_avg = 2 ∫_0^1 E(mu) mu dmu (midpoint rule). */
-export function averageAlbedo(E, n = 64) {
-  let sum = 0;
-  for (let i = 0; i < n; i++) {
-    const mu = (i + 0.5) / n;
-    sum += E(mu) * mu;
-  }
-  return (2 * sum) / n;
+/**
+ * Cosine-weighted average of E over incoming directions, E_avg = 2 ∫_0^1 E(mu) mu dmu, by n-point Gauss-Legendre
+ * in s = sqrt(mu) (E_avg = 4 ∫_0^1 E(s²) s³ ds), which crowds the nodes toward grazing where E turns fastest.
+ */
+export function averageAlbedo(E, n = 16) {
+  return gaussLegendreVector((s) => [4 * E(s * s) * s * s * s], 0, 1, n, 1)[0];
 }
 
 /** The split sum's terms and their defaults: GGX with height-correlated Smith. */
@@ -267,9 +265,9 @@ export function dfgTableUv(nv, alpha) {
   return [(x * (n - 1) + 0.5) / n, (y * (n - 1) + 0.5) / n];
 }
 
-/** Directional albedo with F = 1 (the white furnace): the split sum's scale + bias, for the same terms. */
-export function albedoGGX(mu, alpha, terms = {}) {
-  const [scale, bias] = dfgSplitSum(mu, alpha, terms);
+/** Directional albedo with F = 1 (the white furnace): the split sum's scale + bias, for the same terms and options. */
+export function albedoGGX(mu, alpha, terms = {}, options = {}) {
+  const [scale, bias] = dfgSplitSum(mu, alpha, terms, options);
   return scale + bias;
 }
 

@@ -1,7 +1,10 @@
 // The microfacet chapters (BRDF, microfacet theory, NDF, visibility) in a real Chromium.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { distinctColors, getState, launchBrowser, open, redAt, setControl, settle, shot, widget } from './helpers.js';
+import { distinctColors, getState, launchBrowser, open, redAt, setControl, settle, shot, widget, withPixels } from './helpers.js';
 import { linearToSrgb } from '../../src/math/color.js';
+import { albedoGGX } from '../../src/math/integrate.js';
+
+const DEG = Math.PI / 180;
 
 let browser;
 beforeAll(async () => {
@@ -94,12 +97,14 @@ describe('visibility-explorer', () => {
 
 describe('energy (white furnace)', () => {
   it('renders E = 1 - ln 2 at the centre of the alpha = 1 sphere, and a near-invisible smooth sphere', async () => {
-    const page = await open(browser, 'embed.html?w=energy&alphas=0.05,1.0&samples=256', { width: 900, height: 900 });
+    // samples and sampleCount were removed: an old URL with them still loads
+    const page = await open(browser, 'embed.html?w=energy&alphas=0.05,1.0&samples=256&sampleCount=4096', { width: 900, height: 900 });
     await widget(page, 'energy');
     await settle(page, 1500);
     const albedos = await page.evaluate(() => globalThis.__shadingLab.widgets['energy'].getAlbedos());
     console.log(`albedo: ${albedos.map((a) => `α ${a.alpha}: E(1) ${a.atNormal.toFixed(4)}, E_avg ${a.average.toFixed(4)}`).join('; ')}`);
-    expect(albedos[1].atNormal).toBeCloseTo(1 - Math.log(2), 3);
+    expect(albedos[1].atNormal).toBeCloseTo(1 - Math.log(2), 6);
+    expect(Object.keys(await getState(page, 'energy'))).toEqual(['alphas']);
     // read the rendered centres back: cell i of 2 spans half the canvas
     const png = await shot(page, '.sphere-grid canvas');
     const centres = await redAt(page, png, [[0.25, 0.5], [0.75, 0.5]]);
@@ -107,6 +112,39 @@ describe('energy (white furnace)', () => {
     console.log(`furnace centres (8-bit): α 0.05 → ${centres[0]}, α 1 → ${centres[1]} (expected ${expected})`);
     expect(centres[0]).toBeGreaterThan(250);
     expect(Math.abs(centres[1] - expected)).toBeLessThanOrEqual(3);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+  it("the rim of the alpha = 0.5 sphere matches albedoGGX pixel by pixel out to 85° (E 0.872 there, not 64 samples' 0.959)", async () => {
+    const page = await open(browser, 'embed.html?w=energy&alphas=0.5', { width: 900, height: 900 });
+    await widget(page, 'energy');
+    await settle(page, 1500);
+    const png = await shot(page, '.sphere-grid canvas');
+    // one cell: the sphere fills the square canvas but for the camera's margin (half extent 1.08, sphere-grid.js)
+    const row = await withPixels(page, png, (image) => {
+      const y = Math.floor(image.height / 2);
+      return { width: image.width, height: image.height, red: Array.from({ length: image.width }, (_, x) => image.data[(y * image.width + x) * 4]) };
+    });
+    const side = Math.min(row.width, row.height);
+    const radius = side / 2 / 1.08;
+    const dy = (Math.floor(row.height / 2) + 0.5 - row.height / 2) / radius;
+    let worst = { diff: 0 };
+    let at85 = null;
+    for (let x = Math.ceil(row.width / 2); x < row.width; x++) {
+      const d = Math.hypot((x + 0.5 - row.width / 2) / radius, dy);
+      if (d > 1 - 0.75 / radius) break; // pixels the silhouette may cut (more than half a diagonal from their centre)
+      const nv = Math.sqrt(1 - d * d);
+      if (nv > Math.cos(70 * DEG)) continue;
+      const expected = linearToSrgb(albedoGGX(nv, 0.5)) * 255;
+      const diff = Math.abs(row.red[x] - expected);
+      if (diff > worst.diff) worst = { diff, nv, got: row.red[x], expected };
+      if (!at85 || Math.abs(nv - Math.cos(85 * DEG)) < Math.abs(at85.nv - Math.cos(85 * DEG))) at85 = { nv, got: row.red[x], expected };
+    }
+    console.log(`canvas ${row.width}x${row.height}, sphere radius ${radius.toFixed(1)} px; furnace rim α 0.5: pixel at n·v ${at85.nv.toFixed(4)} reads ${at85.got}, albedoGGX gives ${at85.expected.toFixed(1)}; worst over 70°+ ${JSON.stringify(worst)}`);
+    expect(Math.acos(at85.nv) / DEG).toBeGreaterThan(84.5);
+    expect(Math.abs(at85.got - at85.expected)).toBeLessThanOrEqual(2);
+    expect(worst.diff).toBeLessThanOrEqual(2.5);
+    expect(at85.got).toBeLessThan(linearToSrgb(0.959) * 255 - 5); // what 64 Hammersley samples gave
     expect(page.errors).toEqual([]);
     await page.close();
   });

@@ -29,3 +29,11 @@ describe('adaptive Gauss-Kronrod', () => {
     expect([...integrateVector(() => [1], 1, 1, 1e-9, 1)]).toEqual([0]);
   });
 });
+
+describe('averageAlbedo', () => {
+  it('is 2 ∫ E μ dμ: 1 for E = 1, 2/3 for E = μ, 2/(k + 2) for E = μ^k (closed forms)', async () => {
+    const { averageAlbedo } = await import('../../src/math/integrate.js');
+    expect(averageAlbedo(() => 1)).toBeCloseTo(1, 13);
+    for (const k of [1, 2.5, 7]) expect(averageAlbedo((mu) => mu ** k)).toBeCloseTo(2 / (k + 2), 12);
+  });
+});
