@@ -7,7 +7,7 @@ const ETA = [1e-3, 1 - 1e-6, 1, 1 + 1e-6, 1.5, 100];
 const K = [0, 1e-3, 1, 10];
 const F0 = [0, 0.04, 0.5, 1];
 const SRGB = [-1, 0, 1e-4, 0.5, 1, 2];
-const EXPONENT = [0, 1, 1e3, 1e6, 1e7];
+const EXPONENT = [0, 1, 1e3, 1e6, 1e7, 2e8, 1e300, Number.MAX_VALUE, Infinity];
 const ABC = [0, 0.01, 1, 1e4, 1e5];
 const SGD_P = [-1, 0, 0.64, 1, 1.9, 3];
 const ANGLE = [0, 1e-7, 0.7, Math.PI / 2, Math.PI];
@@ -50,12 +50,12 @@ export const STRESS_DOMAINS = {
   clampAlpha: { args: [ALPHA], range: [1e-4, 1] },
   clampAbc: { args: [ABC, ABC], range: [0.01, 1e4] },
   clampSgd: { args: [ALPHA, SGD_P], range: [0, 2] },
-  log1pSmall: { args: [[-0.5, -1e-9, 0, 1e-9, 0.5, 10]], range: FINITE },
   ndfGGX: { args: [COS, ALPHA], range: NON_NEGATIVE },
   ndfGGXFromSin2: { args: [COS, [0, 1e-12, 0.5, 1], ALPHA], range: NON_NEGATIVE },
   ndfBeckmann: { args: [COS, ALPHA], range: NON_NEGATIVE },
   ndfBeckmannFromSin2: { args: [COS, [0, 1e-12, 0.5, 1], ALPHA], range: NON_NEGATIVE },
   ndfBlinnPhong: { args: [COS, EXPONENT], range: NON_NEGATIVE },
+  ndfBlinnPhongFromSin2: { args: [COS, [0, 1e-300, 1e-12, 0.5, 1], EXPONENT], range: NON_NEGATIVE },
   ndfABC: { args: [COS, ABC, ABC], range: NON_NEGATIVE },
   abcNormalization: { args: [[0.01, 0.5, 1, 1e4], [0.05, 1, 2, 20]], range: [0, 1] },
   ndfSGD: { args: [COS, ALPHA, SGD_P], range: NON_NEGATIVE },
