@@ -174,29 +174,36 @@ function kinkAngles(kinks, nv, sv, theta2) {
  */
 function phiIntegral({ nv, sv, vis, kinks, params, integrate }, cm, sm, phiMax, tol) {
   const angles = { nl: 0, nv, nh: cm, lh: 0 };
-  const integrand = (phi) => {
+  const y = [0, 0]; // reused: the integrators read it before the next call
+  const integrand = (phi, weight) => {
     const vm = sv * sm * Math.cos(phi) + nv * cm;
     const nl = 2 * vm * cm - nv;
     angles.nl = nl;
     angles.lh = vm;
-    const w = (vis(angles, params) * nl * vm) / cm;
+    const w = (vis(angles, params) * nl * vm * weight) / cm;
     const fc = (1 - vm) ** 5;
-    return [(1 - fc) * w, fc * w];
+    y[0] = (1 - fc) * w;
+    y[1] = fc * w;
+    return y;
   };
-  const cuts = [0, ...kinks.map((k) => Math.acos(Math.min(Math.max((k(nv, cm) - nv * cm) / (sv * sm), -1), 1)))
-    .filter((phi) => phi > 0 && phi < phiMax).sort((x, y) => x - y), phiMax];
-  const sum = [0, 0];
+  const cuts = [0];
+  for (const k of kinks) {
+    const phi = Math.acos(Math.min(Math.max((k(nv, cm) - nv * cm) / (sv * sm), -1), 1));
+    if (phi > 0 && phi < phiMax) cuts.push(phi);
+  }
+  cuts.sort((x, z) => x - z).push(phiMax);
+  let scale = 0;
+  let bias = 0;
   for (let k = 0; k + 1 < cuts.length; k++) {
     const [lo, hi] = [cuts[k], cuts[k + 1]];
     const piece = integrate((s) => {
       const q = 1 - s;
-      const y = integrand(hi - (hi - lo) * q * q * q);
-      return [y[0] * 3 * q * q * (hi - lo), y[1] * 3 * q * q * (hi - lo)];
+      return integrand(hi - (hi - lo) * q * q * q, 3 * q * q * (hi - lo));
     }, 0, 1, tol / (cuts.length - 1), 2);
-    sum[0] += piece[0];
-    sum[1] += piece[1];
+    scale += piece[0];
+    bias += piece[1];
   }
-  return sum;
+  return [scale, bias];
 }
 
 /**

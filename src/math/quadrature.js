@@ -28,25 +28,24 @@ function kronrod(f, a, b, dim) {
   const mid = (a + b) / 2;
   const k = new Float64Array(dim);
   const g = new Float64Array(dim);
-  const ys = new Array(15);
-  for (let i = 0; i < 8; i++) {
-    const pair = i === 7 ? [f(mid)] : [f(mid - half * X[i]), f(mid + half * X[i])];
-    pair.forEach((y, j) => {
-      ys[2 * i + j] = y;
-      for (let d = 0; d < dim; d++) {
-        k[d] += WK[i] * y[d];
-        if (i % 2) g[d] += WG[(i - 1) / 2] * y[d];
-      }
-    });
+  const ys = new Float64Array(15 * dim); // f's values, copied (f may hand back the same array each call)
+  for (let n = 0; n < 15; n++) {
+    const i = n >> 1; // nodes 2i and 2i + 1 are ∓X[i]; node 14 is the midpoint
+    const y = f(n === 14 ? mid : mid + (n % 2 ? half : -half) * X[i]);
+    for (let d = 0; d < dim; d++) {
+      ys[n * dim + d] = y[d];
+      k[d] += WK[i] * y[d];
+      if (i % 2) g[d] += WG[(i - 1) / 2] * y[d];
+    }
   }
   let err = 0;
   for (let d = 0; d < dim; d++) {
     const mean = k[d] / 2;
     let asc = 0; // ∫ |f - mean| by the Kronrod rule
-    for (let i = 0; i < 15; i++) asc += WK[i >> 1] * Math.abs(ys[i][d] - mean);
+    for (let n = 0; n < 15; n++) asc += WK[n >> 1] * Math.abs(ys[n * dim + d] - mean);
     const diff = Math.abs((k[d] - g[d]) * half);
     asc *= Math.abs(half);
-    err = Math.max(err, asc > 0 && diff > 0 ? asc * Math.min(1, (200 * diff / asc) ** 1.5) : diff);
+    err = Math.max(err, asc > 0 && diff > 0 ? asc * Math.min(1, ((200 * diff) / asc) ** 1.5) : diff);
     k[d] *= half;
   }
   return { value: k, err };

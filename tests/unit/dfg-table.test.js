@@ -1,21 +1,9 @@
 // The DFG table as the GPU samples it (half floats, bilinear between texel centres, clamped at the edges)
 // against the adaptive quadrature dfgSplitSum it is built from.
 import { describe, expect, it } from 'vitest';
-import { DataUtils } from 'three';
 import { DFG_TABLE_SIZE, dfgSplitSum, dfgTableUv } from '../../src/math/integrate.js';
-import { dfgTableData } from '../../src/core/lab/environment-maps.js';
-
-const half = (x) => DataUtils.fromHalfFloat(DataUtils.toHalfFloat(x));
-
-/** texture(table, uv).rg with LinearFilter and ClampToEdge, from half-float texels. */
-function sampleTable({ data, size }, [u, v]) {
-  const texel = (c) => Math.min(Math.max(c * size - 0.5, 0), size - 1);
-  const [x, y] = [texel(u), texel(v)];
-  const [i, j] = [Math.min(Math.floor(x), size - 2), Math.min(Math.floor(y), size - 2)];
-  const [fx, fy] = [x - i, y - j];
-  const at = (ii, jj, k) => half(data[(jj * size + ii) * 4 + k]);
-  return [0, 1].map((k) => (1 - fy) * ((1 - fx) * at(i, j, k) + fx * at(i + 1, j, k)) + fy * ((1 - fx) * at(i, j + 1, k) + fx * at(i + 1, j + 1, k)));
-}
+import { dfgTableData } from '../../src/core/lab/dfg-table.js';
+import { sampleDfgTable } from './dfg-lookup.js';
 
 // probes between and on texel centres, denser toward grazing view and low roughness
 const MUS = [1e-3, 0.004, 0.012, 0.025, 0.04, 0.065, 0.1, 0.17, 0.3, 0.5, 0.75, 0.95, 1];
@@ -27,7 +15,7 @@ function worstError(terms, mus = MUS, alphas = ALPHAS) {
   let worst = { error: 0 };
   for (const alpha of alphas) {
     for (const mu of mus) {
-      const got = sampleTable(table, dfgTableUv(mu, alpha));
+      const got = sampleDfgTable(table, mu, alpha);
       const ref = dfgSplitSum(mu, alpha, terms);
       const error = Math.max(Math.abs(got[0] - ref[0]), Math.abs(got[1] - ref[1]));
       if (error > worst.error) worst = { error, mu, alpha };
