@@ -24,8 +24,8 @@ const ABOUT =
   'surroundings: it disappears. These spheres use GGX with height-correlated Smith and F = 1. Smooth ones ' +
   'nearly vanish; rough ones turn grey, most of all at the centre, because light blocked by one microfacet is ' +
   'simply dropped instead of bouncing on (the talk’s multiple-bounce slide). The plots give E(μ) = ∫ f (n·l) dω ' +
-  'by deterministic quadrature over the microfacet normals; each sphere pixel looks E up in a table of the same ' +
-  'integral; the table gives E head-on and its cosine-weighted average over all directions.';
+  'by deterministic quadrature over the microfacet normals, and each sphere pixel reads E(n·v) from a texture ' +
+  'precomputed with it; the table below gives E head-on and its cosine-weighted average over all directions.';
 
 const ANGLES = Float64Array.from({ length: 90 }, (_, i) => i + 0.5); // view angles 0.5°..89.5°
 const DEG = Math.PI / 180;
