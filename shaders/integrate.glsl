@@ -32,12 +32,14 @@ vec3 sampleBeckmannNormal(vec2 u, float alpha) {
   return vec3(s * cos(phi), s * sin(phi), c);
 }
 
-// Texture coordinates of (n·v, alpha) in the DFG table, mirrors dfgTableUv: texel centres edge to edge over
-// (n·v)^0.4 and alpha^(1/3) (DFG_TABLE_SIZE and the warp are those of src/math/integrate.js)
-#define DFG_TABLE_SIZE 64.0
+// Texture coordinates of (n·v, alpha) in the DFG table, mirrors dfgTableUv (see there for the layout)
+#define DFG_TABLE_SIZE 72.0
 vec2 dfgTableUv(float nv, float alpha) {
-  vec2 x = pow(clamp(vec2(nv, alpha), 0.0, 1.0), vec2(0.4, 1.0 / 3.0));
-  return (x * (DFG_TABLE_SIZE - 1.0) + 0.5) / DFG_TABLE_SIZE;
+  float mu = clamp(nv, 0.0, 1.0);
+  float a = clamp(alpha, 0.0, 1.0);
+  float k = 4.0 * max(a, ALPHA_MIN);
+  float x = (sqrt(mu) + 0.5 * mu / (mu + k)) / (1.0 + 0.5 / (1.0 + k));
+  return (vec2(x, pow(a, 1.0 / 3.0)) * (DFG_TABLE_SIZE - 1.0) + 0.5) / DFG_TABLE_SIZE;
 }
 
 vec3 sampleCosine(vec2 u) {

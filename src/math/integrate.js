@@ -2,7 +2,7 @@
 // sampling the GGX distribution of normals. Directional albedo E(mu) = ∫ f(l, v)(n·l) dω_l is the share of
 // light from direction v that the BRDF sends back out; with F = 1 it measures what the microfacet model
 // loses by ignoring light that bounces more than once (the white furnace).
-import { ndfGGX, clampAlpha } from './ndf.js';
+import { ALPHA_MIN, ndfGGX, clampAlpha } from './ndf.js';
 import { VISIBILITY_TERMS } from './brdf.js';
 import { gaussLegendreVector, integrateVector } from './quadrature.js';
 
@@ -254,22 +254,22 @@ export function dfgSplitSum(mu, alpha, terms = {}, { nodes = 0 } = {}) {
   return [sum[0] / Math.PI, sum[1] / Math.PI];
 }
 
-/** Texels per side of the DFG table the GPU samples (environment-maps.js builds it). */
-export const DFG_TABLE_SIZE = 64;
-/** Where the DFG table keeps (n·v, alpha): texel i, j (0-based) holds n·v = (i/63)^2.5, alpha = (j/63)³. */
-export const DFG_TABLE_WARP = [2.5, 3];
+/** Texels per side of the DFG table the GPU samples (src/core/lab/dfg-table.js builds it). */
+export const DFG_TABLE_SIZE = 72;
 
 /**
- * Texture coordinates of (n·v, alpha) in the DFG table: texel centres run edge to edge over (n·v)^0.4 and
- * alpha^(1/3), which spend the texels where the split sum changes fast (grazing view, low roughness), so that
- * bilinear filtering of half floats stays within 1e-3 of dfgSplitSum for alpha >= 0.02, 1.5e-3 down to 0.01
- * (tests/unit/dfg-table.test.js).
+ * Texture coordinates of (n·v, alpha) in the DFG table, texel centres edge to edge. Across: sqrt(n·v) plus a
+ * share of the texels around n·v ~ 4 alpha, where the split sum turns at grazing view, so that the texels follow
+ * that ridge from row to row; down: alpha^(1/3). Sampled bilinearly from half floats the table stays within
+ * 1e-3 of dfgSplitSum for n·v in [1e-3, 1], alpha in [0.01, 1] (tests/unit/dfg-table.test.js).
  */
 export function dfgTableUv(nv, alpha) {
   const n = DFG_TABLE_SIZE;
-  const x = Math.min(Math.max(nv, 0), 1) ** (1 / DFG_TABLE_WARP[0]);
-  const y = Math.min(Math.max(alpha, 0), 1) ** (1 / DFG_TABLE_WARP[1]);
-  return [(x * (n - 1) + 0.5) / n, (y * (n - 1) + 0.5) / n];
+  const mu = Math.min(Math.max(nv, 0), 1);
+  const a = Math.min(Math.max(alpha, 0), 1);
+  const k = 4 * Math.max(a, ALPHA_MIN);
+  const x = (Math.sqrt(mu) + (0.5 * mu) / (mu + k)) / (1 + 0.5 / (1 + k));
+  return [(x * (n - 1) + 0.5) / n, (Math.cbrt(a) * (n - 1) + 0.5) / n];
 }
 
 /** Directional albedo with F = 1 (the white furnace): the split sum's scale + bias, for the same terms and options. */
