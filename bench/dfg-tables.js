@@ -1,8 +1,8 @@
 // node bench/dfg-tables.js: how long the split sum's float64 quadrature takes where the app runs it: each DFG
-// table the material lab builds on demand (64 x 64 texels, 12 Gauss-Legendre nodes per piece), the energy
+// table the material lab builds on demand (DFG_TABLE_SIZE² texels), the energy
 // widget's sweep, and one adaptive evaluation. Wall-clock on this machine; the figures vary with its load.
 import { dfgTableData } from '../src/core/lab/dfg-table.js';
-import { albedoGGX, averageAlbedo } from '../src/math/integrate.js';
+import { DFG_TABLE_SIZE, albedoGGX, averageAlbedo } from '../src/math/integrate.js';
 
 const time = (fn) => {
   const t0 = performance.now();
@@ -11,7 +11,7 @@ const time = (fn) => {
 };
 const LAB_VISIBILITY = ['smithGGXCorrelated', 'smithGGXSeparable', 'schlickGGX', 'kelemen', 'cookTorrance', 'implicit'];
 
-console.log('DFG table (64 x 64), ms to build:');
+console.log(`DFG table (${DFG_TABLE_SIZE} x ${DFG_TABLE_SIZE}), ms to build:`);
 for (const ndf of ['ggx', 'beckmann']) {
   for (const visibility of LAB_VISIBILITY) console.log(`  ${`${ndf} / ${visibility}`.padEnd(32)}${time(() => dfgTableData({ ndf, visibility })).toFixed(0)}`);
 }
