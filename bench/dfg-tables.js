@@ -13,7 +13,10 @@ const LAB_VISIBILITY = ['smithGGXCorrelated', 'smithGGXSeparable', 'schlickGGX',
 
 console.log(`DFG table (${DFG_TABLE_SIZE} x ${DFG_TABLE_SIZE}), ms to build:`);
 for (const ndf of ['ggx', 'beckmann']) {
-  for (const visibility of LAB_VISIBILITY) console.log(`  ${`${ndf} / ${visibility}`.padEnd(32)}${time(() => dfgTableData({ ndf, visibility })).toFixed(0)}`);
+  for (const visibility of LAB_VISIBILITY) {
+    const ms = time(() => dfgTableData({ ndf, visibility }));
+    console.log(`  ${`${ndf} / ${visibility}`.padEnd(32)}${ms.toFixed(0)}`);
+  }
 }
 const sweep = time(() => {
   for (const alpha of [0.05, 0.25, 0.5, 0.75, 1]) {

@@ -25,7 +25,10 @@ const V_KINDS = ['implicit', 'cookTorrance', 'kelemen', 'smithGGXSeparable', 'sm
 const BRDF_PARAMS = D_KINDS.flatMap((D) => V_KINDS.flatMap((V) => [0, 1e-4, 0.3, 1].map((alpha) => ({ F: 'schlick', D, V, alpha, f0: 0.04, exponent: 1e4, a1: 1e4, a2: 3, p: 1.9 }))));
 
 const ZERO_TO_ONE = [0, 1];
-const SPLIT_SUM_TERMS = [{}, { ndf: 'beckmann', visibility: 'cookTorrance' }, { visibility: 'kelemen' }, { visibility: 'smithBeckmannSeparable' }];
+const SPLIT_SUM_TERMS = [
+  {}, { ndf: 'beckmann', visibility: 'cookTorrance' }, { visibility: 'kelemen' },
+  { visibility: 'smithBeckmannSeparable' },
+];
 const NON_NEGATIVE = [0, Infinity];
 const FINITE = [-Infinity, Infinity]; // only NaN and ±Inf are failures
 

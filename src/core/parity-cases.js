@@ -92,13 +92,15 @@ export const PARITY_CASES = [
     tolerance: TRIG_TOLERANCE,
   },
   {
-    name: 'dfgTableUv', chunk: 'integrate.glsl', glsl: 'dfgTableUv(a.x, a.y)', outputs: 2, js: M.dfgTableUv, range: [0, 1],
+    name: 'dfgTableUv', chunk: 'integrate.glsl', glsl: 'dfgTableUv(a.x, a.y)', outputs: 2, js: M.dfgTableUv,
+    range: [0, 1],
     args: cartesian(GRIDS.cosCoarse, GRIDS.alpha),
   },
   // u1 up to 1 - 1e-6 (the samplers take u1 in [0, 1)), alpha from the clamp to 1
   ...['sampleGGXNormal', 'sampleBeckmannNormal'].map((fn) => ({
     name: fn, chunk: 'integrate.glsl', glsl: `${fn}(a.xy, a.z)`, outputs: 3, js: M[fn], range: [-1, 1],
-    args: cartesian([0, 1e-6, 0.3, 0.9, 0.999, 1 - 1e-6], [0, 0.25, 0.7], [0, 1e-4, 0.01, 0.3, 1]), tolerance: TRIG_TOLERANCE,
+    args: cartesian([0, 1e-6, 0.3, 0.9, 0.999, 1 - 1e-6], [0, 0.25, 0.7], [0, 1e-4, 0.01, 0.3, 1]),
+    tolerance: TRIG_TOLERANCE,
   })),
   {
     name: 'sampleCone', chunk: 'integrate.glsl', glsl: 'sampleCone(a.xy, a.z)', outputs: 3, js: M.sampleCone, range: [-1, 1],
@@ -142,8 +144,10 @@ export const PARITY_CASES = [
   { name: 'ndfBeckmann', chunk: 'ndf.glsl', glsl: 'ndfBeckmann(a.x, a.y)', outputs: 1, js: M.ndfBeckmann, range: [0, Infinity], args: cartesian(GRIDS.cos, GRIDS.alpha) },
   { name: 'ndfBlinnPhong', chunk: 'ndf.glsl', glsl: 'ndfBlinnPhong(a.x, a.y)', outputs: 1, js: M.ndfBlinnPhong, range: [0, Infinity], args: cartesian(GRIDS.cos, GRIDS.exponent) },
   {
-    name: 'ndfBlinnPhongFromSin2', chunk: 'ndf.glsl', glsl: 'ndfBlinnPhongFromSin2(a.x, a.y, a.z)', outputs: 1, js: M.ndfBlinnPhongFromSin2, range: [0, Infinity],
-    args: cartesian([0, 1e-9, 1e-6, 1e-4, 0.01, 0.3, 1, 1.5, Math.PI / 2], GRIDS.exponent).map(([t, p]) => [Math.cos(t), Math.sin(t) ** 2, p]),
+    name: 'ndfBlinnPhongFromSin2', chunk: 'ndf.glsl', glsl: 'ndfBlinnPhongFromSin2(a.x, a.y, a.z)', outputs: 1,
+    js: M.ndfBlinnPhongFromSin2, range: [0, Infinity],
+    args: cartesian([0, 1e-9, 1e-6, 1e-4, 0.01, 0.3, 1, 1.5, Math.PI / 2], GRIDS.exponent)
+      .map(([t, p]) => [Math.cos(t), Math.sin(t) ** 2, p]),
   },
   { name: 'ndfABC', chunk: 'ndf.glsl', glsl: 'ndfABC(a.x, a.y, a.z)', outputs: 1, js: M.ndfABC, range: [0, Infinity], args: cartesian(GRIDS.cos, GRIDS.abcA1, GRIDS.abcA2) },
   { name: 'ndfSGD', chunk: 'ndf.glsl', glsl: 'ndfSGD(a.x, a.y, a.z)', outputs: 1, js: M.ndfSGD, range: [0, Infinity], args: cartesian(GRIDS.cos, GRIDS.sgdAlpha, GRIDS.sgdP) },

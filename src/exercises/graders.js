@@ -221,7 +221,8 @@ export const GRADERS = {
 
   'albedo-loss': {
     title: 'Energy lost by single scattering',
-    summary: 'The percentage of light a GGX surface (height-correlated Smith, F = 1) fails to reflect at one angle: 100 (1 − E(μ)), E by deterministic quadrature (albedoGGX, within 1e-5).',
+    summary: 'The percentage of light a GGX surface (height-correlated Smith, F = 1) fails to reflect at one angle: ' +
+      '100 (1 − E(μ)), E by deterministic quadrature (albedoGGX, within 1e-5).',
     answer: { kind: 'number', label: 'Energy lost', unit: '%' },
     widget: null,
     params: {

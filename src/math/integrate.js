@@ -125,7 +125,11 @@ const NDF_R = {
 // Where a visibility term has kinks, as values of v·m given n·v and n·m (the φ integrand depends on φ through
 // v·m alone, with n·l = 2 (v·m)(n·m) - n·v): Cook-Torrance's min() of vm/(nv nm), 2 and 2 nl/nv switches there.
 const VISIBILITY_KINKS = {
-  cookTorrance: [(nv, cm) => 2 * nv * cm, (nv, cm) => nv / cm, (nv, cm) => (4 * cm * cm > 1 ? (2 * nv * cm) / (4 * cm * cm - 1) : Infinity)],
+  cookTorrance: [
+    (nv, cm) => 2 * nv * cm,
+    (nv, cm) => nv / cm,
+    (nv, cm) => (4 * cm * cm > 1 ? (2 * nv * cm) / (4 * cm * cm - 1) : Infinity),
+  ],
 };
 const MU_MIN = 1e-6;
 const PHI_TOL = 1e-7; // absolute, per φ integral times its weight 2r
@@ -170,7 +174,8 @@ function kinkAngles(kinks, nv, sv, theta2) {
 /**
  * ∫_0^φmax of the split sum's integrand [(1 - Fc) w, Fc w], w = V (n·l)(v·m)/(n·m), for the normals at polar
  * angle θm (cos cm, sin sm): in pieces between the kinks of V, each with its nodes crowded toward its end by
- * φ = hi - Δ(1 - s)³, for at φmax n·l -> 0 and V (n·l) turns over in a layer as thin as the lesser of n·v and alpha.
+ * φ = hi - Δ(1 - s)³, for at φmax n·l -> 0 and V (n·l) turns over in a layer as thin as the lesser of n·v
+ * and alpha.
  */
 function phiIntegral({ nv, sv, vis, kinks, params, integrate }, cm, sm, phiMax, tol) {
   const angles = { nl: 0, nv, nh: cm, lh: 0 };

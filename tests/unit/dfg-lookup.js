@@ -12,5 +12,6 @@ export function sampleDfgTable({ data, size }, nv, alpha, { half = true } = {}) 
   const [i, j] = [Math.min(Math.floor(x), size - 2), Math.min(Math.floor(y), size - 2)];
   const [fx, fy] = [x - i, y - j];
   const at = (ii, jj, k) => (half ? toHalf : Number)(data[(jj * size + ii) * 4 + k]);
-  return [0, 1].map((k) => (1 - fy) * ((1 - fx) * at(i, j, k) + fx * at(i + 1, j, k)) + fy * ((1 - fx) * at(i, j + 1, k) + fx * at(i + 1, j + 1, k)));
+  const row = (jj, k) => (1 - fx) * at(i, jj, k) + fx * at(i + 1, jj, k);
+  return [0, 1].map((k) => (1 - fy) * row(j, k) + fy * row(j + 1, k));
 }
