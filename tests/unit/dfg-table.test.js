@@ -6,8 +6,8 @@ import { dfgTableData } from '../../src/core/lab/dfg-table.js';
 import { sampleDfgTable } from './dfg-lookup.js';
 
 // probes between and on texel centres, denser toward grazing view and low roughness
-const MUS = [1e-3, 0.002, 0.004, 0.007, 0.012, 0.02, 0.03, 0.04, 0.05, 0.065, 0.1, 0.17, 0.3, 0.5, 0.75, 0.95, 1];
-const ALPHAS = [0.01, 0.011, 0.013, 0.016, 0.02, 0.025, 0.033, 0.045, 0.07, 0.1, 0.15, 0.22, 0.4, 0.7, 1];
+const MUS = [1e-3, 0.002, 0.004, 0.007, 0.012, 0.02, 0.03, 0.04, 0.065, 0.1, 0.3, 0.75, 1];
+const ALPHAS = [0.01, 0.012, 0.016, 0.025, 0.045, 0.07, 0.1, 0.22, 0.5, 1];
 
 function worstError(terms, mus = MUS, alphas = ALPHAS) {
   const table = dfgTableData(terms);
@@ -32,8 +32,8 @@ describe('DFG table as the GPU samples it', { timeout: 60_000 }, () => {
     expect(worst.error, JSON.stringify(worst)).toBeLessThan(1e-3);
   });
   it('holds down to alpha = 3e-4 as well, but not at the clamp alpha = 1e-4 (3.3e-3 near n·v = 0.007)', () => {
-    expect(worstError({}, MUS.slice(0, 12), [3e-4, 1e-3, 3e-3, 6e-3]).error).toBeLessThan(1e-3);
-    expect(worstError({}, MUS.slice(0, 12), [1e-4]).error).toBeGreaterThan(1e-3);
+    expect(worstError({}, MUS.slice(0, 10), [3e-4, 1e-3, 3e-3, 6e-3]).error).toBeLessThan(1e-3);
+    expect(worstError({}, MUS.slice(0, 10), [1e-4]).error).toBeGreaterThan(1e-3);
   });
   it('is cached per pair of terms, the default being GGX with height-correlated Smith', () => {
     expect(dfgTableData()).toBe(dfgTableData({ ndf: 'ggx', visibility: 'smithGGXCorrelated' }));
