@@ -1,7 +1,8 @@
-// The reflectance equation, integrated two ways: by quadrature over the hemisphere, and by importance
-// sampling the GGX distribution of normals. Directional albedo E(mu) = ∫ f(l, v)(n·l) dω_l is the share of
-// light from direction v that the BRDF sends back out; with F = 1 it measures what the microfacet model
-// loses by ignoring light that bounces more than once (the white furnace).
+// The reflectance equation, integrated: by quadrature over the hemisphere, by importance sampling the normals
+// (GGX or Beckmann), and, for the split sum and the directional albedo, by a deterministic quadrature over the
+// microfacet normals accurate to ~1e-7. Directional albedo E(mu) = ∫ f(l, v)(n·l) dω_l is the share of light
+// from direction v that the BRDF sends back out; with F = 1 it measures what the microfacet model loses by
+// ignoring light that bounces more than once (the white furnace).
 import { ALPHA_MIN, ndfGGX, clampAlpha } from './ndf.js';
 import { VISIBILITY_TERMS } from './brdf.js';
 import { gaussLegendreVector, integrateVector } from './quadrature.js';
