@@ -28,8 +28,7 @@ void main() {
     vec3 l = 2.0 * m.z * m - vec3(0.0, 0.0, 1.0);
     if (l.z <= 0.0) continue;
     float pdf = reflectedPdf(m, m.z, uAlpha); // v = n: v·m = n·m
-    // n·l, times the chosen lobe over the one sampled (1 when they are the same)
-    float w = l.z * ndfTerm(m.z, dot(m.xy, m.xy), uAlpha) * m.z / max(lobeNormalPdf(m, uAlpha), 1e-30);
+    float w = l.z;
     vec4 c = textureLod(uEnv, equirectUv(toWorld * l), lodFor(pdf));
     sum += w * c.rgb / max(c.a, 1e-6);
     weight += w;

@@ -138,10 +138,10 @@ vec3 sphereLight(mat3 toLocal, vec3 v, int n, vec2 shift) {
 #endif
 
 #if defined(ENV_SPLIT_SUM) || defined(LIGHT_AMBIENT)
-// The DFG table of the chosen D and V at (n·v, sqrt(alpha)): (A, B) with ∫ f (n·l) dω = F0·A + B for Schlick's F,
-// and A + B for F = 1 (the two parts of the split add back up to the albedo).
+// The DFG table of the chosen D and V at (n·v, alpha) (dfgTableUv): (A, B) with ∫ f (n·l) dω = F0·A + B for
+// Schlick's F, and A + B for F = 1 (the two parts of the split add back up to the albedo).
 vec3 dfgAlbedo(float nv) {
-  vec2 ab = texture(uDfg, vec2(nv, sqrt(uAlpha))).rg;
+  vec2 ab = texture(uDfg, dfgTableUv(nv, uAlpha)).rg;
 #ifdef F_ONE
   return vec3(ab.x + ab.y);
 #else

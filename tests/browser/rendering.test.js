@@ -11,7 +11,8 @@ import { hexToRgb } from '../../src/core/palettes.js';
 import { fresnelSchlick } from '../../src/math/fresnel.js';
 import { dfgSplitSum } from '../../src/math/integrate.js';
 import { ndfBeckmann, ndfGGX } from '../../src/math/ndf.js';
-import { dfgTableData } from '../../src/core/lab/environment-maps.js';
+import { dfgTableData } from '../../src/core/lab/dfg-table.js';
+import { sampleDfgTable } from '../unit/dfg-lookup.js';
 
 const EXTENT = 1.1; // the lab's view half width (src/core/lab/lab-renderer.js)
 const RES = 192; // the lab's image size (src/widgets/material-lab/material-lab.js)
@@ -79,18 +80,6 @@ function hdrFile(width, height, L) {
     }
   }
   return bytes;
-}
-
-/** Bilinear lookup of a DFG table (texel centres at (k + 0.5)/size, clamped at the edges), as the GPU samples it. */
-function dfgLookup({ data, size }, nv, alpha) {
-  const at = (x) => {
-    const f = Math.min(Math.max(x * size - 0.5, 0), size - 1);
-    const k = Math.min(Math.floor(f), size - 2);
-    return [k, f - k];
-  };
-  const [[i, fx], [j, fy]] = [at(nv), at(Math.sqrt(alpha))];
-  const texel = (a, b, c) => data[((j + b) * size + i + a) * 4 + c];
-  return [0, 1].map((c) => (1 - fy) * ((1 - fx) * texel(0, 0, c) + fx * texel(1, 0, c)) + fy * ((1 - fx) * texel(0, 1, c) + fx * texel(1, 1, c)));
 }
 
 /** The sphere's normal at texel [i, j] (the lab shades each texel with the normal at its centre). */
@@ -214,6 +203,8 @@ describe('material lab', () => {
       { name: 'split sum, Schlick, Beckmann + Cook-Torrance', state: { fresnel: 'schlick', visibility: 'cookTorrance' }, terms: { ndf: 'beckmann', visibility: 'cookTorrance' }, f0: 0.04 },
       { name: 'ambient, Schlick, Beckmann + Cook-Torrance', state: { env: false, ambient: true, ambientLevel: 1 }, terms: { ndf: 'beckmann', visibility: 'cookTorrance' }, f0: 0.04 },
       { name: 'ambient, F = 1, GGX + Schlick-GGX', state: { fresnel: 'one', ndf: 'ggx', visibility: 'schlickGGX' }, terms: { ndf: 'ggx', visibility: 'schlickGGX' }, f0: null },
+      // 256 normals drawn from Beckmann, the same on every pixel: a quasi-Monte Carlo estimate of the albedo
+      { name: 'importance sampling N 256, F = 1, Beckmann + Kelemen', state: { ambient: false, env: true, envMethod: 'importance', samples: 256, ndf: 'beckmann', visibility: 'kelemen' }, terms: { ndf: 'beckmann', visibility: 'kelemen' }, f0: null, sampled: true },
     ];
     const albedo = ([a, b], f0) => (f0 === null ? a + b : f0 * a + b);
     for (const c of cases) {
@@ -228,9 +219,9 @@ describe('material lab', () => {
             continue;
           }
           // the table the lab samples, bilinear between its texel centres; and the float64 value it tabulates
-          const table = albedo(dfgLookup(dfgTableData(c.terms), nv, alpha), c.f0);
+          const table = albedo(sampleDfgTable(dfgTableData(c.terms), nv, alpha), c.f0);
           const exact = albedo(dfgSplitSum(nv, alpha, c.terms), c.f0);
-          expect(Math.abs(x - table)).toBeLessThan(2e-3 * table);
+          if (!c.sampled) expect(Math.abs(x - table)).toBeLessThan(2e-3 * table);
           expect(Math.abs(x - exact)).toBeLessThan(1e-2 * exact);
         }
       });
@@ -241,8 +232,8 @@ describe('material lab', () => {
     await page.close();
   }, 240_000); // a DFG table and a reference per case
 
-  it('the split sum prefilters with the chosen NDF: under radiance 1 + d_y it shows 1 + c r_y, and c of Beckmann exceeds c of GGX as the mean of l·r over their lobes does (1-D quadrature)', async () => {
-    const alpha = 0.25; // a layer of the prefiltered map: no blend between layers
+  it('the split sum prefilters with the chosen NDF: under radiance 1 + d_y it shows 1 + c r_y, c at most the mean of l·r over the lobe (1-D quadrature), and Beckmann’s c above what any GGX-filtered map can show', async () => {
+    const alpha = 0.0625; // a layer of the prefiltered map: no blend between layers
     const page = await openLab(`lab.layers=specular&lab.fresnel=one&lab.alpha=${alpha}&lab.envMethod=split-sum&lab.refSamples=128`);
     await dropFile(page, 'gradient.hdr', hdrFile(256, 128, (u, v) => 1 + Math.sin((v - 0.5) * Math.PI)));
     await page.waitForFunction(() => globalThis.__shadingLab.widgets.lab.getState().environment === 'file');
@@ -268,17 +259,19 @@ describe('material lab', () => {
       shown[ndf] = spots.map((spot, k) => {
         const n = normalAt(spot);
         const ry = 2 * n[2] * n[1]; // r = reflect(-v, n), v = z
-        const [a, b] = dfgLookup(dfgTableData({ ndf, visibility: 'smithGGXCorrelated' }), n[2], alpha);
+        const [a, b] = sampleDfgTable(dfgTableData({ ndf, visibility: 'smithGGXCorrelated' }), n[2], alpha);
         return (got[k][0] / (a + b) - 1) / ry; // prefiltered = 1 + c r_y
       });
       console.log(`prefiltered ${ndf}, α ${alpha}: c from the lab ${shown[ndf].map((c) => c.toFixed(4)).join(', ')}; mean l·r by quadrature ${expected[ndf].toFixed(4)}`);
     }
-    const gap = expected.beckmann - expected.ggx;
+    // Filtered importance sampling reads mips coarser than each sample's share of the lobe (Colbert & Křivánek
+    // 2007, with their bias of one level), and averaging d_y over a patch only shrinks it: c can fall short of the
+    // lobe's mean, never exceed it (5e-3: half floats and the table). So a map that keeps more than GGX's mean
+    // was not filtered with the GGX lobe.
+    const slack = 5e-3;
     spots.forEach((_, k) => {
-      // filtered importance sampling reads coarser mips than the lobe (Colbert & Křivánek 2007's bias of 1):
-      // both maps are blurred a little more than their lobes, by the same method
-      for (const ndf of ['ggx', 'beckmann']) expect(Math.abs(shown[ndf][k] - expected[ndf])).toBeLessThan(0.1);
-      expect(Math.abs(shown.beckmann[k] - shown.ggx[k] - gap)).toBeLessThan(0.3 * gap);
+      for (const ndf of ['ggx', 'beckmann']) expect(shown[ndf][k]).toBeLessThan(expected[ndf] + slack);
+      expect(shown.beckmann[k]).toBeGreaterThan(expected.ggx + slack);
     });
     expect(page.errors).toEqual([]);
     await page.close();

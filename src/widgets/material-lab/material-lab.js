@@ -55,7 +55,7 @@ const ABOUT =
   'V; F = 1 gives A + B); the lines under the images say what stands in where it has none. Drop an .hdr or .exr ' +
   'panorama on the widget to light it with your own environment.';
 
-const TERMS_USED = ['microfacetBRDF', 'dfgSplitSum', 'sampleGGXNormal', 'sampleCosine', 'sampleCone', 'sphereLightRepresentativeDir', 'sphereLightNormalization', 'equirectUv', 'diffuseOrenNayar'];
+const TERMS_USED = ['microfacetBRDF', 'dfgSplitSum', 'sampleGGXNormal', 'sampleBeckmannNormal', 'sampleCosine', 'sampleCone', 'sphereLightRepresentativeDir', 'sphereLightNormalization', 'equirectUv', 'diffuseOrenNayar'];
 
 export function lightsOf(state) {
   const c = (x) => [x, x, x];
