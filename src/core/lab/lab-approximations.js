@@ -76,7 +76,8 @@ export function diffuseUnderSurround({ terms, lights, methods }) {
   const where = byIrradiance.join(' and ');
   if (terms.diffuse === 'lambert') return `Diffuse under ${where}: irradiance × c_diff/π, Lambert’s exact answer.`;
   const name = LAB_TERMS.diffuse[terms.diffuse];
-  return `Diffuse under ${where}: these methods have no form for ${name}, so it is approximated by Lambert ` +
+  const none = byIrradiance.length > 1 ? 'neither has a form' : 'it has no form';
+  return `Diffuse under ${where}: ${none} for ${name}, so ${name} is approximated by Lambert ` +
     `(irradiance × c_diff/π) while the reference uses ${name}: that substitution is part of the error image.`;
 }
 
