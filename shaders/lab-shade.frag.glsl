@@ -137,7 +137,7 @@ vec3 sphereLight(mat3 toLocal, vec3 v, int n, vec2 shift) {
 }
 #endif
 
-#if defined(ENV_SPLIT_SUM) || defined(LIGHT_AMBIENT)
+#if defined(ENV_SPLIT_SUM) || defined(LIGHT_AMBIENT) && !defined(REFERENCE)
 // The DFG table of the chosen D and V at (n·v, alpha) (dfgTableUv): (A, B) with ∫ f (n·l) dω = F0·A + B for
 // Schlick's F, and A + B for F = 1 (the two parts of the split add back up to the albedo).
 vec3 dfgAlbedo(float nv) {
