@@ -7,7 +7,8 @@ import { validateExercise } from './validate.js';
 // An exercise file is a few kB; a set is refused past these, before it is read into memory.
 export const MAX_SET_BYTES = 1024 * 1024;
 export const MAX_SET_ENTRIES = 200;
-const tooBig = (bytes) => `is ${bytes > 2 ** 20 ? `${(bytes / 2 ** 20).toFixed(0)} MB` : `${bytes} bytes`}; the limit is ${MAX_SET_BYTES / 2 ** 20} MB`;
+const LIMIT = `${MAX_SET_BYTES.toLocaleString('en')} bytes (1 MB)`;
+const tooBig = (bytes) => `is ${bytes.toLocaleString('en')} bytes; the limit is ${LIMIT}`;
 
 /** The body as text, or null past MAX_SET_BYTES (the read stops there, whatever the header claimed). */
 async function cappedText(res) {
@@ -33,7 +34,7 @@ export async function fetchJson(url) {
     const claimed = Number(res.headers.get('content-length'));
     if (claimed > MAX_SET_BYTES) return { error: tooBig(claimed) };
     const text = res.body ? await cappedText(res) : '';
-    return text === null ? { error: `is larger than the limit of ${MAX_SET_BYTES / 2 ** 20} MB` } : parseJson(text);
+    return text === null ? { error: `is larger than the limit of ${LIMIT}` } : parseJson(text);
   } catch (e) {
     return { error: `could not be loaded (${e.message})` };
   }
