@@ -74,6 +74,43 @@ export function isClean(f, raw) {
   }
 }
 
+/** True when a field must keep its value for `raw`: not clean, and nothing in it to clamp or keep. */
+export function isRefused(f, raw) {
+  if (isClean(f, raw)) return false;
+  if (f.type === 'number') return !Number.isFinite(typeof raw === 'number' ? raw : typeof raw === 'string' && DECIMAL.test(raw) ? Number(raw) : NaN);
+  if (f.type !== 'set') return true;
+  const items = typeof raw === 'string' ? raw.split(',').filter((s) => s !== '') : Array.isArray(raw) ? raw : null;
+  return items === null || !items.some((v) => isClean(f, [v]));
+}
+
+/** A valid state change for `schema`: its first two fields moved off their defaults. */
+export function goodPartial(schema) {
+  const out = {};
+  for (const [key, f] of Object.entries(schema).slice(0, 2)) {
+    const options = f.options ? Object.keys(f.options) : [];
+    const mid = Number(((f.min + f.max) / 2).toPrecision(3));
+    out[key] = f.type === 'number' ? (mid === f.default ? f.min : mid)
+      : f.type === 'enum' ? options.find((o) => o !== f.default)
+        : f.type === 'bool' ? !f.default
+          : f.type === 'set' ? [options.find((o) => !f.default.includes(o)) ?? options[0]] : '#336699';
+  }
+  return out;
+}
+
+/** Values that are odd but valid (the field takes them): empty and repeated list items, −0, a padded decimal. */
+export function oddButValid(schema) {
+  return Object.entries(schema).flatMap(([key, f]) => {
+    const o = f.options ? Object.keys(f.options)[0] : null;
+    if (f.type === 'set') return [{ [key]: ',' }, { [key]: `${o},,${o}` }, { [key]: [o, o, o] }];
+    if (f.type === 'number' && f.min <= 0 && f.max >= 0) return [{ [key]: -0 }, { [key]: ' -0 ' }];
+    return [];
+  });
+}
+
+/** Numbers as JSON cannot carry them (NaN, ±Infinity, −0) and back: for sending values through DevTools. */
+export const encodeNumbers = (value) => JSON.stringify(value, (k, v) => (typeof v === 'number' && (!Number.isFinite(v) || Object.is(v, -0)) ? { $n: Object.is(v, -0) ? '-0' : String(v) } : v));
+export const reviveNumbers = (k, v) => (v && typeof v === 'object' && typeof v.$n === 'string' && Object.keys(v).length === 1 ? Number(v.$n) : v);
+
 /** What is wrong with a widget's whole state against its schema: [] when every value is one it may hold. */
 export function stateProblems(schema, state) {
   const problems = [];

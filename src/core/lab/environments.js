@@ -111,7 +111,9 @@ function sizeProblem(name, width, height, claims = 'is') {
 export function parseEnvironmentFile(name, buffer) {
   const ext = name.toLowerCase().split('.').pop();
   if (ext !== 'hdr' && ext !== 'exr') throw new Error(`“${name}” is not an .hdr or .exr file.`);
-  if (buffer.byteLength > MAX_FILE_BYTES) throw new Error(`“${name}” is ${(buffer.byteLength / 2 ** 20).toFixed(0)} MB; the limit is ${MAX_FILE_BYTES / 2 ** 20} MB.`);
+  if (buffer.byteLength > MAX_FILE_BYTES) {
+    throw new Error(`“${name}” is ${buffer.byteLength.toLocaleString('en')} bytes; the limit is ${MAX_FILE_BYTES.toLocaleString('en')} bytes (${MAX_FILE_BYTES / 2 ** 20} MB).`);
+  }
   const claimed = claimedSize(ext, buffer);
   if (claimed?.problem) throw new Error(`“${name}” could not be read as EXR: ${claimed.problem}.`);
   const refused = claimed && sizeProblem(name, claimed.width, claimed.height, 'claims to be');
