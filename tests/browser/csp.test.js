@@ -22,17 +22,16 @@ function recordViolations() {
 }
 
 const BUILT = readdirSync(join(ROOT, 'dist')).filter((f) => f.endsWith('.html')).sort();
-const widgets = () => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length;
-// when each page has finished what it does on load (its widgets mounted, its data drawn)
+// when each page has finished what it does on load (its widgets mounted, its data drawn); run in the page
 const READY = {
-  'embed.html?w=fresnel-zones': () => widgets() === 1,
+  'embed.html?w=fresnel-zones': () => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 1,
   'exercises.html': () => globalThis.__shadingLab?.exercise?.ready,
   'tour.html': () => globalThis.__shadingLab?.tour?.ready,
   'parity.html': () => globalThis.__shadingLab?.parity,
   'performance.html': () => globalThis.__shadingLab?.performance,
-  'wall.html': () => widgets() > 0,
+  'wall.html': () => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length > 0,
 };
-const chapterReady = () => document.querySelectorAll('[data-slot]').length === widgets();
+const chapterReady = () => document.querySelectorAll('[data-slot]').length === Object.keys(globalThis.__shadingLab?.widgets ?? {}).length;
 const ONE_EXERCISE = [{
   id: 'csp-check', chapter: 'media', title: 'A set from a data: URL', prompt: 'Fetched under connect-src.', widget: 'media',
   state: { medium: 'water', view: 'one' }, locked: ['medium', 'view'], grader: 'transmittance-depth', params: { channel: 'r' }, tolerance: 1,
@@ -75,29 +74,29 @@ describe('Content-Security-Policy', () => {
     await page.close();
   });
 
-  it('the browser enforces it: an injected inline script, an inline handler and eval do not run, and are reported', async () => {
+  it('the browser enforces it: an injected inline script, an inline handler, a string timer (eval) and a javascript: link do not run', async () => {
     const page = await openUnderPolicy('embed.html?w=fresnel-zones');
+    // (eval called here directly would pass: DevTools runs this function outside the page's policy)
     const ran = await page.evaluate(async () => {
-      const script = Object.assign(document.createElement('script'), { textContent: 'window.__ran = "script"' });
-      document.body.append(script);
+      const ran = [];
+      window.__ran = (what) => ran.push(what);
+      document.body.append(Object.assign(document.createElement('script'), { textContent: 'window.__ran("script")' }));
       const img = document.createElement('img');
-      img.setAttribute('onerror', 'window.__ran = "handler"');
+      img.setAttribute('onerror', 'window.__ran("handler")');
       img.src = 'data:,not-an-image';
       document.body.append(img);
-      let evaluated = false;
-      try {
-        evaluated = eval('true'); // eslint-disable-line no-eval
-      } catch (e) {
-        evaluated = e.name;
-      }
-      await new Promise((r) => setTimeout(r, 300));
-      return { ran: window.__ran ?? null, evaluated };
+      setTimeout('window.__ran("timer")', 0);
+      const link = Object.assign(document.createElement('a'), { href: 'javascript:window.__ran("link")' });
+      document.body.append(link);
+      link.click();
+      await new Promise((r) => setTimeout(r, 400));
+      return ran;
     });
-    expect(ran).toEqual({ ran: null, evaluated: 'EvalError' });
-    const violations = await page.evaluate(() => window.__csp ?? []);
-    expect(violations.join('\n')).toMatch(/script-src-elem: inline/);
-    expect(violations.join('\n')).toMatch(/script-src-attr: inline/);
-    expect(violations.join('\n')).toMatch(/script-src: eval/);
+    expect(ran).toEqual([]);
+    const violations = (await page.evaluate(() => window.__csp ?? [])).join('\n');
+    expect(violations).toMatch(/script-src-elem: inline/); // the script, and the javascript: link
+    expect(violations).toMatch(/script-src-attr: inline/);
+    expect(violations).toMatch(/script-src: eval/);
     await page.close();
   });
 
