@@ -61,7 +61,8 @@ function cspMeta() {
     transformIndexHtml: {
       order: 'post',
       handler(html, { filename }) {
-        const meta = `<meta http-equiv="Content-Security-Policy" content="${contentSecurityPolicy(basename(filename, '.html'))}" />`;
+        const policy = contentSecurityPolicy(basename(filename, '.html'));
+        const meta = `<meta http-equiv="Content-Security-Policy" content="${policy}" />`;
         return html.replace(/<meta charset="utf-8" \/>/, (charset) => `${charset}\n    ${meta}`);
       },
     },

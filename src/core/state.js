@@ -47,14 +47,16 @@ function coerceField(key, f, raw, fallback) {
   switch (f.type) {
     case 'number': {
       const x = parseNumber(raw);
-      if (!Number.isFinite(x)) return bad(`${fmt(raw)} is not a ${typeof raw === 'number' ? 'finite' : 'decimal'} number`);
+      const kind = typeof raw === 'number' ? 'finite' : 'decimal';
+      if (!Number.isFinite(x)) return bad(`${fmt(raw)} is not a ${kind} number`);
       const v = Math.min(Math.max(x, f.min), f.max) || 0; // `|| 0`: -0 is stored as 0
       if (v !== x) return { value: v, notice: `${f.label ?? key}: ${x} is outside ${f.min}…${f.max}; clamped to ${v}.` };
       return { value: v };
     }
     case 'enum': {
       const v = typeof raw === 'number' ? String(raw) : raw; // an option like '64' may arrive as 64
-      return isOption(f.options, v) ? { value: v } : bad(`${fmt(raw)} is not one of ${Object.keys(f.options).join(', ')}`);
+      if (isOption(f.options, v)) return { value: v };
+      return bad(`${fmt(raw)} is not one of ${Object.keys(f.options).join(', ')}`);
     }
     case 'bool': {
       if (typeof raw === 'boolean') return { value: raw };
@@ -69,7 +71,8 @@ function coerceField(key, f, raw, fallback) {
       const known = [...new Set(items.filter((v) => isOption(f.options, v)))];
       const unknown = [...new Set(items.filter((v) => !isOption(f.options, v)))];
       if (!unknown.length) return { value: known };
-      const named = unknown.slice(0, 4).map(fmt).join(', ') + (unknown.length > 4 ? ` and ${unknown.length - 4} more` : '');
+      const more = unknown.length > 4 ? ` and ${unknown.length - 4} more` : '';
+      const named = unknown.slice(0, 4).map(fmt).join(', ') + more;
       if (!known.length) return bad(`${named} not recognised`);
       return { value: known, notice: `${f.label ?? key}: ignored unknown ${named}.` };
     }

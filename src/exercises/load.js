@@ -65,7 +65,9 @@ function nameOf(url) {
  */
 async function entriesOf(json, source, baseUrl, load) {
   const list = Array.isArray(json) ? json : Array.isArray(json?.exercises) ? json.exercises : null;
-  if (list?.length > MAX_SET_ENTRIES) return [{ source, error: `lists ${list.length} exercises; a set holds at most ${MAX_SET_ENTRIES}` }];
+  if (list?.length > MAX_SET_ENTRIES) {
+    return [{ source, error: `lists ${list.length} exercises; a set holds at most ${MAX_SET_ENTRIES}` }];
+  }
   if (Array.isArray(json)) return json.map((raw, i) => ({ source: `${source} #${i + 1}`, raw }));
   if (list) {
     return Promise.all(list.map(async (item, i) => {

@@ -60,7 +60,7 @@ async function embed(src) {
   }, src);
   const frame = await (await parent.waitForSelector('#embedded')).contentFrame();
   await frame.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 1, { timeout: 45_000 });
-  await parent.waitForFunction(() => window.__inbox.some((d) => d?.type === 'shading-lab:ready'), { timeout: 15_000 });
+  await parent.waitForFunction(() => window.__inbox.some((d) => d?.type === 'shading-lab:ready'), { timeout: 45_000 });
   return frame;
 }
 
@@ -143,7 +143,9 @@ describe('fuzz: every widget by URL and by postMessage from another origin', () 
 
       // odd but valid values are taken without a fault; then a good state, and a picture of it
       const odd = oddButValid(schema).map((state, i) => ({ type: 'shading-lab:set', id: `odd${i}`, state }));
-      const good = { ...goodPartial(schema), ...(schema.refSamples ? { refSamples: '128' } : {}) }; // converges soon
+      // a good state that converges soon: the fewest samples a progressive widget offers
+      const fewest = Object.fromEntries(['refSamples', 'samples'].filter((k) => schema[k]?.type === 'enum').map((k) => [k, Object.keys(schema[k].options)[0]]));
+      const good = { ...goodPartial(schema), ...fewest };
       const replies = await postAll([...odd, { type: 'shading-lab:set', id: 'good', state: good }], 'after-good');
       counts.inputs += odd.length;
       expect(replies.filter((d) => d.type === 'shading-lab:error'), 'odd but valid values').toEqual([]);
@@ -247,4 +249,27 @@ describe('fuzz: files dropped and fetched', () => {
     expect(page.errors).toEqual([]);
     await page.close();
   }, 120_000);
+});
+
+describe('the three links of issue 17 that crashed a widget', () => {
+  const LINKS = {
+    'brdf-lobe': ['F=__proto__', ['F']],
+    'visibility-explorer': ['terms=__proto__', ['terms']],
+    'fresnel-zones': ['shape=__proto__&camera=constructor&palette=toString&mode=hasOwnProperty', ['shape', 'camera', 'palette', 'mode']],
+  };
+  for (const [name, [query, keys]] of Object.entries(LINKS)) {
+    it(`embed.html?w=${name}&${query}: mounts with its defaults, says what it refused, draws, no error`, async () => {
+      const page = await open(browser, `embed.html?w=${name}&${query}`);
+      await page.waitForFunction((n) => globalThis.__shadingLab?.widgets?.[n], { timeout: 45_000 }, name);
+      await settle(page, 500);
+      const state = await page.evaluate((n) => globalThis.__shadingLab.widgets[n].getState(), name);
+      const defaults = defaultState(schemas[name]);
+      for (const key of keys) expect(state[key], key).toEqual(defaults[key]);
+      const notices = await page.$$eval('.notice', (n) => n.map((x) => x.textContent).join('\n'));
+      for (const key of keys) expect(notices).toContain(`${schemas[name][key].label ?? key}:`);
+      expect(await page.evaluate(() => window.__drawCalls)).toBeGreaterThan(0); // it drew (with its defaults)
+      expect(page.errors).toEqual([]);
+      await page.close();
+    });
+  }
 });

@@ -99,8 +99,9 @@ export function claimedSize(ext, buffer) {
 
 /** Why a width × height map cannot be an environment, or null. */
 function sizeProblem(name, width, height, claims = 'is') {
-  if (width > MAX_WIDTH || height > MAX_WIDTH / 2) return `“${name}” ${claims} ${width}×${height}; the limit is ${MAX_WIDTH}×${MAX_WIDTH / 2}.`;
-  if (Math.abs(width - 2 * height) > 2) return `“${name}” ${claims} ${width}×${height}: an environment must be equirectangular, twice as wide as high.`;
+  const size = `“${name}” ${claims} ${width}×${height}`;
+  if (width > MAX_WIDTH || height > MAX_WIDTH / 2) return `${size}; the limit is ${MAX_WIDTH}×${MAX_WIDTH / 2}.`;
+  if (Math.abs(width - 2 * height) > 2) return `${size}: an environment must be equirectangular, twice as wide as high.`;
   return null;
 }
 
@@ -112,7 +113,8 @@ export function parseEnvironmentFile(name, buffer) {
   const ext = name.toLowerCase().split('.').pop();
   if (ext !== 'hdr' && ext !== 'exr') throw new Error(`“${name}” is not an .hdr or .exr file.`);
   if (buffer.byteLength > MAX_FILE_BYTES) {
-    throw new Error(`“${name}” is ${buffer.byteLength.toLocaleString('en')} bytes; the limit is ${MAX_FILE_BYTES.toLocaleString('en')} bytes (${MAX_FILE_BYTES / 2 ** 20} MB).`);
+    const limit = `${MAX_FILE_BYTES.toLocaleString('en')} bytes (${MAX_FILE_BYTES / 2 ** 20} MB)`;
+    throw new Error(`“${name}” is ${buffer.byteLength.toLocaleString('en')} bytes; the limit is ${limit}.`);
   }
   const claimed = claimedSize(ext, buffer);
   if (claimed?.problem) throw new Error(`“${name}” could not be read as EXR: ${claimed.problem}.`);
@@ -130,7 +132,9 @@ export function parseEnvironmentFile(name, buffer) {
   const problem = sizeProblem(name, width, height);
   if (problem) throw new Error(problem);
   const channels = data.length / (width * height);
-  if (![1, 3, 4].includes(channels)) throw new Error(`“${name}” ends early: ${width}×${height} pixels need more data than it holds.`);
+  if (![1, 3, 4].includes(channels)) {
+    throw new Error(`“${name}” ends early: ${width}×${height} pixels need more data than it holds.`);
+  }
   const rgba = new Float32Array(width * height * 4);
   let bad = 0;
   for (let p = 0; p < width * height; p++) {
