@@ -1,5 +1,5 @@
 import { defineConfig } from 'vite';
-import { resolve } from 'node:path';
+import { basename, resolve } from 'node:path';
 
 // Every HTML page is an entry; relative base so the built site works from any static host and sub-path.
 const pages = ['index', 'embed', 'media', 'surfaces', 'brdf', 'microfacets', 'fresnel', 'ndf', 'visibility', 'diffuse', 'rendering', 'performance', 'parity', 'exercises', 'tour', 'gallery', 'wall'];
@@ -27,9 +27,51 @@ function pageChrome() {
   };
 }
 
+/**
+ * The Content-Security-Policy of a built page, one directive a line. Scripts come only from the app's own
+ * origin: no inline script, no inline handler, no eval (`user code never runs as JavaScript` is the browser's
+ * rule, not only ours). The looser parts, and why:
+ * - style-src 'unsafe-inline': lil-gui injects its stylesheet as a <style> element and the widgets' readouts
+ *   carry style attributes (swatch colours); CSS cannot run script, so this costs nothing of the above.
+ * - img-src data: blob:, font-src data:: lil-gui's font is a data: URL; a canvas saved as PNG goes out through a
+ *   blob: URL, and an image decoded in the page may come as data:.
+ * - connect-src on exercises.html: `?src=URL` fetches a lecturer's set from any HTTPS host (which must allow
+ *   it by CORS) or from a data: URL; every other page fetches only from its own origin.
+ * frame-ancestors cannot be set from a <meta> (embedding is governed by the postMessage origin checks).
+ */
+export function contentSecurityPolicy(page) {
+  return [
+    "default-src 'self'",
+    "script-src 'self'",
+    "style-src 'self' 'unsafe-inline'",
+    "img-src 'self' data: blob:",
+    "font-src 'self' data:",
+    `connect-src 'self'${page === 'exercises' ? ' https: data:' : ''}`,
+    "object-src 'none'",
+    "base-uri 'self'",
+    "form-action 'self'",
+  ].join('; ');
+}
+
+/** Puts the policy in every built page as a <meta>, before any script; the dev server (HMR) is left without. */
+function cspMeta() {
+  return {
+    name: 'shading-lab-csp',
+    apply: 'build',
+    transformIndexHtml: {
+      order: 'post',
+      handler(html, { filename }) {
+        const policy = contentSecurityPolicy(basename(filename, '.html'));
+        const meta = `<meta http-equiv="Content-Security-Policy" content="${policy}" />`;
+        return html.replace(/<meta charset="utf-8" \/>/, (charset) => `${charset}\n    ${meta}`);
+      },
+    },
+  };
+}
+
 export default defineConfig({
   base: './',
-  plugins: [pageChrome()],
+  plugins: [pageChrome(), cspMeta()],
   build: {
     target: 'es2022',
     chunkSizeWarningLimit: 700, // three.js alone is ~540 kB and is shared by every 3-D page

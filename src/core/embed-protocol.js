@@ -17,6 +17,7 @@ export const MESSAGE_PREFIX = 'shading-lab:';
 export const CHANGED_DEBOUNCE_MS = 150;
 const MAX_ID_LENGTH = 200;
 
+const cut = (key) => (key.length > 60 ? `${key.slice(0, 60)}… (${key.length} characters)` : key); // a key echoed back
 const isPlainObject = (x) => x !== null && typeof x === 'object' && Object.getPrototypeOf(x) === Object.prototype;
 const isId = (id) => id === undefined || (typeof id === 'string' && id.length <= MAX_ID_LENGTH) || Number.isFinite(id);
 
@@ -57,7 +58,8 @@ export function checkIncomingState(schema, partial, current) {
   const unknown = Object.keys(partial).filter((k) => !Object.hasOwn(schema, k));
   return {
     invalid: coerceState(schema, partial, current).notices,
-    unknown: unknown.map((k) => `“${k}” is not a setting of this widget (it has: ${Object.keys(schema).join(', ')}); ignored.`),
+    unknown: unknown.map((k) => `“${cut(k)}” is not a setting of this widget (it has: ${Object.keys(schema).join(', ')}); `
+      + 'ignored.'),
   };
 }
 

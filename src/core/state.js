@@ -1,7 +1,9 @@
 // A widget's state is a plain object described by a schema. Values come in from the URL (strings),
 // from the GUI, from code and from postMessage; all go through coerceState, which never throws:
 // unknown keys are ignored, bad values fall back (to the current or default value) and are reported,
-// numbers are clamped to their documented range.
+// numbers are clamped to their documented range. Input may be hostile (a crafted link, a page posting `set`):
+// an enum or list value must be an OWN option (`__proto__`, `constructor`, `toString` are `in` every object),
+// numbers are plain decimals (no hex, no Infinity), and a value echoed in a notice is cut short.
 //
 // Field kinds: { type: 'number', min, max, step, default, label, unit }
 //              { type: 'enum', options: { value: label }, default, label }
@@ -15,20 +17,47 @@ export function defaultState(schema) {
   );
 }
 
-const fmt = (v) => (typeof v === 'string' ? `"${v}"` : JSON.stringify(v));
+const MAX_SHOWN = 60; // characters of a bad value repeated in a notice
+
+/** A value as a notice quotes it: strings in quotes, anything long cut short. */
+export function showValue(v) {
+  let text;
+  try {
+    text = typeof v === 'string' ? `"${v}"` : (JSON.stringify(v) ?? String(v));
+  } catch {
+    text = Object.prototype.toString.call(v); // e.g. a BigInt or a cycle
+  }
+  return text.length > MAX_SHOWN ? `${text.slice(0, MAX_SHOWN)}… (${text.length} characters)` : text;
+}
+const fmt = showValue;
+
+/** True when `value` names an own option of `options` (a plain object of value → label). */
+export const isOption = (options, value) => typeof value === 'string' && Object.hasOwn(options, value);
+
+// A decimal number as a URL carries it: 12, -0.5, .5, 1e-3. Not hex, binary, Infinity or other digits.
+const DECIMAL = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;
+
+function parseNumber(raw) {
+  if (typeof raw === 'number') return raw;
+  return typeof raw === 'string' && DECIMAL.test(raw.trim()) ? Number(raw.trim()) : NaN;
+}
 
 function coerceField(key, f, raw, fallback) {
   const bad = (why) => ({ value: fallback, notice: `${f.label ?? key}: ${why}; kept ${fmt(fallback)}.` });
   switch (f.type) {
     case 'number': {
-      const x = typeof raw === 'number' ? raw : typeof raw === 'string' && raw.trim() !== '' ? Number(raw) : NaN;
-      if (!Number.isFinite(x)) return bad(`${fmt(raw)} is not a number`);
-      const v = Math.min(Math.max(x, f.min), f.max);
+      const x = parseNumber(raw);
+      const kind = typeof raw === 'number' ? 'finite' : 'decimal';
+      if (!Number.isFinite(x)) return bad(`${fmt(raw)} is not a ${kind} number`);
+      const v = Math.min(Math.max(x, f.min), f.max) || 0; // `|| 0`: -0 is stored as 0
       if (v !== x) return { value: v, notice: `${f.label ?? key}: ${x} is outside ${f.min}…${f.max}; clamped to ${v}.` };
       return { value: v };
     }
-    case 'enum':
-      return String(raw) in f.options ? { value: String(raw) } : bad(`${fmt(raw)} is not one of ${Object.keys(f.options).join(', ')}`);
+    case 'enum': {
+      const v = typeof raw === 'number' ? String(raw) : raw; // an option like '64' may arrive as 64
+      if (isOption(f.options, v)) return { value: v };
+      return bad(`${fmt(raw)} is not one of ${Object.keys(f.options).join(', ')}`);
+    }
     case 'bool': {
       if (typeof raw === 'boolean') return { value: raw };
       if (raw === '1' || raw === 'true') return { value: true };
@@ -36,14 +65,16 @@ function coerceField(key, f, raw, fallback) {
       return bad(`${fmt(raw)} is not true/false`);
     }
     case 'set': {
-      const items = Array.isArray(raw) ? raw.map(String) : typeof raw === 'string' ? raw.split(',').filter(Boolean) : null;
+      const items = Array.isArray(raw) ? raw.map((v) => (typeof v === 'number' ? String(v) : v))
+        : typeof raw === 'string' ? raw.split(',').filter(Boolean) : null;
       if (!items) return bad(`${fmt(raw)} is not a list`);
-      const known = [...new Set(items.filter((v) => v in f.options))];
-      const unknown = items.filter((v) => !(v in f.options));
-      if (unknown.length && !known.length) return bad(`${unknown.map(fmt).join(', ')} not recognised`);
-      return unknown.length
-        ? { value: known, notice: `${f.label ?? key}: ignored unknown ${unknown.map(fmt).join(', ')}.` }
-        : { value: known };
+      const known = [...new Set(items.filter((v) => isOption(f.options, v)))];
+      const unknown = [...new Set(items.filter((v) => !isOption(f.options, v)))];
+      if (!unknown.length) return { value: known };
+      const more = unknown.length > 4 ? ` and ${unknown.length - 4} more` : '';
+      const named = unknown.slice(0, 4).map(fmt).join(', ') + more;
+      if (!known.length) return bad(`${named} not recognised`);
+      return { value: known, notice: `${f.label ?? key}: ignored unknown ${named}.` };
     }
     case 'color': {
       const hex = typeof raw === 'string' ? raw.trim().replace(/^#?/, '#').toLowerCase() : '';

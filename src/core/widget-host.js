@@ -9,12 +9,12 @@ registry.widgets ??= {};
 
 /** The URL parameters that belong to a widget: all of them, or those under `prefix.`. */
 export function widgetParams(search, prefix) {
-  const out = {};
+  const out = new Map(); // not a plain object: a parameter named __proto__ must stay a key like any other
   for (const [k, v] of new URLSearchParams(search)) {
-    if (!prefix) out[k] = v;
-    else if (k.startsWith(`${prefix}.`)) out[k.slice(prefix.length + 1)] = v;
+    if (!prefix) out.set(k, v);
+    else if (k.startsWith(`${prefix}.`)) out.set(k.slice(prefix.length + 1), v);
   }
-  return out;
+  return Object.fromEntries(out);
 }
 
 // Parameters of embed.html that are not widget state: the widget's name and the origins allowed to message it.

@@ -1,18 +1,43 @@
 // Reads a set of exercises: one exercise object, a list of them, or an index { "exercises": [file names
 // relative to the index, or objects] }, from a URL or from a dropped file's text. Never throws: every
 // problem comes back as { source, errors } next to the exercises that are fine.
+import { showValue } from '../core/state.js';
 import { validateExercise } from './validate.js';
+
+// An exercise file is a few kB; a set is refused past these, before it is read into memory.
+export const MAX_SET_BYTES = 1024 * 1024;
+export const MAX_SET_ENTRIES = 200;
+const LIMIT = `${MAX_SET_BYTES.toLocaleString('en')} bytes (1 MB)`;
+const tooBig = (bytes) => `is ${bytes.toLocaleString('en')} bytes; the limit is ${LIMIT}`;
+
+/** The body as text, or null past MAX_SET_BYTES (the read stops there, whatever the header claimed). */
+async function cappedText(res) {
+  const chunks = [];
+  let size = 0;
+  const reader = res.body.getReader();
+  for (let part = await reader.read(); !part.done; part = await reader.read()) {
+    size += part.value.length;
+    if (size > MAX_SET_BYTES) {
+      reader.cancel();
+      return null;
+    }
+    chunks.push(part.value);
+  }
+  return new Blob(chunks).text();
+}
 
 /** fetch + JSON.parse with the failure said in words. Returns { json } or { error }. */
 export async function fetchJson(url) {
-  let res;
   try {
-    res = await fetch(url);
+    const res = await fetch(url);
+    if (!res.ok) return { error: `could not be loaded (HTTP ${res.status})` };
+    const claimed = Number(res.headers.get('content-length'));
+    if (claimed > MAX_SET_BYTES) return { error: tooBig(claimed) };
+    const text = res.body ? await cappedText(res) : '';
+    return text === null ? { error: `is larger than the limit of ${LIMIT}` } : parseJson(text);
   } catch (e) {
     return { error: `could not be loaded (${e.message})` };
   }
-  if (!res.ok) return { error: `could not be loaded (HTTP ${res.status})` };
-  return parseJson(await res.text());
 }
 
 export function parseJson(text) {
@@ -24,16 +49,28 @@ export function parseJson(text) {
 }
 
 /** A short name for messages: the file name, or "data URL" for an inline set. */
-const nameOf = (url) => (url.startsWith('data:') ? 'data URL' : decodeURIComponent(new URL(url).pathname.split('/').pop() || url));
+function nameOf(url) {
+  if (url.startsWith('data:')) return 'data URL';
+  const name = new URL(url).pathname.split('/').pop() || url;
+  try {
+    return decodeURIComponent(name);
+  } catch {
+    return name; // a malformed escape (%E0) is shown as it is
+  }
+}
 
 /**
  * Entries of a set and where each came from: [{ source, raw }] or [{ source, error }].
  * `json` was read from `baseUrl` (null for a dropped file, whose index entries cannot be fetched).
  */
 async function entriesOf(json, source, baseUrl, load) {
+  const list = Array.isArray(json) ? json : Array.isArray(json?.exercises) ? json.exercises : null;
+  if (list?.length > MAX_SET_ENTRIES) {
+    return [{ source, error: `lists ${list.length} exercises; a set holds at most ${MAX_SET_ENTRIES}` }];
+  }
   if (Array.isArray(json)) return json.map((raw, i) => ({ source: `${source} #${i + 1}`, raw }));
-  if (json && typeof json === 'object' && Array.isArray(json.exercises)) {
-    return Promise.all(json.exercises.map(async (item, i) => {
+  if (list) {
+    return Promise.all(list.map(async (item, i) => {
       if (typeof item !== 'string') return { source: `${source} #${i + 1}`, raw: item };
       if (!baseUrl) return { source: item, error: 'is a file name, but a dropped index cannot fetch files: drop the exercise files themselves' };
       const got = await load(new URL(item, baseUrl).href);
@@ -66,9 +103,18 @@ export async function readExerciseSet(json, { source, baseUrl = null, schemaOf, 
 
 /** A set from a URL (resolved against the page). */
 export async function loadExerciseSet(url, { schemaOf, load = fetchJson }) {
-  const href = new URL(url, location.href).href;
+  const href = URL.canParse(url, location.href) && new URL(url, location.href).href;
+  if (!href) return { exercises: [], problems: [{ source: 'src', errors: [`src: ${showValue(url)} is not a URL`] }] };
   const got = await load(href);
   const source = nameOf(href);
   if (got.error) return { exercises: [], problems: [{ source, errors: [`${source} ${got.error}`] }] };
   return readExerciseSet(got.json, { source, baseUrl: href, schemaOf, load });
+}
+
+/** A set from a chosen or dropped file; one over the size limit is refused by its size alone. */
+export async function readExerciseFile(file, { schemaOf }) {
+  const source = file.name;
+  const got = file.size > MAX_SET_BYTES ? { error: tooBig(file.size) } : parseJson(await file.text());
+  if (got.error) return { exercises: [], problems: [{ source, errors: [`${source} ${got.error}`] }] };
+  return readExerciseSet(got.json, { source, schemaOf });
 }

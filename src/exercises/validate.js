@@ -1,12 +1,12 @@
 // Checks an exercise file (parsed JSON) against the format in docs/exercises.md. Never throws: returns
 // { exercise, errors }, each error naming the field and what is wrong, so a lecturer can fix the file.
 import { CHAPTERS } from '../core/chapters.js';
-import { defaultState } from '../core/state.js';
+import { defaultState, isOption, showValue } from '../core/state.js';
 import { GRADERS, isGraderName } from './graders.js';
 
 export const FIELDS = ['id', 'chapter', 'title', 'prompt', 'widget', 'state', 'locked', 'grader', 'params', 'tolerance'];
 
-const show = (v) => (typeof v === 'string' ? `"${v}"` : JSON.stringify(v));
+const show = showValue;
 const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
 const sameValue = (a, b) => JSON.stringify(Array.isArray(a) ? [...a].sort() : a) === JSON.stringify(Array.isArray(b) ? [...b].sort() : b);
 
@@ -17,12 +17,12 @@ export function fieldProblem(f, value) {
       if (typeof value !== 'number' || !Number.isFinite(value)) return `${show(value)} is not a number`;
       return value < f.min || value > f.max ? `${value} is outside ${f.min}…${f.max}` : null;
     case 'enum':
-      return typeof value === 'string' && Object.hasOwn(f.options, value) ? null : `${show(value)} is not one of ${Object.keys(f.options).join(', ')}`;
+      return isOption(f.options, value) ? null : `${show(value)} is not one of ${Object.keys(f.options).join(', ')}`;
     case 'bool':
       return typeof value === 'boolean' ? null : `${show(value)} is not true or false`;
     case 'set': {
       if (!Array.isArray(value)) return `${show(value)} is not a list`;
-      const unknown = value.filter((v) => !Object.hasOwn(f.options, v));
+      const unknown = value.filter((v) => !isOption(f.options, v));
       return unknown.length ? `${unknown.map(show).join(', ')} not among ${Object.keys(f.options).join(', ')}` : null;
     }
     case 'color':

@@ -4,11 +4,13 @@
 import '../styles.css';
 import { CHAPTERS } from '../core/chapters.js';
 import { mountWidget } from '../core/widget-host.js';
+import { isOption } from '../core/state.js';
 import { WIDGETS, isWidgetName } from '../widgets/registry.js';
 import { GRADERS } from '../exercises/graders.js';
-import { loadExerciseSet, parseJson, readExerciseSet } from '../exercises/load.js';
+import { loadExerciseSet, readExerciseFile } from '../exercises/load.js';
 import { createProgress } from '../exercises/progress.js';
 import { createPreview } from '../exercises/previews.js';
+import { hashId } from '../core/url-hash.js';
 
 const registry = (globalThis.__shadingLab ??= { frames: 0 });
 const listEl = document.getElementById('exercise-list');
@@ -92,7 +94,9 @@ function check(read) {
     answer = Number(raw.replace(',', '.'));
     if (raw === '' || !Number.isFinite(answer)) return { ok: false, counted: false, summary: `Enter a number${grader.answer.unit ? ` in ${grader.answer.unit}` : ''}.`, details: [] };
   }
-  if (grader.answer.kind === 'choice' && !raw) return { ok: false, counted: false, summary: 'Pick one of the options.', details: [] };
+  if (grader.answer.kind === 'choice' && !isOption(grader.answer.choices(exercise.params), raw)) {
+    return { ok: false, counted: false, summary: 'Pick one of the options.', details: [] };
+  }
   try {
     const result = grader.grade({ state: widget?.getState() ?? {}, answer, params: exercise.params, tolerance: exercise.tolerance, hidden });
     return { ...result, counted: true };
@@ -171,7 +175,7 @@ async function openExercise(exercise, { focus = false } = {}) {
 }
 
 function route(event) {
-  const id = decodeURIComponent(location.hash.slice(1));
+  const id = hashId();
   const exercise = exercises.find((e) => e.id === id) ?? exercises[0];
   if (!exercise) {
     closeCurrent();
@@ -192,12 +196,7 @@ function useSet({ exercises: list, problems }) {
 window.addEventListener('hashchange', route);
 
 // A lecturer's own file, chosen or dropped: it replaces the list shown.
-async function readFile(file) {
-  const got = parseJson(await file.text());
-  useSet(got.error
-    ? { exercises: [], problems: [{ source: file.name, errors: [`${file.name} ${got.error}`] }] }
-    : await readExerciseSet(got.json, { source: file.name, schemaOf }));
-}
+const readFile = async (file) => useSet(await readExerciseFile(file, { schemaOf }));
 document.getElementById('exercise-file').addEventListener('change', (e) => e.target.files[0] && readFile(e.target.files[0]));
 const drop = document.getElementById('exercise-drop');
 drop.addEventListener('dragover', (e) => {

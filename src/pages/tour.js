@@ -8,6 +8,7 @@ import { defaultState } from '../core/state.js';
 import { createNoticeArea } from '../core/notice.js';
 import { WIDGETS, isWidgetName } from '../widgets/registry.js';
 import { tourPlan } from '../tour/steps.js';
+import { hashId } from '../core/url-hash.js';
 
 const { steps, sections } = tourPlan(isWidgetName);
 const root = document.getElementById('tour');
@@ -100,7 +101,7 @@ function go(i) {
 }
 
 function route() {
-  const id = decodeURIComponent(location.hash.slice(1));
+  const id = hashId();
   const i = steps.findIndex((s) => s.id === id);
   if (i >= 0) {
     if (i !== index) show(i);

@@ -2,7 +2,7 @@
 // page of twenty 3-D widgets held within the browser's cap on live WebGL contexts.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { WIDGETS } from '../../src/widgets/registry.js';
-import { baseUrl, distinctColors, launchBrowser, open, setControl, settle } from './helpers.js';
+import { baseUrl, distinctColors, launchBrowser, open, openForeignParent, otherOrigin, setControl, settle } from './helpers.js';
 import { openPage } from './harness.js';
 
 let browser;
@@ -14,8 +14,6 @@ afterAll(async () => {
 });
 
 const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
-// the same server under a second name: another origin, as an embedding site on another host would be
-const otherOrigin = () => baseUrl().replace('127.0.0.1', 'localhost');
 const originOf = (url) => new URL(url).origin;
 
 /**
@@ -115,7 +113,7 @@ describe('postMessage protocol of embed.html', () => {
   });
 
   it('ignores a parent on an origin it was not given, and talks to one listed in origins=', async () => {
-    const page = await open(browser, new URL('index.html', otherOrigin()).href);
+    const page = await openForeignParent(browser);
     const parentOrigin = originOf(otherOrigin());
     const widgetOrigin = originOf(baseUrl());
     expect(parentOrigin).not.toBe(widgetOrigin);

@@ -21,6 +21,17 @@ function countDrawCalls() {
 export const open = (browser, path, size = {}) =>
   openPage(browser, baseUrl(), path, { ...size, beforeLoad: (page) => page.evaluateOnNewDocument(countDrawCalls) });
 
+/** The app under a second name (localhost for 127.0.0.1): another origin, as a site embedding a widget is. */
+export const otherOrigin = () => baseUrl().replace('127.0.0.1', 'localhost');
+
+/**
+ * A page standing in for another site that embeds a widget: index.html on the other origin, with the app's own
+ * Content-Security-Policy bypassed there (a third-party page has its own policy, and ours allows frames from
+ * the app's origin only). The embedded widget keeps its policy.
+ */
+export const openForeignParent = (browser) =>
+  openPage(browser, baseUrl(), new URL('index.html', otherOrigin()).href, { beforeLoad: (page) => page.setBypassCSP(true) });
+
 /** Waits for a widget instance to be registered under `key` (its name, or its prefix on a page). */
 export async function widget(page, key) {
   await page.waitForFunction((k) => globalThis.__shadingLab?.widgets?.[k], { timeout: 30_000 }, key);
@@ -67,21 +78,18 @@ export async function shot(page, selector) {
   return (await page.$(selector)).screenshot({ encoding: 'base64' });
 }
 
-/** Runs fn(imageData) in the page on a decoded base64 PNG. */
+/**
+ * Runs fn(imageData) in the page on a decoded base64 PNG. Sent as a string expression (DevTools evaluates it
+ * outside the page's Content-Security-Policy, which forbids eval and new Function in the page's own code).
+ */
 export function withPixels(page, png, fn) {
-  return page.evaluate(
-    async (b64, body) => {
-      const img = new Image();
-      img.src = `data:image/png;base64,${b64}`;
-      await img.decode();
-      const c = new OffscreenCanvas(img.width, img.height);
-      const ctx = c.getContext('2d');
-      ctx.drawImage(img, 0, 0);
-      return new Function('image', body)(ctx.getImageData(0, 0, img.width, img.height));
-    },
-    png,
-    `return (${fn})(image);`,
-  );
+  return page.evaluate(`(async () => {
+    const bytes = Uint8Array.from(atob(${JSON.stringify(png)}), (ch) => ch.charCodeAt(0));
+    const bitmap = await createImageBitmap(new Blob([bytes], { type: 'image/png' }));
+    const ctx = new OffscreenCanvas(bitmap.width, bitmap.height).getContext('2d');
+    ctx.drawImage(bitmap, 0, 0);
+    return (${fn})(ctx.getImageData(0, 0, bitmap.width, bitmap.height));
+  })()`);
 }
 
 /** Distinct colours in a base64 PNG (a canvas that is not blank has many). */

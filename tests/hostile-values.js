@@ -1,0 +1,133 @@
+// Hostile values for the fuzz tests (unit and browser): what a crafted link or a hostile parent page may send,
+// a seeded generator of partial states from them, and the rules a widget's state must keep whatever came in.
+// The rules are written here from the README's description of the state, not from src/core/state.js.
+
+/** A small seeded generator (mulberry32): the same seed gives the same inputs on every run. */
+export function seededRandom(seed) {
+  let a = seed >>> 0;
+  return () => {
+    a = (a + 0x6d2b79f5) >>> 0;
+    let t = Math.imul(a ^ (a >>> 15), 1 | a);
+    t = (t + Math.imul(t ^ (t >>> 7), 61 | t)) ^ t;
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
+
+export const PROTOTYPE_NAMES = ['__proto__', 'constructor', 'toString', 'hasOwnProperty', 'valueOf', 'prototype', '__defineGetter__'];
+const LONG = 'x'.repeat(5000);
+const HTML = ['<img src=x onerror="document.title=\'pwned\'">', '<script>document.title="pwned"</script>', '"><svg onload=alert(1)>'];
+
+/** As text (URL parameters) and typed (postMessage): every one of them is refused or clamped. */
+export const NUMBER_TEXTS = ['NaN', 'Infinity', '-Infinity', '1e309', '-1e309', '0x10', '0b11', '0o7', '١٢', '１２', '1_0', '', ' ', '1e', '.', '12abc', '1,5'];
+export const NUMBERS = [NaN, Infinity, -Infinity, Number.MAX_VALUE, -Number.MAX_VALUE, -0, 5e-324];
+export const STRINGS = [...PROTOTYPE_NAMES, LONG, ...HTML, 'javascript:alert(1)', '\u0000', '\u202e'];
+
+/** Lists with empty, repeated and inherited items, built around a real option `o`. */
+export const listTexts = (o) => [',', ',,', `${o},,${o}`, `${o},${o},${o}`, `${o},__proto__`, '__proto__,constructor', `,${o},`];
+export const listArrays = (o) => [[], [''], [o, o], [o, '', o], [o, '__proto__'], [[o]], [null], [{}], [o, 7]];
+export const ODD = [null, true, false, {}, [], { valueOf: 1 }, LONG];
+
+/** Candidate raw values for field `f` (`typed`: as postMessage would carry them, else as URL text). */
+export function candidates(f, typed) {
+  const option = f.options ? Object.keys(f.options)[0] : 'x';
+  const own = typed ? [...NUMBERS, ...STRINGS, ...ODD] : [...NUMBER_TEXTS, ...STRINGS];
+  if (f.type === 'set') return [...own, ...(typed ? listArrays(option) : listTexts(option))];
+  return own;
+}
+
+/** One seeded partial state of 1–4 hostile fields (sometimes a good value too), plus prototype keys now and then. */
+export function hostilePartial(schema, random, typed) {
+  const keys = Object.keys(schema);
+  const pick = (list) => list[Math.floor(random() * list.length)];
+  const partial = {};
+  const n = 1 + Math.floor(random() * 4);
+  for (let i = 0; i < n; i++) {
+    const key = pick(keys);
+    partial[key] = pick(candidates(schema[key], typed));
+  }
+  if (random() < 0.2) Object.defineProperty(partial, pick(PROTOTYPE_NAMES), { value: 'pwned', enumerable: true });
+  return partial;
+}
+
+const DECIMAL = /^\s*[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?\s*$/i;
+
+/** True when `raw` is a value the README says a field takes as it is (no notice): the independent statement. */
+export function isClean(f, raw) {
+  const own = (v) => typeof v === 'string' && Object.prototype.hasOwnProperty.call(f.options, v);
+  switch (f.type) {
+    case 'number': {
+      const x = typeof raw === 'number' ? raw : typeof raw === 'string' && DECIMAL.test(raw) ? Number(raw) : NaN;
+      return Number.isFinite(x) && x >= f.min && x <= f.max;
+    }
+    case 'enum':
+      return own(typeof raw === 'number' ? String(raw) : raw);
+    case 'bool':
+      return [true, false, '1', '0', 'true', 'false'].includes(raw);
+    case 'set': {
+      const items = typeof raw === 'string' ? raw.split(',').filter((s) => s !== '') : Array.isArray(raw) ? raw : null;
+      return items !== null && items.every((v) => own(typeof v === 'number' ? String(v) : v));
+    }
+    case 'color':
+      return typeof raw === 'string' && /^#?[0-9a-f]{6}$/i.test(raw.trim());
+    default:
+      return false;
+  }
+}
+
+/** True when a field must keep its value for `raw`: not clean, and nothing in it to clamp or keep. */
+export function isRefused(f, raw) {
+  if (isClean(f, raw)) return false;
+  if (f.type === 'number') return !Number.isFinite(typeof raw === 'number' ? raw : typeof raw === 'string' && DECIMAL.test(raw) ? Number(raw) : NaN);
+  if (f.type !== 'set') return true;
+  const items = typeof raw === 'string' ? raw.split(',').filter((s) => s !== '') : Array.isArray(raw) ? raw : null;
+  return items === null || !items.some((v) => isClean(f, [v]));
+}
+
+/** A valid state change for `schema`: its first two fields moved off their defaults. */
+export function goodPartial(schema) {
+  const out = {};
+  for (const [key, f] of Object.entries(schema).slice(0, 2)) {
+    const options = f.options ? Object.keys(f.options) : [];
+    const mid = Number(((f.min + f.max) / 2).toPrecision(3));
+    out[key] = f.type === 'number' ? (mid === f.default ? f.min : mid)
+      : f.type === 'enum' ? options.find((o) => o !== f.default)
+        : f.type === 'bool' ? !f.default
+          : f.type === 'set' ? [options.find((o) => !f.default.includes(o)) ?? options[0]] : '#336699';
+  }
+  return out;
+}
+
+/** Values that are odd but valid (the field takes them): empty and repeated list items, −0, a padded decimal. */
+export function oddButValid(schema) {
+  return Object.entries(schema).flatMap(([key, f]) => {
+    const o = f.options ? Object.keys(f.options)[0] : null;
+    if (f.type === 'set') return [{ [key]: ',' }, { [key]: `${o},,${o}` }, { [key]: [o, o, o] }];
+    if (f.type === 'number' && f.min <= 0 && f.max >= 0) return [{ [key]: -0 }, { [key]: ' -0 ' }];
+    return [];
+  });
+}
+
+/** Numbers as JSON cannot carry them (NaN, ±Infinity, −0) and back: for sending values through DevTools. */
+export const encodeNumbers = (value) => JSON.stringify(value, (k, v) => (typeof v === 'number' && (!Number.isFinite(v) || Object.is(v, -0)) ? { $n: Object.is(v, -0) ? '-0' : String(v) } : v));
+export const reviveNumbers = (k, v) => (v && typeof v === 'object' && typeof v.$n === 'string' && Object.keys(v).length === 1 ? Number(v.$n) : v);
+
+/** What is wrong with a widget's whole state against its schema: [] when every value is one it may hold. */
+export function stateProblems(schema, state) {
+  const problems = [];
+  const own = (f, v) => typeof v === 'string' && Object.prototype.hasOwnProperty.call(f.options, v);
+  for (const [key, f] of Object.entries(schema)) {
+    const v = state[key];
+    const ok =
+      f.type === 'number' ? typeof v === 'number' && Number.isFinite(v) && v >= f.min && v <= f.max && !Object.is(v, -0)
+        : f.type === 'enum' ? own(f, v)
+          : f.type === 'bool' ? typeof v === 'boolean'
+            : f.type === 'set' ? Array.isArray(v) && v.every((x) => own(f, x)) && new Set(v).size === v.length
+              : f.type === 'color' ? /^#[0-9a-f]{6}$/.test(v) : false;
+    if (!ok) problems.push(`${key} = ${JSON.stringify(v)?.slice(0, 80)}`);
+  }
+  for (const key of Object.keys(state)) if (!Object.hasOwn(schema, key)) problems.push(`extra key ${key}`);
+  return problems;
+}
+
+/** Object.prototype's own property names: a fuzz run must leave them exactly as they were. */
+export const prototypeNames = () => Object.getOwnPropertyNames(Object.prototype).sort().join(',');
