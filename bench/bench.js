@@ -1,7 +1,8 @@
 // npm run bench: for every family of terms, each variant's error against the float64 reference over a
 // documented domain, its CPU cost (tinybench, ns per evaluation) and its GPU cost (a full-screen pass in
 // headless Chromium). Prints a table and writes JSON (bench/results/latest.json, or --out FILE).
-// --quick: a tiny budget, for the test suite.
+// --quick: a tiny budget, for the test suite. --only measured: just the measured-BRDF part (bench/measured.js),
+// written to bench/results/measured.json unless --out says otherwise.
 import { mkdirSync, mkdtempSync, writeFileSync } from 'node:fs';
 import { cpus, tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
@@ -10,11 +11,14 @@ import { build } from 'vite';
 import { FAMILIES, measureErrors } from './families.js';
 import { measurePages } from './pages.js';
 import { measureIbl } from './ibl.js';
+import { measureMeasured, printMeasured } from './measured.js';
 import { ROOT, launchBrowser, openPage, serveStatic } from '../tests/browser/harness.js';
 
 const args = process.argv.slice(2);
 const quick = args.includes('--quick');
-const out = args.includes('--out') ? resolve(args[args.indexOf('--out') + 1]) : join(ROOT, 'bench/results/latest.json');
+const only = args.includes('--only') ? args[args.indexOf('--only') + 1] : null;
+if (only && only !== 'measured') throw new Error(`--only ${only}: the part that can run alone is "measured"`);
+const out = args.includes('--out') ? resolve(args[args.indexOf('--out') + 1]) : join(ROOT, `bench/results/${only ? 'measured' : 'latest'}.json`);
 const CPU_SAMPLE = 2048; // inputs per timed call
 
 async function cpuCosts(family) {
@@ -49,9 +53,19 @@ async function gpuCosts() {
   }
 }
 
+if (only === 'measured') {
+  const measured = measureMeasured({ quick });
+  mkdirSync(dirname(out), { recursive: true });
+  writeFileSync(out, `${JSON.stringify({ version: 1, date: new Date().toISOString(), quick, machine: { cpu: cpus()[0]?.model ?? 'unknown', cores: cpus().length, node: process.version }, measured }, null, 1)}\n`);
+  printMeasured(measured);
+console.log(`\nWrote ${out}`);
+  process.exit(0);
+}
+
 const gpu = await gpuCosts();
 const pages = await measurePages();
 const ibl = await measureIbl({ quick });
+const measured = measureMeasured({ quick });
 const families = [];
 for (const family of FAMILIES) {
   const errors = measureErrors(family);
@@ -84,6 +98,7 @@ const report = {
   versusThree: gpu.versusThree,
   pages,
   ibl,
+  measured,
 };
 mkdirSync(dirname(out), { recursive: true });
 writeFileSync(out, `${JSON.stringify(report, null, 1)}\n`);
@@ -109,4 +124,5 @@ for (const r of ibl.rows) {
 }
 console.log(`\n  ${pad('page', 30)}${pad('JS (KiB, uncompressed)', 30)}${pad('files', 7)}${pad('load (ms)', 11)}first frame (ms)`);
 for (const p of pages) console.log(`  ${pad(p.page, 30)}${pad(p.jsKB.toFixed(0), 30)}${pad(p.jsFiles, 7)}${pad(p.loadMs.toFixed(0), 11)}${p.firstFrameMs === null ? '—' : p.firstFrameMs.toFixed(0)}`);
+printMeasured(measured);
 console.log(`\nWrote ${out}`);

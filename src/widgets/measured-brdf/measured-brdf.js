@@ -15,7 +15,8 @@ import {
   RESIDUAL_TOP, residualImage,
 } from './model.js';
 import { createFitClient } from './fit-client.js';
-import { MERL_TEXTURE_BYTES, createMeasuredSpheres } from './spheres.js';
+import { createMeasuredSpheres } from './spheres.js';
+import { MERL_TEXTURE_BYTES } from './texture-size.js';
 import { createDropZone, createFitTable } from './views.js';
 
 export { schema };

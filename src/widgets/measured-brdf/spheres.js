@@ -4,10 +4,7 @@ import * as THREE from 'three';
 import { createViewport } from '../../core/viewport.js';
 import { assembleGlsl } from '../../core/glsl.js';
 import { SHADER_CHUNKS } from '../../core/shader-chunks.js';
-import { MERL_DIMS, MERL_SAMPLES } from '../../measured/merl.js';
-
-/** GPU memory of one table: 1,458,000 texels × 4 channels × 2 bytes. */
-export const MERL_TEXTURE_BYTES = MERL_SAMPLES * 4 * 2;
+import { MERL_DIMS } from '../../measured/merl.js';
 
 function tableTexture(half) {
   const [NH, ND, NP] = MERL_DIMS;
