@@ -67,28 +67,57 @@ function ndfSpec(measured, fits) {
   };
 }
 
-export function createMeasuredBrdf(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'measured-brdf', schema, initialState, about: ABOUT, terms: TERMS_USED });
-  const client = createFitClient();
-  const drop = createDropZone(shell.view, (file) => loadFile(file));
+/** The widget's views, top to bottom: drop zone; lobe and spheres; (θh, θd) image and NDF slice; fits; residuals. */
+function createViews(shell, state, { onFile, onLoadFit }) {
+  const drop = createDropZone(shell.view, onFile);
   const rows = ['lobe-row', 'lobe-row', 'half-diff-row measured-residuals'].map((className) => Object.assign(document.createElement('div'), { className }));
-  let measured = null;
-  let fits = {};
-  let sourceWords = '';
-  let generation = 0; // a newer file makes older fits and tables stale
-  const s = () => shell.state;
-  const lobePlot = createPlot(rows[0], lobeSpec(null, null, s().lightTheta));
+  const lobePlot = createPlot(rows[0], lobeSpec(null, null, state.lightTheta));
   const sphereHolder = Object.assign(document.createElement('div'), { className: 'measured-spheres' });
   rows[0].append(sphereHolder);
   const spheres = createMeasuredSpheres(sphereHolder, { label: 'Spheres: the measured BRDF (left) and the overlaid fit (right)' });
   const imageHolder = Object.assign(document.createElement('div'), { className: 'half-diff-row' });
   rows[1].append(imageHolder);
   const image = createHalfDiffImage(imageHolder, 'Measured (G) over (θh, θd)');
-  const ndfPlot = createPlot(rows[1], ndfSpec(null, fits));
+  const ndfPlot = createPlot(rows[1], ndfSpec(null, {}));
   shell.view.append(rows[0], rows[1]);
-  const table = createFitTable(shell.view, (model, target) => loadInto(model, target));
+  const table = createFitTable(shell.view, onLoadFit);
   shell.view.append(rows[2]);
   const residuals = MODELS.map((k) => createHalfDiffImage(rows[2], `${FIT_MODELS[k].label}: |∛f_fit − ∛f_meas|`));
+  return { drop, lobePlot, spheres, image, ndfPlot, table, residuals, all: [lobePlot, ndfPlot, image, ...residuals, spheres, table, drop] };
+}
+
+/** Hands a fit to another widget: in place when it is on this page (brdf-lobe on the BRDF page), else a new tab. */
+function loadFitInto(fit, fits, target) {
+  const lobe = globalThis.__shadingLab?.widgets?.lobe;
+  if (target === 'lobe' && lobe) {
+    lobe.update(lobeStateForFit(fit));
+    document.querySelector('[data-widget="brdf-lobe"]')?.scrollIntoView({ behavior: 'smooth' });
+    return;
+  }
+  const [page, prefix, state] = target === 'lobe' ? ['brdf.html', 'lobe', lobeStateForFit(fit)] : ['ndf.html', 'ndf', ndfStateForFit(fit, fits)];
+  const params = new URLSearchParams(Object.entries(state).map(([k, v]) => [`${prefix}.${k}`, typeof v === 'number' ? +v.toPrecision(4) : v]));
+  window.open(`${page}?${params}`, '_blank', 'noopener');
+}
+
+const fitStatus = (fits, started) => {
+  const done = Object.keys(fits).length;
+  const running = done < MODELS.length ? MODELS[done] : null;
+  const statusText = running ? `fitting ${FIT_MODELS[running].label} (${done} of 5 done)…` : `5 fits in ${((performance.now() - started) / 1000).toFixed(1)} s`;
+  return { done, running, statusText };
+};
+
+export function createMeasuredBrdf(container, initialState = {}, { onStateChange } = {}) {
+  const shell = createWidgetShell(container, { name: 'measured-brdf', schema, initialState, about: ABOUT, terms: TERMS_USED });
+  const s = () => shell.state;
+  let client = createFitClient(); // the worker that holds the table shown; a new file gets a new worker
+  let measured = null;
+  let fits = {};
+  let sourceWords = '';
+  let generation = 0; // a newer table makes older fits and tabulations stale
+  let disposed = false;
+  let [requests, shown] = [0, 0]; // loads are numbered: one that ends after a later one has shown is dropped
+  const views = createViews(shell, s(), { onFile: (file) => loadFile(file), onLoadFit: (model, target) => fits[model] && loadFitInto(fits[model], fits, target) });
+  const { drop, lobePlot, spheres, image, ndfPlot, table, residuals } = views;
 
   const drawLobe = () => lobePlot.setData(lobeSpec(measured, fits[s().overlay], s().lightTheta));
   const drawImages = () => {
@@ -102,75 +131,67 @@ export function createMeasuredBrdf(container, initialState = {}, { onStateChange
     const best = Object.values(fits).sort((a, b) => a.error - b.error)[0];
     shell.describe(`${sourceWords}: ${Object.keys(fits).length} of 5 models fitted${best ? `; best: ${FIT_MODELS[best.model].label}, error ${best.error.toExponential(2)}` : ''}.`, spheres.canvas);
   };
-
   const tabulateOverlay = () => {
     const [gen, fit] = [generation, fits[s().overlay]];
     if (!fit) return spheres.setTable(1, null, '');
     client.tabulate(fit.model, fit.params).then((r) => {
       if (gen === generation && fits[s().overlay] === fit) spheres.setTable(1, r.half, `${FIT_MODELS[fit.model].label} fit`);
-    }).catch((e) => shell.notices.show(e.message));
-  };
-
-  const runFits = () => {
-    const gen = generation;
-    const started = performance.now();
-    table.draw(fits, { running: MODELS[0], progressValue: 0, statusText: 'fitting in the background…' });
-    client.fit(MODELS, {}, (msg) => {
-      if (gen !== generation) return;
-      if (msg.type === 'fitted') {
-        fits = { ...fits, [msg.result.model]: msg.result };
-        ndfPlot.setData(ndfSpec(measured, fits));
-        if (msg.result.model === s().overlay) {
-          drawLobe();
-          tabulateOverlay();
-        }
-        drawImages();
-        describe();
-      }
-      const done = Object.keys(fits).length;
-      const running = MODELS[Math.min(done, MODELS.length - 1)];
-      const partial = msg.type === 'progress' ? Math.min(msg.evaluations / 150, 0.95) : 0;
-      table.draw(fits, { running: done < MODELS.length ? running : null, progressValue: (done + partial) / MODELS.length,
-        statusText: done < MODELS.length ? `fitting ${FIT_MODELS[running].label} (${done} of 5 done)…` : `5 fits in ${((performance.now() - started) / 1000).toFixed(1)} s` });
     }).catch((e) => gen === generation && shell.notices.show(e.message));
   };
+  const onFitMessage = (gen, started) => (msg) => {
+    if (gen !== generation) return;
+    if (msg.type === 'fitted') {
+      fits = { ...fits, [msg.result.model]: msg.result };
+      ndfPlot.setData(ndfSpec(measured, fits));
+      if (msg.result.model === s().overlay) {
+        drawLobe();
+        tabulateOverlay();
+      }
+      drawImages();
+      describe();
+    }
+    const { done, running, statusText } = fitStatus(fits, started);
+    const partial = msg.type === 'progress' ? Math.min(msg.evaluations / 150, 0.95) : 0;
+    table.draw(fits, { running, progressValue: (done + partial) / MODELS.length, statusText });
+  };
+  const runFits = () => {
+    const gen = generation;
+    table.draw(fits, { running: MODELS[0], progressValue: 0, statusText: 'fitting in the background…' });
+    client.fit(MODELS, {}, onFitMessage(gen, performance.now())).catch((e) => gen === generation && shell.notices.show(e.message));
+  };
 
-  /** A table the worker parsed: it replaces the last one (a file that fails to parse never gets here). */
-  const show = (result, words) => {
-    generation++;
-    measured = measuredFromTable(result.table);
-    fits = {};
-    sourceWords = words;
-    drop.setSource(`${words}. Read in ${result.ms.toFixed(0)} ms in a worker; ${(result.missing / 3).toLocaleString('en')} of 1,458,000 nodes per channel missing (below the horizon or not measured).`);
-    spheres.setTable(0, result.half, 'measured');
-    spheres.setTable(1, null, '');
-    drawLobe();
-    ndfPlot.setData(ndfSpec(measured, fits));
-    drawImages();
-    runFits();
+  /** Reads a table in a new worker; only if it parses does it replace what is shown (and the old worker). */
+  const load = (request, words, failure) => {
+    const next = createFitClient();
+    const ticket = ++requests;
+    request(next).then((result) => {
+      if (disposed || ticket < shown) return next.dispose();
+      shown = ticket;
+      client.dispose();
+      client = next;
+      generation++;
+      measured = measuredFromTable(result.table);
+      fits = {};
+      sourceWords = words;
+      drop.setSource(`${words}. Read in ${result.ms.toFixed(0)} ms in a worker; ${(result.missing / 3).toLocaleString('en')} of 1,458,000 nodes per channel missing (below the horizon or not measured).`);
+      spheres.setTable(0, result.half, 'measured');
+      spheres.setTable(1, null, '');
+      drawLobe();
+      ndfPlot.setData(ndfSpec(measured, fits));
+      drawImages();
+      describe();
+      runFits();
+    }).catch((e) => {
+      next.dispose();
+      shell.notices.show(failure(e));
+    });
   };
   const loadExample = (key) => {
     const e = EXAMPLES[key];
-    client.synthesize(e.model, e.params).then((r) => show(r, e.label)).catch((err) => shell.notices.show(err.message));
+    load((c) => c.synthesize(e.model, e.params), e.label, (err) => err.message);
   };
-  const loadFile = (file) => {
-    file.arrayBuffer().then((buffer) => client.parse(buffer)).then((r) => show(r, `${file.name} (a MERL file you loaded)`))
-      .catch((e) => shell.notices.show(`${file.name}: ${e.message} The BRDF shown before is kept.`));
-  };
-
-  const loadInto = (model, target) => {
-    const fit = fits[model];
-    if (!fit) return;
-    const lobe = globalThis.__shadingLab?.widgets?.lobe;
-    if (target === 'lobe' && lobe) {
-      lobe.update(lobeStateForFit(fit));
-      document.querySelector('[data-widget="brdf-lobe"]')?.scrollIntoView({ behavior: 'smooth' });
-      return;
-    }
-    const [page, prefix, state] = target === 'lobe' ? ['brdf.html', 'lobe', lobeStateForFit(fit)] : ['ndf.html', 'ndf', ndfStateForFit(fit, fits)];
-    const params = new URLSearchParams(Object.entries(state).map(([k, v]) => [`${prefix}.${k}`, typeof v === 'number' ? +v.toPrecision(4) : v]));
-    window.open(`${page}?${params}`, '_blank', 'noopener');
-  };
+  const loadFile = (file) => load((c) => file.arrayBuffer().then((b) => c.parse(b)), `${file.name} (a MERL file you loaded)`,
+    (e) => `${file.name}: ${e.message} The BRDF shown before is kept.`);
 
   const onChanged = (changed) => {
     if (changed.includes('example')) loadExample(s().example);
@@ -189,9 +210,10 @@ export function createMeasuredBrdf(container, initialState = {}, { onStateChange
     getState: () => shell.state,
     getFits: () => fits,
     dispose() {
+      disposed = true;
       generation++;
       client.dispose();
-      [lobePlot, ndfPlot, image, ...residuals, spheres, table, drop].forEach((x) => x.dispose());
+      views.all.forEach((x) => x.dispose());
       shell.dispose();
     },
   };
