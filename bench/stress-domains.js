@@ -116,6 +116,12 @@ export const STRESS_DOMAINS = {
   reflectedAngleDensity: { args: [[-Math.PI, -1, 0, 1, Math.PI], [0, 0.7, 1.5], ['beckmann', 'ggx'], [0.05, 0.5], [(c, a) => c ** a]], range: NON_NEGATIVE },
   segmentNormal: { tuples: [[[0, 1, -5, 1e6], 0], [[0, 1, -5, 1e6], 1], [[0, 1, -5, 1e6], 2]], range: [-1, 1] },
   heightBounds: { tuples: [[[0, 3, -2, 7]], [[5]]], range: FINITE },
+  sphereSolidAngle: { args: [[-1, 0, 1e-9, 1, 1e6], [-1, 0, 1e-9, 1, 1e6]], range: [0, 2 * Math.PI] },
+  sphereLightIrradiance: { args: [[-1, 0, 1, 1e6], [-1, 0, 1e-9, 1, 1e6], [-1, 0, 1e-9, 1, 1e6]], range: NON_NEGATIVE },
+  planckRadiance: { args: [[-1, 0, 1e-3, 380, 780, 1e6], [-1, 0, 1, 1000, 6500, 1e6]], range: NON_NEGATIVE },
+  cieXyzFit: { args: [[-1e6, 0, 380, 555, 780, 1e6]], range: [0, 2] },
+  spectrumToXyz: { args: [[() => 0, () => 1, (l) => l / 780]], range: NON_NEGATIVE },
+  xyzToLinearSrgb: { tuples: [[[0, 0, 0]], [[0.95047, 1, 1.08883]], [[1e6, 0, 0]]], range: FINITE },
   skipped: {
     seededRandom: 'returns a generator; unit-tested through the samplers',
     sampleSlope: 'Monte Carlo; its moments are unit-tested',
