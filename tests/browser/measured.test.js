@@ -55,7 +55,7 @@ describe('a synthetic MERL file picked on the BRDF page', () => {
     await settle(page, 500);
     const label = await page.$$eval('.widget-measured-brdf figure.plot', (figs) => figs.map((f) => f.querySelector('canvas')?.getAttribute('aria-label') ?? ''));
     expect(label[0]).toMatch(/measured R: .*measured G: .*measured B: .*GGX fit R/);
-    expect(label[1]).toMatch(/measured θd = 0 slice, less the ABC fit’s diffuse: .*ABC fit \(dashed\): .*Shifted gamma fit/);
+    expect(label[1]).toMatch(/measured θd = 0 slice, less the ABC fit’s diffuse, ÷ its V: .*ABC fit \(dashed\): .*Shifted gamma fit/);
   });
 
   it('the spheres are drawn from the 3-D textures: copper-coloured highlight (R > G > B, as f0 0.9 / 0.6 / 0.3)', async () => {

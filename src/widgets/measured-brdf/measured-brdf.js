@@ -57,9 +57,9 @@ function lobeSpec(measured, fit, lightDeg) {
 function ndfSpec(measured, fits) {
   const keys = MODELS.filter((k) => fits[k]);
   const best = Object.values(fits).sort((a, b) => a.error - b.error)[0];
-  const label = best ? `measured θd = 0 slice, less the ${FIT_MODELS[best.model].label} fit’s diffuse` : 'measured θd = 0 slice';
+  const label = best ? `measured θd = 0 slice, less the ${FIT_MODELS[best.model].label} fit’s diffuse, ÷ its V` : 'measured θd = 0 slice';
   const series = [{ label, stroke: '#000000', width: 2.5 }, ...keys.map((k) => ({ label: `${FIT_MODELS[k].label} fit`, ...seriesStyle(MODELS.indexOf(k)) }))];
-  const data = [measured ? measuredNdfSlice(measured.table, best?.params.cdiff) : THETA_H_DEG.map(() => null), ...keys.map((k) => fittedNdfSlice(fits[k]))];
+  const data = [measured ? measuredNdfSlice(measured.table, best) : THETA_H_DEG.map(() => null), ...keys.map((k) => fittedNdfSlice(fits[k]))];
   return {
     title: 'The NDF the measurement implies, and the fits’ D / D(0) (log scale): the tails', xLabel: 'θh (degrees)', yLabel: 'relative to the peak',
     x: { min: 0, max: 90 }, y: { min: 1e-5, max: 2, log: true }, xValues: (u, t) => t.map((v) => `${v}°`), legend: true,

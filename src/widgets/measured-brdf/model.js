@@ -2,7 +2,7 @@
 // and images it draws from a measured table and from fits, and the state it hands to the other widgets.
 import { FIT_MODELS, modelBRDF, termParams } from '../../measured/fit.js';
 import { MERL_DIMS, MERL_SAMPLES, merlIndex, merlNodeAngles } from '../../measured/merl.js';
-import { NDF_TERMS } from '../../math/brdf.js';
+import { NDF_TERMS, VISIBILITY_TERMS } from '../../math/brdf.js';
 import { matchNdfWidths, ndfHalfWidthDeg } from '../../math/ndf-width.js';
 import { directionsFromHalfDiff } from '../../math/half-diff.js';
 
@@ -38,15 +38,21 @@ export const fitBRDF = (fit) => modelBRDF(fit.model, fit.params);
 export const THETA_H_DEG = Float64Array.from({ length: MERL_DIMS[0] }, (_, i) => merlNodeAngles(i, 0, 0).thetaH / DEG);
 
 /**
- * The NDF the measurement implies: the θd = 0 slice (l = v = h, so f = c_diff/π + F(0°) D(θh) V / 4, V slowly
- * varying), summed over RGB, less the diffuse floor Σ cdiff/π given (the best fit's, or 0), over its peak.
- * Missing nodes are null.
+ * The NDF the measurement implies. On the θd = 0 slice l = v = h, so f = c_diff/π + F(0°) D(θh) V(θh, θh) / 4:
+ * the slice, summed over RGB, less the diffuse of a fit (`fit`, the best one; none: nothing taken off) and
+ * divided by that fit's V at l = v, over its peak, is D(θh)/D(0) as the data has it. Missing nodes are null.
  */
-export function measuredNdfSlice(table, cdiff = [0, 0, 0]) {
+export function measuredNdfSlice(table, fit = null) {
+  const cdiff = fit?.params.cdiff ?? [0, 0, 0];
   const floor = (cdiff[0] + cdiff[1] + cdiff[2]) / Math.PI;
-  const values = Array.from(THETA_H_DEG, (_, i) => {
+  const V = fit ? VISIBILITY_TERMS[FIT_MODELS[fit.model].V] : null;
+  const p = fit ? termParams(fit.model, fit.params) : null;
+  const values = Array.from(THETA_H_DEG, (deg, i) => {
     const rgb = [0, 1, 2].map((c) => table[c * MERL_SAMPLES + merlIndex(i, 0, 0)]);
-    return rgb.some((x) => x < 0) ? null : rgb[0] + rgb[1] + rgb[2] - floor;
+    if (rgb.some((x) => x < 0)) return null;
+    const c = Math.cos(deg * DEG);
+    const vis = V ? V({ nl: c, nv: c, nh: c, lh: 1 }, p) : 1;
+    return vis > 0 ? (rgb[0] + rgb[1] + rgb[2] - floor) / vis : null;
   });
   const peak = Math.max(...values.filter((x) => x !== null));
   return values.map((x) => (x === null || !(peak > 0) ? null : x / peak));

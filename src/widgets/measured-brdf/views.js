@@ -35,7 +35,11 @@ export function createDropZone(container, onFile) {
   };
 }
 
-const rgb = (x) => x.map((c) => c.toFixed(3)).join(' / ');
+/** Three channels as text; one number when they agree to the digits shown (a grey material). */
+const rgb = (x) => {
+  const t = x.map((c) => c.toFixed(3));
+  return t[0] === t[1] && t[1] === t[2] ? t[0] : t.join(' / ');
+};
 
 /** The fit table: a progress bar and one row per model; onLoad(model, target) from its buttons. */
 export function createFitTable(container, onLoad) {
