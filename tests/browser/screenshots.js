@@ -17,8 +17,12 @@ const SHOTS = [
   ['media-page', 'media.html?media.distance=1.3', { fullPage: true }],
   ['media-grid', 'embed.html?w=media&view=grid&samples=16'],
   ['surfaces-page', 'surfaces.html', { fullPage: true }],
-  // tall: a 3-D view out of sight draws nothing; shot once the measured-BRDF widget's five fits are in
-  ['brdf-page', 'brdf.html', { fullPage: true, height: 6000, ready: 'Object.keys(globalThis.__shadingLab.widgets.measured?.getFits() ?? {}).length === 5' }],
+  // tall: a 3-D view out of sight draws nothing; shot once the measured-BRDF widget's five fits are in, from
+  // the viewport as it is (capturing beyond it re-lays the page out and the 3-D views come out blank)
+  ['brdf-page', 'brdf.html', {
+    fullPage: true, height: 6000, captureBeyondViewport: false,
+    ready: 'Object.keys(globalThis.__shadingLab.widgets.measured?.getFits() ?? {}).length === 5',
+  }],
   ['brdf-lobe-compare', 'embed.html?w=brdf-lobe&compare=1&cosine=1&lightTheta=60&viewTheta=20'],
   ['microfacets-page', 'microfacets.html', { fullPage: true }],
   ['ndf-page', 'ndf.html?ndf.exposure=8', { fullPage: true }],
