@@ -27,7 +27,9 @@ export function measureMeasured({ quick = false } = {}) {
   });
   return {
     file: { example: EXAMPLES.ggx.label, bytes: MERL_BYTES },
-    writeMs, parseMs: median(parseRuns.map(([ms]) => ms)), parseRuns: parseRuns.length,
+    writeMs,
+    parseMs: median(parseRuns.map(([ms]) => ms)),
+    parseRuns: parseRuns.length,
     fitSamples: { count: samples.count, ms: samplesMs, options },
     fits,
     texture: { format: 'RGBA16F, 180 × 90 × 90 texels', bytes: MERL_TEXTURE_BYTES },
@@ -36,9 +38,14 @@ export function measureMeasured({ quick = false } = {}) {
 
 export function printMeasured(m) {
   const pad = (s, n) => String(s).padEnd(n);
-  console.log(`\nMeasured BRDF (${m.file.bytes.toLocaleString('en')}-byte synthetic MERL file): written in ${m.writeMs.toFixed(0)} ms, ` +
-    `parsed in ${m.parseMs.toFixed(0)} ms (median of ${m.parseRuns}); ${m.fitSamples.count} fit samples in ${m.fitSamples.ms.toFixed(0)} ms`);
+  const ms = (x) => `${x.toFixed(0)} ms`;
+  console.log(`\nMeasured BRDF (a ${m.file.bytes.toLocaleString('en')}-byte synthetic MERL file):`);
+  console.log(`  written in ${ms(m.writeMs)}, parsed in ${ms(m.parseMs)} (median of ${m.parseRuns})`);
+  console.log(`  ${m.fitSamples.count} fit samples in ${ms(m.fitSamples.ms)}`);
   console.log(`  ${pad('model', 16)}${pad('fit (ms)', 11)}${pad('evaluations', 13)}error (1/sr)^(1/3)`);
-  for (const f of m.fits) console.log(`  ${pad(FIT_MODELS[f.model].label, 16)}${pad(f.ms.toFixed(0), 11)}${pad(f.evaluations, 13)}${f.error.toExponential(2)}`);
+  for (const f of m.fits) {
+    const row = `${pad(FIT_MODELS[f.model].label, 16)}${pad(f.ms.toFixed(0), 11)}${pad(f.evaluations, 13)}`;
+    console.log(`  ${row}${f.error.toExponential(2)}`);
+  }
   console.log(`  3-D texture on the GPU: ${m.texture.format} = ${(m.texture.bytes / 1e6).toFixed(2)} MB per table`);
 }

@@ -16,7 +16,8 @@ vec3 merlCoordinates(vec3 n, vec3 l, vec3 v) {
   vec3 nxh = cross(n, h);
   float s = length(nxh);
   float thetaH = atan(s, dot(n, h)); // atan, not acos: precise near n
-  vec3 y = s > 1e-7 ? nxh / s : (abs(n.z) < 0.999 ? cross(n, normalize(cross(vec3(0.0, 0.0, 1.0), n))) : vec3(0.0, 1.0, 0.0));
+  vec3 tangent = abs(n.z) < 0.999 ? normalize(cross(vec3(0.0, 0.0, 1.0), n)) : vec3(1.0, 0.0, 0.0);
+  vec3 y = s > 1e-7 ? nxh / s : cross(n, tangent);
   vec3 x = cross(y, h);
   vec3 d = l - h;
   float thetaD = atan(length(cross(l, h)), dot(l, h));

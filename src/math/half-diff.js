@@ -20,8 +20,8 @@ export function halfDiffAngles(l, v) {
 /**
  * All three angles of a pair of unit directions, as the MERL reader (Matusik et al. 2003, BRDFRead.cpp)
  * forms them: l is turned by -phi_h about n, then by -theta_h about the y axis, which brings h onto n and
- * leaves l as the difference vector d (angles by atan2, precise near 0); phi_d = atan2(d.y, d.x) in (-pi, pi]. The inverse of
- * directionsFromHalfDiff.
+ * leaves l as the difference vector d (angles by atan2, precise near 0); phi_d = atan2(d.y, d.x) in (-pi, pi].
+ * The inverse of directionsFromHalfDiff.
  */
 export function halfDiffFromDirections(l, v) {
   const h = [l[0] + v[0], l[1] + v[1], l[2] + v[2]];

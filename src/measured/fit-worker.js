@@ -2,8 +2,9 @@
 // examples, fits the five models and tabulates a fit for the GPU, reporting progress as it goes.
 // Messages in: { id, type: 'parse', buffer } | { id, type: 'synthesize', model, params } |
 //   { id, type: 'fit', models, options } | { id, type: 'tabulate', model, params }.
-// Messages out: { id, type: 'loaded', table, missing, ms } | { id, type: 'progress', model, index, evaluations, error }
-//   | { id, type: 'fitted', index, result, ms } | { id, type: 'tabulated', half } | { id, type: 'done' } | { id, type: 'error', message }.
+// Messages out: { id, type: 'loaded', table, half, missing, ms } |
+//   { id, type: 'progress', model, index, evaluations, error } | { id, type: 'fitted', index, result, ms } |
+//   { id, type: 'tabulated', half } | { id, type: 'done' } | { id, type: 'error', message }.
 import { DataUtils } from 'three';
 import { parseMerl, writeMerl } from './merl.js';
 import { fitMeasured, fitSamples, modelBRDF } from './fit.js';
@@ -26,7 +27,10 @@ function load(next, id, started) {
   measured = next; // only a file that parsed replaces the last one
   const table = next.table.slice();
   const half = halfFloatRgba(next.table);
-  self.postMessage({ id, type: 'loaded', table, half, missing: next.missing, ms: performance.now() - started }, [table.buffer, half.buffer]);
+  self.postMessage({ id, type: 'loaded', table, half, missing: next.missing, ms: performance.now() - started }, [
+    table.buffer,
+    half.buffer,
+  ]);
 }
 
 const handlers = {

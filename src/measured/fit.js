@@ -28,15 +28,43 @@ const RELATIVE_FLOOR = 1e-3; // 1/sr: keeps the first, relative fit's weights fi
 /** Each model: its NDF and V terms, and its shape parameters with their search ranges. */
 export const FIT_MODELS = {
   ggx: { label: 'GGX', D: 'ggx', V: 'smithGGXCorrelated', shape: [{ key: 'alpha', min: 1e-3, max: 1, log: true }] },
-  beckmann: { label: 'Beckmann', D: 'beckmann', V: 'smithBeckmannSeparable', shape: [{ key: 'alpha', min: 1e-3, max: 1, log: true }] },
-  blinnPhong: { label: 'Blinn-Phong', D: 'blinnPhong', V: 'smithBeckmannSeparable', shape: [{ key: 'exponent', min: 1, max: 1e6, log: true }] },
-  abc: { label: 'ABC', D: 'abc', V: 'cookTorrance', shape: [{ key: 'a1', min: 0.01, max: 1e4, log: true }, { key: 'a2', min: 0.05, max: 20, log: true }] },
-  sgd: { label: 'Shifted gamma', D: 'sgd', V: 'cookTorrance', shape: [{ key: 'alpha', min: 0.01, max: 2, log: true }, { key: 'p', min: 0, max: 1.9, log: false }] },
+  beckmann: {
+    label: 'Beckmann',
+    D: 'beckmann',
+    V: 'smithBeckmannSeparable',
+    shape: [{ key: 'alpha', min: 1e-3, max: 1, log: true }],
+  },
+  blinnPhong: {
+    label: 'Blinn-Phong',
+    D: 'blinnPhong',
+    V: 'smithBeckmannSeparable',
+    shape: [{ key: 'exponent', min: 1, max: 1e6, log: true }],
+  },
+  abc: {
+    label: 'ABC',
+    D: 'abc',
+    V: 'cookTorrance',
+    shape: [
+      { key: 'a1', min: 0.01, max: 1e4, log: true },
+      { key: 'a2', min: 0.05, max: 20, log: true },
+    ],
+  },
+  sgd: {
+    label: 'Shifted gamma',
+    D: 'sgd',
+    V: 'cookTorrance',
+    shape: [
+      { key: 'alpha', min: 0.01, max: 2, log: true },
+      { key: 'p', min: 0, max: 1.9, log: false },
+    ],
+  },
 };
 
 /** The NDF/V parameter object NDF_TERMS and VISIBILITY_TERMS read, from a model's shape parameters. */
 export function termParams(model, shape) {
-  return model === 'blinnPhong' ? { ...shape, alpha: beckmannAlphaFromBlinnPhongExponent(shape.exponent) } : { ...shape };
+  return model === 'blinnPhong'
+    ? { ...shape, alpha: beckmannAlphaFromBlinnPhongExponent(shape.exponent) }
+    : { ...shape };
 }
 
 /** The fitted BRDF as a function f(l, v) → [r, g, b] in 1/sr (also what writeMerl tabulates for tests). */
@@ -72,7 +100,8 @@ export function fitSamples(measured, { strideD = 3, strideP = 6, maxThetaDeg = 8
         const a = merlNodeAngles(i, j, k);
         const { l, v } = directionsFromHalfDiff(a.thetaH, a.thetaD, a.phiD);
         if (!(l[2] > cosMax && v[2] > cosMax)) continue;
-        const w = hCell * dCell * Math.min(strideP, NP - k) * (Math.cbrt(l[2]) ** 2 + Math.cbrt(v[2]) ** 2); // both orientations
+        const cosWeight = Math.cbrt(l[2]) ** 2 + Math.cbrt(v[2]) ** 2; // both orientations, l ↔ v
+        const w = hCell * dCell * Math.min(strideP, NP - k) * cosWeight;
         rows.push([i, l[2], v[2], Math.cos(a.thetaH), Math.cos(a.thetaD), w, ...m]);
       }
     }
@@ -82,8 +111,16 @@ export function fitSamples(measured, { strideD = 3, strideP = 6, maxThetaDeg = 8
   const m = [6, 7, 8].map(column);
   const w = column(5);
   return {
-    count: rows.length, i: Uint8Array.from(rows, (r) => r[0]), nl: column(1), nv: column(2), nh: column(3), lh,
-    s5: lh.map((c) => fresnelSchlick(0, c)), w, cbrtM: m.map((x) => x.map(Math.cbrt)), totalWeight: w.reduce((s, x) => s + x, 0),
+    count: rows.length,
+    i: Uint8Array.from(rows, (r) => r[0]),
+    nl: column(1),
+    nv: column(2),
+    nh: column(3),
+    lh,
+    s5: lh.map((c) => fresnelSchlick(0, c)),
+    w,
+    cbrtM: m.map((x) => x.map(Math.cbrt)),
+    totalWeight: w.reduce((s, x) => s + x, 0),
     relativeW: m.map((x) => x.map((mi, s) => w[s] / (mi + RELATIVE_FLOOR) ** (4 / 3))),
   };
 }
@@ -120,10 +157,13 @@ export function evaluateShape(samples, model, shape) {
   return { error: Math.sqrt(sum / (3 * samples.totalWeight)), f0, cdiff };
 }
 
-const toShape = (model, z) => Object.fromEntries(FIT_MODELS[model].shape.map((s, i) => {
-  const x = s.log ? Math.exp(z[i]) : z[i];
-  return [s.key, Math.min(Math.max(x, s.min), s.max)];
-}));
+const toShape = (model, z) =>
+  Object.fromEntries(
+    FIT_MODELS[model].shape.map((s, i) => {
+      const x = s.log ? Math.exp(z[i]) : z[i];
+      return [s.key, Math.min(Math.max(x, s.min), s.max)];
+    }),
+  );
 
 /** A coarse grid over the shape ranges (z space), from which the simplex starts. */
 function startGrid(model) {
@@ -153,7 +193,11 @@ export function fitMeasured(measured, model, options = {}) {
   };
   const grid = startGrid(model).map((z) => ({ z, e: cost(z) }));
   const start = grid.reduce((a, b) => (b.e < a.e ? b : a));
-  const best = nelderMead(cost, start.z, { step: 0.5, maxEvaluations: options.maxEvaluations ?? 400, xTolerance: 1e-6 });
+  const best = nelderMead(cost, start.z, {
+    step: 0.5,
+    maxEvaluations: options.maxEvaluations ?? 400,
+    xTolerance: 1e-6,
+  });
   const shape = toShape(model, best.x);
   const fit = evaluateShape(samples, model, shape);
   return { model, params: { ...shape, f0: fit.f0, cdiff: fit.cdiff }, error: fit.error, evaluations };

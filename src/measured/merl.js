@@ -38,18 +38,27 @@ const GB = (bytes) => `${(bytes / 1e9).toFixed(1)} GB`;
 function checkLayout(buffer) {
   const n = buffer.byteLength;
   if (n === 0) throw new Error('Empty file: a MERL BRDF file is 34,992,012 bytes.');
-  if (n < HEADER_BYTES) throw new Error(`Truncated header: ${n} bytes, but a MERL file starts with three int32 dimensions (12 bytes).`);
+  if (n < HEADER_BYTES)
+    throw new Error(`Truncated header: ${n} bytes, but a MERL file starts with three int32 dimensions (12 bytes).`);
   const view = new DataView(buffer);
   const dims = [0, 4, 8].map((o) => view.getInt32(o, true));
   const claimed = HEADER_BYTES + 24 * dims.reduce((a, d) => a * Math.abs(d), 1);
   if (claimed > BIG_CLAIM) {
-    throw new Error(`The header claims ${dims.join(' × ')} samples, ${GB(claimed)} of data; a MERL file holds 90 × 90 × 180 (35 MB). Refused.`);
+    throw new Error(
+      `The header claims ${dims.join(' × ')} samples, ${GB(claimed)} of data; ` +
+        'a MERL file holds 90 × 90 × 180 (35 MB). Refused.',
+    );
   }
   if (dims.some((d, i) => d !== MERL_DIMS[i])) {
     throw new Error(`Wrong dimensions ${dims.join(' × ')}: a MERL file has 90 × 90 × 180 (θh × θd × φd).`);
   }
-  if (n < MERL_BYTES) throw new Error(`Truncated file: ${n.toLocaleString('en')} bytes of ${MERL_BYTES.toLocaleString('en')}.`);
-  if (n > MERL_BYTES) throw new Error(`Wrong size: ${n.toLocaleString('en')} bytes, ${(n - MERL_BYTES).toLocaleString('en')} more than a MERL file’s ${MERL_BYTES.toLocaleString('en')}.`);
+  if (n < MERL_BYTES)
+    throw new Error(`Truncated file: ${n.toLocaleString('en')} bytes of ${MERL_BYTES.toLocaleString('en')}.`);
+  if (n > MERL_BYTES)
+    throw new Error(
+      `Wrong size: ${n.toLocaleString('en')} bytes, ${(n - MERL_BYTES).toLocaleString('en')} more than ` +
+        `a MERL file’s ${MERL_BYTES.toLocaleString('en')}.`,
+    );
 }
 
 const littleEndianHost = new Uint8Array(new Uint16Array([1]).buffer)[0] === 1;
@@ -74,7 +83,9 @@ export function parseMerl(buffer) {
       if (!Number.isFinite(x)) {
         const r = n % MERL_SAMPLES;
         const at = [Math.floor(r / (ND * NP)), Math.floor(r / NP) % ND, r % NP];
-        throw new Error(`${x} in the ${'RGB'[c]} block at node (θh, θd, φd) = (${at.join(', ')}): the file is damaged.`);
+        throw new Error(
+          `${x} in the ${'RGB'[c]} block at node (θh, θd, φd) = (${at.join(', ')}): the file is damaged.`,
+        );
       }
       table[n] = x < 0 ? -1 : x * MERL_SCALE[c];
     }
@@ -115,9 +126,18 @@ export function measuredFromTable(table) {
     for (let c = 0; c < 3; c++) {
       let sum = 0;
       let weight = 0;
-      for (const [i, wi] of [[i0, 1 - fi], [i1, fi]]) {
-        for (const [j, wj] of [[j0, 1 - fj], [j1, fj]]) {
-          for (const [k, wk] of [[k0, 1 - fk], [k1, fk]]) {
+      for (const [i, wi] of [
+        [i0, 1 - fi],
+        [i1, fi],
+      ]) {
+        for (const [j, wj] of [
+          [j0, 1 - fj],
+          [j1, fj],
+        ]) {
+          for (const [k, wk] of [
+            [k0, 1 - fk],
+            [k1, fk],
+          ]) {
             const w = wi * wj * wk;
             const x = table[c * MERL_SAMPLES + merlIndex(i, j, k)];
             if (w > 0 && x >= 0) {
@@ -147,7 +167,11 @@ export function measuredFromTable(table) {
       if (!above(l, v)) return [0, 0, 0];
       const a = halfDiffFromDirections(l, v);
       const [u, t, p] = merlCoordinates(a.thetaH, a.thetaD, a.phiD);
-      const idx = merlIndex(Math.min(Math.floor(u), NH - 1), Math.min(Math.floor(t), ND - 1), Math.min(Math.floor(p), NP - 1));
+      const idx = merlIndex(
+        Math.min(Math.floor(u), NH - 1),
+        Math.min(Math.floor(t), ND - 1),
+        Math.min(Math.floor(p), NP - 1),
+      );
       return [0, 1, 2].map((c) => Math.max(table[c * MERL_SAMPLES + idx], 0));
     },
   };

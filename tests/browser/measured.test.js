@@ -16,7 +16,11 @@ let page;
 let file;
 
 const fits = () => page.evaluate(() => globalThis.__shadingLab.widgets.measured.getFits());
-const waitForFits = () => page.waitForFunction(() => Object.keys(globalThis.__shadingLab.widgets.measured.getFits()).length === 5, { timeout: 600_000, polling: 1000 });
+const waitForFits = () =>
+  page.waitForFunction(() => Object.keys(globalThis.__shadingLab.widgets.measured.getFits()).length === 5, {
+    timeout: 600_000,
+    polling: 1000,
+  });
 
 beforeAll(async () => {
   file = join(mkdtempSync(join(tmpdir(), 'merl-')), 'synthetic-abc.binary');
@@ -34,8 +38,13 @@ describe('a synthetic MERL file picked on the BRDF page', () => {
   it('is parsed in the worker and named as the source', async () => {
     const input = await page.$('.widget-measured-brdf input[type=file]');
     await input.uploadFile(file);
-    await page.waitForFunction(() => document.querySelector('.measured-source')?.textContent.includes('synthetic-abc.binary'), { timeout: 120_000, polling: 500 });
-    expect(await page.$eval('.measured-source', (e) => e.textContent)).toMatch(/346,568 of 1,458,000 nodes per channel missing/);
+    await page.waitForFunction(
+      () => document.querySelector('.measured-source')?.textContent.includes('synthetic-abc.binary'),
+      { timeout: 120_000, polling: 500 },
+    );
+    expect(await page.$eval('.measured-source', (e) => e.textContent)).toMatch(
+      /346,568 of 1,458,000 nodes per channel missing/,
+    );
   }, 180_000);
 
   it('the five fits come back; the ABC fit has the parameters the file was written with (within 2 %) and the smallest error', async () => {
@@ -53,9 +62,13 @@ describe('a synthetic MERL file picked on the BRDF page', () => {
 
   it('the lobe plot shows the three measured channels and the overlaid fit', async () => {
     await settle(page, 500);
-    const label = await page.$$eval('.widget-measured-brdf figure.plot', (figs) => figs.map((f) => f.querySelector('canvas')?.getAttribute('aria-label') ?? ''));
+    const label = await page.$$eval('.widget-measured-brdf figure.plot', (figs) =>
+      figs.map((f) => f.querySelector('canvas')?.getAttribute('aria-label') ?? ''),
+    );
     expect(label[0]).toMatch(/measured R: .*measured G: .*measured B: .*GGX fit R/);
-    expect(label[1]).toMatch(/measured θd = 0 slice, less the ABC fit’s diffuse, ÷ its V: .*ABC fit \(dashed\): .*Shifted gamma fit/);
+    expect(label[1]).toMatch(
+      /measured θd = 0 slice, less the ABC fit’s diffuse, ÷ its V: .*ABC fit \(dashed\): .*Shifted gamma fit/,
+    );
   });
 
   it('the spheres are drawn from the 3-D textures: copper-coloured highlight (R > G > B, as f0 0.9 / 0.6 / 0.3)', async () => {
@@ -71,7 +84,8 @@ describe('a synthetic MERL file picked on the BRDF page', () => {
         for (let x = 0; x < image.width / 2; x++) {
           if ((x - cx) ** 2 + (y - cy) ** 2 > r * r) continue;
           const i = 4 * (y * image.width + x);
-          if (image.data[i] + image.data[i + 1] + image.data[i + 2] > best[0] + best[1] + best[2]) best.splice(0, 3, image.data[i], image.data[i + 1], image.data[i + 2]);
+          if (image.data[i] + image.data[i + 1] + image.data[i + 2] > best[0] + best[1] + best[2])
+            best.splice(0, 3, image.data[i], image.data[i + 1], image.data[i + 2]);
         }
       }
       return best;
@@ -94,9 +108,14 @@ describe('a synthetic MERL file picked on the BRDF page', () => {
     await page.evaluate(() => {
       const dt = new DataTransfer();
       dt.items.add(new File([new Uint8Array(1000)], 'broken.binary'));
-      document.querySelector('.measured-drop').dispatchEvent(new DragEvent('drop', { dataTransfer: dt, bubbles: true, cancelable: true }));
+      document
+        .querySelector('.measured-drop')
+        .dispatchEvent(new DragEvent('drop', { dataTransfer: dt, bubbles: true, cancelable: true }));
     });
-    await page.waitForFunction(() => document.querySelector('.widget-measured-brdf .notices')?.textContent.includes('broken.binary'), { timeout: 60_000, polling: 300 });
+    await page.waitForFunction(
+      () => document.querySelector('.widget-measured-brdf .notices')?.textContent.includes('broken.binary'),
+      { timeout: 60_000, polling: 300 },
+    );
     const notice = await page.$eval('.widget-measured-brdf .notices', (e) => e.textContent);
     expect(notice).toMatch(/broken\.binary: Wrong dimensions 0 × 0 × 0.*The BRDF shown before is kept\./);
     expect(await page.$eval('.measured-source', (e) => e.textContent)).toMatch(/synthetic-abc\.binary/);

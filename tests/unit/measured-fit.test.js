@@ -13,11 +13,17 @@ describe('the optimiser', () => {
   });
 
   it('boxQuadratic: the minimum over cdiff ≥ 0, 0 ≤ f0 ≤ 1 agrees with a brute-force grid search', () => {
-    const cases = [[2, 0.5, 1, 1, 0.3], [1, 0.9, 1, -1, 2], [1, -0.2, 3, 0.5, 5], [4, 1, 1, -3, -1]];
+    const cases = [
+      [2, 0.5, 1, 1, 0.3],
+      [1, 0.9, 1, -1, 2],
+      [1, -0.2, 3, 0.5, 5],
+      [4, 1, 1, -3, -1],
+    ];
     for (const [a11, a12, a22, g1, g2] of cases) {
       const q = (x1, x2) => a11 * x1 * x1 + 2 * a12 * x1 * x2 + a22 * x2 * x2 - 2 * (g1 * x1 + g2 * x2);
       let best = [0, 0];
-      for (let i = 0; i <= 400; i++) for (let j = 0; j <= 400; j++) if (q(i / 100, j / 400) < q(...best)) best = [i / 100, j / 400];
+      for (let i = 0; i <= 400; i++)
+        for (let j = 0; j <= 400; j++) if (q(i / 100, j / 400) < q(...best)) best = [i / 100, j / 400];
       const x = boxQuadratic(a11, a12, a22, g1, g2);
       expect(q(...x)).toBeLessThanOrEqual(q(...best) + 1e-12);
       expect(x[0]).toBeCloseTo(best[0], 1);

@@ -1,6 +1,13 @@
 import { beforeAll, describe, expect, it } from 'vitest';
 import {
-  MERL_BYTES, MERL_DIMS, MERL_SAMPLES, measuredFromTable, merlIndex, merlNodeAngles, parseMerl, writeMerl,
+  MERL_BYTES,
+  MERL_DIMS,
+  MERL_SAMPLES,
+  measuredFromTable,
+  merlIndex,
+  merlNodeAngles,
+  parseMerl,
+  writeMerl,
 } from '../../src/measured/merl.js';
 import { modelBRDF } from '../../src/measured/fit.js';
 import { directionsFromHalfDiff, halfDiffFromDirections } from '../../src/math/half-diff.js';
@@ -113,7 +120,10 @@ describe('writeMerl → parseMerl round trip (truth: the analytic model at each 
     expect(m.table[merlIndex(0, 0, 0)]).toBeCloseTo(1, 14); // (1 / scale) · scale
   });
 
-  for (const [name, params, get] of [['GGX α 0.2, f0 0.04, c_diff 0.3', GGX, () => ggx], ['ABC a1 40, a2 2.5, coloured', ABC, () => abc]]) {
+  for (const [name, params, get] of [
+    ['GGX α 0.2, f0 0.04, c_diff 0.3', GGX, () => ggx],
+    ['ABC a1 40, a2 2.5, coloured', ABC, () => abc],
+  ]) {
     it(`${name}: lookup at the nodes equals the model to float64 precision`, () => {
       const f = modelBRDF(name.startsWith('GGX') ? 'ggx' : 'abc', params);
       let worst = 0;
@@ -130,7 +140,11 @@ describe('writeMerl → parseMerl round trip (truth: the analytic model at each 
     const r = rng(11);
     const errors = { lookup: [], lookupNearest: [] };
     for (let n = 0; n < 2000; n++) {
-      const [th, td, pd] = [((r() * 88) / 180) * Math.PI * (r() < 0.5 ? 0.1 : 1), ((r() * 80) / 180) * Math.PI, r() * Math.PI];
+      const [th, td, pd] = [
+        ((r() * 88) / 180) * Math.PI * (r() < 0.5 ? 0.1 : 1),
+        ((r() * 80) / 180) * Math.PI,
+        r() * Math.PI,
+      ];
       const { l, v } = directionsFromHalfDiff(th, td, pd);
       if (!(l[2] > 0.05 && v[2] > 0.05)) continue;
       for (const key of Object.keys(errors)) errors[key].push(relative(ggx[key](l, v)[1], f(l, v)[1]));

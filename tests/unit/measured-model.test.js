@@ -3,7 +3,14 @@ import { parseMerl, writeMerl } from '../../src/measured/merl.js';
 import { modelBRDF } from '../../src/measured/fit.js';
 import { ndfGGX, ndfABC } from '../../src/math/ndf.js';
 import { ndfHalfWidthDeg } from '../../src/math/ndf-width.js';
-import { EXAMPLES, THETA_H_DEG, fittedNdfSlice, lobeStateForFit, measuredNdfSlice, ndfStateForFit } from '../../src/widgets/measured-brdf/model.js';
+import {
+  EXAMPLES,
+  THETA_H_DEG,
+  fittedNdfSlice,
+  lobeStateForFit,
+  measuredNdfSlice,
+  ndfStateForFit,
+} from '../../src/widgets/measured-brdf/model.js';
 
 const DEG = Math.PI / 180;
 const asFit = (key) => ({ model: EXAMPLES[key].model, params: EXAMPLES[key].params, error: 0 });
@@ -23,7 +30,9 @@ describe('the measured-BRDF widget model', () => {
 
   it('a fit’s own slice is its normalised NDF (ABC, closed form)', () => {
     const fit = asFit('abc');
-    fittedNdfSlice(fit).forEach((x, i) => expect(x).toBeCloseTo(ndfABC(Math.cos(THETA_H_DEG[i] * DEG), 40, 2.5) / ndfABC(1, 40, 2.5), 12));
+    fittedNdfSlice(fit).forEach((x, i) =>
+      expect(x).toBeCloseTo(ndfABC(Math.cos(THETA_H_DEG[i] * DEG), 40, 2.5) / ndfABC(1, 40, 2.5), 12),
+    );
   });
 
   it('loading a GGX fit into brdf-lobe keeps its α (same width) and takes the mean f0', () => {
@@ -34,9 +43,15 @@ describe('the measured-BRDF widget model', () => {
   });
 
   it('ndf-explorer gets the fit’s half width (bisection on D) and the fitted ABC and SGD shapes', () => {
-    const fits = { abc: asFit('abc'), sgd: { model: 'sgd', params: { alpha: 0.1, p: 1.2, f0: [0, 0, 0], cdiff: [0, 0, 0] } } };
+    const fits = {
+      abc: asFit('abc'),
+      sgd: { model: 'sgd', params: { alpha: 0.1, p: 1.2, f0: [0, 0, 0], cdiff: [0, 0, 0] } },
+    };
     const state = ndfStateForFit(fits.abc, fits);
-    expect(state.hwhm).toBeCloseTo(ndfHalfWidthDeg((c) => ndfABC(c, 40, 2.5)), 9);
+    expect(state.hwhm).toBeCloseTo(
+      ndfHalfWidthDeg((c) => ndfABC(c, 40, 2.5)),
+      9,
+    );
     expect(state).toMatchObject({ abcA2: 2.5, sgdP: 1.2 });
   });
 });

@@ -19,11 +19,12 @@ export function createFitClient() {
       job.result = data;
     }
   };
-  const request = (message, transfer = [], onMessage = null) => new Promise((resolve, reject) => {
-    const id = ++next;
-    pending.set(id, { resolve, reject, onMessage, result: null });
-    worker.postMessage({ ...message, id }, transfer);
-  });
+  const request = (message, transfer = [], onMessage = null) =>
+    new Promise((resolve, reject) => {
+      const id = ++next;
+      pending.set(id, { resolve, reject, onMessage, result: null });
+      worker.postMessage({ ...message, id }, transfer);
+    });
   return {
     parse: (buffer) => request({ type: 'parse', buffer }, [buffer]),
     synthesize: (model, params) => request({ type: 'synthesize', model, params }),

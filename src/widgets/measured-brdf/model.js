@@ -12,11 +12,13 @@ const DEG = Math.PI / 180;
 export const EXAMPLES = {
   ggx: {
     label: 'Synthetic plastic: made by writeMerl from GGX (α 0.2, f0 0.04, c_diff 0.3), not a measurement',
-    model: 'ggx', params: { alpha: 0.2, f0: [0.04, 0.04, 0.04], cdiff: [0.3, 0.3, 0.3] },
+    model: 'ggx',
+    params: { alpha: 0.2, f0: [0.04, 0.04, 0.04], cdiff: [0.3, 0.3, 0.3] },
   },
   abc: {
     label: 'Synthetic copper-like metal: made by writeMerl from ABC (a1 40, a2 2.5, f0 0.9/0.6/0.3), not a measurement',
-    model: 'abc', params: { a1: 40, a2: 2.5, f0: [0.9, 0.6, 0.3], cdiff: [0.05, 0.1, 0.2] },
+    model: 'abc',
+    params: { a1: 40, a2: 2.5, f0: [0.9, 0.6, 0.3], cdiff: [0.05, 0.1, 0.2] },
   },
 };
 
@@ -78,7 +80,8 @@ export const RESIDUAL_TOP = 0.3; // (1/sr)^(1/3): one colour scale for every mod
 
 export function residualImage(measured, fit, phiDeg) {
   const f = fitBRDF(fit);
-  return (th, td) => { // green channel
+  return (th, td) => {
+    // green channel
     const { l, v } = directionsFromHalfDiff(th, td, phiDeg * DEG);
     if (!(l[2] > 0 && v[2] > 0)) return 0;
     return Math.abs(Math.cbrt(f(l, v)[1]) - Math.cbrt(measured.valueAt(th, td, phiDeg * DEG)[1]));
@@ -101,7 +104,13 @@ const mean = (x) => (x[0] + x[1] + x[2]) / 3;
  */
 export function lobeStateForFit(fit) {
   const alpha = matchNdfWidths(clamp(fitHalfWidthDeg(fit), 0.5, 60)).ggx.alpha;
-  return { D: FIT_MODELS[fit.model].D, V: FIT_MODELS[fit.model].V, F: 'schlick', alpha: clamp(alpha, 0.02, 1), f0: clamp(mean(fit.params.f0), 0, 1) };
+  return {
+    D: FIT_MODELS[fit.model].D,
+    V: FIT_MODELS[fit.model].V,
+    F: 'schlick',
+    alpha: clamp(alpha, 0.02, 1),
+    f0: clamp(mean(fit.params.f0), 0, 1),
+  };
 }
 
 /** ndf-explorer's state for a fit: its half width, and the fitted ABC a2 and SGD p when those fits are there. */

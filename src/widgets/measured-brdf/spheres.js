@@ -10,8 +10,15 @@ function tableTexture(half) {
   const [NH, ND, NP] = MERL_DIMS;
   const t = new THREE.Data3DTexture(half, NP, ND, NH);
   Object.assign(t, {
-    format: THREE.RGBAFormat, type: THREE.HalfFloatType, minFilter: THREE.LinearFilter, magFilter: THREE.LinearFilter,
-    wrapS: THREE.RepeatWrapping, wrapT: THREE.ClampToEdgeWrapping, wrapR: THREE.ClampToEdgeWrapping, unpackAlignment: 1, needsUpdate: true,
+    format: THREE.RGBAFormat,
+    type: THREE.HalfFloatType,
+    minFilter: THREE.LinearFilter,
+    magFilter: THREE.LinearFilter,
+    wrapS: THREE.RepeatWrapping,
+    wrapT: THREE.ClampToEdgeWrapping,
+    wrapR: THREE.ClampToEdgeWrapping,
+    unpackAlignment: 1,
+    needsUpdate: true,
   });
   return t;
 }
@@ -52,13 +59,19 @@ export function createMeasuredSpheres(container, { label }) {
     });
     renderer.setScissorTest(false);
   };
-  const viewport = createViewport(container, { draw, label, onContextLost: () => slots.forEach((s) => s && (s.texture.needsUpdate = true)) });
+  const viewport = createViewport(container, {
+    draw,
+    label,
+    onContextLost: () => slots.forEach((s) => s && (s.texture.needsUpdate = true)),
+  });
   if (viewport) {
     viewport.holder.classList.add('sphere-grid');
     viewport.holder.append(names);
   }
   const relabel = () => {
-    names.replaceChildren(...slots.map((s) => Object.assign(document.createElement('span'), { textContent: s?.name ?? '' })));
+    names.replaceChildren(
+      ...slots.map((s) => Object.assign(document.createElement('span'), { textContent: s?.name ?? '' })),
+    );
   };
 
   return {

@@ -66,13 +66,25 @@ export function createFitTable(container, onLoad) {
       const rows = Object.keys(FIT_MODELS).map((key) => {
         const f = fits[key];
         const name = `${FIT_MODELS[key].label}${best && f === best ? ' (best)' : ''}`;
-        if (!f) return `<tr data-model="${key}"><td>${name}</td><td colspan="5">${running === key ? 'fitting…' : 'waiting'}</td></tr>`;
-        const buttons = ['lobe', 'ndf'].map((t) => `<button type="button" data-model="${key}" data-target="${t}">${t === 'lobe' ? 'BRDF lobe' : 'NDF explorer'}</button>`).join(' ');
-        return `<tr data-model="${key}"><td>${name}</td><td>${describeShape(f)}</td><td>${rgb(f.params.f0)}</td><td>${rgb(f.params.cdiff)}</td>` +
-          `<td>${f.error.toExponential(2)}</td><td>${buttons}</td></tr>`;
+        const status = running === key ? 'fitting…' : 'waiting';
+        if (!f) return `<tr data-model="${key}"><td>${name}</td><td colspan="5">${status}</td></tr>`;
+        const buttons = ['lobe', 'ndf']
+          .map(
+            (t) =>
+              `<button type="button" data-model="${key}" data-target="${t}">` +
+              `${t === 'lobe' ? 'BRDF lobe' : 'NDF explorer'}</button>`,
+          )
+          .join(' ');
+        return (
+          `<tr data-model="${key}"><td>${name}</td><td>${describeShape(f)}</td>` +
+          `<td>${rgb(f.params.f0)}</td><td>${rgb(f.params.cdiff)}</td>` +
+          `<td>${f.error.toExponential(2)}</td><td>${buttons}</td></tr>`
+        );
       });
-      table.innerHTML = '<caption>Fits: cdiff/π + F_Schlick(f0) D V / 4 per channel; error: Ngan et al. 2005’s cosine-weighted cube-root RMS, (1/sr)^⅓, θl, θv &lt; 80°</caption>' +
-        '<thead><tr><th>model</th><th>shape</th><th>f0 (R / G / B)</th><th>c_diff (R / G / B)</th><th>error</th><th>load this fit into</th></tr></thead>' +
+      table.innerHTML =
+        '<caption>Fits: cdiff/π + F_Schlick(f0) D V / 4 per channel; error: Ngan et al. 2005’s cosine-weighted ' +
+        'cube-root RMS, (1/sr)^⅓, θl, θv &lt; 80°</caption><thead><tr><th>model</th><th>shape</th>' +
+        '<th>f0 (R / G / B)</th><th>c_diff (R / G / B)</th><th>error</th><th>load this fit into</th></tr></thead>' +
         `<tbody>${rows.join('')}</tbody>`;
     },
     dispose: () => box.remove(),
