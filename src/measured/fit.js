@@ -26,38 +26,13 @@ const DEG = Math.PI / 180;
 const RELATIVE_FLOOR = 1e-3; // 1/sr: keeps the first, relative fit's weights finite where m is 0
 
 /** Each model: its NDF and V terms, and its shape parameters with their search ranges. */
+const range = (key, min, max, log = true) => ({ key, min, max, log });
 export const FIT_MODELS = {
-  ggx: { label: 'GGX', D: 'ggx', V: 'smithGGXCorrelated', shape: [{ key: 'alpha', min: 1e-3, max: 1, log: true }] },
-  beckmann: {
-    label: 'Beckmann',
-    D: 'beckmann',
-    V: 'smithBeckmannSeparable',
-    shape: [{ key: 'alpha', min: 1e-3, max: 1, log: true }],
-  },
-  blinnPhong: {
-    label: 'Blinn-Phong',
-    D: 'blinnPhong',
-    V: 'smithBeckmannSeparable',
-    shape: [{ key: 'exponent', min: 1, max: 1e6, log: true }],
-  },
-  abc: {
-    label: 'ABC',
-    D: 'abc',
-    V: 'cookTorrance',
-    shape: [
-      { key: 'a1', min: 0.01, max: 1e4, log: true },
-      { key: 'a2', min: 0.05, max: 20, log: true },
-    ],
-  },
-  sgd: {
-    label: 'Shifted gamma',
-    D: 'sgd',
-    V: 'cookTorrance',
-    shape: [
-      { key: 'alpha', min: 0.01, max: 2, log: true },
-      { key: 'p', min: 0, max: 1.9, log: false },
-    ],
-  },
+  ggx: { label: 'GGX', D: 'ggx', V: 'smithGGXCorrelated', shape: [range('alpha', 1e-3, 1)] },
+  beckmann: { label: 'Beckmann', D: 'beckmann', V: 'smithBeckmannSeparable', shape: [range('alpha', 1e-3, 1)] },
+  blinnPhong: { label: 'Blinn-Phong', D: 'blinnPhong', V: 'smithBeckmannSeparable', shape: [range('exponent', 1, 1e6)] },
+  abc: { label: 'ABC', D: 'abc', V: 'cookTorrance', shape: [range('a1', 0.01, 1e4), range('a2', 0.05, 20)] },
+  sgd: { label: 'Shifted gamma', D: 'sgd', V: 'cookTorrance', shape: [range('alpha', 0.01, 2), range('p', 0, 1.9, false)] },
 };
 
 /** The NDF/V parameter object NDF_TERMS and VISIBILITY_TERMS read, from a model's shape parameters. */
