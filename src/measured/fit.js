@@ -59,7 +59,7 @@ export function modelBRDF(model, params) {
  * and strideP-th phi_d node (a cell then spans the skipped ones), θl, θv < maxThetaDeg, no channel missing.
  * Returned as typed arrays: { count, i (theta_h node), nl, nv, nh, lh, s5, w, m: [r, g, b], cbrtM, totalWeight }.
  */
-export function fitSamples(measured, { strideD = 3, strideP = 6, maxThetaDeg = 80 } = {}) {
+export function fitSamples(measured, { strideD = 3, strideP = 9, maxThetaDeg = 80 } = {}) {
   const [NH, ND, NP] = MERL_DIMS;
   const cosMax = Math.cos(maxThetaDeg * DEG);
   const rows = [];
@@ -144,7 +144,7 @@ const toShape = (model, z) =>
 function startGrid(model) {
   const axes = FIT_MODELS[model].shape.map((s) => {
     const [lo, hi] = s.log ? [Math.log(s.min), Math.log(s.max)] : [s.min, s.max];
-    const n = FIT_MODELS[model].shape.length === 1 ? 16 : 7;
+    const n = FIT_MODELS[model].shape.length === 1 ? 12 : 5;
     return Array.from({ length: n }, (_, i) => lo + ((i + 0.5) / n) * (hi - lo));
   });
   return axes.reduce((acc, axis) => acc.flatMap((p) => axis.map((x) => [...p, x])), [[]]);
@@ -171,7 +171,7 @@ export function fitMeasured(measured, model, options = {}) {
   const best = nelderMead(cost, start.z, {
     step: 0.5,
     maxEvaluations: options.maxEvaluations ?? 400,
-    xTolerance: 1e-6,
+    xTolerance: 1e-5,
   });
   const shape = toShape(model, best.x);
   const fit = evaluateShape(samples, model, shape);

@@ -222,12 +222,14 @@ const fitStatus = (fits, started) => {
 /** Tabulates the overlaid fit in the worker and puts it on the second sphere (if still current when done). */
 function tabulateOverlay({ shell, views, data }) {
   const [gen, fit] = [data.generation, data.fits[shell.state.overlay]];
+  data.tabulated = null;
   if (!fit) return views.spheres.setTable(1, null, '');
   data.client
     .tabulate(fit.model, fit.params)
     .then((r) => {
-      if (gen === data.generation && data.fits[shell.state.overlay] === fit)
-        views.spheres.setTable(1, r.half, `${FIT_MODELS[fit.model].label} fit`);
+      if (gen !== data.generation || data.fits[shell.state.overlay] !== fit) return;
+      views.spheres.setTable(1, r.half, `${FIT_MODELS[fit.model].label} fit`);
+      data.tabulated = fit;
     })
     .catch((e) => gen === data.generation && shell.notices.show(e.message));
 }
@@ -262,6 +264,7 @@ function showTable(ctx, next, result, words) {
   data.client.dispose();
   Object.assign(data, {
     client: next,
+    tabulated: null,
     generation: data.generation + 1,
     measured: measuredFromTable(result.table),
     fits: {},
@@ -292,6 +295,7 @@ export function createMeasuredBrdf(container, initialState = {}, { onStateChange
     client: createFitClient(),
     measured: null,
     fits: {},
+    tabulated: null,
     sourceWords: '',
     generation: 0,
     requests: 0,
@@ -355,6 +359,8 @@ export function createMeasuredBrdf(container, initialState = {}, { onStateChange
     update,
     getState: () => shell.state,
     getFits: () => data.fits,
+    /** The GPU view's steps done: the table read, the overlaid fit tabulated (later fits redraw 2-D plots only). */
+    getProgress: () => ({ frame: (data.measured ? 1 : 0) + (data.tabulated ? 1 : 0), target: 2 }),
     dispose() {
       Object.assign(data, { disposed: true, generation: data.generation + 1 });
       data.client.dispose();
