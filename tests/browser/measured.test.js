@@ -9,6 +9,8 @@ import { getState, launchBrowser, open, settle, shot, widget, withPixels } from 
 import { writeMerl } from '../../src/measured/merl.js';
 import { modelBRDF } from '../../src/measured/fit.js';
 import { EXAMPLES } from '../../src/widgets/measured-brdf/model.js';
+import { ndfABC } from '../../src/math/ndf.js';
+import { ndfHalfWidthDeg } from '../../src/math/ndf-width.js';
 
 const TRUTH = EXAMPLES.abc.params; // a1 40, a2 2.5, f0 (0.9, 0.6, 0.3), c_diff (0.05, 0.1, 0.2)
 let browser;
@@ -103,6 +105,17 @@ describe('a synthetic MERL file picked on the BRDF page', () => {
     expect(lobe.V).toBe('cookTorrance');
     expect(lobe.f0).toBeCloseTo((0.9 + 0.6 + 0.3) / 3, 2);
   });
+
+  it('"NDF explorer" opens ndf.html with the ABC fit’s half width (bisection on D) and its a2', async () => {
+    const opened = browser.waitForTarget((t) => t.url().includes('ndf.html'), { timeout: 60_000 });
+    await page.click('.measured-fits button[data-model="abc"][data-target="ndf"]');
+    const ndf = await (await opened).page();
+    await ndf.waitForFunction(() => globalThis.__shadingLab?.widgets?.ndf, { timeout: 60_000, polling: 250 });
+    const state = await ndf.evaluate(() => globalThis.__shadingLab.widgets.ndf.getState());
+    expect(state.hwhm).toBeCloseTo(ndfHalfWidthDeg((c) => ndfABC(c, TRUTH.a1, TRUTH.a2)), 1); // 4 digits in the URL
+    expect(state.abcA2).toBeCloseTo(TRUTH.a2, 2);
+    await ndf.close();
+  }, 90_000);
 
   it('a bad file dropped on the zone is refused with its message, and the ABC table stays', async () => {
     await page.evaluate(() => {

@@ -168,7 +168,8 @@ function createPainter({ lobePlot, spheres, image, ndfPlot, residuals }, shell, 
       residuals[i].draw(
         measured && fits[k] ? residualImage(measured, fits[k], s().phiD) : () => 0,
         fits[k]
-          ? `residual of the ${FIT_MODELS[k].label} fit ${at} (green), one scale for all five`
+          ? `residual of the ${FIT_MODELS[k].label} fit ${at} (green; between nodes it holds the table's ` +
+            'interpolation error too), one scale for all five'
           : `not fitted yet (${at})`,
         { max: RESIDUAL_TOP },
       ),
