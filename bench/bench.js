@@ -5,6 +5,7 @@
 // --only families: only the term families' errors (Node, seconds), merged into the existing JSON; every cost
 // column, the pages and the IBL rows stay as last measured. With --time-cpu the CPU column is timed again too
 // (on a quiet machine only: timings taken beside other work are not comparable with the rest).
+// --only measured: only the measured-BRDF part (bench/measured.js), merged into the existing JSON the same way.
 import { existsSync, mkdirSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { cpus, tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
@@ -13,13 +14,15 @@ import { build } from 'vite';
 import { FAMILIES, measureErrors } from './families.js';
 import { measurePages } from './pages.js';
 import { measureIbl } from './ibl.js';
+import { measureMeasured, printMeasured } from './measured.js';
 import { ROOT, launchBrowser, openPage, serveStatic } from '../tests/browser/harness.js';
 
 const args = process.argv.slice(2);
 const quick = args.includes('--quick');
 const only = args.includes('--only') ? args[args.indexOf('--only') + 1] : null;
 const timeCpu = only === null || args.includes('--time-cpu');
-if (only !== null && only !== 'families') throw new Error(`--only ${only}: the only part that runs alone is "families"`);
+const PARTS = ['families', 'measured'];
+if (only !== null && !PARTS.includes(only)) throw new Error(`--only ${only}: the parts that run alone are ${PARTS.join(', ')}`);
 const out = args.includes('--out') ? resolve(args[args.indexOf('--out') + 1]) : join(ROOT, 'bench/results/latest.json');
 const CPU_SAMPLE = 2048; // inputs per timed call
 const cpuModel = () => cpus()[0]?.model ?? 'unknown';
@@ -103,6 +106,12 @@ async function familiesOnly() {
   return { ...last, families, familiesMeasured };
 }
 
+/** Only the measured-BRDF part, into the last full report (or alone when there is none yet). */
+function measuredOnly() {
+  const last = existsSync(out) ? JSON.parse(readFileSync(out, 'utf8')) : { version: 1, date: new Date().toISOString(), quick };
+  return { ...last, measured: measureMeasured({ quick }) };
+}
+
 async function everything() {
   const gpu = await gpuCosts();
   const pages = await measurePages();
@@ -119,13 +128,19 @@ async function everything() {
     versusThree: gpu.versusThree,
     pages,
     ibl,
+    measured: measureMeasured({ quick }),
   };
 }
 
-const report = only === 'families' ? await familiesOnly() : await everything();
+const report = only === 'families' ? await familiesOnly() : only === 'measured' ? measuredOnly() : await everything();
 mkdirSync(dirname(out), { recursive: true });
 writeFileSync(out, `${JSON.stringify(report, null, 1)}\n`);
 
+if (only === 'measured') {
+  printMeasured(report.measured);
+  console.log(`\nWrote ${out} (the measured-BRDF part only; the rest is from the run of ${report.date.slice(0, 10)})`);
+  process.exit(0);
+}
 const pad = (s, n) => String(s).padEnd(n);
 const g = report.gpuSetup;
 console.log(`Machine: ${report.machine.cpu} (${report.machine.cores} cores), Node ${report.machine.node}, ${report.machine.chromium}, GPU: ${report.machine.gpuRenderer}`);
@@ -155,4 +170,5 @@ for (const r of ibl.rows) {
 }
 console.log(`\n  ${pad('page', 30)}${pad('JS (KiB, uncompressed)', 30)}${pad('files', 7)}${pad('load (ms)', 11)}first frame (ms)`);
 for (const p of pages) console.log(`  ${pad(p.page, 30)}${pad(p.jsKB.toFixed(0), 30)}${pad(p.jsFiles, 7)}${pad(p.loadMs.toFixed(0), 11)}${p.firstFrameMs === null ? '—' : p.firstFrameMs.toFixed(0)}`);
+printMeasured(report.measured);
 console.log(`\nWrote ${out}`);

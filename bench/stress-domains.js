@@ -83,6 +83,7 @@ export const STRESS_DOMAINS = {
   halfVector: { pairs: PAIRS, range: [-1, 1], nullable: true },
   brdfAngles: { pairs: PAIRS, range: [-1, 1] },
   halfDiffAngles: { pairs: PAIRS.filter(([l, v]) => l.some((x, i) => x !== -v[i])), range: [0, Math.PI] },
+  halfDiffFromDirections: { pairs: PAIRS.filter(([l, v]) => l.some((x, i) => x !== -v[i])), range: [-Math.PI, Math.PI] },
   reflect: { pairs: PAIRS, range: [-1, 1] },
   microfacetBRDF: { pairs: PAIRS, params: BRDF_PARAMS, range: NON_NEGATIVE },
   microfacetTerms: { pairs: PAIRS, params: BRDF_PARAMS, pick: ['F', 'D', 'V', 'G'], range: NON_NEGATIVE },

@@ -2,6 +2,7 @@
 // includes the stress inputs (cos = 0, 1e-7, 1 and just above 1, eta near 1, total internal reflection,
 // large k, alpha down to 0, sRGB values outside [0, 1]).
 import * as M from '../math/index.js';
+import { merlCoordinates } from '../measured/merl.js';
 
 const uniform = (n, lo, hi) => Array.from({ length: n }, (_, i) => lo + ((hi - lo) * i) / (n - 1));
 
@@ -33,6 +34,8 @@ const TRIG_TOLERANCE = { atol: 3e-4, rtol: 1e-4 };
 const unitDir = (x, y, z) => [x, y, z].map((c) => Math.fround(c / Math.hypot(x, y, z)));
 // unit directions for the sphere light: along n, grazing, and two oblique ones (the ray meets the light or not)
 const LIGHT_DIRS = [[0, 0, 1], [1, 0, 1e-4], [0.6, 0, 0.8], [-0.3, 0.4, 0.866]].map((d) => unitDir(...d));
+
+const spherical = (theta, phi) => unitDir(Math.sin(theta) * Math.cos(phi), Math.sin(theta) * Math.sin(phi), Math.cos(theta));
 
 const cartesian = (...lists) => lists.reduce((acc, list) => acc.flatMap((a) => list.map((x) => [...a, x])), [[]]);
 
@@ -121,6 +124,20 @@ export const PARITY_CASES = [
   {
     name: 'equirectDirection', chunk: 'env.glsl', glsl: 'equirectDirection(a.xy)', outputs: 3, js: M.equirectDirection, range: [-1, 1],
     args: cartesian([0, 0.1, 0.5, 0.77, 1], [0, 0.2, 0.5, 0.9, 1]), tolerance: TRIG_TOLERANCE,
+  },
+  {
+    // the MERL table coordinates of (l, v): node units (θh sqrt-spaced 0-90, θd 0-90, φd 0-180). l at azimuth 0.3,
+    // v at 0.6, 1, 2, 2.8 and π + 0.1 (nearly opposite, h near n), never in one plane with l and n:
+    // there φd sits on its wrap at 0 / 180, where either side is right. A sphere's texture lookup filters over 1/256 of a texel,
+    // so 2e-3 of a node is far below what shows.
+    name: 'merlCoordinates', chunk: 'measured.glsl', glsl: 'merlCoordinates(vec3(0.0, 0.0, 1.0), a.xyz, b.xyz)', outputs: 3,
+    js: (lx, ly, lz, _, vx, vy, vz) => {
+      const a = M.halfDiffFromDirections([lx, ly, lz], [vx, vy, vz]);
+      return merlCoordinates(a.thetaH, a.thetaD, a.phiD);
+    },
+    range: [0, 180], tolerance: { atol: 2e-3, rtol: 1e-4 },
+    args: cartesian([0.02, 0.3, 0.7854, 1.2, 1.5], [0.02, 0.3, 0.7854, 1.2, 1.5], [0.6, 1, 2, 2.8, Math.PI + 0.1])
+      .map(([tl, tv, pv]) => [...spherical(tl, 0.3), 0, ...spherical(tv, pv), 0]),
   },
   { name: 'diffuseLambert', chunk: 'diffuse.glsl', glsl: 'diffuseLambert(a.x)', outputs: 1, js: M.diffuseLambert, range: [0, 1 / Math.PI], args: cartesian(GRIDS.srgb) },
   {

@@ -16,3 +16,20 @@ export function halfDiffAngles(l, v) {
   const c = (x) => Math.acos(Math.min(Math.max(x, -1), 1));
   return { thetaH: c(h[2] / len), thetaD: c((l[0] * h[0] + l[1] * h[1] + l[2] * h[2]) / len) };
 }
+
+/**
+ * All three angles of a pair of unit directions, as the MERL reader (Matusik et al. 2003, BRDFRead.cpp)
+ * forms them: l is turned by -phi_h about n, then by -theta_h about the y axis, which brings h onto n and
+ * leaves l as the difference vector d (angles by atan2, precise near 0); phi_d = atan2(d.y, d.x) in (-pi, pi].
+ * The inverse of directionsFromHalfDiff.
+ */
+export function halfDiffFromDirections(l, v) {
+  const h = [l[0] + v[0], l[1] + v[1], l[2] + v[2]];
+  const thetaH = Math.atan2(Math.hypot(h[0], h[1]), h[2]); // not acos: near n, acos(1 - ε) ≈ √(2ε) swamps θh
+  const phiH = Math.atan2(h[1], h[0]);
+  const [cp, sp, ct, st] = [Math.cos(phiH), Math.sin(phiH), Math.cos(thetaH), Math.sin(thetaH)];
+  const x = l[0] * cp + l[1] * sp;
+  const y = -l[0] * sp + l[1] * cp;
+  const d = [x * ct - l[2] * st, y, x * st + l[2] * ct];
+  return { thetaH, thetaD: Math.atan2(Math.hypot(d[0], d[1]), d[2]), phiD: Math.atan2(d[1], d[0]) };
+}

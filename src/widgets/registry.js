@@ -40,6 +40,11 @@ export const WIDGETS = {
     summary: 'The microfacet BRDF taken apart: polar and 3-D lobes, factors on and off, two BRDFs, (θh, θd), albedo.',
     load: () => import('./brdf-lobe/brdf-lobe.js'),
   },
+  'measured-brdf': {
+    title: 'Measured BRDF',
+    summary: 'Drop a MERL file (or keep a synthetic one): its lobe, spheres and NDF slice beside the five models fitted to it.',
+    load: () => import('./measured-brdf/measured-brdf.js'),
+  },
   'ndf-explorer': {
     title: 'NDF explorer',
     summary: 'The five NDFs of the talk at one matched width: linear and log plots, highlights, normalisation.',

@@ -17,6 +17,7 @@ const CHANGES = {
   'subsurface-scale': { sigmaS: 5 },
   radiance: { distance: 5, lampRadius: 0.08, light: 'sodium' },
   'brdf-lobe': { alpha: 0.6 },
+  'measured-brdf': { lightTheta: 50, phiD: 45, overlay: 'abc', sphereLight: 50 },
   'ndf-explorer': { hwhm: 15 },
   'visibility-explorer': { alpha: 0.2 },
   microfacets: { alpha: 0.8 },

@@ -23,14 +23,17 @@ export function createHalfDiffImage(container, title) {
   cell.height = N;
 
   return {
-    /** value(thetaH, thetaD) in radians, and what it is in words; returns the largest value drawn. */
-    draw(value, description) {
+    /**
+     * value(thetaH, thetaD) in radians, and what it is in words; returns the top of the colour scale. With
+     * { max }, images drawn side by side share one scale instead of each taking its own 99th percentile.
+     */
+    draw(value, description, { max: sharedMax } = {}) {
       const vals = new Float64Array(N * N);
       for (let j = 0; j < N; j++) {
         for (let i = 0; i < N; i++) vals[j * N + i] = value(((i + 0.5) * Math.PI) / 2 / N, ((j + 0.5) * Math.PI) / 2 / N);
       }
       const sorted = Float64Array.from(vals).sort();
-      const max = sorted[Math.floor(TOP_PERCENTILE * (sorted.length - 1))];
+      const max = sharedMax ?? sorted[Math.floor(TOP_PERCENTILE * (sorted.length - 1))];
       const img = cell.getContext('2d').createImageData(N, N);
       vals.forEach((v, k) => {
         const i = k % N;
@@ -59,7 +62,7 @@ export function createHalfDiffImage(container, title) {
       ctx.rotate(-Math.PI / 2);
       ctx.fillText('θd (l from h)', 0, 0);
       ctx.restore();
-      describeCanvas(canvas, `${title}: ${description}; viridis colours on a log scale, brightest (yellow) at ${max.toPrecision(3)} per steradian (99th percentile), darkest ${DECADES} decades below.`);
+      describeCanvas(canvas, `${title}: ${description}; viridis colours on a log scale, brightest (yellow) at ${max.toPrecision(3)}${sharedMax ? '' : ' per steradian (99th percentile)'}, darkest ${DECADES} decades below.`);
       return max;
     },
     dispose() {

@@ -1,0 +1,98 @@
+// Spheres of tabulated BRDFs under one punctual light, side by side: the measured table and a fit tabulated
+// the same way, each a 3-D texture (90 θh × 90 θd × 180 φd texels, RGBA half floats) read by measured.glsl.
+import * as THREE from 'three';
+import { createViewport } from '../../core/viewport.js';
+import { assembleGlsl } from '../../core/glsl.js';
+import { SHADER_CHUNKS } from '../../core/shader-chunks.js';
+import { MERL_DIMS } from '../../measured/merl.js';
+
+function tableTexture(half) {
+  const [NH, ND, NP] = MERL_DIMS;
+  const t = new THREE.Data3DTexture(half, NP, ND, NH);
+  Object.assign(t, {
+    format: THREE.RGBAFormat,
+    type: THREE.HalfFloatType,
+    minFilter: THREE.LinearFilter,
+    magFilter: THREE.LinearFilter,
+    wrapS: THREE.RepeatWrapping,
+    wrapT: THREE.ClampToEdgeWrapping,
+    wrapR: THREE.ClampToEdgeWrapping,
+    unpackAlignment: 1,
+    needsUpdate: true,
+  });
+  return t;
+}
+
+export function createMeasuredSpheres(container, { label }) {
+  const slots = [null, null]; // { texture, name }
+  const material = new THREE.ShaderMaterial({
+    glslVersion: THREE.GLSL3,
+    uniforms: { uMeasured: { value: null }, uLightDir: { value: new THREE.Vector3(0, 0, 1) }, uExposure: { value: 1 } },
+    vertexShader: SHADER_CHUNKS['surface.vert.glsl'],
+    fragmentShader: assembleGlsl(SHADER_CHUNKS['measured-sphere.frag.glsl'], { defines: {} }),
+  });
+  const geometry = new THREE.SphereGeometry(1, 128, 64);
+  const scene = new THREE.Scene().add(new THREE.Mesh(geometry, material));
+  scene.background = new THREE.Color('#16181d');
+  const camera = new THREE.OrthographicCamera(-1.08, 1.08, 1.08, -1.08, 0.1, 10);
+  camera.position.z = 5;
+  const names = document.createElement('div');
+  names.className = 'sphere-labels';
+
+  const size = new THREE.Vector2();
+  const draw = (renderer) => {
+    renderer.getSize(size);
+    const w = size.x / 2;
+    renderer.setScissorTest(true);
+    slots.forEach((slot, i) => {
+      const [x0, x1] = [Math.round(i * w), Math.round((i + 1) * w)];
+      const side = Math.min(x1 - x0, size.y);
+      renderer.setViewport(x0 + (x1 - x0 - side) / 2, (size.y - side) / 2, side, side);
+      renderer.setScissor(x0, 0, x1 - x0, size.y);
+      if (slot) {
+        material.uniforms.uMeasured.value = slot.texture;
+        renderer.render(scene, camera);
+      } else {
+        renderer.setClearColor('#16181d');
+        renderer.clear();
+      }
+    });
+    renderer.setScissorTest(false);
+  };
+  const viewport = createViewport(container, {
+    draw,
+    label,
+    onContextLost: () => slots.forEach((s) => s && (s.texture.needsUpdate = true)),
+  });
+  if (viewport) {
+    viewport.holder.classList.add('sphere-grid');
+    viewport.holder.append(names);
+  }
+  const relabel = () => {
+    names.replaceChildren(
+      ...slots.map((s) => Object.assign(document.createElement('span'), { textContent: s?.name ?? '' })),
+    );
+  };
+
+  return {
+    canvas: viewport?.canvas ?? null,
+    /** Puts a table (RGBA half floats, MERL order) into slot 0 (measured) or 1 (a fit), or empties the slot. */
+    setTable(i, half, name) {
+      slots[i]?.texture.dispose();
+      slots[i] = half ? { texture: tableTexture(half), name } : null;
+      relabel();
+      viewport?.invalidate();
+    },
+    setLight(dir, exposure) {
+      material.uniforms.uLightDir.value.set(...dir);
+      material.uniforms.uExposure.value = exposure;
+      viewport?.invalidate();
+    },
+    dispose() {
+      slots.forEach((s) => s?.texture.dispose());
+      material.dispose();
+      geometry.dispose();
+      viewport?.dispose();
+    },
+  };
+}
