@@ -15,3 +15,5 @@ export * from './diffuse.js';
 export * from './media.js';
 export * from './microsurface.js';
 export * from './lighting.js';
+export * from './multiple-scattering.js';
+export * from './random-walk.js';

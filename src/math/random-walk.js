@@ -49,12 +49,14 @@ function nextHeight(w, h, u, alpha) {
  * (Dupuy & Benyoub 2023, "Sampling visible GGX normals with spherical caps"), then stretched back.
  */
 export function sampleVisibleNormalGGX(wi, alpha, u1, u2) {
-  const [x, y, z] = normalize(alpha * wi[0], alpha * wi[1], wi[2]);
+  const a = clampAlpha(alpha);
+  const [x, y, z] = normalize(a * wi[0], a * wi[1], wi[2]);
   const cz = (1 - u1) * (1 + z) - z;
   const sr = Math.sqrt(Math.max((1 - cz) * (1 + cz), 0));
   const phi = 2 * Math.PI * u2;
-  const h = [sr * Math.cos(phi) + x, sr * Math.sin(phi) + y, cz + z];
-  return normalize(alpha * h[0], alpha * h[1], Math.max(h[2], 0));
+  const h = [sr * Math.cos(phi) + x, sr * Math.sin(phi) + y, Math.max(cz + z, 0)];
+  // straight from below (wi = -n) no normal is visible and h = 0; the walk never asks (it escapes first)
+  return h[0] === 0 && h[1] === 0 && h[2] === 0 ? [0, 0, 1] : normalize(a * h[0], a * h[1], h[2]);
 }
 
 const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
