@@ -118,7 +118,7 @@ export const STRESS_DOMAINS = {
   heightBounds: { tuples: [[[0, 3, -2, 7]], [[5]]], range: FINITE },
   gaussLegendre: { args: [[1, 2, 16, 64]], pick: ['nodes'], range: [-1, 1] },
   averageAlbedoGGX: { args: [ALPHA], range: ZERO_TO_ONE },
-  multipleScatteringFromAlbedo: { args: [[-0.5, 0, 0.3, 1, 1.5], [-0.5, 0, 0.3, 1, 1.5], [-0.5, 0, 0.4, 1 - 1e-7, 1, 1.5]], range: NON_NEGATIVE },
+  multipleScatteringFromLoss: { args: [[-0.5, 0, 1e-7, 0.3, 1, 1.5], [-0.5, 0, 1e-7, 0.3, 1, 1.5], [-0.5, 0, 1e-7, 0.59, 1, 1.5]], range: NON_NEGATIVE },
   multipleScatteringKullaConty: { args: [COS, COS, ALPHA], range: NON_NEGATIVE },
   fresnelAverage: { args: [F0], range: ZERO_TO_ONE },
   fresnelMultipleScatteringKullaConty: { args: [F0, [0, 1e-7, 0.4, 1]], range: ZERO_TO_ONE },
@@ -129,6 +129,8 @@ export const STRESS_DOMAINS = {
     tuples: COS.flatMap((mu) => ALPHA.flatMap((a) => [0, 1, [1, 0.71, 0.29]].map((f0) => [mu, a, f0, 100, 1]))),
     pick: ['albedo', 'single', 'standardError', 'singleStandardError', 'dropped'], range: ZERO_TO_ONE,
   },
+  buildAlbedoTableGGX: { tuples: [[2], [3]], pick: ['data'], range: ZERO_TO_ONE },
+  albedoLossTableGGX: { tuples: [-1, 0, 1e-7, 0.5, 1, 1.5].flatMap((mu) => ALPHA.map((a) => [{ size: 2, data: new Float32Array([0.1, 0.2, 0, 1, 0.3, 0.2, 0, 1, 0, 0, 0, 1, 0.05, 0, 0, 1]) }, mu, a])), range: ZERO_TO_ONE },
   randomWalkBRDFGGX: { tuples: PAIRS.flatMap(([l, v]) => [0, 1e-4, 0.3, 1].map((a) => [l, v, a, 0.5, 20, 1])), range: NON_NEGATIVE },
   skipped: {
     cosineWeightedAverage: 'takes E(mu); unit-tested against closed forms',

@@ -2,6 +2,13 @@
 // includes the stress inputs (cos = 0, 1e-7, 1 and just above 1, eta near 1, total internal reflection,
 // large k, alpha down to 0, sRGB values outside [0, 1]).
 import * as M from '../math/index.js';
+import { buildAlbedoTableGGX, albedoLossTableGGX, ALBEDO_TABLE_SIZE } from '../math/albedo-table.js';
+
+let albedoTable = null; // built on first use: ~5000 albedos
+const albedoTableOnce = () => (albedoTable ??= buildAlbedoTableGGX());
+// the table's nodes, where its bilinear lookup returns the float64 function itself: mu (or alpha) = (i/(N - 1))²
+const tableNodes = (indices) => indices.map((i) => (i / (ALBEDO_TABLE_SIZE - 1)) ** 2);
+const TABLE_CASE = { chunk: 'multiple-scattering.glsl', defines: { ALBEDO_TABLE_GGX: true }, tables: { uAlbedoTableGGX: albedoTableOnce } };
 
 const uniform = (n, lo, hi) => Array.from({ length: n }, (_, i) => lo + ((hi - lo) * i) / (n - 1));
 
@@ -97,6 +104,30 @@ export const PARITY_CASES = [
   {
     name: 'dfgSplitSum (256 samples)', chunk: 'integrate.glsl', glsl: 'dfgSplitSum(a.x, a.y, 256)', outputs: 2,
     js: (mu, alpha) => M.dfgSplitSum(mu, alpha, 256), range: [0, 1], args: cartesian(GRIDS.cosCoarse, GRIDS.alpha),
+  },
+  { name: 'fresnelAverage', chunk: 'multiple-scattering.glsl', glsl: 'fresnelAverage(a.x)', outputs: 1, js: M.fresnelAverage, range: [0, 1], args: cartesian(GRIDS.f0) },
+  {
+    name: 'fresnelAverage (vec3)', chunk: 'multiple-scattering.glsl', glsl: 'fresnelAverage(vec3(a.x, 0.5 * a.x, 1.0 - a.x))', outputs: 3,
+    js: (f0) => [f0, 0.5 * f0, 1 - f0].map((x) => M.fresnelAverage(Math.fround(x))), range: [0, 1], args: cartesian(GRIDS.f0),
+  },
+  {
+    name: 'fresnelMultipleScatteringKullaConty', chunk: 'multiple-scattering.glsl', glsl: 'fresnelMultipleScatteringKullaConty(a.x, a.y)', outputs: 1,
+    js: M.fresnelMultipleScatteringKullaConty, range: [0, 1], args: cartesian(GRIDS.f0, [0, 1e-7, 0.3, 0.41, 0.9, 0.9999, 1]),
+  },
+  {
+    name: 'energyCompensationTurquin', chunk: 'multiple-scattering.glsl', glsl: 'energyCompensationTurquin(a.x, a.y)', outputs: 1,
+    js: M.energyCompensationTurquin, range: [1, 1e4], args: cartesian(GRIDS.f0, [-0.5, 0, 1e-7, 1e-4, 0.3, 0.7, 0.9999, 1, 1.5]),
+  },
+  {
+    name: 'multipleScatteringFromLoss', chunk: 'multiple-scattering.glsl', glsl: 'multipleScatteringFromLoss(a.x, a.y, a.z)', outputs: 1,
+    js: M.multipleScatteringFromLoss, range: [0, Infinity], args: cartesian(GRIDS.cosCoarse, GRIDS.cosCoarse, [-1, 0, 1e-7, 1e-4, 0.3, 0.59, 1, 1.5]),
+  },
+  // the table functions: anywhere against the JS lookup (same rule), and at the nodes against the float64 functions
+  { ...TABLE_CASE, name: 'albedoLossTableGGX', glsl: 'albedoLossTableGGX(a.x, a.y)', outputs: 2, js: (mu, alpha) => albedoLossTableGGX(albedoTableOnce(), mu, alpha), range: [0, 1], args: cartesian(GRIDS.cos, GRIDS.alpha) },
+  { ...TABLE_CASE, name: 'averageAlbedoGGX (table nodes)', glsl: 'averageAlbedoGGX(a.x)', outputs: 1, js: M.averageAlbedoGGX, range: [0, 1], args: cartesian(tableNodes([0, 1, 2, 5, 13, 31, 47, 62, 63])) },
+  {
+    ...TABLE_CASE, name: 'multipleScatteringKullaConty (table nodes)', glsl: 'multipleScatteringKullaConty(a.x, a.y, a.z)', outputs: 1,
+    js: M.multipleScatteringKullaConty, range: [0, Infinity], args: cartesian([-0.5, 0, ...tableNodes([1, 3, 20, 63])], tableNodes([0, 2, 40, 63]), tableNodes([0, 1, 10, 40, 63])),
   },
   // directions built from sin and cos of an angle: there the GPU's own sin and cos set the accuracy (SwiftShader's
   // are up to ~1.8e-4 off; hardware's ~1e-6), not the formulas

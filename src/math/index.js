@@ -17,3 +17,4 @@ export * from './microsurface.js';
 export * from './lighting.js';
 export * from './multiple-scattering.js';
 export * from './random-walk.js';
+export * from './albedo-table.js';

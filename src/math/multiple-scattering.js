@@ -39,19 +39,19 @@ export function averageAlbedoGGX(alpha) {
 }
 
 /**
- * Kulla & Conty's lobe [1] from the albedos: (1 - E_l)(1 - E_v) / (pi (1 - E_avg)). Its integral
- * ∫ f_ms (n·l) dω = 1 - E_v is what the single-scattering lobe lost (the white furnace is closed).
- * As alpha → 0 all three 1 - E go to 0 together; the guarded denominator returns 0 there.
+ * Kulla & Conty's lobe [1] from the energy lost, 1 - E: (1 - E_l)(1 - E_v) / (pi (1 - E_avg)). Its integral
+ * ∫ f_ms (n·l) dω = 1 - E_v is what the single-scattering lobe lost (the white furnace is closed). Taking the
+ * losses rather than E keeps their digits in float32 as alpha → 0, where all three go to 0 together.
  */
-export function multipleScatteringFromAlbedo(El, Ev, Eavg) {
-  const lost = (1 - clamp01(El)) * (1 - clamp01(Ev));
-  return lost / (Math.PI * Math.max(1 - clamp01(Eavg), 1e-7));
+export function multipleScatteringFromLoss(lossL, lossV, lossAvg) {
+  if (!(lossAvg > 0)) return 0;
+  return (clamp01(lossL) * clamp01(lossV)) / (Math.PI * Math.min(lossAvg, 1));
 }
 
 /** Kulla & Conty's multiple-scattering lobe [1] for GGX with F = 1, in 1/sr; 0 below the horizon. */
 export function multipleScatteringKullaConty(nl, nv, alpha) {
   if (!(nl > 0 && nv > 0)) return 0;
-  return multipleScatteringFromAlbedo(albedoGGX(Math.min(nl, 1), alpha), albedoGGX(Math.min(nv, 1), alpha), averageAlbedoGGX(alpha));
+  return multipleScatteringFromLoss(1 - albedoGGX(Math.min(nl, 1), alpha), 1 - albedoGGX(Math.min(nv, 1), alpha), 1 - averageAlbedoGGX(alpha));
 }
 
 /** The cosine-weighted average of Schlick's Fresnel, 2 ∫ F(mu) mu dmu = f0 + (1 - f0)/21 (a Beta integral). */

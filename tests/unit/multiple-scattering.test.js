@@ -4,7 +4,7 @@ import { gaussLegendre } from '../../src/math/special.js';
 import { fresnelSchlick } from '../../src/math/fresnel.js';
 import {
   averageAlbedoGGX, cosineWeightedAverage, energyCompensationTurquin, fresnelAverage,
-  fresnelMultipleScatteringKullaConty, multipleScatteringFromAlbedo, multipleScatteringKullaConty,
+  fresnelMultipleScatteringKullaConty, multipleScatteringFromLoss, multipleScatteringKullaConty,
 } from '../../src/math/multiple-scattering.js';
 import { albedoGGXQuadrature, integrateGL } from './integration-helpers.js';
 
@@ -76,7 +76,7 @@ describe('Kulla–Conty multiple-scattering lobe', () => {
       const El = new Map();
       const E = (mu) => El.get(mu) ?? El.set(mu, exact(mu)).get(mu);
       for (const mu of MUS) {
-        const integral = lobeIntegral((nl) => multipleScatteringFromAlbedo(E(nl), E(mu), Eavg));
+        const integral = lobeIntegral((nl) => multipleScatteringFromLoss(1 - E(nl), 1 - E(mu), 1 - Eavg));
         expect(Math.abs(E(mu) + integral - 1)).toBeLessThan(1e-4);
       }
     }
@@ -96,7 +96,7 @@ describe('Kulla–Conty multiple-scattering lobe', () => {
     expect(multipleScatteringKullaConty(0.3, 0.9, 0.7)).toBeCloseTo(((1 - El) * (1 - Ev)) / (Math.PI * (1 - Eavg)), 12);
     expect(multipleScatteringKullaConty(0.9, 0.3, 0.7)).toBeCloseTo(multipleScatteringKullaConty(0.3, 0.9, 0.7), 12);
     expect(multipleScatteringKullaConty(-0.1, 0.5, 0.7)).toBe(0);
-    expect(multipleScatteringFromAlbedo(1, 1, 1)).toBe(0); // a mirror loses nothing: no lobe, no 0/0
+    expect(multipleScatteringFromLoss(0, 0, 0)).toBe(0); // a mirror loses nothing: no lobe, no 0/0
   });
 });
 

@@ -1,0 +1,35 @@
+import { describe, expect, it } from 'vitest';
+import { ALBEDO_TABLE_SIZE, albedoLossTableGGX, buildAlbedoTableGGX } from '../../src/math/albedo-table.js';
+import { cosineWeightedAverage } from '../../src/math/multiple-scattering.js';
+import { albedoGGXQuadrature } from './integration-helpers.js';
+
+const exact = (mu, alpha) => albedoGGXQuadrature(mu, alpha, 8); // within 2e-7 of the converged value
+const table = buildAlbedoTableGGX(ALBEDO_TABLE_SIZE, exact);
+
+/** Largest |table - exact| of 1 - E over a 40 x 40 grid of (mu, alpha) in [lo, 1]², off the nodes. */
+function worstError(lo) {
+  let worst = 0;
+  for (let i = 0; i < 40; i++) {
+    for (let j = 0; j < 40; j++) {
+      const [mu, alpha] = [lo + ((1 - lo) * (i + 0.37)) / 40, lo + ((1 - lo) * (j + 0.61)) / 40];
+      worst = Math.max(worst, Math.abs(albedoLossTableGGX(table, mu, alpha)[0] - (1 - exact(mu, alpha))));
+    }
+  }
+  return worst;
+}
+
+describe('the albedo table the GPU reads (bilinear in sqrt(mu), sqrt(alpha))', () => {
+  it('returns 1 - E and 1 - E_avg of the function it was built from at its nodes (float32 rounding)', () => {
+    for (const [i, j] of [[0, 0], [5, 9], [30, 63], [63, 20]]) {
+      const [mu, alpha] = [(i / 63) ** 2, (j / 63) ** 2];
+      const [loss, lossAvg] = albedoLossTableGGX(table, mu, alpha);
+      expect(loss).toBeCloseTo(1 - exact(mu, alpha), 7);
+      expect(lossAvg).toBeCloseTo(1 - cosineWeightedAverage((m) => exact(m, alpha)), 7);
+    }
+  });
+
+  it('interpolates E to 5e-4 for mu, alpha >= 0.01 and 3e-4 for mu, alpha >= 0.05 (independent quadrature)', () => {
+    expect(worstError(0.01)).toBeLessThan(5e-4);
+    expect(worstError(0.05)).toBeLessThan(3e-4);
+  });
+});
