@@ -11,11 +11,12 @@ float fresnelAverage(float f0) { return f0 + (1.0 - f0) / 21.0; }
 vec3 fresnelAverage(vec3 f0) { return f0 + (1.0 - f0) / 21.0; }
 
 // Kulla & Conty's Fresnel factor of the multiple-scattering lobe [1]: F_avg² E_avg / (1 - F_avg (1 - E_avg)).
+// float32: the denominator as (1 - F_avg) + F_avg E_avg, which does not cancel when both are near 1.
 float fresnelMultipleScatteringKullaConty(float fAvg, float eAvg) {
-  return fAvg * fAvg * eAvg / max(1.0 - fAvg * (1.0 - eAvg), 1e-7);
+  return fAvg * fAvg * eAvg / max(1.0 - fAvg + fAvg * eAvg, 1e-7);
 }
 vec3 fresnelMultipleScatteringKullaConty(vec3 fAvg, float eAvg) {
-  return fAvg * fAvg * eAvg / max(1.0 - fAvg * (1.0 - eAvg), vec3(1e-7));
+  return fAvg * fAvg * eAvg / max(1.0 - fAvg + fAvg * eAvg, vec3(1e-7));
 }
 
 // Turquin's factor on the single-scattering lobe [2]: 1 + f0 (1 - E)/E, E floored at 1e-4.

@@ -112,6 +112,7 @@ export const PARITY_CASES = [
   },
   {
     name: 'fresnelMultipleScatteringKullaConty', chunk: 'multiple-scattering.glsl', glsl: 'fresnelMultipleScatteringKullaConty(a.x, a.y)', outputs: 1,
+    // F_avg = 1 and E_avg = 1e-7 together: the textbook denominator 1 - F_avg (1 - E_avg) gave 0.84 instead of 1
     js: M.fresnelMultipleScatteringKullaConty, range: [0, 1], args: cartesian(GRIDS.f0, [0, 1e-7, 0.3, 0.41, 0.9, 0.9999, 1]),
   },
   {

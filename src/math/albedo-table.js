@@ -25,7 +25,7 @@ export function buildAlbedoTableGGX(size = ALBEDO_TABLE_SIZE, albedo = albedoGGX
     const avg = cosineWeightedAverage((mu) => albedo(mu, alpha));
     for (let i = 0; i < size; i++) {
       const k = 4 * (j * size + i);
-      data.set([1 - albedo((i / (size - 1)) ** 2, alpha), 1 - avg, 0, 1], k);
+      data.set([Math.max(1 - albedo((i / (size - 1)) ** 2, alpha), 0), Math.max(1 - avg, 0), 0, 1], k); // E may round to 1 + 1e-16
     }
   }
   return { size, data };

@@ -65,7 +65,8 @@ export function fresnelAverage(f0) {
  * Fresnel at each, leaving with probability E_avg. 1 when F_avg = 1. Domain: F_avg in [0, 1], E_avg in (0, 1].
  */
 export function fresnelMultipleScatteringKullaConty(fAvg, eAvg) {
-  return (fAvg * fAvg * eAvg) / Math.max(1 - fAvg * (1 - eAvg), 1e-7);
+  // 1 - F_avg (1 - E_avg) written as (1 - F_avg) + F_avg E_avg: no cancellation when both are near 1
+  return (fAvg * fAvg * eAvg) / Math.max(1 - fAvg + fAvg * eAvg, 1e-7);
 }
 
 /**
