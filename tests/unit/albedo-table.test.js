@@ -18,7 +18,7 @@ function worstError(lo) {
   return worst;
 }
 
-describe('the albedo table the GPU reads (bilinear in sqrt(mu), sqrt(alpha))', () => {
+describe('the albedo table the GPU reads (bilinear in sqrt(mu), sqrt(alpha))', { timeout: 60_000 }, () => {
   it('returns 1 - E and 1 - E_avg of the function it was built from at its nodes (float32 rounding)', () => {
     for (const [i, j] of [[0, 0], [5, 9], [30, 63], [63, 20]]) {
       const [mu, alpha] = [(i / 63) ** 2, (j / 63) ** 2];

@@ -17,7 +17,7 @@ const referenceAverage = (alpha) => integrateGL((s) => 4 * albedoGGXQuadrature(s
 /** The largest error of albedoGGX against the independent quadrature over a spread of mu. */
 const errorOfAlbedo = (alpha) => Math.max(...[0.01, 0.03, 0.1, 0.2, 0.35, 0.5, 0.7, 0.85, 1].map((mu) => Math.abs(albedoGGX(mu, alpha) - albedoGGXQuadrature(mu, alpha))));
 
-describe('the independent albedo quadrature (the tests\' truth)', () => {
+describe('the independent albedo quadrature (the tests\' truth)', { timeout: 60_000 }, () => {
   it('gives 1 - ln 2 at alpha = 1, normal incidence (closed form)', () => {
     expect(albedoGGXQuadrature(1, 1)).toBeCloseTo(1 - Math.log(2), 12);
   });
@@ -42,7 +42,7 @@ describe('Gauss–Legendre and the cosine-weighted average', () => {
   });
 });
 
-describe('E_avg (Kulla & Conty 2017)', () => {
+describe('E_avg (Kulla & Conty 2017)', { timeout: 60_000 }, () => {
   it('the 16-node rule on the exact E matches the 24-node reference to 1e-7 (the rule adds no error)', () => {
     for (const alpha of [1e-3, ...ALPHAS]) {
       expect(Math.abs(cosineWeightedAverage((mu) => albedoGGXQuadrature(mu, alpha)) - referenceAverage(alpha))).toBeLessThan(1e-7);
@@ -58,7 +58,7 @@ describe('E_avg (Kulla & Conty 2017)', () => {
   });
 });
 
-describe('Kulla–Conty multiple-scattering lobe', () => {
+describe('Kulla–Conty multiple-scattering lobe', { timeout: 60_000 }, () => {
   /** ∫ f_ms(l, v)(n·l) dω_l by the midpoint rule, 200 cells in s = sqrt(n·l): (n·l) dω = 2π s² · 2s ds. */
   const lobeIntegral = (f, n = 200) => {
     let sum = 0;

@@ -9,7 +9,7 @@ import { albedoGGXQuadrature } from './integration-helpers.js';
 const GRID = [[1, 1], [0.5, 0.3], [0.1, 0.6], [0.05, 0.05], [0.9, 0.01], [0.3, 1], [0.7, 0.5]];
 const SIGMAS = 4; // seeded, so deterministic; 4 standard errors is a 6e-5 two-sided chance per check
 
-describe('random walk on the Smith microsurface (Heitz et al. 2016)', () => {
+describe('random walk on the Smith microsurface (Heitz et al. 2016)', { timeout: 60_000 }, () => {
   it(`loses nothing with F = 1: albedo 1 up to the paths dropped after ${WALK_MAX_BOUNCES} bounces`, () => {
     for (const [mu, alpha] of GRID) {
       const r = randomWalkAlbedoGGX(mu, alpha, 1, 20000, 11);
@@ -56,7 +56,7 @@ describe('random walk on the Smith microsurface (Heitz et al. 2016)', () => {
   });
 });
 
-describe('visible-normal sampling inside the walk (Dupuy & Benyoub 2023), both hemispheres', () => {
+describe('visible-normal sampling inside the walk (Dupuy & Benyoub 2023), both hemispheres', { timeout: 60_000 }, () => {
   it('mean of m over the samples matches ∫ m max(0, wi·m) D(m) dω / ∫ max(0, wi·m) D(m) dω (quadrature)', () => {
     const alpha = 0.6;
     for (const wi of [[0.6, 0, 0.8], [0.8, 0, -0.6], [0, 0.28, -0.96]]) {
