@@ -130,7 +130,8 @@ export const STRESS_DOMAINS = {
     pick: ['albedo', 'single', 'standardError', 'singleStandardError', 'dropped'], range: ZERO_TO_ONE,
   },
   buildAlbedoTableGGX: { tuples: [[2], [3]], pick: ['data'], range: ZERO_TO_ONE },
-  albedoLossTableGGX: { tuples: [-1, 0, 1e-7, 0.5, 1, 1.5].flatMap((mu) => ALPHA.map((a) => [{ size: 2, data: new Float32Array([0.1, 0.2, 0, 1, 0.3, 0.2, 0, 1, 0, 0, 0, 1, 0.05, 0, 0, 1]) }, mu, a])), range: ZERO_TO_ONE },
+  albedoLossTableGGX: { tuples: [-1, 0, 1e-7, 0.5, 1, 1.5].flatMap((mu) => ALPHA.map((a) => [{ size: 2, data: new Float32Array([0.1, 0.2, 0, 1, 0.3, 0.2, 0.1, 1, 0, 0, 0, 1, 0.05, 0, 0.2, 1]) }, mu, a])), range: ZERO_TO_ONE },
+  specularAlbedoFromTable: { tuples: [0, 1e-7, 0.5, 1].flatMap((mu) => F0.flatMap((f0) => ['none', 'kullaConty', 'turquin'].map((c) => [{ size: 2, data: new Float32Array([0.1, 0.2, 0, 1, 0.3, 0.2, 0.1, 1, 0, 0, 0, 1, 0.05, 0, 0.2, 1]) }, mu, 0.5, f0, c]))), range: ZERO_TO_ONE },
   randomWalkBRDFGGX: { tuples: PAIRS.flatMap(([l, v]) => [0, 1e-4, 0.3, 1].map((a) => [l, v, a, 0.5, 20, 1])), range: NON_NEGATIVE },
   skipped: {
     cosineWeightedAverage: 'takes E(mu); unit-tested against closed forms',

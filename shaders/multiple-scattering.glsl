@@ -39,15 +39,15 @@ float multipleScatteringFromLoss(float lossL, float lossV, float lossAvg) {
 #ifdef ALBEDO_TABLE_GGX
 uniform sampler2D uAlbedoTableGGX;
 
-// (1 - E(mu, alpha), 1 - E_avg(alpha)), bilinear in (sqrt(mu), sqrt(alpha)) by hand with texelFetch, so float
-// textures need no filtering extension and the rule is the JS one exactly.
-vec2 albedoLossTableGGX(float mu, float alpha) {
+// (1 - E(mu, alpha), 1 - E_avg(alpha), bias), bilinear in (sqrt(mu), sqrt(alpha)) by hand with texelFetch, so
+// float textures need no filtering extension and the rule is the JS one exactly. bias: the split sum's.
+vec3 albedoLossTableGGX(float mu, float alpha) {
   ivec2 size = textureSize(uAlbedoTableGGX, 0);
   vec2 p = sqrt(clamp(vec2(mu, alpha), 0.0, 1.0)) * vec2(size - 1);
   ivec2 i = min(ivec2(p), size - 2);
   vec2 f = p - vec2(i);
-  vec2 lo = mix(texelFetch(uAlbedoTableGGX, i, 0).rg, texelFetch(uAlbedoTableGGX, i + ivec2(1, 0), 0).rg, f.x);
-  vec2 hi = mix(texelFetch(uAlbedoTableGGX, i + ivec2(0, 1), 0).rg, texelFetch(uAlbedoTableGGX, i + ivec2(1, 1), 0).rg, f.x);
+  vec3 lo = mix(texelFetch(uAlbedoTableGGX, i, 0).rgb, texelFetch(uAlbedoTableGGX, i + ivec2(1, 0), 0).rgb, f.x);
+  vec3 hi = mix(texelFetch(uAlbedoTableGGX, i + ivec2(0, 1), 0).rgb, texelFetch(uAlbedoTableGGX, i + ivec2(1, 1), 0).rgb, f.x);
   return mix(lo, hi, f.y);
 }
 
@@ -56,7 +56,24 @@ float averageAlbedoGGX(float alpha) { return 1.0 - albedoLossTableGGX(1.0, alpha
 // Kulla & Conty's lobe for GGX with F = 1 [1], in 1/sr; 0 below the horizon.
 float multipleScatteringKullaConty(float nl, float nv, float alpha) {
   if (nl <= 0.0 || nv <= 0.0) return 0.0;
-  vec2 v = albedoLossTableGGX(nv, alpha);
+  vec3 v = albedoLossTableGGX(nv, alpha);
   return multipleScatteringFromLoss(albedoLossTableGGX(nl, alpha).x, v.x, v.y);
+}
+
+// Directional albedo of GGX with Schlick's F at f0, from the table, with no compensation, Kulla & Conty's
+// lobe (its integral is 1 - E, times the Fresnel factor) or Turquin's factor. Mirrors specularAlbedoFromTable.
+float specularAlbedoGGX(float mu, float alpha, float f0) {
+  vec3 t = albedoLossTableGGX(mu, alpha);
+  return f0 * (1.0 - t.x) + (1.0 - f0) * t.z;
+}
+float specularAlbedoKullaConty(float mu, float alpha, float f0) {
+  vec3 t = albedoLossTableGGX(mu, alpha);
+  float single = f0 * (1.0 - t.x) + (1.0 - f0) * t.z;
+  return single + fresnelMultipleScatteringKullaConty(fresnelAverage(f0), 1.0 - t.y) * t.x;
+}
+float specularAlbedoTurquin(float mu, float alpha, float f0) {
+  vec3 t = albedoLossTableGGX(mu, alpha);
+  float single = f0 * (1.0 - t.x) + (1.0 - f0) * t.z;
+  return single * energyCompensationTurquin(f0, 1.0 - t.x);
 }
 #endif

@@ -124,8 +124,12 @@ export const PARITY_CASES = [
     js: M.multipleScatteringFromLoss, range: [0, Infinity], args: cartesian(GRIDS.cosCoarse, GRIDS.cosCoarse, [-1, 0, 1e-7, 1e-4, 0.3, 0.59, 1, 1.5]),
   },
   // the table functions: anywhere against the JS lookup (same rule), and at the nodes against the float64 functions
-  { ...TABLE_CASE, name: 'albedoLossTableGGX', glsl: 'albedoLossTableGGX(a.x, a.y)', outputs: 2, js: (mu, alpha) => albedoLossTableGGX(albedoTableOnce(), mu, alpha), range: [0, 1], args: cartesian(GRIDS.cos, GRIDS.alpha) },
+  { ...TABLE_CASE, name: 'albedoLossTableGGX', glsl: 'albedoLossTableGGX(a.x, a.y)', outputs: 3, js: (mu, alpha) => albedoLossTableGGX(albedoTableOnce(), mu, alpha), range: [0, 1], args: cartesian(GRIDS.cos, GRIDS.alpha) },
   { ...TABLE_CASE, name: 'averageAlbedoGGX (table nodes)', glsl: 'averageAlbedoGGX(a.x)', outputs: 1, js: M.averageAlbedoGGX, range: [0, 1], args: cartesian(tableNodes([0, 1, 2, 5, 13, 31, 47, 62, 63])) },
+  ...[['specularAlbedoGGX', 'none'], ['specularAlbedoKullaConty', 'kullaConty'], ['specularAlbedoTurquin', 'turquin']].map(([name, compensation]) => ({
+    ...TABLE_CASE, name, glsl: `${name}(a.x, a.y, a.z)`, outputs: 1, range: [0, 1], args: cartesian(GRIDS.cosCoarse, GRIDS.alpha, GRIDS.f0),
+    js: (mu, alpha, f0) => M.specularAlbedoFromTable(albedoTableOnce(), mu, alpha, f0, compensation),
+  })),
   {
     ...TABLE_CASE, name: 'multipleScatteringKullaConty (table nodes)', glsl: 'multipleScatteringKullaConty(a.x, a.y, a.z)', outputs: 1,
     js: M.multipleScatteringKullaConty, range: [0, Infinity], args: cartesian([-0.5, 0, ...tableNodes([1, 3, 20, 63])], tableNodes([0, 2, 40, 63]), tableNodes([0, 1, 10, 40, 63])),

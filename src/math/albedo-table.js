@@ -2,8 +2,8 @@
 // Smith, F = 1), built from the float64 functions and looked up by the same bilinear rule in JS and in GLSL
 // (albedoLossTableGGX in shaders/multiple-scattering.glsl), so the two can be compared node for node. The losses,
 // not E, are stored: near alpha = 0 they are ~1e-7 and float32 keeps their digits, where 1 - E would have none.
-import { albedoGGX } from './integrate.js';
-import { cosineWeightedAverage } from './multiple-scattering.js';
+import { dfgSplitSum } from './integrate.js';
+import { cosineWeightedAverage, energyCompensationTurquin, fresnelAverage, fresnelMultipleScatteringKullaConty } from './multiple-scattering.js';
 
 /**
  * Nodes per axis. Axes: x = sqrt(mu), y = sqrt(alpha): E changes fastest where mu and alpha are both small
@@ -15,23 +15,26 @@ export const ALBEDO_TABLE_SIZE = 64;
 
 /**
  * { size, data }: RGBA float32 texels, row j = alpha (j/(size - 1))², column i = mu (i/(size - 1))²;
- * R = 1 - E(mu, alpha), G = 1 - E_avg(alpha). `albedo(mu, alpha)` is the E to tabulate (albedoGGX unless a test
- * passes its own); E_avg is its cosine-weighted average.
+ * R = 1 - E(mu, alpha), G = 1 - E_avg(alpha), B = the split sum's bias (the Fresnel part, so that the albedo
+ * with Schlick's F is f0 E + (1 - f0) bias). `dfg(mu, alpha)` gives [scale, bias] with E = scale + bias
+ * (dfgSplitSum unless a test passes its own); E_avg is the cosine-weighted average of E.
  */
-export function buildAlbedoTableGGX(size = ALBEDO_TABLE_SIZE, albedo = albedoGGX) {
+export function buildAlbedoTableGGX(size = ALBEDO_TABLE_SIZE, dfg = dfgSplitSum) {
   const data = new Float32Array(size * size * 4);
   for (let j = 0; j < size; j++) {
     const alpha = (j / (size - 1)) ** 2;
-    const avg = cosineWeightedAverage((mu) => albedo(mu, alpha));
-    for (let i = 0; i < size; i++) {
-      const k = 4 * (j * size + i);
-      data.set([Math.max(1 - albedo((i / (size - 1)) ** 2, alpha), 0), Math.max(1 - avg, 0), 0, 1], k); // E may round to 1 + 1e-16
-    }
+    const row = Array.from({ length: size }, (_, i) => dfg((i / (size - 1)) ** 2, alpha));
+    const avg = cosineWeightedAverage((mu) => {
+      const [scale, bias] = dfg(mu, alpha);
+      return scale + bias;
+    });
+    // E may round to 1 + 1e-16: the losses are kept at 0 or above
+    row.forEach(([scale, bias], i) => data.set([Math.max(1 - scale - bias, 0), Math.max(1 - avg, 0), bias, 1], 4 * (j * size + i)));
   }
   return { size, data };
 }
 
-/** [1 - E(mu, alpha), 1 - E_avg(alpha)] from the table, bilinear in (sqrt(mu), sqrt(alpha)), clamped to the table's range. */
+/** [1 - E(mu, alpha), 1 - E_avg(alpha), bias] from the table, bilinear in (sqrt(mu), sqrt(alpha)), clamped to its range. */
 export function albedoLossTableGGX(table, mu, alpha) {
   const { size, data } = table;
   const x = Math.sqrt(Math.min(Math.max(mu, 0), 1)) * (size - 1);
@@ -39,9 +42,22 @@ export function albedoLossTableGGX(table, mu, alpha) {
   const [i, j] = [Math.min(Math.floor(x), size - 2), Math.min(Math.floor(y), size - 2)];
   const [fx, fy] = [x - i, y - j];
   const at = (ii, jj, c) => data[4 * (jj * size + ii) + c];
-  return [0, 1].map((c) => {
+  return [0, 1, 2].map((c) => {
     const lo = at(i, j, c) + (at(i + 1, j, c) - at(i, j, c)) * fx;
     const hi = at(i, j + 1, c) + (at(i + 1, j + 1, c) - at(i, j + 1, c)) * fx;
     return lo + (hi - lo) * fy;
   });
+}
+
+/**
+ * Directional albedo ∫ f (n·l) dω of GGX with Schlick's F at f0 (one channel), from the table, with a
+ * compensation ('none', 'kullaConty' or 'turquin', see multiple-scattering.js): what a shader computes.
+ */
+export function specularAlbedoFromTable(table, mu, alpha, f0, compensation) {
+  const [loss, lossAvg, bias] = albedoLossTableGGX(table, mu, alpha);
+  const E = 1 - loss;
+  const single = f0 * E + (1 - f0) * bias;
+  if (compensation === 'kullaConty') return single + fresnelMultipleScatteringKullaConty(fresnelAverage(f0), 1 - lossAvg) * loss;
+  if (compensation === 'turquin') return single * energyCompensationTurquin(f0, E);
+  return single;
 }
