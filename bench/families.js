@@ -2,6 +2,7 @@
 // and the variants (a JS function and the GLSL expression that computes the same thing on the GPU).
 // Shared by the CPU/error benchmark (Node) and the GPU benchmark page (Chromium).
 import * as M from '../src/math/index.js';
+import { MULTIPLE_SCATTERING_FAMILY } from './multiple-scattering-family.js';
 
 const range = (n, lo, hi) => Array.from({ length: n }, (_, i) => lo + ((hi - lo) * i) / (n - 1));
 const COS = range(1001, 0, 1);
@@ -107,6 +108,7 @@ export const FAMILIES = [
       { key: 'lambert', label: 'Lambert', js: () => M.diffuseLambert(0.8), glsl: 'diffuseLambert(0.8 * x)' },
     ],
   },
+  MULTIPLE_SCATTERING_FAMILY,
 ];
 
 /** max |error| (and where), and RMS, of each variant against the family's reference over its domain. */

@@ -14,7 +14,8 @@ const lines = [
   '',
 ];
 for (const f of report.families) {
-  lines.push(`**${f.title}** — max \\|error\\| of ${esc(f.errorOf)} over ${esc(f.domain)}`, '', '| variant | max \\|error\\| | RMS | CPU ns/eval | GPU relative |', '|---|---|---|---|---|');
+  const against = f.referenceLabel ? ` against ${esc(f.referenceLabel)}${f.referenceNote ? ` (${esc(f.referenceNote)})` : ''}` : '';
+  lines.push(`**${f.title}** — max \\|error\\| of ${esc(f.errorOf)}${against} over ${esc(f.domain)}`, '', '| variant | max \\|error\\| | RMS | CPU ns/eval | GPU relative |', '|---|---|---|---|---|');
   for (const v of f.variants) {
     lines.push(`| ${esc(v.label)} | ${v.error.maxAbs === 0 ? '0 (reference)' : v.error.maxAbs.toExponential(2)} | ${v.error.rms.toExponential(2)} | ${v.cpuNsPerEval.toFixed(0)} | ${v.gpuRelative.toFixed(2)}× |`);
   }

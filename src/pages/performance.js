@@ -22,13 +22,15 @@ function render() {
   root.replaceChildren();
   for (const f of report.families) {
     const section = document.createElement('section');
-    section.innerHTML = `<h2>${f.title}</h2><p class="domain">Error of ${f.errorOf} against the float64 reference over ${f.domain}.</p>`;
+    const against = f.referenceLabel ?? 'the float64 reference';
+    section.innerHTML = `<h2>${f.title}</h2><p class="domain">Error of ${f.errorOf} against ${against} over ${f.domain}.` +
+      `${f.referenceNote ? ` The reference's own uncertainty: ${f.referenceNote}.` : ''}</p>`;
     root.append(section);
     const costs = [...new Set(f.variants.map(costOf))].sort((a, b) => a - b);
     const lo = costs[0];
     const hi = costs[costs.length - 1];
     plots.push(createPlot(section, {
-      title: `${f.title}: largest error against cost (lower left is better; the exact reference sits at 1e-7)`,
+      title: `${f.title}: largest error against cost (lower left is better${f.variants.some((v) => v.error.maxAbs === 0) ? '; the exact reference sits at 1e-7' : ''})`,
       xLabel: costLabel(),
       yLabel: 'max |error|',
       x: { min: lo * 0.9, max: hi * 1.1 },

@@ -59,9 +59,9 @@ function bisect(f, target, lo, hi) {
  * runs over [0, acos c*], on panels graded towards the cut-off (where n·l → 0 and, at grazing v, V(n·l) n·l
  * turns sharply); the y range is split where the cut-off appears (c* = -1: a square-root kink, smoothed by
  * y = y1 + L s²) and where nothing is left (c* = 1). Integrand: V (n·l)(v·m)/(n·m), from
- * f (n·l) dω_l = D V (n·l)(v·m) dω_m.
+ * f (n·l) dω_l = D V (n·l)(v·m) dω_m; times Schlick's F(v·m) at f0 when f0 < 1.
  */
-export function albedoGGXQuadrature(mu, alpha, n = 24) {
+export function albedoGGXQuadrature(mu, alpha, n = 24, f0 = 1) {
   const cv = Math.min(Math.max(mu, 1e-6), 1);
   const sv = Math.sqrt((1 - cv) * (1 + cv));
   const a = Math.min(Math.max(alpha, 1e-4), 1);
@@ -86,7 +86,7 @@ export function albedoGGXQuadrature(mu, alpha, n = 24) {
     const g = (phi) => {
       const vm = sv * sm * Math.cos(phi) + cv * cm;
       const nl = 2 * vm * cm - cv;
-      return nl > 0 && vm > 0 ? (V(nl) * nl * vm) / cm : 0;
+      return nl > 0 && vm > 0 ? (V(nl) * nl * vm * (f0 + (1 - f0) * (1 - vm) ** 5)) / cm : 0;
     };
     const r = Math.exp(2 * y);
     const weight = (2 * r) / ((1 + r) * (1 + r)) / Math.PI;
