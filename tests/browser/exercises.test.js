@@ -94,11 +94,12 @@ describe('exercises', () => {
     await typeAnswer(page, '31');
     expect((await check(page)).ok).toBe(true);
 
-    // the random walk gives 25.6 points (node: randomWalkAlbedoGGX(1, 0.8, 0.71, 1e5, 1)); Kulla & Conty's 23.7 passes too
+    // the random walk gives 24.4 points (node: randomWalkAlbedoGGX(1, 0.75, 0.71, 1e5, 1)); Kulla & Conty's 22.7, from
+    // the furnace table's E = 0.4639 and E_avg = 0.5361, passes too
     await choose(page, 'rough-metal-gain');
     await typeAnswer(page, '5');
-    expect((await check(page)).text).toMatch(/5 points is too low by 20\.\d points/);
-    await typeAnswer(page, '23.7');
+    expect((await check(page)).text).toMatch(/5 points is too low by 19\.\d points/);
+    await typeAnswer(page, '22.7');
     expect((await check(page)).ok).toBe(true);
 
     await choose(page, 'red-zone');
