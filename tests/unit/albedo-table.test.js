@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { ALBEDO_TABLE_SIZE, albedoLossTableGGX, buildAlbedoTableGGX } from '../../src/math/albedo-table.js';
-import { cosineWeightedAverage } from '../../src/math/multiple-scattering.js';
+import { ALBEDO_TABLE_SIZE, albedoLossTableGGX, buildAlbedoTableGGX, specularAlbedoFromTable } from '../../src/math/albedo-table.js';
+import { compensatedAlbedoGGX, cosineWeightedAverage } from '../../src/math/multiple-scattering.js';
 import { albedoGGXQuadrature } from './integration-helpers.js';
 
 const exact = (mu, alpha) => albedoGGXQuadrature(mu, alpha, 8); // within 2e-7 of the converged value
@@ -31,5 +31,17 @@ describe('the albedo table the GPU reads (bilinear in sqrt(mu), sqrt(alpha))', {
   it('interpolates E to 5e-4 for mu, alpha >= 0.01 and 3e-4 for mu, alpha >= 0.05 (independent quadrature)', () => {
     expect(worstError(0.01)).toBeLessThan(5e-4);
     expect(worstError(0.05)).toBeLessThan(3e-4);
+  });
+
+  it('gives, at its nodes, the float64 albedo with each compensation (compensatedAlbedoGGX, from dfgSplitSum)', () => {
+    const shipped = buildAlbedoTableGGX(9); // nodes at mu, alpha = (i/8)²
+    for (const [i, j] of [[1, 1], [3, 6], [8, 4], [5, 8]]) {
+      const [mu, alpha] = [(i / 8) ** 2, (j / 8) ** 2];
+      for (const f0 of [0.04, 0.71, 1]) {
+        for (const c of ['none', 'kullaConty', 'turquin']) {
+          expect(specularAlbedoFromTable(shipped, mu, alpha, f0, c)).toBeCloseTo(compensatedAlbedoGGX(mu, alpha, f0, c), 6);
+        }
+      }
+    }
   });
 });
