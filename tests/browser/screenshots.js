@@ -19,6 +19,7 @@ const SHOTS = [
   ['surfaces-page', 'surfaces.html', { fullPage: true }],
   ['brdf-page', 'brdf.html', { fullPage: true }],
   ['brdf-lobe-compare', 'embed.html?w=brdf-lobe&compare=1&cosine=1&lightTheta=60&viewTheta=20'],
+  ['brdf-lobe-multiple', 'embed.html?w=brdf-lobe&multiple=1&alpha=1&F=one&lightTheta=30&viewTheta=20'],
   ['microfacets-page', 'microfacets.html', { fullPage: true }],
   ['ndf-page', 'ndf.html?ndf.exposure=8', { fullPage: true }],
   ['visibility-page', 'visibility.html', { fullPage: true }],
