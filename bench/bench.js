@@ -56,6 +56,7 @@ async function gpuCosts() {
 const gpu = await gpuCosts();
 const families = [];
 for (const family of chosen) {
+  family.configure?.({ quick });
   const errors = measureErrors(family);
   const cpu = await cpuCosts(family);
   const gpuMs = gpu.results[family.key];

@@ -9,6 +9,7 @@ const ALPHAS = [0.05, 0.1, 0.2, 0.35, 0.5, 0.7, 0.85, 1];
 const GOLD = M.METALS.find((m) => m.key === 'gold').linear;
 const CHANNELS = [0.04, 0.5, 0.95, ...GOLD]; // the last three: gold's linear R, G, B (the talk's table)
 export const WALK_SAMPLES = 200_000;
+let walkSamples = WALK_SAMPLES;
 
 let walks = null;
 let table = null;
@@ -18,7 +19,7 @@ const tableOnce = () => (table ??= M.buildAlbedoTableGGX());
 function walkAll() {
   const out = new Map();
   MUS.forEach((mu, i) => ALPHAS.forEach((alpha, j) => {
-    out.set(`${mu} ${alpha}`, M.randomWalkAlbedoGGX(mu, alpha, CHANNELS, WALK_SAMPLES, 1 + i * ALPHAS.length + j));
+    out.set(`${mu} ${alpha}`, M.randomWalkAlbedoGGX(mu, alpha, CHANNELS, walkSamples, 1 + i * ALPHAS.length + j));
   }));
   return out;
 }
@@ -42,6 +43,11 @@ export const MULTIPLE_SCATTERING_FAMILY = {
   inputs: MUS.flatMap((mu) => ALPHAS.flatMap((alpha) => CHANNELS.map((f0, channel) => [mu, alpha, f0, channel]))),
   reference: (mu, alpha, f0, channel) => walkOnce().get(`${mu} ${alpha}`).albedo[channel],
   referenceNote: () => `its largest standard error is ${walkStandardError().toExponential(1)}`,
+  /** --quick (the test suite): 2000 paths per (μ, α) instead of 200k. */
+  configure({ quick }) {
+    walkSamples = quick ? 2000 : WALK_SAMPLES;
+    walks = null;
+  },
   // what the GPU pass needs besides the default chunks: the table, bound as a texture
   gpu: { chunk: 'multiple-scattering.glsl', defines: { ALBEDO_TABLE_GGX: true }, tables: { uAlbedoTableGGX: tableOnce } },
   variants: [
