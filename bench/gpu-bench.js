@@ -93,7 +93,7 @@ const only = params.get('family'); // one family alone (npm run bench -- --famil
 const results = {};
 for (const family of FAMILIES.filter((f) => !only || f.key === only)) {
   results[family.key] = {};
-  for (const v of family.variants) results[family.key][v.key] = timeFrames(bindTables(program(v.glsl, family.gpu), family.gpu?.tables));
+  for (const v of family.variants.filter((w) => w.glsl)) results[family.key][v.key] = timeFrames(bindTables(program(v.glsl, family.gpu), family.gpu?.tables));
 }
 window.__gpuBench = {
   done: true,

@@ -1,7 +1,7 @@
 // The bench family for multiple scattering: the albedo of a GGX conductor (Schlick's F at every bounce) with
-// no compensation, Kulla & Conty's and Turquin's, as a shader computes it (from the albedo table), against the
-// random walk on the Smith microsurface (Heitz et al. 2016). The walks run once, when the reference is first
-// asked for (in Node; the GPU page only compiles the expressions).
+// no compensation, Kulla & Conty's and Turquin's, as a shader computes it (from the albedo table): three
+// approximations of the random walk on the Smith microsurface (Heitz et al. 2016), the family's reference. The
+// walks run once, when the reference is first asked for (in Node; the GPU page only compiles the expressions).
 import * as M from '../src/math/index.js';
 
 const MUS = [0.05, 0.1, 0.2, 0.35, 0.5, 0.7, 0.85, 1];
@@ -33,16 +33,15 @@ export function walkStandardError() {
 
 const fromTable = (compensation) => (mu, alpha, f0) => M.specularAlbedoFromTable(tableOnce(), mu, alpha, f0, compensation);
 
+const MODEL = 'GGX conductor, all bounces'; // what every variant computes or approximates
+
 export const MULTIPLE_SCATTERING_FAMILY = {
   key: 'multiple-scattering',
-  kind: 'approximation',
   title: 'Multiple scattering: energy compensation against the random walk',
   domain: `μ in {${MUS.join(', ')}} × α in {${ALPHAS.join(', ')}} × F0 in {0.04, 0.5, 0.95, gold's linear R, G, B}`,
-  referenceLabel: `the random walk on the Smith microsurface (Heitz et al. 2016; ${WALK_SAMPLES / 1000}k paths per (μ, α))`,
-  errorOf: 'directional albedo (GGX, Schlick F at every bounce)',
+  errorOf: 'Directional albedo (GGX, height-correlated Smith, Schlick F at every bounce)',
   inputs: MUS.flatMap((mu) => ALPHAS.flatMap((alpha) => CHANNELS.map((f0, channel) => [mu, alpha, f0, channel]))),
-  reference: (mu, alpha, f0, channel) => walkOnce().get(`${mu} ${alpha}`).albedo[channel],
-  referenceNote: () => `its largest standard error is ${walkStandardError().toExponential(1)}`,
+  referenceNote: () => `the walk's largest standard error is ${walkStandardError().toExponential(1)}`,
   /** --quick (the test suite): 2000 paths per (μ, α) instead of 200k. */
   configure({ quick }) {
     walkSamples = quick ? 2000 : WALK_SAMPLES;
@@ -51,8 +50,13 @@ export const MULTIPLE_SCATTERING_FAMILY = {
   // what the GPU pass needs besides the default chunks: the table, bound as a texture
   gpu: { chunk: 'multiple-scattering.glsl', defines: { ALBEDO_TABLE_GGX: true }, tables: { uAlbedoTableGGX: tableOnce } },
   variants: [
-    { key: 'none', label: 'Single scattering only', js: fromTable('none'), glsl: 'specularAlbedoGGX(x, 0.05 + 0.95 * y, 0.5)' },
-    { key: 'kulla-conty', label: 'Kulla & Conty 2017', js: fromTable('kullaConty'), glsl: 'specularAlbedoKullaConty(x, 0.05 + 0.95 * y, 0.5)' },
-    { key: 'turquin', label: 'Turquin 2019', js: fromTable('turquin'), glsl: 'specularAlbedoTurquin(x, 0.05 + 0.95 * y, 0.5)' },
+    {
+      key: 'walk', label: `Random walk (Heitz et al. 2016), ${WALK_SAMPLES / 1000}k paths`, kind: 'reference', model: MODEL,
+      // run once for the whole grid (~25 s), not per evaluation and not on the GPU: no cost columns
+      untimed: true, glsl: null, js: (mu, alpha, f0, channel) => walkOnce().get(`${mu} ${alpha}`).albedo[channel],
+    },
+    { key: 'none', label: 'Single scattering only', kind: 'approximation', against: 'walk', model: MODEL, js: fromTable('none'), glsl: 'specularAlbedoGGX(x, 0.05 + 0.95 * y, 0.5)' },
+    { key: 'kulla-conty', label: 'Kulla & Conty 2017', kind: 'approximation', against: 'walk', model: MODEL, js: fromTable('kullaConty'), glsl: 'specularAlbedoKullaConty(x, 0.05 + 0.95 * y, 0.5)' },
+    { key: 'turquin', label: 'Turquin 2019', kind: 'approximation', against: 'walk', model: MODEL, js: fromTable('turquin'), glsl: 'specularAlbedoTurquin(x, 0.05 + 0.95 * y, 0.5)' },
   ],
 };

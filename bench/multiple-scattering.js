@@ -3,16 +3,17 @@
 import { MULTIPLE_SCATTERING_FAMILY as family } from './multiple-scattering-family.js';
 
 const f0Label = (f0, channel) => (channel < 3 ? String(f0) : `gold ${'RGB'[channel - 3]} (${f0})`);
+const [reference, ...approximations] = family.variants;
 const rows = new Map();
 for (const args of family.inputs) {
   const [, , f0, channel] = args;
-  const ref = family.reference(...args);
-  const row = rows.get(channel) ?? rows.set(channel, { label: f0Label(f0, channel), errors: family.variants.map(() => []) }).get(channel);
-  family.variants.forEach((v, i) => row.errors[i].push(v.js(...args) - ref));
+  const ref = reference.js(...args);
+  const row = rows.get(channel) ?? rows.set(channel, { label: f0Label(f0, channel), errors: approximations.map(() => []) }).get(channel);
+  approximations.forEach((v, i) => row.errors[i].push(v.js(...args) - ref));
 }
 const pad = (s, n) => String(s).padEnd(n);
-console.log(`Albedo error against ${family.referenceLabel} (${family.referenceNote()}), over ${family.domain}.`);
-console.log(`${pad('F0', 18)}${family.variants.map((v) => pad(`${v.label}: max, RMS`, 34)).join('')}`);
+console.log(`Albedo error against the ${reference.label} (${family.referenceNote()}), over ${family.domain}.`);
+console.log(`${pad('F0', 18)}${approximations.map((v) => pad(`${v.label}: max, RMS`, 34)).join('')}`);
 for (const { label, errors } of rows.values()) {
   const cells = errors.map((e) => {
     const max = e.reduce((m, x) => (Math.abs(x) > Math.abs(m) ? x : m), 0);

@@ -133,6 +133,12 @@ export const STRESS_DOMAINS = {
   albedoLossTableGGX: { tuples: [-1, 0, 1e-7, 0.5, 1, 1.5].flatMap((mu) => ALPHA.map((a) => [{ size: 2, data: new Float32Array([0.1, 0.2, 0, 1, 0.3, 0.2, 0.1, 1, 0, 0, 0, 1, 0.05, 0, 0.2, 1]) }, mu, a])), range: ZERO_TO_ONE },
   specularAlbedoFromTable: { tuples: [0, 1e-7, 0.5, 1].flatMap((mu) => F0.flatMap((f0) => ['none', 'kullaConty', 'turquin'].map((c) => [{ size: 2, data: new Float32Array([0.1, 0.2, 0, 1, 0.3, 0.2, 0.1, 1, 0, 0, 0, 1, 0.05, 0, 0.2, 1]) }, mu, 0.5, f0, c]))), range: ZERO_TO_ONE },
   randomWalkBRDFGGX: { tuples: PAIRS.flatMap(([l, v]) => [0, 1e-4, 0.3, 1].map((a) => [l, v, a, 0.5, 20, 1])), range: NON_NEGATIVE },
+  sphereSolidAngle: { args: [[-1, 0, 1e-9, 1, 1e6], [-1, 0, 1e-9, 1, 1e6]], range: [0, 2 * Math.PI] },
+  sphereLightIrradiance: { args: [[-1, 0, 1, 1e6], [-1, 0, 1e-9, 1, 1e6], [-1, 0, 1e-9, 1, 1e6]], range: NON_NEGATIVE },
+  planckRadiance: { args: [[-1, 0, 1e-3, 380, 780, 1e6], [-1, 0, 1, 1000, 6500, 1e6]], range: NON_NEGATIVE },
+  cieXyzFit: { args: [[-1e6, 0, 380, 555, 780, 1e6]], range: [0, 2] },
+  spectrumToXyz: { args: [[() => 0, () => 1, (l) => l / 780]], range: NON_NEGATIVE },
+  xyzToLinearSrgb: { tuples: [[[0, 0, 0]], [[0.95047, 1, 1.08883]], [[1e6, 0, 0]]], range: FINITE },
   skipped: {
     cosineWeightedAverage: 'takes E(mu); unit-tested against closed forms',
     seededRandom: 'returns a generator; unit-tested through the samplers',

@@ -18,3 +18,4 @@ export * from './lighting.js';
 export * from './multiple-scattering.js';
 export * from './random-walk.js';
 export * from './albedo-table.js';
+export * from './radiometry.js';
