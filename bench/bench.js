@@ -153,7 +153,7 @@ for (const f of report.families.filter((g) => !familyKey || g.key === familyKey)
   for (const v of f.variants) {
     const d = v.error ?? v.difference;
     const what = v.kind === 'reference' ? 'reference' : `${v.kind === 'difference' ? 'differs from' : 'error vs'} ${v.againstLabel}`;
-    console.log(`  ${pad(v.label, 42)}${pad(what, 52)}${pad(d.maxAbs.toExponential(2), 11)}${pad(d.rms.toExponential(2), 11)}${pad(fixed(v.cpuNsPerEval, 2), 13)}${pad(fixed(v.gpuMsPerFrame, 2), 14)}${fixed(v.gpuRelative, 2)}×`);
+    console.log(`  ${pad(v.label, 42)}${pad(what, 52)}${pad(d.maxAbs.toExponential(2), 11)}${pad(d.rms.toExponential(2), 11)}${pad(fixed(v.cpuNsPerEval, 2), 13)}${pad(fixed(v.gpuMsPerFrame, 2), 14)}${fixed(v.gpuRelative, 2)}${v.gpuRelative === null ? '' : '×'}`);
   }
 }
 if (familyKey) {

@@ -41,7 +41,7 @@ export const MULTIPLE_SCATTERING_FAMILY = {
   domain: `μ in {${MUS.join(', ')}} × α in {${ALPHAS.join(', ')}} × F0 in {0.04, 0.5, 0.95, gold's linear R, G, B}`,
   errorOf: 'Directional albedo (GGX, height-correlated Smith, Schlick F at every bounce)',
   inputs: MUS.flatMap((mu) => ALPHAS.flatMap((alpha) => CHANNELS.map((f0, channel) => [mu, alpha, f0, channel]))),
-  referenceNote: () => `the walk's largest standard error is ${walkStandardError().toExponential(1)}`,
+  referenceNote: () => `${walkSamples / 1000}k paths per (μ, α); the walk's largest standard error is ${walkStandardError().toExponential(1)}`,
   /** --quick (the test suite): 2000 paths per (μ, α) instead of 200k. */
   configure({ quick }) {
     walkSamples = quick ? 2000 : WALK_SAMPLES;
@@ -51,7 +51,7 @@ export const MULTIPLE_SCATTERING_FAMILY = {
   gpu: { chunk: 'multiple-scattering.glsl', defines: { ALBEDO_TABLE_GGX: true }, tables: { uAlbedoTableGGX: tableOnce } },
   variants: [
     {
-      key: 'walk', label: `Random walk (Heitz et al. 2016), ${WALK_SAMPLES / 1000}k paths`, kind: 'reference', model: MODEL,
+      key: 'walk', label: 'Random walk (Heitz et al. 2016)', kind: 'reference', model: MODEL,
       // run once for the whole grid (~25 s), not per evaluation and not on the GPU: no cost columns
       untimed: true, glsl: null, js: (mu, alpha, f0, channel) => walkOnce().get(`${mu} ${alpha}`).albedo[channel],
     },
