@@ -2,12 +2,10 @@
 // includes the stress inputs (cos = 0, 1e-7, 1 and just above 1, eta near 1, total internal reflection,
 // large k, alpha down to 0, sRGB values outside [0, 1]).
 import * as M from '../math/index.js';
-import { buildAlbedoTableGGX, albedoLossTableGGX, ALBEDO_TABLE_SIZE } from '../math/albedo-table.js';
+import { buildAlbedoTableGGX, albedoLossTableGGX } from '../math/albedo-table.js';
 
-let albedoTable = null; // built on first use: ~5000 albedos
+let albedoTable = null; // built on first use (~0.5 s)
 const albedoTableOnce = () => (albedoTable ??= buildAlbedoTableGGX());
-// the table's nodes, where its bilinear lookup returns the float64 function itself: mu (or alpha) = (i/(N - 1))²
-const tableNodes = (indices) => indices.map((i) => (i / (ALBEDO_TABLE_SIZE - 1)) ** 2);
 const TABLE_CASE = { chunk: 'multiple-scattering.glsl', defines: { ALBEDO_TABLE_GGX: true }, tables: { uAlbedoTableGGX: albedoTableOnce } };
 
 const uniform = (n, lo, hi) => Array.from({ length: n }, (_, i) => lo + ((hi - lo) * i) / (n - 1));
@@ -21,7 +19,7 @@ export const GRIDS = {
   k: [0, 1e-3, 0.5, 1, 2.5, 5, 10],
   f0: [0, 0.02, 0.04, 0.17, 0.5, 0.95, 1],
   alpha: [0, 1e-5, 1e-4, 1e-3, 0.01, 0.1, 0.3, 0.5, 1],
-  exponent: [0, 1, 10, 100, 1e3, 1e4, 1e6, 2e6],
+  exponent: [0, 1, 10, 100, 1e3, 1e4, 1e6, 2e6, 2e8, 1e12, 1e30], // up to the GLSL clamp (ndf.glsl)
   abcA1: [0, 0.01, 0.1, 1, 10, 100, 1e3, 1e4, 2e4],
   abcA2: [0, 0.05, 0.5, 1, 1.5, 2, 3, 10, 20],
   sgdAlpha: [0, 0.01, 0.05, 0.2, 0.5, 1, 2, 3],
@@ -92,19 +90,6 @@ export const PARITY_CASES = [
       Math.sin(tl), 0, Math.cos(tl), alpha, Math.sin(tv) * Math.cos(phi), Math.sin(tv) * Math.sin(phi), Math.cos(tv), 0,
     ]),
   },
-  {
-    name: 'albedoGGX (256 samples)',
-    chunk: 'integrate.glsl',
-    glsl: 'albedoGGX(a.x, a.y, 256)',
-    outputs: 1,
-    js: (mu, alpha) => M.albedoGGX(mu, alpha, 256),
-    range: [0, 1],
-    args: cartesian(GRIDS.cosCoarse, GRIDS.alpha),
-  },
-  {
-    name: 'dfgSplitSum (256 samples)', chunk: 'integrate.glsl', glsl: 'dfgSplitSum(a.x, a.y, 256)', outputs: 2,
-    js: (mu, alpha) => M.dfgSplitSum(mu, alpha, 256), range: [0, 1], args: cartesian(GRIDS.cosCoarse, GRIDS.alpha),
-  },
   { name: 'fresnelAverage', chunk: 'multiple-scattering.glsl', glsl: 'fresnelAverage(a.x)', outputs: 1, js: M.fresnelAverage, range: [0, 1], args: cartesian(GRIDS.f0) },
   {
     name: 'fresnelAverage (vec3)', chunk: 'multiple-scattering.glsl', glsl: 'fresnelAverage(vec3(a.x, 0.5 * a.x, 1.0 - a.x))', outputs: 3,
@@ -123,16 +108,25 @@ export const PARITY_CASES = [
     name: 'multipleScatteringFromLoss', chunk: 'multiple-scattering.glsl', glsl: 'multipleScatteringFromLoss(a.x, a.y, a.z)', outputs: 1,
     js: M.multipleScatteringFromLoss, range: [0, Infinity], args: cartesian(GRIDS.cosCoarse, GRIDS.cosCoarse, [-1, 0, 1e-7, 1e-4, 0.3, 0.59, 1, 1.5]),
   },
-  // the table functions: anywhere against the JS lookup (same rule), and at the nodes against the float64 functions
+  // the table functions against the JS lookup of the same table (same bilinear rule); the table against the
+  // float64 functions is unit-tested (tests/unit/albedo-table.test.js)
   { ...TABLE_CASE, name: 'albedoLossTableGGX', glsl: 'albedoLossTableGGX(a.x, a.y)', outputs: 3, js: (mu, alpha) => albedoLossTableGGX(albedoTableOnce(), mu, alpha), range: [0, 1], args: cartesian(GRIDS.cos, GRIDS.alpha) },
-  { ...TABLE_CASE, name: 'averageAlbedoGGX (table nodes)', glsl: 'averageAlbedoGGX(a.x)', outputs: 1, js: M.averageAlbedoGGX, range: [0, 1], args: cartesian(tableNodes([0, 1, 2, 5, 13, 31, 47, 62, 63])) },
+  {
+    ...TABLE_CASE, name: 'averageAlbedoGGX (table)', glsl: 'averageAlbedoGGX(a.x)', outputs: 1, range: [0, 1], args: cartesian(GRIDS.alpha),
+    js: (alpha) => 1 - albedoLossTableGGX(albedoTableOnce(), 1, alpha)[1],
+  },
   ...[['specularAlbedoGGX', 'none'], ['specularAlbedoKullaConty', 'kullaConty'], ['specularAlbedoTurquin', 'turquin']].map(([name, compensation]) => ({
     ...TABLE_CASE, name, glsl: `${name}(a.x, a.y, a.z)`, outputs: 1, range: [0, 1], args: cartesian(GRIDS.cosCoarse, GRIDS.alpha, GRIDS.f0),
     js: (mu, alpha, f0) => M.specularAlbedoFromTable(albedoTableOnce(), mu, alpha, f0, compensation),
   })),
   {
-    ...TABLE_CASE, name: 'multipleScatteringKullaConty (table nodes)', glsl: 'multipleScatteringKullaConty(a.x, a.y, a.z)', outputs: 1,
-    js: M.multipleScatteringKullaConty, range: [0, Infinity], args: cartesian([-0.5, 0, ...tableNodes([1, 3, 20, 63])], tableNodes([0, 2, 40, 63]), tableNodes([0, 1, 10, 40, 63])),
+    ...TABLE_CASE, name: 'multipleScatteringKullaConty (table)', glsl: 'multipleScatteringKullaConty(a.x, a.y, a.z)', outputs: 1,
+    js: (nl, nv, alpha) => {
+      if (!(nl > 0 && nv > 0)) return 0;
+      const [[lossL], [lossV, lossAvg]] = [nl, nv].map((mu) => albedoLossTableGGX(albedoTableOnce(), mu, alpha));
+      return M.multipleScatteringFromLoss(lossL, lossV, lossAvg);
+    },
+    range: [0, Infinity], args: cartesian(GRIDS.cosCoarse, GRIDS.cosCoarse, GRIDS.alpha),
   },
   // directions built from sin and cos of an angle: there the GPU's own sin and cos set the accuracy (SwiftShader's
   // are up to ~1.8e-4 off; hardware's ~1e-6), not the formulas
@@ -140,6 +134,17 @@ export const PARITY_CASES = [
     name: 'sampleCosine', chunk: 'integrate.glsl', glsl: 'sampleCosine(a.xy)', outputs: 3, js: M.sampleCosine, range: [-1, 1], args: cartesian([0, 1e-6, 0.3, 0.999, 1], [0, 0.25, 0.7]),
     tolerance: TRIG_TOLERANCE,
   },
+  {
+    name: 'dfgTableUv', chunk: 'integrate.glsl', glsl: 'dfgTableUv(a.x, a.y)', outputs: 2, js: M.dfgTableUv,
+    range: [0, 1],
+    args: cartesian(GRIDS.cosCoarse, GRIDS.alpha),
+  },
+  // u1 up to 1 - 1e-6 (the samplers take u1 in [0, 1)), alpha from the clamp to 1
+  ...['sampleGGXNormal', 'sampleBeckmannNormal'].map((fn) => ({
+    name: fn, chunk: 'integrate.glsl', glsl: `${fn}(a.xy, a.z)`, outputs: 3, js: M[fn], range: [-1, 1],
+    args: cartesian([0, 1e-6, 0.3, 0.9, 0.999, 1 - 1e-6], [0, 0.25, 0.7], [0, 1e-4, 0.01, 0.3, 1]),
+    tolerance: TRIG_TOLERANCE,
+  })),
   {
     name: 'sampleCone', chunk: 'integrate.glsl', glsl: 'sampleCone(a.xy, a.z)', outputs: 3, js: M.sampleCone, range: [-1, 1],
     args: cartesian([0, 0.3, 1], [0, 0.25, 0.7], [-1, 0, 0.9, 0.99999, 1]), tolerance: TRIG_TOLERANCE,
@@ -181,6 +186,12 @@ export const PARITY_CASES = [
   { name: 'ndfGGX', chunk: 'ndf.glsl', glsl: 'ndfGGX(a.x, a.y)', outputs: 1, js: M.ndfGGX, range: [0, Infinity], args: cartesian(GRIDS.cos, GRIDS.alpha) },
   { name: 'ndfBeckmann', chunk: 'ndf.glsl', glsl: 'ndfBeckmann(a.x, a.y)', outputs: 1, js: M.ndfBeckmann, range: [0, Infinity], args: cartesian(GRIDS.cos, GRIDS.alpha) },
   { name: 'ndfBlinnPhong', chunk: 'ndf.glsl', glsl: 'ndfBlinnPhong(a.x, a.y)', outputs: 1, js: M.ndfBlinnPhong, range: [0, Infinity], args: cartesian(GRIDS.cos, GRIDS.exponent) },
+  {
+    name: 'ndfBlinnPhongFromSin2', chunk: 'ndf.glsl', glsl: 'ndfBlinnPhongFromSin2(a.x, a.y, a.z)', outputs: 1,
+    js: M.ndfBlinnPhongFromSin2, range: [0, Infinity],
+    args: cartesian([0, 1e-9, 1e-6, 1e-4, 0.01, 0.3, 1, 1.5, Math.PI / 2], GRIDS.exponent)
+      .map(([t, p]) => [Math.cos(t), Math.sin(t) ** 2, p]),
+  },
   { name: 'ndfABC', chunk: 'ndf.glsl', glsl: 'ndfABC(a.x, a.y, a.z)', outputs: 1, js: M.ndfABC, range: [0, Infinity], args: cartesian(GRIDS.cos, GRIDS.abcA1, GRIDS.abcA2) },
   { name: 'ndfSGD', chunk: 'ndf.glsl', glsl: 'ndfSGD(a.x, a.y, a.z)', outputs: 1, js: M.ndfSGD, range: [0, Infinity], args: cartesian(GRIDS.cos, GRIDS.sgdAlpha, GRIDS.sgdP) },
   { name: 'smithG1GGX', chunk: 'visibility.glsl', glsl: 'smithG1GGX(a.x, a.y)', outputs: 1, js: M.smithG1GGX, range: [0, 1], args: cartesian(GRIDS.cos, GRIDS.alpha) },

@@ -222,7 +222,8 @@ export const GRADERS = {
 
   'albedo-loss': {
     title: 'Energy lost by single scattering',
-    summary: 'The percentage of light a GGX surface (height-correlated Smith, F = 1) fails to reflect at one angle: 100 (1 − E(μ)), E by importance sampling (4096 samples).',
+    summary: 'The percentage of light a GGX surface (height-correlated Smith, F = 1) fails to reflect at one angle: ' +
+      '100 (1 − E(μ)), E by deterministic quadrature (albedoGGX, within 1e-5).',
     answer: { kind: 'number', label: 'Energy lost', unit: '%' },
     widget: null,
     params: {
@@ -231,7 +232,7 @@ export const GRADERS = {
     },
     tolerance: 'percentage points either side',
     grade({ answer, params, tolerance }) {
-      const loss = 100 * (1 - albedoGGX(Math.cos(params.thetaDeg * DEG), params.alpha, 4096));
+      const loss = 100 * (1 - albedoGGX(Math.cos(params.thetaDeg * DEG), params.alpha));
       if (Math.abs(answer - loss) <= tolerance) return { ok: true, summary: `Right: the white furnace loses ${fmt(loss)}% at α = ${params.alpha}, θ = ${params.thetaDeg}° (within ±${fmt(tolerance)} points).`, details: [] };
       return {
         ok: false,

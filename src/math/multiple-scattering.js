@@ -8,33 +8,19 @@
 //       scale the single-scattering lobe by 1 + F0 (1 - E(mu_v)) / E(mu_v).
 // Both approximate the random walk on the Smith microsurface (random-walk.js) of
 //   [3] Heitz, Hanika, d'Eon & Jakob, "Multiple-scattering microfacet BSDFs with the Smith model", SIGGRAPH 2016.
-import { albedoGGX, dfgSplitSum } from './integrate.js';
-import { gaussLegendre } from './special.js';
+import { albedoGGX, averageAlbedo, dfgSplitSum } from './integrate.js';
 
-const RULE = gaussLegendre(16);
 const clamp01 = (x) => Math.min(Math.max(x, 0), 1);
-
-/**
- * The cosine-weighted average 2 ∫_0^1 E(mu) mu dmu of a function of mu, by 16-node Gauss–Legendre in
- * s = sqrt(mu) (4 ∫_0^1 E(s²) s³ ds): GGX's albedo falls like sqrt(mu) near grazing, which is smooth in s.
- */
-export function cosineWeightedAverage(E) {
-  let sum = 0;
-  RULE.nodes.forEach((x, i) => {
-    const s = (x + 1) / 2;
-    sum += RULE.weights[i] * E(s * s) * s * s * s;
-  });
-  return 2 * sum; // 4 × (1/2, the rule's interval scale)
-}
 
 let lastAverage = { alpha: NaN, value: NaN }; // lobes evaluate many (l, v) at one alpha
 
 /**
- * E_avg(alpha) = 2 ∫ E(mu) mu dmu for GGX, height-correlated Smith, F = 1 [1]. Its error is at most
- * albedoGGX's (the weights are positive and sum to 1) plus the rule's (below 1e-7, see the tests).
+ * E_avg(alpha) = 2 ∫ E(mu) mu dmu for GGX, height-correlated Smith, F = 1 [1], by averageAlbedo (16-node
+ * Gauss–Legendre in sqrt(mu)). Its error is at most albedoGGX's (the weights are positive and sum to 1) plus
+ * the rule's (below 1e-7, see the tests).
  */
 export function averageAlbedoGGX(alpha) {
-  if (alpha !== lastAverage.alpha) lastAverage = { alpha, value: cosineWeightedAverage((mu) => albedoGGX(mu, alpha)) };
+  if (alpha !== lastAverage.alpha) lastAverage = { alpha, value: averageAlbedo((mu) => albedoGGX(mu, alpha)) };
   return lastAverage.value;
 }
 

@@ -29,27 +29,3 @@ export function erf(x) {
 export function erfc(x) {
   return x >= 2.5 ? erfcContinuedFraction(x) : 1 - erf(x);
 }
-
-/**
- * Gauss–Legendre nodes and weights on [-1, 1] (Newton on the Legendre polynomial P_n): the n-point rule
- * integrates polynomials of degree up to 2n - 1 exactly.
- */
-export function gaussLegendre(n) {
-  const nodes = [];
-  const weights = [];
-  for (let i = 0; i < n; i++) {
-    let x = Math.cos((Math.PI * (i + 0.75)) / (n + 0.5));
-    let dp = 0;
-    for (let iter = 0; iter < 100; iter++) {
-      let [p0, p1] = [1, x];
-      for (let k = 2; k <= n; k++) [p0, p1] = [p1, ((2 * k - 1) * x * p1 - (k - 1) * p0) / k];
-      dp = (n * (x * p1 - p0)) / (x * x - 1);
-      const dx = p1 / dp;
-      x -= dx;
-      if (Math.abs(dx) < 1e-16) break;
-    }
-    nodes.push(x);
-    weights.push(2 / ((1 - x * x) * dp * dp));
-  }
-  return { nodes, weights };
-}

@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import { ALBEDO_TABLE_SIZE, albedoLossTableGGX, buildAlbedoTableGGX, specularAlbedoFromTable } from '../../src/math/albedo-table.js';
-import { compensatedAlbedoGGX, cosineWeightedAverage } from '../../src/math/multiple-scattering.js';
+import { compensatedAlbedoGGX } from '../../src/math/multiple-scattering.js';
+import { averageAlbedo } from '../../src/math/integrate.js';
 import { albedoGGXQuadrature } from './integration-helpers.js';
 
 const exact = (mu, alpha) => albedoGGXQuadrature(mu, alpha, 8); // within 2e-7 of the converged value
@@ -24,7 +25,7 @@ describe('the albedo table the GPU reads (bilinear in sqrt(mu), sqrt(alpha))', {
       const [mu, alpha] = [(i / 63) ** 2, (j / 63) ** 2];
       const [loss, lossAvg] = albedoLossTableGGX(table, mu, alpha);
       expect(loss).toBeCloseTo(1 - exact(mu, alpha), 7);
-      expect(lossAvg).toBeCloseTo(1 - cosineWeightedAverage((m) => exact(m, alpha)), 7);
+      expect(lossAvg).toBeCloseTo(1 - averageAlbedo((m) => exact(m, alpha)), 7);
     }
   });
 
@@ -33,13 +34,14 @@ describe('the albedo table the GPU reads (bilinear in sqrt(mu), sqrt(alpha))', {
     expect(worstError(0.05)).toBeLessThan(3e-4);
   });
 
-  it('gives, at its nodes, the float64 albedo with each compensation (compensatedAlbedoGGX, from dfgSplitSum)', () => {
+  it('gives, at its nodes, the float64 albedo with each compensation (compensatedAlbedoGGX, adaptive split sum) to 4e-4', () => {
     const shipped = buildAlbedoTableGGX(9); // nodes at mu, alpha = (i/8)²
     for (const [i, j] of [[1, 1], [3, 6], [8, 4], [5, 8]]) {
       const [mu, alpha] = [(i / 8) ** 2, (j / 8) ** 2];
       for (const f0 of [0.04, 0.71, 1]) {
         for (const c of ['none', 'kullaConty', 'turquin']) {
-          expect(specularAlbedoFromTable(shipped, mu, alpha, f0, c)).toBeCloseTo(compensatedAlbedoGGX(mu, alpha, f0, c), 6);
+          // the table's 12-node split sum is within 3.5e-4 of the adaptive one (largest at grazing, small alpha)
+          expect(Math.abs(specularAlbedoFromTable(shipped, mu, alpha, f0, c) - compensatedAlbedoGGX(mu, alpha, f0, c))).toBeLessThan(4e-4);
         }
       }
     }

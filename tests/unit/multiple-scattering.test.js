@@ -1,9 +1,9 @@
 import { describe, expect, it } from 'vitest';
-import { albedoGGX } from '../../src/math/integrate.js';
-import { gaussLegendre } from '../../src/math/special.js';
+import { albedoGGX, averageAlbedo } from '../../src/math/integrate.js';
+import { gaussLegendre } from '../../src/math/quadrature.js';
 import { fresnelSchlick } from '../../src/math/fresnel.js';
 import {
-  averageAlbedoGGX, cosineWeightedAverage, energyCompensationTurquin, fresnelAverage,
+  averageAlbedoGGX, energyCompensationTurquin, fresnelAverage,
   fresnelMultipleScatteringKullaConty, multipleScatteringFromLoss, multipleScatteringKullaConty,
 } from '../../src/math/multiple-scattering.js';
 import { albedoGGXQuadrature, integrateGL } from './integration-helpers.js';
@@ -13,9 +13,6 @@ const MUS = [0.05, 0.2, 0.5, 0.8, 1];
 
 /** E_avg by the independent quadrature: 24-node Gauss–Legendre in s = sqrt(mu) of the nested-quadrature E. */
 const referenceAverage = (alpha) => integrateGL((s) => 4 * albedoGGXQuadrature(s * s, alpha) * s ** 3, 0, 1, gaussLegendre(24));
-
-/** The largest error of albedoGGX against the independent quadrature over a spread of mu. */
-const errorOfAlbedo = (alpha) => Math.max(...[0.01, 0.03, 0.1, 0.2, 0.35, 0.5, 0.7, 0.85, 1].map((mu) => Math.abs(albedoGGX(mu, alpha) - albedoGGXQuadrature(mu, alpha))));
 
 describe('the independent albedo quadrature (the tests\' truth)', { timeout: 60_000 }, () => {
   it('gives 1 - ln 2 at alpha = 1, normal incidence (closed form)', () => {
@@ -29,31 +26,20 @@ describe('the independent albedo quadrature (the tests\' truth)', { timeout: 60_
   });
 });
 
-describe('Gauss–Legendre and the cosine-weighted average', () => {
-  it('the n-point rule integrates x^(2n-2) exactly (2/(2n-1) on [-1, 1]) and has nodes ±1/sqrt(3) for n = 2', () => {
-    const two = gaussLegendre(2);
-    expect(Math.abs(two.nodes[0])).toBeCloseTo(1 / Math.sqrt(3), 15);
-    const rule = gaussLegendre(16);
-    expect(integrateGL((x) => x ** 30, -1, 1, rule)).toBeCloseTo(2 / 31, 14);
-  });
-
+describe('the cosine-weighted average (averageAlbedo)', () => {
   it('2 ∫ mu^k mu dmu = 2/(k + 2) for k = 0, 0.5, 1, 3 (closed form)', () => {
-    for (const k of [0, 0.5, 1, 3]) expect(cosineWeightedAverage((mu) => mu ** k)).toBeCloseTo(2 / (k + 2), 12);
+    for (const k of [0, 0.5, 1, 3]) expect(averageAlbedo((mu) => mu ** k)).toBeCloseTo(2 / (k + 2), 12);
   });
 });
 
 describe('E_avg (Kulla & Conty 2017)', { timeout: 60_000 }, () => {
   it('the 16-node rule on the exact E matches the 24-node reference to 1e-7 (the rule adds no error)', () => {
     for (const alpha of [1e-3, ...ALPHAS]) {
-      expect(Math.abs(cosineWeightedAverage((mu) => albedoGGXQuadrature(mu, alpha)) - referenceAverage(alpha))).toBeLessThan(1e-7);
+      expect(Math.abs(averageAlbedo((mu) => albedoGGXQuadrature(mu, alpha)) - referenceAverage(alpha))).toBeLessThan(1e-7);
     }
   });
 
-  it('averageAlbedoGGX is within albedoGGX\'s own error of the independent quadrature', () => {
-    for (const alpha of ALPHAS) expect(Math.abs(averageAlbedoGGX(alpha) - referenceAverage(alpha))).toBeLessThan(errorOfAlbedo(alpha) + 1e-6);
-  });
-
-  it.skipIf(errorOfAlbedo(0.3) > 1e-5)('averageAlbedoGGX agrees with the independent quadrature to 1e-5 (once albedoGGX is accurate)', () => {
+  it('averageAlbedoGGX agrees with the independent quadrature to 1e-5', () => {
     for (const alpha of [1e-3, 0.01, ...ALPHAS]) expect(Math.abs(averageAlbedoGGX(alpha) - referenceAverage(alpha))).toBeLessThan(1e-5);
   });
 });
@@ -72,7 +58,7 @@ describe('Kulla–Conty multiple-scattering lobe', { timeout: 60_000 }, () => {
   it('closes the white furnace with the exact E: E(mu) + ∫ f_ms (n·l) dω = 1 to 1e-4 (independent quadrature)', () => {
     for (const alpha of ALPHAS) {
       const exact = (mu) => albedoGGXQuadrature(mu, alpha, 12);
-      const Eavg = cosineWeightedAverage(exact);
+      const Eavg = averageAlbedo(exact);
       const El = new Map();
       const E = (mu) => El.get(mu) ?? El.set(mu, exact(mu)).get(mu);
       for (const mu of MUS) {
@@ -82,10 +68,10 @@ describe('Kulla–Conty multiple-scattering lobe', { timeout: 60_000 }, () => {
     }
   });
 
-  it.skipIf(errorOfAlbedo(0.05) > 1e-5)('closes the white furnace as shipped: albedoGGX(mu) + ∫ multipleScatteringKullaConty (n·l) dω = 1 to 1e-3', () => {
-    for (const alpha of ALPHAS) {
-      for (const mu of MUS) {
-        const integral = lobeIntegral((nl) => multipleScatteringKullaConty(nl, mu, alpha));
+  it('closes the white furnace as shipped: albedoGGX(mu) + ∫ multipleScatteringKullaConty (n·l) dω = 1 to 1e-3', () => {
+    for (const alpha of [0.2, 0.6, 1]) {
+      for (const mu of [0.1, 0.5, 1]) {
+        const integral = lobeIntegral((nl) => multipleScatteringKullaConty(nl, mu, alpha), 100);
         expect(Math.abs(albedoGGX(mu, alpha) + integral - 1)).toBeLessThan(1e-3);
       }
     }

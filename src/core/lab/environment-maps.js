@@ -6,7 +6,8 @@ import * as THREE from 'three';
 import { RoomEnvironment } from 'three/examples/jsm/environments/RoomEnvironment.js';
 import { assembleGlsl } from '../glsl.js';
 import { SHADER_CHUNKS } from '../shader-chunks.js';
-import { dfgSplitSum } from '../../math/integrate.js';
+import { DFG_TABLE_SIZE } from '../../math/integrate.js';
+import { dfgTableData } from './dfg-table.js';
 import { buildEnvSampling } from './env-sampling.js';
 import { irradianceMap } from './env-irradiance.js';
 
@@ -14,26 +15,12 @@ export const ENV_SIZE = [256, 128]; // coarse enough that the reference converge
 export const PREFILTER_SIZE = [128, 64];
 export const PREFILTER_LEVELS = 8; // layer k at perceptual roughness k/8, alpha = (k/8)²; level 0 is the map itself
 const IRRADIANCE_SIZE = [32, 16];
-const DFG_SIZE = 32;
 
-let dfgTable = null;
-/** The DFG table over (n·v, sqrt(alpha)) at texel centres, [scale, bias] per texel; computed once per page. */
-export function dfgTableData() {
-  if (dfgTable) return dfgTable;
-  const data = new Float32Array(DFG_SIZE * DFG_SIZE * 4);
-  for (let j = 0; j < DFG_SIZE; j++) {
-    const r = (j + 0.5) / DFG_SIZE;
-    for (let i = 0; i < DFG_SIZE; i++) {
-      const [scale, bias] = dfgSplitSum((i + 0.5) / DFG_SIZE, r * r, 256);
-      data.set([scale, bias, 0, 1], (j * DFG_SIZE + i) * 4);
-    }
-  }
-  return (dfgTable = { data, size: DFG_SIZE });
-}
+export { dfgTableData }; // built in dfg-table.js (plain JS, no GPU)
 
-/** The DFG table as a filtered texture (half float), one per renderer. */
-export function createDfgTexture() {
-  const dfg = halfTexture({ data: dfgTableData().data, width: DFG_SIZE, height: DFG_SIZE });
+/** The DFG table for terms { ndf, visibility } as a filtered texture (half float): sample it at dfgTableUv. */
+export function createDfgTexture(terms = {}) {
+  const dfg = halfTexture({ data: dfgTableData(terms).data, width: DFG_TABLE_SIZE, height: DFG_TABLE_SIZE });
   dfg.wrapS = THREE.ClampToEdgeWrapping;
   return dfg;
 }
