@@ -339,7 +339,8 @@ export const TOUR_STEPS = [
   {
     id: 'rendering-models', section: 'rendering', widget: 'lighting-models', title: 'From general lighting to ambient',
     state: { refSamples: '128' },
-    text: 'The illumination models side by side on one sky with a sun: general lighting (the reference), ' +
+    text: 'The illumination models side by side on one sky with an enlarged sun (2°; the real one is 0.27°): ' +
+      'general lighting (the reference), ' +
       'image-based, area, punctual and ambient light. Each step down is cheaper and assumes more about where ' +
       'light comes from; the table says how much each costs and how far it falls from the reference.',
   },

@@ -1,7 +1,8 @@
 // What image-based lighting needs on the GPU, made once per environment and kept: the environment as an
-// equirectangular half-float map with mips, its GGX-prefiltered layers for the split sum, its irradiance
-// (summed exactly in JS from the map read back), tables to sample it by brightness, and three.js's PMREM of it for comparison. Also the DFG table,
-// computed by src/math's dfgSplitSum, which does not depend on the environment.
+// equirectangular half-float map with mips, its irradiance (summed exactly in JS from the map read back), tables
+// to sample it by brightness; made when first asked for: its prefiltered layers for the split sum, one set per NDF,
+// and three.js's PMREM of it for comparison. Also the DFG table, computed by src/math's dfgSplitSum, which does not
+// depend on the environment.
 import * as THREE from 'three';
 import { RoomEnvironment } from 'three/examples/jsm/environments/RoomEnvironment.js';
 import { assembleGlsl } from '../glsl.js';
@@ -15,6 +16,7 @@ export const ENV_SIZE = [256, 128]; // coarse enough that the reference converge
 export const PREFILTER_SIZE = [128, 64];
 export const PREFILTER_LEVELS = 8; // layer k at perceptual roughness k/8, alpha = (k/8)²; level 0 is the map itself
 const IRRADIANCE_SIZE = [32, 16];
+const PREFILTER_DEFINES = { ggx: {}, beckmann: { NDF_BECKMANN: 1 } };
 
 export { dfgTableData }; // built in dfg-table.js (plain JS, no GPU)
 
@@ -46,9 +48,7 @@ const halfTarget = (w, h, options = {}) => new THREE.WebGLRenderTarget(w, h, {
 export function createEnvironmentMaps(renderer) {
   const env = halfTarget(...ENV_SIZE, { minFilter: THREE.LinearMipmapLinearFilter, generateMipmaps: true });
   const weighted = halfTarget(...ENV_SIZE, { minFilter: THREE.LinearMipmapLinearFilter, generateMipmaps: true }); // for the prefilter
-  const prefiltered = new THREE.WebGLArrayRenderTarget(...PREFILTER_SIZE, PREFILTER_LEVELS, {
-    type: THREE.HalfFloatType, depthBuffer: false, magFilter: THREE.LinearFilter, minFilter: THREE.LinearFilter, wrapS: THREE.RepeatWrapping,
-  });
+  const prefilteredByNdf = new Map(); // ndf -> { target, filter, fresh }
   const irradiance = halfTexture({ data: new Float32Array(IRRADIANCE_SIZE[0] * IRRADIANCE_SIZE[1] * 4), width: IRRADIANCE_SIZE[0], height: IRRADIANCE_SIZE[1] });
 
   const quad = new THREE.Mesh(new THREE.PlaneGeometry(2, 2));
@@ -65,7 +65,6 @@ export function createEnvironmentMaps(renderer) {
   const filterUniforms = () => ({
     uEnv: { value: weighted.texture }, uEnvSize: { value: new THREE.Vector2(...ENV_SIZE) }, uSize: { value: new THREE.Vector2() }, uAlpha: { value: 0 }, uSamples: { value: 64 },
   });
-  const ggx = pass('env-prefilter.frag.glsl', {}, filterUniforms());
   const run = (material, target, layer = 0) => {
     quad.material = material;
     renderer.setRenderTarget(target, layer);
@@ -97,13 +96,28 @@ export function createEnvironmentMaps(renderer) {
   let pmremGenerator = null;
   let pmrem = null;
 
-  const prefilter = () => {
-    run(copyWeighted, weighted);
-    ggx.uniforms.uSize.value.set(...PREFILTER_SIZE);
-    for (let k = 1; k <= PREFILTER_LEVELS; k++) {
-      ggx.uniforms.uAlpha.value = (k / PREFILTER_LEVELS) ** 2;
-      run(ggx, prefiltered, k - 1);
+  // the layers of the map filtered with the lobe of `ndf` ('ggx' | 'beckmann'), for the map as it now is
+  const prefilter = (ndf) => {
+    let entry = prefilteredByNdf.get(ndf);
+    if (!entry) {
+      const target = new THREE.WebGLArrayRenderTarget(...PREFILTER_SIZE, PREFILTER_LEVELS, {
+        type: THREE.HalfFloatType, depthBuffer: false, magFilter: THREE.LinearFilter, minFilter: THREE.LinearFilter,
+        wrapS: THREE.RepeatWrapping,
+      });
+      const filter = pass('env-prefilter.frag.glsl', PREFILTER_DEFINES[ndf], filterUniforms());
+      filter.uniforms.uSize.value.set(...PREFILTER_SIZE);
+      prefilteredByNdf.set(ndf, (entry = { target, filter, fresh: false }));
     }
+    if (!entry.fresh) {
+      const previous = renderer.getRenderTarget();
+      for (let k = 1; k <= PREFILTER_LEVELS; k++) {
+        entry.filter.uniforms.uAlpha.value = (k / PREFILTER_LEVELS) ** 2;
+        run(entry.filter, entry.target, k - 1);
+      }
+      renderer.setRenderTarget(previous);
+      entry.fresh = true;
+    }
+    return entry.target.texture;
   };
 
   const roomCube = () => {
@@ -116,7 +130,8 @@ export function createEnvironmentMaps(renderer) {
 
   return {
     env: env.texture,
-    prefiltered: prefiltered.texture,
+    /** The map prefiltered for the split sum with the lobe of `ndf` ('ggx' | 'beckmann'), made when first asked for. */
+    prefiltered: prefilter,
     irradiance,
     sampling,
     /** Replaces the environment: 'studio', or pixels { data, width, height } (sky, furnace, a user's file). */
@@ -133,7 +148,8 @@ export function createEnvironmentMaps(renderer) {
         run(copyFlat, env);
         texture.dispose();
       }
-      prefilter();
+      run(copyWeighted, weighted);
+      prefilteredByNdf.forEach((entry) => (entry.fresh = false));
       updateFromPixels();
       renderer.setRenderTarget(previous);
       pmrem?.dispose();
@@ -147,7 +163,9 @@ export function createEnvironmentMaps(renderer) {
       return pmrem.texture;
     },
     dispose() {
-      [env, weighted, prefiltered, irradiance, sampling.marginal, sampling.conditional, sampling.pdf, copyFlat, copyCube, copyWeighted, ggx, quad.geometry].forEach((x) => x.dispose());
+      [env, weighted, irradiance, sampling.marginal, sampling.conditional, sampling.pdf].forEach((x) => x.dispose());
+      [copyFlat, copyCube, copyWeighted, quad.geometry].forEach((x) => x.dispose());
+      prefilteredByNdf.forEach(({ target, filter }) => [target, filter].forEach((x) => x.dispose()));
       pmrem?.dispose();
       pmremGenerator?.dispose();
     },
