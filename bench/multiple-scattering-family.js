@@ -31,7 +31,8 @@ export function walkStandardError() {
   return Math.max(...[...walkOnce().values()].flatMap((w) => w.standardError));
 }
 
-const fromTable = (compensation) => (mu, alpha, f0) => M.specularAlbedoFromTable(tableOnce(), mu, alpha, f0, compensation);
+const fromTable = (compensation) => (mu, alpha, f0) =>
+  M.specularAlbedoFromTable(tableOnce(), mu, alpha, f0, compensation);
 
 const MODEL = 'GGX conductor, all bounces'; // what every variant computes or approximates
 
@@ -41,22 +42,27 @@ export const MULTIPLE_SCATTERING_FAMILY = {
   domain: `μ in {${MUS.join(', ')}} × α in {${ALPHAS.join(', ')}} × F0 in {0.04, 0.5, 0.95, gold's linear R, G, B}`,
   errorOf: 'Directional albedo (GGX, height-correlated Smith, Schlick F at every bounce)',
   inputs: MUS.flatMap((mu) => ALPHAS.flatMap((alpha) => CHANNELS.map((f0, channel) => [mu, alpha, f0, channel]))),
-  referenceNote: () => `${walkSamples / 1000}k paths per (μ, α); the walk's largest standard error is ${walkStandardError().toExponential(1)}`,
+  referenceNote: () =>
+    `${walkSamples / 1000}k paths per (μ, α); the walk's largest standard error is ${walkStandardError().toExponential(1)}`,
   /** --quick (the test suite): 2000 paths per (μ, α) instead of 200k. */
   configure({ quick }) {
     walkSamples = quick ? 2000 : WALK_SAMPLES;
     walks = null;
   },
   // what the GPU pass needs besides the default chunks: the table, bound as a texture
-  gpu: { chunk: 'multiple-scattering.glsl', defines: { ALBEDO_TABLE_GGX: true }, tables: { uAlbedoTableGGX: tableOnce } },
+  gpu: {
+    chunk: 'multiple-scattering.glsl', defines: { ALBEDO_TABLE_GGX: true }, tables: { uAlbedoTableGGX: tableOnce },
+  },
   variants: [
     {
       key: 'walk', label: 'Random walk (Heitz et al. 2016)', kind: 'reference', model: MODEL,
       // run once for the whole grid (~25 s), not per evaluation and not on the GPU: no cost columns
       untimed: true, glsl: null, js: (mu, alpha, f0, channel) => walkOnce().get(`${mu} ${alpha}`).albedo[channel],
     },
-    { key: 'none', label: 'Single scattering only', kind: 'approximation', against: 'walk', model: MODEL, js: fromTable('none'), glsl: 'specularAlbedoGGX(x, 0.05 + 0.95 * y, 0.5)' },
-    { key: 'kulla-conty', label: 'Kulla & Conty 2017', kind: 'approximation', against: 'walk', model: MODEL, js: fromTable('kullaConty'), glsl: 'specularAlbedoKullaConty(x, 0.05 + 0.95 * y, 0.5)' },
-    { key: 'turquin', label: 'Turquin 2019', kind: 'approximation', against: 'walk', model: MODEL, js: fromTable('turquin'), glsl: 'specularAlbedoTurquin(x, 0.05 + 0.95 * y, 0.5)' },
+    ...[['none', 'Single scattering only', 'specularAlbedoGGX'], ['kullaConty', 'Kulla & Conty 2017', 'specularAlbedoKullaConty'],
+      ['turquin', 'Turquin 2019', 'specularAlbedoTurquin']].map(([compensation, label, glsl]) => ({
+      key: compensation === 'kullaConty' ? 'kulla-conty' : compensation, label, kind: 'approximation', against: 'walk', model: MODEL,
+      js: fromTable(compensation), glsl: `${glsl}(x, 0.05 + 0.95 * y, 0.5)`,
+    })),
   ],
 };

@@ -46,8 +46,12 @@ vec3 albedoLossTableGGX(float mu, float alpha) {
   vec2 p = sqrt(clamp(vec2(mu, alpha), 0.0, 1.0)) * vec2(size - 1);
   ivec2 i = min(ivec2(p), size - 2);
   vec2 f = p - vec2(i);
-  vec3 lo = mix(texelFetch(uAlbedoTableGGX, i, 0).rgb, texelFetch(uAlbedoTableGGX, i + ivec2(1, 0), 0).rgb, f.x);
-  vec3 hi = mix(texelFetch(uAlbedoTableGGX, i + ivec2(0, 1), 0).rgb, texelFetch(uAlbedoTableGGX, i + ivec2(1, 1), 0).rgb, f.x);
+  vec3 t00 = texelFetch(uAlbedoTableGGX, i, 0).rgb;
+  vec3 t10 = texelFetch(uAlbedoTableGGX, i + ivec2(1, 0), 0).rgb;
+  vec3 t01 = texelFetch(uAlbedoTableGGX, i + ivec2(0, 1), 0).rgb;
+  vec3 t11 = texelFetch(uAlbedoTableGGX, i + ivec2(1, 1), 0).rgb;
+  vec3 lo = mix(t00, t10, f.x);
+  vec3 hi = mix(t01, t11, f.x);
   return mix(lo, hi, f.y);
 }
 

@@ -3,7 +3,9 @@
 // (albedoLossTableGGX in shaders/multiple-scattering.glsl), so the two can be compared node for node. The losses,
 // not E, are stored: near alpha = 0 they are ~1e-7 and float32 keeps their digits, where 1 - E would have none.
 import { averageAlbedo, dfgSplitSum } from './integrate.js';
-import { energyCompensationTurquin, fresnelAverage, fresnelMultipleScatteringKullaConty } from './multiple-scattering.js';
+import {
+  energyCompensationTurquin, fresnelAverage, fresnelMultipleScatteringKullaConty,
+} from './multiple-scattering.js';
 
 /**
  * Nodes per axis. Axes: x = sqrt(mu), y = sqrt(alpha): E changes fastest where mu and alpha are both small
@@ -32,12 +34,14 @@ export function buildAlbedoTableGGX(size = ALBEDO_TABLE_SIZE, dfg = tableSplitSu
       return scale + bias;
     });
     // E may round to 1 + 1e-16: the losses are kept at 0 or above
-    row.forEach(([scale, bias], i) => data.set([Math.max(1 - scale - bias, 0), Math.max(1 - avg, 0), bias, 1], 4 * (j * size + i)));
+    row.forEach(([scale, bias], i) => {
+      data.set([Math.max(1 - scale - bias, 0), Math.max(1 - avg, 0), bias, 1], 4 * (j * size + i));
+    });
   }
   return { size, data };
 }
 
-/** [1 - E(mu, alpha), 1 - E_avg(alpha), bias] from the table, bilinear in (sqrt(mu), sqrt(alpha)), clamped to its range. */
+/** [1 - E(mu, alpha), 1 - E_avg(alpha), bias] from the table, bilinear in (sqrt(mu), sqrt(alpha)), clamped. */
 export function albedoLossTableGGX(table, mu, alpha) {
   const { size, data } = table;
   const x = Math.sqrt(Math.min(Math.max(mu, 0), 1)) * (size - 1);
@@ -60,7 +64,8 @@ export function specularAlbedoFromTable(table, mu, alpha, f0, compensation) {
   const [loss, lossAvg, bias] = albedoLossTableGGX(table, mu, alpha);
   const E = 1 - loss;
   const single = f0 * E + (1 - f0) * bias;
-  if (compensation === 'kullaConty') return single + fresnelMultipleScatteringKullaConty(fresnelAverage(f0), 1 - lossAvg) * loss;
+  const factor = fresnelMultipleScatteringKullaConty(fresnelAverage(f0), 1 - lossAvg);
+  if (compensation === 'kullaConty') return single + factor * loss;
   if (compensation === 'turquin') return single * energyCompensationTurquin(f0, E);
   return single;
 }

@@ -37,7 +37,8 @@ export function multipleScatteringFromLoss(lossL, lossV, lossAvg) {
 /** Kulla & Conty's multiple-scattering lobe [1] for GGX with F = 1, in 1/sr; 0 below the horizon. */
 export function multipleScatteringKullaConty(nl, nv, alpha) {
   if (!(nl > 0 && nv > 0)) return 0;
-  return multipleScatteringFromLoss(1 - albedoGGX(Math.min(nl, 1), alpha), 1 - albedoGGX(Math.min(nv, 1), alpha), 1 - averageAlbedoGGX(alpha));
+  const loss = (mu) => 1 - albedoGGX(Math.min(mu, 1), alpha);
+  return multipleScatteringFromLoss(loss(nl), loss(nv), 1 - averageAlbedoGGX(alpha));
 }
 
 /** The cosine-weighted average of Schlick's Fresnel, 2 ∫ F(mu) mu dmu = f0 + (1 - f0)/21 (a Beta integral). */
@@ -80,7 +81,8 @@ export function compensatedAlbedoGGX(mu, alpha, f0, compensation, Eavg = average
   const [scale, bias] = dfgSplitSum(mu, alpha);
   const single = f0 * scale + bias;
   const E = scale + bias;
-  if (compensation === 'kullaConty') return single + fresnelMultipleScatteringKullaConty(fresnelAverage(f0), Eavg) * (1 - E);
+  const factor = fresnelMultipleScatteringKullaConty(fresnelAverage(f0), Eavg);
+  if (compensation === 'kullaConty') return single + factor * (1 - E);
   if (compensation === 'turquin') return single * energyCompensationTurquin(f0, E);
   return single;
 }

@@ -140,14 +140,17 @@ function phaseGGX(wi, wo, alpha) {
 /**
  * The BRDF f(l, v) in 1/sr by the same walk, with next-event estimation towards v at every bounce [3, Sec. 5]:
  * the phase function times the chance G1(v, h) = C1(h)^Λ(v) that v leaves from that height, with the Fresnel
- * of the facet that would send the light to v. Returns { value, standardError, single, singleStandardError } (single: the
- * first bounce, which is the single-scattering BRDF D G2 F / (4 nl nv) in expectation).
+ * of the facet that would send the light to v. Returns { value, standardError, single, singleStandardError }
+ * (single: the first bounce, which is the single-scattering BRDF D G2 F / (4 nl nv) in expectation).
  */
 export function randomWalkBRDFGGX(l, v, alpha, f0, samples, seed = 1) {
   const f0s = [].concat(f0);
   const zeros = () => f0s.map(() => 0);
   const [sum, sum2, one, one2] = [zeros(), zeros(), zeros(), zeros()];
-  if (!(l[2] > 0 && v[2] > 0)) return { value: shaped(f0, zeros()), standardError: shaped(f0, zeros()), single: shaped(f0, zeros()), singleStandardError: shaped(f0, zeros()) };
+  if (!(l[2] > 0 && v[2] > 0)) {
+    const none = shaped(f0, zeros());
+    return { value: none, standardError: none, single: none, singleStandardError: none };
+  }
   const a = clampAlpha(alpha);
   const rand = seededRandom(seed);
   const lambdaV = lambdaGGX(v, a);

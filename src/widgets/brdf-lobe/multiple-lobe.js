@@ -1,7 +1,9 @@
 // The multiple-scattering lobe beside the single-scattering one, for GGX with height-correlated Smith (the
 // model both are defined for): Kulla & Conty's lobe times its Fresnel factor, and the random walk's multiply
 // scattered part (all bounces but the first) at a few view angles, with its Monte Carlo standard error.
-import { averageAlbedoGGX, fresnelAverage, fresnelMultipleScatteringKullaConty, multipleScatteringKullaConty } from '../../math/multiple-scattering.js';
+import {
+  averageAlbedoGGX, fresnelAverage, fresnelMultipleScatteringKullaConty, multipleScatteringKullaConty,
+} from '../../math/multiple-scattering.js';
 import { randomWalkBRDFGGX } from '../../math/random-walk.js';
 
 /** View angles (degrees, + on the mirror side) where the walk is run, and its paths per angle. */

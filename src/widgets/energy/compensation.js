@@ -11,7 +11,8 @@ const DEG = Math.PI / 180;
 
 /** { none, kullaConty, turquin }: per view angle (degrees), the [r, g, b] albedo from the table. */
 export function albedoCurves(table, alpha, f0rgb, degrees) {
-  const curve = (compensation) => degrees.map((deg) => f0rgb.map((f0) => specularAlbedoFromTable(table, Math.cos(deg * DEG), alpha, f0, compensation)));
+  const at = (deg, f0, compensation) => specularAlbedoFromTable(table, Math.cos(deg * DEG), alpha, f0, compensation);
+  const curve = (compensation) => degrees.map((deg) => f0rgb.map((f0) => at(deg, f0, compensation)));
   return { none: curve('none'), kullaConty: curve('kullaConty'), turquin: curve('turquin') };
 }
 

@@ -10,7 +10,9 @@ import { materialByKey } from '../../math/materials.js';
 import { WALK_DEGREES, WALK_PATHS, albedoCurves, saturation, walkPoints } from './compensation.js';
 
 const CHANNELS = [['R', '#c0392b'], ['G', '#27ae60'], ['B', '#2c6fbb']];
-const MODELS = [['none', 'single scattering', [2, 4]], ['kullaConty', 'Kulla–Conty', undefined], ['turquin', 'Turquin', [9, 4]]];
+const MODELS = [
+  ['none', 'single scattering', [2, 4]], ['kullaConty', 'Kulla–Conty', undefined], ['turquin', 'Turquin', [9, 4]],
+];
 const DEGREES = [...new Set([...Array.from({ length: 45 }, (_, i) => 2 * i), ...WALK_DEGREES])].sort((a, b) => a - b);
 
 function model(metalKey, alpha) {
@@ -41,12 +43,14 @@ function plotSpec({ metal, alpha, curves, walk }) {
 }
 
 function swatchTable({ metal, alpha, curves, walk }) {
-  const rows = [...MODELS.map(([key, name]) => [name, curves[key][0]]), [`random walk (${WALK_PATHS / 1000}k paths)`, walk[0].albedo]];
-  return `<table class="data-table compact"><caption>${metal.name} at α = ${alpha}, seen head-on: the colour each model gives` +
-    ' (linear albedo, shown in sRGB)</caption><thead><tr><th>model</th><th>colour</th><th>albedo R, G, B</th>' +
-    '<th>saturation (1 − min/max)</th></tr></thead><tbody>' +
-    rows.map(([name, rgb]) => `<tr><td>${name}</td><td><span class="swatch" style="background:${rgbToHex(rgb.map(linearToSrgb))}"></span></td>` +
-      `<td>${rgb.map((x) => x.toFixed(3)).join(', ')}</td><td>${saturation(rgb).toFixed(3)}</td></tr>`).join('') + '</tbody></table>';
+  const walkRow = [`random walk (${WALK_PATHS / 1000}k paths)`, walk[0].albedo];
+  const rows = [...MODELS.map(([key, name]) => [name, curves[key][0]]), walkRow];
+  const swatch = (rgb) => `<span class="swatch" style="background:${rgbToHex(rgb.map(linearToSrgb))}"></span>`;
+  return `<table class="data-table compact"><caption>${metal.name} at α = ${alpha}, seen head-on: the colour each ` +
+    'model gives (linear albedo, shown in sRGB)</caption><thead><tr><th>model</th><th>colour</th>' +
+    '<th>albedo R, G, B</th><th>saturation (1 − min/max)</th></tr></thead><tbody>' +
+    rows.map(([name, rgb]) => `<tr><td>${name}</td><td>${swatch(rgb)}</td><td>${rgb.map((x) => x.toFixed(3)).join(', ')}</td>` +
+      `<td>${saturation(rgb).toFixed(3)}</td></tr>`).join('') + '</tbody></table>';
 }
 
 export function createMetalView(container) {
