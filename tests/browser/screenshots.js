@@ -21,6 +21,7 @@ const SHOTS = [
   ['brdf-lobe-compare', 'embed.html?w=brdf-lobe&compare=1&cosine=1&lightTheta=60&viewTheta=20'],
   ['brdf-lobe-multiple', 'embed.html?w=brdf-lobe&multiple=1&alpha=1&F=one&lightTheta=30&viewTheta=20'],
   ['microfacets-page', 'microfacets.html', { fullPage: true }],
+  ['energy-compensated', 'embed.html?w=energy&compensation=kullaConty', { fullPage: true }],
   ['ndf-page', 'ndf.html?ndf.exposure=8', { fullPage: true }],
   ['visibility-page', 'visibility.html', { fullPage: true }],
   ['diffuse-page', 'diffuse.html', { fullPage: true }],

@@ -20,6 +20,10 @@ export const schema = {
   fresnel: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.fresnel, default: 'schlick', label: 'F' },
   ndf: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.ndf, default: 'ggx', label: 'D' },
   visibility: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.visibility, default: 'smithGGXCorrelated', label: 'V' },
+  compensation: {
+    group: 'BRDF terms', type: 'enum', options: { none: 'None', kullaConty: 'Kulla–Conty 2017', turquin: 'Turquin 2019' },
+    default: 'none', label: 'Multiple scattering',
+  },
   diffuseModel: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.diffuse, default: 'lambert', label: 'Diffuse term' },
   sigma: { group: 'BRDF terms', type: 'number', min: 0, max: 60, step: 1, default: 20, label: 'Oren-Nayar σ', unit: '°' },
   punctual: { group: 'Punctual light', type: 'bool', default: false, label: 'Punctual light' },
