@@ -2,6 +2,7 @@
 // documented domain, its CPU cost (tinybench, ns per evaluation) and its GPU cost (a full-screen pass in
 // headless Chromium). Prints a table and writes JSON (bench/results/latest.json, or --out FILE).
 // --quick: a tiny budget, for the test suite.
+// --family KEY: that family alone, errors and costs (CPU and GPU), merged into the existing JSON.
 // --only families: only the term families' errors (Node, seconds), merged into the existing JSON; every cost
 // column, the pages and the IBL rows stay as last measured. With --time-cpu the CPU column is timed again too
 // (on a quiet machine only: timings taken beside other work are not comparable with the rest).
@@ -23,6 +24,8 @@ const only = args.includes('--only') ? args[args.indexOf('--only') + 1] : null;
 const timeCpu = only === null || args.includes('--time-cpu');
 const PARTS = ['families', 'measured'];
 if (only !== null && !PARTS.includes(only)) throw new Error(`--only ${only}: the parts that run alone are ${PARTS.join(', ')}`);
+const familyKey = args.includes('--family') ? args[args.indexOf('--family') + 1] : null;
+if (familyKey && !FAMILIES.some((f) => f.key === familyKey)) throw new Error(`--family ${familyKey}: families are ${FAMILIES.map((f) => f.key).join(', ')}`);
 const out = args.includes('--out') ? resolve(args[args.indexOf('--out') + 1]) : join(ROOT, 'bench/results/latest.json');
 const CPU_SAMPLE = 2048; // inputs per timed call
 const cpuModel = () => cpus()[0]?.model ?? 'unknown';
@@ -31,14 +34,15 @@ async function cpuCosts(family) {
   const bench = new Bench({ time: quick ? 5 : 250, warmupTime: quick ? 2 : 50 });
   const sample = Array.from({ length: CPU_SAMPLE }, (_, i) => family.inputs[(i * 7919) % family.inputs.length]);
   let sink = 0;
-  for (const v of family.variants) {
+  for (const v of family.variants.filter((w) => !w.untimed)) {
     bench.add(v.key, () => {
       for (const a of sample) sink += v.js(...a);
     });
   }
   await bench.run();
   if (Number.isNaN(sink)) throw new Error('NaN in the CPU benchmark');
-  return Object.fromEntries(bench.tasks.map((t) => [t.name, (t.result.latency.mean * 1e6) / CPU_SAMPLE]));
+  const untimed = family.variants.filter((v) => v.untimed).map((v) => [v.key, null]); // a reference run offline
+  return Object.fromEntries([...bench.tasks.map((t) => [t.name, (t.result.latency.mean * 1e6) / CPU_SAMPLE]), ...untimed]);
 }
 
 async function gpuCosts() {
@@ -47,7 +51,7 @@ async function gpuCosts() {
   const server = await serveStatic(outDir);
   const browser = await launchBrowser();
   try {
-    const page = await openPage(browser, server.url, `bench/gpu-bench.html?frames=${quick ? 1 : 9}`);
+    const page = await openPage(browser, server.url, `bench/gpu-bench.html?frames=${quick ? 1 : 9}${familyKey ? `&family=${familyKey}` : ''}`);
     await page.waitForFunction(() => window.__gpuBench?.done, { timeout: 600_000, polling: 500 });
     const result = await page.evaluate(() => window.__gpuBench);
     if (page.errors.length) throw new Error(page.errors.join('\n'));
@@ -61,15 +65,17 @@ async function gpuCosts() {
 
 /** A family's rows: each variant's kind, what it is measured against, that distance, and its costs. */
 async function measureFamily(family, gpuMs, lastCpu) {
+  family.configure?.({ quick });
   const errors = measureErrors(family);
   const cpu = timeCpu ? await cpuCosts(family) : lastCpu;
-  const cheapest = Math.min(...Object.values(gpuMs));
+  const cheapest = Math.min(...Object.values(gpuMs).filter((ms) => ms !== null));
   const labelOf = (key) => family.variants.find((v) => v.key === key)?.label ?? null;
   return {
     key: family.key,
     title: family.title,
     domain: family.domain,
     errorOf: family.errorOf,
+    ...(family.referenceNote ? { referenceNote: family.referenceNote() } : {}),
     variants: family.variants.map((v, i) => {
       const { maxAbs, rms, maxAt } = errors[i];
       return {
@@ -80,8 +86,8 @@ async function measureFamily(family, gpuMs, lastCpu) {
         againstLabel: labelOf(v.against),
         [v.kind === 'difference' ? 'difference' : 'error']: { maxAbs, rms, maxAt },
         cpuNsPerEval: cpu[v.key],
-        gpuMsPerFrame: gpuMs[v.key],
-        gpuRelative: gpuMs[v.key] / cheapest,
+        gpuMsPerFrame: gpuMs[v.key] ?? null, // null: not run on the GPU (a Monte Carlo reference)
+        gpuRelative: gpuMs[v.key] != null ? gpuMs[v.key] / cheapest : null,
       };
     }),
   };
@@ -98,7 +104,7 @@ async function familiesOnly() {
   const families = [];
   for (const family of FAMILIES) {
     const [gpuMs, cpu] = [lastOf(family.key, 'gpuMsPerFrame'), lastOf(family.key, 'cpuNsPerEval')];
-    const missing = family.variants.filter((v) => !(gpuMs[v.key] >= 0 && cpu[v.key] >= 0)).map((v) => `${family.key}/${v.key}`);
+    const missing = family.variants.filter((v) => !v.untimed && !(gpuMs[v.key] >= 0 && cpu[v.key] >= 0)).map((v) => `${family.key}/${v.key}`);
     if (missing.length) throw new Error(`no cost measured for ${missing.join(', ')}: run the whole bench`);
     families.push(await measureFamily(family, gpuMs, cpu));
   }
@@ -132,7 +138,17 @@ async function everything() {
   };
 }
 
-const report = only === 'families' ? await familiesOnly() : only === 'measured' ? measuredOnly() : await everything();
+/** --family KEY: that family measured whole (errors, CPU, GPU), replacing its entry in the last report. */
+async function oneFamily() {
+  if (!existsSync(out)) throw new Error(`--family updates ${out}, which does not exist: run the whole bench`);
+  const last = JSON.parse(readFileSync(out, 'utf8'));
+  const family = FAMILIES.find((f) => f.key === familyKey);
+  const measured = await measureFamily(family, (await gpuCosts()).results[family.key]);
+  const families = FAMILIES.map((f) => (f.key === familyKey ? measured : last.families.find((g) => g.key === f.key))).filter(Boolean);
+  return { ...last, families, familyMeasured: { ...last.familyMeasured, [familyKey]: new Date().toISOString() } };
+}
+
+const report = familyKey ? await oneFamily() : only === 'families' ? await familiesOnly() : only === 'measured' ? measuredOnly() : await everything();
 mkdirSync(dirname(out), { recursive: true });
 writeFileSync(out, `${JSON.stringify(report, null, 1)}\n`);
 
@@ -145,14 +161,19 @@ const pad = (s, n) => String(s).padEnd(n);
 const g = report.gpuSetup;
 console.log(`Machine: ${report.machine.cpu} (${report.machine.cores} cores), Node ${report.machine.node}, ${report.machine.chromium}, GPU: ${report.machine.gpuRenderer}`);
 console.log(`GPU pass: ${g.size}² pixels × ${g.loops} evaluations, median of ${g.frames} drained frames; the empty pass (x·y) takes ${g.baselineMsPerFrame.toFixed(2)} ms of each.`);
-for (const f of report.families) {
-  console.log(`\n${f.title} — ${f.errorOf} over ${f.domain}`);
+const fixed = (x, digits) => (x === null ? '—' : x.toFixed(digits)); // null: a reference not timed
+for (const f of report.families.filter((g) => !familyKey || g.key === familyKey)) {
+  console.log(`\n${f.title} — ${f.errorOf} over ${f.domain}${f.referenceNote ? ` (${f.referenceNote})` : ''}`);
   console.log(`  ${pad('variant', 42)}${pad('measured against', 52)}${pad('max |Δ|', 11)}${pad('RMS', 11)}${pad('CPU ns/eval', 13)}${pad('GPU ms/frame', 14)}GPU relative`);
   for (const v of f.variants) {
     const d = v.error ?? v.difference;
     const what = v.kind === 'reference' ? 'reference' : `${v.kind === 'difference' ? 'differs from' : 'error vs'} ${v.againstLabel}`;
-    console.log(`  ${pad(v.label, 42)}${pad(what, 52)}${pad(d.maxAbs.toExponential(2), 11)}${pad(d.rms.toExponential(2), 11)}${pad(v.cpuNsPerEval.toFixed(2), 13)}${pad(v.gpuMsPerFrame.toFixed(2), 14)}${v.gpuRelative.toFixed(2)}×`);
+    console.log(`  ${pad(v.label, 42)}${pad(what, 52)}${pad(d.maxAbs.toExponential(2), 11)}${pad(d.rms.toExponential(2), 11)}${pad(fixed(v.cpuNsPerEval, 2), 13)}${pad(fixed(v.gpuMsPerFrame, 2), 14)}${fixed(v.gpuRelative, 2)}${v.gpuRelative === null ? '' : '×'}`);
   }
+}
+if (familyKey) {
+  console.log(`\nWrote ${out} (${familyKey} replaced; everything else as it was)`);
+  process.exit(0);
 }
 if (only === 'families') {
   const kept = timeCpu ? 'the GPU columns' : 'the CPU and GPU columns';

@@ -9,6 +9,7 @@
 // `model` names the model a variant computes or approximates; tests/unit/bench-families.test.js holds the
 // kinds consistent with it.
 import * as M from '../src/math/index.js';
+import { MULTIPLE_SCATTERING_FAMILY } from './multiple-scattering-family.js';
 
 const range = (n, lo, hi) => Array.from({ length: n }, (_, i) => lo + ((hi - lo) * i) / (n - 1));
 const COS = range(1001, 0, 1);
@@ -161,6 +162,7 @@ export const FAMILIES = [
         glsl: 'diffuseLambert(0.8 * x)' },
     ],
   },
+  MULTIPLE_SCATTERING_FAMILY,
 ];
 
 /**

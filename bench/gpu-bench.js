@@ -17,10 +17,11 @@ const VERT = `#version 300 es
 in vec2 position;
 void main() { gl_Position = vec4(position, 0.0, 1.0); }`;
 
-function fragment(expr) {
+function fragment(expr, setup = {}) {
   const body = `#include "fresnel.glsl"
 #include "visibility.glsl"
 #include "diffuse.glsl"
+${setup.chunk ? `#include "${setup.chunk}"` : ''}
 out vec4 fragColor;
 void main() {
   vec2 p = gl_FragCoord.xy / ${SIZE.toFixed(1)};
@@ -33,12 +34,12 @@ void main() {
   }
   fragColor = vec4(acc);
 }`;
-  return `#version 300 es\nprecision highp float;\nprecision highp int;\n${assembleGlsl(body)}`;
+  return `#version 300 es\nprecision highp float;\nprecision highp int;\n${assembleGlsl(body, { defines: setup.defines ?? {} })}`;
 }
 
-function program(expr) {
+function program(expr, setup) {
   const p = gl.createProgram();
-  for (const [type, src] of [[gl.VERTEX_SHADER, VERT], [gl.FRAGMENT_SHADER, fragment(expr)]]) {
+  for (const [type, src] of [[gl.VERTEX_SHADER, VERT], [gl.FRAGMENT_SHADER, fragment(expr, setup)]]) {
     const s = gl.createShader(type);
     gl.shaderSource(s, src);
     gl.compileShader(s);
@@ -71,15 +72,32 @@ function timeFrames(p) {
   return times[Math.floor(times.length / 2)];
 }
 
+/** Binds a family's square RGBA float tables ({ size, data }) to its program's samplers, units 0, 1, … */
+function bindTables(p, tables = {}) {
+  gl.useProgram(p);
+  Object.entries(tables).forEach(([name, table], unit) => {
+    const { size, data } = table();
+    const t = gl.createTexture();
+    gl.activeTexture(gl.TEXTURE0 + unit);
+    gl.bindTexture(gl.TEXTURE_2D, t);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, size, size, 0, gl.RGBA, gl.FLOAT, data);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+    gl.uniform1i(gl.getUniformLocation(p, name), unit);
+  });
+  return p;
+}
+
 const debug = gl.getExtension('WEBGL_debug_renderer_info');
+const only = params.get('family'); // one family alone (npm run bench -- --family KEY)
 const results = {};
-for (const family of FAMILIES) {
+for (const family of FAMILIES.filter((f) => !only || f.key === only)) {
   results[family.key] = {};
-  for (const v of family.variants) results[family.key][v.key] = timeFrames(program(v.glsl));
+  for (const v of family.variants.filter((w) => w.glsl)) results[family.key][v.key] = timeFrames(bindTables(program(v.glsl, family.gpu), family.gpu?.tables));
 }
 window.__gpuBench = {
   done: true,
-  versusThree: compareWithMeshStandard({ frames: FRAMES }),
+  versusThree: only ? null : compareWithMeshStandard({ frames: FRAMES }),
   baselineMs: timeFrames(program('x * y')), // the loop and the pass alone: part of every frame above
   renderer: debug ? gl.getParameter(debug.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER),
   setup: { size: SIZE, loops: LOOPS, frames: FRAMES },

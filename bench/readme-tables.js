@@ -24,11 +24,13 @@ const HEAD = (first, what) => [`| ${first} | ${what === 'error' ? 'error against
 const row = (v, m) => {
   const reference = v.kind === 'reference';
   return `| ${esc(v.label)} | ${reference ? 'reference' : esc(v.againstLabel)} | ${reference ? '0' : m.maxAbs.toExponential(2)} | ` +
-    `${m.rms.toExponential(2)} | ${v.cpuNsPerEval.toFixed(0)} | ${v.gpuRelative.toFixed(2)}× |`;
+    `${m.rms.toExponential(2)} | ${v.cpuNsPerEval === null ? '— (run offline)' : v.cpuNsPerEval.toFixed(0)} | ` +
+    `${v.gpuRelative === null ? '—' : `${v.gpuRelative.toFixed(2)}×`} |`;
 };
 for (const f of report.families) {
   const others = f.variants.filter((v) => v.kind === 'difference');
-  lines.push(`**${f.title}** — ${esc(f.errorOf)} over ${esc(f.domain)}`, '', ...HEAD('approximation', 'error'));
+  const note = f.referenceNote ? ` (${esc(f.referenceNote)})` : '';
+  lines.push(`**${f.title}** — ${esc(f.errorOf)} over ${esc(f.domain)}${note}`, '', ...HEAD('approximation', 'error'));
   for (const v of f.variants.filter((w) => w.kind !== 'difference')) lines.push(row(v, v.error));
   if (others.length) {
     const from = esc(others[0].againstLabel);

@@ -1,10 +1,13 @@
 // A sphere shaded by one microfacet BRDF under one punctual light (the talk's L = pi f c_light (n·l)),
 // (with DIFFUSE_LAMBERT plus a Lambert term), or, with FURNACE, in a uniform white environment with F = 1: the
-// directional albedo E(n·v), scale + bias of the split-sum table uDfg (GGX, height-correlated Smith).
+// directional albedo E(n·v), scale + bias of the split-sum table uDfg (GGX, height-correlated Smith); with
+// FURNACE_KULLA_CONTY or FURNACE_TURQUIN, that albedo with the energy compensation (multiple-scattering.glsl).
 // The term switches of brdf.glsl pick D (NDF_*), V (VIS_*) and F (F_ONE or Schlick); only those compile.
 // With DIFFUSE_ONLY the sphere has a diffuse term alone, picked by DIFFUSE_MODEL_* (Lambert without one).
 #include "color.glsl"
-#ifdef FURNACE
+#if defined(FURNACE_KULLA_CONTY) || defined(FURNACE_TURQUIN)
+#include "multiple-scattering.glsl"
+#elif defined(FURNACE)
 #include "integrate.glsl"
 #elif !defined(DIFFUSE_ONLY)
 #include "brdf.glsl"
@@ -17,7 +20,7 @@ uniform float uLightIntensity;
 uniform float uExposure;
 uniform float uAlpha;
 uniform float uF0;
-#ifdef FURNACE
+#if defined(FURNACE) && !defined(FURNACE_KULLA_CONTY) && !defined(FURNACE_TURQUIN)
 uniform sampler2D uDfg;
 #endif
 out vec4 fragColor;
@@ -34,7 +37,11 @@ void main() {
   vec3 n = normalize(vNormal);
   vec3 v = isOrthographic ? vec3(0.0, 0.0, 1.0) : normalize(-vViewPosition);
   float nv = dot(n, v);
-#ifdef FURNACE
+#if defined(FURNACE_KULLA_CONTY)
+  float radiance = specularAlbedoKullaConty(nv, uAlpha, 1.0);
+#elif defined(FURNACE_TURQUIN)
+  float radiance = specularAlbedoTurquin(nv, uAlpha, 1.0);
+#elif defined(FURNACE)
   vec2 ab = texture(uDfg, dfgTableUv(nv, uAlpha)).rg;
   float radiance = ab.x + ab.y;
 #else

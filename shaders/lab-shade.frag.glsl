@@ -5,12 +5,17 @@
 // methods (ENV_MIRROR, ENV_IMPORTANCE, ENV_SPLIT_SUM; AREA_CENTRE; else the representative point), and
 // SPECULAR_OFF / DIFFUSE_OFF to see one layer alone. The approximations follow the chosen F, D and V: uDfg is the
 // DFG table and uPrefiltered the map prefiltered for them; where a method has no form for the chosen diffuse term,
-// irradiance × Lambert stands in (src/core/lab/lab-approximations.js says so on the page).
+// irradiance × Lambert stands in (src/core/lab/lab-approximations.js says so on the page). With
+// COMPENSATION_KULLA_CONTY or COMPENSATION_TURQUIN the specular lobe gets its multiple scattering back
+// (multiple-scattering.glsl; the tables are GGX with height-correlated Smith's), in the reference and the methods.
 #include "brdf.glsl"
 #include "diffuse.glsl"
 #include "ndf-sampling.glsl"
 #include "lighting.glsl"
 #include "env.glsl"
+#if defined(COMPENSATION_KULLA_CONTY) || defined(COMPENSATION_TURQUIN)
+#include "multiple-scattering.glsl"
+#endif
 
 uniform vec2 uSize;
 uniform float uExtent;
@@ -51,7 +56,27 @@ const vec3 diffuseColor = vec3(0.0);
 #define diffuseColor uDiffuseColor
 #endif
 
-vec3 specularBRDF(vec3 l, vec3 v) { return specularOn * microfacetBRDF(l, v, uAlpha, uF0); }
+#ifdef F_ONE
+#define F0_BOUNCES vec3(1.0)
+#else
+#define F0_BOUNCES uF0
+#endif
+
+#ifdef COMPENSATION_KULLA_CONTY
+// Kulla & Conty's Fresnel factor of the multiple-scattering lobe for this material and roughness
+vec3 fresnelBounces() { return fresnelMultipleScatteringKullaConty(fresnelAverage(F0_BOUNCES), averageAlbedoGGX(uAlpha)); }
+#endif
+
+// The specular lobe: single scattering, times Turquin's factor at v or plus Kulla & Conty's lobe.
+vec3 specularBRDF(vec3 l, vec3 v) {
+  vec3 f = microfacetBRDF(l, v, uAlpha, uF0);
+#if defined(COMPENSATION_TURQUIN)
+  f *= energyCompensationTurquin(F0_BOUNCES, 1.0 - albedoLossTableGGX(v.z, uAlpha).x);
+#elif defined(COMPENSATION_KULLA_CONTY)
+  f += multipleScatteringKullaConty(l.z, v.z, uAlpha) * fresnelBounces();
+#endif
+  return specularOn * f;
+}
 
 // cos of the azimuth between l and v about n = z; 0 where either lies along n (no term depends on it there)
 float cosPhiBetween(vec3 l, vec3 v) {
@@ -143,9 +168,23 @@ vec3 sphereLight(mat3 toLocal, vec3 v, int n, vec2 shift) {
 vec3 dfgAlbedo(float nv) {
   vec2 ab = texture(uDfg, dfgTableUv(nv, uAlpha)).rg;
 #ifdef F_ONE
-  return vec3(ab.x + ab.y);
+  vec3 single = vec3(ab.x + ab.y);
 #else
-  return uF0 * ab.x + ab.y;
+  vec3 single = uF0 * ab.x + ab.y;
+#endif
+#ifdef COMPENSATION_TURQUIN
+  single *= energyCompensationTurquin(F0_BOUNCES, 1.0 - albedoLossTableGGX(nv, uAlpha).x);
+#endif
+  return single;
+}
+
+// What Kulla & Conty's lobe adds under uniform light of radiance 1: F_ms (1 - E(n·v)) (its integral); under an
+// environment it is applied to the irradiance, as the lobe is nearly flat in l (Fdez-Agüera 2019).
+vec3 multipleAlbedo(float nv) {
+#ifdef COMPENSATION_KULLA_CONTY
+  return fresnelBounces() * albedoLossTableGGX(nv, uAlpha).x;
+#else
+  return vec3(0.0);
 #endif
 }
 #endif
@@ -178,6 +217,9 @@ vec3 environmentLight(vec3 n, mat3 toWorld, vec3 v) {
   vec3 specular = prefiltered(rWorld, uAlpha) * dfgAlbedo(v.z);
 #endif
   vec3 irradiance = uEnvIntensity * texture(uIrradiance, equirectUv(n)).rgb; // radiance of a white Lambertian surface
+#ifdef ENV_SPLIT_SUM
+  specular += multipleAlbedo(v.z) * irradiance;
+#endif
   return specularOn * specular + diffuseColor * irradiance;
 }
 #endif
@@ -205,7 +247,7 @@ vec3 environmentLight(vec3 n, mat3 toWorld, vec3 v) {
 
 #if defined(LIGHT_AMBIENT) && !defined(REFERENCE)
 // Uniform radiance: the specular albedo from the DFG table, the diffuse albedo c of Lambert (the form it has).
-vec3 ambientLight(vec3 v) { return uAmbient * (specularOn * dfgAlbedo(v.z) + diffuseColor); }
+vec3 ambientLight(vec3 v) { return uAmbient * (specularOn * (dfgAlbedo(v.z) + multipleAlbedo(v.z)) + diffuseColor); }
 #endif
 
 #ifdef REFERENCE

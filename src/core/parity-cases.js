@@ -3,6 +3,11 @@
 // large k, alpha down to 0, sRGB values outside [0, 1]).
 import * as M from '../math/index.js';
 import { merlCoordinates } from '../measured/merl.js';
+import { buildAlbedoTableGGX, albedoLossTableGGX } from '../math/albedo-table.js';
+
+let albedoTable = null; // built on first use (~0.5 s)
+const albedoTableOnce = () => (albedoTable ??= buildAlbedoTableGGX());
+const TABLE_CASE = { chunk: 'multiple-scattering.glsl', defines: { ALBEDO_TABLE_GGX: true }, tables: { uAlbedoTableGGX: albedoTableOnce } };
 
 const uniform = (n, lo, hi) => Array.from({ length: n }, (_, i) => lo + ((hi - lo) * i) / (n - 1));
 
@@ -87,6 +92,44 @@ export const PARITY_CASES = [
     args: cartesian(GRIDS.theta, GRIDS.theta, [0, 1, Math.PI / 2, 3, Math.PI], GRIDS.alpha).map(([tl, tv, phi, alpha]) => [
       Math.sin(tl), 0, Math.cos(tl), alpha, Math.sin(tv) * Math.cos(phi), Math.sin(tv) * Math.sin(phi), Math.cos(tv), 0,
     ]),
+  },
+  { name: 'fresnelAverage', chunk: 'multiple-scattering.glsl', glsl: 'fresnelAverage(a.x)', outputs: 1, js: M.fresnelAverage, range: [0, 1], args: cartesian(GRIDS.f0) },
+  {
+    name: 'fresnelAverage (vec3)', chunk: 'multiple-scattering.glsl', glsl: 'fresnelAverage(vec3(a.x, 0.5 * a.x, 1.0 - a.x))', outputs: 3,
+    js: (f0) => [f0, 0.5 * f0, 1 - f0].map((x) => M.fresnelAverage(Math.fround(x))), range: [0, 1], args: cartesian(GRIDS.f0),
+  },
+  {
+    name: 'fresnelMultipleScatteringKullaConty', chunk: 'multiple-scattering.glsl', glsl: 'fresnelMultipleScatteringKullaConty(a.x, a.y)', outputs: 1,
+    // F_avg = 1 and E_avg = 1e-7 together: the textbook denominator 1 - F_avg (1 - E_avg) gave 0.84 instead of 1
+    js: M.fresnelMultipleScatteringKullaConty, range: [0, 1], args: cartesian(GRIDS.f0, [0, 1e-7, 0.3, 0.41, 0.9, 0.9999, 1]),
+  },
+  {
+    name: 'energyCompensationTurquin', chunk: 'multiple-scattering.glsl', glsl: 'energyCompensationTurquin(a.x, a.y)', outputs: 1,
+    js: M.energyCompensationTurquin, range: [1, 1e4], args: cartesian(GRIDS.f0, [-0.5, 0, 1e-7, 1e-4, 0.3, 0.7, 0.9999, 1, 1.5]),
+  },
+  {
+    name: 'multipleScatteringFromLoss', chunk: 'multiple-scattering.glsl', glsl: 'multipleScatteringFromLoss(a.x, a.y, a.z)', outputs: 1,
+    js: M.multipleScatteringFromLoss, range: [0, Infinity], args: cartesian(GRIDS.cosCoarse, GRIDS.cosCoarse, [-1, 0, 1e-7, 1e-4, 0.3, 0.59, 1, 1.5]),
+  },
+  // the table functions against the JS lookup of the same table (same bilinear rule); the table against the
+  // float64 functions is unit-tested (tests/unit/albedo-table.test.js)
+  { ...TABLE_CASE, name: 'albedoLossTableGGX', glsl: 'albedoLossTableGGX(a.x, a.y)', outputs: 3, js: (mu, alpha) => albedoLossTableGGX(albedoTableOnce(), mu, alpha), range: [0, 1], args: cartesian(GRIDS.cos, GRIDS.alpha) },
+  {
+    ...TABLE_CASE, name: 'averageAlbedoGGX (table)', glsl: 'averageAlbedoGGX(a.x)', outputs: 1, range: [0, 1], args: cartesian(GRIDS.alpha),
+    js: (alpha) => 1 - albedoLossTableGGX(albedoTableOnce(), 1, alpha)[1],
+  },
+  ...[['specularAlbedoGGX', 'none'], ['specularAlbedoKullaConty', 'kullaConty'], ['specularAlbedoTurquin', 'turquin']].map(([name, compensation]) => ({
+    ...TABLE_CASE, name, glsl: `${name}(a.x, a.y, a.z)`, outputs: 1, range: [0, 1], args: cartesian(GRIDS.cosCoarse, GRIDS.alpha, GRIDS.f0),
+    js: (mu, alpha, f0) => M.specularAlbedoFromTable(albedoTableOnce(), mu, alpha, f0, compensation),
+  })),
+  {
+    ...TABLE_CASE, name: 'multipleScatteringKullaConty (table)', glsl: 'multipleScatteringKullaConty(a.x, a.y, a.z)', outputs: 1,
+    js: (nl, nv, alpha) => {
+      if (!(nl > 0 && nv > 0)) return 0;
+      const [[lossL], [lossV, lossAvg]] = [nl, nv].map((mu) => albedoLossTableGGX(albedoTableOnce(), mu, alpha));
+      return M.multipleScatteringFromLoss(lossL, lossV, lossAvg);
+    },
+    range: [0, Infinity], args: cartesian(GRIDS.cosCoarse, GRIDS.cosCoarse, GRIDS.alpha),
   },
   // directions built from sin and cos of an angle: there the GPU's own sin and cos set the accuracy (SwiftShader's
   // are up to ~1.8e-4 off; hardware's ~1e-6), not the formulas

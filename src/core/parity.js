@@ -9,6 +9,13 @@ import { TOLERANCE } from './parity-cases.js';
 
 const WIDTH = 256;
 
+/** A square RGBA float table ({ size, data }) as a texture the shader reads with texelFetch. */
+function tableTexture({ size, data }) {
+  const t = new THREE.DataTexture(data, size, size, THREE.RGBAFormat, THREE.FloatType);
+  t.needsUpdate = true;
+  return t;
+}
+
 function evaluateOnGpu(renderer, testCase) {
   const n = testCase.args.length;
   const height = Math.ceil(n / WIDTH);
@@ -20,12 +27,13 @@ function evaluateOnGpu(renderer, testCase) {
     return t;
   };
   const [input, input2] = [texture(0), texture(4)];
+  const tables = Object.entries(testCase.tables ?? {}).map(([name, table]) => [name, tableTexture(table())]);
   const wrap = `vec4(${testCase.glsl}${', 0.0'.repeat(4 - testCase.outputs)})`; // pad to vec4
   const material = new THREE.ShaderMaterial({
     glslVersion: THREE.GLSL3,
-    uniforms: { uArgs: { value: input }, uArgs2: { value: input2 } },
+    uniforms: { uArgs: { value: input }, uArgs2: { value: input2 }, ...Object.fromEntries(tables.map(([name, t]) => [name, { value: t }])) },
     vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
-    fragmentShader: assembleGlsl(`#include "${testCase.chunk}"\n${SHADER_CHUNKS['parity.frag.glsl']}`, { defines: { CALL: wrap } }),
+    fragmentShader: assembleGlsl(`#include "${testCase.chunk}"\n${SHADER_CHUNKS['parity.frag.glsl']}`, { defines: { ...testCase.defines, CALL: wrap } }),
   });
   const quad = new THREE.Mesh(new THREE.PlaneGeometry(2, 2), material);
   const scene = new THREE.Scene().add(quad);
@@ -35,7 +43,7 @@ function evaluateOnGpu(renderer, testCase) {
   const out = new Float32Array(WIDTH * height * 4);
   renderer.readRenderTargetPixels(target, 0, 0, WIDTH, height, out);
   renderer.setRenderTarget(null);
-  [input, input2, material, quad.geometry, target].forEach((x) => x.dispose());
+  [input, input2, ...tables.map(([, t]) => t), material, quad.geometry, target].forEach((x) => x.dispose());
   return out;
 }
 

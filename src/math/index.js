@@ -15,4 +15,7 @@ export * from './diffuse.js';
 export * from './media.js';
 export * from './microsurface.js';
 export * from './lighting.js';
+export * from './multiple-scattering.js';
+export * from './random-walk.js';
+export * from './albedo-table.js';
 export * from './radiometry.js';

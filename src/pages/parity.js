@@ -12,7 +12,9 @@ if (!gl || !gl.getExtension('EXT_color_buffer_float')) {
   showBlockingMessage(out, 'This check needs WebGL2 with float render targets.', 'Your browser did not provide them, so the shaders cannot be compared here.');
 } else {
   const renderer = new THREE.WebGLRenderer({ canvas, context: gl });
-  const results = runParity(renderer, PARITY_CASES);
+  // ?only=name1,name2 runs the rows whose names start with one of those (a quick check of a few functions)
+  const only = new URLSearchParams(location.search).get('only')?.split(',').filter(Boolean);
+  const results = runParity(renderer, only ? PARITY_CASES.filter((c) => only.some((o) => c.name.startsWith(o))) : PARITY_CASES);
   renderer.dispose();
   (globalThis.__shadingLab ??= {}).parity = results;
   const failed = results.filter((r) => !r.pass);

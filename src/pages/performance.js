@@ -28,8 +28,12 @@ const againstText = (v) =>
   (v.kind === 'reference' ? 'reference' : `${v.kind === 'difference' ? 'differs from' : 'error against'} ${v.againstLabel}`);
 const colourOf = (f, v) => SERIES_COLORS[f.variants.indexOf(v) % SERIES_COLORS.length];
 
-/** Error against cost, for the reference and what approximates a model: different models are not on it. */
-function errorChart(section, f, variants) {
+/**
+ * Error against cost, for the reference and what approximates a model: different models are not on it, nor is
+ * a reference that was not timed (a Monte Carlo walk run once, offline).
+ */
+function errorChart(section, f, all) {
+  const variants = all.filter((v) => v.cpuNsPerEval !== null && v.gpuRelative !== null);
   const costs = [...new Set(variants.map(costOf))].sort((a, b) => a - b);
   plots.push(createPlot(section, {
     title: `${f.title.split(':')[0]}: largest error of each approximation against its cost ` +
@@ -50,10 +54,12 @@ function errorChart(section, f, variants) {
   }));
 }
 
+const cost = (x, digits) => (x === null ? '— (run offline)' : x.toFixed(digits));
+
 function rowsOf(f, variants) {
   return variants.map((v) => `<tr><td><span class="swatch" style="background:${colourOf(f, v)}"></span> ${v.label}</td>` +
     `<td>${againstText(v)}</td><td>${maxText(v)}</td><td>${measureOf(v).rms.toExponential(2)}</td>` +
-    `<td>${v.cpuNsPerEval.toFixed(1)}</td><td>${v.gpuMsPerFrame.toFixed(2)}</td><td>${v.gpuRelative.toFixed(2)}×</td></tr>`).join('');
+    `<td>${cost(v.cpuNsPerEval, 1)}</td><td>${cost(v.gpuMsPerFrame, 2)}</td><td>${cost(v.gpuRelative, 2)}${v.gpuRelative === null ? '' : '×'}</td></tr>`).join('');
 }
 
 function render() {
@@ -63,7 +69,8 @@ function render() {
     const approximations = f.variants.filter((v) => v.kind !== 'difference');
     const others = f.variants.filter((v) => v.kind === 'difference');
     const section = document.createElement('section');
-    section.innerHTML = `<h2>${f.title}</h2><p class="domain">${f.errorOf} over ${f.domain}.</p>`;
+    section.innerHTML = `<h2>${f.title}</h2><p class="domain">${f.errorOf} over ${f.domain}.` +
+      `${f.referenceNote ? ` The reference is itself measured: ${f.referenceNote}.` : ''}</p>`;
     root.append(section);
     if (approximations.length > 1) errorChart(section, f, approximations);
     const head = (what) => `<tr><th>Variant</th><th>Measured against</th><th>max |${what}|</th><th>RMS ${what}</th>` +

@@ -155,6 +155,23 @@ export const TOUR_STEPS = [
       'nothing would vanish. Smooth spheres nearly do; rough ones stay grey, and at α = 1 most of the light ' +
       'arriving head-on is lost (the table has the figures).',
   },
+  {
+    id: 'microfacets-furnace-fixed', section: 'microfacets', widget: 'energy', title: 'The lost energy, found',
+    state: { compensation: 'kullaConty', metal: 'gold', metalAlpha: 0.8 },
+    text: 'With an energy compensation switched on the spheres vanish at every roughness: the dropped light is put ' +
+      'back. On a metal it matters most. Rough gold (α = 0.8) seen head-on reflects 43% of red, 30% of green and ' +
+      '12% of blue light in one bounce; followed through every bounce (the random walk) it reflects 100%, 56% and ' +
+      '16%: brighter, and more saturated, since a channel that reflects more also gets more of its lost light ' +
+      'back. Kulla–Conty comes within 0.02 of the walk; Turquin overshoots green by 0.03.',
+  },
+  {
+    id: 'microfacets-multiple-lobe', section: 'microfacets', widget: 'brdf-lobe', title: 'Putting the lost light back',
+    state: { multiple: true, alpha: 1, F: 'one', lightTheta: 30, viewTheta: 20 },
+    text: 'The talk stops at the loss; renderers since Kulla & Conty (2017) add it back as a second, nearly diffuse ' +
+      'lobe (dotted), built so that the white furnace closes. The dots are the truth it approximates: light walked ' +
+      'from facet to facet until it escapes (Heitz et al. 2016). At α = 1 with F = 1 the returned lobe is larger ' +
+      'than the single-scattering one here: 0.24 against 0.09 per steradian at these angles.',
+  },
 
   // 5. Fresnel reflectance
   {

@@ -45,7 +45,7 @@ describe('exercises', () => {
   it('solves each exercise through its controls, and grades a wrong answer wrong with what is off', async () => {
     const page = await open(browser, 'exercises.html', { width: 1280, height: 1000 });
     await page.waitForSelector('#exercise-list a');
-    expect(await page.$$eval('#exercise-list a', (as) => as.length)).toBe(10);
+    expect(await page.$$eval('#exercise-list a', (as) => as.length)).toBe(11);
 
     await choose(page, 'water-red-depth');
     await typeAnswer(page, '5');
@@ -94,6 +94,14 @@ describe('exercises', () => {
     await typeAnswer(page, '31');
     expect((await check(page)).ok).toBe(true);
 
+    // the random walk gives 24.4 points (node: randomWalkAlbedoGGX(1, 0.75, 0.71, 1e5, 1)); Kulla & Conty's 22.7, from
+    // the furnace table's E = 0.4639 and E_avg = 0.5361, passes too
+    await choose(page, 'rough-metal-gain');
+    await typeAnswer(page, '5');
+    expect((await check(page)).text).toMatch(/5 points is too low by 19\.\d points/);
+    await typeAnswer(page, '22.7');
+    expect((await check(page)).ok).toBe(true);
+
     await choose(page, 'red-zone');
     r = await check(page);
     expect(r.ok).toBe(false);
@@ -132,21 +140,21 @@ describe('exercises', () => {
     await typeAnswer(page, '1.5');
     expect((await check(page)).ok).toBe(true);
 
-    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('10 of 10 solved');
+    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('11 of 11 solved');
     expect(page.errors).toEqual([]);
 
     // progress survives a reload; Reset (confirmed) clears it
     await page.reload({ waitUntil: 'load' });
     await page.waitForSelector('#exercise-list a');
-    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('10 of 10 solved');
+    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('11 of 11 solved');
     expect(await page.$eval('#exercise-list a[href="#lake-mirror"]', (a) => a.parentElement.textContent)).toContain('✓ solved');
     page.once('dialog', (d) => d.accept());
     await page.click('.exercise-reset');
     await settle(page, 100);
-    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 10 solved');
+    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 11 solved');
     await page.reload({ waitUntil: 'load' });
     await page.waitForSelector('#exercise-list a');
-    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 10 solved');
+    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 11 solved');
     expect(page.errors).toEqual([]);
     await page.close();
   }, 240_000);

@@ -107,7 +107,7 @@ describe('energy (white furnace)', () => {
     const albedos = await page.evaluate(() => globalThis.__shadingLab.widgets['energy'].getAlbedos());
     console.log(`albedo: ${albedos.map((a) => `α ${a.alpha}: E(1) ${a.atNormal.toFixed(4)}, E_avg ${a.average.toFixed(4)}`).join('; ')}`);
     expect(albedos[1].atNormal).toBeCloseTo(1 - Math.log(2), 6);
-    expect(Object.keys(await getState(page, 'energy'))).toEqual(['alphas']);
+    expect(Object.keys(await getState(page, 'energy'))).toEqual(['alphas', 'compensation', 'metal', 'metalAlpha']);
     // read the rendered centres back: cell i of 2 spans half the canvas
     const png = await shot(page, '.sphere-grid canvas');
     const centres = await redAt(page, png, [[0.25, 0.5], [0.75, 0.5]]);

@@ -95,6 +95,17 @@ describe('albedo-loss', () => {
   });
 });
 
+describe('multiple-scattering-gain', () => {
+  it('grades against the random walk, whose gain with F0 = 1 is the furnace loss 1 − E (independent quadrature: ln 2 at α = 1)', () => {
+    // F = 1: every path leaves with weight 1, so all bounces give 100% and the gain is what one bounce loses
+    const ok = grade('multiple-scattering-gain', { answer: 100 * Math.LN2, params: { alpha: 1, f0: 1, thetaDeg: 0 }, tolerance: 0.5 });
+    expect(ok.ok).toBe(true);
+    const low = grade('multiple-scattering-gain', { answer: 5, params: { alpha: 0.75, f0: 0.71, thetaDeg: 0 }, tolerance: 3 });
+    expect(low.ok).toBe(false);
+    expect(low.details[0]).toMatch(/^More comes back/);
+  }, 30_000);
+});
+
 describe('light-zone', () => {
   it('takes l·h = cos(θ/2) from the vectors and tells how far to move', () => {
     // l at 160° from v = (0,0,1): h = normalize(l + v), l·h

@@ -14,11 +14,11 @@ const good = () => JSON.parse(readFileSync(join(DIR, 'water-red-depth.json'), 'u
 const errorsOf = async (raw) => (await validateExercise(raw, { schemaOf })).errors;
 
 describe('shipped exercises', () => {
-  it('the index loads ten valid exercises over eight chapters', async () => {
+  it('the index loads eleven valid exercises over eight chapters', async () => {
     const index = JSON.parse(readFileSync(join(DIR, 'index.json'), 'utf8'));
     const { exercises, problems } = await readExerciseSet(index, { source: 'index.json', baseUrl: 'http://x/exercises/index.json', schemaOf, load: fromDisk });
     expect(problems).toEqual([]);
-    expect(exercises).toHaveLength(10);
+    expect(exercises).toHaveLength(11);
     expect(new Set(exercises.map((e) => e.chapter))).toEqual(new Set(['media', 'surfaces', 'brdf', 'microfacets', 'fresnel', 'ndf', 'visibility', 'diffuse']));
   });
 
@@ -39,7 +39,7 @@ describe('validator messages', () => {
     ['locked key unknown', { locked: ['medium', 'colour'] }, ['locked: "colour" is not a state key of widget "media"']],
     ['missing tolerance', { tolerance: undefined }, ['tolerance: missing (a positive number)']],
     ['negative tolerance', { tolerance: -1 }, ['tolerance: -1 is not a positive number']],
-    ['unknown grader', { grader: 'guess' }, ['grader: unknown grader "guess" (graders: transmittance-depth, fresnel-reflectance-angle, sphere-match, smith-g1, albedo-loss, light-zone, schlick-worst-angle, ndf-profile, visibility-ratio, lambert-radiance)']],
+    ['unknown grader', { grader: 'guess' }, ['grader: unknown grader "guess" (graders: transmittance-depth, fresnel-reflectance-angle, sphere-match, smith-g1, albedo-loss, multiple-scattering-gain, light-zone, schlick-worst-angle, ndf-profile, visibility-ratio, lambert-radiance)']],
     ['unknown param', { params: { channel: 'r', depth: 3 } }, ['params.depth: unknown for grader "transmittance-depth" (params: channel, threshold)']],
     ['param out of range', { params: { threshold: 2 } }, ['params.threshold: 2 is outside 0.000001…0.99']],
     ['unknown chapter', { chapter: 'optics' }, ['chapter: "optics" is not a chapter (chapters: media, surfaces, brdf, microfacets, fresnel, ndf, visibility, diffuse, rendering, performance)']],

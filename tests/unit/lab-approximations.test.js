@@ -51,3 +51,15 @@ describe('the sky environment', () => {
     expect(ENVIRONMENTS.sky).toContain(`enlarged sun (${radiusDeg.toFixed(0)}°, the real one ${realDeg.toFixed(2)}°)`);
   });
 });
+
+describe('material lab: multiple-scattering compensation notes', () => {
+  it('say nothing without compensation; name the method, the split sum\'s irradiance form, the mirror\'s lack of one, and foreign D/V', () => {
+    expect(approximationNotes(scene({ compensation: 'none' }, { env })).join(' ')).not.toContain('Multiple scattering');
+    const kc = approximationNotes(scene({ compensation: 'kullaConty' }, { env })).join(' ');
+    expect(kc).toContain('Kulla & Conty’s lobe');
+    expect(kc).toContain('multiplies the irradiance');
+    const mirror = approximationNotes(scene({ compensation: 'turquin', D: 'beckmann' }, { env }, { env: 'mirror' })).join(' ');
+    expect(mirror).toContain('The mirror method has no form for it');
+    expect(mirror).toContain('stand in for Beckmann');
+  });
+});

@@ -81,6 +81,18 @@ export function diffuseUnderSurround({ terms, lights, methods }) {
     `(irradiance × c_diff/π) while the reference uses ${name}: that substitution is part of the error image.`;
 }
 
+/** How each method treats the chosen energy compensation (its tables are GGX with height-correlated Smith). */
+export function compensationNote({ terms, lights, methods }) {
+  if (!terms.compensation || terms.compensation === 'none') return null;
+  const name = terms.compensation === 'turquin' ? 'Turquin’s factor' : 'Kulla & Conty’s lobe';
+  const tables = terms.D === 'ggx' && terms.V === 'smithGGXCorrelated' ? ''
+    : ` Its tables are for GGX with height-correlated Smith; here they stand in for ${LAB_TERMS.ndf[terms.D]}.`;
+  const env = lights.env && methods.env === 'mirror' ? ' The mirror method has no form for it and leaves it out.' : '';
+  const split = lights.env && methods.env === 'split-sum' && terms.compensation === 'kullaConty'
+    ? ' Under the split sum the lobe’s albedo F_ms (1 − E) multiplies the irradiance (Fdez-Agüera 2019).' : '';
+  return `Multiple scattering: ${name} in the reference and every method that evaluates the BRDF.${split}${env}${tables}`;
+}
+
 const PMREM_NOTE =
   'three.js PMREM: MeshPhysicalMaterial shades with three.js’s own model whatever terms are chosen (GGX, ' +
   'height-correlated Smith, Schlick’s F, Lambert, plus its multiple-scattering term and a diffuse reduced by the ' +
@@ -93,5 +105,7 @@ export function approximationNotes(scene) {
   const surround = diffuse ? diffuseUnderSurround(scene) : null;
   if (surround) notes.push(surround);
   if (scene.lights.env && scene.methods.env === 'pmrem') notes.push(PMREM_NOTE);
+  const compensation = specular ? compensationNote(scene) : null;
+  if (compensation) notes.push(compensation);
   return notes;
 }

@@ -8,6 +8,7 @@ import * as THREE from 'three';
 import { assembleGlsl } from '../glsl.js';
 import { SHADER_CHUNKS } from '../shader-chunks.js';
 import { createGpuSum, floatTarget } from '../gpu-sum.js';
+import { createAlbedoTableTexture } from '../albedo-table-texture.js';
 import { PREFILTER_LEVELS } from './environment-maps.js';
 import { approximationInputs } from './lab-approximations.js';
 
@@ -17,6 +18,7 @@ export const REFERENCE_BATCH = 8; // samples per pixel and light in one referenc
 const DIFFUSE_DEFINES = { 'fresnel-weighted': 'DIFFUSE_FRESNEL_WEIGHTED', 'ashikhmin-shirley': 'DIFFUSE_ASHIKHMIN_SHIRLEY', 'oren-nayar': 'DIFFUSE_OREN_NAYAR', 'oren-nayar-qualitative': 'DIFFUSE_OREN_NAYAR_QUALITATIVE' };
 const NDF_DEFINES = { beckmann: 'NDF_BECKMANN' };
 const VIS_DEFINES = { implicit: 'VIS_IMPLICIT', cookTorrance: 'VIS_COOK_TORRANCE', kelemen: 'VIS_KELEMEN', smithGGXSeparable: 'VIS_SMITH_GGX_SEPARABLE', schlickGGX: 'VIS_SCHLICK_GGX' };
+const COMPENSATION_DEFINES = { kullaConty: 'COMPENSATION_KULLA_CONTY', turquin: 'COMPENSATION_TURQUIN' };
 const ENV_DEFINES = { mirror: 'ENV_MIRROR', importance: 'ENV_IMPORTANCE', 'split-sum': 'ENV_SPLIT_SUM' };
 
 /** The #defines of one program: only the terms, lights and methods in use are compiled. */
@@ -27,6 +29,10 @@ export function sceneDefines(scene, reference) {
   flag(NDF_DEFINES[scene.terms.D]);
   flag(VIS_DEFINES[scene.terms.V]);
   if (scene.terms.F === 'one') flag('F_ONE');
+  if (scene.terms.compensation && scene.terms.compensation !== 'none') {
+    flag(COMPENSATION_DEFINES[scene.terms.compensation]);
+    flag('ALBEDO_TABLE_GGX');
+  }
   if (scene.terms.layers === 'diffuse') flag('SPECULAR_OFF');
   if (scene.terms.layers === 'specular') flag('DIFFUSE_OFF');
   const { punctual, sphere, env, ambient } = scene.lights;
@@ -60,6 +66,7 @@ export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
     uSphereDir: { value: new THREE.Vector3(0, 0, 1) }, uSphereSin: { value: 0.1 }, uSphereRadiance: { value: new THREE.Vector3() },
     uEnv: { value: null }, uEnvIntensity: { value: 1 }, uAmbient: { value: new THREE.Vector3() },
     uPrefiltered: { value: null }, uPrefilterLevels: { value: PREFILTER_LEVELS }, uIrradiance: { value: null }, uDfg: { value: null },
+    uAlbedoTableGGX: { value: null }, // the albedo-loss table, made when a compensation is first chosen
     uEnvMarginal: { value: null }, uEnvConditional: { value: null }, uEnvPdf: { value: null }, uEnvSampling: { value: false },
     uSamples: { value: 16 }, uJitter: { value: new THREE.Vector2() }, uPrevious: { value: null }, uWeight: { value: 1 },
   };
@@ -86,6 +93,7 @@ export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
   orthoCamera.position.z = 5;
 
   const setUniforms = (scene, reference) => {
+    if (scene.terms.compensation !== 'none') uniforms.uAlbedoTableGGX.value ??= createAlbedoTableTexture();
     const { material, lights } = scene;
     const m = scene.maps;
     uniforms.uEnv.value = m.env;
@@ -206,6 +214,7 @@ export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
     dispose() {
       [...approxTargets, ...ping, errorTarget, errorPass, pmremMaterial, pmremSphere.geometry, quad.geometry].forEach((x) => x.dispose());
       programs.forEach((p) => p.dispose());
+      uniforms.uAlbedoTableGGX.value?.dispose();
       sum.dispose();
     },
   };

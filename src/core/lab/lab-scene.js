@@ -31,7 +31,10 @@ export function materialOf(state) {
 export function labScene(state, lights) {
   return {
     material: materialOf(state),
-    terms: { F: state.fresnel, D: state.ndf, V: state.visibility, diffuse: state.diffuseModel, layers: state.layers },
+    terms: {
+      F: state.fresnel, D: state.ndf, V: state.visibility, diffuse: state.diffuseModel, layers: state.layers,
+      compensation: state.compensation ?? 'none',
+    },
     lights,
     methods: { env: state.envMethod, area: state.areaMethod, samples: state.samples },
   };

@@ -12,6 +12,7 @@ import { TERMS } from '../visibility-explorer/visibility-explorer.js';
 import { createPolarPlot } from './polar-plot.js';
 import { createLobeView } from './lobe-view.js';
 import { createHalfDiffImage } from './half-diff-image.js';
+import { WALK_ANGLES, hasMultipleLobe, kullaContyLobe, walkMultiplePart } from './multiple-lobe.js';
 
 const DEG = Math.PI / 180;
 const ndfOptions = Object.fromEntries(Object.keys(NDF_TERMS).map((k) => [k, NDFS[k].name]));
@@ -30,6 +31,7 @@ export const schema = {
   useG: { type: 'bool', default: true, label: 'Factor G' },
   useDenominator: { type: 'bool', default: true, label: '÷ 4(n·l)(n·v)' },
   cosine: { type: 'bool', default: false, label: 'Lobe × n·v (intensity)' },
+  multiple: { type: 'bool', default: false, label: 'Multiple scattering (A, GGX)' },
   compare: { type: 'bool', default: false, label: 'Overlay BRDF B' },
   D2: { type: 'enum', options: ndfOptions, default: 'beckmann', label: 'B: D' },
   V2: { type: 'enum', options: visOptions, default: 'smithBeckmannSeparable', label: 'B: V' },
@@ -45,7 +47,9 @@ const ABOUT =
   '× n·v multiplies the lobe by the cosine of the view, showing how much light leaves towards each direction; the ' +
   'reflectance equation’s cosine is another one, n·l, of the incoming light. Roughness is GGX’s α; other NDFs take ' +
   'the parameters that give them the same half width. The image over (θh, θd) shows the same BRDF in the ' +
-  'angles it really depends on; the albedo plot integrates it over all light directions.';
+  'angles it really depends on; the albedo plot integrates it over all light directions. Multiple scattering adds, ' +
+  'dotted, the light that bounces between microfacets before it leaves (Kulla & Conty 2017), nearly diffuse in shape, ' +
+  'with dots from the random walk on the microsurface (Heitz et al. 2016) that it approximates.';
 
 const lightDir = (deg) => [-Math.sin(deg * DEG), 0, Math.cos(deg * DEG)];
 const viewDir = (deg) => [Math.sin(deg * DEG), 0, Math.cos(deg * DEG)];
@@ -55,7 +59,35 @@ function brdfSpec(state, which) {
   return { D, V, F: state.F, f0: state.f0, ...ndfParamsMatchingGGX(D, alpha), samplingAlpha: alpha, label: `${which}: ${NDFS[D].name.split(' (')[0]} + ${TERMS[V].name}` };
 }
 
-const TERMS_USED = ['microfacetBRDF', 'fresnelSchlick', 'ndfGGX', 'ndfBeckmann', 'ndfBlinnPhong', 'ndfABC', 'ndfSGD', 'visibilitySmithGGXCorrelated'];
+const TERMS_USED = ['microfacetBRDF', 'fresnelSchlick', 'ndfGGX', 'ndfBeckmann', 'ndfBlinnPhong', 'ndfABC', 'ndfSGD', 'visibilitySmithGGXCorrelated', 'multipleScatteringKullaConty', 'fresnelMultipleScatteringKullaConty'];
+
+const multipleF0 = (s) => (s.F === 'one' || !s.useF ? 1 : s.f0); // F = 1 when Fresnel is off
+const kullaContyAt = (s, l, v) => kullaContyLobe(l, v, s.alpha, multipleF0(s));
+
+/** The dotted lobe and the walk's dots when multiple scattering is on (and defined for A), else nulls. */
+function multipleScattering(s, A, l) {
+  if (!s.multiple || !hasMultipleLobe(A)) return { lobe: null, points: null };
+  const f0 = multipleF0(s);
+  const weight = (v) => (s.cosine ? Math.max(v[2], 0) : 1);
+  const lobe = Array.from({ length: 357 }, (_, i) => {
+    const v = viewDir(-89 + i * 0.5);
+    return [-89 + i * 0.5, kullaContyLobe(l, v, s.alpha, f0) * weight(v)];
+  });
+  const points = WALK_ANGLES.map((theta, i) => {
+    const v = viewDir(theta);
+    const w = walkMultiplePart(l, v, s.alpha, f0, 1 + i);
+    return [theta, w.value * weight(v), w.error * weight(v)];
+  });
+  return { lobe, points };
+}
+
+function multipleWords(s, A, ms) {
+  if (!s.multiple) return '';
+  if (!ms.lobe) return ' Multiple scattering is shown for GGX with height-correlated Smith only: choose those for A.';
+  const at = (theta) => ms.lobe[Math.round((theta + 89) * 2)][1];
+  return ` Dotted: the multiple-scattering lobe of Kulla & Conty (${at(0).toPrecision(3)} /sr at 0°, ${at(60).toPrecision(3)} at 60°), ` +
+    `with dots from the random walk (${ms.points.find((p) => p[0] === 5)[1].toPrecision(3)} ± ${ms.points.find((p) => p[0] === 5)[2].toPrecision(1)} at 5°).`;
+}
 
 export function createBrdfLobe(container, initialState = {}, { onStateChange } = {}) {
   const shell = createWidgetShell(container, { name: 'brdf-lobe', schema, initialState, about: ABOUT, terms: TERMS_USED });
@@ -108,9 +140,10 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange } =
     });
     const lobeA = lobeOf(A);
     const lobeB = B ? lobeOf(B) : null;
-    const max = Math.max(...lobeA.map((x) => x[1]), ...(lobeB ?? []).map((x) => x[1]), 1e-9);
+    const ms = multipleScattering(s, A, l);
+    const max = Math.max(...[lobeA, lobeB, ms.lobe, ms.points].flatMap((lobe) => (lobe ?? []).map((x) => x[1])), 1e-9);
     const a = brdfAngles(l, v);
-    polar.draw({ lobeA, lobeB, max, lightTheta: s.lightTheta, viewTheta: s.viewTheta, halfTheta: a.h ? Math.atan2(a.h[0], a.h[2]) / DEG : null });
+    polar.draw({ lobeA, lobeB, lobeMS: ms.lobe, points: ms.points, max, lightTheta: s.lightTheta, viewTheta: s.viewTheta, halfTheta: a.h ? Math.atan2(a.h[0], a.h[2]) / DEG : null });
     const peakOf = (lobe) => lobe.reduce((a, x) => (x[1] > a[1] ? x : a));
     const off = ['F', 'D', 'G'].filter((k) => !s[`use${k}`]).concat(s.useDenominator ? [] : ['the denominator']);
     const what = `${s.cosine ? 'f(l, v) × n·v' : 'f(l, v)'} for ${A.label}${B ? ` and, dashed, ${B.label}` : ''}${off.length ? ` with ${off.join(', ')} switched off` : ''}`;
@@ -118,7 +151,7 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange } =
       const [theta, value] = peakOf(lobe);
       return `${p.label.slice(0, 1)} peaks at ${theta.toFixed(1)}° (${value.toPrecision(3)} /sr)`;
     });
-    shell.describe(`Polar plot in the plane of incidence: ${what}. Light ${s.lightTheta}° from n on the left, view at ${s.viewTheta}°, mirror direction at ${s.lightTheta}°. ${peaks.join('; ')}.`, polar.canvas);
+    shell.describe(`Polar plot in the plane of incidence: ${what}. Light ${s.lightTheta}° from n on the left, view at ${s.viewTheta}°, mirror direction at ${s.lightTheta}°. ${peaks.join('; ')}.${multipleWords(s, A, ms)}`, polar.canvas);
     const max3d = Math.max(max, 1e-9);
     lobe3d.update({
       fA: f(A), fB: B ? f(B) : null, max: max3d,
@@ -148,7 +181,9 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange } =
       return `<tr><td>${p.label}</td><td>${terms.F.toFixed(4)}</td><td>${terms.D.toPrecision(4)}</td><td>${terms.G.toFixed(4)}</td><td>${t.toPrecision(4)}</td></tr>`;
     });
     readout.innerHTML = `<table class="data-table compact"><caption>At l = ${s.lightTheta}°, v = ${s.viewTheta}°: n·l ${a.nl.toFixed(3)}, n·v ${a.nv.toFixed(3)}, n·h ${a.nh.toFixed(3)}, l·h ${a.lh.toFixed(3)}</caption>` +
-      `<thead><tr><th>BRDF</th><th>F</th><th>D (1/sr)</th><th>G</th><th>f = FDG/(4 n·l n·v) (1/sr)</th></tr></thead><tbody>${rows.join('')}</tbody></table>`;
+      `<thead><tr><th>BRDF</th><th>F</th><th>D (1/sr)</th><th>G</th><th>f = FDG/(4 n·l n·v) (1/sr)</th></tr></thead><tbody>${rows.join('')}</tbody></table>` +
+      (ms.lobe ? `<p class="multiple-readout">Multiple scattering at v (A): Kulla–Conty ${kullaContyAt(s, l, v).toPrecision(3)} /sr` +
+        ` beside single scattering ${microfacetBRDF(l, v, A).toPrecision(3)} /sr (dotted lobe; dots: the random walk, bars ± 2 standard errors).</p>` : '');
   };
 
   const updateState = shell.connect({ title: 'BRDF lobe', onChanged: render, onStateChange });

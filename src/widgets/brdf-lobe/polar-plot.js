@@ -5,7 +5,7 @@
 import { sizeCanvas2d } from '../../core/canvas2d.js';
 
 const DEG = Math.PI / 180;
-const COLORS = { light: '#e6a700', view: '#0072b2', half: '#cc79a7', mirror: '#777', grid: '#0000001f', a: '#d55e00', b: '#009e73' };
+const COLORS = { light: '#e6a700', view: '#0072b2', half: '#cc79a7', mirror: '#777', grid: '#0000001f', a: '#d55e00', b: '#009e73', ms: '#56b4e9' };
 
 export function createPolarPlot(container, { onDrag }) {
   const figure = document.createElement('figure');
@@ -59,8 +59,8 @@ export function createPolarPlot(container, { onDrag }) {
     ctx.stroke();
     ctx.textAlign = 'left';
     ctx.fillText('surface', g.cx - g.R * 1.05, g.cy + 12);
-    // lobes
-    for (const [lobe, color, fill] of [[spec.lobeA, COLORS.a, true], [spec.lobeB, COLORS.b, false]]) {
+    // lobes: A filled, B dashed, the multiple-scattering lobe dotted
+    for (const [lobe, color, fill, dash] of [[spec.lobeA, COLORS.a, true, []], [spec.lobeB, COLORS.b, false, [6, 4]], [spec.lobeMS, COLORS.ms, false, [2, 3]]]) {
       if (!lobe) continue;
       ctx.beginPath();
       lobe.forEach(([theta, value], i) => {
@@ -71,7 +71,7 @@ export function createPolarPlot(container, { onDrag }) {
       ctx.closePath();
       ctx.strokeStyle = color;
       ctx.lineWidth = 2;
-      ctx.setLineDash(fill ? [] : [6, 4]);
+      ctx.setLineDash(dash);
       ctx.stroke();
       if (fill) {
         ctx.fillStyle = `${color}33`;
@@ -79,6 +79,18 @@ export function createPolarPlot(container, { onDrag }) {
       }
     }
     ctx.setLineDash([]);
+    // the random walk's values, with bars of ± 2 standard errors along the radius
+    for (const [theta, value, error] of spec.points ?? []) {
+      ctx.strokeStyle = ctx.fillStyle = COLORS.ms;
+      ctx.lineWidth = 1.5;
+      ctx.beginPath();
+      ctx.moveTo(...toXY(g, theta, Math.max(value - 2 * error, 0) / spec.max));
+      ctx.lineTo(...toXY(g, theta, (value + 2 * error) / spec.max));
+      ctx.stroke();
+      ctx.beginPath();
+      ctx.arc(...toXY(g, theta, value / spec.max), 3.5, 0, 2 * Math.PI);
+      ctx.fill();
+    }
     // directions
     const arrow = (theta, color, label, dash = []) => {
       const [x, y] = toXY(g, theta, 1);

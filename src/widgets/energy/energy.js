@@ -1,13 +1,18 @@
 // energy: the white furnace. With F = 1 a microfacet BRDF should send back all the light it receives, but
 // the model drops every ray that a second microfacet blocks. Directional albedo E(mu) against angle for a
 // sweep of roughness, the energy lost 1 - E, and spheres in a uniform white environment, each pixel reading
-// E(n·v) from the split-sum table (the same float64 quadrature, bilinear on the GPU).
+// E(n·v) from the split-sum table (the same float64 quadrature, bilinear on the GPU). A compensation switch puts
+// the lost energy back (Kulla & Conty 2017, Turquin 2019), and a coloured metal's albedo is set beside the walk.
 import { createWidgetShell } from '../../core/widget-shell.js';
 import { createPlot } from '../../core/plot.js';
 import { createSphereGrid } from '../../core/sphere-grid.js';
 import { seriesStyle } from '../../core/palettes.js';
 import { createDfgTexture } from '../../core/lab/environment-maps.js';
+import { createAlbedoTableTexture, albedoTableOnce } from '../../core/albedo-table-texture.js';
 import { albedoGGX, averageAlbedo } from '../../math/integrate.js';
+import { specularAlbedoFromTable } from '../../math/albedo-table.js';
+import { METALS } from '../../math/materials.js';
+import { createMetalView } from './metal-view.js';
 
 export const schema = {
   alphas: {
@@ -17,6 +22,16 @@ export const schema = {
     default: ['0.05', '0.25', '0.5', '0.75', '1.0'],
     label: 'Roughness sweep',
   },
+  compensation: { type: 'enum', options: { none: 'None', kullaConty: 'Kulla–Conty 2017', turquin: 'Turquin 2019' }, default: 'none', label: 'Energy compensation' },
+  metal: { type: 'enum', options: Object.fromEntries(METALS.map((m) => [m.key, m.name])), default: 'gold', label: 'Coloured metal' },
+  metalAlpha: { type: 'number', min: 0.05, max: 1, step: 0.05, default: 0.8, label: 'Metal roughness α' },
+};
+
+// the spheres' shader variant per compensation
+const FURNACE_DEFINES = {
+  none: { FURNACE: true },
+  kullaConty: { FURNACE: true, FURNACE_KULLA_CONTY: true, ALBEDO_TABLE_GGX: true },
+  turquin: { FURNACE: true, FURNACE_TURQUIN: true, ALBEDO_TABLE_GGX: true },
 };
 
 const ABOUT =
@@ -25,7 +40,11 @@ const ABOUT =
   'nearly vanish; rough ones turn grey, most of all at the centre, because light blocked by one microfacet is ' +
   'simply dropped instead of bouncing on (the talk’s multiple-bounce slide). The plots give E(μ) = ∫ f (n·l) dω ' +
   'by deterministic quadrature over the microfacet normals, and each sphere pixel reads E(n·v) from a texture ' +
-  'precomputed with it; the table below gives E head-on and its cosine-weighted average over all directions.';
+  'precomputed with it; the table below gives E head-on and its cosine-weighted average over all directions. ' +
+  'Energy compensation puts the dropped light back: Kulla & Conty (2017) add a second, nearly diffuse lobe, ' +
+  'Turquin (2019) scales the first; with F = 1 both make every sphere vanish. Below, a coloured metal shows what ' +
+  'they cost and buy against the random walk on the microsurface (Heitz et al. 2016), the light followed from ' +
+  'facet to facet.';
 
 const ANGLES = Float64Array.from({ length: 90 }, (_, i) => i + 0.5); // view angles 0.5°..89.5°
 const DEG = Math.PI / 180;
@@ -41,7 +60,7 @@ function sweep(state) {
   });
 }
 
-const TERMS_USED = ['dfgTableUv', 'visibilitySmithGGXCorrelated', 'ndfGGX'];
+const TERMS_USED = ['dfgTableUv', 'visibilitySmithGGXCorrelated', 'ndfGGX', 'specularAlbedoKullaConty', 'specularAlbedoTurquin'];
 
 export function createEnergy(container, initialState = {}, { onStateChange } = {}) {
   const shell = createWidgetShell(container, { name: 'energy', schema, initialState, about: ABOUT, terms: TERMS_USED });
@@ -50,7 +69,9 @@ export function createEnergy(container, initialState = {}, { onStateChange } = {
   const spheres = createSphereGrid(shell.view, { label: 'Spheres in a white furnace', background: '#ffffff' });
   const table = document.createElement('div');
   shell.view.append(table);
+  const metalView = createMetalView(shell.view);
   const dfg = createDfgTexture(); // GGX, height-correlated Smith: scale + bias is E
+  let lossTable = null; // the albedo-loss table, made when a compensation is first chosen
   let data = sweep(shell.state);
 
   const base = { xLabel: 'View angle θv (degrees)', x: { min: 0, max: 90 }, xValues: (u, t) => t.map((v) => `${v}°`) };
@@ -70,24 +91,34 @@ export function createEnergy(container, initialState = {}, { onStateChange } = {
       '<thead><tr><th>α</th><th>E at normal incidence</th><th>E averaged over the hemisphere</th><th>energy lost on average</th></tr></thead><tbody>' +
       data.map((d) => `<tr><td><span class="swatch" style="background:${d.stroke}"></span> ${d.alpha}</td><td>${d.atNormal.toFixed(4)}</td><td>${d.avg.toFixed(4)}</td><td>${((1 - d.avg) * 100).toFixed(1)}%</td></tr>`).join('') +
       '</tbody></table>';
+    const comp = shell.state.compensation;
+    if (comp !== 'none') lossTable ??= createAlbedoTableTexture();
     spheres.setCells(data.map((d) => ({
       label: `α = ${d.alpha}`,
-      defines: { FURNACE: true },
-      uniforms: { uAlpha: d.alpha, uDfg: dfg },
+      defines: FURNACE_DEFINES[comp],
+      uniforms: { uAlpha: d.alpha, uDfg: dfg, uAlbedoTableGGX: lossTable },
       probe: (a) => {
         const e = albedoGGX(a.nv, d.alpha);
-        return [['E(n·v), F = 1', e.toFixed(4)], ['energy lost', `${((1 - e) * 100).toFixed(1)}%`]];
+        const rows = [['E(n·v), F = 1', e.toFixed(4)], ['energy lost', `${((1 - e) * 100).toFixed(1)}%`]];
+        if (comp === 'none') return rows;
+        return [...rows, [`with ${schema.compensation.options[comp]}`, specularAlbedoFromTable(albedoTableOnce(), a.nv, d.alpha, 1, comp).toFixed(4)]];
       },
     })));
-    shell.describe('Spheres in a uniform white environment (F = 1); a sphere that loses no energy vanishes into it. ' +
-      `${data.map((d) => `α ${d.alpha}: albedo ${d.atNormal.toFixed(3)} head-on, ${d.avg.toFixed(3)} on average, ${((1 - d.avg) * 100).toFixed(1)}% lost`).join('; ') || 'No roughness chosen'}.`, spheres.canvas);
+    const metal = metalView.update(shell.state.metal, shell.state.metalAlpha);
+    const compensated = comp === 'none' ? '' : ` With ${schema.compensation.options[comp]} every sphere reflects all of it and vanishes.`;
+    shell.describe('Spheres in a uniform white environment (F = 1); a sphere that loses no energy vanishes into it.' + compensated + ' ' +
+      `${data.map((d) => `α ${d.alpha}: albedo ${d.atNormal.toFixed(3)} head-on, ${d.avg.toFixed(3)} on average, ${((1 - d.avg) * 100).toFixed(1)}% lost`).join('; ') || 'No roughness chosen'}. ` +
+      `${metal.metal.name} at α ${metal.alpha} head-on: single scattering ${metal.curves.none[0].map((x) => x.toFixed(2)).join(', ')}, ` +
+      `random walk ${metal.walk[0].albedo.map((x) => x.toFixed(2)).join(', ')} (R, G, B).`, spheres.canvas);
   };
   render();
 
-  const onChanged = () => {
-    data = sweep(shell.state);
-    ePlot.setData(eSpec());
-    lossPlot.setData(lossSpec());
+  const onChanged = (changed) => {
+    if (changed.includes('alphas')) {
+      data = sweep(shell.state);
+      ePlot.setData(eSpec());
+      lossPlot.setData(lossSpec());
+    }
     render();
   };
   const update = shell.connect({ title: 'White furnace', onChanged, onStateChange });
@@ -100,7 +131,9 @@ export function createEnergy(container, initialState = {}, { onStateChange } = {
       ePlot.dispose();
       lossPlot.dispose();
       spheres.dispose();
+      metalView.dispose();
       dfg.dispose();
+      lossTable?.dispose();
       shell.dispose();
     },
   };

@@ -20,6 +20,10 @@ export const schema = {
   fresnel: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.fresnel, default: 'schlick', label: 'F' },
   ndf: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.ndf, default: 'ggx', label: 'D' },
   visibility: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.visibility, default: 'smithGGXCorrelated', label: 'V' },
+  compensation: {
+    group: 'BRDF terms', type: 'enum', options: { none: 'None', kullaConty: 'Kulla–Conty 2017', turquin: 'Turquin 2019' },
+    default: 'none', label: 'Multiple scattering',
+  },
   diffuseModel: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.diffuse, default: 'lambert', label: 'Diffuse term' },
   sigma: { group: 'BRDF terms', type: 'number', min: 0, max: 60, step: 1, default: 20, label: 'Oren-Nayar σ', unit: '°' },
   punctual: { group: 'Punctual light', type: 'bool', default: false, label: 'Punctual light' },
@@ -52,8 +56,10 @@ const ABOUT =
   'ambient light are integrals that the approximations shortcut: a representative point, a prefiltered map with ' +
   'a DFG table (the split sum), a few importance samples, or the mirror direction alone. Each one uses the F, D ' +
   'and V chosen above where it has a form for them (a DFG table and a prefiltered map made for the chosen D and ' +
-  'V; F = 1 gives A + B); the lines under the images say what stands in where it has none. Drop an .hdr or .exr ' +
-  'panorama on the widget to light it with your own environment.';
+  'V; F = 1 gives A + B); the lines under the images say what stands in where it has none. Multiple scattering ' +
+  'puts back the light the microfacet model drops (Kulla & Conty 2017, or Turquin 2019), in both images, so the ' +
+  'error image shows what each method does with it. Drop an .hdr or .exr panorama on the widget to light it with ' +
+  'your own environment.';
 
 const TERMS_USED = ['microfacetBRDF', 'dfgSplitSum', 'sampleGGXNormal', 'sampleBeckmannNormal', 'sampleCosine', 'sampleCone', 'sphereLightRepresentativeDir', 'sphereLightNormalization', 'equirectUv', 'diffuseOrenNayar'];
 

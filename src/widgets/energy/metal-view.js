@@ -1,0 +1,78 @@
+// The energy widget's coloured-metal view: a metal's albedo per channel against the view angle with single
+// scattering, Kulla–Conty and Turquin (from the albedo table, as the spheres compute them) and random-walk
+// points, and the colours they give head-on: the bounces that come back make gold more saturated, since a
+// channel that reflects more also gets more of its lost light back.
+import { createPlot } from '../../core/plot.js';
+import { rgbToHex } from '../../core/palettes.js';
+import { albedoTableOnce } from '../../core/albedo-table-texture.js';
+import { linearToSrgb } from '../../math/color.js';
+import { materialByKey } from '../../math/materials.js';
+import { WALK_DEGREES, WALK_PATHS, albedoCurves, saturation, walkPoints } from './compensation.js';
+
+const CHANNELS = [['R', '#c0392b'], ['G', '#27ae60'], ['B', '#2c6fbb']];
+const MODELS = [
+  ['none', 'single scattering', [2, 4]], ['kullaConty', 'Kulla–Conty', undefined], ['turquin', 'Turquin', [9, 4]],
+];
+const DEGREES = [...new Set([...Array.from({ length: 45 }, (_, i) => 2 * i), ...WALK_DEGREES])].sort((a, b) => a - b);
+
+function model(metalKey, alpha) {
+  const metal = materialByKey(metalKey);
+  const curves = albedoCurves(albedoTableOnce(), alpha, metal.linear, DEGREES);
+  const walk = walkPoints(alpha, metal.linear);
+  return { metal, alpha, curves, walk };
+}
+
+function plotSpec({ metal, alpha, curves, walk }) {
+  const series = [];
+  const data = [DEGREES];
+  for (const [key, name, dash] of MODELS) {
+    CHANNELS.forEach(([ch, stroke], c) => {
+      series.push({ label: `${ch}, ${name}`, stroke, dash });
+      data.push(curves[key].map((rgb) => rgb[c]));
+    });
+  }
+  CHANNELS.forEach(([ch, stroke], c) => {
+    series.push({ label: `${ch}, random walk`, stroke, width: 0, points: true });
+    data.push(DEGREES.map((deg) => walk.find((p) => p.deg === deg)?.albedo[c] ?? null));
+  });
+  return {
+    title: `${metal.name} (linear F0 ${metal.linear.join(', ')}) at α = ${alpha}: albedo per channel, all bounces`,
+    xLabel: 'View angle θv (degrees)', yLabel: 'albedo', x: { min: 0, max: 90 }, y: { min: 0, max: 1.02 },
+    xValues: (u, t) => t.map((v) => `${v}°`), series, data, filename: `metal-albedo-${metal.key}`, height: 280,
+  };
+}
+
+function swatchTable({ metal, alpha, curves, walk }) {
+  const walkRow = [`random walk (${WALK_PATHS / 1000}k paths)`, walk[0].albedo];
+  const rows = [...MODELS.map(([key, name]) => [name, curves[key][0]]), walkRow];
+  const swatch = (rgb) => `<span class="swatch" style="background:${rgbToHex(rgb.map(linearToSrgb))}"></span>`;
+  return `<table class="data-table compact"><caption>${metal.name} at α = ${alpha}, seen head-on: the colour each ` +
+    'model gives (linear albedo, shown in sRGB)</caption><thead><tr><th>model</th><th>colour</th>' +
+    '<th>albedo R, G, B</th><th>saturation (1 − min/max)</th></tr></thead><tbody>' +
+    rows.map(([name, rgb]) => `<tr><td>${name}</td><td>${swatch(rgb)}</td><td>${rgb.map((x) => x.toFixed(3)).join(', ')}</td>` +
+      `<td>${saturation(rgb).toFixed(3)}</td></tr>`).join('') + '</tbody></table>';
+}
+
+export function createMetalView(container) {
+  const holder = document.createElement('div');
+  const swatches = document.createElement('div');
+  container.append(holder, swatches);
+  let plot = null;
+  let last = null;
+  return {
+    /** Recomputes (the walk takes a fraction of a second) when the metal or its roughness changed. */
+    update(metalKey, alpha) {
+      if (last && last.metal.key === metalKey && last.alpha === alpha) return last;
+      last = model(metalKey, alpha);
+      if (plot) plot.setData(plotSpec(last));
+      else plot = createPlot(holder, plotSpec(last));
+      swatches.innerHTML = swatchTable(last);
+      return last;
+    },
+    dispose() {
+      plot?.dispose();
+      holder.remove();
+      swatches.remove();
+    },
+  };
+}

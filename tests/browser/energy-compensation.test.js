@@ -1,0 +1,50 @@
+// The white furnace with energy compensation, in Chromium: with F = 1 both compensations give every sphere an
+// albedo of 1, so each pixel inside each sphere reads back as the white background (the truth: a surface that
+// loses nothing is invisible in the furnace); without compensation the rough sphere stays grey.
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { launchBrowser, open, settle, shot, widget, withPixels } from './helpers.js';
+
+let browser;
+beforeAll(async () => {
+  browser = await launchBrowser();
+});
+afterAll(async () => {
+  await browser?.close();
+});
+
+const ALPHAS = ['0.05', '0.5', '1.0']; // the sweep's option keys
+
+/** The darkest channel value inside each of the row's spheres (points within 0.9 of the radius). */
+function darkestPerSphere(page, png, cells) {
+  return withPixels(page, png, `(image) => Array.from({ length: ${cells} }, (_, i) => {
+    const cell = image.width / ${cells};
+    const radius = Math.min(cell, image.height) / 2 / 1.08; // the grid's camera half extent (sphere-grid.js)
+    const [cx, cy] = [cell * (i + 0.5), image.height / 2];
+    let darkest = 255;
+    for (let y = -0.9; y <= 0.9; y += 0.05) {
+      for (let x = -0.9; x <= 0.9; x += 0.05) {
+        if (x * x + y * y > 0.81) continue;
+        const k = (Math.round(cy + y * radius) * image.width + Math.round(cx + x * radius)) * 4;
+        darkest = Math.min(darkest, image.data[k], image.data[k + 1], image.data[k + 2]);
+      }
+    }
+    return darkest;
+  })`);
+}
+
+describe('energy: compensated furnace spheres', () => {
+  for (const compensation of ['kullaConty', 'turquin', 'none']) {
+    it(`${compensation}: ${compensation === 'none' ? 'the rough sphere stays grey' : 'every sphere reads back as the white background'}`, async () => {
+      const page = await open(browser, `embed.html?w=energy&alphas=${ALPHAS.join(',')}&compensation=${compensation}`, { width: 1200, height: 900 });
+      await widget(page, 'energy');
+      await settle(page, 1500);
+      expect((await page.evaluate(() => globalThis.__shadingLab.widgets['energy'].getAlbedos())).length).toBe(ALPHAS.length);
+      const darkest = await darkestPerSphere(page, await shot(page, '.sphere-grid canvas'), ALPHAS.length);
+      console.log(`furnace, ${compensation}: darkest 8-bit value inside the spheres α ${ALPHAS.join(', ')}: ${darkest.join(', ')}`);
+      if (compensation === 'none') expect(darkest[2]).toBeLessThan(200); // E(1) = 1 − ln 2 at α = 1: sRGB 150
+      else for (const d of darkest) expect(d).toBeGreaterThanOrEqual(254);
+      expect(page.errors).toEqual([]);
+      await page.close();
+    });
+  }
+});
