@@ -2,7 +2,8 @@
 // c_diff 0.3, the measured widget's synthetic plastic) is picked in the lab; its Monte Carlo reference over the
 // tabulated BRDF (a 3-D texture) must be the picture of the same GGX material's analytic reference, in the white
 // furnace and in the studio, within the Monte Carlo noise and the table's interpolation; importance sampling of
-// the fitted lobe must converge to the same reference; the methods without a form for a table say so.
+// the fitted lobe must meet the same reference in the furnace, and in the studio stay as close to it as the
+// analytic material's importance sampling does; the methods without a form for a table say so.
 import { mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -61,8 +62,10 @@ describe('material lab: a measured BRDF (a MERL file written from GGX) against t
   it('the analytic GGX material converges in the furnace and in the studio (the pictures to match)', async () => {
     await converged();
     analytic.furnace = await readReference();
+    analytic.furnaceStats = await lab();
     await setAndConverge({ environment: 'studio' });
     analytic.studio = await readReference();
+    analytic.studioStats = await lab();
     await setAndConverge({ environment: 'furnace' });
   }, 600_000);
 
@@ -91,10 +94,15 @@ describe('material lab: a measured BRDF (a MERL file written from GGX) against t
           expect(Math.abs(x - want), `point ${k}, channel ${c}`).toBeLessThan(0.02 * want + 2e-3);
         }),
       );
-      // importance sampling of the fitted lobe (256 + 256 samples) and the reference are one picture
+      // importance sampling of the fitted lobe (256 + 256 samples) against the reference: one picture in the
+      // furnace; in the studio (small bright lights the lobe rarely hits) no closer than the analytic material's
+      // importance sampling gets (256 samples, the same pattern on every pixel): the method's error, not the table's
       const stats = await lab();
-      console.log(`lab, measured, ${environment}: importance vs reference RMS ${stats.rms.toFixed(4)} (${(100 * stats.relative).toFixed(2)} %)`);
-      expect(stats.relative).toBeLessThan(0.03);
+      const own = analytic[`${environment}Stats`].relative;
+      console.log(`lab, ${environment}: importance vs reference, relative RMS: measured ${(100 * stats.relative).toFixed(2)} %, ` +
+        `analytic GGX ${(100 * own).toFixed(2)} %`);
+      if (environment === 'furnace') expect(stats.relative).toBeLessThan(0.01);
+      else expect(stats.relative).toBeLessThan(1.5 * own);
     }, 600_000);
   }
 
