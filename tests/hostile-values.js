@@ -29,7 +29,8 @@ export const listArrays = (o) => [[], [''], [o, o], [o, '', o], [o, '__proto__']
 function sampleLists(f, typed) {
   const n = f.length;
   const good = Array.from({ length: n }, (_, i) => f.min + ((f.max - f.min) * i) / n);
-  const lists = [good.slice(1), [...good, f.min], good.with(n >> 1, 'NaN'), good.with(3, f.max * 2 + 1), good.with(2, '0x1'), good];
+  const bad = [good.with(n >> 1, 'NaN'), good.with(3, f.max * 2 + 1), good.with(2, '0x1')];
+  const lists = [good.slice(1), [...good, f.min], ...bad, good];
   return typed ? [...lists, good.with(5, null), good.with(4, {})] : lists.map((l) => l.join(','));
 }
 export const ODD = [null, true, false, {}, [], { valueOf: 1 }, LONG];

@@ -23,8 +23,9 @@ const ENV_DEFINES = { mirror: 'ENV_MIRROR', importance: 'ENV_IMPORTANCE', 'split
 
 /**
  * The #defines of one program: only the terms, lights and methods in use are compiled. A measured table
- * (scene.measured: its name; scene.table: its 3-D texture) is the whole BRDF: no terms; of the approximations only importance sampling and the sphere
- * light's have a form for it (lab-approximations.js says so), so the others are not drawn.
+ * (scene.measured: its name; scene.table: its 3-D texture) is the whole BRDF, no terms; of the approximations
+ * only importance sampling and the sphere light's have a form for it (lab-approximations.js says so), so the
+ * others are not drawn.
  */
 export function sceneDefines(scene, reference) {
   return scene.measured ? measuredDefines(scene, reference) : modelDefines(scene, reference);
@@ -34,7 +35,9 @@ function measuredDefines({ lights, methods }, reference) {
   const d = { MEASURED: 1 };
   if (lights.punctual) d.LIGHT_PUNCTUAL = 1;
   if (lights.sphere) d.LIGHT_SPHERE = 1;
-  if (reference) return Object.assign(d, { REFERENCE: 1 }, lights.env && { LIGHT_ENV: 1 }, lights.ambient && { LIGHT_AMBIENT: 1 });
+  if (reference) {
+    return Object.assign(d, { REFERENCE: 1 }, lights.env && { LIGHT_ENV: 1 }, lights.ambient && { LIGHT_AMBIENT: 1 });
+  }
   if (lights.env && methods.env === 'importance') Object.assign(d, { LIGHT_ENV: 1, ENV_IMPORTANCE: 1 });
   if (lights.sphere && methods.area === 'centre') d.AREA_CENTRE = 1;
   return d;

@@ -29,8 +29,8 @@ export const schema = {
   diffuseModel: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.diffuse, default: 'lambert', label: 'Diffuse term' },
   sigma: { group: 'BRDF terms', type: 'number', min: 0, max: 60, step: 1, default: 20, label: 'Oren-Nayar σ', unit: '°' },
   brdfSource: {
-    group: 'BRDF terms', type: 'enum', options: { model: 'The model (terms above)', measured: 'Measured (a dropped MERL file)' },
-    default: 'model', label: 'BRDF',
+    group: 'BRDF terms', type: 'enum', default: 'model', label: 'BRDF',
+    options: { model: 'The model (terms above)', measured: 'Measured (a dropped MERL file)' },
   },
   punctual: { group: 'Punctual light', type: 'bool', default: false, label: 'Punctual light' },
   lightTheta: { group: 'Punctual light', type: 'number', min: 0, max: 180, step: 1, default: 45, label: 'Punctual θ from view', unit: '°' },
@@ -71,7 +71,8 @@ const ABOUT =
 
 const TERMS_USED = ['microfacetBRDF', 'dfgSplitSum', 'sampleGGXNormal', 'sampleBeckmannNormal', 'sampleCosine', 'sampleCone', 'sphereLightRepresentativeDir', 'sphereLightNormalization', 'equirectUv', 'diffuseOrenNayar'];
 
-/** A lab scene with a measured table for its BRDF: no terms; the GGX fit's α (the state's until it is in) to sample by. */
+/** A lab scene with a measured table for its BRDF: no terms; the GGX fit's α (the state's until it is in) to
+ * sample by. */
 function measuredScene(scene, table) {
   const alpha = table.fit?.params.alpha ?? scene.material.alpha;
   return {
@@ -161,8 +162,9 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
       : '<p class="lab-empty">Every light is off: switch one on in the controls.</p>';
     const errorWords = converging ? 'The reference is still converging.' : `RMS error ${fmt(stats.rms, 3)}, ${fmt(stats.relative * 100, 3)} % relative; ${fmt(stats.ms, 3)} ms.`;
     const table = st.brdfSource === 'measured' ? measured.current : null;
-    const what = table ? `the measured BRDF ${table.name}` : st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material;
-    shell.describe(`Material lab. A sphere (${what}${table ? '' : `, roughness α ${st.alpha}`}) lit by ${methodText(st, lights)}; beside it the Monte Carlo reference (${stats.target} samples per pixel) and the error image. ${errorWords}`, view.canvas);
+    const model = st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material;
+    const what = table ? `the measured BRDF ${table.name}` : `${model}, roughness α ${st.alpha}`;
+    shell.describe(`Material lab. A sphere (${what}) lit by ${methodText(st, lights)}; beside it the Monte Carlo reference (${stats.target} samples per pixel) and the error image. ${errorWords}`, view.canvas);
   };
 
   // under the images: how each light's approximation treats the chosen terms (lab-approximations.js)
@@ -210,7 +212,8 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
     text: 'Load an .hdr / .exr environment or a MERL .binary BRDF…',
     onFile: (name, buffer) => {
       if (/\.binary$/i.test(name)) {
-        if (!(buffer instanceof ArrayBuffer)) shell.notices.show(`${name}: larger than ${MAX_FILE_BYTES / 2 ** 20} MB.`);
+        const mb = MAX_FILE_BYTES / 2 ** 20;
+        if (!(buffer instanceof ArrayBuffer)) shell.notices.show(`${name}: larger than ${mb} MB. Kept the material.`);
         else measured.load(name, buffer);
         return buffer instanceof ArrayBuffer;
       }

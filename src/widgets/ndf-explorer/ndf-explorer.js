@@ -77,13 +77,14 @@ const axis = { xLabel: 'Angle of the microfacet normal from n, θh (degrees)', x
 
 /** The log plot with a measured slice: every curve over its own peak, so the tails compare at one width. */
 function relativeLogSpec(data, slice, name) {
-  const measured = { label: `measured: ${name || 'unnamed'}, θd = 0 slice / peak`, stroke: '#000000', width: 2.5, spanGaps: true };
+  const label = `measured: ${name || 'unnamed'}, θd = 0 slice / peak`;
+  const measured = { label, stroke: '#000000', width: 2.5, spanGaps: true };
+  const relative = (c) => c.values.map((v) => (v / c.values[0] > 1e-5 ? v / c.values[0] : null));
   return {
-    ...axis, title: 'D(θh) / D(0), log scale: the measured tail against the models at the fitted width', yLabel: 'D / D(0)',
-    y: { min: 1e-5, max: 2, log: true }, legend: true,
+    ...axis, title: 'D(θh) / D(0), log scale: the measured tail against the models at the fitted width',
+    yLabel: 'D / D(0)', y: { min: 1e-5, max: 2, log: true }, legend: true,
     series: [measured, ...data.map((c) => ({ label: c.label, stroke: c.stroke, dash: c.dash }))],
-    data: [ANGLES, measuredOnAngles(slice), ...data.map((c) => c.values.map((v) => (v / c.values[0] > 1e-5 ? v / c.values[0] : null)))],
-    filename: 'ndf-log', height: 260,
+    data: [ANGLES, measuredOnAngles(slice), ...data.map(relative)], filename: 'ndf-log', height: 260,
   };
 }
 
@@ -147,7 +148,8 @@ export function createNdfExplorer(container, initialState = {}, { onStateChange 
       linear.setData(linearSpec());
       renderTable();
     }
-    if (changed.some((k) => ['hwhm', 'abcA2', 'sgdP', 'ndfs', 'measured', 'measuredName'].includes(k))) log.setData(logSpec());
+    const logKeys = ['hwhm', 'abcA2', 'sgdP', 'ndfs', 'measured', 'measuredName'];
+    if (changed.some((k) => logKeys.includes(k))) log.setData(logSpec());
     renderSpheres();
   };
   const update = shell.connect({ title: 'NDF explorer', onChanged, onStateChange });
