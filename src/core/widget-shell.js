@@ -4,6 +4,7 @@ import { coerceState, defaultState } from './state.js';
 import { createNoticeArea } from './notice.js';
 import { createStateGui } from './gui.js';
 import { createLiveRegion, describeCanvas } from './describe.js';
+import { createShareBar, shareLink } from './share.js';
 
 // Keys the host locks for the widget being created (see createLocked): the shell reads them, so every
 // widget gets locking without code of its own.
@@ -87,6 +88,7 @@ export function createWidgetShell(container, { name, schema, initialState, about
         onStateChange?.(state);
       };
       gui = createStateGui(controls, { schema, state, onChange: update, title, locked });
+      body.after(createShareBar({ title: title ?? name, getLink: () => shareLink(name, schema, state) }));
       return update;
     },
     dispose() {
