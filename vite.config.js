@@ -1,5 +1,6 @@
 import { defineConfig } from 'vite';
 import { resolve } from 'node:path';
+import { VitePWA } from 'vite-plugin-pwa';
 
 // Every HTML page is an entry; relative base so the built site works from any static host and sub-path.
 const pages = ['index', 'embed', 'media', 'surfaces', 'brdf', 'microfacets', 'fresnel', 'ndf', 'visibility', 'diffuse', 'rendering', 'performance', 'parity', 'exercises', 'tour', 'gallery', 'wall'];
@@ -31,9 +32,36 @@ function pageChrome() {
   };
 }
 
+/** Every page loads src/core/offline.js, which registers the service worker (before Vite bundles the page). */
+function offlineScript() {
+  const tag = '    <script type="module" src="/src/core/offline.js"></script>\n  </body>';
+  return { name: 'shading-lab-offline', transformIndexHtml: { order: 'pre', handler: (html) => html.replace('</body>', tag) } };
+}
+
+// Offline after one visit: Workbox precaches the whole build (pages, chunks, exercises, icons). A page asked for
+// with any query (embed.html?w=…, fresnel.html?zones.mode=…) is served from its cached file.
+const offline = VitePWA({
+  registerType: 'prompt',
+  injectRegister: false,
+  manifest: {
+    name: 'Shading Lab',
+    short_name: 'Shading Lab',
+    description: 'Interactive companion to “Background: Physics and Math of Shading” (SIGGRAPH 2013)',
+    theme_color: '#0b6bcb',
+    background_color: '#fbfbfa',
+    icons: [{ src: 'favicon.svg', sizes: 'any', type: 'image/svg+xml' }],
+  },
+  workbox: {
+    globPatterns: ['**/*.{html,js,css,svg,png,webp,json,hdr,exr}'],
+    ignoreURLParametersMatching: [/.*/],
+    maximumFileSizeToCacheInBytes: 4 * 1024 * 1024,
+    navigateFallback: null,
+  },
+});
+
 export default defineConfig({
   base: './',
-  plugins: [pageChrome()],
+  plugins: [pageChrome(), offlineScript(), offline],
   build: {
     target: 'es2022',
     chunkSizeWarningLimit: 700, // three.js alone is ~540 kB and is shared by every 3-D page
