@@ -76,7 +76,7 @@ export class ShadingLabWidget extends (globalThis.HTMLElement ?? class {}) {
   attributeChangedCallback(attr, before, after) {
     if (!this.isConnected || before === after) return;
     if (attr === 'state' && this.ready) this.set(after ?? '');
-    else if (attr !== 'state' || !this.#frame) this.#mount();
+    else this.#mount(); // a new widget or host, or a state given before the frame was ready: a new frame
   }
 
   #mount() {
