@@ -27,5 +27,8 @@ function say(text, action) {
 const updateSW = registerSW({
   immediate: true,
   onOfflineReady: () => say('Shading Lab is saved on this device: every page works offline from now on.'),
-  onNeedRefresh: () => say('A new version of Shading Lab is saved on this device.', { label: 'Reload to use it', run: () => updateSW(true) }),
+  onNeedRefresh: () => {
+    const reload = { label: 'Reload to use it', run: () => updateSW(true) };
+    say('A new version of Shading Lab is saved on this device.', reload);
+  },
 });

@@ -22,7 +22,8 @@ function still({ root, title, getLink }) {
   const figure = document.createElement('figure');
   figure.className = 'print-still';
   const image = snapshotWidget(root);
-  if (image) figure.append(Object.assign(document.createElement('img'), { src: image, alt: `${title}, as it was shown` }));
+  const alt = `${title}, as it was shown`;
+  if (image) figure.append(Object.assign(document.createElement('img'), { src: image, alt }));
   const caption = document.createElement('figcaption');
   const text = document.createElement('span');
   text.append(`${title}, this state: `, Object.assign(document.createElement('a'), { href: link, textContent: link }));

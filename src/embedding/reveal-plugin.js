@@ -120,7 +120,9 @@ async function printStills(src) {
     await ready;
     await el.set(visibleSets(section));
     await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
-    const img = Object.assign(document.createElement('img'), { src: (await el.snapshot()) ?? '', alt: `${el.getAttribute('name')}: ${el.query}` });
+    const image = (await el.snapshot()) ?? '';
+    const alt = `${el.getAttribute('name')}: ${el.query}`;
+    const img = Object.assign(document.createElement('img'), { src: image, alt });
     img.style.cssText = 'display: block; width: 100%; height: 100%; object-fit: contain';
     el.replaceWith(img);
   }

@@ -7,10 +7,16 @@ import { CHAPTER_PICTURES, CHAPTER_PICTURE_SIZE, chapterPictureUrl } from '../co
 /** The chapter's picture, linked to its page when it has one. */
 function picture(ch) {
   const img = Object.assign(document.createElement('img'), {
-    src: chapterPictureUrl(ch.key), alt: CHAPTER_PICTURES[ch.key], className: 'chapter-picture', loading: 'lazy', decoding: 'async', ...CHAPTER_PICTURE_SIZE,
+    src: chapterPictureUrl(ch.key),
+    alt: CHAPTER_PICTURES[ch.key],
+    className: 'chapter-picture',
+    loading: 'lazy',
+    decoding: 'async',
+    ...CHAPTER_PICTURE_SIZE,
   });
   if (!ch.page) return img;
-  const a = Object.assign(document.createElement('a'), { href: ch.page, tabIndex: -1 }); // the title is the link for keyboards
+  // the title is the link for keyboards: the picture's link is for the pointer only
+  const a = Object.assign(document.createElement('a'), { href: ch.page, tabIndex: -1 });
   a.append(img);
   return a;
 }
