@@ -2,7 +2,10 @@
 // documented domain, its CPU cost (tinybench, ns per evaluation) and its GPU cost (a full-screen pass in
 // headless Chromium). Prints a table and writes JSON (bench/results/latest.json, or --out FILE).
 // --quick: a tiny budget, for the test suite.
-import { mkdirSync, mkdtempSync, writeFileSync } from 'node:fs';
+// --only families: only the term families' errors (Node, seconds), merged into the existing JSON; every cost
+// column, the pages and the IBL rows stay as last measured. With --time-cpu the CPU column is timed again too
+// (on a quiet machine only: timings taken beside other work are not comparable with the rest).
+import { existsSync, mkdirSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { cpus, tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
 import { Bench } from 'tinybench';
@@ -14,8 +17,12 @@ import { ROOT, launchBrowser, openPage, serveStatic } from '../tests/browser/har
 
 const args = process.argv.slice(2);
 const quick = args.includes('--quick');
+const only = args.includes('--only') ? args[args.indexOf('--only') + 1] : null;
+const timeCpu = only === null || args.includes('--time-cpu');
+if (only !== null && only !== 'families') throw new Error(`--only ${only}: the only part that runs alone is "families"`);
 const out = args.includes('--out') ? resolve(args[args.indexOf('--out') + 1]) : join(ROOT, 'bench/results/latest.json');
 const CPU_SAMPLE = 2048; // inputs per timed call
+const cpuModel = () => cpus()[0]?.model ?? 'unknown';
 
 async function cpuCosts(family) {
   const bench = new Bench({ time: quick ? 5 : 250, warmupTime: quick ? 2 : 50 });
@@ -49,56 +56,95 @@ async function gpuCosts() {
   }
 }
 
-const gpu = await gpuCosts();
-const pages = await measurePages();
-const ibl = await measureIbl({ quick });
-const families = [];
-for (const family of FAMILIES) {
+/** A family's rows: each variant's kind, what it is measured against, that distance, and its costs. */
+async function measureFamily(family, gpuMs, lastCpu) {
   const errors = measureErrors(family);
-  const cpu = await cpuCosts(family);
-  const gpuMs = gpu.results[family.key];
+  const cpu = timeCpu ? await cpuCosts(family) : lastCpu;
   const cheapest = Math.min(...Object.values(gpuMs));
-  families.push({
+  const labelOf = (key) => family.variants.find((v) => v.key === key)?.label ?? null;
+  return {
     key: family.key,
     title: family.title,
     domain: family.domain,
     errorOf: family.errorOf,
-    variants: family.variants.map((v, i) => ({
-      key: v.key,
-      label: v.label,
-      error: { maxAbs: errors[i].maxAbs, rms: errors[i].rms, maxAt: errors[i].maxAt },
-      cpuNsPerEval: cpu[v.key],
-      gpuMsPerFrame: gpuMs[v.key],
-      gpuRelative: gpuMs[v.key] / cheapest,
-    })),
-  });
+    variants: family.variants.map((v, i) => {
+      const { maxAbs, rms, maxAt } = errors[i];
+      return {
+        key: v.key,
+        label: v.label,
+        kind: v.kind,
+        against: v.against ?? null,
+        againstLabel: labelOf(v.against),
+        [v.kind === 'difference' ? 'difference' : 'error']: { maxAbs, rms, maxAt },
+        cpuNsPerEval: cpu[v.key],
+        gpuMsPerFrame: gpuMs[v.key],
+        gpuRelative: gpuMs[v.key] / cheapest,
+      };
+    }),
+  };
 }
 
-const report = {
-  version: 1,
-  date: new Date().toISOString(),
-  quick,
-  machine: { cpu: cpus()[0]?.model ?? 'unknown', cores: cpus().length, node: process.version, chromium: gpu.chromium, gpuRenderer: gpu.renderer },
-  gpuSetup: { ...gpu.setup, baselineMsPerFrame: gpu.baselineMs },
-  families,
-  versusThree: gpu.versusThree,
-  pages,
-  ibl,
-};
+/** Only the families' errors (and, asked, CPU times), measured now, into the last full report. */
+async function familiesOnly() {
+  if (!existsSync(out)) throw new Error(`--only families updates ${out}, which does not exist: run the whole bench`);
+  const last = JSON.parse(readFileSync(out, 'utf8'));
+  const lastOf = (key, field) => {
+    const variants = last.families.find((f) => f.key === key)?.variants ?? [];
+    return Object.fromEntries(variants.map((v) => [v.key, v[field]]));
+  };
+  const families = [];
+  for (const family of FAMILIES) {
+    const [gpuMs, cpu] = [lastOf(family.key, 'gpuMsPerFrame'), lastOf(family.key, 'cpuNsPerEval')];
+    const missing = family.variants.filter((v) => !(gpuMs[v.key] >= 0 && cpu[v.key] >= 0)).map((v) => `${family.key}/${v.key}`);
+    if (missing.length) throw new Error(`no cost measured for ${missing.join(', ')}: run the whole bench`);
+    families.push(await measureFamily(family, gpuMs, cpu));
+  }
+  const familiesMeasured = { date: new Date().toISOString(), cpu: cpuModel(), node: process.version, timedCpu: timeCpu };
+  return { ...last, families, familiesMeasured };
+}
+
+async function everything() {
+  const gpu = await gpuCosts();
+  const pages = await measurePages();
+  const ibl = await measureIbl({ quick });
+  const families = [];
+  for (const family of FAMILIES) families.push(await measureFamily(family, gpu.results[family.key]));
+  return {
+    version: 1,
+    date: new Date().toISOString(),
+    quick,
+    machine: { cpu: cpuModel(), cores: cpus().length, node: process.version, chromium: gpu.chromium, gpuRenderer: gpu.renderer },
+    gpuSetup: { ...gpu.setup, baselineMsPerFrame: gpu.baselineMs },
+    families,
+    versusThree: gpu.versusThree,
+    pages,
+    ibl,
+  };
+}
+
+const report = only === 'families' ? await familiesOnly() : await everything();
 mkdirSync(dirname(out), { recursive: true });
 writeFileSync(out, `${JSON.stringify(report, null, 1)}\n`);
 
 const pad = (s, n) => String(s).padEnd(n);
+const g = report.gpuSetup;
 console.log(`Machine: ${report.machine.cpu} (${report.machine.cores} cores), Node ${report.machine.node}, ${report.machine.chromium}, GPU: ${report.machine.gpuRenderer}`);
-console.log(`GPU pass: ${gpu.setup.size}² pixels × ${gpu.setup.loops} evaluations, median of ${gpu.setup.frames} drained frames; the empty pass (x·y) takes ${gpu.baselineMs.toFixed(2)} ms of each.`);
-for (const f of families) {
-  console.log(`\n${f.title} — error of ${f.errorOf} over ${f.domain}`);
-  console.log(`  ${pad('variant', 42)}${pad('max |error|', 13)}${pad('RMS', 11)}${pad('CPU ns/eval', 13)}${pad('GPU ms/frame', 14)}GPU relative`);
+console.log(`GPU pass: ${g.size}² pixels × ${g.loops} evaluations, median of ${g.frames} drained frames; the empty pass (x·y) takes ${g.baselineMsPerFrame.toFixed(2)} ms of each.`);
+for (const f of report.families) {
+  console.log(`\n${f.title} — ${f.errorOf} over ${f.domain}`);
+  console.log(`  ${pad('variant', 42)}${pad('measured against', 52)}${pad('max |Δ|', 11)}${pad('RMS', 11)}${pad('CPU ns/eval', 13)}${pad('GPU ms/frame', 14)}GPU relative`);
   for (const v of f.variants) {
-    console.log(`  ${pad(v.label, 42)}${pad(v.error.maxAbs.toExponential(2), 13)}${pad(v.error.rms.toExponential(2), 11)}${pad(v.cpuNsPerEval.toFixed(2), 13)}${pad(v.gpuMsPerFrame.toFixed(2), 14)}${v.gpuRelative.toFixed(2)}×`);
+    const d = v.error ?? v.difference;
+    const what = v.kind === 'reference' ? 'reference' : `${v.kind === 'difference' ? 'differs from' : 'error vs'} ${v.againstLabel}`;
+    console.log(`  ${pad(v.label, 42)}${pad(what, 52)}${pad(d.maxAbs.toExponential(2), 11)}${pad(d.rms.toExponential(2), 11)}${pad(v.cpuNsPerEval.toFixed(2), 13)}${pad(v.gpuMsPerFrame.toFixed(2), 14)}${v.gpuRelative.toFixed(2)}×`);
   }
 }
-const vt = gpu.versusThree;
+if (only === 'families') {
+  const kept = timeCpu ? 'the GPU columns' : 'the CPU and GPU columns';
+  console.log(`\nWrote ${out} (families only; ${kept} are from the run of ${report.date.slice(0, 10)})`);
+  process.exit(0);
+}
+const { versusThree: vt, ibl, pages } = report;
 console.log(`\nSphere at ${vt.size}² with GGX + height-correlated Smith + Schlick + Lambert + one punctual light:`);
 console.log(`  ours ${vt.oursMsPerFrame.toFixed(2)} ms/frame, three.js MeshStandardMaterial ${vt.threeMsPerFrame.toFixed(2)} ms/frame: ratio ${vt.ratio.toFixed(2)}`);
 console.log(`\nImage-based lighting against the Monte Carlo reference (${ibl.setup.referenceSamples} samples/pixel), ${ibl.setup.resolution}² pixels, median of ${ibl.setup.timingRuns} runs:`);

@@ -27,6 +27,7 @@ const DRAGS = {
   media: ['distance', -2, 1],
   surfaces: ['theta', 10, 70],
   'subsurface-scale': ['sigmaS', 1, 10],
+  radiance: ['distance', 0.5, 10],
   'brdf-lobe': ['lightTheta', 10, 70],
   'ndf-explorer': ['hwhm', 5, 25],
   'visibility-explorer': ['alpha', 0.1, 0.8],

@@ -10,13 +10,31 @@ const esc = (s) => s.replaceAll('|', '\\|');
 const lines = [
   `Measured ${report.date.slice(0, 10)} on ${m.cpu} (${m.cores} cores), Node ${m.node}, ${m.chromium}, GPU: ${m.gpuRenderer}. ` +
     `On this software renderer the GPU columns move by up to about 30% between runs (the empty pass alone is ${g.baselineMsPerFrame.toFixed(1)} ms ` +
-    'of every frame) and the CPU column by about 15%; the errors of the term families are exact.',
+    'of every frame) and the CPU column by about 15%; the errors and differences of the term families are exact.',
   '',
 ];
+if (report.familiesMeasured) {
+  const { date, timedCpu } = report.familiesMeasured;
+  lines.push(`The term families' ${timedCpu ? 'errors and CPU costs' : 'errors'} below were measured again on ` +
+    `${date.slice(0, 10)} (\`npm run bench -- --only families\`); their ${timedCpu ? 'GPU columns are' : 'costs are'} ` +
+    'from the full run.', '');
+}
+const HEAD = (first, what) => [`| ${first} | ${what === 'error' ? 'error against' : 'difference from'} | max \\|${what}\\| | RMS | ` +
+  'CPU ns/eval | GPU relative |', '|---|---|---|---|---|---|'];
+const row = (v, m) => {
+  const reference = v.kind === 'reference';
+  return `| ${esc(v.label)} | ${reference ? 'reference' : esc(v.againstLabel)} | ${reference ? '0' : m.maxAbs.toExponential(2)} | ` +
+    `${m.rms.toExponential(2)} | ${v.cpuNsPerEval.toFixed(0)} | ${v.gpuRelative.toFixed(2)}× |`;
+};
 for (const f of report.families) {
-  lines.push(`**${f.title}** — max \\|error\\| of ${esc(f.errorOf)} over ${esc(f.domain)}`, '', '| variant | max \\|error\\| | RMS | CPU ns/eval | GPU relative |', '|---|---|---|---|---|');
-  for (const v of f.variants) {
-    lines.push(`| ${esc(v.label)} | ${v.error.maxAbs === 0 ? '0 (reference)' : v.error.maxAbs.toExponential(2)} | ${v.error.rms.toExponential(2)} | ${v.cpuNsPerEval.toFixed(0)} | ${v.gpuRelative.toFixed(2)}× |`);
+  const others = f.variants.filter((v) => v.kind === 'difference');
+  lines.push(`**${f.title}** — ${esc(f.errorOf)} over ${esc(f.domain)}`, '', ...HEAD('approximation', 'error'));
+  for (const v of f.variants.filter((w) => w.kind !== 'difference')) lines.push(row(v, v.error));
+  if (others.length) {
+    const from = esc(others[0].againstLabel);
+    lines.push('', `Other models, as a difference from ${from} (not an error: neither approximates the other):`, '');
+    lines.push(...HEAD('model', 'difference'));
+    for (const v of others) lines.push(row(v, v.difference));
   }
   lines.push('');
 }

@@ -1,5 +1,6 @@
 // A sphere shaded by one microfacet BRDF under one punctual light (the talk's L = pi f c_light (n·l)),
-// (with DIFFUSE_LAMBERT plus a Lambert term), or, with FURNACE, in a uniform white environment with F = 1 (the directional albedo E(n·v)).
+// (with DIFFUSE_LAMBERT plus a Lambert term), or, with FURNACE, in a uniform white environment with F = 1: the
+// directional albedo E(n·v), scale + bias of the split-sum table uDfg (GGX, height-correlated Smith).
 // The term switches of brdf.glsl pick D (NDF_*), V (VIS_*) and F (F_ONE or Schlick); only those compile.
 // With DIFFUSE_ONLY the sphere has a diffuse term alone, picked by DIFFUSE_MODEL_* (Lambert without one).
 #include "color.glsl"
@@ -16,6 +17,9 @@ uniform float uLightIntensity;
 uniform float uExposure;
 uniform float uAlpha;
 uniform float uF0;
+#ifdef FURNACE
+uniform sampler2D uDfg;
+#endif
 out vec4 fragColor;
 
 // either switch brings the diffuse term in (included once)
@@ -31,7 +35,8 @@ void main() {
   vec3 v = isOrthographic ? vec3(0.0, 0.0, 1.0) : normalize(-vViewPosition);
   float nv = dot(n, v);
 #ifdef FURNACE
-  float radiance = albedoGGX(nv, uAlpha, FURNACE_SAMPLES);
+  vec2 ab = texture(uDfg, dfgTableUv(nv, uAlpha)).rg;
+  float radiance = ab.x + ab.y;
 #else
   // the BRDF works in a frame where n = z: build one around the shading normal
   vec3 t = normalize(abs(n.z) < 0.999 ? cross(vec3(0.0, 0.0, 1.0), n) : cross(vec3(1.0, 0.0, 0.0), n));

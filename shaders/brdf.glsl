@@ -14,7 +14,7 @@ float ndfTerm(float nh, float sin2h, float alpha) {
 #if defined(NDF_BECKMANN)
   return ndfBeckmannFromSin2(nh, sin2h, alpha);
 #elif defined(NDF_BLINN_PHONG)
-  return ndfBlinnPhong(nh, uExponent);
+  return ndfBlinnPhongFromSin2(nh, sin2h, uExponent);
 #elif defined(NDF_ABC)
   return ndfABC(nh, uA1, uA2);
 #elif defined(NDF_SGD)

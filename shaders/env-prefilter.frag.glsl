@@ -1,8 +1,9 @@
 // Prefilters the environment for the split sum (Karis 2013): each texel, a direction N, averages the map over
-// a GGX lobe around N with n = v = r, weighted by n·l. Samples read a coarser mip where each covers more of
+// the chosen NDF's lobe around N (brdf.glsl's switch: GGX, or Beckmann with NDF_BECKMANN) with n = v = r,
+// weighted by n·l. Samples read a coarser mip where each covers more of
 // the sphere (filtered importance sampling), so few samples do not alias; the mips are of the solid-angle
 // weighted map (env-copy WEIGHTED), so a coarse texel near a pole carries no more light than it should.
-#include "integrate.glsl"
+#include "ndf-sampling.glsl"
 #include "env.glsl"
 uniform sampler2D uEnv;
 uniform vec2 uEnvSize;
@@ -23,10 +24,10 @@ void main() {
   float weight = 0.0;
   for (int i = 0; i < uSamples; i++) {
     vec2 u = hammersley(i, uSamples);
-    vec3 m = sampleGGXNormal(u, uAlpha);
+    vec3 m = sampleLobeNormal(u, uAlpha);
     vec3 l = 2.0 * m.z * m - vec3(0.0, 0.0, 1.0);
     if (l.z <= 0.0) continue;
-    float pdf = ndfGGX(m.z, uAlpha) / 4.0; // D(m)(n·m)/(4 v·m) with v = n: n·m = v·m
+    float pdf = reflectedPdf(m, m.z, uAlpha); // v = n: v·m = n·m
     float w = l.z;
     vec4 c = textureLod(uEnv, equirectUv(toWorld * l), lodFor(pdf));
     sum += w * c.rgb / max(c.a, 1e-6);

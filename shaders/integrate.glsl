@@ -1,5 +1,6 @@
-// The reflectance equation by importance sampling, mirrors src/math/integrate.js: the same Hammersley points,
-// the same GGX normal sampling, the same estimator V nl (v·m)/(n·m).
+// Sampling for the reflectance equation, mirrors src/math/integrate.js: the same Hammersley points, the same GGX
+// and Beckmann normal sampling, the cosine and cone samplers; and where the split sum's table keeps (n·v, alpha)
+// (the table itself is the float64 quadrature dfgSplitSum, made in JS).
 #include "visibility.glsl"
 
 vec2 hammersley(int i, int n) {
@@ -21,29 +22,24 @@ vec3 sampleGGXNormal(vec2 u, float alpha) {
   return vec3(s * cos(phi), s * sin(phi), c);
 }
 
-// The split-sum DFG term: (scale, bias) with ∫ f (n·l) dω = F0·scale + bias, mirrors dfgSplitSum.
-vec2 dfgSplitSum(float mu, float alpha, int n) {
-  float m0 = clamp(mu, 1e-6, 1.0);
-  vec3 v = vec3(sqrt(max(sin2FromCos(m0), 0.0)), 0.0, m0);
-  vec2 sum = vec2(0.0);
-  for (int i = 0; i < n; i++) {
-    vec3 m = sampleGGXNormal(hammersley(i, n), alpha);
-    float vm = dot(v, m);
-    if (vm <= 0.0) continue;
-    vec3 l = 2.0 * vm * m - v;
-    if (l.z <= 0.0) continue;
-    float w = visibilitySmithGGXCorrelated(l.z, v.z, alpha) * l.z * vm / m.z;
-    float fc = pow(1.0 - vm, 5.0);
-    sum += vec2(1.0 - fc, fc) * w;
-  }
-  sum /= float(n);
-  return sum / max(sum.x + sum.y, 1.0);
+// mirrors sampleBeckmannNormal: tan² = -alpha² ln(1 - u.x), with ln(1 - x) kept precise for small x
+vec3 sampleBeckmannNormal(vec2 u, float alpha) {
+  float a = clampAlpha(alpha);
+  float t2 = -a * a * log1pSmall(-u.x);
+  float c = inversesqrt(1.0 + t2);
+  float s = sqrt(t2) * c;
+  float phi = 2.0 * PI * u.y;
+  return vec3(s * cos(phi), s * sin(phi), c);
 }
 
-// Directional albedo with F = 1, mirrors albedoGGX: the split sum's scale + bias.
-float albedoGGX(float mu, float alpha, int n) {
-  vec2 ab = dfgSplitSum(mu, alpha, n);
-  return ab.x + ab.y;
+// Texture coordinates of (n·v, alpha) in the DFG table, mirrors dfgTableUv (see there for the layout)
+#define DFG_TABLE_SIZE 72.0
+vec2 dfgTableUv(float nv, float alpha) {
+  float mu = clamp(nv, 0.0, 1.0);
+  float a = clamp(alpha, 0.0, 1.0);
+  float k = 4.0 * max(a, ALPHA_MIN);
+  float x = (sqrt(mu) + 0.5 * mu / (mu + k)) / (1.0 + 0.5 / (1.0 + k));
+  return (vec2(x, pow(a, 1.0 / 3.0)) * (DFG_TABLE_SIZE - 1.0) + 0.5) / DFG_TABLE_SIZE;
 }
 
 vec3 sampleCosine(vec2 u) {

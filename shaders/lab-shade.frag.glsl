@@ -3,10 +3,12 @@
 // whose running mean converges to the reflectance equation. Alpha is the sphere mask (1 on it, 0 off it).
 // Switches: terms (brdf.glsl, DIFFUSE_*), lights (LIGHT_PUNCTUAL, LIGHT_SPHERE, LIGHT_ENV, LIGHT_AMBIENT),
 // methods (ENV_MIRROR, ENV_IMPORTANCE, ENV_SPLIT_SUM; AREA_CENTRE; else the representative point), and
-// SPECULAR_OFF / DIFFUSE_OFF to see one layer alone.
+// SPECULAR_OFF / DIFFUSE_OFF to see one layer alone. The approximations follow the chosen F, D and V: uDfg is the
+// DFG table and uPrefiltered the map prefiltered for them; where a method has no form for the chosen diffuse term,
+// irradiance × Lambert stands in (src/core/lab/lab-approximations.js says so on the page).
 #include "brdf.glsl"
 #include "diffuse.glsl"
-#include "integrate.glsl"
+#include "ndf-sampling.glsl"
 #include "lighting.glsl"
 #include "env.glsl"
 
@@ -51,24 +53,34 @@ const vec3 diffuseColor = vec3(0.0);
 
 vec3 specularBRDF(vec3 l, vec3 v) { return specularOn * microfacetBRDF(l, v, uAlpha, uF0); }
 
+// cos of the azimuth between l and v about n = z; 0 where either lies along n (no term depends on it there)
+float cosPhiBetween(vec3 l, vec3 v) {
+  float d = sqrt(dot(l.xy, l.xy) * dot(v.xy, v.xy));
+  return d > 1e-12 ? dot(l.xy, v.xy) / d : 0.0;
+}
+
+// The chosen diffuse term per channel, the colour passed in: Oren-Nayar's inter-reflection term goes as c², so
+// it cannot be evaluated for c = 1 and scaled.
 vec3 diffuseBRDF(vec3 l, vec3 v) {
   if (l.z <= 0.0 || v.z <= 0.0) return vec3(0.0);
+  vec3 c = diffuseColor;
 #if defined(DIFFUSE_FRESNEL_WEIGHTED)
-  return vec3(diffuseFresnelWeighted(l.z, v.z, uF0.r, diffuseColor.r), diffuseFresnelWeighted(l.z, v.z, uF0.g, diffuseColor.g),
-              diffuseFresnelWeighted(l.z, v.z, uF0.b, diffuseColor.b));
+  return vec3(diffuseFresnelWeighted(l.z, v.z, uF0.r, c.r), diffuseFresnelWeighted(l.z, v.z, uF0.g, c.g),
+              diffuseFresnelWeighted(l.z, v.z, uF0.b, c.b));
 #elif defined(DIFFUSE_ASHIKHMIN_SHIRLEY)
-  return vec3(diffuseAshikhminShirley(l.z, v.z, uF0.r, diffuseColor.r), diffuseAshikhminShirley(l.z, v.z, uF0.g, diffuseColor.g),
-              diffuseAshikhminShirley(l.z, v.z, uF0.b, diffuseColor.b));
-#elif defined(DIFFUSE_OREN_NAYAR) || defined(DIFFUSE_OREN_NAYAR_QUALITATIVE)
-  float d = sqrt(dot(l.xy, l.xy) * dot(v.xy, v.xy));
-  float cosPhi = d > 1e-12 ? dot(l.xy, v.xy) / d : 0.0; // azimuth undefined along n, where the term does not need it
-#ifdef DIFFUSE_OREN_NAYAR
-  return diffuseColor * diffuseOrenNayar(l.z, v.z, cosPhi, uSigma, 1.0);
+  return vec3(diffuseAshikhminShirley(l.z, v.z, uF0.r, c.r), diffuseAshikhminShirley(l.z, v.z, uF0.g, c.g),
+              diffuseAshikhminShirley(l.z, v.z, uF0.b, c.b));
+#elif defined(DIFFUSE_OREN_NAYAR)
+  float cp = cosPhiBetween(l, v);
+  return vec3(diffuseOrenNayar(l.z, v.z, cp, uSigma, c.r), diffuseOrenNayar(l.z, v.z, cp, uSigma, c.g),
+              diffuseOrenNayar(l.z, v.z, cp, uSigma, c.b));
+#elif defined(DIFFUSE_OREN_NAYAR_QUALITATIVE)
+  float cp = cosPhiBetween(l, v);
+  return vec3(diffuseOrenNayarQualitative(l.z, v.z, cp, uSigma, c.r),
+              diffuseOrenNayarQualitative(l.z, v.z, cp, uSigma, c.g),
+              diffuseOrenNayarQualitative(l.z, v.z, cp, uSigma, c.b));
 #else
-  return diffuseColor * diffuseOrenNayarQualitative(l.z, v.z, cosPhi, uSigma, 1.0);
-#endif
-#else
-  return diffuseColor * diffuseLambert(1.0);
+  return vec3(diffuseLambert(c.r), diffuseLambert(c.g), diffuseLambert(c.b));
 #endif
 }
 
@@ -77,16 +89,124 @@ vec3 brdfTotal(vec3 l, vec3 v) { return specularBRDF(l, v) + diffuseBRDF(l, v); 
 // The talk's punctual light: pi f c_light (n·l), n·l clamped.
 vec3 punctual(vec3 l, vec3 v, vec3 cLight) { return PI * brdfTotal(l, v) * cLight * max(l.z, 0.0); }
 
-vec3 envRadiance(vec3 dWorld, float lod) {
+vec3 envMap(vec3 dWorld, float lod) { return uEnvIntensity * textureLod(uEnv, equirectUv(dWorld), lod).rgb; }
+
+// All the light around the sphere: the map and the ambient radiance (what the reference integrates at once).
+vec3 surroundRadiance(vec3 dWorld) {
   vec3 L = vec3(0.0);
 #ifdef LIGHT_ENV
-  L += uEnvIntensity * textureLod(uEnv, equirectUv(dWorld), lod).rgb;
+  L += envMap(dWorld, 0.0);
 #endif
 #ifdef LIGHT_AMBIENT
   L += uAmbient;
 #endif
   return L;
 }
+
+#ifdef LIGHT_PUNCTUAL
+vec3 punctualLight(mat3 toLocal, vec3 v) { return punctual(toLocal * uPunctualDir, v, uPunctualCLight); }
+#endif
+
+#if defined(LIGHT_SPHERE) && !defined(REFERENCE)
+// The sphere light as a punctual light at its centre, or by the representative point (Karis 2013): the specular
+// from the point of the disc nearest the reflected ray, the diffuse from the centre.
+vec3 sphereLight(mat3 toLocal, vec3 v) {
+  vec3 d = toLocal * uSphereDir;
+  vec3 cLight = sphereLightCLight(1.0, uSphereSin) * uSphereRadiance;
+#ifdef AREA_CENTRE
+  return punctual(d, v, cLight);
+#else
+  vec3 lRep = sphereLightRepresentativeDir(reflect(-v, vec3(0.0, 0.0, 1.0)), d, uSphereSin);
+  vec3 specular = PI * specularBRDF(lRep, v) * cLight * max(lRep.z, 0.0) * sphereLightNormalization(uAlpha, uSphereSin);
+  return specular + PI * diffuseBRDF(d, v) * cLight * max(d.z, 0.0);
+#endif
+}
+#endif
+
+#if defined(REFERENCE) && defined(LIGHT_SPHERE)
+// The sphere light by uniform samples of its cone: pdf 1/(2 pi (1 - cos theta_s)).
+vec3 sphereLight(mat3 toLocal, vec3 v, int n, vec2 shift) {
+  float cosMax = sqrt(max(1.0 - uSphereSin * uSphereSin, 0.0));
+  mat3 coneToWorld = frameAround(uSphereDir);
+  vec3 sum = vec3(0.0);
+  for (int i = 0; i < n; i++) {
+    vec3 l = toLocal * (coneToWorld * sampleCone(fract(hammersley(i, n) + shift), cosMax));
+    sum += brdfTotal(l, v) * max(l.z, 0.0);
+  }
+  return sum * uSphereRadiance * (2.0 * PI * (1.0 - cosMax)) / float(n);
+}
+#endif
+
+#if defined(ENV_SPLIT_SUM) || defined(LIGHT_AMBIENT) && !defined(REFERENCE)
+// The DFG table of the chosen D and V at (n·v, alpha) (dfgTableUv): (A, B) with ∫ f (n·l) dω = F0·A + B for
+// Schlick's F, and A + B for F = 1 (the two parts of the split add back up to the albedo).
+vec3 dfgAlbedo(float nv) {
+  vec2 ab = texture(uDfg, dfgTableUv(nv, uAlpha)).rg;
+#ifdef F_ONE
+  return vec3(ab.x + ab.y);
+#else
+  return uF0 * ab.x + ab.y;
+#endif
+}
+#endif
+
+#ifdef ENV_SPLIT_SUM
+// The map prefiltered with the chosen NDF's lobe: layers at perceptual roughness k/levels, level 0 the map itself.
+vec3 prefiltered(vec3 r, float alpha) {
+  float level = sqrt(alpha) * uPrefilterLevels;
+  float k = min(floor(level), uPrefilterLevels - 1.0);
+  float t = level - k;
+  vec2 uv = equirectUv(r);
+  vec3 lo = k < 0.5 ? textureLod(uEnv, uv, 0.0).rgb : texture(uPrefiltered, vec3(uv, k - 1.0)).rgb;
+  vec3 hi = texture(uPrefiltered, vec3(uv, k)).rgb;
+  return uEnvIntensity * mix(lo, hi, t);
+}
+#endif
+
+#if defined(ENV_MIRROR) || defined(ENV_SPLIT_SUM)
+// The environment by the mirror direction alone (F at n·v, the half vector of a mirror being n) or by the split
+// sum; the diffuse by irradiance × Lambert whatever diffuse term is chosen (the form these methods have).
+vec3 environmentLight(vec3 n, mat3 toWorld, vec3 v) {
+  vec3 rWorld = reflect(-vec3(0.0, 0.0, 1.0), n);
+#ifdef ENV_MIRROR
+#ifdef F_ONE
+  vec3 specular = envMap(rWorld, 0.0);
+#else
+  vec3 specular = fresnelSchlick(uF0, v.z) * envMap(rWorld, 0.0);
+#endif
+#else
+  vec3 specular = prefiltered(rWorld, uAlpha) * dfgAlbedo(v.z);
+#endif
+  vec3 irradiance = uEnvIntensity * texture(uIrradiance, equirectUv(n)).rgb; // radiance of a white Lambertian surface
+  return specularOn * specular + diffuseColor * irradiance;
+}
+#endif
+
+#ifdef ENV_IMPORTANCE
+// The reflectance equation against the map as a renderer would sample it: l = reflect(v, m) with m from the
+// lobe (ndf-sampling.glsl), the diffuse by cosine sampling (pdf (n·l)/pi), n samples each, every term evaluated.
+vec3 environmentLight(vec3 n, mat3 toWorld, vec3 v) {
+  vec3 sum = vec3(0.0);
+  int count = uSamples;
+  for (int i = 0; i < count; i++) {
+    vec2 u = hammersley(i, count); // the same pattern on every pixel, as a renderer would use it
+    vec3 m = sampleLobeNormal(u, uAlpha);
+    float vm = dot(v, m);
+    vec3 l = 2.0 * vm * m - v;
+    if (vm > 0.0 && l.z > 0.0) {
+      sum += specularBRDF(l, v) * l.z / max(reflectedPdf(m, vm, uAlpha), 1e-30) * envMap(toWorld * l, 0.0);
+    }
+    vec3 ld = sampleCosine(u);
+    sum += diffuseBRDF(ld, v) * PI * envMap(toWorld * ld, 0.0);
+  }
+  return sum / float(count);
+}
+#endif
+
+#if defined(LIGHT_AMBIENT) && !defined(REFERENCE)
+// Uniform radiance: the specular albedo from the DFG table, the diffuse albedo c of Lambert (the form it has).
+vec3 ambientLight(vec3 v) { return uAmbient * (specularOn * dfgAlbedo(v.z) + diffuseColor); }
+#endif
 
 #ifdef REFERENCE
 // Per-pixel offset of the sample pattern (a hash), so neighbouring pixels do not share one pattern.
@@ -95,30 +215,7 @@ vec2 pixelHash(vec2 p) {
   q += dot(q, q.yzx + 33.33);
   return fract((q.xx + q.yz) * q.zy);
 }
-#endif
 
-#ifdef ENV_IMPORTANCE
-// The reflectance equation against the environment as a renderer would sample it: the specular lobe by GGX
-// importance sampling (pdf D(m)(n·m)/(4 v·m)), the diffuse by cosine sampling (pdf (n·l)/pi), n samples each.
-vec3 environmentSampled(mat3 toWorld, vec3 v, int n) {
-  vec3 sum = vec3(0.0);
-  for (int i = 0; i < n; i++) {
-    vec2 u = hammersley(i, n); // the same pattern on every pixel, as a renderer would use it
-    vec3 m = sampleGGXNormal(u, uAlpha);
-    float vm = dot(v, m);
-    vec3 l = 2.0 * vm * m - v;
-    if (vm > 0.0 && l.z > 0.0) {
-      float pdf = ndfGGXFromSin2(m.z, dot(m.xy, m.xy), uAlpha) * m.z / (4.0 * vm);
-      sum += specularBRDF(l, v) * l.z / max(pdf, 1e-30) * envRadiance(toWorld * l, 0.0);
-    }
-    vec3 ld = sampleCosine(u);
-    sum += diffuseBRDF(ld, v) * PI * envRadiance(toWorld * ld, 0.0);
-  }
-  return sum / float(n);
-}
-#endif
-
-#ifdef REFERENCE
 // Index of the first entry >= u in row `row` of a CDF texture (binary search).
 int searchCdf(sampler2D cdf, int row, int count, float u) {
   int lo = 0;
@@ -155,23 +252,23 @@ float environmentMapPdf(vec3 d) {
   return texelFetch(uEnvPdf, t, 0).r / max(cos((uv.y - 0.5) * PI), 1e-6);
 }
 
-// One sample from each of three strategies (GGX lobe, cosine, the map's brightness), weighted by the balance
+// One sample from each of three strategies (the lobe, cosine, the map's brightness), weighted by the balance
 // heuristic: each contributes f (n·l) L / (sum of the three densities at its direction).
 vec3 referenceSample(vec3 l, vec3 v, mat3 toWorld) {
   if (l.z <= 0.0) return vec3(0.0);
   vec3 h = normalize(l + v);
-  float vh = dot(v, h);
-  float pdf = (vh > 0.0 ? ndfGGXFromSin2(h.z, dot(h.xy, h.xy), uAlpha) * h.z / (4.0 * vh) : 0.0) + l.z / PI;
+  float pdf = reflectedPdf(h, dot(v, h), uAlpha) + l.z / PI;
   vec3 dWorld = toWorld * l;
   if (uEnvSampling) pdf += environmentMapPdf(dWorld);
-  return brdfTotal(l, v) * l.z * envRadiance(dWorld, 0.0) / max(pdf, 1e-30);
+  return brdfTotal(l, v) * l.z * surroundRadiance(dWorld) / max(pdf, 1e-30);
 }
 
-vec3 environmentReference(mat3 toWorld, mat3 toLocal, vec3 v, int n, vec2 shift) {
+// The environment and ambient light together, by multiple importance sampling.
+vec3 surroundReference(mat3 toWorld, mat3 toLocal, vec3 v, int n, vec2 shift) {
   vec3 sum = vec3(0.0);
   for (int i = 0; i < n; i++) {
     vec2 u = fract(hammersley(i, n) + shift);
-    vec3 m = sampleGGXNormal(u, uAlpha);
+    vec3 m = sampleLobeNormal(u, uAlpha);
     sum += referenceSample(2.0 * dot(v, m) * m - v, v, toWorld);
     sum += referenceSample(sampleCosine(u.yx), v, toWorld);
     if (uEnvSampling) sum += referenceSample(toLocal * sampleEnvironmentMap(u), v, toWorld);
@@ -180,42 +277,12 @@ vec3 environmentReference(mat3 toWorld, mat3 toLocal, vec3 v, int n, vec2 shift)
 }
 #endif
 
-#if defined(REFERENCE) && defined(LIGHT_SPHERE)
-// The sphere light by uniform samples of its cone: pdf 1/(2 pi (1 - cos theta_s)).
-vec3 sphereSampled(mat3 toLocal, vec3 v, int n, vec2 shift) {
-  float cosMax = sqrt(max(1.0 - uSphereSin * uSphereSin, 0.0));
-  mat3 coneToWorld = frameAround(uSphereDir);
-  vec3 sum = vec3(0.0);
-  for (int i = 0; i < n; i++) {
-    vec3 l = toLocal * (coneToWorld * sampleCone(fract(hammersley(i, n) + shift), cosMax));
-    sum += brdfTotal(l, v) * max(l.z, 0.0);
-  }
-  return sum * uSphereRadiance * (2.0 * PI * (1.0 - cosMax)) / float(n);
-}
-#endif
-
-#ifdef ENV_SPLIT_SUM
-vec3 prefiltered(vec3 r, float alpha) {
-  float level = sqrt(alpha) * uPrefilterLevels; // layers at perceptual roughness k/levels; level 0 is the map
-  float k = min(floor(level), uPrefilterLevels - 1.0);
-  float t = level - k;
-  vec3 lo = k < 0.5 ? textureLod(uEnv, equirectUv(r), 0.0).rgb : texture(uPrefiltered, vec3(equirectUv(r), k - 1.0)).rgb;
-  vec3 hi = texture(uPrefiltered, vec3(equirectUv(r), k)).rgb;
-  return mix(lo, hi, t);
-}
-
-#endif
-
-#if defined(ENV_SPLIT_SUM) || defined(LIGHT_AMBIENT)
-vec2 dfg(float nv) { return texture(uDfg, vec2(nv, sqrt(uAlpha))).rg; }
-#endif
-
+// Each light on, by its method (or by Monte Carlo with REFERENCE), summed.
 void main() {
   vec2 p = (2.0 * gl_FragCoord.xy / uSize - 1.0) * uExtent;
   float r2 = dot(p, p);
   if (r2 >= 1.0) {
-    vec3 behind = normalize(vec3(0.5 * p, -1.0));
-    fragColor = vec4(envRadiance(behind, 0.0), 0.0);
+    fragColor = vec4(surroundRadiance(normalize(vec3(0.5 * p, -1.0))), 0.0);
     return;
   }
   vec3 n = vec3(p, sqrt(1.0 - r2));
@@ -223,58 +290,28 @@ void main() {
   mat3 toLocal = transpose(toWorld);
   vec3 v = toLocal * vec3(0.0, 0.0, 1.0);
   vec3 Lo = vec3(0.0);
+#ifdef LIGHT_PUNCTUAL
+  Lo += punctualLight(toLocal, v);
+#endif
 #ifdef REFERENCE
   vec2 shift = fract(uJitter + pixelHash(gl_FragCoord.xy));
-#endif
-
-#ifdef LIGHT_PUNCTUAL
-  Lo += punctual(toLocal * uPunctualDir, v, uPunctualCLight);
-#endif
-
 #ifdef LIGHT_SPHERE
-  vec3 d = toLocal * uSphereDir;
-#if defined(REFERENCE)
-  Lo += sphereSampled(toLocal, v, uSamples, shift);
-#elif defined(AREA_CENTRE)
-  Lo += punctual(d, v, sphereLightCLight(1.0, uSphereSin) * uSphereRadiance);
-#else
-  vec3 cLight = sphereLightCLight(1.0, uSphereSin) * uSphereRadiance;
-  vec3 lRep = sphereLightRepresentativeDir(reflect(-v, vec3(0.0, 0.0, 1.0)), d, uSphereSin);
-  Lo += PI * specularBRDF(lRep, v) * cLight * max(lRep.z, 0.0) * sphereLightNormalization(uAlpha, uSphereSin);
-  Lo += PI * diffuseBRDF(d, v) * cLight * max(d.z, 0.0);
+  Lo += sphereLight(toLocal, v, uSamples, shift);
 #endif
-#endif
-
 #if defined(LIGHT_ENV) || defined(LIGHT_AMBIENT)
-#if defined(REFERENCE)
-  Lo += environmentReference(toWorld, toLocal, v, uSamples, shift);
-#elif defined(ENV_IMPORTANCE)
-  Lo += environmentSampled(toWorld, v, uSamples);
-#else
-  vec3 rWorld = reflect(-vec3(0.0, 0.0, 1.0), n);
-  vec3 irradiance = vec3(0.0); // mean radiance seen by a white Lambertian surface facing n
-  vec3 specular = vec3(0.0);
-#ifdef LIGHT_ENV
-#if defined(ENV_MIRROR)
-  specular += uEnvIntensity * fresnelSchlick(uF0, v.z) * textureLod(uEnv, equirectUv(rWorld), 0.0).rgb;
-  irradiance += uEnvIntensity * texture(uIrradiance, equirectUv(n)).rgb;
-#elif defined(ENV_SPLIT_SUM)
-  vec2 ab = dfg(v.z);
-  specular += uEnvIntensity * prefiltered(rWorld, uAlpha) * (uF0 * ab.x + ab.y);
-  irradiance += uEnvIntensity * texture(uIrradiance, equirectUv(n)).rgb;
+  Lo += surroundReference(toWorld, toLocal, v, uSamples, shift);
 #endif
+  Lo = mix(texelFetch(uPrevious, ivec2(gl_FragCoord.xy), 0).rgb, Lo, uWeight);
+#else
+#ifdef LIGHT_SPHERE
+  Lo += sphereLight(toLocal, v);
+#endif
+#if defined(ENV_MIRROR) || defined(ENV_SPLIT_SUM) || defined(ENV_IMPORTANCE)
+  Lo += environmentLight(n, toWorld, v);
 #endif
 #ifdef LIGHT_AMBIENT
-  vec2 abAmbient = dfg(v.z);
-  specular += uAmbient * (uF0 * abAmbient.x + abAmbient.y);
-  irradiance += uAmbient;
+  Lo += ambientLight(v);
 #endif
-  Lo += specularOn * specular + diffuseColor * irradiance;
-#endif
-#endif
-
-#ifdef REFERENCE
-  Lo = mix(texelFetch(uPrevious, ivec2(gl_FragCoord.xy), 0).rgb, Lo, uWeight);
 #endif
   fragColor = vec4(Lo, 1.0);
 }

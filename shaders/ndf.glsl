@@ -17,11 +17,19 @@ float log1pSmall(float x) {
   return abs(x) < 1e-2 ? x * (1.0 - x * (0.5 - x * (1.0 / 3.0 - x / 4.0))) : log(1.0 + x);
 }
 
-float ndfBlinnPhong(float cosThetaM, float exponent) {
+// float32 domain: p in [0, 1e30] (clamped), where (p + 2)/(2 pi) and a BRDF built on it stay finite. From n·m
+// alone the lobe (about sqrt(2/p) wide) is resolved only for p up to ~1e6, for float32's n·m steps by 6e-8 near
+// 1; ndfBlinnPhongFromSin2, from a half vector's sin²θm, resolves it up to p ~ 1e30 (sin² down to 1e-30).
+#define BLINN_PHONG_MAX_EXPONENT 1e30
+float ndfBlinnPhongFromSin2(float cosThetaM, float sin2ThetaM, float exponent) {
   if (!(cosThetaM > 0.0)) return 0.0;
-  float p = clamp(exponent, 0.0, 1e6);
-  float c = min(cosThetaM, 1.0);
-  return (p + 2.0) / (2.0 * PI) * exp(p * log1pSmall(c - 1.0));
+  float p = clamp(exponent, 0.0, BLINN_PHONG_MAX_EXPONENT);
+  float s2 = max(sin2ThetaM, 0.0);
+  float lnC = s2 < 0.5 ? log1pSmall(-s2) / 2.0 : log(min(cosThetaM, 1.0));
+  return (p + 2.0) / (2.0 * PI) * exp(p * lnC);
+}
+float ndfBlinnPhong(float cosThetaM, float exponent) {
+  return ndfBlinnPhongFromSin2(cosThetaM, sin2FromCos(min(cosThetaM, 1.0)), exponent);
 }
 
 float ndfBeckmannFromSin2(float cosThetaM, float sin2ThetaM, float alpha) {

@@ -8,7 +8,7 @@ export const CHAPTERS = [
     page: 'surfaces.html',
     widgets: ['surfaces', 'subsurface-scale'],
   },
-  { key: 'brdf', title: 'The BRDF and the reflectance equation', blurb: 'Lobes, and the integral as a weighted average.', page: 'brdf.html', widgets: ['brdf-lobe'] },
+  { key: 'brdf', title: 'The BRDF and the reflectance equation', blurb: 'Radiance and colour as numbers; lobes; the integral that sums them.', page: 'brdf.html', widgets: ['radiance', 'brdf-lobe'] },
   {
     key: 'microfacets',
     title: 'Microfacet theory',

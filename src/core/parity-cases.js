@@ -14,7 +14,7 @@ export const GRIDS = {
   k: [0, 1e-3, 0.5, 1, 2.5, 5, 10],
   f0: [0, 0.02, 0.04, 0.17, 0.5, 0.95, 1],
   alpha: [0, 1e-5, 1e-4, 1e-3, 0.01, 0.1, 0.3, 0.5, 1],
-  exponent: [0, 1, 10, 100, 1e3, 1e4, 1e6, 2e6],
+  exponent: [0, 1, 10, 100, 1e3, 1e4, 1e6, 2e6, 2e8, 1e12, 1e30], // up to the GLSL clamp (ndf.glsl)
   abcA1: [0, 0.01, 0.1, 1, 10, 100, 1e3, 1e4, 2e4],
   abcA2: [0, 0.05, 0.5, 1, 1.5, 2, 3, 10, 20],
   sgdAlpha: [0, 0.01, 0.05, 0.2, 0.5, 1, 2, 3],
@@ -85,25 +85,23 @@ export const PARITY_CASES = [
       Math.sin(tl), 0, Math.cos(tl), alpha, Math.sin(tv) * Math.cos(phi), Math.sin(tv) * Math.sin(phi), Math.cos(tv), 0,
     ]),
   },
-  {
-    name: 'albedoGGX (256 samples)',
-    chunk: 'integrate.glsl',
-    glsl: 'albedoGGX(a.x, a.y, 256)',
-    outputs: 1,
-    js: (mu, alpha) => M.albedoGGX(mu, alpha, 256),
-    range: [0, 1],
-    args: cartesian(GRIDS.cosCoarse, GRIDS.alpha),
-  },
-  {
-    name: 'dfgSplitSum (256 samples)', chunk: 'integrate.glsl', glsl: 'dfgSplitSum(a.x, a.y, 256)', outputs: 2,
-    js: (mu, alpha) => M.dfgSplitSum(mu, alpha, 256), range: [0, 1], args: cartesian(GRIDS.cosCoarse, GRIDS.alpha),
-  },
   // directions built from sin and cos of an angle: there the GPU's own sin and cos set the accuracy (SwiftShader's
   // are up to ~1.8e-4 off; hardware's ~1e-6), not the formulas
   {
     name: 'sampleCosine', chunk: 'integrate.glsl', glsl: 'sampleCosine(a.xy)', outputs: 3, js: M.sampleCosine, range: [-1, 1], args: cartesian([0, 1e-6, 0.3, 0.999, 1], [0, 0.25, 0.7]),
     tolerance: TRIG_TOLERANCE,
   },
+  {
+    name: 'dfgTableUv', chunk: 'integrate.glsl', glsl: 'dfgTableUv(a.x, a.y)', outputs: 2, js: M.dfgTableUv,
+    range: [0, 1],
+    args: cartesian(GRIDS.cosCoarse, GRIDS.alpha),
+  },
+  // u1 up to 1 - 1e-6 (the samplers take u1 in [0, 1)), alpha from the clamp to 1
+  ...['sampleGGXNormal', 'sampleBeckmannNormal'].map((fn) => ({
+    name: fn, chunk: 'integrate.glsl', glsl: `${fn}(a.xy, a.z)`, outputs: 3, js: M[fn], range: [-1, 1],
+    args: cartesian([0, 1e-6, 0.3, 0.9, 0.999, 1 - 1e-6], [0, 0.25, 0.7], [0, 1e-4, 0.01, 0.3, 1]),
+    tolerance: TRIG_TOLERANCE,
+  })),
   {
     name: 'sampleCone', chunk: 'integrate.glsl', glsl: 'sampleCone(a.xy, a.z)', outputs: 3, js: M.sampleCone, range: [-1, 1],
     args: cartesian([0, 0.3, 1], [0, 0.25, 0.7], [-1, 0, 0.9, 0.99999, 1]), tolerance: TRIG_TOLERANCE,
@@ -145,6 +143,12 @@ export const PARITY_CASES = [
   { name: 'ndfGGX', chunk: 'ndf.glsl', glsl: 'ndfGGX(a.x, a.y)', outputs: 1, js: M.ndfGGX, range: [0, Infinity], args: cartesian(GRIDS.cos, GRIDS.alpha) },
   { name: 'ndfBeckmann', chunk: 'ndf.glsl', glsl: 'ndfBeckmann(a.x, a.y)', outputs: 1, js: M.ndfBeckmann, range: [0, Infinity], args: cartesian(GRIDS.cos, GRIDS.alpha) },
   { name: 'ndfBlinnPhong', chunk: 'ndf.glsl', glsl: 'ndfBlinnPhong(a.x, a.y)', outputs: 1, js: M.ndfBlinnPhong, range: [0, Infinity], args: cartesian(GRIDS.cos, GRIDS.exponent) },
+  {
+    name: 'ndfBlinnPhongFromSin2', chunk: 'ndf.glsl', glsl: 'ndfBlinnPhongFromSin2(a.x, a.y, a.z)', outputs: 1,
+    js: M.ndfBlinnPhongFromSin2, range: [0, Infinity],
+    args: cartesian([0, 1e-9, 1e-6, 1e-4, 0.01, 0.3, 1, 1.5, Math.PI / 2], GRIDS.exponent)
+      .map(([t, p]) => [Math.cos(t), Math.sin(t) ** 2, p]),
+  },
   { name: 'ndfABC', chunk: 'ndf.glsl', glsl: 'ndfABC(a.x, a.y, a.z)', outputs: 1, js: M.ndfABC, range: [0, Infinity], args: cartesian(GRIDS.cos, GRIDS.abcA1, GRIDS.abcA2) },
   { name: 'ndfSGD', chunk: 'ndf.glsl', glsl: 'ndfSGD(a.x, a.y, a.z)', outputs: 1, js: M.ndfSGD, range: [0, Infinity], args: cartesian(GRIDS.cos, GRIDS.sgdAlpha, GRIDS.sgdP) },
   { name: 'smithG1GGX', chunk: 'visibility.glsl', glsl: 'smithG1GGX(a.x, a.y)', outputs: 1, js: M.smithG1GGX, range: [0, 1], args: cartesian(GRIDS.cos, GRIDS.alpha) },

@@ -10,6 +10,7 @@ import { angleText, probeAngles, showProbeRows } from './probe.js';
 
 const UNIFORM_DEFAULTS = {
   uLightDir: [0, 0, 1], uLightIntensity: 1, uExposure: 1, uAlpha: 0.3, uExponent: 40, uA1: 20, uA2: 2.5, uSgdP: 0.64, uF0: 1, uDiffuse: 0.5, uSigma: 0,
+  uDfg: null, // the split-sum table, for the furnace
 };
 
 const HALF_SIZE = 1.08; // the orthographic camera's half extent: the unit sphere fills 1/1.08 of a cell

@@ -115,6 +115,9 @@ export async function validateExercise(raw, { schemaOf }) {
     }
   }
 
+  // a grader that can tell whether its question has exactly one answer says so
+  if (grader?.check && !errors.length) for (const problem of grader.check(params, raw.tolerance)) errors.push(`params: ${problem}`);
+
   if (errors.length) return { exercise: null, errors };
   return {
     exercise: { id: raw.id, chapter: raw.chapter, title: raw.title, prompt: raw.prompt, widget: raw.widget ?? null, state, locked, grader: raw.grader, params, tolerance: raw.tolerance },

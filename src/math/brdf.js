@@ -2,7 +2,7 @@
 // light equation. Vectors are arrays [x, y, z] in the local frame, n = (0, 0, 1), pointing away from the
 // surface. f is 0 when l or v is at or below the horizon, and when l = -v leaves no half vector.
 import { fresnelConductor, fresnelDielectric, fresnelSchlick } from './fresnel.js';
-import { ndfABC, ndfBeckmannFromSin2, ndfBlinnPhong, ndfGGXFromSin2, ndfSGD } from './ndf.js';
+import { ndfABC, ndfBeckmannFromSin2, ndfBlinnPhongFromSin2, ndfGGXFromSin2, ndfSGD } from './ndf.js';
 import {
   visibilityCookTorrance, visibilityImplicit, visibilityKelemen, visibilitySchlickGGX, visibilitySmithBeckmannSeparable,
   visibilitySmithGGXCorrelated, visibilitySmithGGXCorrelatedFast, visibilitySmithGGXSeparable,
@@ -25,7 +25,7 @@ const sin2 = (c) => (1 - c) * (1 + c);
 export const NDF_TERMS = {
   ggx: (c, p, s2 = sin2(c)) => ndfGGXFromSin2(c, s2, p.alpha),
   beckmann: (c, p, s2 = sin2(c)) => ndfBeckmannFromSin2(c, s2, p.alpha),
-  blinnPhong: (c, p) => ndfBlinnPhong(c, p.exponent),
+  blinnPhong: (c, p, s2 = sin2(c)) => ndfBlinnPhongFromSin2(c, s2, p.exponent),
   abc: (c, p) => ndfABC(c, p.a1, p.a2),
   sgd: (c, p) => ndfSGD(c, p.alpha, p.p),
 };

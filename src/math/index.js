@@ -15,3 +15,4 @@ export * from './diffuse.js';
 export * from './media.js';
 export * from './microsurface.js';
 export * from './lighting.js';
+export * from './radiometry.js';

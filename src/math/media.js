@@ -74,10 +74,13 @@ export const lambertianEntryAngle2D = (rand) => Math.asin(2 * rand() - 1);
 
 /**
  * Whole milk, Jensen, Marschner, Levoy & Hanrahan, "A Practical Model for Subsurface Light Transport",
- * SIGGRAPH 2001 (Table 2): reduced scattering and absorption coefficients per RGB channel, converted to 1/m.
+ * SIGGRAPH 2001 (Table 2): absorption and the REDUCED scattering coefficient σ′s = (1 − g) σs per RGB
+ * channel, converted to 1/m. σ′s is what the similarity relation keeps when a forward-scattering medium
+ * (mean cosine g) is replaced by an isotropic one that diffuses light alike; the paper gives no g, so σs
+ * itself (≥ σ′s) is unknown here.
  */
 export const WHOLE_MILK = {
-  source: 'Jensen et al., SIGGRAPH 2001 (whole milk)',
-  sigmaS: [2550, 3210, 3770],
+  source: 'Jensen et al., SIGGRAPH 2001 (whole milk, reduced scattering)',
+  sigmaSReduced: [2550, 3210, 3770],
   sigmaA: [1.1, 2.4, 14],
 };

@@ -32,20 +32,25 @@ export function ndfGGXFromSin2(cosThetaM, sin2ThetaM, alpha) {
   return (t * t) / Math.PI;
 }
 
-/** ln(1 + x) for small |x| without losing x's digits (series below 1e-2). */
-export function log1pSmall(x) {
-  return Math.abs(x) < 1e-2 ? x * (1 - x * (1 / 2 - x * (1 / 3 - x / 4))) : Math.log(1 + x);
+/**
+ * Normalised Blinn-Phong: (p + 2)/(2 pi) (n·m)^p for any exponent p >= 0 a double holds (Infinity counts as
+ * the largest). The lobe is about sqrt(2/p) wide: from n·m alone a double resolves it up to p ~ 1e15; with
+ * sin²θm given (ndfBlinnPhongFromSin2) up to p ~ 1e300, Walter's p = 2e8 at alpha = 1e-4 included.
+ */
+export function ndfBlinnPhong(cosThetaM, exponent) {
+  return ndfBlinnPhongFromSin2(cosThetaM, sin2(Math.min(cosThetaM, 1)), exponent);
 }
 
 /**
- * Normalised Blinn-Phong: (p + 2)/(2 pi) (n·m)^p, exponent p in [0, 1e6]. c^p is taken as
- * exp(p ln(1 - (1 - c))): pow(c, p) amplifies float32's error in log(c) near c = 1 by p.
+ * Blinn-Phong with sin²θm given as well: ln (n·m)^p = (p/2) ln(1 - sin²θm), with log1p near n, where
+ * sin² keeps its digits however narrow the lobe, and ln(n·m) away from it (where 1 - sin² may round to 0).
  */
-export function ndfBlinnPhong(cosThetaM, exponent) {
+export function ndfBlinnPhongFromSin2(cosThetaM, sin2ThetaM, exponent) {
   if (!(cosThetaM > 0)) return 0;
-  const p = Math.min(Math.max(exponent, 0), 1e6);
-  const c = Math.min(cosThetaM, 1);
-  return ((p + 2) / (2 * Math.PI)) * Math.exp(p * log1pSmall(c - 1));
+  const p = Math.min(Math.max(exponent, 0), Number.MAX_VALUE);
+  const s2 = Math.max(sin2ThetaM, 0);
+  const lnC = s2 < 0.5 ? Math.log1p(-s2) / 2 : Math.log(Math.min(cosThetaM, 1));
+  return ((p + 2) / (2 * Math.PI)) * Math.exp(p * lnC);
 }
 
 /** Beckmann: exp(-tan²/alpha²) / (pi alpha² (n·m)^4). */

@@ -11,39 +11,72 @@ const costSelect = document.getElementById('cost');
 document.getElementById('machine').textContent =
   `Measured ${report.date.slice(0, 10)} on ${report.machine.cpu} (${report.machine.cores} cores), Node ${report.machine.node}, ` +
   `${report.machine.chromium}, GPU: ${report.machine.gpuRenderer}. GPU pass: ${report.gpuSetup.size}² pixels × ${report.gpuSetup.loops} ` +
-  `evaluations per pixel, median of ${report.gpuSetup.frames} drained frames; the empty pass takes ${report.gpuSetup.baselineMsPerFrame?.toFixed(2) ?? '?'} ms of each.`;
+  `evaluations per pixel, median of ${report.gpuSetup.frames} drained frames; the empty pass takes ${report.gpuSetup.baselineMsPerFrame?.toFixed(2) ?? '?'} ms of each.` +
+  (report.familiesMeasured
+    ? ` The term families' ${report.familiesMeasured.timedCpu ? 'errors and CPU costs' : 'errors'} were measured again on ` +
+      `${report.familiesMeasured.date.slice(0, 10)} (npm run bench -- --only families); their ` +
+      `${report.familiesMeasured.timedCpu ? 'GPU columns are' : 'costs are'} from the full run.`
+    : '');
 
 const costOf = (v) => (costSelect.value === 'gpu' ? v.gpuRelative : v.cpuNsPerEval);
 const costLabel = () => (costSelect.value === 'gpu' ? 'GPU cost, relative to the cheapest variant' : 'CPU cost (ns per evaluation, JS)');
 
 const plots = [];
+const measureOf = (v) => v.error ?? v.difference;
+const maxText = (v) => (v.kind === 'reference' ? '0 (reference)' : measureOf(v).maxAbs.toExponential(2));
+const againstText = (v) =>
+  (v.kind === 'reference' ? 'reference' : `${v.kind === 'difference' ? 'differs from' : 'error against'} ${v.againstLabel}`);
+const colourOf = (f, v) => SERIES_COLORS[f.variants.indexOf(v) % SERIES_COLORS.length];
+
+/** Error against cost, for the reference and what approximates a model: different models are not on it. */
+function errorChart(section, f, variants) {
+  const costs = [...new Set(variants.map(costOf))].sort((a, b) => a - b);
+  plots.push(createPlot(section, {
+    title: `${f.title.split(':')[0]}: largest error of each approximation against its cost ` +
+      '(lower left is better; exact forms sit at 1e-7)',
+    xLabel: costLabel(),
+    yLabel: 'max |error|',
+    x: { min: costs[0] * 0.9, max: costs[costs.length - 1] * 1.1 },
+    y: { min: ERROR_FLOOR / 2, max: 2, log: true },
+    series: variants.map((v) => ({
+      label: v.kind === 'reference' ? `${v.label} (reference)` : `${v.label} (vs ${v.againstLabel})`,
+      stroke: colourOf(f, v),
+      width: 0,
+      points: true,
+    })),
+    data: [costs, ...variants.map((v) => costs.map((c) => (c === costOf(v) ? Math.max(v.error.maxAbs, ERROR_FLOOR) : null)))],
+    filename: `cost-accuracy-${f.key}`,
+    height: 240,
+  }));
+}
+
+function rowsOf(f, variants) {
+  return variants.map((v) => `<tr><td><span class="swatch" style="background:${colourOf(f, v)}"></span> ${v.label}</td>` +
+    `<td>${againstText(v)}</td><td>${maxText(v)}</td><td>${measureOf(v).rms.toExponential(2)}</td>` +
+    `<td>${v.cpuNsPerEval.toFixed(1)}</td><td>${v.gpuMsPerFrame.toFixed(2)}</td><td>${v.gpuRelative.toFixed(2)}×</td></tr>`).join('');
+}
+
 function render() {
   plots.splice(0).forEach((p) => p.dispose());
   root.replaceChildren();
   for (const f of report.families) {
+    const approximations = f.variants.filter((v) => v.kind !== 'difference');
+    const others = f.variants.filter((v) => v.kind === 'difference');
     const section = document.createElement('section');
-    section.innerHTML = `<h2>${f.title}</h2><p class="domain">Error of ${f.errorOf} against the float64 reference over ${f.domain}.</p>`;
+    section.innerHTML = `<h2>${f.title}</h2><p class="domain">${f.errorOf} over ${f.domain}.</p>`;
     root.append(section);
-    const costs = [...new Set(f.variants.map(costOf))].sort((a, b) => a - b);
-    const lo = costs[0];
-    const hi = costs[costs.length - 1];
-    plots.push(createPlot(section, {
-      title: `${f.title}: largest error against cost (lower left is better; the exact reference sits at 1e-7)`,
-      xLabel: costLabel(),
-      yLabel: 'max |error|',
-      x: { min: lo * 0.9, max: hi * 1.1 },
-      y: { min: ERROR_FLOOR / 2, max: 2, log: true },
-      series: f.variants.map((v, i) => ({ label: v.label, stroke: SERIES_COLORS[i % SERIES_COLORS.length], width: 0, points: true })),
-      data: [costs, ...f.variants.map((v) => costs.map((c) => (c === costOf(v) ? Math.max(v.error.maxAbs, ERROR_FLOOR) : null)))],
-      filename: `cost-accuracy-${f.key}`,
-      height: 240,
-    }));
+    if (approximations.length > 1) errorChart(section, f, approximations);
+    const head = (what) => `<tr><th>Variant</th><th>Measured against</th><th>max |${what}|</th><th>RMS ${what}</th>` +
+      '<th>CPU ns/eval</th><th>GPU ms/frame</th><th>GPU relative</th></tr>';
     const table = document.createElement('table');
     table.className = 'data-table compact';
-    table.innerHTML = '<thead><tr><th>Variant</th><th>max |error|</th><th>RMS error</th><th>CPU ns/eval</th><th>GPU ms/frame</th><th>GPU relative</th></tr></thead><tbody>' +
-      f.variants.map((v, i) => `<tr><td><span class="swatch" style="background:${SERIES_COLORS[i % SERIES_COLORS.length]}"></span> ${v.label}</td>` +
-        `<td>${v.error.maxAbs === 0 ? '0 (reference)' : v.error.maxAbs.toExponential(2)}</td><td>${v.error.rms.toExponential(2)}</td>` +
-        `<td>${v.cpuNsPerEval.toFixed(1)}</td><td>${v.gpuMsPerFrame.toFixed(2)}</td><td>${v.gpuRelative.toFixed(2)}×</td></tr>`).join('') + '</tbody>';
+    table.innerHTML = `<thead>${head('error')}</thead><tbody>${rowsOf(f, approximations)}</tbody>` +
+      (others.length
+        ? '<tbody class="differences"><tr><th colspan="7" scope="rowgroup">Other models: how far each is from ' +
+          `${others[0].againstLabel}. A difference, not an error: neither model approximates the other, and a ` +
+          'smaller difference does not make a model better.</th></tr>' +
+          `${head('difference')}${rowsOf(f, others)}</tbody>`
+        : '');
     section.append(table);
   }
 }

@@ -26,8 +26,8 @@ const TILES = [
   ['visibility-explorer', 'Smith family, rough', { alpha: 0.9, terms: 'smithGGXSeparable,smithGGXCorrelated,smithGGXCorrelatedFast' }],
   ['media', 'Clean water, 5 cm', { samples: '16' }],
   ['media', 'The talk’s grid of glasses', { view: 'grid', samples: '16' }],
-  ['energy', 'White furnace', { sampleCount: '256', samples: '32' }],
-  ['energy', 'White furnace, rough only', { alphas: '0.75,1.0', sampleCount: '256', samples: '32' }],
+  ['energy', 'White furnace', {}],
+  ['energy', 'White furnace, rough only', { alphas: '0.75,1.0' }],
 ];
 
 const status = document.getElementById('wall-status');

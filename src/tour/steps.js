@@ -27,8 +27,9 @@ export const TOUR_STEPS = [
   {
     id: 'media-red-absorber', section: 'media', widget: 'media', title: 'Absorption changes colour',
     state: { medium: 'red', distance: -1.3 },
-    text: 'A stronger absorber that takes more blue and green than red tints light within millimetres, like wine. ' +
-      'Absorption changes how much light there is and what colour it has, never its direction.',
+    text: 'A stronger absorber that takes far more blue and green than red (an illustrative one, wine-like) tints ' +
+      'light within a centimetre: 1 cm leaves 97% of red, 55% of green and 41% of blue; the 5 cm shown leave 86%, ' +
+      '5% and 1%. Absorption changes how much light there is and what colour it has, never its direction.',
   },
   {
     id: 'media-scattering', section: 'media', widget: 'media', title: 'Scattering makes a medium cloudy',
@@ -69,8 +70,8 @@ export const TOUR_STEPS = [
   {
     id: 'subsurface-local', section: 'surfaces', widget: 'subsurface-scale', title: 'When diffuse is local',
     state: { pixel: 4 },
-    text: 'Light refracted into a non-metal wanders and re-emerges some distance from where it entered. If a pixel ' +
-      'covers much more than that distance, we may pretend it comes out where it went in: shading stays local, ' +
+    text: 'Light refracted into a non-metal wanders and re-emerges some distance from where it entered. If a pixel’s ' +
+      'footprint on the surface is much wider than that distance, we may pretend it comes out where it went in: shading stays local, ' +
       'and this re-emerging light is the diffuse term.',
   },
   {
@@ -83,18 +84,35 @@ export const TOUR_STEPS = [
 
   // 3. The BRDF and the reflectance equation
   {
+    id: 'brdf-radiance', section: 'brdf', widget: 'radiance', title: 'Light as a number: radiance',
+    state: { distance: 4, lampRadius: 0.05, light: 'daylight', surface: 'grey' },
+    text: 'Shading measures light as radiance: power along a single ray, per area across it and per solid angle ' +
+      'around it. Radiance does not fade with distance: the lamp, 4 m away here, is smaller than at 1 m but no ' +
+      'dimmer. What fades is the irradiance a surface receives from the whole lamp, as 1/d² (16 times less than ' +
+      'at 1 m). Drag the distance and watch the two curves.',
+  },
+  {
+    id: 'brdf-spectral', section: 'brdf', widget: 'radiance', title: 'Spectra become RGB',
+    state: { distance: 1, light: 'sodium', surface: 'red' },
+    text: 'Light is a spectrum, but a renderer keeps three numbers and multiplies them channel by channel (the ⊗ ' +
+      'of the reflectance equation). Under a sodium lamp, whose light sits almost all at 589 nm, that shortcut ' +
+      'makes this red paint’s red channel 2.4 times too bright. Under the daylight-like white the two agree.',
+  },
+  {
     id: 'brdf-lobe', section: 'brdf', widget: 'brdf-lobe', title: 'The BRDF f(l, v)',
     state: { lightTheta: 45, viewTheta: 45 },
     text: 'With shading local, a surface point answers one question: of the light arriving from l, how much ' +
-      'leaves towards v? That is the BRDF. Fix the light and sweep the view, and f traces a lobe around the ' +
-      'mirror direction. Drag l or v on the polar plot.',
+      'leaves towards v? That is the BRDF, defined only for l and v above the surface. Fix the light and sweep ' +
+      'the view, and f traces a lobe around the mirror direction. Drag l or v on the polar plot.',
   },
   {
     id: 'brdf-intensity', section: 'brdf', widget: 'brdf-lobe', title: 'BRDF times the cosine',
-    state: { lightTheta: 60, viewTheta: 60, cosine: true },
-    text: 'The BRDF is a density per steradian, largest towards the horizon. Multiplying by n·v shows how much ' +
-      'light actually leaves in each direction, and the reflectance equation is exactly this: the integral of ' +
-      'f × incoming light × n·l, a weighted average over all incoming directions (the albedo plot).',
+    state: { lightTheta: 60, viewTheta: 60, cosine: true, alpha: 0.3 },
+    text: 'The BRDF is a density per steradian. In this state (light at 60°, α = 0.3) it is largest at the horizon: ' +
+      '1.00/sr at θv = 89° against 0.22 in the mirror direction; on a smoother surface (α = 0.1) it peaks near the ' +
+      'mirror direction instead. The lobe is drawn × n·v, the cosine of the view, which shows how much light leaves ' +
+      'towards each direction (most near 70° here). That is not the reflectance equation’s cosine: for one view ' +
+      'direction it integrates f × incoming radiance × n·l over incoming directions l (the albedo plot).',
   },
   {
     id: 'brdf-factors', section: 'brdf', widget: 'brdf-lobe', title: 'Taking the BRDF apart',
@@ -168,10 +186,11 @@ export const TOUR_STEPS = [
   },
   {
     id: 'fresnel-zones-lh-weighted', section: 'fresnel', widget: 'fresnel-zones', title: 'Weighted by the rest of the BRDF',
-    state: { mode: 'zones-lh-weighted', shape: 'torusknot', lightTheta: 140 },
+    state: { mode: 'zones-lh-weighted', shape: 'torusknot', lightTheta: 140, alpha: 0.3 },
     text: 'Now weight each pixel by the light the rest of the BRDF actually sends to the eye. From behind, ' +
       'little light reaches the eye: only thin grazing edges stay bright. Averaged over light directions all ' +
-      'around the object, about two thirds of the reflected light is green and under 1% red (see the legend).',
+      'around the object, at this roughness (GGX α = 0.3) about two thirds of the reflected light is green and ' +
+      'under 1% red (see the legend); a smoother surface (α = 0.1) sends about 2% red.',
   },
   {
     id: 'fresnel-f0-tables', section: 'fresnel', widget: 'f0-tables', title: 'F(0°) is the specular colour',
@@ -260,7 +279,7 @@ export const TOUR_STEPS = [
   },
   {
     id: 'diffuse-full-moon', section: 'diffuse', widget: 'diffuse-explorer', title: 'Rough diffuse: the full moon',
-    state: { models: ['lambert', 'orenNayar', 'orenNayarQualitative'], sigma: 60, lightTheta: 0, lightPhi: 0 },
+    state: { models: ['lambert', 'orenNayar', 'orenNayarQualitative'], sigma: 40, lightTheta: 0, lightPhi: 0 },
     text: 'When the surface is rough on a scale larger than the distance light travels inside it, the bumps ' +
       'themselves shade each other. Lit from behind the viewer, a rough sphere looks flat, like the full moon: ' +
       'Oren–Nayar keeps its rim nearly as bright as its centre, where Lambert falls off with n·l.',
@@ -303,7 +322,8 @@ export const TOUR_STEPS = [
   {
     id: 'rendering-models', section: 'rendering', widget: 'lighting-models', title: 'From general lighting to ambient',
     state: { refSamples: '128' },
-    text: 'The illumination models side by side on one sky with a sun: general lighting (the reference), ' +
+    text: 'The illumination models side by side on one sky with an enlarged sun (2°; the real one is 0.27°): ' +
+      'general lighting (the reference), ' +
       'image-based, area, punctual and ambient light. Each step down is cheaper and assumes more about where ' +
       'light comes from; the table says how much each costs and how far it falls from the reference.',
   },

@@ -15,6 +15,7 @@ const CHANGES = {
   media: { medium: 'red' },
   surfaces: { theta: 60 },
   'subsurface-scale': { sigmaS: 5 },
+  radiance: { distance: 5, lampRadius: 0.08, light: 'sodium' },
   'brdf-lobe': { alpha: 0.6 },
   'ndf-explorer': { hwhm: 15 },
   'visibility-explorer': { alpha: 0.2 },

@@ -17,10 +17,14 @@ function checkShape(report) {
     expect(f).toMatchObject({ title: expect.any(String), domain: expect.any(String), errorOf: expect.any(String) });
     expect(f.variants.length).toBeGreaterThanOrEqual(2);
     for (const v of f.variants) {
-      expect(v).toMatchObject({ key: expect.any(String), label: expect.any(String), error: { maxAbs: num, rms: num }, cpuNsPerEval: num, gpuMsPerFrame: num, gpuRelative: num });
-      for (const x of [v.error.maxAbs, v.error.rms, v.cpuNsPerEval, v.gpuMsPerFrame, v.gpuRelative]) expect(Number.isFinite(x) && x >= 0).toBe(true);
+      // an approximation has an error against its target; another model only a difference from it
+      const measure = v.kind === 'difference' ? 'difference' : 'error';
+      expect(v).toMatchObject({ key: expect.any(String), label: expect.any(String), kind: expect.any(String), [measure]: { maxAbs: num, rms: num }, cpuNsPerEval: num, gpuMsPerFrame: num, gpuRelative: num });
+      expect(v).not.toHaveProperty(measure === 'error' ? 'difference' : 'error');
+      if (v.kind !== 'reference') expect(f.variants.map((w) => w.key)).toContain(v.against);
+      for (const x of [v[measure].maxAbs, v[measure].rms, v.cpuNsPerEval, v.gpuMsPerFrame, v.gpuRelative]) expect(Number.isFinite(x) && x >= 0).toBe(true);
     }
-    expect(f.variants[0].error.maxAbs).toBe(0); // the first variant is the reference itself
+    expect(f.variants[0]).toMatchObject({ kind: 'reference', error: { maxAbs: 0 } }); // the reference against itself
     expect(Math.min(...f.variants.map((v) => v.gpuRelative))).toBe(1);
   }
   expect(report.versusThree).toMatchObject({ size: num, oursMsPerFrame: num, threeMsPerFrame: num, ratio: num });

@@ -1,7 +1,12 @@
 // The microfacet chapters (BRDF, microfacet theory, NDF, visibility) in a real Chromium.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { distinctColors, getState, launchBrowser, open, redAt, setControl, settle, shot, widget } from './helpers.js';
+import {
+  distinctColors, getState, launchBrowser, open, redAt, setControl, settle, shot, widget, withPixels,
+} from './helpers.js';
 import { linearToSrgb } from '../../src/math/color.js';
+import { albedoGGX } from '../../src/math/integrate.js';
+
+const DEG = Math.PI / 180;
 
 let browser;
 beforeAll(async () => {
@@ -94,12 +99,15 @@ describe('visibility-explorer', () => {
 
 describe('energy (white furnace)', () => {
   it('renders E = 1 - ln 2 at the centre of the alpha = 1 sphere, and a near-invisible smooth sphere', async () => {
-    const page = await open(browser, 'embed.html?w=energy&alphas=0.05,1.0&samples=256', { width: 900, height: 900 });
+    // samples and sampleCount were removed: an old URL with them still loads
+    const url = 'embed.html?w=energy&alphas=0.05,1.0&samples=256&sampleCount=4096';
+    const page = await open(browser, url, { width: 900, height: 900 });
     await widget(page, 'energy');
     await settle(page, 1500);
     const albedos = await page.evaluate(() => globalThis.__shadingLab.widgets['energy'].getAlbedos());
     console.log(`albedo: ${albedos.map((a) => `α ${a.alpha}: E(1) ${a.atNormal.toFixed(4)}, E_avg ${a.average.toFixed(4)}`).join('; ')}`);
-    expect(albedos[1].atNormal).toBeCloseTo(1 - Math.log(2), 3);
+    expect(albedos[1].atNormal).toBeCloseTo(1 - Math.log(2), 6);
+    expect(Object.keys(await getState(page, 'energy'))).toEqual(['alphas']);
     // read the rendered centres back: cell i of 2 spans half the canvas
     const png = await shot(page, '.sphere-grid canvas');
     const centres = await redAt(page, png, [[0.25, 0.5], [0.75, 0.5]]);
@@ -110,7 +118,56 @@ describe('energy (white furnace)', () => {
     expect(page.errors).toEqual([]);
     await page.close();
   });
+  it("the rim of the alpha = 0.5 sphere matches albedoGGX pixel by pixel out to 85° (E 0.872, not 64 samples' 0.959)",
+    async () => {
+      const page = await open(browser, 'embed.html?w=energy&alphas=0.5', { width: 900, height: 900 });
+      await widget(page, 'energy');
+      await settle(page, 1500);
+      const rim = rimAgainstAlbedo(await centreRow(page, await shot(page, '.sphere-grid canvas')), 0.5);
+      const { at85, worst } = rim;
+      console.log(`furnace rim α 0.5 (sphere radius ${rim.radius.toFixed(1)} px): the pixel at n·v ` +
+        `${at85.nv.toFixed(4)} reads ${at85.got}, albedoGGX gives ${at85.expected.toFixed(1)}; ` +
+        `worst from 70° ${JSON.stringify(worst)}`);
+      expect(Math.acos(rim.at85.nv) / DEG).toBeGreaterThan(84.5);
+      expect(Math.abs(rim.at85.got - rim.at85.expected)).toBeLessThanOrEqual(2);
+      expect(rim.worst.diff).toBeLessThanOrEqual(2.5);
+      expect(rim.at85.got).toBeLessThan(linearToSrgb(0.959) * 255 - 5); // what 64 Hammersley samples gave
+      expect(page.errors).toEqual([]);
+      await page.close();
+    });
 });
+
+/** The red channel along the middle row of a base64 PNG, and its size. */
+function centreRow(page, png) {
+  return withPixels(page, png, (image) => {
+    const y = Math.floor(image.height / 2);
+    const red = Array.from({ length: image.width }, (_, x) => image.data[(y * image.width + x) * 4]);
+    return { width: image.width, height: image.height, y, red };
+  });
+}
+
+/**
+ * Each pixel of the row right of the centre, from 70° to the silhouette, against sRGB(albedoGGX(n·v)) at its
+ * centre: one furnace sphere fills the square canvas but for the camera's margin (half extent 1.08, sphere-grid.js).
+ */
+function rimAgainstAlbedo(row, alpha) {
+  const radius = Math.min(row.width, row.height) / 2 / 1.08;
+  const dy = (row.y + 0.5 - row.height / 2) / radius;
+  const target = Math.cos(85 * DEG);
+  let worst = { diff: 0 };
+  let at85 = null;
+  for (let x = Math.ceil(row.width / 2); x < row.width; x++) {
+    const d = Math.hypot((x + 0.5 - row.width / 2) / radius, dy);
+    if (d > 1 - 0.75 / radius) break; // pixels the silhouette may cut (half a diagonal from their centre)
+    const nv = Math.sqrt(1 - d * d);
+    if (nv > Math.cos(70 * DEG)) continue;
+    const expected = linearToSrgb(albedoGGX(nv, alpha)) * 255;
+    const pixel = { nv, got: row.red[x], expected, diff: Math.abs(row.red[x] - expected) };
+    if (pixel.diff > worst.diff) worst = pixel;
+    if (!at85 || Math.abs(nv - target) < Math.abs(at85.nv - target)) at85 = pixel;
+  }
+  return { radius, worst, at85 };
+}
 
 describe('microfacets', () => {
   it("the ray-traced share of lit microfacets agrees with Smith's G1", async () => {

@@ -17,7 +17,7 @@ const SHOTS = [
   ['media-page', 'media.html?media.distance=1.3', { fullPage: true }],
   ['media-grid', 'embed.html?w=media&view=grid&samples=16'],
   ['surfaces-page', 'surfaces.html', { fullPage: true }],
-  ['brdf-page', 'brdf.html', { fullPage: true }],
+  ['brdf-page', 'brdf.html', { fullPage: true, height: 3600 }], // tall: a 3-D view out of sight draws nothing
   ['brdf-lobe-compare', 'embed.html?w=brdf-lobe&compare=1&cosine=1&lightTheta=60&viewTheta=20'],
   ['microfacets-page', 'microfacets.html', { fullPage: true }],
   ['ndf-page', 'ndf.html?ndf.exposure=8', { fullPage: true }],
@@ -36,8 +36,8 @@ const out = join(ROOT, 'docs/screenshots');
 mkdirSync(out, { recursive: true });
 const server = await serveStatic(await buildApp());
 const browser = await launchBrowser();
-for (const [name, path, opts = {}] of SHOTS) {
-  const page = await openPage(browser, server.url, path);
+for (const [name, path, { height, ...opts } = {}] of SHOTS) {
+  const page = await openPage(browser, server.url, path, height ? { height } : {});
   await settle(page, 800);
   // views out of sight draw nothing until they scroll into view: scroll through the page as a reader would
   for (let y = 0; y < (await page.evaluate(() => document.body.scrollHeight)); y += 600) {

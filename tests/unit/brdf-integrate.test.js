@@ -66,7 +66,7 @@ describe('microfacet BRDF', () => {
 describe('directional albedo (white furnace, F = 1)', () => {
   it('equals the closed form 1 - ln 2 at alpha = 1, mu = 1', () => {
     // GGX at alpha = 1 is D = 1/pi; with v = n, E = 2 ∫_0^{pi/4} (sin 2θ - tan θ) dθ = 1 - ln 2
-    expect(albedoGGX(1, 1, 4096)).toBeCloseTo(1 - Math.log(2), 4);
+    expect(albedoGGX(1, 1)).toBeCloseTo(1 - Math.log(2), 9);
   });
   it('never exceeds 1, falls with roughness, and is 1 for a near-mirror at normal incidence', () => {
     for (const mu of [0.05, 0.3, 0.7, 1]) {
@@ -80,13 +80,14 @@ describe('directional albedo (white furnace, F = 1)', () => {
     }
     expect(albedoGGX(1, 0.01)).toBeGreaterThan(0.999);
   });
-  it('importance sampling agrees with brute-force quadrature of the reflectance equation', () => {
+  it('importance sampling (4096 samples) agrees with the quadrature of the reflectance equation', () => {
     for (const a of [0.4, 0.7, 1]) {
       for (const mu of [0.2, 0.6, 1]) {
         const v = directionFromCos(mu);
         const p = { ...base, F: 'one', alpha: a };
-        const quad = hemisphereIntegral((l) => microfacetBRDF(l, v, p), 300);
-        expect(albedoGGX(mu, a, 4096)).toBeCloseTo(quad, 2);
+        const sampled = reflectanceImportanceGGX((l) => microfacetBRDF(l, v, p), v, a, 4096);
+        expect(sampled).toBeCloseTo(albedoGGX(mu, a), 2);
+        expect(hemisphereIntegral((l) => microfacetBRDF(l, v, p), 300)).toBeCloseTo(albedoGGX(mu, a), 2);
       }
     }
   });

@@ -148,17 +148,29 @@ describe('ndf-profile', () => {
     const p = ndfProfiles(5, params);
     expect(profileFactor(p.ggx, p.beckmann, 0.01).factor).toBeCloseTo(factor, 6);
   });
-  it('accepts the hidden NDF and its near-twin, rejects the others with the tail named', () => {
-    const args = { params, tolerance: 1.3, hidden: 'beckmann' };
-    const right = grade('ndf-profile', { ...args, answer: 'beckmann' });
-    expect(right.ok).toBe(true);
-    expect(right.details).toEqual([expect.stringMatching(/^Blinn-Phong matches too/)]);
-    expect(grade('ndf-profile', { ...args, answer: 'blinnPhong' }).ok).toBe(true);
+  it('accepts the hidden NDF only, and rejects the others with the tail named', () => {
+    const args = { params: { ...params, hwhm: 10 }, tolerance: 1.2, hidden: 'beckmann' };
+    expect(grade('ndf-profile', { ...args, answer: 'beckmann' })).toMatchObject({ ok: true, details: [] });
+    for (const k of ['blinnPhong', 'ggx', 'abc', 'sgd']) expect(grade('ndf-profile', { ...args, answer: k }).ok, k).toBe(false);
     const wrong = grade('ndf-profile', { ...args, answer: 'ggx' });
-    expect(wrong.ok).toBe(false);
-    expect(wrong.summary).toMatch(/^GGX’s profile is [\d.]+× brighter than the highlight’s at θh = [\d.]+°; a match needs ≤ 1.3×\.$/);
+    expect(wrong.summary).toMatch(/^GGX’s profile is [\d.]+× brighter than the highlight’s at θh = [\d.]+°; a match needs ≤ 1.2×\.$/);
     expect(wrong.details).toEqual(['The highlight’s tail falls off faster than your choice’s.']);
-    for (const k of ['abc', 'sgd']) expect(grade('ndf-profile', { ...args, answer: k }).ok).toBe(false);
+  });
+  it('is well posed only when no two NDFs are within the tolerance: Beckmann and Blinn-Phong are 1.10× apart at 5°', () => {
+    const check = (hwhm, tolerance) => GRADERS['ndf-profile'].check({ ...params, hidden: 'random', hwhm }, tolerance);
+    // the closed forms give the pair's factor independently of the grader's profiles
+    const m = matchNdfWidths(5);
+    const n = m.blinnPhong.exponent; // the exponent that gives Blinn-Phong the same half width
+    const beck = (c) => Math.exp(-(1 - c * c) / (c * c) / m.beckmann.alpha ** 2) / c ** 4;
+    let factor = 1;
+    for (let i = 0; i < 360; i++) {
+      const c = Math.cos(i * 0.25 * DEG);
+      if (beck(c) >= 0.01) factor = Math.max(factor, c ** n / beck(c), beck(c) / c ** n);
+    }
+    expect(factor).toBeCloseTo(1.10, 2);
+    expect(check(5, 1.3).join('\n')).toMatch(/Blinn-Phong is within 1\.1\d*× of Beckmann/);
+    expect(check(10, 1.2)).toEqual([]); // the shipped exercise: every pair at least 1.45× apart
+    expect(check(10, 1.5).length).toBeGreaterThan(0);
   });
   it('draws a random hidden NDF from the five', () => {
     expect(GRADERS['ndf-profile'].hide({ hidden: 'random' }, () => 0.99)).toBe('sgd');

@@ -67,6 +67,10 @@ describe('validator messages', () => {
     expect(await errorsOf({ ...sphere, locked: ['D', 'V'] })).toEqual(['locked: must include "F" (grader "sphere-match" assumes F = "schlick")']);
     expect(await errorsOf({ ...sphere, params: { f0: 0.5 } })).toEqual(['params.alpha: missing (required by grader "sphere-match")']);
     expect(await errorsOf({ ...sphere, widget: 'media', state: {}, locked: [] })).toEqual(['widget: grader "sphere-match" reads the "brdf-lobe" widget, not "media"']);
+    const ndf = JSON.parse(readFileSync(join(DIR, 'which-ndf.json'), 'utf8'));
+    const twins = await errorsOf({ ...ndf, state: { hwhm: 5 }, params: { ...ndf.params, hwhm: 5 }, tolerance: 1.3 });
+    expect(twins).toHaveLength(2); // each of the pair accepts the other
+    expect(twins[0]).toMatch(/^params: at a half width of 5° Blinn-Phong is within 1\.1\d*× of Beckmann, inside the tolerance 1\.3: two answers would be right$/);
     const schlick = JSON.parse(readFileSync(join(DIR, 'schlick-worst.json'), 'utf8'));
     expect(await errorsOf({ ...schlick, locked: ['materials'] })).toEqual(['locked: must include "ior" (grader "schlick-worst-angle" takes the question from it)']);
   });

@@ -13,15 +13,15 @@ describe('split-sum DFG term', () => {
   // independent: the midpoint rule over the hemisphere of the whole BRDF, once with F0 = 0 and once with F0 = 1
   it.each([[0.9, 0.3], [0.5, 0.5], [0.2, 0.8], [1, 1]])('at mu = %f, alpha = %f matches ∫ f (n·l) with F0 = 0 and 1', (mu, alpha) => {
     const v = directionFromCos(mu);
-    const [scale, bias] = dfgSplitSum(mu, alpha, 4096);
+    const [scale, bias] = dfgSplitSum(mu, alpha);
     const withF0 = (f0) => hemisphereIntegral((l) => microfacetBRDF(l, v, params(f0, alpha)), 200);
     expect(bias).toBeCloseTo(withF0(0), 2);
     expect(scale + bias).toBeCloseTo(withF0(1), 2);
   });
   it('gives F0·scale + bias = F0 for a mirror seen head on', () => {
-    const [s, b] = dfgSplitSum(1, 1e-4, 64);
-    expect(s).toBeCloseTo(1, 4);
-    expect(b).toBeCloseTo(0, 6);
+    const [s, b] = dfgSplitSum(1, 1e-4);
+    expect(s).toBeCloseTo(1, 6);
+    expect(b).toBeCloseTo(0, 9);
   });
 });
 

@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import {
-  absorptionFromK, lambertianEntryAngle2D, meanFreePath, opticalDepth, randomWalk2D, scatteringAlbedo, transmittance, waterAbsorptionRgb,
+  WHOLE_MILK, absorptionFromK, lambertianEntryAngle2D, meanFreePath, opticalDepth, randomWalk2D, scatteringAlbedo, transmittance,
+  waterAbsorptionRgb,
 } from '../../src/math/media.js';
 import { seededRandom } from '../../src/math/microsurface.js';
 
@@ -69,5 +70,14 @@ describe('random walk in a 2-D slab', () => {
     const [a, b] = [stillInside(100), stillInside(10000)];
     expect(b).toBeLessThan(a / 4);
     expect(b).toBeLessThan(0.02);
+  });
+});
+
+describe('whole milk (Jensen et al. 2001, Table 2)', () => {
+  it('holds the published absorption and reduced scattering, mm⁻¹ → m⁻¹, and says the scattering is reduced', () => {
+    // Table 2, whole milk: σa = 0.0011, 0.0024, 0.014 and σ′s = 2.55, 3.21, 3.77 (mm⁻¹, R, G, B)
+    [0.0011, 0.0024, 0.014].forEach((a, i) => expect(WHOLE_MILK.sigmaA[i]).toBeCloseTo(a * 1000, 9));
+    [2.55, 3.21, 3.77].forEach((s, i) => expect(WHOLE_MILK.sigmaSReduced[i]).toBeCloseTo(s * 1000, 9));
+    expect(WHOLE_MILK.source).toMatch(/reduced scattering/);
   });
 });

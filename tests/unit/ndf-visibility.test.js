@@ -1,8 +1,9 @@
 import { describe, expect, it } from 'vitest';
 import {
   abcNormalization, beckmannAlphaFromBlinnPhongExponent, blinnPhongExponentFromBeckmannAlpha, ndfABC, ndfBeckmann, ndfBlinnPhong,
-  ndfGGX, ndfSGD,
+  ndfBlinnPhongFromSin2, ndfGGX, ndfSGD,
 } from '../../src/math/ndf.js';
+import { integrate } from '../../src/math/quadrature.js';
 import { matchNdfWidths, ndfHalfWidthDeg } from '../../src/math/ndf-width.js';
 import * as V from '../../src/math/visibility.js';
 import { erf, erfc } from '../../src/math/special.js';
@@ -15,7 +16,7 @@ const alphas = [1e-3, 0.01, 0.05, 0.1, 0.3, 0.6, 1];
 describe('every NDF is a normalised density: ∫ D (n·m) dω = 1', () => {
   const cases = [
     ...[0.02, 0.05, 0.1, 0.3, 0.6, 1].flatMap((a) => [[`GGX α=${a}`, (c) => ndfGGX(c, a)], [`Beckmann α=${a}`, (c) => ndfBeckmann(c, a)]]),
-    ...[0, 1, 10, 100, 1e4].map((p) => [`Blinn-Phong p=${p}`, (c) => ndfBlinnPhong(c, p)]),
+    ...[0, 1, 10, 100, 1e4, 1e6].map((p) => [`Blinn-Phong p=${p}`, (c) => ndfBlinnPhong(c, p)]),
     ...[[0.01, 1], [0.5, 20], [1, 1], [1, 2], [10, 2.5], [100, 1.5], [1e4, 3], [50, 0.5], [5, 10]].map(([a1, a2]) => [`ABC ${a1},${a2}`, (c) => ndfABC(c, a1, a2)]),
     ...[[0.01, 0.5], [0.05, 0.64], [0.1, 1], [0.3, 1.5], [1, 0], [2, 1.9], [0.5, 1.9]].map(([a, p]) => [`SGD ${a},${p}`, (c) => ndfSGD(c, a, p)]),
   ];
@@ -28,6 +29,33 @@ describe('every NDF is a normalised density: ∫ D (n·m) dω = 1', () => {
       const a1 = 1 / (a2 + 1);
       expect(abcNormalization(a1 * (1 - 1e-9), a2)).toBeCloseTo(abcNormalization(a1 * (1 + 1e-9), a2), 9);
     }
+  });
+});
+
+describe('Blinn-Phong for any exponent a double holds', () => {
+  // 2π ∫ D cos θ sin θ dθ in t = θ/w, w = sqrt(2/p) the lobe's width: Gauss-Kronrod on [0, 12] (e^-72 beyond)
+  const overTheta = (D, p) => {
+    const w = Math.sqrt(2 / p);
+    const [c, s] = [(t) => Math.cos(w * t), (t) => Math.sin(w * t)];
+    return integrate((t) => 2 * Math.PI * D(c(t), s(t) ** 2) * c(t) * s(t) * w, 0, 12, 1e-12);
+  };
+  it.each([2e8, 1e12, 1e20, 1e100, 1e300])('from sin²θm, p = %d: ∫ D (n·m) dω = 1 within 1e-9', (p) => {
+    expect(Math.abs(overTheta((c, s2) => ndfBlinnPhongFromSin2(c, s2, p), p) - 1)).toBeLessThan(1e-9);
+  });
+  it("from n·m alone, Walter's p = 2e8 (alpha = 1e-4) and 1e10 stay normalised within 1e-5", () => {
+    for (const p of [blinnPhongExponentFromBeckmannAlpha(1e-4), 1e10]) {
+      expect(Math.abs(overTheta((c) => ndfBlinnPhong(c, p), p) - 1)).toBeLessThan(1e-5);
+      expect(Math.abs(projectedIntegral((c) => ndfBlinnPhong(c, p)) - 1)).toBeLessThan(1e-5);
+    }
+  });
+  it('gives finite values for the largest double and Infinity: the peak (p + 2)/2π, 0 off it, never NaN', () => {
+    for (const p of [Number.MAX_VALUE, Infinity]) {
+      expect(ndfBlinnPhong(1, p)).toBeCloseTo(Number.MAX_VALUE / (2 * Math.PI), -300);
+      expect(Number.isFinite(ndfBlinnPhong(1, p))).toBe(true);
+      expect(ndfBlinnPhong(1 - 1e-16, p)).toBe(0);
+      expect(ndfBlinnPhongFromSin2(1, 1e-300, p)).toBe(0);
+    }
+    expect(ndfBlinnPhong(1e-9, 0)).toBeCloseTo(1 / Math.PI, 12); // p = 0 at a grazing normal: no 0·Inf
   });
 });
 

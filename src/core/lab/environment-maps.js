@@ -1,12 +1,14 @@
 // What image-based lighting needs on the GPU, made once per environment and kept: the environment as an
-// equirectangular half-float map with mips, its GGX-prefiltered layers for the split sum, its irradiance
-// (summed exactly in JS from the map read back), tables to sample it by brightness, and three.js's PMREM of it for comparison. Also the DFG table,
-// computed by src/math's dfgSplitSum, which does not depend on the environment.
+// equirectangular half-float map with mips, its irradiance (summed exactly in JS from the map read back), tables
+// to sample it by brightness; made when first asked for: its prefiltered layers for the split sum, one set per NDF,
+// and three.js's PMREM of it for comparison. Also the DFG table, computed by src/math's dfgSplitSum, which does not
+// depend on the environment.
 import * as THREE from 'three';
 import { RoomEnvironment } from 'three/examples/jsm/environments/RoomEnvironment.js';
 import { assembleGlsl } from '../glsl.js';
 import { SHADER_CHUNKS } from '../shader-chunks.js';
-import { dfgSplitSum } from '../../math/integrate.js';
+import { DFG_TABLE_SIZE } from '../../math/integrate.js';
+import { dfgTableData } from './dfg-table.js';
 import { buildEnvSampling } from './env-sampling.js';
 import { irradianceMap } from './env-irradiance.js';
 
@@ -14,26 +16,13 @@ export const ENV_SIZE = [256, 128]; // coarse enough that the reference converge
 export const PREFILTER_SIZE = [128, 64];
 export const PREFILTER_LEVELS = 8; // layer k at perceptual roughness k/8, alpha = (k/8)²; level 0 is the map itself
 const IRRADIANCE_SIZE = [32, 16];
-const DFG_SIZE = 32;
+const PREFILTER_DEFINES = { ggx: {}, beckmann: { NDF_BECKMANN: 1 } };
 
-let dfgTable = null;
-/** The DFG table over (n·v, sqrt(alpha)) at texel centres, [scale, bias] per texel; computed once per page. */
-export function dfgTableData() {
-  if (dfgTable) return dfgTable;
-  const data = new Float32Array(DFG_SIZE * DFG_SIZE * 4);
-  for (let j = 0; j < DFG_SIZE; j++) {
-    const r = (j + 0.5) / DFG_SIZE;
-    for (let i = 0; i < DFG_SIZE; i++) {
-      const [scale, bias] = dfgSplitSum((i + 0.5) / DFG_SIZE, r * r, 256);
-      data.set([scale, bias, 0, 1], (j * DFG_SIZE + i) * 4);
-    }
-  }
-  return (dfgTable = { data, size: DFG_SIZE });
-}
+export { dfgTableData }; // built in dfg-table.js (plain JS, no GPU)
 
-/** The DFG table as a filtered texture (half float), one per renderer. */
-export function createDfgTexture() {
-  const dfg = halfTexture({ data: dfgTableData().data, width: DFG_SIZE, height: DFG_SIZE });
+/** The DFG table for terms { ndf, visibility } as a filtered texture (half float): sample it at dfgTableUv. */
+export function createDfgTexture(terms = {}) {
+  const dfg = halfTexture({ data: dfgTableData(terms).data, width: DFG_TABLE_SIZE, height: DFG_TABLE_SIZE });
   dfg.wrapS = THREE.ClampToEdgeWrapping;
   return dfg;
 }
@@ -59,9 +48,7 @@ const halfTarget = (w, h, options = {}) => new THREE.WebGLRenderTarget(w, h, {
 export function createEnvironmentMaps(renderer) {
   const env = halfTarget(...ENV_SIZE, { minFilter: THREE.LinearMipmapLinearFilter, generateMipmaps: true });
   const weighted = halfTarget(...ENV_SIZE, { minFilter: THREE.LinearMipmapLinearFilter, generateMipmaps: true }); // for the prefilter
-  const prefiltered = new THREE.WebGLArrayRenderTarget(...PREFILTER_SIZE, PREFILTER_LEVELS, {
-    type: THREE.HalfFloatType, depthBuffer: false, magFilter: THREE.LinearFilter, minFilter: THREE.LinearFilter, wrapS: THREE.RepeatWrapping,
-  });
+  const prefilteredByNdf = new Map(); // ndf -> { target, filter, fresh }
   const irradiance = halfTexture({ data: new Float32Array(IRRADIANCE_SIZE[0] * IRRADIANCE_SIZE[1] * 4), width: IRRADIANCE_SIZE[0], height: IRRADIANCE_SIZE[1] });
 
   const quad = new THREE.Mesh(new THREE.PlaneGeometry(2, 2));
@@ -78,7 +65,6 @@ export function createEnvironmentMaps(renderer) {
   const filterUniforms = () => ({
     uEnv: { value: weighted.texture }, uEnvSize: { value: new THREE.Vector2(...ENV_SIZE) }, uSize: { value: new THREE.Vector2() }, uAlpha: { value: 0 }, uSamples: { value: 64 },
   });
-  const ggx = pass('env-prefilter.frag.glsl', {}, filterUniforms());
   const run = (material, target, layer = 0) => {
     quad.material = material;
     renderer.setRenderTarget(target, layer);
@@ -110,13 +96,28 @@ export function createEnvironmentMaps(renderer) {
   let pmremGenerator = null;
   let pmrem = null;
 
-  const prefilter = () => {
-    run(copyWeighted, weighted);
-    ggx.uniforms.uSize.value.set(...PREFILTER_SIZE);
-    for (let k = 1; k <= PREFILTER_LEVELS; k++) {
-      ggx.uniforms.uAlpha.value = (k / PREFILTER_LEVELS) ** 2;
-      run(ggx, prefiltered, k - 1);
+  // the layers of the map filtered with the lobe of `ndf` ('ggx' | 'beckmann'), for the map as it now is
+  const prefilter = (ndf) => {
+    let entry = prefilteredByNdf.get(ndf);
+    if (!entry) {
+      const target = new THREE.WebGLArrayRenderTarget(...PREFILTER_SIZE, PREFILTER_LEVELS, {
+        type: THREE.HalfFloatType, depthBuffer: false, magFilter: THREE.LinearFilter, minFilter: THREE.LinearFilter,
+        wrapS: THREE.RepeatWrapping,
+      });
+      const filter = pass('env-prefilter.frag.glsl', PREFILTER_DEFINES[ndf], filterUniforms());
+      filter.uniforms.uSize.value.set(...PREFILTER_SIZE);
+      prefilteredByNdf.set(ndf, (entry = { target, filter, fresh: false }));
     }
+    if (!entry.fresh) {
+      const previous = renderer.getRenderTarget();
+      for (let k = 1; k <= PREFILTER_LEVELS; k++) {
+        entry.filter.uniforms.uAlpha.value = (k / PREFILTER_LEVELS) ** 2;
+        run(entry.filter, entry.target, k - 1);
+      }
+      renderer.setRenderTarget(previous);
+      entry.fresh = true;
+    }
+    return entry.target.texture;
   };
 
   const roomCube = () => {
@@ -129,7 +130,8 @@ export function createEnvironmentMaps(renderer) {
 
   return {
     env: env.texture,
-    prefiltered: prefiltered.texture,
+    /** The map prefiltered for the split sum with the lobe of `ndf` ('ggx' | 'beckmann'), made when first asked for. */
+    prefiltered: prefilter,
     irradiance,
     sampling,
     /** Replaces the environment: 'studio', or pixels { data, width, height } (sky, furnace, a user's file). */
@@ -146,7 +148,8 @@ export function createEnvironmentMaps(renderer) {
         run(copyFlat, env);
         texture.dispose();
       }
-      prefilter();
+      run(copyWeighted, weighted);
+      prefilteredByNdf.forEach((entry) => (entry.fresh = false));
       updateFromPixels();
       renderer.setRenderTarget(previous);
       pmrem?.dispose();
@@ -160,7 +163,9 @@ export function createEnvironmentMaps(renderer) {
       return pmrem.texture;
     },
     dispose() {
-      [env, weighted, prefiltered, irradiance, sampling.marginal, sampling.conditional, sampling.pdf, copyFlat, copyCube, copyWeighted, ggx, quad.geometry].forEach((x) => x.dispose());
+      [env, weighted, irradiance, sampling.marginal, sampling.conditional, sampling.pdf].forEach((x) => x.dispose());
+      [copyFlat, copyCube, copyWeighted, quad.geometry].forEach((x) => x.dispose());
+      prefilteredByNdf.forEach(({ target, filter }) => [target, filter].forEach((x) => x.dispose()));
       pmrem?.dispose();
       pmremGenerator?.dispose();
     },

@@ -6,9 +6,12 @@ import { EXRLoader } from 'three/examples/jsm/loaders/EXRLoader.js';
 import * as THREE from 'three';
 import { equirectDirection } from '../../math/lighting.js';
 
-export const ENVIRONMENTS = { studio: 'Studio (three.js RoomEnvironment)', sky: 'Sky with a sun', furnace: 'White furnace (radiance 1)', file: 'Your file (drop .hdr / .exr)' };
+export const ENVIRONMENTS = { studio: 'Studio (three.js RoomEnvironment)', sky: 'Sky with an enlarged sun (2°, the real one 0.27°)', furnace: 'White furnace (radiance 1)', file: 'Your file (drop .hdr / .exr)' };
 
-/** The sky's sun: a disc of angular radius 2° (4× the real sun, so Monte Carlo finds it), 35° up. */
+/**
+ * The sky's sun: a disc of angular radius 2°, 35° up. The real sun's is 0.27° (7.5× smaller): enlarged so that the
+ * 256 × 128 map (1.4° texels) resolves it and the reference's samples find it.
+ */
 export const SUN = { dir: unit([-0.45, Math.sin((35 * Math.PI) / 180), 0.65]), sin: Math.sin((2 * Math.PI) / 180), radiance: [900, 820, 700] };
 
 function unit(d) {

@@ -1,12 +1,15 @@
 // Renders the material lab's sphere: once by the chosen approximations, once as a converging Monte Carlo
 // reference (batches averaged in a float target), and their difference, summed on the GPU to an RMS error.
 // A scene is { material, terms, lights, methods, maps } (see sceneDefines; maps: its environment-maps.js maps);
-// `slots` approximations can be kept side by side. Images are res × res, linear radiance.
+// `slots` approximations can be kept side by side. Images are res × res, linear radiance. The approximations read
+// the DFG table and the prefiltered map of the chosen terms (lab-approximations.js says which): `dfg(terms)` gives
+// the table's texture.
 import * as THREE from 'three';
 import { assembleGlsl } from '../glsl.js';
 import { SHADER_CHUNKS } from '../shader-chunks.js';
 import { createGpuSum, floatTarget } from '../gpu-sum.js';
 import { PREFILTER_LEVELS } from './environment-maps.js';
+import { approximationInputs } from './lab-approximations.js';
 
 export const EXTENT = 1.1; // the view's half width: the unit sphere fills 1/1.1 of it
 export const REFERENCE_BATCH = 8; // samples per pixel and light in one reference batch
@@ -39,7 +42,7 @@ export function sceneDefines(scene, reference) {
   return d;
 }
 
-export function createLabRenderer(renderer, dfg, resolution, slots = 1) {
+export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
   const res = resolution;
   const approxTargets = Array.from({ length: slots }, () => new THREE.WebGLRenderTarget(res, res, { type: THREE.HalfFloatType, depthBuffer: false, magFilter: THREE.NearestFilter, minFilter: THREE.NearestFilter }));
   const ping = [floatTarget(res, res), floatTarget(res, res)];
@@ -56,7 +59,7 @@ export function createLabRenderer(renderer, dfg, resolution, slots = 1) {
     uPunctualDir: { value: new THREE.Vector3(0, 0, 1) }, uPunctualCLight: { value: new THREE.Vector3() },
     uSphereDir: { value: new THREE.Vector3(0, 0, 1) }, uSphereSin: { value: 0.1 }, uSphereRadiance: { value: new THREE.Vector3() },
     uEnv: { value: null }, uEnvIntensity: { value: 1 }, uAmbient: { value: new THREE.Vector3() },
-    uPrefiltered: { value: null }, uPrefilterLevels: { value: PREFILTER_LEVELS }, uIrradiance: { value: null }, uDfg: { value: dfg },
+    uPrefiltered: { value: null }, uPrefilterLevels: { value: PREFILTER_LEVELS }, uIrradiance: { value: null }, uDfg: { value: null },
     uEnvMarginal: { value: null }, uEnvConditional: { value: null }, uEnvPdf: { value: null }, uEnvSampling: { value: false },
     uSamples: { value: 16 }, uJitter: { value: new THREE.Vector2() }, uPrevious: { value: null }, uWeight: { value: 1 },
   };
@@ -82,11 +85,15 @@ export function createLabRenderer(renderer, dfg, resolution, slots = 1) {
   const orthoCamera = new THREE.OrthographicCamera(-EXTENT, EXTENT, EXTENT, -EXTENT, 0.1, 10);
   orthoCamera.position.z = 5;
 
-  const setUniforms = (scene) => {
+  const setUniforms = (scene, reference) => {
     const { material, lights } = scene;
     const m = scene.maps;
     uniforms.uEnv.value = m.env;
-    uniforms.uPrefiltered.value = m.prefiltered;
+    if (!reference) {
+      const inputs = approximationInputs(scene);
+      if (inputs.dfg) uniforms.uDfg.value = dfg(inputs.dfg);
+      if (inputs.prefilter) uniforms.uPrefiltered.value = m.prefiltered(inputs.prefilter);
+    }
     uniforms.uIrradiance.value = m.irradiance;
     uniforms.uEnvMarginal.value = m.sampling.marginal;
     uniforms.uEnvConditional.value = m.sampling.conditional;
@@ -133,7 +140,7 @@ export function createLabRenderer(renderer, dfg, resolution, slots = 1) {
     /** Renders an approximation into `slot`; returns its GPU time in ms (the draw, waited for by a 1-texel read). */
     renderApprox(scene, slot = 0) {
       const approx = approxTargets[slot];
-      setUniforms(scene);
+      setUniforms(scene, false);
       uniforms.uSamples.value = scene.methods.samples;
       const defines = sceneDefines(scene, false);
       const fresh = !programs.has(JSON.stringify(defines));
@@ -163,7 +170,7 @@ export function createLabRenderer(renderer, dfg, resolution, slots = 1) {
     },
     /** Adds one batch of REFERENCE_BATCH samples per pixel and light to the reference's running mean. */
     accumulate(scene) {
-      setUniforms(scene);
+      setUniforms(scene, true);
       uniforms.uSamples.value = REFERENCE_BATCH;
       uniforms.uJitter.value.set(Math.random(), Math.random());
       uniforms.uPrevious.value = ping[current].texture;

@@ -1,6 +1,7 @@
 // One canvas for the lab: a row of panels (approximations, reference, errors), each a res × res image from the
 // lab renderer, drawn with the exposure (or on the error scale), with HTML captions. Also owns the GPU side:
-// the lab renderer, and each environment's maps, made when first asked for and kept for switching back.
+// the lab renderer, each environment's maps and each DFG table, made when first asked for and kept for switching
+// back.
 import * as THREE from 'three';
 import { createViewport } from '../viewport.js';
 import { assembleGlsl } from '../glsl.js';
@@ -30,7 +31,7 @@ export function createLabView(container, { label, resolution, slots = 1, frame, 
   const captions = document.createElement('div');
   captions.className = 'lab-captions';
   let lab = null;
-  let dfg = null;
+  const dfgTextures = new Map(); // "ndf/visibility" -> the DFG table of those terms
   const environments = new Map(); // key -> { maps, pixels }
   const tone = viewMaterial({});
   const error = viewMaterial({ ERROR_VIEW: 1 });
@@ -52,9 +53,14 @@ export function createLabView(container, { label, resolution, slots = 1, frame, 
     return entry.maps;
   };
 
+  const dfg = (terms) => {
+    const key = `${terms.ndf}/${terms.visibility}`;
+    if (!dfgTextures.has(key)) dfgTextures.set(key, createDfgTexture(terms));
+    return dfgTextures.get(key);
+  };
+
   const draw = (renderer) => {
-    dfg ??= createDfgTexture();
-    lab ??= createLabRenderer(renderer, dfg, resolution, slots);
+    lab ??= createLabRenderer(renderer, { dfg, resolution, slots });
     again = false;
     const panels = frame({ lab, environment: environment(renderer), again: () => (again = true) });
     const pr = renderer.getPixelRatio();
@@ -83,10 +89,11 @@ export function createLabView(container, { label, resolution, slots = 1, frame, 
   // everything on the GPU went with the context: rebuilt by the next draw, from the state
   const onContextLost = () => {
     lab?.dispose();
-    dfg?.dispose();
+    lab = null;
+    dfgTextures.forEach((t) => t.dispose());
+    dfgTextures.clear();
     environments.forEach((e) => e.maps.dispose());
     environments.clear();
-    [lab, dfg] = [null, null];
     onReset?.();
   };
   const viewport = createViewport(container, { draw, label, onContextLost });
@@ -113,7 +120,7 @@ export function createLabView(container, { label, resolution, slots = 1, frame, 
     invalidate: () => viewport?.invalidate(),
     dispose() {
       [tone, error, quad.geometry].forEach((x) => x.dispose());
-      dfg?.dispose();
+      dfgTextures.forEach((t) => t.dispose());
       lab?.dispose();
       environments.forEach((e) => e.maps.dispose());
       viewport?.dispose();

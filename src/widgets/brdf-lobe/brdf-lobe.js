@@ -40,8 +40,10 @@ export const schema = {
 const ABOUT =
   'Drag l or v on the polar plot (or focus it and use the arrow keys). The lobe is f(l, v) for every view ' +
   'direction: turn off D and the highlight’s shape is gone; turn off the denominator and the lobe stops ' +
-  'growing at grazing angles (with F, that is why f itself is largest towards the horizon; × n·v shows how much ' +
-  'light actually leaves in each direction); turn off G and nothing dims at the horizon. Roughness is GGX’s α; other NDFs take ' +
+  'growing at grazing angles (that denominator, with F, is why at moderate roughness f itself is largest towards the ' +
+  'horizon, while at α = 0.1 it peaks near the mirror direction); turn off G and nothing dims at the horizon. ' +
+  '× n·v multiplies the lobe by the cosine of the view, showing how much light leaves towards each direction; the ' +
+  'reflectance equation’s cosine is another one, n·l, of the incoming light. Roughness is GGX’s α; other NDFs take ' +
   'the parameters that give them the same half width. The image over (θh, θd) shows the same BRDF in the ' +
   'angles it really depends on; the albedo plot integrates it over all light directions.';
 

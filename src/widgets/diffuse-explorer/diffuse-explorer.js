@@ -21,7 +21,7 @@ export const schema = {
     default: MODEL_KEYS,
     label: 'Diffuse models',
   },
-  sigma: { type: 'number', min: 0, max: 90, step: 1, default: 40, label: 'Oren–Nayar roughness σ', unit: '°', hint: 'Standard deviation of the facet slope angle, in degrees (the model itself takes radians).' },
+  sigma: { type: 'number', min: 0, max: 90, step: 1, default: 40, label: 'Oren–Nayar roughness σ', unit: '°', hint: 'Standard deviation of the facet slope angle, in degrees (the model itself takes radians). Above 45° it is an extrapolation: a Gaussian of tilts that wide puts over 4.6% of the facets past 90°, which no V-groove facet can have.' },
   cdiff: { type: 'number', min: 0, max: 1, step: 0.01, default: 0.8, label: 'Diffuse colour c_diff' },
   f0: { type: 'number', min: 0, max: 1, step: 0.01, default: 0.04, label: 'Specular F0 (trade-off)' },
   lightTheta: { type: 'number', min: 0, max: 180, step: 0.5, default: 0, label: 'Light from view', unit: '°' },
@@ -38,14 +38,19 @@ const ABOUT =
   'give up. Oren–Nayar models a surface of V-shaped grooves whose slopes spread by σ: grooves facing the viewer ' +
   'are also the lit ones when the light is behind the viewer, so the rim stays bright and the disc looks flat, ' +
   'like the full moon. Put the light at the centre of the pad, raise σ and compare the profiles; at σ = 0 both ' +
-  'Oren–Nayar forms are exactly Lambert. The last plot adds a smooth specular F(θv) to each diffuse albedo: ' +
-  'above 1, the pair reflects more light than arrives.';
+  'Oren–Nayar forms are exactly Lambert. σ is the spread of the facet tilt angle: beyond about 45° a Gaussian ' +
+  'that wide would tilt over 4.6% of the facets past 90°, so the slider’s upper half (to 90°) extrapolates the ' +
+  'model, and the plots say so. The last plot adds a smooth specular F(θv) to each diffuse albedo: above 1, the ' +
+  'pair reflects more light than arrives. Fresnel-weighted Lambert is not normalised: head-on it returns ' +
+  '(1 − F0)²·20/21 of c_diff (0.878 at F0 = 0.04).';
 
 const TERMS_USED = ['diffuseLambert', 'diffuseFresnelWeighted', 'diffuseAshikhminShirley', 'diffuseOrenNayar', 'diffuseOrenNayarQualitative', 'fresnelSchlick'];
 
 const colorOf = (key) => SERIES_COLORS[MODEL_KEYS.indexOf(key) % SERIES_COLORS.length];
 const degValues = (u, ticks) => ticks.map((t) => `${t}°`);
-const sigmaText = (state) => `σ = ${state.sigma}° (${(state.sigma * DEG).toFixed(3)} rad)`;
+/** Above this σ the Gaussian of facet tilts puts more than 4.6% of them beyond 90°: the model is extrapolated. */
+const SIGMA_MODELLED_DEG = 45;
+const sigmaText = (state) => `σ = ${state.sigma}° (${(state.sigma * DEG).toFixed(3)} rad${state.sigma > SIGMA_MODELLED_DEG ? ', extrapolated' : ''})`;
 /** Where the flatness table reads the profile: 90% of the way to the rim, on the light's side. */
 const RIM = 0.9;
 

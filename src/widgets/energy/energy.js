@@ -1,10 +1,12 @@
 // energy: the white furnace. With F = 1 a microfacet BRDF should send back all the light it receives, but
 // the model drops every ray that a second microfacet blocks. Directional albedo E(mu) against angle for a
-// sweep of roughness, the energy lost 1 - E, and spheres in a uniform white environment computed on the GPU.
+// sweep of roughness, the energy lost 1 - E, and spheres in a uniform white environment, each pixel reading
+// E(n·v) from the split-sum table (the same float64 quadrature, bilinear on the GPU).
 import { createWidgetShell } from '../../core/widget-shell.js';
 import { createPlot } from '../../core/plot.js';
 import { createSphereGrid } from '../../core/sphere-grid.js';
 import { seriesStyle } from '../../core/palettes.js';
+import { createDfgTexture } from '../../core/lab/environment-maps.js';
 import { albedoGGX, averageAlbedo } from '../../math/integrate.js';
 
 export const schema = {
@@ -15,8 +17,6 @@ export const schema = {
     default: ['0.05', '0.25', '0.5', '0.75', '1.0'],
     label: 'Roughness sweep',
   },
-  samples: { type: 'enum', options: { 32: '32', 64: '64', 128: '128', 256: '256' }, default: '64', label: 'GPU samples / pixel' },
-  sampleCount: { type: 'enum', options: { 256: '256', 1024: '1024', 4096: '4096' }, default: '1024', label: 'Plot samples / angle' },
 };
 
 const ABOUT =
@@ -24,21 +24,24 @@ const ABOUT =
   'surroundings: it disappears. These spheres use GGX with height-correlated Smith and F = 1. Smooth ones ' +
   'nearly vanish; rough ones turn grey, most of all at the centre, because light blocked by one microfacet is ' +
   'simply dropped instead of bouncing on (the talk’s multiple-bounce slide). The plots give E(μ) = ∫ f (n·l) dω ' +
-  'by importance sampling; the table gives E head-on and its cosine-weighted average over all directions.';
+  'by deterministic quadrature over the microfacet normals, and each sphere pixel reads E(n·v) from a texture ' +
+  'precomputed with it; the table below gives E head-on and its cosine-weighted average over all directions.';
 
 const ANGLES = Float64Array.from({ length: 90 }, (_, i) => i + 0.5); // view angles 0.5°..89.5°
 const DEG = Math.PI / 180;
 
+// the plots' curves: 24 Gauss-Legendre nodes per piece, within 2e-5 of the adaptive quadrature (unit-tested)
+const PLOT_QUADRATURE = { nodes: 24 };
+
 function sweep(state) {
-  const n = Number(state.sampleCount);
   return state.alphas.map(Number).sort((a, b) => a - b).map((alpha, i) => {
-    const E = ANGLES.map((deg) => albedoGGX(Math.cos(deg * DEG), alpha, n));
-    const avg = averageAlbedo((mu) => albedoGGX(mu, alpha, n));
-    return { alpha, E, loss: E.map((e) => 1 - e), avg, ...seriesStyle(i), atNormal: albedoGGX(1, alpha, n) };
+    const E = ANGLES.map((deg) => albedoGGX(Math.cos(deg * DEG), alpha, {}, PLOT_QUADRATURE));
+    const avg = averageAlbedo((mu) => albedoGGX(mu, alpha));
+    return { alpha, E, loss: E.map((e) => 1 - e), avg, ...seriesStyle(i), atNormal: albedoGGX(1, alpha) };
   });
 }
 
-const TERMS_USED = ['albedoGGX', 'visibilitySmithGGXCorrelated', 'ndfGGX'];
+const TERMS_USED = ['dfgTableUv', 'visibilitySmithGGXCorrelated', 'ndfGGX'];
 
 export function createEnergy(container, initialState = {}, { onStateChange } = {}) {
   const shell = createWidgetShell(container, { name: 'energy', schema, initialState, about: ABOUT, terms: TERMS_USED });
@@ -47,6 +50,7 @@ export function createEnergy(container, initialState = {}, { onStateChange } = {
   const spheres = createSphereGrid(shell.view, { label: 'Spheres in a white furnace', background: '#ffffff' });
   const table = document.createElement('div');
   shell.view.append(table);
+  const dfg = createDfgTexture(); // GGX, height-correlated Smith: scale + bias is E
   let data = sweep(shell.state);
 
   const base = { xLabel: 'View angle θv (degrees)', x: { min: 0, max: 90 }, xValues: (u, t) => t.map((v) => `${v}°`) };
@@ -68,21 +72,22 @@ export function createEnergy(container, initialState = {}, { onStateChange } = {
       '</tbody></table>';
     spheres.setCells(data.map((d) => ({
       label: `α = ${d.alpha}`,
-      defines: { FURNACE: true, FURNACE_SAMPLES: Number(shell.state.samples) },
-      uniforms: { uAlpha: d.alpha },
-      probe: (a) => [['E(n·v), F = 1', albedoGGX(a.nv, d.alpha, Number(shell.state.sampleCount)).toFixed(4)], ['energy lost', `${((1 - albedoGGX(a.nv, d.alpha, Number(shell.state.sampleCount))) * 100).toFixed(1)}%`]],
+      defines: { FURNACE: true },
+      uniforms: { uAlpha: d.alpha, uDfg: dfg },
+      probe: (a) => {
+        const e = albedoGGX(a.nv, d.alpha);
+        return [['E(n·v), F = 1', e.toFixed(4)], ['energy lost', `${((1 - e) * 100).toFixed(1)}%`]];
+      },
     })));
-    shell.describe(`Spheres in a uniform white environment (F = 1, ${shell.state.samples} GPU samples per pixel); a sphere that loses no energy vanishes into it. ` +
+    shell.describe('Spheres in a uniform white environment (F = 1); a sphere that loses no energy vanishes into it. ' +
       `${data.map((d) => `α ${d.alpha}: albedo ${d.atNormal.toFixed(3)} head-on, ${d.avg.toFixed(3)} on average, ${((1 - d.avg) * 100).toFixed(1)}% lost`).join('; ') || 'No roughness chosen'}.`, spheres.canvas);
   };
   render();
 
-  const onChanged = (changed) => {
-    if (changed.some((k) => k !== 'samples')) {
-      data = sweep(shell.state);
-      ePlot.setData(eSpec());
-      lossPlot.setData(lossSpec());
-    }
+  const onChanged = () => {
+    data = sweep(shell.state);
+    ePlot.setData(eSpec());
+    lossPlot.setData(lossSpec());
     render();
   };
   const update = shell.connect({ title: 'White furnace', onChanged, onStateChange });
@@ -95,6 +100,7 @@ export function createEnergy(container, initialState = {}, { onStateChange } = {
       ePlot.dispose();
       lossPlot.dispose();
       spheres.dispose();
+      dfg.dispose();
       shell.dispose();
     },
   };

@@ -14,7 +14,9 @@ export const schema = {
 const ABOUT =
   'Metals reflect a lot and in colour: their specular colour is all the colour they have. Non-metals reflect ' +
   'little and without colour (their colour comes from the diffuse term). The recomputed column applies the ' +
-  'sRGB curve to the linear values: it agrees with the printed sRGB to the tables’ two-decimal rounding. ' +
+  'sRGB curve to the linear values. It agrees with the printed sRGB to within one unit of the last digit except ' +
+  'for Plastic / Glass (Low), whose printed pair is inconsistent (marked): 0.03 linear is 0.19 in sRGB, while the ' +
+  'printed 0.21 would be 0.036 linear. ' +
   'Use the links to load a material into the curves or onto the 3-D shape.';
 
 const fmt = (xs) => xs.map((x) => x.toFixed(2)).join(', ');
@@ -44,7 +46,16 @@ function buildTable(caption, rows, state, { metal, onPick, onSelect }) {
     tr.insertCell().textContent = fmt(m.linear);
     tr.insertCell().textContent = fmt(m.srgb);
     const recomputed = m.linear.map(linearToSrgb);
-    if (state.recomputed) tr.insertCell().textContent = fmt(recomputed);
+    if (state.recomputed) {
+      const cell = tr.insertCell();
+      cell.textContent = fmt(recomputed);
+      if (m.note) {
+        cell.classList.add('mismatch');
+        cell.textContent += ' ≠ printed';
+        cell.title = m.note;
+        th.title = m.note;
+      }
+    }
     tr.insertCell().textContent = metal ? measuredSource(m.key) : `n ≈ ${iorFromF0(m.linear[0]).toFixed(3)}`;
     const sw = tr.insertCell();
     sw.append(swatch(m.srgb, `${m.name}: sRGB ${fmt(m.srgb)}`));
@@ -88,7 +99,8 @@ export function createF0Tables(container, initialState = {}, { onStateChange, on
   shell.view.append(holder);
   const source = document.createElement('p');
   source.className = 'source';
-  source.textContent = `Tables: ${TABLE_SOURCE}. Swatches show the printed sRGB value.`;
+  const notes = [...METALS, ...NON_METALS].filter((m) => m.note).map((m) => ` ${m.name}: ${m.note}`).join('');
+  source.textContent = `Tables: ${TABLE_SOURCE}. Swatches show the printed sRGB value.${notes}`;
 
   const render = () => {
     const onSelect = (key) => update({ selected: key });

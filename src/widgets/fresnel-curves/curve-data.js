@@ -11,7 +11,10 @@ export function angleGrid(step = ANGLE_STEP_DEG) {
   return Float64Array.from({ length: n }, (_, i) => i * step);
 }
 
-/** [{ key, name, metal, channel (0..2 or null), eta, k }] for the chosen materials. */
+/**
+ * [{ key, name, metal, channel (0..2 or null), eta, k, fitted }] for the chosen materials. `fitted`: (eta, k) are
+ * Gulbrandsen's parameters fitted to F0 and an edge tint, not measured optical constants.
+ */
 export function curveSpecs({ materials, conductor, ior }) {
   const specs = [];
   for (const key of materials) {
@@ -21,7 +24,8 @@ export function curveSpecs({ materials, conductor, ior }) {
     }
     const m = materialByKey(key);
     const iors = channelIor(key, conductor);
-    if (isMetal(key)) iors.forEach(([eta, k], channel) => specs.push({ key, name: m.name, metal: true, channel, eta, k }));
+    const fitted = conductor !== 'measured';
+    if (isMetal(key)) iors.forEach(([eta, k], channel) => specs.push({ key, name: m.name, metal: true, channel, eta, k, fitted }));
     else specs.push({ key, name: m.name, metal: false, channel: null, eta: iors[0][0], k: 0 });
   }
   return specs;

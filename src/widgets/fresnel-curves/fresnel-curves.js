@@ -21,7 +21,7 @@ export const schema = {
     options: CONDUCTOR_MODELS,
     default: 'f0-tint',
     label: 'Metal n, k',
-    hint: 'Talk F0 + edge tint: Gulbrandsen 2014 mapping, reproduces the table. Measured: published optical constants at 650/550/450 nm.',
+    hint: 'Talk F0 + edge tint: Gulbrandsen 2014’s fitted n, k (a reparametrisation that reproduces the table, not optical constants). Measured: published optical constants at 650/550/450 nm.',
   },
   schlick: { type: 'bool', default: true, label: 'Show Schlick' },
   zones: { type: 'bool', default: true, label: 'Shade zones' },
@@ -85,14 +85,20 @@ function errorSpec({ angles, curves, bands }) {
   };
 }
 
+const FITTED_NOTE = '† Fitted, not measured: Gulbrandsen 2014’s n, k, chosen to reproduce the talk’s F(0°) and the ' +
+  'measured edge tint. They give the curve its shape but are not the metal’s optical constants (choose “Measured n, k” ' +
+  'for those).';
+
 /** The readout under the plots: per curve, the values at the angle under the pointer and Schlick's worst error. */
 function renderReadout(el, { angles, curves }, index) {
   const i = index ?? angles.findIndex((a) => a >= 60);
   const theta = angles[i];
   const table = document.createElement('table');
   table.className = 'data-table compact readout';
+  const fitted = curves.some((c) => c.spec.fitted);
   table.innerHTML =
-    `<caption>Values at θ = ${theta.toFixed(2)}° (move the pointer over a plot), and where Schlick is worst</caption>` +
+    `<caption>Values at θ = ${theta.toFixed(2)}° (move the pointer over a plot), and where Schlick is worst` +
+    `${fitted ? `. ${FITTED_NOTE}` : ''}</caption>` +
     '<thead><tr><th scope="col">Curve</th><th scope="col">n</th><th scope="col">k</th><th scope="col">F(0°)</th>' +
     `<th scope="col">exact at ${theta.toFixed(1)}°</th><th scope="col">Schlick</th><th scope="col">max |Schlick − exact|</th><th scope="col">at θ</th></tr></thead>`;
   const body = table.createTBody();
@@ -103,7 +109,8 @@ function renderReadout(el, { angles, curves }, index) {
     sw.className = 'swatch';
     sw.style.background = c.stroke;
     name.append(sw, ` ${c.label}`);
-    for (const text of [c.spec.eta.toFixed(3), c.spec.k.toFixed(3), c.f0.toFixed(3), c.exact[i].toFixed(4), c.schlick[i].toFixed(4), Math.abs(c.maxError).toFixed(4), `${c.maxErrorAt.toFixed(2)}°`]) {
+    const mark = c.spec.fitted ? '†' : '';
+    for (const text of [`${c.spec.eta.toFixed(3)}${mark}`, `${c.spec.k.toFixed(3)}${mark}`, c.f0.toFixed(3), c.exact[i].toFixed(4), c.schlick[i].toFixed(4), Math.abs(c.maxError).toFixed(4), `${c.maxErrorAt.toFixed(2)}°`]) {
       tr.insertCell().textContent = text;
     }
   }

@@ -299,7 +299,7 @@ export function createFresnelZones(container, initialState = {}, { onStateChange
       const avg = document.createElement('div');
       avg.className = 'zone-average';
       avg.textContent =
-        `Averaged over ${AVERAGE_LIGHTS} light directions all around the object: ` +
+        `Averaged over ${AVERAGE_LIGHTS} light directions all around the object (GGX α ${s.alpha}): ` +
         averageShares.map((z, i) => `${ZONE_LABELS[i].split(' (')[0]} ${(z * 100).toFixed(1)}%`).join(', ') + '.';
       legend.append(avg);
     }

@@ -51,7 +51,10 @@ const ABOUT =
   'tracer would converge to. The others are what real-time renderers do instead: prefilter the whole sky into an ' +
   'environment map (image-based lighting), or keep the sun apart as an area light or as a punctual light and ' +
   'prefilter only the sky, or replace everything by one ambient colour. The table gives what each costs on this ' +
-  'GPU and how far it lands from the reference. Try a smooth metal (gold, α 0.05) and a rough dielectric.';
+  'GPU and how far it lands from the reference. Try a smooth metal (gold, α 0.05) and a rough dielectric. The ' +
+  'sun is enlarged: a disc of 2° radius, 7.5 times the real sun’s 0.27° (56 times its solid angle), so that the ' +
+  '256 × 128 map (1.4° texels) resolves it. A real-sized sun would make the punctual light nearly exact except on ' +
+  'near-mirrors, and the map would smear it over a whole texel.';
 
 const TERMS = { F: 'schlick', D: 'ggx', V: 'smithGGXCorrelated', diffuse: 'lambert', layers: 'both' };
 const METHODS = { env: 'split-sum', area: 'representative', samples: 1 };
@@ -95,7 +98,7 @@ export function createLightingModels(container, initialState = {}, { onStateChan
   };
 
   const showTable = (st) => {
-    table.innerHTML = `<table class="data-table compact"><caption>Against the reference (${samples} of ${st.refSamples} samples per pixel${samples < Number(st.refSamples) ? ', still converging' : ''})</caption>
+    table.innerHTML = `<table class="data-table compact"><caption>Sun enlarged to 2° (the real one is 0.27°). Against the reference (${samples} of ${st.refSamples} samples per pixel${samples < Number(st.refSamples) ? ', still converging' : ''})</caption>
       <thead><tr><th>Illumination model</th><th>GPU time (${view.resolution}² px)</th><th>RMS error</th><th>relative</th><th>Where it fails</th></tr></thead><tbody>
       ${results.map((r) => `<tr><th scope="row">${r.name}</th><td>${fmt(r.ms)} ms</td><td>${fmt(r.rms)}</td><td>${fmt(r.relative * 100)} %</td><td>${r.fails}</td></tr>`).join('')}
       </tbody></table>`;

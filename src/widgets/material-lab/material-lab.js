@@ -8,6 +8,7 @@ import { REFERENCE_BATCH } from '../../core/lab/lab-renderer.js';
 import { ENVIRONMENTS, MAX_FILE_BYTES, parseEnvironmentFile } from '../../core/lab/environments.js';
 import { MATERIAL_FIELDS, labScene, sphereLight } from '../../core/lab/lab-scene.js';
 import { createLabView } from '../../core/lab/lab-view.js';
+import { LAB_TERMS, approximationNotes } from '../../core/lab/lab-approximations.js';
 import { attachEnvironmentDrop } from './environment-drop.js';
 
 export const ENV_METHODS = { 'split-sum': 'Split sum (prefiltered + DFG)', importance: 'Importance sampling, N samples', mirror: 'Mirror: F(v, n) × environment', pmrem: 'three.js PMREM (MeshPhysicalMaterial)' };
@@ -16,18 +17,10 @@ export const AREA_METHODS = { representative: 'Representative point (Karis)', ce
 export const schema = {
   ...MATERIAL_FIELDS,
   layers: { group: 'BRDF terms', type: 'enum', options: { both: 'Specular + diffuse', specular: 'Specular only', diffuse: 'Diffuse only' }, default: 'both', label: 'Layers' },
-  fresnel: { group: 'BRDF terms', type: 'enum', options: { schlick: 'Schlick', one: 'F = 1' }, default: 'schlick', label: 'F' },
-  ndf: { group: 'BRDF terms', type: 'enum', options: { ggx: 'GGX', beckmann: 'Beckmann' }, default: 'ggx', label: 'D' },
-  visibility: { group: 'BRDF terms',
-    type: 'enum', label: 'V',
-    options: { smithGGXCorrelated: 'Smith GGX height-correlated', smithGGXSeparable: 'Smith GGX separable', schlickGGX: 'Schlick-GGX', kelemen: 'Kelemen', cookTorrance: 'Cook-Torrance', implicit: 'Implicit' },
-    default: 'smithGGXCorrelated',
-  },
-  diffuseModel: { group: 'BRDF terms',
-    type: 'enum', label: 'Diffuse term',
-    options: { lambert: 'Lambert', 'fresnel-weighted': 'Fresnel-weighted Lambert', 'ashikhmin-shirley': 'Ashikhmin-Shirley', 'oren-nayar': 'Oren-Nayar', 'oren-nayar-qualitative': 'Oren-Nayar (qualitative)' },
-    default: 'lambert',
-  },
+  fresnel: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.fresnel, default: 'schlick', label: 'F' },
+  ndf: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.ndf, default: 'ggx', label: 'D' },
+  visibility: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.visibility, default: 'smithGGXCorrelated', label: 'V' },
+  diffuseModel: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.diffuse, default: 'lambert', label: 'Diffuse term' },
   sigma: { group: 'BRDF terms', type: 'number', min: 0, max: 60, step: 1, default: 20, label: 'Oren-Nayar σ', unit: '°' },
   punctual: { group: 'Punctual light', type: 'bool', default: false, label: 'Punctual light' },
   lightTheta: { group: 'Punctual light', type: 'number', min: 0, max: 180, step: 1, default: 45, label: 'Punctual θ from view', unit: '°' },
@@ -57,10 +50,12 @@ const ABOUT =
   'by Monte Carlo, adding samples until it converges; the right image is their difference. The punctual light ' +
   'is exact in both (it is a single direction: L = π f c_light (n·l)). The sphere light, the environment and ' +
   'ambient light are integrals that the approximations shortcut: a representative point, a prefiltered map with ' +
-  'a DFG table (the split sum), a few importance samples, or the mirror direction alone. Drop an .hdr or .exr ' +
+  'a DFG table (the split sum), a few importance samples, or the mirror direction alone. Each one uses the F, D ' +
+  'and V chosen above where it has a form for them (a DFG table and a prefiltered map made for the chosen D and ' +
+  'V; F = 1 gives A + B); the lines under the images say what stands in where it has none. Drop an .hdr or .exr ' +
   'panorama on the widget to light it with your own environment.';
 
-const TERMS_USED = ['microfacetBRDF', 'dfgSplitSum', 'sampleGGXNormal', 'sampleCosine', 'sampleCone', 'sphereLightRepresentativeDir', 'sphereLightNormalization', 'equirectUv', 'diffuseOrenNayar'];
+const TERMS_USED = ['microfacetBRDF', 'dfgSplitSum', 'sampleGGXNormal', 'sampleBeckmannNormal', 'sampleCosine', 'sampleCone', 'sphereLightRepresentativeDir', 'sphereLightNormalization', 'equirectUv', 'diffuseOrenNayar'];
 
 export function lightsOf(state) {
   const c = (x) => [x, x, x];
@@ -111,6 +106,7 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
     }
     stats = { ...lab.error(), ms, timingRuns, samples: lab.batches * REFERENCE_BATCH, target: Number(st.refSamples), samplesN: st.samples, method: st.envMethod };
     showReadout(st, lights);
+    showNotes(scene);
     return [
       { image: 'approx', caption: `Approximation: ${methodText(st, lights)}` },
       { image: 'reference', caption: `Reference: Monte Carlo, ${stats.samples} of ${stats.target} samples / pixel` },
@@ -140,10 +136,21 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
     shell.describe(`Material lab. A sphere (${st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material}, roughness α ${st.alpha}) lit by ${methodText(st, lights)}; beside it the Monte Carlo reference (${stats.target} samples per pixel) and the error image. ${errorWords}`, view.canvas);
   };
 
+  // under the images: how each light's approximation treats the chosen terms (lab-approximations.js)
+  const notes = document.createElement('ul');
+  notes.className = 'lab-notes';
+  let notesText = '';
+  const showNotes = (scene) => {
+    const lines = approximationNotes(scene);
+    if (lines.join('\n') === notesText) return;
+    notesText = lines.join('\n');
+    notes.replaceChildren(...lines.map((line) => Object.assign(document.createElement('li'), { textContent: line })));
+  };
+
   const onReset = () => ([approxKey, refKey] = ['', '']);
   const view = createLabView(shell.view, { label: 'Material lab', resolution: 192, frame, onReset });
   view.setAspect(3);
-  shell.view.append(readout);
+  shell.view.append(readout, notes);
 
   const onChanged = (changed) => {
     if (changed.includes('environment') && shell.state.environment === 'file' && !filePixels) {

@@ -17,7 +17,9 @@ const MEDIA = {
   water: { name: 'Clean water', sigmaA: waterAbsorptionRgb(), sigmaS: [0, 0, 0], source: WATER_K.source },
   red: { name: 'Red absorber (wine-like, illustrative)', sigmaA: [3, 60, 90], sigmaS: [0, 0, 0], source: 'illustrative values' },
   cloudy: { name: 'Cloudy water (illustrative)', sigmaA: waterAbsorptionRgb(), sigmaS: [25, 25, 25], source: 'water plus illustrative scattering' },
-  milk: { name: 'Whole milk', sigmaA: WHOLE_MILK.sigmaA, sigmaS: WHOLE_MILK.sigmaS, source: WHOLE_MILK.source },
+  // milk's σ′s stands in for σs with isotropic scattering (the similarity relation): the picture diffuses light as
+  // milk does, but the straight-through light it implies is only an upper bound on milk's
+  milk: { name: 'Whole milk (reduced scattering σ′s)', sigmaA: WHOLE_MILK.sigmaA, sigmaS: WHOLE_MILK.sigmaSReduced, source: WHOLE_MILK.source, reduced: true },
 };
 
 export const schema = {
@@ -30,12 +32,15 @@ export const schema = {
 const ABOUT =
   'The depth slider runs from a millimetre to a hundred metres (log scale). Clean water stays clear over a few ' +
   'centimetres but its small absorption of red adds up: over tens of metres only blue-green is left. A strong ' +
-  'absorber colours light at once. Scattering does something else: it turns light aside, so the glass first ' +
+  'absorber (the illustrative wine-like one) colours light within a centimetre. Scattering does something else: it turns light aside, so the glass first ' +
   'looks cloudy and then, when scattering is strong and absorption weak (milk), opaque and white. The grid sets ' +
   'absorption (upwards) against scattering (across), as in the talk, milk at the lower right. The picture is path traced on the GPU and ' +
   'refines for a moment after each change.';
 
 const TERMS_USED = ['transmittance'];
+const MILK_CAVEAT = 'would pass unscattered if milk scattered evenly in all directions with its reduced coefficient σ′s ' +
+  '(the similarity relation, which the picture uses). Milk scatters forwards (g > 0), so its true σs = σ′s/(1 − g) ' +
+  'is larger and the light that really passes unscattered is less.';
 // the talk's grid: absorption (more in blue: a red look) grows upwards, scattering to the right, so the
 // milk-like glass (high scattering, low absorption) sits at the lower right as on the talk's slide
 const GRID_ABSORB = [0, 1.5, 6].map((k) => [0.15 * k, 0.8 * k, 1.4 * k]);
@@ -151,7 +156,9 @@ export function createMedia(container, initialState = {}, { onStateChange } = {}
     const st = m.sigmaA.map((a, i) => a + m.sigmaS[i]);
     const d = 10 ** shell.state.distance;
     return {
-      title: `${m.name}: light left unscattered and unabsorbed after a depth d (Beer–Lambert, ${m.source})`,
+      title: m.reduced
+        ? `${m.name}: e^(−(σa + σ′s) d), an upper bound on the light left unscattered (Beer–Lambert, ${m.source})`
+        : `${m.name}: light left unscattered and unabsorbed after a depth d (Beer–Lambert, ${m.source})`,
       xLabel: 'Depth d (m, log scale)', yLabel: 'transmittance', x: { min: 1e-3, max: 100, log: true }, y: { min: 0, max: 1.02 },
       xValues: (u, t) => t.map((v) => (v == null ? '' : v >= 1 ? `${v} m` : v >= 0.01 ? `${v * 100} cm` : `${v * 1000} mm`)),
       series: ['red (650 nm)', 'green (550 nm)', 'blue (450 nm)'].map((label, i) => ({ label, stroke: ['#d55e00', '#009e73', '#0072b2'][i], dash: SERIES_DASHES[i] })),
@@ -175,7 +182,7 @@ export function createMedia(container, initialState = {}, { onStateChange } = {}
     const hex = rgbToHex(T.map(linearToSrgb));
     const depth = d >= 1 ? `${d.toPrecision(3)} m` : d >= 0.01 ? `${(d * 100).toPrecision(3)} cm` : `${(d * 1000).toPrecision(3)} mm`;
     readout.innerHTML = `<span class="swatch big" style="background:${hex}"></span> <span>White light after <strong>${depth}</strong> of ${m.name.toLowerCase()}: ` +
-      `R ${(T[0] * 100).toFixed(1)}%, G ${(T[1] * 100).toFixed(1)}%, B ${(T[2] * 100).toFixed(1)}% passes without being absorbed or scattered.</span>`;
+      `R ${(T[0] * 100).toFixed(1)}%, G ${(T[1] * 100).toFixed(1)}%, B ${(T[2] * 100).toFixed(1)}% ${m.reduced ? MILK_CAVEAT : 'passes without being absorbed or scattered.'}</span>`;
     shell.describe(`A glass of ${m.name.toLowerCase()} ${depth} deep in front of a chequered wall; ${readout.textContent.trim()}`, viewport?.canvas);
   };
   describe();

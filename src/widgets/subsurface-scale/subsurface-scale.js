@@ -21,7 +21,9 @@ const ABOUT =
   '(the yellow ticks) or was absorbed on the way (paths fade with the light they still carry). When the shading ' +
   'sample (a pixel’s footprint on the surface) is much wider than these distances, the light may as well come ' +
   'out where it went in: shading stays local and a diffuse term is enough. Shrink the sample, or lower the ' +
-  'scattering, and more of the light leaves outside it: then subsurface scattering has to be rendered.';
+  'scattering, and more of the light leaves outside it: then subsurface scattering has to be rendered. The walks ' +
+  'are a flatland illustration: scattering is isotropic and the surface has no Fresnel boundary, so a path ' +
+  'leaves the moment it crosses it; the share that comes back out is that model’s, not a material’s diffuse albedo.';
 
 const TERMS_USED = []; // JS only (src/math/media.js): nothing here runs on the GPU
 const STATS_WALKS = 20000;
@@ -161,7 +163,7 @@ export function createSubsurfaceScale(container, initialState = {}, { onStateCha
     table.innerHTML = '<table class="data-table compact"><caption>From 20 000 paths</caption><tbody>' +
       `<tr><td>mean free path 1/σt</td><td>${meanFreePath(s.sigmaS + s.sigmaA).toFixed(3)} mm</td></tr>` +
       `<tr><td>single-scattering albedo σs/σt</td><td>${scatteringAlbedo(s.sigmaS, s.sigmaA).toFixed(3)}</td></tr>` +
-      `<tr><td>light that comes back out (diffuse reflectance)</td><td>${(stats.reflectance * 100).toFixed(1)}%</td></tr>` +
+      `<tr><td>light that comes back out of this 2-D slab (isotropic scattering, no refraction at the surface: not a real material’s diffuse albedo)</td><td>${(stats.reflectance * 100).toFixed(1)}%</td></tr>` +
       `<tr><td>median / mean entry-to-exit distance</td><td>${stats.median.toFixed(3)} / ${stats.mean.toFixed(3)} mm</td></tr>` +
       `<tr><td>paths still inside after ${MAX_EVENTS} events (not counted)</td><td>${(stats.stuck * 100).toFixed(2)}%</td></tr></tbody></table>`;
   };

@@ -1,0 +1,97 @@
+// What each approximation of the material lab does with the chosen BRDF terms, decided in one place: the DFG
+// table and the prefiltered map it reads (built for the chosen NDF and visibility term), and, where a method has
+// no form for a term, what stands in for it. The sentences the lab shows under its images come from here, so
+// the error image is read as the method's error and not as a difference between two models.
+
+/** The terms the lab offers, with the words the page uses for them. */
+export const LAB_TERMS = {
+  fresnel: { schlick: 'Schlick', one: 'F = 1' },
+  ndf: { ggx: 'GGX', beckmann: 'Beckmann' },
+  visibility: {
+    smithGGXCorrelated: 'Smith GGX height-correlated', smithGGXSeparable: 'Smith GGX separable',
+    schlickGGX: 'Schlick-GGX', kelemen: 'Kelemen', cookTorrance: 'Cook-Torrance', implicit: 'Implicit',
+  },
+  diffuse: {
+    lambert: 'Lambert', 'fresnel-weighted': 'Fresnel-weighted Lambert', 'ashikhmin-shirley': 'Ashikhmin-Shirley',
+    'oren-nayar': 'Oren-Nayar', 'oren-nayar-qualitative': 'Oren-Nayar (qualitative)',
+  },
+};
+
+const has = (terms) => ({ specular: terms.layers !== 'diffuse', diffuse: terms.layers !== 'specular' });
+
+/**
+ * What the approximation of `scene` ({ terms, lights, methods }, see lab-scene.js) reads: `dfg` the terms of its
+ * DFG table ({ ndf, visibility }) or null, `prefilter` the NDF its prefiltered map is filtered with or null.
+ */
+export function approximationInputs({ terms, lights, methods }) {
+  const splitSum = Boolean(lights.env) && methods.env === 'split-sum';
+  return {
+    dfg: splitSum || lights.ambient ? { ndf: terms.D, visibility: terms.V } : null,
+    prefilter: splitSum ? terms.D : null,
+  };
+}
+
+const specularWords = (terms) => `${LAB_TERMS.ndf[terms.D]} with ${LAB_TERMS.visibility[terms.V]}`;
+const fresnelWords = (terms) => (terms.F === 'one' ? 'A + B, as F = 1' : 'F0·A + B, Schlick’s F');
+
+/** The specular part of each light's method, in words: what it follows of the chosen terms. */
+function specularNotes({ terms, lights, methods }) {
+  const notes = [];
+  const ndf = LAB_TERMS.ndf[terms.D];
+  const env = lights.env ? methods.env : null;
+  if (env === 'split-sum') {
+    notes.push(`Split sum: the map prefiltered with the ${ndf} lobe (n = v = r) times the DFG table of ` +
+      `${specularWords(terms)} (${fresnelWords(terms)}).`);
+  }
+  if (env === 'mirror') {
+    notes.push(`Mirror: ${terms.F === 'one' ? 'F = 1' : 'Schlick’s F at n·v'} times the map in the reflected ` +
+      'direction; the roughness is ignored, which is the method’s error.');
+  }
+  if (env === 'importance') {
+    notes.push(`Importance sampling: N normals drawn from ${ndf}, every term evaluated at each sample; the diffuse ` +
+      'term by N cosine-distributed directions.');
+  }
+  if (lights.ambient) {
+    notes.push(`Ambient: the directional albedo from the DFG table of ${specularWords(terms)} ` +
+      `(${fresnelWords(terms)}).`);
+  }
+  if (lights.sphere && methods.area !== 'centre' && terms.D !== 'ggx') {
+    notes.push(`Sphere light: the representative point’s energy factor (α/α′)² is Karis’s (2013) for GGX, ` +
+      `kept for ${ndf}.`);
+  }
+  return notes;
+}
+
+/**
+ * The diffuse term under the environment and ambient light. Irradiance × Lambert (c_diff/π) is the only diffuse
+ * form the mirror and split-sum paths and ambient light have; with another diffuse term chosen it stands in for it.
+ */
+export function diffuseUnderSurround({ terms, lights, methods }) {
+  const byIrradiance = [];
+  if (lights.env && (methods.env === 'split-sum' || methods.env === 'mirror')) {
+    byIrradiance.push(`the environment (${methods.env === 'mirror' ? 'mirror' : 'split sum'})`);
+  }
+  if (lights.ambient) byIrradiance.push('ambient light');
+  if (!byIrradiance.length) return null;
+  const where = byIrradiance.join(' and ');
+  if (terms.diffuse === 'lambert') return `Diffuse under ${where}: irradiance × c_diff/π, Lambert’s exact answer.`;
+  const name = LAB_TERMS.diffuse[terms.diffuse];
+  const none = byIrradiance.length > 1 ? 'neither has a form' : 'it has no form';
+  return `Diffuse under ${where}: ${none} for ${name}, so ${name} is approximated by Lambert ` +
+    `(irradiance × c_diff/π) while the reference uses ${name}: that substitution is part of the error image.`;
+}
+
+const PMREM_NOTE =
+  'three.js PMREM: MeshPhysicalMaterial shades with three.js’s own model whatever terms are chosen (GGX, ' +
+  'height-correlated Smith, Schlick’s F, Lambert, plus its multiple-scattering term and a diffuse reduced by the ' +
+  'specular), so its error includes those differences of model.';
+
+/** The sentences under the lab's images: for each light on, how its approximation treats the chosen terms. */
+export function approximationNotes(scene) {
+  const { specular, diffuse } = has(scene.terms);
+  const notes = specular ? specularNotes(scene) : [];
+  const surround = diffuse ? diffuseUnderSurround(scene) : null;
+  if (surround) notes.push(surround);
+  if (scene.lights.env && scene.methods.env === 'pmrem') notes.push(PMREM_NOTE);
+  return notes;
+}

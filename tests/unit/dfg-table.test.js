@@ -1,0 +1,48 @@
+// The DFG table as the GPU samples it (half floats, bilinear between texel centres, clamped at the edges)
+// against the adaptive quadrature dfgSplitSum it is built from.
+import { describe, expect, it } from 'vitest';
+import { DFG_TABLE_SIZE, dfgSplitSum, dfgTableUv } from '../../src/math/integrate.js';
+import { dfgTableData } from '../../src/core/lab/dfg-table.js';
+import { sampleDfgTable } from './dfg-lookup.js';
+
+// probes between and on texel centres, denser toward grazing view and low roughness
+const MUS = [1e-3, 0.002, 0.004, 0.007, 0.012, 0.02, 0.03, 0.04, 0.065, 0.1, 0.3, 0.75, 1];
+const ALPHAS = [0.01, 0.012, 0.016, 0.025, 0.045, 0.07, 0.1, 0.22, 0.5, 1];
+
+function worstError(terms, mus = MUS, alphas = ALPHAS) {
+  const table = dfgTableData(terms);
+  let worst = { error: 0 };
+  for (const alpha of alphas) {
+    for (const mu of mus) {
+      const got = sampleDfgTable(table, mu, alpha);
+      const ref = dfgSplitSum(mu, alpha, terms);
+      const error = Math.max(Math.abs(got[0] - ref[0]), Math.abs(got[1] - ref[1]));
+      if (error > worst.error) worst = { error, mu, alpha };
+    }
+  }
+  return worst;
+}
+
+describe('DFG table as the GPU samples it', { timeout: 60_000 }, () => {
+  it.each([
+    [{}], [{ ndf: 'beckmann', visibility: 'smithBeckmannSeparable' }], [{ visibility: 'cookTorrance' }],
+    [{ visibility: 'kelemen' }], [{ ndf: 'beckmann', visibility: 'smithGGXCorrelated' }],
+  ])('is within 1e-3 of dfgSplitSum over n·v in [1e-3, 1], alpha in [0.01, 1] for %o', (terms) => {
+    const worst = worstError(terms);
+    expect(worst.error, JSON.stringify(worst)).toBeLessThan(1e-3);
+  });
+  it('holds down to alpha = 3e-4 as well, but not at the clamp alpha = 1e-4 (3.3e-3 near n·v = 0.007)', () => {
+    expect(worstError({}, MUS.slice(0, 10), [3e-4, 1e-3, 3e-3, 6e-3]).error).toBeLessThan(1e-3);
+    expect(worstError({}, MUS.slice(0, 10), [1e-4]).error).toBeGreaterThan(1e-3);
+  });
+  it('is cached per pair of terms, the default being GGX with height-correlated Smith', () => {
+    expect(dfgTableData()).toBe(dfgTableData({ ndf: 'ggx', visibility: 'smithGGXCorrelated' }));
+    expect(dfgTableData({ visibility: 'kelemen' })).not.toBe(dfgTableData());
+    expect(dfgTableData().size).toBe(DFG_TABLE_SIZE);
+  });
+  it('puts n·v = 0 and 1, alpha = 0 and 1 on the first and last texel centres', () => {
+    const n = DFG_TABLE_SIZE;
+    dfgTableUv(0, 0).forEach((u) => expect(u).toBeCloseTo(0.5 / n, 14));
+    dfgTableUv(1, 1).forEach((u) => expect(u).toBeCloseTo(1 - 0.5 / n, 14));
+  });
+});
