@@ -89,8 +89,9 @@ describe('offline, after one visit', () => {
     const failed = [];
     for (const name of Object.keys(WIDGETS)) {
       await page.goto(new URL(`embed.html?w=${name}`, site.url).href, { waitUntil: 'load' });
-      const mounted = await page.waitForFunction((n) => globalThis.__shadingLab?.widgets?.[n], { timeout: 30_000 }, name).catch(() => null);
-      if (!mounted || (await page.$$eval('.blocking-message', (m) => m.length))) failed.push(name);
+      const mounted = await page.waitForFunction((n) => globalThis.__shadingLab?.widgets?.[n], { timeout: 60_000 }, name).catch(() => null);
+      const blocked = await page.$$eval('.blocking-message', (m) => m.map((b) => b.textContent).join(' '));
+      if (!mounted || blocked) failed.push(`${name}: ${mounted ? blocked : 'not mounted in 60 s'}`);
     }
     expect(failed).toEqual([]);
     expect(page.errors).toEqual([]);
