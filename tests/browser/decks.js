@@ -25,10 +25,10 @@ export function serveDecks(pages) {
   return new Promise((ok) => server.listen(0, '127.0.0.1', () => ok({ url: `http://localhost:${server.address().port}`, close: () => server.close() })));
 }
 
-/** A deck of `n` slides, each with a widget; fragments on every third. */
+/** A deck of `n` slides, each with a 3-D widget; fragments on every third (cheap modes: no 64-light average). */
 export function longDeck(n) {
   const slides = Array.from({ length: n }, (_, i) => {
-    const frag = i % 3 === 0 ? '<p class="fragment" data-shading-lab-set="mode=zones-lh-weighted">weighted</p>' : '';
+    const frag = i % 3 === 0 ? '<p class="fragment" data-shading-lab-set="mode=zones-nv">zones of n·v</p>' : '';
     return `<section data-shading-lab="fresnel-zones?mode=zones-lh&amp;lightTheta=${40 + 3 * i}"><h3>Slide ${i + 1}</h3>${frag}</section>`;
   });
   return `<!doctype html><html><head><meta charset="utf-8"><title>Long deck</title>

@@ -192,7 +192,7 @@ describe('reveal.js plugin (reveal.js 6 from node_modules, the app on another or
       expect(lost, `slide ${i + 1}`).toBe(false);
       if (i % 3 === 0) {
         await press(page, 'ArrowRight'); // its fragment
-        await waitForState(page, { mode: 'zones-lh-weighted' });
+        await waitForState(page, { mode: 'zones-nv' });
       }
       await press(page, 'ArrowRight');
     }
@@ -201,7 +201,7 @@ describe('reveal.js plugin (reveal.js 6 from node_modules, the app on another or
     expect(page.errors).toEqual([]);
     expect(page.warnings).toEqual([]);
     await page.close();
-  }, 400_000);
+  }, 600_000);
 
   it('print view (?print-pdf): each widget is a still image in the state of its printed page', async () => {
     const page = await openDeck(`/examples/deck/index.html?print-pdf&lab=${lab()}`);
