@@ -1,8 +1,13 @@
 import { defineConfig } from 'vite';
 import { basename, resolve } from 'node:path';
+import { VitePWA } from 'vite-plugin-pwa';
 
 // Every HTML page is an entry; relative base so the built site works from any static host and sub-path.
 const pages = ['index', 'embed', 'media', 'surfaces', 'brdf', 'microfacets', 'fresnel', 'ndf', 'visibility', 'diffuse', 'rendering', 'performance', 'parity', 'exercises', 'tour', 'gallery', 'wall'];
+
+// Modules for other people's pages, built with stable names at the top of dist/ (README, "Embedding"): the
+// <shading-lab-widget> element (no three.js in it) and the reveal.js plugin on top of it.
+const modules = { 'shading-lab-widget': 'src/embedding/shading-lab-widget.js', 'shading-lab-reveal': 'src/embedding/reveal-plugin.js' };
 
 const HEAD = `
     <meta charset="utf-8" />
@@ -69,12 +74,46 @@ function cspMeta() {
   };
 }
 
+/** Every page loads src/core/offline.js, which registers the service worker (before Vite bundles the page). */
+function offlineScript() {
+  const tag = '    <script type="module" src="/src/core/offline.js"></script>\n  </body>';
+  return { name: 'shading-lab-offline', transformIndexHtml: { order: 'pre', handler: (html) => html.replace('</body>', tag) } };
+}
+
+// Offline after one visit: Workbox precaches the whole build (pages, chunks, exercises, icons). A page asked for
+// with any query (embed.html?w=…, fresnel.html?zones.mode=…) is served from its cached file.
+const offline = VitePWA({
+  registerType: 'prompt',
+  injectRegister: false,
+  manifest: {
+    name: 'Shading Lab',
+    short_name: 'Shading Lab',
+    description: 'Interactive companion to “Background: Physics and Math of Shading” (SIGGRAPH 2013)',
+    theme_color: '#0b6bcb',
+    background_color: '#fbfbfa',
+    icons: [{ src: 'favicon.svg', sizes: 'any', type: 'image/svg+xml' }],
+  },
+  workbox: {
+    globPatterns: ['**/*.{html,js,css,svg,png,webp,json,hdr,exr}'],
+    ignoreURLParametersMatching: [/.*/],
+    maximumFileSizeToCacheInBytes: 4 * 1024 * 1024,
+    navigateFallback: null,
+  },
+});
+
 export default defineConfig({
   base: './',
-  plugins: [pageChrome(), cspMeta()],
+  plugins: [pageChrome(), cspMeta(), offlineScript(), offline],
   build: {
     target: 'es2022',
     chunkSizeWarningLimit: 700, // three.js alone is ~540 kB and is shared by every 3-D page
-    rollupOptions: { input: Object.fromEntries(pages.map((p) => [p, resolve(import.meta.dirname, `${p}.html`)])) },
+    rollupOptions: {
+      input: {
+        ...Object.fromEntries(pages.map((p) => [p, resolve(import.meta.dirname, `${p}.html`)])),
+        ...Object.fromEntries(Object.entries(modules).map(([name, file]) => [name, resolve(import.meta.dirname, file)])),
+      },
+      preserveEntrySignatures: 'allow-extension', // the modules keep their exports
+      output: { entryFileNames: (chunk) => (chunk.name in modules ? '[name].js' : 'assets/[name]-[hash].js') },
+    },
   },
 });

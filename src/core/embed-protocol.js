@@ -3,10 +3,12 @@
 //
 //   parent → widget   { type: 'shading-lab:get', id? }
 //                     { type: 'shading-lab:set', state: { key: value, ... }, id? }
+//                     { type: 'shading-lab:snapshot', id? }
 //   widget → parent   { type: 'shading-lab:ready', widget, state, query }        once mounted
 //                     { type: 'shading-lab:state', id, widget, state, query }    reply to get and to set
 //                     { type: 'shading-lab:error', id, widget, errors, state }   set had bad values (kept the good state)
 //                     { type: 'shading-lab:changed', widget, state, query }      the user changed it (debounced)
+//                     { type: 'shading-lab:snapshot', id, widget, state, query, image }  reply: a PNG data URL
 //
 // `query` is the state as embed URL parameters (only what differs from the defaults). Messages are taken only
 // from the parent window and from an allowed origin; anything else, or of another shape, is ignored. Replies
@@ -42,10 +44,11 @@ export function parseAllowedOrigins(param, ownOrigin) {
   return { origins, notices };
 }
 
-/** A message from the parent as { kind: 'get' | 'set', id, state }, or null when it has another shape. */
+/** A message from the parent as { kind: 'get' | 'set' | 'snapshot', id, state }, or null when it has another shape. */
 export function parseMessage(data) {
   if (!isPlainObject(data) || typeof data.type !== 'string' || !isId(data.id)) return null;
   if (data.type === `${MESSAGE_PREFIX}get`) return { kind: 'get', id: data.id };
+  if (data.type === `${MESSAGE_PREFIX}snapshot`) return { kind: 'snapshot', id: data.id };
   if (data.type === `${MESSAGE_PREFIX}set` && isPlainObject(data.state)) return { kind: 'set', id: data.id, state: data.state };
   return null;
 }
@@ -76,10 +79,11 @@ function parentOriginHint() {
 
 /**
  * Connects a mounted widget to its parent window. `instance` is the widget ({ update, getState }), `notices`
- * a notice area for problems the widget itself does not report (unknown keys). Returns
+ * a notice area for problems the widget itself does not report (unknown keys), `capture()` the picture it
+ * shows as a PNG data URL (or null). Returns
  * { ready(), userChanged() (call on every state change), dispose() }.
  */
-export function connectEmbedProtocol({ name, schema, instance, origins, notices, parent = window.parent }) {
+export function connectEmbedProtocol({ name, schema, instance, origins, notices, capture = () => null, parent = window.parent }) {
   const hint = parentOriginHint();
   let parentOrigin = hint && origins.has(hint) ? hint : null; // where unsolicited messages go; null: nowhere yet
   let fromParent = false; // true while a `set` is applied: that is not a user change
@@ -96,6 +100,7 @@ export function connectEmbedProtocol({ name, schema, instance, origins, notices,
     const msg = parseMessage(e.data);
     if (!msg) return;
     parentOrigin = e.origin;
+    if (msg.kind === 'snapshot') return void post('snapshot', e.origin, { id: msg.id, image: capture() });
     if (msg.kind === 'set') {
       const { invalid, unknown } = checkIncomingState(schema, msg.state, instance.getState());
       if (unknown.length) notices.show(unknown); // the widget shows the invalid values itself

@@ -33,7 +33,7 @@ export function attachProbe(canvas, parent, { getMesh, getCamera, describe, isBu
   const panel = document.createElement('div');
   panel.className = 'probe';
   panel.setAttribute('aria-live', 'off');
-  const idle = 'Probe: point at the surface to read the angles and terms there.';
+  const idle = 'Probe: point at (or tap) the surface to read the angles and terms there.';
   panel.textContent = idle;
   parent.append(panel);
   const raycaster = new THREE.Raycaster();
@@ -58,14 +58,18 @@ export function attachProbe(canvas, parent, { getMesh, getCamera, describe, isBu
     const v = camera.isOrthographicCamera ? [0, 0, 1] : viewPos.clone().negate().normalize().toArray();
     showProbeRows(panel, describe(normal.toArray(), v));
   };
-  const leave = () => {
-    panel.textContent = idle;
+  // phones have no hover: a tap (touch or pen) probes where it lands, and the reading stays when the finger lifts
+  const tap = (e) => e.pointerType !== 'mouse' && move(e);
+  const leave = (e) => {
+    if (e.pointerType === 'mouse') panel.textContent = idle;
   };
   canvas.addEventListener('pointermove', move);
+  canvas.addEventListener('pointerup', tap);
   canvas.addEventListener('pointerleave', leave);
   return {
     dispose() {
       canvas.removeEventListener('pointermove', move);
+      canvas.removeEventListener('pointerup', tap);
       canvas.removeEventListener('pointerleave', leave);
       panel.remove();
     },

@@ -9,6 +9,7 @@ import * as THREE from 'three';
 import { createRenderLoop } from './render-loop.js';
 import { createBudgetedContext } from './gl-context.js';
 import { showBlockingMessage } from './notice.js';
+import { registerRedraw } from './snapshot.js';
 
 export function createViewport(container, { draw, onResize, onContextLost, label }) {
   const holder = document.createElement('div');
@@ -48,6 +49,7 @@ export function createViewport(container, { draw, onResize, onContextLost, label
   const renderer = new THREE.WebGLRenderer({ canvas, context: context.gl, antialias: true });
   renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
   loop = createRenderLoop(holder, () => draw(renderer), () => context.live);
+  registerRedraw(canvas, () => context.live && draw(renderer));
   context.start();
 
   const resize = new ResizeObserver(() => {

@@ -4,6 +4,8 @@ import { coerceState, defaultState } from './state.js';
 import { createNoticeArea } from './notice.js';
 import { createStateGui } from './gui.js';
 import { createLiveRegion, describeCanvas } from './describe.js';
+import { createShareBar, shareLink } from './share.js';
+import { registerPrintable } from './print.js';
 
 // Keys the host locks for the widget being created (see createLocked): the shell reads them, so every
 // widget gets locking without code of its own.
@@ -47,6 +49,7 @@ export function createWidgetShell(container, { name, schema, initialState, about
   if (first.notices.length) notices.show(first.notices);
   let state = first.state;
   let gui = null;
+  let unprint = null;
 
   /** Validates `partial` against the current state; returns the keys whose value changed. */
   const apply = (partial) => {
@@ -87,9 +90,13 @@ export function createWidgetShell(container, { name, schema, initialState, about
         onStateChange?.(state);
       };
       gui = createStateGui(controls, { schema, state, onChange: update, title, locked });
+      const getLink = () => shareLink(name, schema, state);
+      body.after(createShareBar({ title: title ?? name, getLink }));
+      unprint = registerPrintable(root, title ?? name, getLink);
       return update;
     },
     dispose() {
+      unprint?.();
       gui?.dispose();
       live.dispose();
       root.remove();

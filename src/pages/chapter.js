@@ -1,6 +1,9 @@
 // A chapter page: every element with data-slot="WIDGET" gets that widget, its URL keys under data-prefix.
 import '../styles.css';
 import { mountWidget } from '../core/widget-host.js';
+import { typesetFormulas } from '../core/formulas.js';
+
+typesetFormulas();
 
 for (const slot of document.querySelectorAll('[data-slot]')) {
   await mountWidget(slot, slot.dataset.slot, { prefix: slot.dataset.prefix });

@@ -6,6 +6,7 @@ import { mountWidget } from '../core/widget-host.js';
 import { connectEmbedProtocol, parseAllowedOrigins } from '../core/embed-protocol.js';
 import { WIDGETS, isWidgetName } from '../widgets/registry.js';
 import { createNoticeArea, showBlockingMessage } from '../core/notice.js';
+import { snapshotWidget } from '../core/snapshot.js';
 
 const root = document.getElementById('embed');
 const params = new URLSearchParams(location.search);
@@ -19,7 +20,8 @@ if (isWidgetName(name)) {
   const instance = await mountWidget(root, name, { onStateChange: () => link?.userChanged() });
   if (window.parent !== window) {
     const { widget } = await WIDGETS[name].load();
-    link = connectEmbedProtocol({ name, schema: widget.schema, instance, origins, notices });
+    const capture = () => snapshotWidget(root.querySelector('.widget'));
+    link = connectEmbedProtocol({ name, schema: widget.schema, instance, origins, notices, capture });
     link.ready();
   }
 } else {

@@ -2,6 +2,24 @@
 import '../styles.css';
 import { CHAPTERS } from '../core/chapters.js';
 import { WIDGETS } from '../widgets/registry.js';
+import { CHAPTER_PICTURES, CHAPTER_PICTURE_SIZE, chapterPictureUrl } from '../core/chapter-pictures.js';
+
+/** The chapter's picture, linked to its page when it has one. */
+function picture(ch) {
+  const img = Object.assign(document.createElement('img'), {
+    src: chapterPictureUrl(ch.key),
+    alt: CHAPTER_PICTURES[ch.key],
+    className: 'chapter-picture',
+    loading: 'lazy',
+    decoding: 'async',
+    ...CHAPTER_PICTURE_SIZE,
+  });
+  if (!ch.page) return img;
+  // the title is the link for keyboards: the picture's link is for the pointer only
+  const a = Object.assign(document.createElement('a'), { href: ch.page, tabIndex: -1 });
+  a.append(img);
+  return a;
+}
 
 const list = document.getElementById('chapters');
 CHAPTERS.forEach((ch, i) => {
@@ -12,6 +30,7 @@ CHAPTERS.forEach((ch, i) => {
   title.textContent = `${i + 1}. ${ch.title}`;
   const blurb = document.createElement('p');
   blurb.textContent = ch.blurb;
+  if (CHAPTER_PICTURES[ch.key]) li.append(picture(ch));
   li.append(title, blurb);
   if (!ch.page) {
     const tag = document.createElement('span');

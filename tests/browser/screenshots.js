@@ -53,6 +53,7 @@ for (const [name, path, { height, ready, ...opts } = {}] of SHOTS) {
     await settle(page, 250);
   }
   await page.evaluate(() => window.scrollTo(0, 0));
+  await page.evaluate(() => document.querySelector('.offline-status')?.remove()); // the first visit's "saved offline"
   await settle(page, 300);
   await page.screenshot({ path: join(out, `${name}.png`), ...opts });
   console.log(`${name}.png${page.errors.length ? `  errors: ${page.errors.join(' | ')}` : ''}`);

@@ -1,0 +1,17 @@
+// The landing page's picture of each chapter (by chapter key): public/chapters/KEY.webp, shot from the chapter's
+// main widget by `npm run chapter-pictures`, and its alt text, which says what the picture shows.
+export const CHAPTER_PICTURES = {
+  media: 'Glasses of water, a red absorber, cloudy water and milk at growing depths',
+  surfaces: 'Light meeting a flat boundary: the reflected and refracted shares',
+  brdf: 'A microfacet BRDF lobe in 3-D, with the light, view and half vectors',
+  microfacets: 'Rays on a rough 2-D microsurface, some shadowed or masked',
+  fresnel: 'A torus knot coloured by the Fresnel zones of l·h, lit from behind',
+  ndf: 'Spheres under one light, each with a different NDF at the same width',
+  visibility: 'Visibility terms against the light angle, the view fixed at 60°',
+  diffuse: 'Spheres with the diffuse models side by side',
+  rendering: 'A gold sphere lit by an environment: approximation, reference and their error',
+  performance: 'Error against GPU cost for the Fresnel approximations',
+};
+
+export const chapterPictureUrl = (key) => `chapters/${key}.webp`;
+export const CHAPTER_PICTURE_SIZE = { width: 480, height: 270 };

@@ -1,0 +1,139 @@
+// Offline: after one visit every page, widget and exercise of the build loads with the network gone (the server
+// drops every connection and Chromium is set offline); a new deploy is fetched into the cache and announced.
+import { cpSync, mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
+import { createServer } from 'node:http';
+import { tmpdir } from 'node:os';
+import { extname, join, normalize } from 'node:path';
+import { afterAll, beforeAll, beforeEach, describe, expect, it } from 'vitest';
+import { WIDGETS } from '../../src/widgets/registry.js';
+import { ROOT, SUB_PATH, openPage, settle } from './harness.js';
+import { launchBrowser } from './helpers.js';
+
+const TYPES = { '.html': 'text/html', '.js': 'text/javascript', '.css': 'text/css', '.svg': 'image/svg+xml', '.json': 'application/json', '.webmanifest': 'application/manifest+json' };
+
+/** Serves `dir` under SUB_PATH like the harness, with a switch that makes the network fail (connections dropped). */
+function serveSwitchable(dir) {
+  const state = { online: true };
+  const server = createServer((req, res) => {
+    if (!state.online) return void req.socket.destroy();
+    const path = decodeURIComponent(new URL(req.url, 'http://x').pathname);
+    let file = normalize(join(dir, path.slice(SUB_PATH.length)));
+    if (!path.startsWith(SUB_PATH) || !file.startsWith(dir)) return void res.writeHead(404).end();
+    if (path.endsWith('/')) file = join(file, 'index.html');
+    try {
+      res.writeHead(200, { 'content-type': TYPES[extname(file)] ?? 'application/octet-stream', 'cache-control': 'no-cache' }).end(readFileSync(file));
+    } catch {
+      res.writeHead(404).end();
+    }
+  });
+  return new Promise((ok) => server.listen(0, '127.0.0.1', () => ok({ state, url: `http://127.0.0.1:${server.address().port}${SUB_PATH}`, close: () => (server.closeAllConnections(), server.close()) })));
+}
+
+let browser;
+let dir;
+let site;
+beforeAll(async () => {
+  dir = mkdtempSync(join(tmpdir(), 'shading-lab-offline-'));
+  cpSync(join(ROOT, 'dist'), dir, { recursive: true }); // a deploy of its own, changed below
+  site = await serveSwitchable(dir);
+  browser = await launchBrowser();
+});
+afterAll(async () => {
+  await browser?.close();
+  site?.close();
+  rmSync(dir, { recursive: true, force: true });
+});
+
+const PAGES = readdirSync(join(ROOT, 'dist')).filter((f) => f.endsWith('.html'));
+const EXERCISES = JSON.parse(readFileSync(join(ROOT, 'public/exercises/index.json'), 'utf8')).exercises;
+
+/** Opens `path` of the site; resolves once it has loaded. */
+const visit = (path) => openPage(browser, site.url, path, { width: 1100, height: 800 });
+
+async function goOffline(page) {
+  site.state.online = false;
+  await page.setOfflineMode(true);
+}
+
+describe('offline, after one visit', () => {
+  beforeEach(() => {
+    site.state.online = true; // each test starts online; the first one's visit installs the service worker
+  });
+
+  it('the first visit saves the whole build and says so', async () => {
+    const page = await visit('index.html');
+    await page.waitForFunction(() => document.querySelector('.offline-status')?.textContent.includes('saved on this device'), { timeout: 60_000 });
+    await page.waitForFunction(async () => (await navigator.serviceWorker.ready).active.state === 'activated', { timeout: 30_000 });
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it(`every page (${PAGES.length}) loads with no network`, async () => {
+    for (const path of PAGES) {
+      const page = await visit(path === 'embed.html' ? 'embed.html?w=fresnel-curves' : path);
+      await page.waitForNetworkIdle({ idleTime: 300, timeout: 30_000 }); // nothing of the online visit left in flight
+      await goOffline(page);
+      await page.reload({ waitUntil: 'load' });
+      await settle(page, 500);
+      expect(await page.$eval('body', (b) => b.children.length > 0), path).toBe(true);
+      expect(await page.evaluate(() => !!navigator.serviceWorker.controller), path).toBe(true);
+      expect(page.errors, path).toEqual([]);
+      site.state.online = true;
+      await page.close();
+    }
+  }, 300_000);
+
+  it('every widget mounts with no network (its chunk and three.js from the cache)', async () => {
+    const page = await visit('index.html');
+    await goOffline(page);
+    const failed = [];
+    for (const name of Object.keys(WIDGETS)) {
+      await page.goto(new URL(`embed.html?w=${name}`, site.url).href, { waitUntil: 'load' });
+      const mounted = await page.waitForFunction((n) => globalThis.__shadingLab?.widgets?.[n], { timeout: 60_000 }, name).catch(() => null);
+      const blocked = await page.$$eval('.blocking-message', (m) => m.map((b) => b.textContent).join(' '));
+      if (!mounted || blocked) failed.push(`${name}: ${mounted ? blocked : 'not mounted in 60 s'}`);
+    }
+    expect(failed).toEqual([]);
+    expect(page.errors).toEqual([]);
+    site.state.online = true;
+    await page.close();
+  }, 300_000);
+
+  it(`every exercise (${EXERCISES.length}) is listed and opens with no network`, async () => {
+    const page = await visit('exercises.html');
+    await goOffline(page);
+    await page.reload({ waitUntil: 'load' });
+    await page.waitForFunction((n) => document.querySelectorAll('#exercise-list a').length === n, { timeout: 30_000 }, EXERCISES.length);
+    const ids = await page.$$eval('#exercise-list a', (as) => as.map((a) => a.getAttribute('href').slice(1)));
+    for (const id of ids) {
+      await page.$eval(`#exercise-list a[href="#${id}"]`, (a) => a.click());
+      await page.waitForFunction((i) => globalThis.__shadingLab.exercise?.id === i && globalThis.__shadingLab.exercise.ready, { timeout: 30_000 }, id);
+    }
+    expect(page.errors).toEqual([]);
+    site.state.online = true;
+    await page.close();
+  }, 300_000);
+
+  it('a new deploy is fetched into the cache and announced; after Reload the new version runs, offline too', async () => {
+    // the deploy: a changed page, and the service worker's manifest with that page's new revision
+    const marker = '<meta name="shading-lab-build" content="next" />';
+    writeFileSync(join(dir, 'index.html'), readFileSync(join(dir, 'index.html'), 'utf8').replace('</head>', `${marker}</head>`));
+    const sw = readFileSync(join(dir, 'sw.js'), 'utf8');
+    const next = sw.replace(/(url"?:\s*"index\.html",\s*"?revision"?:\s*")[0-9a-f]+"/, '$1next"');
+    expect(next).not.toBe(sw);
+    writeFileSync(join(dir, 'sw.js'), next);
+
+    const page = await visit('index.html');
+    expect(await page.$('meta[name="shading-lab-build"]')).toBeNull(); // the cached version still runs
+    const reload = await page.waitForFunction(() => [...document.querySelectorAll('.offline-status button')].find((b) => b.textContent.includes('Reload')), { timeout: 60_000 });
+    expect(await page.$eval('.offline-status', (s) => s.textContent)).toMatch(/new version/);
+    await Promise.all([page.waitForNavigation({ waitUntil: 'load' }), reload.click()]);
+    expect(await page.$('meta[name="shading-lab-build"]')).not.toBeNull();
+    await goOffline(page);
+    await page.reload({ waitUntil: 'load' });
+    expect(await page.$('meta[name="shading-lab-build"]')).not.toBeNull();
+    expect(page.errors).toEqual([]);
+    site.state.online = true;
+    await page.close();
+  }, 120_000);
+});
