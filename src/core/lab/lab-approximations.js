@@ -105,7 +105,8 @@ const ENV_WORDS = { 'split-sum': 'The split sum', mirror: 'The mirror method', p
 export function measuredNotes({ lights, methods, measured, material }) {
   const notes = [`Measured BRDF (${measured}): the reference integrates the table itself (a 3-D texture, ` +
     `trilinear between its nodes), drawing directions from the GGX fit’s lobe (α ${material.alpha.toFixed(3)}), ` +
-    'by cosine and from the map; the fit only steers the samples, it is not what is rendered.'];
+    'by cosine and from the map; the fit only steers the samples, it is not what is rendered. The material ' +
+    'and terms chosen above are not used.'];
   if (lights.env && methods.env === 'importance') {
     notes.push('Importance sampling: N directions from the fitted GGX lobe and N by cosine, each weighted by the ' +
       'balance heuristic, the table evaluated at every one (it has no separate diffuse part to sample alone).');

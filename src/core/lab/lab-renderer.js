@@ -25,7 +25,7 @@ const ENV_DEFINES = { mirror: 'ENV_MIRROR', importance: 'ENV_IMPORTANCE', 'split
  * The #defines of one program: only the terms, lights and methods in use are compiled. A measured table
  * (scene.measured: its name; scene.table: its 3-D texture) is the whole BRDF, no terms; of the approximations
  * only importance sampling and the sphere light's have a form for it (lab-approximations.js says so), so the
- * others are not drawn.
+ * others leave the sphere unlit by their light.
  */
 export function sceneDefines(scene, reference) {
   return scene.measured ? measuredDefines(scene, reference) : modelDefines(scene, reference);
@@ -38,7 +38,8 @@ function measuredDefines({ lights, methods }, reference) {
   if (reference) {
     return Object.assign(d, { REFERENCE: 1 }, lights.env && { LIGHT_ENV: 1 }, lights.ambient && { LIGHT_AMBIENT: 1 });
   }
-  if (lights.env && methods.env === 'importance') Object.assign(d, { LIGHT_ENV: 1, ENV_IMPORTANCE: 1 });
+  if (lights.env) d.LIGHT_ENV = 1; // the map behind the sphere
+  if (lights.env && methods.env === 'importance') d.ENV_IMPORTANCE = 1;
   if (lights.sphere && methods.area === 'centre') d.AREA_CENTRE = 1;
   return d;
 }

@@ -36,7 +36,9 @@ const ABOUT =
   'cores of the lobes match and only their shapes differ. The log plot shows the tails: GGX, ABC and SGD keep ' +
   'far more microfacets at large angles than Beckmann or Blinn-Phong, which is the halo around their highlights. ' +
   'Raise the exposure to see it. The spheres use F = 1 and V = 1 so that only D differs. The table integrates ' +
-  'each D·(n·m) over the hemisphere: a density must give 1.';
+  'each D·(n·m) over the hemisphere: a density must give 1. Opened from the measured-BRDF widget (BRDF page), ' +
+  'the log plot adds the NDF a measurement implies (black) and puts every curve over its own peak, so the ' +
+  'measured tail is read against the five shapes at the fitted width.';
 
 const DEG = Math.PI / 180;
 // every 0.25° and the θh nodes of a MERL table (where a measured slice has its values), in order
