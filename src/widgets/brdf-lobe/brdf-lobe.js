@@ -168,4 +168,4 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange } =
   };
 }
 
-export const widget = { name: 'brdf-lobe', schema, create: createBrdfLobe };
+export const widget = { name: 'brdf-lobe', schema, create: createBrdfLobe, terms: TERMS_USED };

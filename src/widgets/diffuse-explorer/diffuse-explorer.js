@@ -180,4 +180,4 @@ export function createDiffuseExplorer(container, initialState = {}, { onStateCha
   };
 }
 
-export const widget = { name: 'diffuse-explorer', schema, create: createDiffuseExplorer };
+export const widget = { name: 'diffuse-explorer', schema, create: createDiffuseExplorer, terms: TERMS_USED };

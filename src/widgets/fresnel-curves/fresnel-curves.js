@@ -164,4 +164,4 @@ export function createFresnelCurves(container, initialState = {}, { onStateChang
   };
 }
 
-export const widget = { name: 'fresnel-curves', schema, create: createFresnelCurves };
+export const widget = { name: 'fresnel-curves', schema, create: createFresnelCurves, terms: TERMS_USED };

@@ -55,7 +55,10 @@ const ABOUT =
   'V; F = 1 gives A + B); the lines under the images say what stands in where it has none. Drop an .hdr or .exr ' +
   'panorama on the widget to light it with your own environment.';
 
-const TERMS_USED = ['microfacetBRDF', 'dfgSplitSum', 'sampleGGXNormal', 'sampleBeckmannNormal', 'sampleCosine', 'sampleCone', 'sphereLightRepresentativeDir', 'sphereLightNormalization', 'equirectUv', 'diffuseOrenNayar'];
+const TERMS_USED = [
+  'microfacetBRDF', 'dfgTableUv', 'sampleGGXNormal', 'sampleBeckmannNormal', 'sampleCosine', 'sampleCone',
+  'sphereLightRepresentativeDir', 'sphereLightNormalization', 'equirectUv', 'diffuseOrenNayar',
+];
 
 export function lightsOf(state) {
   const c = (x) => [x, x, x];
@@ -205,4 +208,4 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
   };
 }
 
-export const widget = { name: 'material-lab', schema, create: createMaterialLab };
+export const widget = { name: 'material-lab', schema, create: createMaterialLab, terms: TERMS_USED };

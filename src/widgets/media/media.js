@@ -210,4 +210,4 @@ export function createMedia(container, initialState = {}, { onStateChange } = {}
   };
 }
 
-export const widget = { name: 'media', schema, create: createMedia };
+export const widget = { name: 'media', schema, create: createMedia, terms: TERMS_USED };
