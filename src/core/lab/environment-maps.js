@@ -1,8 +1,8 @@
 // What image-based lighting needs on the GPU, made once per environment and kept: the environment as an
 // equirectangular half-float map with mips, its irradiance (summed exactly in JS from the map read back), tables
 // to sample it by brightness; made when first asked for: its prefiltered layers for the split sum, one set per NDF,
-// and three.js's PMREM of it for comparison. Also the DFG table, computed by src/math's dfgSplitSum, which does not
-// depend on the environment.
+// and three.js's PMREM of it for comparison. Also the DFG table (dfg-table.js: src/math's dfgSplitSum, shipped
+// precomputed), which does not depend on the environment.
 import * as THREE from 'three';
 import { RoomEnvironment } from 'three/examples/jsm/environments/RoomEnvironment.js';
 import { assembleGlsl } from '../glsl.js';
@@ -18,7 +18,7 @@ export const PREFILTER_LEVELS = 8; // layer k at perceptual roughness k/8, alpha
 const IRRADIANCE_SIZE = [32, 16];
 const PREFILTER_DEFINES = { ggx: {}, beckmann: { NDF_BECKMANN: 1 } };
 
-export { dfgTableData }; // built in dfg-table.js (plain JS, no GPU)
+export { dfgTableData }; // decoded in dfg-table.js (plain JS, no GPU)
 
 /** The DFG table for terms { ndf, visibility } as a filtered texture (half float): sample it at dfgTableUv. */
 export function createDfgTexture(terms = {}) {
