@@ -8,7 +8,8 @@ import { REFERENCE_BATCH } from '../../core/lab/lab-renderer.js';
 import { ENVIRONMENTS, MAX_FILE_BYTES, parseEnvironmentFile } from '../../core/lab/environments.js';
 import { MATERIAL_FIELDS, labScene, sphereLight } from '../../core/lab/lab-scene.js';
 import { createLabView } from '../../core/lab/lab-view.js';
-import { LAB_TERMS, approximationNotes } from '../../core/lab/lab-approximations.js';
+import { LAB_TERMS, createNotesList } from '../../core/lab/lab-approximations.js';
+import { SIGMA_HINT } from '../../core/sigma-range.js';
 import { attachEnvironmentDrop } from './environment-drop.js';
 
 export const ENV_METHODS = { 'split-sum': 'Split sum (prefiltered + DFG)', importance: 'Importance sampling, N samples', mirror: 'Mirror: F(v, n) × environment', pmrem: 'three.js PMREM (MeshPhysicalMaterial)' };
@@ -21,7 +22,10 @@ export const schema = {
   ndf: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.ndf, default: 'ggx', label: 'D' },
   visibility: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.visibility, default: 'smithGGXCorrelated', label: 'V' },
   diffuseModel: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.diffuse, default: 'lambert', label: 'Diffuse term' },
-  sigma: { group: 'BRDF terms', type: 'number', min: 0, max: 60, step: 1, default: 20, label: 'Oren-Nayar σ', unit: '°' },
+  sigma: {
+    group: 'BRDF terms', type: 'number', min: 0, max: 60, step: 1, default: 20, label: 'Oren-Nayar σ', unit: '°',
+    hint: SIGMA_HINT,
+  },
   punctual: { group: 'Punctual light', type: 'bool', default: false, label: 'Punctual light' },
   lightTheta: { group: 'Punctual light', type: 'number', min: 0, max: 180, step: 1, default: 45, label: 'Punctual θ from view', unit: '°' },
   lightPhi: { group: 'Punctual light', type: 'number', min: -180, max: 180, step: 1, default: 45, label: 'Punctual φ', unit: '°' },
@@ -109,7 +113,7 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
     }
     stats = { ...lab.error(), ms, timingRuns, samples: lab.batches * REFERENCE_BATCH, target: Number(st.refSamples), samplesN: st.samples, method: st.envMethod };
     showReadout(st, lights);
-    showNotes(scene);
+    notes.show(scene);
     return [
       { image: 'approx', caption: `Approximation: ${methodText(st, lights)}` },
       { image: 'reference', caption: `Reference: Monte Carlo, ${stats.samples} of ${stats.target} samples / pixel` },
@@ -140,20 +144,12 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
   };
 
   // under the images: how each light's approximation treats the chosen terms (lab-approximations.js)
-  const notes = document.createElement('ul');
-  notes.className = 'lab-notes';
-  let notesText = '';
-  const showNotes = (scene) => {
-    const lines = approximationNotes(scene);
-    if (lines.join('\n') === notesText) return;
-    notesText = lines.join('\n');
-    notes.replaceChildren(...lines.map((line) => Object.assign(document.createElement('li'), { textContent: line })));
-  };
+  const notes = createNotesList();
 
   const onReset = () => ([approxKey, refKey] = ['', '']);
   const view = createLabView(shell.view, { label: 'Material lab', resolution: 192, frame, onReset });
   view.setAspect(3);
-  shell.view.append(readout, notes);
+  shell.view.append(readout, notes.element);
 
   const onChanged = (changed) => {
     if (changed.includes('environment') && shell.state.environment === 'file' && !filePixels) {
