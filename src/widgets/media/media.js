@@ -13,7 +13,7 @@ import { SERIES_DASHES, rgbToHex } from '../../core/palettes.js';
 import { linearToSrgb } from '../../math/color.js';
 import { WATER_K, WHOLE_MILK, transmittance, waterAbsorptionRgb } from '../../math/media.js';
 
-const MEDIA = {
+export const MEDIA = {
   water: { name: 'Clean water', sigmaA: waterAbsorptionRgb(), sigmaS: [0, 0, 0], source: WATER_K.source },
   red: { name: 'Red absorber (wine-like, illustrative)', sigmaA: [3, 60, 90], sigmaS: [0, 0, 0], source: 'illustrative values' },
   cloudy: { name: 'Cloudy water (illustrative)', sigmaA: waterAbsorptionRgb(), sigmaS: [25, 25, 25], source: 'water plus illustrative scattering' },
