@@ -38,9 +38,11 @@ const ABOUT =
   'refines for a moment after each change.';
 
 const TERMS_USED = ['transmittance'];
-const MILK_CAVEAT = 'would pass unscattered if milk scattered evenly in all directions with its reduced coefficient σ′s ' +
-  '(the similarity relation, which the picture uses). Milk scatters forwards (g > 0), so its true σs = σ′s/(1 − g) ' +
-  'is larger and the light that really passes unscattered is less.';
+const MILK_CAVEAT = 'would pass unscattered if milk scattered evenly in all directions with its reduced ' +
+  'coefficient σ′s (the similarity relation, which the picture uses). Milk’s fat globules, about a wavelength ' +
+  'across or more, scatter mostly forwards (g > 0 by Lorenz–Mie theory, which Frisvad, Christensen & Jensen 2007 ' +
+  'apply to milk; Jensen et al. 2001 give σ′s only), so its true σs = σ′s/(1 − g) is larger and the light that ' +
+  'really passes unscattered is less.';
 // the talk's grid: absorption (more in blue: a red look) grows upwards, scattering to the right, so the
 // milk-like glass (high scattering, low absorption) sits at the lower right as on the talk's slide
 const GRID_ABSORB = [0, 1.5, 6].map((k) => [0.15 * k, 0.8 * k, 1.4 * k]);
