@@ -72,6 +72,8 @@ export function createEnvironmentMaps(renderer) {
   const prefiltered = createPrefilterCache(renderer, run, prefilterPass);
 
   const readback = createEnvReadback(renderer, env);
+  let pmremGenerator = null;
+  let pmrem = null;
 
   const roomCube = () => {
     const cubeTarget = new THREE.WebGLCubeRenderTarget(256, { type: THREE.HalfFloatType });
