@@ -96,8 +96,8 @@ export function approximationNotes(scene) {
   if (scene.lights.env && scene.methods.env === 'pmrem') notes.push(PMREM_NOTE);
   const sigmaDeg = Math.round(((scene.material?.sigma ?? 0) * 180) / Math.PI);
   if (diffuse && scene.terms.diffuse.startsWith('oren-nayar') && sigmaExtrapolated(sigmaDeg)) {
-    notes.push(`Oren-Nayar at ${sigmaText(sigmaDeg)}: beyond ${SIGMA_MODELLED_DEG}° the model is extrapolated ` +
-      '(the diffuse chapter says why).');
+    notes.push(`Oren-Nayar at ${sigmaText(sigmaDeg)}: past ${SIGMA_MODELLED_DEG}° a Gaussian of facet tilts puts ` +
+      'over 4.6% of them beyond 90°, which no V-groove can have (the diffuse chapter).');
   }
   return notes;
 }
