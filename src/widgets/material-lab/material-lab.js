@@ -20,8 +20,12 @@ export const schema = {
   layers: { group: 'BRDF terms', type: 'enum', options: { both: 'Specular + diffuse', specular: 'Specular only', diffuse: 'Diffuse only' }, default: 'both', label: 'Layers' },
   fresnel: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.fresnel, default: 'schlick', label: 'F' },
   ndf: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.ndf, default: 'ggx', label: 'D' },
-  visibility: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.visibility, default: 'smithGGXCorrelated', label: 'V' },
-  diffuseModel: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.diffuse, default: 'lambert', label: 'Diffuse term' },
+  visibility: {
+    group: 'BRDF terms', type: 'enum', options: LAB_TERMS.visibility, default: 'smithGGXCorrelated', label: 'V',
+  },
+  diffuseModel: {
+    group: 'BRDF terms', type: 'enum', options: LAB_TERMS.diffuse, default: 'lambert', label: 'Diffuse term',
+  },
   sigma: {
     group: 'BRDF terms', type: 'number', min: 0, max: 60, step: 1, default: 20, label: 'Oren-Nayar σ', unit: '°',
     hint: SIGMA_HINT,

@@ -19,7 +19,10 @@ export const MEDIA = {
   cloudy: { name: 'Cloudy water (illustrative)', sigmaA: waterAbsorptionRgb(), sigmaS: [25, 25, 25], source: 'water plus illustrative scattering' },
   // milk's σ′s stands in for σs with isotropic scattering (the similarity relation): the picture diffuses light as
   // milk does, but the straight-through light it implies is only an upper bound on milk's
-  milk: { name: 'Whole milk (reduced scattering σ′s)', sigmaA: WHOLE_MILK.sigmaA, sigmaS: WHOLE_MILK.sigmaSReduced, source: WHOLE_MILK.source, reduced: true },
+  milk: {
+    name: 'Whole milk (reduced scattering σ′s)', sigmaA: WHOLE_MILK.sigmaA, sigmaS: WHOLE_MILK.sigmaSReduced,
+    source: WHOLE_MILK.source, reduced: true,
+  },
 };
 
 export const schema = {
