@@ -80,6 +80,19 @@ export function lightsOf(state) {
 
 const fmt = (x, digits = 4) => (x === null || x === undefined ? '—' : x.toPrecision(digits));
 
+/** The lights on and the method each is shaded by, in words (the approximation's caption). */
+function methodText(st, lights) {
+  const parts = [];
+  if (lights.punctual) parts.push('punctual (exact)');
+  if (lights.sphere) parts.push(`sphere light by ${st.areaMethod === 'centre' ? 'its centre' : 'representative point'}`);
+  if (lights.env) {
+    const samples = st.envMethod === 'importance' ? `${st.samples} importance samples` : st.envMethod;
+    parts.push(`${ENVIRONMENTS[st.environment].split(' (')[0].toLowerCase()} by ${samples}`);
+  }
+  if (lights.ambient) parts.push('ambient');
+  return parts.join(' + ') || 'no light on';
+}
+
 export function createMaterialLab(container, initialState = {}, { onStateChange } = {}) {
   const shell = createWidgetShell(container, { name: 'material-lab', schema, initialState, about: ABOUT, terms: TERMS_USED });
   const readout = document.createElement('div');
@@ -123,15 +136,6 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
       { image: 'reference', caption: `Reference: Monte Carlo, ${stats.samples} of ${stats.target} samples / pixel` },
       { image: 'error', caption: `Error |approx − reference|, 0 to ${st.errorScale}` },
     ];
-  };
-
-  const methodText = (st, lights) => {
-    const parts = [];
-    if (lights.punctual) parts.push('punctual (exact)');
-    if (lights.sphere) parts.push(`sphere light by ${st.areaMethod === 'centre' ? 'its centre' : 'representative point'}`);
-    if (lights.env) parts.push(`${ENVIRONMENTS[st.environment].split(' (')[0].toLowerCase()} by ${st.envMethod === 'importance' ? `${st.samples} importance samples` : st.envMethod}`);
-    if (lights.ambient) parts.push('ambient');
-    return parts.join(' + ') || 'no light on';
   };
 
   const showReadout = (st, lights) => {
