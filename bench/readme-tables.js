@@ -16,9 +16,10 @@ const lines = [
 ];
 if (report.familiesMeasured) {
   const { date, timedCpu } = report.familiesMeasured;
+  const date0 = report.date.slice(0, 10);
   lines.push(`The term families' ${timedCpu ? 'errors and CPU costs' : 'errors'} below were measured again on ` +
     `${date.slice(0, 10)} (\`npm run bench -- --only families\`); their ${timedCpu ? 'GPU columns are' : 'costs are'} ` +
-    `from the full run${iblStaleNote(report.date) ? `, as are the image-based lighting rows (${report.date.slice(0, 10)})` : ''}.`,
+    `from the full run${iblStaleNote(report.date) ? `, as are the image-based lighting rows (${date0})` : ''}.`,
     '');
 }
 const HEAD = (first, what) => [`| ${first} | ${what === 'error' ? 'error against' : 'difference from'} | max \\|${what}\\| | RMS | ` +

@@ -116,7 +116,9 @@ function graderParams(raw, grader, errors) {
     return params;
   }
   for (const key of Object.keys(given)) {
-    if (!Object.hasOwn(grader.params, key)) errors.push(`params.${key}: unknown for grader "${raw.grader}" (params: ${Object.keys(grader.params).join(', ') || 'none'})`);
+    if (Object.hasOwn(grader.params, key)) continue;
+    const known = Object.keys(grader.params).join(', ') || 'none';
+    errors.push(`params.${key}: unknown for grader "${raw.grader}" (params: ${known})`);
   }
   for (const [key, f] of Object.entries(grader.params)) {
     if (given[key] === undefined) {

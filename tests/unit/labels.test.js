@@ -10,7 +10,7 @@ import { SIGMA_MODELLED_DEG, sigmaText } from '../../src/core/sigma-range.js';
 import { approximationNotes } from '../../src/core/lab/lab-approximations.js';
 
 describe('fitted (n, k) flag of the Fresnel curves', () => {
-  it('marks f0-tint rows fitted: their F0 is the talk’s table (Fresnel at 0°) though their n, k differ from measured', () => {
+  it('marks f0-tint rows fitted: their F0 is the talk’s table (Fresnel at 0°), their n, k not the measured', () => {
     const fitted = curveSpecs({ materials: ['gold'], conductor: 'f0-tint', ior: 1.5 });
     const measured = curveSpecs({ materials: ['gold'], conductor: 'measured', ior: 1.5 });
     expect(fitted.map((s) => s.fitted)).toEqual([true, true, true]);

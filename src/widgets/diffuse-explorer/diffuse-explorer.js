@@ -22,7 +22,9 @@ export const schema = {
     default: MODEL_KEYS,
     label: 'Diffuse models',
   },
-  sigma: { type: 'number', min: 0, max: 90, step: 1, default: 40, label: 'Oren–Nayar roughness σ', unit: '°', hint: SIGMA_HINT },
+  sigma: {
+    type: 'number', min: 0, max: 90, step: 1, default: 40, label: 'Oren–Nayar roughness σ', unit: '°', hint: SIGMA_HINT,
+  },
   cdiff: { type: 'number', min: 0, max: 1, step: 0.01, default: 0.8, label: 'Diffuse colour c_diff' },
   f0: { type: 'number', min: 0, max: 1, step: 0.01, default: 0.04, label: 'Specular F0 (trade-off)' },
   lightTheta: { type: 'number', min: 0, max: 180, step: 0.5, default: 0, label: 'Light from view', unit: '°' },

@@ -84,7 +84,9 @@ const fmt = (x, digits = 4) => (x === null || x === undefined ? '—' : x.toPrec
 function methodText(st, lights) {
   const parts = [];
   if (lights.punctual) parts.push('punctual (exact)');
-  if (lights.sphere) parts.push(`sphere light by ${st.areaMethod === 'centre' ? 'its centre' : 'representative point'}`);
+  if (lights.sphere) {
+    parts.push(`sphere light by ${st.areaMethod === 'centre' ? 'its centre' : 'representative point'}`);
+  }
   if (lights.env) {
     const samples = st.envMethod === 'importance' ? `${st.samples} importance samples` : st.envMethod;
     parts.push(`${ENVIRONMENTS[st.environment].split(' (')[0].toLowerCase()} by ${samples}`);
