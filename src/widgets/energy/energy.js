@@ -139,4 +139,4 @@ export function createEnergy(container, initialState = {}, { onStateChange } = {
   };
 }
 
-export const widget = { name: 'energy', schema, create: createEnergy };
+export const widget = { name: 'energy', schema, create: createEnergy, terms: TERMS_USED };

@@ -55,6 +55,7 @@ const TERMS_USED = [
   'visibilitySmithGGXCorrelated',
   'visibilitySmithBeckmannSeparable',
   'visibilityCookTorrance',
+  'merlCoordinates',
 ];
 
 const logRange = (arrays) => {
@@ -371,4 +372,4 @@ export function createMeasuredBrdf(container, initialState = {}, { onStateChange
   };
 }
 
-export const widget = { name: 'measured-brdf', schema, create: createMeasuredBrdf };
+export const widget = { name: 'measured-brdf', schema, create: createMeasuredBrdf, terms: TERMS_USED };
