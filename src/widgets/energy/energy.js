@@ -69,7 +69,8 @@ export function createEnergy(container, initialState = {}, { onStateChange } = {
   const spheres = createSphereGrid(shell.view, { label: 'Spheres in a white furnace', background: '#ffffff' });
   const table = document.createElement('div');
   shell.view.append(table);
-  const metalView = createMetalView(shell.view, () => describe(metalView.update(shell.state.metal, shell.state.metalAlpha)));
+  const metalNow = () => metalView.update(shell.state.metal, shell.state.metalAlpha);
+  const metalView = createMetalView(shell.view, () => describe(metalNow())); // again when its walk arrives
   const dfg = createDfgTexture(); // GGX, height-correlated Smith: scale + bias is E
   let lossTable = null; // the albedo-loss table, made when a compensation is first chosen
   let data = sweep(shell.state);
@@ -86,7 +87,7 @@ export function createEnergy(container, initialState = {}, { onStateChange } = {
   const ePlot = createPlot(plots, eSpec());
   const lossPlot = createPlot(plots, lossSpec());
 
-  /** The text for screen readers; again when the metal's walk arrives. */
+  /** The text for screen readers. */
   const describe = (metal) => {
     const comp = shell.state.compensation;
     const compensated = comp === 'none' ? '' : ` With ${schema.compensation.options[comp]} every sphere reflects all of it and vanishes.`;
@@ -113,7 +114,7 @@ export function createEnergy(container, initialState = {}, { onStateChange } = {
         return [...rows, [`with ${schema.compensation.options[comp]}`, specularAlbedoFromTable(albedoTableOnce(), a.nv, d.alpha, 1, comp).toFixed(4)]];
       },
     })));
-    describe(metalView.update(shell.state.metal, shell.state.metalAlpha));
+    describe(metalNow());
   };
   render();
 
