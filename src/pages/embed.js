@@ -27,5 +27,6 @@ if (isWidgetName(name)) {
   }
 } else {
   const known = Object.keys(WIDGETS).join(', ');
-  showBlockingMessage(root, name ? `There is no widget called ${showValue(name)}.` : 'No widget named.', `Use embed.html?w=NAME with one of: ${known}.`);
+  const what = name ? `There is no widget called ${showValue(name)}.` : 'No widget named.';
+  showBlockingMessage(root, what, `Use embed.html?w=NAME with one of: ${known}.`);
 }

@@ -108,7 +108,8 @@ function route() {
     return;
   }
   const keep = Math.max(index, 0);
-  if (id) notices.show(`There is no step ${showValue(id)} in the tour; ${index >= 0 ? 'stayed on' : 'showing'} “${steps[keep].title}”.`);
+  const where = `${index >= 0 ? 'stayed on' : 'showing'} “${steps[keep].title}”`;
+  if (id) notices.show(`There is no step ${showValue(id)} in the tour; ${where}.`);
   history.replaceState(history.state, '', `#${steps[keep].id}`);
   if (index < 0) show(keep);
 }
