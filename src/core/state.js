@@ -37,7 +37,8 @@ export const isOption = (options, value) => typeof value === 'string' && Object.
 // A decimal number as a URL carries it: 12, -0.5, .5, 1e-3. Not hex, binary, Infinity or other digits.
 const DECIMAL = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;
 
-function parseNumber(raw) {
+/** A number as given, or a plain-decimal string's value; NaN for anything else. */
+export function parseNumber(raw) {
   if (typeof raw === 'number') return raw;
   return typeof raw === 'string' && DECIMAL.test(raw.trim()) ? Number(raw.trim()) : NaN;
 }
