@@ -3,6 +3,7 @@
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { ROOT } from '../tests/browser/harness.js';
+import { iblStaleNote } from '../src/pages/ibl-note.js';
 
 const report = JSON.parse(readFileSync(join(ROOT, 'bench/results/latest.json'), 'utf8'));
 const { machine: m, gpuSetup: g, versusThree: vt, ibl } = report;
@@ -15,9 +16,11 @@ const lines = [
 ];
 if (report.familiesMeasured) {
   const { date, timedCpu } = report.familiesMeasured;
+  const date0 = report.date.slice(0, 10);
   lines.push(`The term families' ${timedCpu ? 'errors and CPU costs' : 'errors'} below were measured again on ` +
     `${date.slice(0, 10)} (\`npm run bench -- --only families\`); their ${timedCpu ? 'GPU columns are' : 'costs are'} ` +
-    'from the full run.', '');
+    `from the full run${iblStaleNote(report.date) ? `, as are the image-based lighting rows (${date0})` : ''}.`,
+    '');
 }
 const HEAD = (first, what) => [`| ${first} | ${what === 'error' ? 'error against' : 'difference from'} | max \\|${what}\\| | RMS | ` +
   'CPU ns/eval | GPU relative |', '|---|---|---|---|---|---|'];
@@ -44,7 +47,7 @@ lines.push(
   '**Image-based lighting against the reference.** The material lab\'s environment methods on a ' +
     `${ibl.setup.resolution}² sphere against its Monte Carlo reference (${ibl.setup.referenceSamples} samples per pixel, multiple importance ` +
     `sampling of the BRDF and the map); GPU time of the method's pass, median of ${ibl.setup.timingRuns}; RMS error over the sphere, in radiance ` +
-    'and relative to the reference\'s RMS.',
+    `and relative to the reference's RMS.${iblStaleNote(report.date) ? ` ${iblStaleNote(report.date)}` : ''}`,
   '',
   '| environment, material | method | GPU ms | RMS | relative |',
   '|---|---|---|---|---|',

@@ -39,11 +39,11 @@ float multipleScatteringFromLoss(float lossL, float lossV, float lossAvg) {
 #ifdef ALBEDO_TABLE_GGX
 uniform sampler2D uAlbedoTableGGX;
 
-// (1 - E(mu, alpha), 1 - E_avg(alpha), bias), bilinear in (sqrt(mu), sqrt(alpha)) by hand with texelFetch, so
+// (1 - E(mu, alpha), 1 - E_avg(alpha), bias), bilinear in (cbrt(mu), cbrt(alpha)) by hand with texelFetch, so
 // float textures need no filtering extension and the rule is the JS one exactly. bias: the split sum's.
 vec3 albedoLossTableGGX(float mu, float alpha) {
   ivec2 size = textureSize(uAlbedoTableGGX, 0);
-  vec2 p = sqrt(clamp(vec2(mu, alpha), 0.0, 1.0)) * vec2(size - 1);
+  vec2 p = pow(clamp(vec2(mu, alpha), 0.0, 1.0), vec2(1.0 / 3.0)) * vec2(size - 1); // pow(0, 1/3) = 0: y > 0
   ivec2 i = min(ivec2(p), size - 2);
   vec2 f = p - vec2(i);
   vec3 t00 = texelFetch(uAlbedoTableGGX, i, 0).rgb;

@@ -53,6 +53,14 @@ export function parseMessage(data) {
   return null;
 }
 
+/** One notice for any number of unknown keys: the first four named (cut short), the rest counted. */
+function unknownKeysNotice(schema, unknown) {
+  const named = unknown.slice(0, 4).map((k) => `“${cut(k)}”`).join(', ');
+  const more = unknown.length > 4 ? ` and ${unknown.length - 4} more` : '';
+  const verb = unknown.length > 1 ? 'are not settings' : 'is not a setting';
+  return `${named}${more} ${verb} of this widget (it has: ${Object.keys(schema).join(', ')}); ignored.`;
+}
+
 /**
  * What applying `partial` over `current` would report: `invalid` values (the field keeps its value, or a
  * number is clamped) and `unknown` keys (ignored).
@@ -61,8 +69,7 @@ export function checkIncomingState(schema, partial, current) {
   const unknown = Object.keys(partial).filter((k) => !Object.hasOwn(schema, k));
   return {
     invalid: coerceState(schema, partial, current).notices,
-    unknown: unknown.map((k) => `“${cut(k)}” is not a setting of this widget (it has: ${Object.keys(schema).join(', ')}); `
-      + 'ignored.'),
+    unknown: unknown.length ? [unknownKeysNotice(schema, unknown)] : [],
   };
 }
 

@@ -42,7 +42,8 @@ const DECIMAL = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;
 // What a text field may hold: a name to show (a file name), never markup, a URL scheme or control characters.
 const TEXT = /^[\p{L}\p{N} ._()+,-]*$/u;
 
-function parseNumber(raw) {
+/** A number as given, or a plain-decimal string's value; NaN for anything else. */
+export function parseNumber(raw) {
   if (typeof raw === 'number') return raw;
   return typeof raw === 'string' && DECIMAL.test(raw.trim()) ? Number(raw.trim()) : NaN;
 }

@@ -21,7 +21,10 @@ export function createProgress(storage = globalThis.localStorage) {
     }
   };
   return {
-    of: (id) => ({ solved: Boolean(data[id]?.solved), attempts: Number(data[id]?.attempts) || 0 }),
+    of(id) {
+      const entry = Object.hasOwn(data, id) ? data[id] : null; // an id like 'constructor' reads nothing inherited
+      return { solved: Boolean(entry?.solved), attempts: Number(entry?.attempts) || 0 };
+    },
     /** Counts an attempt; a solved exercise stays solved. */
     record(id, ok) {
       const p = this.of(id);

@@ -96,34 +96,42 @@ export async function validateExercise(raw, { schemaOf }) {
     }
   }
 
-  // the grader's params
-  const params = {};
-  if (grader) {
-    const given = raw.params ?? {};
-    if (!isObject(given)) errors.push('params: not an object');
-    else {
-      for (const key of Object.keys(given)) {
-        if (!Object.hasOwn(grader.params, key)) errors.push(`params.${key}: unknown for grader "${raw.grader}" (params: ${Object.keys(grader.params).join(', ') || 'none'})`);
-      }
-      for (const [key, f] of Object.entries(grader.params)) {
-        if (given[key] === undefined) {
-          if (f.required) errors.push(`params.${key}: missing (required by grader "${raw.grader}")`);
-          else params[key] = f.default;
-          continue;
-        }
-        const why = fieldProblem(f, given[key]);
-        if (why) errors.push(`params.${key}: ${why}`);
-        else params[key] = given[key];
-      }
-    }
-  }
+  const params = grader ? graderParams(raw, grader, errors) : {};
 
   // a grader that can tell whether its question has exactly one answer says so
-  if (grader?.check && !errors.length) for (const problem of grader.check(params, raw.tolerance)) errors.push(`params: ${problem}`);
+  if (grader?.check && !errors.length) {
+    for (const problem of grader.check(params, raw.tolerance)) errors.push(`params: ${problem}`);
+  }
 
   if (errors.length) return { exercise: null, errors };
   return {
     exercise: { id: raw.id, chapter: raw.chapter, title: raw.title, prompt: raw.prompt, widget: raw.widget ?? null, state, locked, grader: raw.grader, params, tolerance: raw.tolerance },
     errors,
   };
+}
+
+/** The grader's params from raw.params, with its defaults filled in; each problem goes to `errors`. */
+function graderParams(raw, grader, errors) {
+  const params = {};
+  const given = raw.params ?? {};
+  if (!isObject(given)) {
+    errors.push('params: not an object');
+    return params;
+  }
+  for (const key of Object.keys(given)) {
+    if (Object.hasOwn(grader.params, key)) continue;
+    const known = Object.keys(grader.params).join(', ') || 'none';
+    errors.push(`params.${key}: unknown for grader "${raw.grader}" (params: ${known})`);
+  }
+  for (const [key, f] of Object.entries(grader.params)) {
+    if (given[key] === undefined) {
+      if (f.required) errors.push(`params.${key}: missing (required by grader "${raw.grader}")`);
+      else params[key] = f.default;
+      continue;
+    }
+    const why = fieldProblem(f, given[key]);
+    if (why) errors.push(`params.${key}: ${why}`);
+    else params[key] = given[key];
+  }
+  return params;
 }

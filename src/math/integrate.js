@@ -238,6 +238,8 @@ export function dfgSplitSum(mu, alpha, terms = {}, { nodes = 0 } = {}) {
   const integrate = nodes ? (f, lo, hi, tol, dim) => gaussLegendreVector(f, lo, hi, nodes, dim) : integrateVector;
   const context = { nv, sv, vis, kinks, params: { alpha: a }, integrate };
   const overPhi = (r) => {
+    // r = 0 is θm = 90°, where the weight 2r vanishes; Beckmann's cuts underflow to r = 0 at small alpha
+    if (!(r > 0)) return [0, 0];
     const t2 = tan2(r, a2);
     const cm = 1 / Math.sqrt(1 + t2);
     const sm = Math.sqrt(t2) * cm;

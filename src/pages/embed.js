@@ -6,6 +6,7 @@ import { mountWidget } from '../core/widget-host.js';
 import { connectEmbedProtocol, parseAllowedOrigins } from '../core/embed-protocol.js';
 import { WIDGETS, isWidgetName } from '../widgets/registry.js';
 import { createNoticeArea, showBlockingMessage } from '../core/notice.js';
+import { showValue } from '../core/state.js';
 import { snapshotWidget } from '../core/snapshot.js';
 
 const root = document.getElementById('embed');
@@ -26,5 +27,6 @@ if (isWidgetName(name)) {
   }
 } else {
   const known = Object.keys(WIDGETS).join(', ');
-  showBlockingMessage(root, name ? `There is no widget called “${name}”.` : 'No widget named.', `Use embed.html?w=NAME with one of: ${known}.`);
+  const what = name ? `There is no widget called ${showValue(name)}.` : 'No widget named.';
+  showBlockingMessage(root, what, `Use embed.html?w=NAME with one of: ${known}.`);
 }

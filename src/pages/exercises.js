@@ -9,6 +9,7 @@ import { WIDGETS, isWidgetName } from '../widgets/registry.js';
 import { GRADERS } from '../exercises/graders.js';
 import { loadExerciseSet, readExerciseFile } from '../exercises/load.js';
 import { createProgress } from '../exercises/progress.js';
+import { parseNumberAnswer } from '../exercises/answer.js';
 import { createPreview } from '../exercises/previews.js';
 import { hashId } from '../core/url-hash.js';
 
@@ -91,7 +92,7 @@ function check(read) {
   const raw = read();
   let answer = raw;
   if (grader.answer.kind === 'number') {
-    answer = Number(raw.replace(',', '.'));
+    answer = parseNumberAnswer(raw);
     if (raw === '' || !Number.isFinite(answer)) return { ok: false, counted: false, summary: `Enter a number${grader.answer.unit ? ` in ${grader.answer.unit}` : ''}.`, details: [] };
   }
   if (grader.answer.kind === 'choice' && !isOption(grader.answer.choices(exercise.params), raw)) {

@@ -2,6 +2,7 @@
 // (written by `npm run bench`): a Pareto chart per family and the full table.
 import '../styles.css';
 import report from '../../bench/results/latest.json';
+import { iblStaleNote } from './ibl-note.js';
 import { createPlot } from '../core/plot.js';
 import { SERIES_COLORS } from '../core/palettes.js';
 
@@ -96,7 +97,9 @@ function renderIbl(ibl) {
   section.innerHTML = '<h2>Image-based lighting against the reference</h2>' +
     `<p class="domain">The material lab's environment methods on a ${ibl.setup.resolution}² sphere, each against the lab's converged ` +
     `Monte Carlo reference (${ibl.setup.referenceSamples} samples per pixel): relative RMS error over the sphere against the GPU time ` +
-    `of the method's pass (median of ${ibl.setup.timingRuns}). Importance sampling is one curve, N = 4 to 256 samples.</p>`;
+    `of the method's pass (median of ${ibl.setup.timingRuns}). Importance sampling is one curve, N = 4 to 256 ` +
+    'samples.' +
+    `${iblStaleNote(report.date) ? ` ${iblStaleNote(report.date).replace(/`/g, '')}` : ''}</p>`;
   extra.before(section);
   const cases = [...new Set(ibl.rows.map((r) => `${r.environment}|${r.material}|${r.alpha}`))];
   for (const c of cases) {

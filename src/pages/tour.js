@@ -4,7 +4,7 @@
 // state; a different one replaces it, and the old one is disposed (its WebGL context with it).
 import '../styles.css';
 import { mountWidget } from '../core/widget-host.js';
-import { defaultState } from '../core/state.js';
+import { defaultState, showValue } from '../core/state.js';
 import { createNoticeArea } from '../core/notice.js';
 import { WIDGETS, isWidgetName } from '../widgets/registry.js';
 import { tourPlan } from '../tour/steps.js';
@@ -108,7 +108,8 @@ function route() {
     return;
   }
   const keep = Math.max(index, 0);
-  if (id) notices.show(`There is no step “${id}” in the tour; ${index >= 0 ? 'stayed on' : 'showing'} “${steps[keep].title}”.`);
+  const where = `${index >= 0 ? 'stayed on' : 'showing'} “${steps[keep].title}”`;
+  if (id) notices.show(`There is no step ${showValue(id)} in the tour; ${where}.`);
   history.replaceState(history.state, '', `#${steps[keep].id}`);
   if (index < 0) show(keep);
 }

@@ -71,8 +71,8 @@ export const TOUR_STEPS = [
     id: 'subsurface-local', section: 'surfaces', widget: 'subsurface-scale', title: 'When diffuse is local',
     state: { pixel: 4 },
     text: 'Light refracted into a non-metal wanders and re-emerges some distance from where it entered. If a pixel’s ' +
-      'footprint on the surface is much wider than that distance, we may pretend it comes out where it went in: shading stays local, ' +
-      'and this re-emerging light is the diffuse term.',
+      'footprint on the surface is much wider than that distance, we may pretend it comes out where it went in: ' +
+      'shading stays local, and this re-emerging light is the diffuse term.',
   },
   {
     id: 'subsurface-needed', section: 'surfaces', widget: 'subsurface-scale', title: 'When subsurface scattering is needed',

@@ -27,12 +27,14 @@ export const WIDGETS = {
   },
   'subsurface-scale': {
     title: 'Subsurface scale',
-    summary: 'Random walks in a scattering slab: how far light travels before it re-emerges, against a pixel’s footprint radius.',
+    summary: 'Random walks in a scattering slab: how far light travels before it re-emerges, against a pixel’s ' +
+      'footprint radius.',
     load: () => import('./subsurface-scale/subsurface-scale.js'),
   },
   radiance: {
     title: 'Radiance and colour',
-    summary: 'Radiance along a ray stays put while a lamp’s irradiance falls as 1/d²; a spectrum reduced to RGB, and where RGB ⊗ RGB misleads.',
+    summary: 'Radiance along a ray stays put while a lamp’s irradiance falls as 1/d²; a spectrum reduced to RGB, and ' +
+      'where RGB ⊗ RGB misleads.',
     load: () => import('./radiance/radiance.js'),
   },
   'brdf-lobe': {

@@ -64,6 +64,7 @@ describe('Content-Security-Policy', () => {
         return { policy: meta?.content, beforeScripts: Boolean(meta && first && meta.compareDocumentPosition(first) & Node.DOCUMENT_POSITION_FOLLOWING) };
       });
       expect(policy, file).toMatch(/(^|; )script-src 'self'(;|$)/);
+      expect(policy, file).toMatch(/(^|; )worker-src 'self'(;|$)/); // explicit, should script-src ever loosen
       expect(policy, file).toMatch(/(^|; )default-src 'self'(;|$)/);
       expect(policy, file).toMatch(/(^|; )object-src 'none'(;|$)/);
       expect(policy, file).not.toMatch(/unsafe-eval|script-src[^;]*unsafe-inline|\*/);

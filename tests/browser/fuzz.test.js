@@ -225,6 +225,53 @@ describe('fuzz: files dropped and fetched', () => {
     await page.close();
   }, 120_000);
 
+  it('measured-brdf refuses empty, short-header, 2 GB-claiming, wrong-dimension and oversized .binary files by name, keeping the last table', async () => {
+    const page = await open(browser, 'embed.html?w=measured-brdf');
+    await page.waitForFunction(() => document.querySelector('.measured-source')?.textContent, { timeout: 60_000 });
+    const source = await page.$eval('.measured-source', (el) => el.textContent);
+    const protoNames = () => page.evaluate(() => Object.getOwnPropertyNames(Object.prototype).sort().join(','));
+    const prototypeBefore = await protoNames();
+    const files = {
+      'empty.binary': [], 'short.binary': [1, 2, 3], 'huge-claim.binary': [...int32(90, 90, 10980), ...Array(4096).fill(0)],
+      'dims.binary': [...int32(1, 2, 3), ...Array(4096).fill(0)], 'over.binary': { size: 34_992_013 },
+    };
+    const faults = {
+      'empty.binary': /Empty file/, 'short.binary': /Truncated header/, 'huge-claim.binary': /claims .* GB/,
+      'dims.binary': /Wrong dimensions 1 × 2 × 3/, 'over.binary': /34,992,013 bytes, more than a MERL file’s 34,992,012/,
+    };
+    for (const [name, bytes] of Object.entries(files)) {
+      await dropFile(page, '.measured-drop', name, bytes);
+      await page.waitForFunction((n) => [...document.querySelectorAll('.notice')].some((x) => x.textContent.includes(`${n}:`)), { timeout: 20_000 }, name);
+      const notice = await page.$$eval('.notice', (n, name) => n.map((x) => x.textContent).find((t) => t.includes(`${name}:`)), name);
+      expect(notice, name).toMatch(faults[name]);
+      counts.inputs++;
+      counts.refusals++;
+    }
+    expect(await page.$eval('.measured-source', (el) => el.textContent)).toBe(source);
+    expect(await protoNames()).toEqual(prototypeBefore);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  }, 120_000);
+
+  it('an unknown widget name and tour step of 5,000 characters are quoted cut to 60 characters (showValue)', async () => {
+    const long = 'x'.repeat(5000);
+    const embed = await open(browser, `embed.html?w=${long}`);
+    await embed.waitForSelector('.blocking-message');
+    expect(await embed.$eval('.blocking-message', (el) => el.textContent)).toContain(`"${'x'.repeat(59)}… (5002 characters)`);
+    expect(await embed.$eval('.blocking-message', (el) => el.textContent.length)).toBeLessThan(1000);
+    expect(embed.errors).toEqual([]);
+    await embed.close();
+    const tour = await open(browser, `tour.html#${long}`);
+    await tour.waitForFunction(() => [...document.querySelectorAll('.notice')].some((x) => x.textContent.includes('There is no step')), { timeout: 45_000 });
+    const notice = await tour.$$eval('.notice', (n) => n.map((x) => x.textContent).find((t) => t.includes('There is no step')));
+    expect(notice).toContain('… (5002 characters)');
+    expect(notice.length).toBeLessThan(400);
+    expect(tour.errors).toEqual([]);
+    await tour.close();
+    counts.inputs += 2;
+    counts.refusals += 2;
+  }, 120_000);
+
   it('exercises: a set naming inherited properties and holding HTML, and empty, truncated, wrong-magic and 2 MB files', async () => {
     const good = { id: 'ok', chapter: 'diffuse', title: '<img src=x onerror="window.__pwned=1">', prompt: '<script>window.__pwned=1</script>', grader: 'lambert-radiance', params: { cLight: 1, thetaDeg: 0 }, tolerance: 0.1 };
     const set = [good, ...PROTOTYPE_NAMES.map((n, i) => ({ ...good, id: `bad-${i}`, widget: n, grader: n, chapter: n, params: { [n]: 1 } }))];

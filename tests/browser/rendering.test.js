@@ -230,7 +230,7 @@ describe('material lab', () => {
     }
     expect(page.errors).toEqual([]);
     await page.close();
-  }, 240_000); // a DFG table and a reference per case
+  }, 240_000); // a reference per case (the DFG tables are shipped precomputed)
 
   it('the split sum prefilters with the chosen NDF: under radiance 1 + d_y it shows 1 + c r_y, c at most the mean of l·r over the lobe (1-D quadrature), and Beckmann’s c above what any GGX-filtered map can show', async () => {
     const alpha = 0.0625; // a layer of the prefiltered map: no blend between layers

@@ -38,6 +38,15 @@ describe('split-sum DFG against a quadrature over the light direction', () => {
       expect(Math.abs(albedo - (s + b)), `mu ${mu}, alpha ${alpha}`).toBeLessThan(1e-5);
     }
   });
+  it('Beckmann at small alpha, where its cuts underflow to r = 0 (a NaN once): within 1e-5, for every V', () => {
+    const [mu, alpha] = [0.6414, 0.00943]; // a texel of the shipped DFG tables
+    for (const V of smooth) {
+      const [s, b] = splitSumOverLight(mu, alpha, 'beckmann', V);
+      const [scale, bias] = dfgSplitSum(mu, alpha, { ndf: 'beckmann', visibility: V });
+      expect(Math.abs(scale - s), V).toBeLessThan(1e-5);
+      expect(Math.abs(bias - b), V).toBeLessThan(1e-5);
+    }
+  });
   it("Cook-Torrance's min(): within 1e-5 with the light-direction pieces kept short (kinks fall inside them)", () => {
     const [s, b] = splitSumOverLight(0.1, 0.3, 'beckmann', 'cookTorrance', 0.02);
     expect(Math.abs(albedoGGX(0.1, 0.3, { ndf: 'beckmann', visibility: 'cookTorrance' }) - (s + b))).toBeLessThan(1e-5);

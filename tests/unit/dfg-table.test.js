@@ -1,8 +1,10 @@
-// The DFG table as the GPU samples it (half floats, bilinear between texel centres, clamped at the edges)
-// against the adaptive quadrature dfgSplitSum it is built from.
+// The shipped DFG tables against the float64 quadrature they are made from, texel by texel, and as the GPU samples
+// them (half floats, bilinear between texel centres, clamped at the edges) against the adaptive dfgSplitSum.
 import { describe, expect, it } from 'vitest';
 import { DFG_TABLE_SIZE, dfgSplitSum, dfgTableUv } from '../../src/math/integrate.js';
-import { dfgTableData } from '../../src/core/lab/dfg-table.js';
+import { dfgTableData, dfgTexel } from '../../src/core/lab/dfg-table.js';
+import { DFG_TABLES } from '../../src/core/lab/dfg-tables.data.js';
+import { LAB_TERMS } from '../../src/core/lab/lab-approximations.js';
 import { sampleDfgTable } from './dfg-lookup.js';
 
 // probes between and on texel centres, denser toward grazing view and low roughness
@@ -23,11 +25,32 @@ function worstError(terms, mus = MUS, alphas = ALPHAS) {
   return worst;
 }
 
+// every (D, V) pair the material lab offers
+const LAB_PAIRS = Object.keys(LAB_TERMS.ndf).flatMap((ndf) =>
+  Object.keys(LAB_TERMS.visibility).map((visibility) => ({ ndf, visibility })));
+
+describe('shipped DFG tables (dfg-tables.data.js, npm run dfg-tables)', { timeout: 120_000 }, () => {
+  it('hold exactly the lab\'s (D, V) pairs', () => {
+    expect(Object.keys(DFG_TABLES).sort()).toEqual(LAB_PAIRS.map((t) => `${t.ndf}/${t.visibility}`).sort());
+  });
+  // every 7th texel (7 is prime to the 72 columns, so every column and row is visited) against the quadrature
+  // three.js's toHalfFloat truncates: within one half-float step (2^-10 relative), 2^-24 absolute below 2^-14
+  it.each(LAB_PAIRS)('equal the float64 split sum within half-float rounding (2^-10 relative) for %o', (terms) => {
+    const { data, size } = dfgTableData(terms);
+    let worst = 0;
+    for (let t = 0; t < size * size; t += 7) {
+      const ref = dfgTexel(terms, t % size, Math.floor(t / size));
+      ref.forEach((x, k) => {
+        const excess = Math.abs(data[4 * t + k] - x) / (2 ** -10 * Math.abs(x) + 2 ** -24);
+        worst = Math.max(worst, excess);
+      });
+    }
+    expect(worst).toBeLessThanOrEqual(1.001);
+  });
+});
+
 describe('DFG table as the GPU samples it', { timeout: 60_000 }, () => {
-  it.each([
-    [{}], [{ ndf: 'beckmann', visibility: 'smithBeckmannSeparable' }], [{ visibility: 'cookTorrance' }],
-    [{ visibility: 'kelemen' }], [{ ndf: 'beckmann', visibility: 'smithGGXCorrelated' }],
-  ])('is within 1e-3 of dfgSplitSum over n·v in [1e-3, 1], alpha in [0.01, 1] for %o', (terms) => {
+  it.each(LAB_PAIRS)('is within 1e-3 of dfgSplitSum over n·v in [1e-3, 1], alpha in [0.01, 1] for %o', (terms) => {
     const worst = worstError(terms);
     expect(worst.error, JSON.stringify(worst)).toBeLessThan(1e-3);
   });
@@ -35,7 +58,7 @@ describe('DFG table as the GPU samples it', { timeout: 60_000 }, () => {
     expect(worstError({}, MUS.slice(0, 10), [3e-4, 1e-3, 3e-3, 6e-3]).error).toBeLessThan(1e-3);
     expect(worstError({}, MUS.slice(0, 10), [1e-4]).error).toBeGreaterThan(1e-3);
   });
-  it('is cached per pair of terms, the default being GGX with height-correlated Smith', () => {
+  it('is decoded once per pair of terms, the default being GGX with height-correlated Smith', () => {
     expect(dfgTableData()).toBe(dfgTableData({ ndf: 'ggx', visibility: 'smithGGXCorrelated' }));
     expect(dfgTableData({ visibility: 'kelemen' })).not.toBe(dfgTableData());
     expect(dfgTableData().size).toBe(DFG_TABLE_SIZE);

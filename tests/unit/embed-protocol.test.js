@@ -57,4 +57,12 @@ describe('a state sent by message', () => {
     expect(unknown).toHaveLength(1);
     expect(unknown[0]).toMatch(/“colour” is not a setting of this widget \(it has: alpha, mode\)/);
   });
+
+  it('reports 100,000 unknown keys in one notice naming four, not one notice per key (bounded reply)', () => {
+    const state = Object.fromEntries(Array.from({ length: 100_000 }, (_, i) => [`k${i}`, i]));
+    const { unknown } = checkIncomingState(schema, state, { alpha: 0.3, mode: 'a' });
+    expect(unknown).toHaveLength(1);
+    expect(unknown[0]).toBe('“k0”, “k1”, “k2”, “k3” and 99996 more are not settings of this widget (it has: alpha, mode); '
+      + 'ignored.');
+  });
 });

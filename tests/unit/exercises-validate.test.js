@@ -5,6 +5,7 @@ import { join } from 'node:path';
 import { validateExercise } from '../../src/exercises/validate.js';
 import { readExerciseSet } from '../../src/exercises/load.js';
 import { createProgress } from '../../src/exercises/progress.js';
+import { parseNumberAnswer } from '../../src/exercises/answer.js';
 import { WIDGETS } from '../../src/widgets/registry.js';
 
 const DIR = join(import.meta.dirname, '../../public/exercises');
@@ -106,9 +107,28 @@ describe('progress', () => {
     p.reset();
     expect(createProgress(storage).of('a')).toEqual({ solved: false, attempts: 0 });
   });
+  it('reads no inherited entry: an id named like an Object.prototype property has no progress', () => {
+    Object.defineProperty(Object.prototype, 'planted', { value: { solved: true, attempts: 5 }, configurable: true });
+    try {
+      expect(createProgress(memory()).of('planted')).toEqual({ solved: false, attempts: 0 });
+    } finally {
+      delete Object.prototype.planted;
+    }
+  });
   it('starts empty from corrupt data', () => {
     const storage = memory();
     storage.setItem('shading-lab.exercises.progress.v1', '{oops');
     expect(createProgress(storage).of('a')).toEqual({ solved: false, attempts: 0 });
+  });
+});
+
+describe('a typed number answer', () => {
+  it('is read as a plain decimal like a state value (Number() would take 0x10 as 16 and 0b11 as 3)', () => {
+    expect(parseNumberAnswer('0x10')).toBeNaN();
+    expect(parseNumberAnswer('0b11')).toBeNaN();
+    expect(parseNumberAnswer('Infinity')).toBeNaN();
+    expect(parseNumberAnswer('24,4')).toBe(24.4);
+    expect(parseNumberAnswer(' 24.4 ')).toBe(24.4);
+    expect(parseNumberAnswer('2.44e1')).toBe(24.4);
   });
 });

@@ -1,8 +1,8 @@
 // What image-based lighting needs on the GPU, made once per environment and kept: the environment as an
 // equirectangular half-float map with mips, its irradiance (summed exactly in JS from the map read back), tables
 // to sample it by brightness; made when first asked for: its prefiltered layers for the split sum, one set per NDF,
-// and three.js's PMREM of it for comparison. Also the DFG table, computed by src/math's dfgSplitSum, which does not
-// depend on the environment.
+// and three.js's PMREM of it for comparison. Also the DFG table (dfg-table.js: src/math's dfgSplitSum, shipped
+// precomputed), which does not depend on the environment.
 import * as THREE from 'three';
 import { RoomEnvironment } from 'three/examples/jsm/environments/RoomEnvironment.js';
 import { assembleGlsl } from '../glsl.js';
@@ -18,7 +18,7 @@ export const PREFILTER_LEVELS = 8; // layer k at perceptual roughness k/8, alpha
 const IRRADIANCE_SIZE = [32, 16];
 const PREFILTER_DEFINES = { ggx: {}, beckmann: { NDF_BECKMANN: 1 } };
 
-export { dfgTableData }; // built in dfg-table.js (plain JS, no GPU)
+export { dfgTableData }; // decoded in dfg-table.js (plain JS, no GPU)
 
 /** The DFG table for terms { ndf, visibility } as a filtered texture (half float): sample it at dfgTableUv. */
 export function createDfgTexture(terms = {}) {
@@ -48,8 +48,6 @@ const halfTarget = (w, h, options = {}) => new THREE.WebGLRenderTarget(w, h, {
 export function createEnvironmentMaps(renderer) {
   const env = halfTarget(...ENV_SIZE, { minFilter: THREE.LinearMipmapLinearFilter, generateMipmaps: true });
   const weighted = halfTarget(...ENV_SIZE, { minFilter: THREE.LinearMipmapLinearFilter, generateMipmaps: true }); // for the prefilter
-  const prefilteredByNdf = new Map(); // ndf -> { target, filter, fresh }
-  const irradiance = halfTexture({ data: new Float32Array(IRRADIANCE_SIZE[0] * IRRADIANCE_SIZE[1] * 4), width: IRRADIANCE_SIZE[0], height: IRRADIANCE_SIZE[1] });
 
   const quad = new THREE.Mesh(new THREE.PlaneGeometry(2, 2));
   quad.frustumCulled = false;
@@ -70,55 +68,12 @@ export function createEnvironmentMaps(renderer) {
     renderer.setRenderTarget(target, layer);
     renderer.render(scene, camera);
   };
+  const prefilterPass = (defines) => pass('env-prefilter.frag.glsl', defines, filterUniforms());
+  const prefiltered = createPrefilterCache(renderer, run, prefilterPass);
 
-  const table = (w, h) => {
-    const t = new THREE.DataTexture(new Float32Array(w * h), w, h, THREE.RedFormat, THREE.FloatType);
-    t.minFilter = t.magFilter = THREE.NearestFilter;
-    return t;
-  };
-  const sampling = { marginal: table(ENV_SIZE[1], 1), conditional: table(...ENV_SIZE), pdf: table(...ENV_SIZE), usable: false };
-  // from the map as it now is on the GPU: its irradiance, and tables for the reference to sample it by brightness
-  const updateFromPixels = () => {
-    const half = new Uint16Array(ENV_SIZE[0] * ENV_SIZE[1] * 4);
-    renderer.readRenderTargetPixels(env, 0, 0, ...ENV_SIZE, half);
-    const pixels = Float32Array.from(half, THREE.DataUtils.fromHalfFloat);
-    toHalf(irradianceMap(pixels, ...ENV_SIZE, ...IRRADIANCE_SIZE), irradiance.image.data);
-    irradiance.needsUpdate = true;
-    const tables = buildEnvSampling(pixels, ...ENV_SIZE);
-    sampling.usable = Boolean(tables);
-    if (!tables) return;
-    for (const key of ['marginal', 'conditional', 'pdf']) {
-      sampling[key].image.data.set(tables[key]);
-      sampling[key].needsUpdate = true;
-    }
-  };
-
+  const readback = createEnvReadback(renderer, env);
   let pmremGenerator = null;
   let pmrem = null;
-
-  // the layers of the map filtered with the lobe of `ndf` ('ggx' | 'beckmann'), for the map as it now is
-  const prefilter = (ndf) => {
-    let entry = prefilteredByNdf.get(ndf);
-    if (!entry) {
-      const target = new THREE.WebGLArrayRenderTarget(...PREFILTER_SIZE, PREFILTER_LEVELS, {
-        type: THREE.HalfFloatType, depthBuffer: false, magFilter: THREE.LinearFilter, minFilter: THREE.LinearFilter,
-        wrapS: THREE.RepeatWrapping,
-      });
-      const filter = pass('env-prefilter.frag.glsl', PREFILTER_DEFINES[ndf], filterUniforms());
-      filter.uniforms.uSize.value.set(...PREFILTER_SIZE);
-      prefilteredByNdf.set(ndf, (entry = { target, filter, fresh: false }));
-    }
-    if (!entry.fresh) {
-      const previous = renderer.getRenderTarget();
-      for (let k = 1; k <= PREFILTER_LEVELS; k++) {
-        entry.filter.uniforms.uAlpha.value = (k / PREFILTER_LEVELS) ** 2;
-        run(entry.filter, entry.target, k - 1);
-      }
-      renderer.setRenderTarget(previous);
-      entry.fresh = true;
-    }
-    return entry.target.texture;
-  };
 
   const roomCube = () => {
     const cubeTarget = new THREE.WebGLCubeRenderTarget(256, { type: THREE.HalfFloatType });
@@ -131,9 +86,9 @@ export function createEnvironmentMaps(renderer) {
   return {
     env: env.texture,
     /** The map prefiltered for the split sum with the lobe of `ndf` ('ggx' | 'beckmann'), made when first asked for. */
-    prefiltered: prefilter,
-    irradiance,
-    sampling,
+    prefiltered: prefiltered.get,
+    irradiance: readback.irradiance,
+    sampling: readback.sampling,
     /** Replaces the environment: 'studio', or pixels { data, width, height } (sky, furnace, a user's file). */
     load(source) {
       const previous = renderer.getRenderTarget();
@@ -149,8 +104,8 @@ export function createEnvironmentMaps(renderer) {
         texture.dispose();
       }
       run(copyWeighted, weighted);
-      prefilteredByNdf.forEach((entry) => (entry.fresh = false));
-      updateFromPixels();
+      prefiltered.stale();
+      readback.update();
       renderer.setRenderTarget(previous);
       pmrem?.dispose();
       pmrem = null;
@@ -163,11 +118,80 @@ export function createEnvironmentMaps(renderer) {
       return pmrem.texture;
     },
     dispose() {
-      [env, weighted, irradiance, sampling.marginal, sampling.conditional, sampling.pdf].forEach((x) => x.dispose());
+      [env, weighted].forEach((x) => x.dispose());
+      readback.dispose();
       [copyFlat, copyCube, copyWeighted, quad.geometry].forEach((x) => x.dispose());
-      prefilteredByNdf.forEach(({ target, filter }) => [target, filter].forEach((x) => x.dispose()));
+      prefiltered.dispose();
       pmrem?.dispose();
       pmremGenerator?.dispose();
     },
   };
+}
+
+/**
+ * The map's prefiltered layers for the split sum, one set per NDF ('ggx' | 'beckmann'), each made when first asked
+ * for and remade after the map changes (stale()). `makeFilter(defines)` gives the prefilter pass for an NDF.
+ */
+function createPrefilterCache(renderer, run, makeFilter) {
+  const byNdf = new Map(); // ndf -> { target, filter, fresh }
+  const entryOf = (ndf) => {
+    if (!byNdf.has(ndf)) {
+      const target = new THREE.WebGLArrayRenderTarget(...PREFILTER_SIZE, PREFILTER_LEVELS, {
+        type: THREE.HalfFloatType, depthBuffer: false, magFilter: THREE.LinearFilter, minFilter: THREE.LinearFilter,
+        wrapS: THREE.RepeatWrapping,
+      });
+      const filter = makeFilter(PREFILTER_DEFINES[ndf]);
+      filter.uniforms.uSize.value.set(...PREFILTER_SIZE);
+      byNdf.set(ndf, { target, filter, fresh: false });
+    }
+    return byNdf.get(ndf);
+  };
+  return {
+    get(ndf) {
+      const entry = entryOf(ndf);
+      if (!entry.fresh) {
+        const previous = renderer.getRenderTarget();
+        for (let k = 1; k <= PREFILTER_LEVELS; k++) {
+          entry.filter.uniforms.uAlpha.value = (k / PREFILTER_LEVELS) ** 2;
+          run(entry.filter, entry.target, k - 1);
+        }
+        renderer.setRenderTarget(previous);
+        entry.fresh = true;
+      }
+      return entry.target.texture;
+    },
+    stale: () => byNdf.forEach((entry) => (entry.fresh = false)),
+    dispose: () => byNdf.forEach(({ target, filter }) => [target, filter].forEach((x) => x.dispose())),
+  };
+}
+
+/** From the map `env` as it is on the GPU (update() reads it back): its irradiance, and tables to sample it by
+ * brightness. */
+function createEnvReadback(renderer, env) {
+  const [iw, ih] = IRRADIANCE_SIZE;
+  const irradiance = halfTexture({ data: new Float32Array(iw * ih * 4), width: iw, height: ih });
+  const table = (w, h) => {
+    const t = new THREE.DataTexture(new Float32Array(w * h), w, h, THREE.RedFormat, THREE.FloatType);
+    t.minFilter = t.magFilter = THREE.NearestFilter;
+    return t;
+  };
+  const sampling = {
+    marginal: table(ENV_SIZE[1], 1), conditional: table(...ENV_SIZE), pdf: table(...ENV_SIZE), usable: false,
+  };
+  const update = () => {
+    const half = new Uint16Array(ENV_SIZE[0] * ENV_SIZE[1] * 4);
+    renderer.readRenderTargetPixels(env, 0, 0, ...ENV_SIZE, half);
+    const pixels = Float32Array.from(half, THREE.DataUtils.fromHalfFloat);
+    toHalf(irradianceMap(pixels, ...ENV_SIZE, ...IRRADIANCE_SIZE), irradiance.image.data);
+    irradiance.needsUpdate = true;
+    const tables = buildEnvSampling(pixels, ...ENV_SIZE);
+    sampling.usable = Boolean(tables);
+    if (!tables) return;
+    for (const key of ['marginal', 'conditional', 'pdf']) {
+      sampling[key].image.data.set(tables[key]);
+      sampling[key].needsUpdate = true;
+    }
+  };
+  const dispose = () => [irradiance, sampling.marginal, sampling.conditional, sampling.pdf].forEach((x) => x.dispose());
+  return { irradiance, sampling, update, dispose };
 }

@@ -6,7 +6,10 @@ import { EXRLoader } from 'three/examples/jsm/loaders/EXRLoader.js';
 import * as THREE from 'three';
 import { equirectDirection } from '../../math/lighting.js';
 
-export const ENVIRONMENTS = { studio: 'Studio (three.js RoomEnvironment)', sky: 'Sky with an enlarged sun (2°, the real one 0.27°)', furnace: 'White furnace (radiance 1)', file: 'Your file (drop .hdr / .exr)' };
+export const ENVIRONMENTS = {
+  studio: 'Studio (three.js RoomEnvironment)', sky: 'Sky with an enlarged sun (2°, the real one 0.27°)',
+  furnace: 'White furnace (radiance 1)', file: 'Your file (drop .hdr / .exr)',
+};
 
 /**
  * The sky's sun: a disc of angular radius 2°, 35° up. The real sun's is 0.27° (7.5× smaller): enlarged so that the

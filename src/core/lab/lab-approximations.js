@@ -2,6 +2,7 @@
 // table and the prefiltered map it reads (built for the chosen NDF and visibility term), and, where a method has
 // no form for a term, what stands in for it. The sentences the lab shows under its images come from here, so
 // the error image is read as the method's error and not as a difference between two models.
+import { SIGMA_MODELLED_DEG, sigmaExtrapolated, sigmaText } from '../sigma-range.js';
 
 /** The terms the lab offers, with the words the page uses for them. */
 export const LAB_TERMS = {
@@ -132,7 +133,26 @@ export function approximationNotes(scene) {
   const surround = diffuse ? diffuseUnderSurround(scene) : null;
   if (surround) notes.push(surround);
   if (scene.lights.env && scene.methods.env === 'pmrem') notes.push(PMREM_NOTE);
+  const sigmaDeg = Math.round(((scene.material?.sigma ?? 0) * 180) / Math.PI);
+  if (diffuse && scene.terms.diffuse.startsWith('oren-nayar') && sigmaExtrapolated(sigmaDeg)) {
+    notes.push(`Oren-Nayar at ${sigmaText(sigmaDeg)}: past ${SIGMA_MODELLED_DEG}° a Gaussian of facet tilts puts ` +
+      'over 4.6% of them beyond 90°, which no V-groove can have (the diffuse chapter).');
+  }
   const compensation = specular ? compensationNote(scene) : null;
   if (compensation) notes.push(compensation);
   return notes;
+}
+
+/** The notes as a list under the lab's images, redrawn only when they change. */
+export function createNotesList() {
+  const element = document.createElement('ul');
+  element.className = 'lab-notes';
+  let shown = '';
+  const show = (scene) => {
+    const lines = approximationNotes(scene);
+    if (lines.join('\n') === shown) return;
+    shown = lines.join('\n');
+    element.replaceChildren(...lines.map((line) => Object.assign(document.createElement('li'), { textContent: line })));
+  };
+  return { element, show };
 }

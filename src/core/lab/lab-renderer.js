@@ -87,7 +87,8 @@ export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
     uPunctualDir: { value: new THREE.Vector3(0, 0, 1) }, uPunctualCLight: { value: new THREE.Vector3() },
     uSphereDir: { value: new THREE.Vector3(0, 0, 1) }, uSphereSin: { value: 0.1 }, uSphereRadiance: { value: new THREE.Vector3() },
     uEnv: { value: null }, uEnvIntensity: { value: 1 }, uAmbient: { value: new THREE.Vector3() },
-    uPrefiltered: { value: null }, uPrefilterLevels: { value: PREFILTER_LEVELS }, uIrradiance: { value: null }, uDfg: { value: null },
+    uPrefiltered: { value: null }, uPrefilterLevels: { value: PREFILTER_LEVELS }, uIrradiance: { value: null },
+    uDfg: { value: null },
     uAlbedoTableGGX: { value: null }, // the albedo-loss table, made when a compensation is first chosen
     uMeasured: { value: null }, // a measured table's 3-D texture (scene.table), owned by the widget
     uEnvMarginal: { value: null }, uEnvConditional: { value: null }, uEnvPdf: { value: null }, uEnvSampling: { value: false },

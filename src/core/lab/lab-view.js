@@ -31,8 +31,7 @@ export function createLabView(container, { label, resolution, slots = 1, frame, 
   const captions = document.createElement('div');
   captions.className = 'lab-captions';
   let lab = null;
-  const dfgTextures = new Map(); // "ndf/visibility" -> the DFG table of those terms
-  const environments = new Map(); // key -> { maps, pixels }
+  const resources = createLabResources();
   const tone = viewMaterial({});
   const error = viewMaterial({ ERROR_VIEW: 1 });
   const quad = new THREE.Mesh(new THREE.PlaneGeometry(2, 2));
@@ -43,26 +42,10 @@ export function createLabView(container, { label, resolution, slots = 1, frame, 
   let again = false;
   let settings = { exposure: 1, errorScale: 0.1 };
 
-  const environment = (renderer) => (key, pixels = null) => {
-    let entry = environments.get(key);
-    if (!entry) environments.set(key, (entry = { maps: createEnvironmentMaps(renderer), pixels: undefined }));
-    if (entry.pixels !== pixels) {
-      entry.maps.load(pixels ?? BUILT_IN[key]());
-      entry.pixels = pixels;
-    }
-    return entry.maps;
-  };
-
-  const dfg = (terms) => {
-    const key = `${terms.ndf}/${terms.visibility}`;
-    if (!dfgTextures.has(key)) dfgTextures.set(key, createDfgTexture(terms));
-    return dfgTextures.get(key);
-  };
-
   const draw = (renderer) => {
-    lab ??= createLabRenderer(renderer, { dfg, resolution, slots });
+    lab ??= createLabRenderer(renderer, { dfg: resources.dfg, resolution, slots });
     again = false;
-    const panels = frame({ lab, environment: environment(renderer), again: () => (again = true) });
+    const panels = frame({ lab, environment: resources.environment(renderer), again: () => (again = true) });
     const pr = renderer.getPixelRatio();
     renderer.getSize(size);
     const w = size.x / panels.length;
@@ -90,10 +73,7 @@ export function createLabView(container, { label, resolution, slots = 1, frame, 
   const onContextLost = () => {
     lab?.dispose();
     lab = null;
-    dfgTextures.forEach((t) => t.dispose());
-    dfgTextures.clear();
-    environments.forEach((e) => e.maps.dispose());
-    environments.clear();
+    resources.dispose();
     onReset?.();
   };
   const viewport = createViewport(container, { draw, label, onContextLost });
@@ -120,10 +100,40 @@ export function createLabView(container, { label, resolution, slots = 1, frame, 
     invalidate: () => viewport?.invalidate(),
     dispose() {
       [tone, error, quad.geometry].forEach((x) => x.dispose());
-      dfgTextures.forEach((t) => t.dispose());
+      resources.dispose();
       lab?.dispose();
-      environments.forEach((e) => e.maps.dispose());
       viewport?.dispose();
+    },
+  };
+}
+
+/**
+ * What the lab keeps on the GPU between frames: each environment's maps (environment(renderer)(key, pixels?))
+ * and each DFG table as a texture (dfg(terms)), made when first asked for; dispose() lets all go.
+ */
+function createLabResources() {
+  const dfgTextures = new Map(); // "ndf/visibility" -> the DFG table of those terms
+  const environments = new Map(); // key -> { maps, pixels }
+  return {
+    environment: (renderer) => (key, pixels = null) => {
+      let entry = environments.get(key);
+      if (!entry) environments.set(key, (entry = { maps: createEnvironmentMaps(renderer), pixels: undefined }));
+      if (entry.pixels !== pixels) {
+        entry.maps.load(pixels ?? BUILT_IN[key]());
+        entry.pixels = pixels;
+      }
+      return entry.maps;
+    },
+    dfg(terms) {
+      const key = `${terms.ndf}/${terms.visibility}`;
+      if (!dfgTextures.has(key)) dfgTextures.set(key, createDfgTexture(terms));
+      return dfgTextures.get(key);
+    },
+    dispose() {
+      dfgTextures.forEach((t) => t.dispose());
+      dfgTextures.clear();
+      environments.forEach((e) => e.maps.dispose());
+      environments.clear();
     },
   };
 }

@@ -203,4 +203,4 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange } =
   };
 }
 
-export const widget = { name: 'brdf-lobe', schema, create: createBrdfLobe };
+export const widget = { name: 'brdf-lobe', schema, create: createBrdfLobe, terms: TERMS_USED };

@@ -2,6 +2,7 @@
 // Oren-Nayar (full and qualitative), on a row of GPU-shaded spheres under a light the user moves, and as plots:
 // the brightness across a sphere (the rough "full moon" flattening), radiance as the light sweeps past a fixed
 // view, and the light returned by specular plus diffuse against the view angle.
+import { SIGMA_HINT, sigmaText } from '../../core/sigma-range.js';
 import { createWidgetShell } from '../../core/widget-shell.js';
 import { createPlot } from '../../core/plot.js';
 import { createSphereGrid } from '../../core/sphere-grid.js';
@@ -9,7 +10,7 @@ import { SERIES_COLORS } from '../../core/palettes.js';
 import { lightDirFromAngles } from '../../core/light-control.js';
 import { createLightPad } from './light-pad.js';
 import {
-  DEG, MODELS, PROFILE_XS, SWEEP_XS, TRADE_XS, cosPhiDiff, lightSweep, paramsOf, profile, radianceAt, tradeOff,
+  MODELS, PROFILE_XS, SWEEP_XS, TRADE_XS, cosPhiDiff, lightSweep, paramsOf, profile, radianceAt, tradeOff,
 } from './diffuse-curves.js';
 
 const MODEL_KEYS = Object.keys(MODELS);
@@ -21,7 +22,9 @@ export const schema = {
     default: MODEL_KEYS,
     label: 'Diffuse models',
   },
-  sigma: { type: 'number', min: 0, max: 90, step: 1, default: 40, label: 'Oren–Nayar roughness σ', unit: '°', hint: 'Standard deviation of the facet slope angle, in degrees (the model itself takes radians). Above 45° it is an extrapolation: a Gaussian of tilts that wide puts over 4.6% of the facets past 90°, which no V-groove facet can have.' },
+  sigma: {
+    type: 'number', min: 0, max: 90, step: 1, default: 40, label: 'Oren–Nayar roughness σ', unit: '°', hint: SIGMA_HINT,
+  },
   cdiff: { type: 'number', min: 0, max: 1, step: 0.01, default: 0.8, label: 'Diffuse colour c_diff' },
   f0: { type: 'number', min: 0, max: 1, step: 0.01, default: 0.04, label: 'Specular F0 (trade-off)' },
   lightTheta: { type: 'number', min: 0, max: 180, step: 0.5, default: 0, label: 'Light from view', unit: '°' },
@@ -48,9 +51,6 @@ const TERMS_USED = ['diffuseLambert', 'diffuseFresnelWeighted', 'diffuseAshikhmi
 
 const colorOf = (key) => SERIES_COLORS[MODEL_KEYS.indexOf(key) % SERIES_COLORS.length];
 const degValues = (u, ticks) => ticks.map((t) => `${t}°`);
-/** Above this σ the Gaussian of facet tilts puts more than 4.6% of them beyond 90°: the model is extrapolated. */
-const SIGMA_MODELLED_DEG = 45;
-const sigmaText = (state) => `σ = ${state.sigma}° (${(state.sigma * DEG).toFixed(3)} rad${state.sigma > SIGMA_MODELLED_DEG ? ', extrapolated' : ''})`;
 /** Where the flatness table reads the profile: 90% of the way to the rim, on the light's side. */
 const RIM = 0.9;
 
@@ -78,14 +78,14 @@ export function createDiffuseExplorer(container, initialState = {}, { onStateCha
   let tradeData = tradeOff(shell.state);
 
   const profileSpec = () => ({
-    title: `Brightness across the sphere, through the side the light is on (${sigmaText(shell.state)})`,
+    title: `Brightness across the sphere, through the side the light is on (${sigmaText(shell.state.sigma)})`,
     xLabel: 'Diameter position (radii, + = light side)', yLabel: 'Lo / c_light',
     x: { min: -1, max: 1 }, y: null, series: series(), data: [PROFILE_XS, ...profileData], filename: 'diffuse-profile', height: 260,
   });
   const sweepSpec = () => {
     const tv = shell.state.viewTheta;
     return {
-      title: `Radiance of a flat patch seen from θv = ${tv}°, the light sweeping through the plane of n and v (${sigmaText(shell.state)})`,
+      title: `Radiance of a flat patch seen from θv = ${tv}°, the light sweeping through the plane of n and v (${sigmaText(shell.state.sigma)})`,
       xLabel: 'Light angle θl (degrees, + = viewer’s side)', yLabel: 'Lo / c_light',
       x: { min: -90, max: 90 }, y: null, xValues: degValues, series: series(), data: [SWEEP_XS, ...sweepData],
       bands: [
@@ -138,7 +138,7 @@ export function createDiffuseExplorer(container, initialState = {}, { onStateCha
         ];
       },
     })));
-    shell.describe(`Spheres with a diffuse term only (c_diff ${s.cdiff}, F0 ${s.f0}, ${sigmaText(s)}), light ${s.lightTheta}° from the view: ${s.models.map((k) => MODELS[k].name).join(', ')}.`, spheres.canvas);
+    shell.describe(`Spheres with a diffuse term only (c_diff ${s.cdiff}, F0 ${s.f0}, ${sigmaText(s.sigma)}), light ${s.lightTheta}° from the view: ${s.models.map((k) => MODELS[k].name).join(', ')}.`, spheres.canvas);
   };
   renderTable();
   renderSpheres();
@@ -180,4 +180,4 @@ export function createDiffuseExplorer(container, initialState = {}, { onStateCha
   };
 }
 
-export const widget = { name: 'diffuse-explorer', schema, create: createDiffuseExplorer };
+export const widget = { name: 'diffuse-explorer', schema, create: createDiffuseExplorer, terms: TERMS_USED };

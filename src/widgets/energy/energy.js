@@ -69,7 +69,8 @@ export function createEnergy(container, initialState = {}, { onStateChange } = {
   const spheres = createSphereGrid(shell.view, { label: 'Spheres in a white furnace', background: '#ffffff' });
   const table = document.createElement('div');
   shell.view.append(table);
-  const metalView = createMetalView(shell.view);
+  const metalNow = () => metalView.update(shell.state.metal, shell.state.metalAlpha);
+  const metalView = createMetalView(shell.view, () => describe(metalNow())); // again when its walk arrives
   const dfg = createDfgTexture(); // GGX, height-correlated Smith: scale + bias is E
   let lossTable = null; // the albedo-loss table, made when a compensation is first chosen
   let data = sweep(shell.state);
@@ -86,6 +87,15 @@ export function createEnergy(container, initialState = {}, { onStateChange } = {
   const ePlot = createPlot(plots, eSpec());
   const lossPlot = createPlot(plots, lossSpec());
 
+  /** The text for screen readers. */
+  const describe = (metal) => {
+    const comp = shell.state.compensation;
+    const compensated = comp === 'none' ? '' : ` With ${schema.compensation.options[comp]} every sphere reflects all of it and vanishes.`;
+    shell.describe('Spheres in a uniform white environment (F = 1); a sphere that loses no energy vanishes into it.' + compensated + ' ' +
+      `${data.map((d) => `α ${d.alpha}: albedo ${d.atNormal.toFixed(3)} head-on, ${d.avg.toFixed(3)} on average, ${((1 - d.avg) * 100).toFixed(1)}% lost`).join('; ') || 'No roughness chosen'}. ` +
+      `${metal.metal.name} at α ${metal.alpha} head-on: single scattering ${metal.curves.none[0].map((x) => x.toFixed(2)).join(', ')}, ` +
+      `random walk ${metal.walk ? metal.walk[0].albedo.map((x) => x.toFixed(2)).join(', ') : 'still running'} (R, G, B).`, spheres.canvas);
+  };
   const render = () => {
     table.innerHTML = '<table class="data-table compact"><caption>Albedo with F = 1 (GGX, height-correlated Smith)</caption>' +
       '<thead><tr><th>α</th><th>E at normal incidence</th><th>E averaged over the hemisphere</th><th>energy lost on average</th></tr></thead><tbody>' +
@@ -104,12 +114,7 @@ export function createEnergy(container, initialState = {}, { onStateChange } = {
         return [...rows, [`with ${schema.compensation.options[comp]}`, specularAlbedoFromTable(albedoTableOnce(), a.nv, d.alpha, 1, comp).toFixed(4)]];
       },
     })));
-    const metal = metalView.update(shell.state.metal, shell.state.metalAlpha);
-    const compensated = comp === 'none' ? '' : ` With ${schema.compensation.options[comp]} every sphere reflects all of it and vanishes.`;
-    shell.describe('Spheres in a uniform white environment (F = 1); a sphere that loses no energy vanishes into it.' + compensated + ' ' +
-      `${data.map((d) => `α ${d.alpha}: albedo ${d.atNormal.toFixed(3)} head-on, ${d.avg.toFixed(3)} on average, ${((1 - d.avg) * 100).toFixed(1)}% lost`).join('; ') || 'No roughness chosen'}. ` +
-      `${metal.metal.name} at α ${metal.alpha} head-on: single scattering ${metal.curves.none[0].map((x) => x.toFixed(2)).join(', ')}, ` +
-      `random walk ${metal.walk[0].albedo.map((x) => x.toFixed(2)).join(', ')} (R, G, B).`, spheres.canvas);
+    describe(metalNow());
   };
   render();
 
@@ -139,4 +144,4 @@ export function createEnergy(container, initialState = {}, { onStateChange } = {
   };
 }
 
-export const widget = { name: 'energy', schema, create: createEnergy };
+export const widget = { name: 'energy', schema, create: createEnergy, terms: TERMS_USED };

@@ -7,7 +7,7 @@ import { rgbToHex } from '../../core/palettes.js';
 import { albedoTableOnce } from '../../core/albedo-table-texture.js';
 import { linearToSrgb } from '../../math/color.js';
 import { materialByKey } from '../../math/materials.js';
-import { WALK_DEGREES, WALK_PATHS, albedoCurves, saturation, walkPoints } from './compensation.js';
+import { WALK_DEGREES, WALK_PATHS, albedoCurves, saturation } from './compensation.js';
 
 const CHANNELS = [['R', '#c0392b'], ['G', '#27ae60'], ['B', '#2c6fbb']];
 const MODELS = [
@@ -15,11 +15,29 @@ const MODELS = [
 ];
 const DEGREES = [...new Set([...Array.from({ length: 45 }, (_, i) => 2 * i), ...WALK_DEGREES])].sort((a, b) => a - b);
 
-function model(metalKey, alpha) {
-  const metal = materialByKey(metalKey);
-  const curves = albedoCurves(albedoTableOnce(), alpha, metal.linear, DEGREES);
-  const walk = walkPoints(alpha, metal.linear);
-  return { metal, alpha, curves, walk };
+/**
+ * The walk per (metal, alpha), run in a module worker and cached; `get` gives the points or null and asks for
+ * them once, `onResult(key)` says when they arrived.
+ */
+function createWalkCache(onResult) {
+  const done = new Map();
+  const asked = new Set();
+  let worker = null;
+  return {
+    get(metal, alpha) {
+      const key = `${metal.key}|${alpha}`;
+      if (done.has(key) || asked.has(key)) return done.get(key) ?? null;
+      asked.add(key);
+      worker ??= new Worker(new URL('./walk-worker.js', import.meta.url), { type: 'module' });
+      worker.onmessage = ({ data }) => {
+        done.set(data.id, data.walk);
+        onResult(data.id);
+      };
+      worker.postMessage({ id: key, alpha, f0: metal.linear });
+      return null;
+    },
+    dispose: () => worker?.terminate(),
+  };
 }
 
 function plotSpec({ metal, alpha, curves, walk }) {
@@ -33,7 +51,7 @@ function plotSpec({ metal, alpha, curves, walk }) {
   }
   CHANNELS.forEach(([ch, stroke], c) => {
     series.push({ label: `${ch}, random walk`, stroke, width: 0, points: true });
-    data.push(DEGREES.map((deg) => walk.find((p) => p.deg === deg)?.albedo[c] ?? null));
+    data.push(DEGREES.map((deg) => walk?.find((p) => p.deg === deg)?.albedo[c] ?? null));
   });
   return {
     title: `${metal.name} (linear F0 ${metal.linear.join(', ')}) at α = ${alpha}: albedo per channel, all bounces`,
@@ -43,33 +61,53 @@ function plotSpec({ metal, alpha, curves, walk }) {
 }
 
 function swatchTable({ metal, alpha, curves, walk }) {
-  const walkRow = [`random walk (${WALK_PATHS / 1000}k paths)`, walk[0].albedo];
+  const walkRow = [`random walk (${WALK_PATHS / 1000}k paths${walk ? '' : ', running'})`, walk?.[0].albedo];
   const rows = [...MODELS.map(([key, name]) => [name, curves[key][0]]), walkRow];
   const swatch = (rgb) => `<span class="swatch" style="background:${rgbToHex(rgb.map(linearToSrgb))}"></span>`;
+  const row = ([name, rgb]) => (rgb
+    ? `<tr><td>${name}</td><td>${swatch(rgb)}</td><td>${rgb.map((x) => x.toFixed(3)).join(', ')}</td>` +
+      `<td>${saturation(rgb).toFixed(3)}</td></tr>`
+    : `<tr class="walk-pending"><td>${name}</td><td></td><td>…</td><td>…</td></tr>`);
   return `<table class="data-table compact"><caption>${metal.name} at α = ${alpha}, seen head-on: the colour each ` +
     'model gives (linear albedo, shown in sRGB)</caption><thead><tr><th>model</th><th>colour</th>' +
     '<th>albedo R, G, B</th><th>saturation (1 − min/max)</th></tr></thead><tbody>' +
-    rows.map(([name, rgb]) => `<tr><td>${name}</td><td>${swatch(rgb)}</td><td>${rgb.map((x) => x.toFixed(3)).join(', ')}</td>` +
-      `<td>${saturation(rgb).toFixed(3)}</td></tr>`).join('') + '</tbody></table>';
+    rows.map(row).join('') + '</tbody></table>';
 }
 
-export function createMetalView(container) {
+/**
+ * The plot and swatches. Curves are drawn at once; the walk's points when the worker sends them (the newest
+ * (metal, alpha) only: a result for an older choice is cached, never drawn over a newer one). `onWalk()` is
+ * called when the shown choice gets its points.
+ */
+export function createMetalView(container, onWalk = () => {}) {
   const holder = document.createElement('div');
   const swatches = document.createElement('div');
   container.append(holder, swatches);
   let plot = null;
   let last = null;
+  const draw = () => {
+    if (plot) plot.setData(plotSpec(last));
+    else plot = createPlot(holder, plotSpec(last));
+    swatches.innerHTML = swatchTable(last);
+  };
+  const walks = createWalkCache((key) => {
+    if (!last || key !== `${last.metal.key}|${last.alpha}`) return;
+    last = { ...last, walk: walks.get(last.metal, last.alpha) };
+    draw();
+    onWalk();
+  });
   return {
-    /** Recomputes (the walk takes a fraction of a second) when the metal or its roughness changed. */
+    /** The shown { metal, alpha, curves, walk } (walk null until it arrives), redrawn when the choice changed. */
     update(metalKey, alpha) {
       if (last && last.metal.key === metalKey && last.alpha === alpha) return last;
-      last = model(metalKey, alpha);
-      if (plot) plot.setData(plotSpec(last));
-      else plot = createPlot(holder, plotSpec(last));
-      swatches.innerHTML = swatchTable(last);
+      const metal = materialByKey(metalKey);
+      const curves = albedoCurves(albedoTableOnce(), alpha, metal.linear, DEGREES);
+      last = { metal, alpha, curves, walk: walks.get(metal, alpha) };
+      draw();
       return last;
     },
     dispose() {
+      walks.dispose();
       plot?.dispose();
       holder.remove();
       swatches.remove();

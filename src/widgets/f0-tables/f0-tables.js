@@ -127,4 +127,4 @@ export function createF0Tables(container, initialState = {}, { onStateChange, on
   };
 }
 
-export const widget = { name: 'f0-tables', schema, create: createF0Tables };
+export const widget = { name: 'f0-tables', schema, create: createF0Tables, terms: TERMS_USED };

@@ -21,7 +21,8 @@ export const schema = {
     options: CONDUCTOR_MODELS,
     default: 'f0-tint',
     label: 'Metal n, k',
-    hint: 'Talk F0 + edge tint: Gulbrandsen 2014’s fitted n, k (a reparametrisation that reproduces the table, not optical constants). Measured: published optical constants at 650/550/450 nm.',
+    hint: 'Talk F0 + edge tint: Gulbrandsen 2014’s fitted n, k (a reparametrisation that reproduces the table, not ' +
+      'optical constants). Measured: published optical constants at 650/550/450 nm.',
   },
   schlick: { type: 'bool', default: true, label: 'Show Schlick' },
   zones: { type: 'bool', default: true, label: 'Shade zones' },
@@ -164,4 +165,4 @@ export function createFresnelCurves(container, initialState = {}, { onStateChang
   };
 }
 
-export const widget = { name: 'fresnel-curves', schema, create: createFresnelCurves };
+export const widget = { name: 'fresnel-curves', schema, create: createFresnelCurves, terms: TERMS_USED };

@@ -359,4 +359,4 @@ export function createFresnelZones(container, initialState = {}, { onStateChange
   };
 }
 
-export const widget = { name: 'fresnel-zones', schema, create: createFresnelZones };
+export const widget = { name: 'fresnel-zones', schema, create: createFresnelZones, terms: TERMS_USED };

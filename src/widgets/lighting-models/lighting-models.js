@@ -56,12 +56,17 @@ const ABOUT =
   '256 × 128 map (1.4° texels) resolves it. A real-sized sun would make the punctual light nearly exact except on ' +
   'near-mirrors, and the map would smear it over a whole texel.';
 
+const TERMS_USED = [
+  'dfgTableUv', 'sphereLightRepresentativeDir', 'sphereLightNormalization', 'sphereLightCLight', 'sampleCone',
+];
 const TERMS = { F: 'schlick', D: 'ggx', V: 'smithGGXCorrelated', diffuse: 'lambert', layers: 'both' };
 const METHODS = { env: 'split-sum', area: 'representative', samples: 1 };
 const fmt = (x, digits = 3) => (Number.isFinite(x) ? x.toPrecision(digits) : '—');
 
 export function createLightingModels(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'lighting-models', schema, initialState, about: ABOUT, terms: ['dfgSplitSum', 'sphereLightRepresentativeDir', 'sphereLightNormalization', 'sphereLightCLight', 'sampleCone'] });
+  const shell = createWidgetShell(container, {
+    name: 'lighting-models', schema, initialState, about: ABOUT, terms: TERMS_USED,
+  });
   const table = document.createElement('div');
   table.className = 'lab-readout';
   let results = [];
@@ -128,4 +133,4 @@ export function createLightingModels(container, initialState = {}, { onStateChan
   };
 }
 
-export const widget = { name: 'lighting-models', schema, create: createLightingModels };
+export const widget = { name: 'lighting-models', schema, create: createLightingModels, terms: TERMS_USED };

@@ -8,7 +8,8 @@ import { REFERENCE_BATCH } from '../../core/lab/lab-renderer.js';
 import { ENVIRONMENTS, MAX_FILE_BYTES, parseEnvironmentFile } from '../../core/lab/environments.js';
 import { MATERIAL_FIELDS, labScene, sphereLight } from '../../core/lab/lab-scene.js';
 import { createLabView } from '../../core/lab/lab-view.js';
-import { LAB_TERMS, approximationNotes } from '../../core/lab/lab-approximations.js';
+import { LAB_TERMS, createNotesList } from '../../core/lab/lab-approximations.js';
+import { SIGMA_HINT } from '../../core/sigma-range.js';
 import { attachEnvironmentDrop } from './environment-drop.js';
 import { createMeasuredMaterial } from './measured-material.js';
 import { MERL_TEXTURE_BYTES } from '../measured-brdf/texture-size.js';
@@ -21,13 +22,20 @@ export const schema = {
   layers: { group: 'BRDF terms', type: 'enum', options: { both: 'Specular + diffuse', specular: 'Specular only', diffuse: 'Diffuse only' }, default: 'both', label: 'Layers' },
   fresnel: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.fresnel, default: 'schlick', label: 'F' },
   ndf: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.ndf, default: 'ggx', label: 'D' },
-  visibility: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.visibility, default: 'smithGGXCorrelated', label: 'V' },
+  visibility: {
+    group: 'BRDF terms', type: 'enum', options: LAB_TERMS.visibility, default: 'smithGGXCorrelated', label: 'V',
+  },
   compensation: {
     group: 'BRDF terms', type: 'enum', options: { none: 'None', kullaConty: 'Kulla–Conty 2017', turquin: 'Turquin 2019' },
     default: 'none', label: 'Multiple scattering',
   },
-  diffuseModel: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.diffuse, default: 'lambert', label: 'Diffuse term' },
-  sigma: { group: 'BRDF terms', type: 'number', min: 0, max: 60, step: 1, default: 20, label: 'Oren-Nayar σ', unit: '°' },
+  diffuseModel: {
+    group: 'BRDF terms', type: 'enum', options: LAB_TERMS.diffuse, default: 'lambert', label: 'Diffuse term',
+  },
+  sigma: {
+    group: 'BRDF terms', type: 'number', min: 0, max: 60, step: 1, default: 20, label: 'Oren-Nayar σ', unit: '°',
+    hint: SIGMA_HINT,
+  },
   brdfSource: {
     group: 'BRDF terms', type: 'enum', default: 'model', label: 'BRDF',
     options: { model: 'The model (terms above)', measured: 'Measured (a dropped MERL file)' },
@@ -69,7 +77,10 @@ const ABOUT =
   `a 3-D texture of ${(MERL_TEXTURE_BYTES / 1e6).toFixed(2)} MB on the GPU, and only the reference and importance ` +
   'sampling have a form for it.';
 
-const TERMS_USED = ['microfacetBRDF', 'dfgSplitSum', 'sampleGGXNormal', 'sampleBeckmannNormal', 'sampleCosine', 'sampleCone', 'sphereLightRepresentativeDir', 'sphereLightNormalization', 'equirectUv', 'diffuseOrenNayar'];
+const TERMS_USED = [
+  'microfacetBRDF', 'dfgTableUv', 'sampleGGXNormal', 'sampleBeckmannNormal', 'sampleCosine', 'sampleCone',
+  'sphereLightRepresentativeDir', 'sphereLightNormalization', 'equirectUv', 'diffuseOrenNayar',
+];
 
 /** A lab scene with a measured table for its BRDF: no terms; the GGX fit's α (the state's until it is in) to
  * sample by. */
@@ -94,6 +105,21 @@ export function lightsOf(state) {
 }
 
 const fmt = (x, digits = 4) => (x === null || x === undefined ? '—' : x.toPrecision(digits));
+
+/** The lights on and the method each is shaded by, in words (the approximation's caption). */
+function methodText(st, lights) {
+  const parts = [];
+  if (lights.punctual) parts.push('punctual (exact)');
+  if (lights.sphere) {
+    parts.push(`sphere light by ${st.areaMethod === 'centre' ? 'its centre' : 'representative point'}`);
+  }
+  if (lights.env) {
+    const samples = st.envMethod === 'importance' ? `${st.samples} importance samples` : st.envMethod;
+    parts.push(`${ENVIRONMENTS[st.environment].split(' (')[0].toLowerCase()} by ${samples}`);
+  }
+  if (lights.ambient) parts.push('ambient');
+  return parts.join(' + ') || 'no light on';
+}
 
 export function createMaterialLab(container, initialState = {}, { onStateChange } = {}) {
   const shell = createWidgetShell(container, { name: 'material-lab', schema, initialState, about: ABOUT, terms: TERMS_USED });
@@ -134,21 +160,12 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
     }
     stats = { ...lab.error(), ms, timingRuns, samples: lab.batches * REFERENCE_BATCH, target: Number(st.refSamples), samplesN: st.samples, method: st.envMethod };
     showReadout(st, lights);
-    showNotes(scene);
+    notes.show(scene);
     return [
       { image: 'approx', caption: `Approximation: ${methodText(st, lights)}` },
       { image: 'reference', caption: `Reference: Monte Carlo, ${stats.samples} of ${stats.target} samples / pixel` },
       { image: 'error', caption: `Error |approx − reference|, 0 to ${st.errorScale}` },
     ];
-  };
-
-  const methodText = (st, lights) => {
-    const parts = [];
-    if (lights.punctual) parts.push('punctual (exact)');
-    if (lights.sphere) parts.push(`sphere light by ${st.areaMethod === 'centre' ? 'its centre' : 'representative point'}`);
-    if (lights.env) parts.push(`${ENVIRONMENTS[st.environment].split(' (')[0].toLowerCase()} by ${st.envMethod === 'importance' ? `${st.samples} importance samples` : st.envMethod}`);
-    if (lights.ambient) parts.push('ambient');
-    return parts.join(' + ') || 'no light on';
   };
 
   const showReadout = (st, lights) => {
@@ -168,15 +185,7 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
   };
 
   // under the images: how each light's approximation treats the chosen terms (lab-approximations.js)
-  const notes = document.createElement('ul');
-  notes.className = 'lab-notes';
-  let notesText = '';
-  const showNotes = (scene) => {
-    const lines = approximationNotes(scene);
-    if (lines.join('\n') === notesText) return;
-    notesText = lines.join('\n');
-    notes.replaceChildren(...lines.map((line) => Object.assign(document.createElement('li'), { textContent: line })));
-  };
+  const notes = createNotesList();
 
   const onReset = () => {
     [approxKey, refKey] = ['', ''];
@@ -188,7 +197,7 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
   });
   const view = createLabView(shell.view, { label: 'Material lab', resolution: 192, frame, onReset });
   view.setAspect(3);
-  shell.view.append(readout, notes);
+  shell.view.append(readout, notes.element);
 
   const onChanged = (changed) => {
     if (changed.includes('brdfSource') && shell.state.brdfSource === 'measured' && !measured.current) {
@@ -259,4 +268,4 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
   };
 }
 
-export const widget = { name: 'material-lab', schema, create: createMaterialLab };
+export const widget = { name: 'material-lab', schema, create: createMaterialLab, terms: TERMS_USED };

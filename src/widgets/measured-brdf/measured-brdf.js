@@ -7,7 +7,7 @@ import { createPlot } from '../../core/plot.js';
 import { seriesStyle } from '../../core/palettes.js';
 import { lightDirFromAngles } from '../../core/light-control.js';
 import { FIT_MODELS } from '../../measured/fit.js';
-import { measuredFromTable } from '../../measured/merl.js';
+import { MERL_BYTES, measuredFromTable } from '../../measured/merl.js';
 import { createHalfDiffImage } from '../brdf-lobe/half-diff-image.js';
 import { schema } from './schema.js';
 import {
@@ -56,6 +56,7 @@ const TERMS_USED = [
   'visibilitySmithGGXCorrelated',
   'visibilitySmithBeckmannSeparable',
   'visibilityCookTorrance',
+  'merlCoordinates',
 ];
 
 const logRange = (arrays) => {
@@ -341,12 +342,19 @@ export function createMeasuredBrdf(container, initialState = {}, { onStateChange
       (err) => err.message,
     );
   };
-  const loadFile = (file) =>
+  const loadFile = (file) => {
+    // refused by size before a byte is read: a 4 GB drop would otherwise be read whole and copied to the worker
+    if (file.size > MERL_BYTES) {
+      const [size, limit] = [file.size, MERL_BYTES].map((n) => n.toLocaleString('en'));
+      const why = `${size} bytes, more than a MERL file’s ${limit}`;
+      return void shell.notices.show(`${file.name}: ${why}. The BRDF shown before is kept.`);
+    }
     load(
       (c) => file.arrayBuffer().then((b) => c.parse(b)),
       { words: `${file.name} (a MERL file you loaded)`, name: file.name },
       (e) => `${file.name}: ${e.message} The BRDF shown before is kept.`,
     );
+  };
 
   const onChanged = (changed) => {
     if (changed.includes('example')) loadExample(shell.state.example);
@@ -379,4 +387,4 @@ export function createMeasuredBrdf(container, initialState = {}, { onStateChange
   };
 }
 
-export const widget = { name: 'measured-brdf', schema, create: createMeasuredBrdf };
+export const widget = { name: 'measured-brdf', schema, create: createMeasuredBrdf, terms: TERMS_USED };

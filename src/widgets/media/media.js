@@ -13,13 +13,16 @@ import { SERIES_DASHES, rgbToHex } from '../../core/palettes.js';
 import { linearToSrgb } from '../../math/color.js';
 import { WATER_K, WHOLE_MILK, transmittance, waterAbsorptionRgb } from '../../math/media.js';
 
-const MEDIA = {
+export const MEDIA = {
   water: { name: 'Clean water', sigmaA: waterAbsorptionRgb(), sigmaS: [0, 0, 0], source: WATER_K.source },
   red: { name: 'Red absorber (wine-like, illustrative)', sigmaA: [3, 60, 90], sigmaS: [0, 0, 0], source: 'illustrative values' },
   cloudy: { name: 'Cloudy water (illustrative)', sigmaA: waterAbsorptionRgb(), sigmaS: [25, 25, 25], source: 'water plus illustrative scattering' },
   // milk's σ′s stands in for σs with isotropic scattering (the similarity relation): the picture diffuses light as
   // milk does, but the straight-through light it implies is only an upper bound on milk's
-  milk: { name: 'Whole milk (reduced scattering σ′s)', sigmaA: WHOLE_MILK.sigmaA, sigmaS: WHOLE_MILK.sigmaSReduced, source: WHOLE_MILK.source, reduced: true },
+  milk: {
+    name: 'Whole milk (reduced scattering σ′s)', sigmaA: WHOLE_MILK.sigmaA, sigmaS: WHOLE_MILK.sigmaSReduced,
+    source: WHOLE_MILK.source, reduced: true,
+  },
 };
 
 export const schema = {
@@ -38,9 +41,11 @@ const ABOUT =
   'refines for a moment after each change.';
 
 const TERMS_USED = ['transmittance'];
-const MILK_CAVEAT = 'would pass unscattered if milk scattered evenly in all directions with its reduced coefficient σ′s ' +
-  '(the similarity relation, which the picture uses). Milk scatters forwards (g > 0), so its true σs = σ′s/(1 − g) ' +
-  'is larger and the light that really passes unscattered is less.';
+const MILK_CAVEAT = 'would pass unscattered if milk scattered evenly in all directions with its reduced ' +
+  'coefficient σ′s (the similarity relation, which the picture uses). Milk’s fat globules, about a wavelength ' +
+  'across or more, scatter mostly forwards (g > 0 by Lorenz–Mie theory, which Frisvad, Christensen & Jensen 2007 ' +
+  'apply to milk; Jensen et al. 2001 give σ′s only), so its true σs = σ′s/(1 − g) is larger and the light that ' +
+  'really passes unscattered is less.';
 // the talk's grid: absorption (more in blue: a red look) grows upwards, scattering to the right, so the
 // milk-like glass (high scattering, low absorption) sits at the lower right as on the talk's slide
 const GRID_ABSORB = [0, 1.5, 6].map((k) => [0.15 * k, 0.8 * k, 1.4 * k]);
@@ -210,4 +215,4 @@ export function createMedia(container, initialState = {}, { onStateChange } = {}
   };
 }
 
-export const widget = { name: 'media', schema, create: createMedia };
+export const widget = { name: 'media', schema, create: createMedia, terms: TERMS_USED };

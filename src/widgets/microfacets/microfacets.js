@@ -245,4 +245,4 @@ export function createMicrofacets(container, initialState = {}, { onStateChange 
   };
 }
 
-export const widget = { name: 'microfacets', schema, create: createMicrofacets };
+export const widget = { name: 'microfacets', schema, create: createMicrofacets, terms: TERMS_USED };

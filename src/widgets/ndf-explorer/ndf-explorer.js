@@ -176,4 +176,4 @@ export function createNdfExplorer(container, initialState = {}, { onStateChange 
   };
 }
 
-export const widget = { name: 'ndf-explorer', schema, create: createNdfExplorer };
+export const widget = { name: 'ndf-explorer', schema, create: createNdfExplorer, terms: TERMS_USED };

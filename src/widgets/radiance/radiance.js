@@ -25,6 +25,7 @@ const ABOUT =
   'them channel by channel (the ⊗ of the reflectance equation). Under white light the shortcut is exact by ' +
   'construction; under a peaked spectrum, such as a sodium lamp, it can be far off.';
 
+const TERMS_USED = []; // JS only (src/math/radiometry.js): nothing here runs on the GPU
 const FIELD_DEG = 60; // the drawn eye's field of view: the lamp spans it at 0.1 m and about a pixel at 30 m
 const DISTANCES = Float64Array.from({ length: 200 }, (_, i) => 0.1 * 300 ** (i / 199));
 const WAVELENGTHS = Float64Array.from({ length: 401 }, (_, i) => 380 + i);
@@ -122,7 +123,9 @@ function rgbTableHtml(c) {
 }
 
 export function createRadiance(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'radiance', schema, initialState, about: ABOUT });
+  const shell = createWidgetShell(container, {
+    name: 'radiance', schema, initialState, about: ABOUT, terms: TERMS_USED,
+  });
   const canvas = document.createElement('canvas');
   canvas.className = 'radiance-lamp';
   const lampTable = document.createElement('div');
@@ -165,4 +168,4 @@ export function createRadiance(container, initialState = {}, { onStateChange } =
   };
 }
 
-export const widget = { name: 'radiance', schema, create: createRadiance };
+export const widget = { name: 'radiance', schema, create: createRadiance, terms: TERMS_USED };

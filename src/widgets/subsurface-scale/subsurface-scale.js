@@ -184,4 +184,4 @@ export function createSubsurfaceScale(container, initialState = {}, { onStateCha
   };
 }
 
-export const widget = { name: 'subsurface-scale', schema, create: createSubsurfaceScale };
+export const widget = { name: 'subsurface-scale', schema, create: createSubsurfaceScale, terms: TERMS_USED };

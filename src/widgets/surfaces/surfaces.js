@@ -145,4 +145,4 @@ export function createSurfaces(container, initialState = {}, { onStateChange } =
   };
 }
 
-export const widget = { name: 'surfaces', schema, create: createSurfaces };
+export const widget = { name: 'surfaces', schema, create: createSurfaces, terms: TERMS_USED };

@@ -143,4 +143,4 @@ export function createVisibilityExplorer(container, initialState = {}, { onState
   };
 }
 
-export const widget = { name: 'visibility-explorer', schema, create: createVisibilityExplorer };
+export const widget = { name: 'visibility-explorer', schema, create: createVisibilityExplorer, terms: TERMS_USED };

@@ -1,0 +1,12 @@
+// Said under the image-based lighting figures (performance page and README) while they predate the split sum's
+// current DFG tables: the float64 quadrature, one table per (D, V) pair (issue 11), in place of a 32² Monte Carlo one.
+export const DFG_QUADRATURE_SINCE = '2026-11-30';
+
+/** The sentence for IBL rows measured on `date` (ISO), or '' once they were measured with the current tables. */
+export function iblStaleNote(date) {
+  const day = date.slice(0, 10);
+  if (day >= DFG_QUADRATURE_SINCE) return '';
+  return `Measured ${day}, before the split sum's DFG table became the float64 quadrature (one table per D and V, ` +
+    '72², shipped precomputed; it was a 32² Monte Carlo table): the split-sum rows may differ now. Rerun ' +
+    '`npm run bench` to update.';
+}

@@ -1,0 +1,91 @@
+// Numbers quoted to students, read out of the sentences that quote them (so a changed sentence fails here) and
+// recomputed from src/math and the widgets' own data: Beer–Lambert (transmittance), the microfacet BRDF with the
+// brdf-lobe widget's terms, Rayleigh scattering from Hansen & Travis's (1974) optical depth, and a float64
+// quadrature of the Fresnel-zone shares on a sphere.
+import { readFileSync } from 'node:fs';
+import { describe, expect, it } from 'vitest';
+import { transmittance } from '../../src/math/media.js';
+import { microfacetBRDF } from '../../src/math/brdf.js';
+import { TOUR_STEPS } from '../../src/tour/steps.js';
+import { MEDIA } from '../../src/widgets/media/media.js';
+import { schema as LOBE } from '../../src/widgets/brdf-lobe/brdf-lobe.js';
+import { weightedSphereShares } from './zone-shares.js';
+
+const DEG = Math.PI / 180;
+const text = (file) => readFileSync(new URL(`../../${file}`, import.meta.url), 'utf8').replace(/\s+/g, ' ');
+const stepText = (id) => TOUR_STEPS.find((s) => s.id === id);
+/** The numbers the first match of `re` captures; fails if the sentence no longer reads that way. */
+function quoted(source, re) {
+  const m = source.match(re);
+  expect(m, `${re} in the text`).not.toBeNull();
+  return m.slice(1).map(Number);
+}
+/** x printed with `digits` decimals reads `printed`. */
+const reads = (x, printed, digits = 0) => expect(x.toFixed(digits)).toBe(printed.toFixed(digits));
+
+describe('tour, media-red-absorber: the wine-like absorber (media widget σa) by Beer–Lambert', () => {
+  it('1 cm leaves 97/55/41% of red/green/blue and 5 cm 86/5/1%', () => {
+    const step = stepText('media-red-absorber');
+    const [r1, g1, b1] = quoted(step.text, /1 cm leaves (\d+)% of red, (\d+)% of green and (\d+)% of blue/);
+    const [r5, g5, b5] = quoted(step.text, /the 5 cm shown leave (\d+)%, (\d+)% and (\d+)%/);
+    const { sigmaA } = MEDIA[step.state.medium];
+    [r1, g1, b1].forEach((p, c) => reads(100 * transmittance(sigmaA[c], 0.01), p));
+    [r5, g5, b5].forEach((p, c) => reads(100 * transmittance(sigmaA[c], 0.05), p));
+    expect(10 ** step.state.distance).toBeCloseTo(0.05, 2); // "the 5 cm shown": the slider is log10 metres
+  });
+});
+
+describe('tour, brdf-intensity: the brdf-lobe widget’s BRDF (GGX, height-correlated Smith, Schlick)', () => {
+  const step = stepText('brdf-intensity');
+  const params = (alpha) => ({ F: LOBE.F.default, D: LOBE.D.default, V: LOBE.V.default, f0: LOBE.f0.default, alpha });
+  const l = [-Math.sin(step.state.lightTheta * DEG), 0, Math.cos(step.state.lightTheta * DEG)];
+  const view = (deg) => [Math.sin(deg * DEG), 0, Math.cos(deg * DEG)]; // +: the mirror side
+  const f = (deg, alpha) => microfacetBRDF(l, view(deg), params(alpha));
+  const argmax = (g) => {
+    let best = 0;
+    for (let deg = 0; deg <= 89.9; deg += 0.1) if (g(deg) > g(best)) best = deg;
+    return best;
+  };
+  it('is 1.00/sr at θv 89°, 0.22 at the mirror; × n·v it peaks near 70°; at α 0.1 near the mirror', () => {
+    const [atHorizon, horizonDeg] = quoted(step.text, /(\d\.\d\d)\/sr at θv = (\d+)°/);
+    const [atMirror] = quoted(step.text, /against (\d\.\d\d) in the mirror direction/);
+    const [nearDeg] = quoted(step.text, /most near (\d+)° here/);
+    const alpha = step.state.alpha;
+    reads(f(horizonDeg, alpha), atHorizon, 2);
+    reads(f(step.state.lightTheta, alpha), atMirror, 2);
+    expect(argmax((deg) => f(deg, alpha))).toBeGreaterThan(88); // "largest at the horizon"
+    expect(Math.abs(argmax((deg) => f(deg, alpha) * Math.cos(deg * DEG)) - nearDeg)).toBeLessThan(1); // 70.5°
+    expect(step.text).toMatch(/α = 0\.1\) it peaks near the ?\s*mirror/);
+    expect(Math.abs(argmax((deg) => f(deg, 0.1)) - step.state.lightTheta)).toBeLessThan(3); // 62.5°
+  });
+});
+
+describe('media.html: Rayleigh scattering of clean air', () => {
+  it('τ 0.097 (Hansen & Travis 1974) over 8 km: 1.2e-5 /m; 10 km scatter 11% of green, 24% of blue (1/λ⁴)', () => {
+    const page = text('media.html');
+    const [perMetre] = quoted(page, /about ([\d.]+) × 10⁻⁵ of green \(550 nm\) light per metre/);
+    const [tau] = quoted(page, /optical depth of ([\d.]+), from Hansen &amp; Travis 1974/);
+    const [heightKm] = quoted(page, /scale height of about (\d+) km/);
+    const [green] = quoted(page, /about (\d+)% of green light and, since Rayleigh scattering grows as 1\/λ⁴/);
+    const [blue, blueNm] = quoted(page, /grows as 1\/λ⁴, about (\d+)% of blue \((\d+) nm\)/);
+    const sigmaGreen = tau / (heightKm * 1000);
+    reads(sigmaGreen * 1e5, perMetre, 1);
+    reads(100 * (1 - transmittance(sigmaGreen, 10e3)), green);
+    reads(100 * (1 - transmittance(sigmaGreen * (550 / blueNm) ** 4, 10e3)), blue);
+    expect(page).toMatch(/Over ten metres that is about one part in ten thousand/);
+    expect(1 - transmittance(sigmaGreen, 10)).toBeCloseTo(1.2e-4, 5);
+  });
+});
+
+describe('fresnel.html: red share of the BRDF-weighted l·h zones on a sphere (float64 quadrature)', () => {
+  it('1.4% at α 0.3 over the widget’s 64 lights, 1.5% with light from every direction, 4% at α 0.1', () => {
+    const page = text('fresnel.html');
+    const [red64] = quoted(page, /about ([\d.]+)% at the default GGX α = 0\.3/);
+    const [redAll] = quoted(page, /GGX α = 0\.3 \(([\d.]+)% with light from every direction/);
+    const [redSmooth] = quoted(page, /but (\d+)% at α = 0\.1/);
+    reads(100 * weightedSphereShares(0.3)[2], red64, 1);
+    reads(100 * weightedSphereShares(0.1)[2], redSmooth);
+    // every direction: 4096 lights (1024 give 1.55%, 4096 1.53%: the zone edges converge as 1/lights)
+    reads(100 * weightedSphereShares(0.3, 4096, 100, 48)[2], redAll, 1);
+  }, 120_000);
+});
