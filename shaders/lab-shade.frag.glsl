@@ -8,6 +8,8 @@
 // irradiance × Lambert stands in (src/core/lab/lab-approximations.js says so on the page). With
 // COMPENSATION_KULLA_CONTY or COMPENSATION_TURQUIN the specular lobe gets its multiple scattering back
 // (multiple-scattering.glsl; the tables are GGX with height-correlated Smith's), in the reference and the methods.
+// With MEASURED the BRDF is a measured table (measured.glsl, uMeasured), whole: its specular and diffuse are not
+// apart, so specularBRDF is the table and diffuseBRDF 0; uAlpha is then the GGX fit's, for sampling only.
 #include "brdf.glsl"
 #include "diffuse.glsl"
 #include "ndf-sampling.glsl"
@@ -15,6 +17,9 @@
 #include "env.glsl"
 #if defined(COMPENSATION_KULLA_CONTY) || defined(COMPENSATION_TURQUIN)
 #include "multiple-scattering.glsl"
+#endif
+#ifdef MEASURED
+#include "measured.glsl"
 #endif
 
 uniform vec2 uSize;
@@ -69,6 +74,9 @@ vec3 fresnelBounces() { return fresnelMultipleScatteringKullaConty(fresnelAverag
 
 // The specular lobe: single scattering, times Turquin's factor at v or plus Kulla & Conty's lobe.
 vec3 specularBRDF(vec3 l, vec3 v) {
+#ifdef MEASURED
+  return measuredBRDF(vec3(0.0, 0.0, 1.0), l, v);
+#endif
   vec3 f = microfacetBRDF(l, v, uAlpha, uF0);
 #if defined(COMPENSATION_TURQUIN)
   f *= energyCompensationTurquin(F0_BOUNCES, 1.0 - albedoLossTableGGX(v.z, uAlpha).x);
@@ -87,6 +95,9 @@ float cosPhiBetween(vec3 l, vec3 v) {
 // The chosen diffuse term per channel, the colour passed in: Oren-Nayar's inter-reflection term goes as c², so
 // it cannot be evaluated for c = 1 and scaled.
 vec3 diffuseBRDF(vec3 l, vec3 v) {
+#ifdef MEASURED
+  return vec3(0.0); // in the table
+#endif
   if (l.z <= 0.0 || v.z <= 0.0) return vec3(0.0);
   vec3 c = diffuseColor;
 #if defined(DIFFUSE_FRESNEL_WEIGHTED)
@@ -224,7 +235,26 @@ vec3 environmentLight(vec3 n, mat3 toWorld, vec3 v) {
 }
 #endif
 
-#ifdef ENV_IMPORTANCE
+#if defined(ENV_IMPORTANCE) && defined(MEASURED)
+// A table's f under the map: one direction from the fitted lobe and one by cosine per sample, each weighted by
+// the balance heuristic f (n·l) L / (pdf_lobe + pdf_cosine), as the table has no diffuse part to sample alone.
+vec3 balancedSample(vec3 l, vec3 v, mat3 toWorld) {
+  if (l.z <= 0.0) return vec3(0.0);
+  vec3 h = normalize(l + v);
+  float pdf = reflectedPdf(h, dot(v, h), uAlpha) + l.z / PI;
+  return specularBRDF(l, v) * l.z * envMap(toWorld * l, 0.0) / max(pdf, 1e-30);
+}
+
+vec3 environmentLight(vec3 n, mat3 toWorld, vec3 v) {
+  vec3 sum = vec3(0.0);
+  for (int i = 0; i < uSamples; i++) {
+    vec2 u = hammersley(i, uSamples); // the same pattern on every pixel, as a renderer would use it
+    vec3 m = sampleLobeNormal(u, uAlpha);
+    sum += balancedSample(2.0 * dot(v, m) * m - v, v, toWorld) + balancedSample(sampleCosine(u), v, toWorld);
+  }
+  return sum / float(uSamples);
+}
+#elif defined(ENV_IMPORTANCE)
 // The reflectance equation against the map as a renderer would sample it: l = reflect(v, m) with m from the
 // lobe (ndf-sampling.glsl), the diffuse by cosine sampling (pdf (n·l)/pi), n samples each, every term evaluated.
 vec3 environmentLight(vec3 n, mat3 toWorld, vec3 v) {

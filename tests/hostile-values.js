@@ -25,6 +25,14 @@ export const STRINGS = [...PROTOTYPE_NAMES, LONG, ...HTML, 'javascript:alert(1)'
 /** Lists with empty, repeated and inherited items, built around a real option `o`. */
 export const listTexts = (o) => [',', ',,', `${o},,${o}`, `${o},${o},${o}`, `${o},__proto__`, '__proto__,constructor', `,${o},`];
 export const listArrays = (o) => [[], [''], [o, o], [o, '', o], [o, '__proto__'], [[o]], [null], [{}], [o, 7]];
+/** Lists for a samples field: one short, one long, one with a bad item in the middle, one too large, one good. */
+function sampleLists(f, typed) {
+  const n = f.length;
+  const good = Array.from({ length: n }, (_, i) => f.min + ((f.max - f.min) * i) / n);
+  const bad = [good.with(n >> 1, 'NaN'), good.with(3, f.max * 2 + 1), good.with(2, '0x1')];
+  const lists = [good.slice(1), [...good, f.min], ...bad, good];
+  return typed ? [...lists, good.with(5, null), good.with(4, {})] : lists.map((l) => l.join(','));
+}
 export const ODD = [null, true, false, {}, [], { valueOf: 1 }, LONG];
 
 /** Candidate raw values for field `f` (`typed`: as postMessage would carry them, else as URL text). */
@@ -32,6 +40,7 @@ export function candidates(f, typed) {
   const option = f.options ? Object.keys(f.options)[0] : 'x';
   const own = typed ? [...NUMBERS, ...STRINGS, ...ODD] : [...NUMBER_TEXTS, ...STRINGS];
   if (f.type === 'set') return [...own, ...(typed ? listArrays(option) : listTexts(option))];
+  if (f.type === 'samples') return [...own, ...sampleLists(f, typed)];
   return own;
 }
 
@@ -69,6 +78,17 @@ export function isClean(f, raw) {
     }
     case 'color':
       return typeof raw === 'string' && /^#?[0-9a-f]{6}$/i.test(raw.trim());
+    case 'samples': {
+      // README: a comma list of exactly `length` plain decimals within the range, or the empty list
+      const items = typeof raw === 'string' ? (raw === '' ? [] : raw.split(',')) : Array.isArray(raw) ? raw : null;
+      const inRange = (v) => {
+        const x = typeof v === 'number' ? v : typeof v === 'string' && DECIMAL.test(v) ? Number(v) : NaN;
+        return Number.isFinite(x) && x >= f.min && x <= f.max;
+      };
+      return items !== null && (items.length === 0 || items.length === f.length) && items.every(inRange);
+    }
+    case 'text': // README: at most maxLength letters, digits, spaces and . _ - ( ) + ,
+      return typeof raw === 'string' && raw.length <= f.maxLength && /^[\p{L}\p{N} ._()+,-]*$/u.test(raw);
     default:
       return false;
   }
@@ -122,7 +142,10 @@ export function stateProblems(schema, state) {
         : f.type === 'enum' ? own(f, v)
           : f.type === 'bool' ? typeof v === 'boolean'
             : f.type === 'set' ? Array.isArray(v) && v.every((x) => own(f, x)) && new Set(v).size === v.length
-              : f.type === 'color' ? /^#[0-9a-f]{6}$/.test(v) : false;
+              : f.type === 'color' ? /^#[0-9a-f]{6}$/.test(v)
+                : f.type === 'samples' ? Array.isArray(v) && (v.length === 0 || v.length === f.length)
+                  && v.every((x) => typeof x === 'number' && x >= f.min && x <= f.max && !Object.is(x, -0))
+                  : f.type === 'text' ? isClean(f, v) : false;
     if (!ok) problems.push(`${key} = ${JSON.stringify(v)?.slice(0, 80)}`);
   }
   for (const key of Object.keys(state)) if (!Object.hasOwn(schema, key)) problems.push(`extra key ${key}`);

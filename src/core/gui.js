@@ -24,6 +24,7 @@ export function createStateGui(container, { schema, state, onChange, title = 'Co
 
   for (const key of keys) {
     const f = schema[key];
+    if (f.type === 'samples' || f.type === 'text') continue; // data handed over by another widget, not a control
     const parent = parentOf(f);
     if (f.type === 'set') {
       const folder = parent.addFolder(labelOf(key, f));

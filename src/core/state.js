@@ -10,6 +10,9 @@
 //              { type: 'bool', default, label }
 //              { type: 'set', options: { value: label }, default: [values], label }  (URL: comma list)
 //              { type: 'color', default: '#rrggbb', label }  (sRGB hex; the URL may drop the '#')
+//              { type: 'samples', length, min, max, default: [], label }  (URL: comma list of `length` plain
+//                decimals in min…max, or none; a list of any other length or with any bad item is refused whole)
+//              { type: 'text', maxLength, default: '', label }  (letters, digits, spaces and . _ - ( ) + , only)
 
 export function defaultState(schema) {
   return Object.fromEntries(
@@ -36,11 +39,24 @@ export const isOption = (options, value) => typeof value === 'string' && Object.
 
 // A decimal number as a URL carries it: 12, -0.5, .5, 1e-3. Not hex, binary, Infinity or other digits.
 const DECIMAL = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;
+// What a text field may hold: a name to show (a file name), never markup, a URL scheme or control characters.
+const TEXT = /^[\p{L}\p{N} ._()+,-]*$/u;
 
 /** A number as given, or a plain-decimal string's value; NaN for anything else. */
 export function parseNumber(raw) {
   if (typeof raw === 'number') return raw;
   return typeof raw === 'string' && DECIMAL.test(raw.trim()) ? Number(raw.trim()) : NaN;
+}
+
+/** A list of exactly f.length plain decimals in f.min…f.max (or none at all), else refused whole. */
+function coerceSamples(f, raw, bad) {
+  const items = Array.isArray(raw) ? raw : typeof raw === 'string' ? (raw === '' ? [] : raw.split(',')) : null;
+  if (!items) return bad(`${fmt(raw)} is not a list`);
+  if (items.length !== 0 && items.length !== f.length) return bad(`${items.length} values, not ${f.length}`);
+  const values = items.map((v) => (typeof v === 'number' || typeof v === 'string' ? parseNumber(v) : NaN));
+  const at = values.findIndex((x) => !(x >= f.min && x <= f.max)); // NaN fails too
+  if (at >= 0) return bad(`value ${at + 1}, ${fmt(items[at])}, is not a decimal in ${f.min}…${f.max}`);
+  return { value: values.map((x) => x || 0) };
 }
 
 function coerceField(key, f, raw, fallback) {
@@ -81,6 +97,12 @@ function coerceField(key, f, raw, fallback) {
       const hex = typeof raw === 'string' ? raw.trim().replace(/^#?/, '#').toLowerCase() : '';
       return /^#[0-9a-f]{6}$/.test(hex) ? { value: hex } : bad(`${fmt(raw)} is not a colour like #rrggbb`);
     }
+    case 'samples':
+      return coerceSamples(f, raw, bad);
+    case 'text':
+      if (typeof raw !== 'string' || raw.length > f.maxLength || !TEXT.test(raw))
+        return bad(`${fmt(raw)} is not a name of at most ${f.maxLength} letters, digits, spaces or . _ - ( ) + ,`);
+      return { value: raw };
     default:
       throw new Error(`state: unknown field type ${f.type}`);
   }

@@ -1,7 +1,7 @@
 // Checks an exercise file (parsed JSON) against the format in docs/exercises.md. Never throws: returns
 // { exercise, errors }, each error naming the field and what is wrong, so a lecturer can fix the file.
 import { CHAPTERS } from '../core/chapters.js';
-import { defaultState, isOption, showValue } from '../core/state.js';
+import { coerceState, defaultState, isOption, showValue } from '../core/state.js';
 import { GRADERS, isGraderName } from './graders.js';
 
 export const FIELDS = ['id', 'chapter', 'title', 'prompt', 'widget', 'state', 'locked', 'grader', 'params', 'tolerance'];
@@ -27,6 +27,9 @@ export function fieldProblem(f, value) {
     }
     case 'color':
       return typeof value === 'string' && /^#[0-9a-f]{6}$/i.test(value) ? null : `${show(value)} is not a colour like "#rrggbb"`;
+    case 'samples':
+    case 'text': // as a link would carry them (a samples list's items may be numbers)
+      return coerceState({ value: f }, { value }).notices[0]?.replace(/^[^:]*: /, '').replace(/; kept .*$/, '') ?? null;
     default:
       return `unknown field type ${f.type}`;
   }

@@ -1,14 +1,15 @@
 // The measured-BRDF widget on the BRDF page in a real Chromium: a synthetic MERL file written in Node from
 // ABC (so the right answer is known) is picked, parsed and fitted in the worker; the lobe, spheres, NDF slice
-// and fit table show it; a fit goes into brdf-lobe; a bad file is refused and the last good one kept.
-import { writeFileSync, mkdtempSync } from 'node:fs';
+// and fit table show it; a fit goes into brdf-lobe, and into ndf-explorer with the measured NDF slice; a bad file
+// is refused and the last good one kept.
+import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { getState, launchBrowser, open, settle, shot, widget, withPixels } from './helpers.js';
-import { writeMerl } from '../../src/measured/merl.js';
+import { parseMerl, writeMerl } from '../../src/measured/merl.js';
 import { modelBRDF } from '../../src/measured/fit.js';
-import { EXAMPLES } from '../../src/widgets/measured-brdf/model.js';
+import { EXAMPLES, THETA_H_DEG, measuredNdfSlice } from '../../src/widgets/measured-brdf/model.js';
 import { ndfABC } from '../../src/math/ndf.js';
 import { ndfHalfWidthDeg } from '../../src/math/ndf-width.js';
 
@@ -114,6 +115,29 @@ describe('a synthetic MERL file picked on the BRDF page', () => {
     const state = await ndf.evaluate(() => globalThis.__shadingLab.widgets.ndf.getState());
     expect(state.hwhm).toBeCloseTo(ndfHalfWidthDeg((c) => ndfABC(c, TRUTH.a1, TRUTH.a2)), 1); // 4 digits in the URL
     expect(state.abcA2).toBeCloseTo(TRUTH.a2, 2);
+    await ndf.close();
+  }, 90_000);
+
+  it('ndf-explorer draws the measured θd = 0 slice / peak on its log plot: the slice computed in Node from the same file and fit', async () => {
+    const f = await fits();
+    const want = measuredNdfSlice(parseMerl(readFileSync(file).buffer).table, f.abc); // ABC: the best fit
+    const opened = browser.waitForTarget((t) => t.url().includes('ndf.html'), { timeout: 60_000 });
+    await page.click('.measured-fits button[data-model="abc"][data-target="ndf"]');
+    const ndf = await (await opened).page();
+    await ndf.waitForFunction(() => globalThis.__shadingLab?.widgets?.ndf?.getMeasuredCurve(), { timeout: 60_000 });
+    const curve = await ndf.evaluate(() => globalThis.__shadingLab.widgets.ndf.getMeasuredCurve());
+    expect(curve.label).toBe('measured: synthetic-abc.binary, θd = 0 slice / peak');
+    const drawn = new Map(curve.points);
+    let compared = 0;
+    THETA_H_DEG.forEach((deg, i) => {
+      if (!(want[i] > 1e-5)) return expect(drawn.has(deg)).toBe(false); // below the plot: not drawn
+      expect(Math.abs(drawn.get(deg) / want[i] - 1), `θh ${deg}°`).toBeLessThan(5e-3); // 3 digits in the URL
+      compared++;
+    });
+    expect(compared).toBeGreaterThan(80);
+    expect(curve.points).toHaveLength(compared); // nothing drawn between the nodes
+    const aria = await ndf.$$eval('figure.plot canvas', (c) => c[1].getAttribute('aria-label'));
+    expect(aria).toMatch(/D\(θh\) \/ D\(0\), log scale.*measured: synthetic-abc\.binary.*ABC \(dashed\): /);
     await ndf.close();
   }, 90_000);
 

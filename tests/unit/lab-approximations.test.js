@@ -12,6 +12,18 @@ const scene = (terms = {}, lights = {}, methods = {}) => ({
 const env = { intensity: 1 };
 
 describe('material lab approximations', () => {
+  it('with a measured table: no DFG table or prefiltered map is read, and every method without a form for it says so', () => {
+    const measured = (lights, methods) => ({ ...scene({}, lights, methods), measured: 'gold.binary', material: { alpha: 0.2 } });
+    expect(approximationInputs(measured({ env, ambient: [1, 1, 1] }, {}))).toEqual({ dfg: null, prefilter: null });
+    for (const method of ['split-sum', 'mirror', 'pmrem']) {
+      const notes = approximationNotes(measured({ env }, { env: method }));
+      expect(notes[0]).toMatch(/^Measured BRDF \(gold\.binary\): the reference integrates the table itself.*α 0\.200/);
+      expect(notes[1]).toMatch(/has no form for a table .* left out of the approximation: choose importance sampling\.$/);
+    }
+    expect(approximationNotes(measured({ env }, { env: 'importance' }))[1]).toMatch(/^Importance sampling: N directions from the fitted GGX lobe/);
+    expect(approximationNotes(measured({ ambient: [1, 1, 1] }, {})).join(' ')).toMatch(/Ambient: .* no form for a measured table/);
+  });
+
   it('read the DFG table of the chosen D and V, and the map prefiltered with the chosen D, only where used', () => {
     const terms = { D: 'beckmann', V: 'kelemen' };
     expect(approximationInputs(scene(terms, { env }))).toEqual({ dfg: { ndf: 'beckmann', visibility: 'kelemen' }, prefilter: 'beckmann' });

@@ -24,7 +24,8 @@ const has = (terms) => ({ specular: terms.layers !== 'diffuse', diffuse: terms.l
  * What the approximation of `scene` ({ terms, lights, methods }, see lab-scene.js) reads: `dfg` the terms of its
  * DFG table ({ ndf, visibility }) or null, `prefilter` the NDF its prefiltered map is filtered with or null.
  */
-export function approximationInputs({ terms, lights, methods }) {
+export function approximationInputs({ terms, lights, methods, measured }) {
+  if (measured) return { dfg: null, prefilter: null };
   const splitSum = Boolean(lights.env) && methods.env === 'split-sum';
   return {
     dfg: splitSum || lights.ambient ? { ndf: terms.D, visibility: terms.V } : null,
@@ -99,8 +100,34 @@ const PMREM_NOTE =
   'height-correlated Smith, Schlick’s F, Lambert, plus its multiple-scattering term and a diffuse reduced by the ' +
   'specular), so its error includes those differences of model.';
 
+const ENV_WORDS = { 'split-sum': 'The split sum', mirror: 'The mirror method', pmrem: 'three.js’s PMREM' };
+
+/** What each method does with a measured table: the methods built on a model's terms have no form for it. */
+export function measuredNotes({ lights, methods, measured, material }) {
+  const notes = [`Measured BRDF (${measured}): the reference integrates the table itself (a 3-D texture, ` +
+    `trilinear between its nodes), drawing directions from the GGX fit’s lobe (α ${material.alpha.toFixed(3)}), ` +
+    'by cosine and from the map; the fit only steers the samples, it is not what is rendered. The material ' +
+    'and terms chosen above are not used.'];
+  if (lights.env && methods.env === 'importance') {
+    notes.push('Importance sampling: N directions from the fitted GGX lobe and N by cosine, each weighted by the ' +
+      'balance heuristic, the table evaluated at every one (it has no separate diffuse part to sample alone).');
+  } else if (lights.env) {
+    notes.push(`${ENV_WORDS[methods.env]} has no form for a table (it needs a model’s D, V and F), so the ` +
+      'environment is left out of the approximation: choose importance sampling.');
+  }
+  if (lights.ambient) {
+    notes.push('Ambient: the DFG table of a model has no form for a measured table; left out of the approximation.');
+  }
+  if (lights.sphere && methods.area !== 'centre') {
+    notes.push('Sphere light: the table at the representative point, with Karis’s (2013) GGX energy factor at the ' +
+      'fitted α.');
+  }
+  return notes;
+}
+
 /** The sentences under the lab's images: for each light on, how its approximation treats the chosen terms. */
 export function approximationNotes(scene) {
+  if (scene.measured) return measuredNotes(scene);
   const { specular, diffuse } = has(scene.terms);
   const notes = specular ? specularNotes(scene) : [];
   const surround = diffuse ? diffuseUnderSurround(scene) : null;

@@ -21,8 +21,30 @@ const VIS_DEFINES = { implicit: 'VIS_IMPLICIT', cookTorrance: 'VIS_COOK_TORRANCE
 const COMPENSATION_DEFINES = { kullaConty: 'COMPENSATION_KULLA_CONTY', turquin: 'COMPENSATION_TURQUIN' };
 const ENV_DEFINES = { mirror: 'ENV_MIRROR', importance: 'ENV_IMPORTANCE', 'split-sum': 'ENV_SPLIT_SUM' };
 
-/** The #defines of one program: only the terms, lights and methods in use are compiled. */
+/**
+ * The #defines of one program: only the terms, lights and methods in use are compiled. A measured table
+ * (scene.measured: its name; scene.table: its 3-D texture) is the whole BRDF, no terms; of the approximations
+ * only importance sampling and the sphere light's have a form for it (lab-approximations.js says so), so the
+ * others leave the sphere unlit by their light.
+ */
 export function sceneDefines(scene, reference) {
+  return scene.measured ? measuredDefines(scene, reference) : modelDefines(scene, reference);
+}
+
+function measuredDefines({ lights, methods }, reference) {
+  const d = { MEASURED: 1 };
+  if (lights.punctual) d.LIGHT_PUNCTUAL = 1;
+  if (lights.sphere) d.LIGHT_SPHERE = 1;
+  if (reference) {
+    return Object.assign(d, { REFERENCE: 1 }, lights.env && { LIGHT_ENV: 1 }, lights.ambient && { LIGHT_AMBIENT: 1 });
+  }
+  if (lights.env) d.LIGHT_ENV = 1; // the map behind the sphere
+  if (lights.env && methods.env === 'importance') d.ENV_IMPORTANCE = 1;
+  if (lights.sphere && methods.area === 'centre') d.AREA_CENTRE = 1;
+  return d;
+}
+
+function modelDefines(scene, reference) {
   const d = {};
   const flag = (name) => name && (d[name] = 1);
   flag(DIFFUSE_DEFINES[scene.terms.diffuse]);
@@ -68,6 +90,7 @@ export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
     uPrefiltered: { value: null }, uPrefilterLevels: { value: PREFILTER_LEVELS }, uIrradiance: { value: null },
     uDfg: { value: null },
     uAlbedoTableGGX: { value: null }, // the albedo-loss table, made when a compensation is first chosen
+    uMeasured: { value: null }, // a measured table's 3-D texture (scene.table), owned by the widget
     uEnvMarginal: { value: null }, uEnvConditional: { value: null }, uEnvPdf: { value: null }, uEnvSampling: { value: false },
     uSamples: { value: 16 }, uJitter: { value: new THREE.Vector2() }, uPrevious: { value: null }, uWeight: { value: 1 },
   };
@@ -98,6 +121,7 @@ export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
     const { material, lights } = scene;
     const m = scene.maps;
     uniforms.uEnv.value = m.env;
+    uniforms.uMeasured.value = scene.table ?? null;
     if (!reference) {
       const inputs = approximationInputs(scene);
       if (inputs.dfg) uniforms.uDfg.value = dfg(inputs.dfg);
@@ -157,7 +181,7 @@ export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
       sync(errorTarget); // finish earlier work so it is not counted
       const t0 = performance.now();
       draw(program(defines), approx);
-      if (scene.lights.env && scene.methods.env === 'pmrem') {
+      if (scene.lights.env && scene.methods.env === 'pmrem' && !scene.measured) {
         const { f0, diffuse, alpha } = scene.material;
         pmremMaterial.envMap = scene.maps.pmrem();
         pmremMaterial.envMapIntensity = scene.lights.env.intensity;

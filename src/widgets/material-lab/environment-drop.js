@@ -1,10 +1,12 @@
 // Bringing your own environment: drop an .hdr or .exr file anywhere on the widget, or pick one with the
 // button (the keyboard way). onFile(name, buffer) returns whether it was taken; the widget says why not.
-export function attachEnvironmentDrop(root, { onFile, maxBytes }) {
+// `accept` and `text`: other kinds of file the widget takes too (the material lab: a MERL table).
+const TEXT = 'Load an .hdr / .exr environment…';
+export function attachEnvironmentDrop(root, { onFile, maxBytes, accept = '.hdr,.exr', text = TEXT }) {
   const bar = document.createElement('div');
   bar.className = 'env-drop';
-  const input = Object.assign(document.createElement('input'), { type: 'file', accept: '.hdr,.exr', className: 'visually-hidden', id: `env-file-${Math.random().toString(36).slice(2)}` });
-  const button = Object.assign(document.createElement('button'), { type: 'button', textContent: 'Load an .hdr / .exr environment…' });
+  const input = Object.assign(document.createElement('input'), { type: 'file', accept, className: 'visually-hidden', id: `env-file-${Math.random().toString(36).slice(2)}` });
+  const button = Object.assign(document.createElement('button'), { type: 'button', textContent: text });
   const status = Object.assign(document.createElement('span'), { className: 'env-drop-status', textContent: 'or drop one on the widget' });
   button.addEventListener('click', () => input.click());
   bar.append(button, input, status);

@@ -11,6 +11,8 @@ import { createLabView } from '../../core/lab/lab-view.js';
 import { LAB_TERMS, createNotesList } from '../../core/lab/lab-approximations.js';
 import { SIGMA_HINT } from '../../core/sigma-range.js';
 import { attachEnvironmentDrop } from './environment-drop.js';
+import { createMeasuredMaterial } from './measured-material.js';
+import { MERL_TEXTURE_BYTES } from '../measured-brdf/texture-size.js';
 
 export const ENV_METHODS = { 'split-sum': 'Split sum (prefiltered + DFG)', importance: 'Importance sampling, N samples', mirror: 'Mirror: F(v, n) × environment', pmrem: 'three.js PMREM (MeshPhysicalMaterial)' };
 export const AREA_METHODS = { representative: 'Representative point (Karis)', centre: 'Punctual at the centre' };
@@ -33,6 +35,10 @@ export const schema = {
   sigma: {
     group: 'BRDF terms', type: 'number', min: 0, max: 60, step: 1, default: 20, label: 'Oren-Nayar σ', unit: '°',
     hint: SIGMA_HINT,
+  },
+  brdfSource: {
+    group: 'BRDF terms', type: 'enum', default: 'model', label: 'BRDF',
+    options: { model: 'The model (terms above)', measured: 'Measured (a dropped MERL file)' },
   },
   punctual: { group: 'Punctual light', type: 'bool', default: false, label: 'Punctual light' },
   lightTheta: { group: 'Punctual light', type: 'number', min: 0, max: 180, step: 1, default: 45, label: 'Punctual θ from view', unit: '°' },
@@ -67,12 +73,26 @@ const ABOUT =
   'V; F = 1 gives A + B); the lines under the images say what stands in where it has none. Multiple scattering ' +
   'puts back the light the microfacet model drops (Kulla & Conty 2017, or Turquin 2019), in both images, so the ' +
   'error image shows what each method does with it. Drop an .hdr or .exr panorama on the widget to light it with ' +
-  'your own environment.';
+  'your own environment, or a MERL .binary file (Matusik et al. 2003) to render a measured BRDF: its table is ' +
+  `a 3-D texture of ${(MERL_TEXTURE_BYTES / 1e6).toFixed(2)} MB on the GPU, and only the reference and importance ` +
+  'sampling have a form for it.';
 
 const TERMS_USED = [
   'microfacetBRDF', 'dfgTableUv', 'sampleGGXNormal', 'sampleBeckmannNormal', 'sampleCosine', 'sampleCone',
   'sphereLightRepresentativeDir', 'sphereLightNormalization', 'equirectUv', 'diffuseOrenNayar',
 ];
+
+/** A lab scene with a measured table for its BRDF: no terms; the GGX fit's α (the state's until it is in) to
+ * sample by. */
+function measuredScene(scene, table) {
+  const alpha = table.fit?.params.alpha ?? scene.material.alpha;
+  return {
+    ...scene,
+    material: { ...scene.material, alpha: Math.max(alpha, 0.01) },
+    terms: { ...scene.terms, D: 'ggx', compensation: 'none' },
+    measured: table.name,
+  };
+}
 
 export function lightsOf(state) {
   const c = (x) => [x, x, x];
@@ -117,10 +137,12 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
   const frame = ({ lab, environment, again }) => {
     const st = shell.state;
     const lights = lightsOf(st);
-    const scene = labScene(st, lights);
+    const table = st.brdfSource === 'measured' ? measured.current : null;
+    const scene = table ? measuredScene(labScene(st, lights), table) : labScene(st, lights);
     const envKey = st.env ? (st.environment === 'file' ? fileKey : st.environment) : 'none';
-    const aKey = JSON.stringify([scene, envKey]);
-    const rKey = JSON.stringify([scene.material, scene.terms, scene.lights, envKey]);
+    const aKey = JSON.stringify([scene, envKey, table?.key]);
+    const rKey = JSON.stringify([scene.material, scene.terms, scene.lights, envKey, table?.key]);
+    scene.table = table?.texture;
     scene.maps = environment(st.env ? st.environment : 'furnace', st.env && st.environment === 'file' ? filePixels : null);
     if (aKey !== approxKey) {
       const times = Array.from({ length: timingRuns }, () => lab.renderApprox(scene)).sort((a, b) => a - b);
@@ -156,18 +178,33 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
         </tbody></table>`
       : '<p class="lab-empty">Every light is off: switch one on in the controls.</p>';
     const errorWords = converging ? 'The reference is still converging.' : `RMS error ${fmt(stats.rms, 3)}, ${fmt(stats.relative * 100, 3)} % relative; ${fmt(stats.ms, 3)} ms.`;
-    shell.describe(`Material lab. A sphere (${st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material}, roughness α ${st.alpha}) lit by ${methodText(st, lights)}; beside it the Monte Carlo reference (${stats.target} samples per pixel) and the error image. ${errorWords}`, view.canvas);
+    const table = st.brdfSource === 'measured' ? measured.current : null;
+    const model = st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material;
+    const what = table ? `the measured BRDF ${table.name}` : `${model}, roughness α ${st.alpha}`;
+    shell.describe(`Material lab. A sphere (${what}) lit by ${methodText(st, lights)}; beside it the Monte Carlo reference (${stats.target} samples per pixel) and the error image. ${errorWords}`, view.canvas);
   };
 
   // under the images: how each light's approximation treats the chosen terms (lab-approximations.js)
   const notes = createNotesList();
 
-  const onReset = () => ([approxKey, refKey] = ['', '']);
+  const onReset = () => {
+    [approxKey, refKey] = ['', ''];
+    measured.reupload();
+  };
+  const measured = createMeasuredMaterial({
+    onChange: () => (shell.state.brdfSource === 'measured' ? view.invalidate() : update({ brdfSource: 'measured' })),
+    onError: (message) => shell.notices.show(message),
+  });
   const view = createLabView(shell.view, { label: 'Material lab', resolution: 192, frame, onReset });
   view.setAspect(3);
   shell.view.append(readout, notes.element);
 
   const onChanged = (changed) => {
+    if (changed.includes('brdfSource') && shell.state.brdfSource === 'measured' && !measured.current) {
+      shell.notices.show('No MERL file has been dropped yet: drop a .binary file on the widget. Kept the model.');
+      update({ brdfSource: 'model' });
+      return;
+    }
     if (changed.includes('environment') && shell.state.environment === 'file' && !filePixels) {
       shell.notices.show('No environment file has been dropped yet: drop an .hdr or .exr panorama on the widget. Kept the studio.');
       update({ environment: 'studio' });
@@ -176,11 +213,19 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
     view.setDisplay({ exposure: shell.state.exposure, errorScale: shell.state.errorScale });
   };
   const update = shell.connect({ title: 'Material lab', onChanged, onStateChange });
-  onChanged(['environment']);
+  onChanged(['environment', 'brdfSource']);
 
   const drop = attachEnvironmentDrop(shell.root, {
     maxBytes: MAX_FILE_BYTES,
+    accept: '.hdr,.exr,.binary',
+    text: 'Load an .hdr / .exr environment or a MERL .binary BRDF…',
     onFile: (name, buffer) => {
+      if (/\.binary$/i.test(name)) {
+        const mb = MAX_FILE_BYTES / 2 ** 20;
+        if (!(buffer instanceof ArrayBuffer)) shell.notices.show(`${name}: larger than ${mb} MB. Kept the material.`);
+        else measured.load(name, buffer);
+        return buffer instanceof ArrayBuffer;
+      }
       try {
         filePixels = parseEnvironmentFile(name, buffer);
       } catch (e) {
@@ -198,6 +243,8 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
     update,
     getState: () => shell.state,
     getStats: () => stats,
+    /** The measured table in use ({ name, fit }: fit null until the GGX fit is in), or null. */
+    getMeasured: () => (measured.current ? { name: measured.current.name, fit: measured.current.fit } : null),
     getProgress: () => ({ frame: stats?.samples ?? 0, target: Number(shell.state.refSamples) }),
     /** Renders the approximation `runs` times and keeps the median time (stats.timingRuns says when it is done). */
     remeasure(runs) {
@@ -214,6 +261,7 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
     },
     dispose() {
       drop.dispose();
+      measured.dispose();
       view.dispose();
       shell.dispose();
     },

@@ -11,6 +11,7 @@ import { MERL_BYTES, measuredFromTable } from '../../measured/merl.js';
 import { createHalfDiffImage } from '../brdf-lobe/half-diff-image.js';
 import { schema } from './schema.js';
 import {
+  bestFit,
   EXAMPLES,
   THETA_H_DEG,
   VIEW_ANGLES,
@@ -92,7 +93,7 @@ function lobeSpec(measured, fit, lightDeg) {
 
 function ndfSpec(measured, fits, overlay) {
   const keys = MODELS.filter((k) => fits[k]);
-  const best = Object.values(fits).sort((a, b) => a.error - b.error)[0];
+  const best = bestFit(fits);
   const label = best
     ? `measured θd = 0 slice, less the ${FIT_MODELS[best.model].label} fit’s diffuse, ÷ its V`
     : 'measured θd = 0 slice';
@@ -183,7 +184,7 @@ function createPainter({ lobePlot, spheres, image, ndfPlot, residuals }, shell, 
     spheres: () => spheres.setLight(lightDirFromAngles(s().sphereLight, 135), s().exposure),
     describe() {
       const { fits, sourceWords } = data();
-      const best = Object.values(fits).sort((a, b) => a.error - b.error)[0];
+      const best = bestFit(fits);
       const bestWords = best ? `; best: ${FIT_MODELS[best.model].label}, error ${best.error.toExponential(2)}` : '';
       const fitted = `${Object.keys(fits).length} of 5 models fitted${bestWords}`;
       shell.describe(
@@ -196,8 +197,11 @@ function createPainter({ lobePlot, spheres, image, ndfPlot, residuals }, shell, 
   };
 }
 
-/** Hands a fit to another widget: in place when it is on this page (brdf-lobe on the BRDF page), else a new tab. */
-function loadFitInto(fit, fits, target) {
+/**
+ * Hands a fit to another widget: in place when it is on this page (brdf-lobe on the BRDF page), else a new tab
+ * (ndf-explorer gets the measured NDF slice and the source's name in its URL too).
+ */
+function loadFitInto(fit, { fits, measured, sourceName }, target) {
   const lobe = globalThis.__shadingLab?.widgets?.lobe;
   if (target === 'lobe' && lobe) {
     lobe.update(lobeStateForFit(fit));
@@ -205,9 +209,11 @@ function loadFitInto(fit, fits, target) {
     return;
   }
   const [page, prefix, state] =
-    target === 'lobe' ? ['brdf.html', 'lobe', lobeStateForFit(fit)] : ['ndf.html', 'ndf', ndfStateForFit(fit, fits)];
+    target === 'lobe'
+      ? ['brdf.html', 'lobe', lobeStateForFit(fit)]
+      : ['ndf.html', 'ndf', ndfStateForFit(fit, fits, measured, sourceName)];
   const params = new URLSearchParams(
-    Object.entries(state).map(([k, v]) => [`${prefix}.${k}`, typeof v === 'number' ? +v.toPrecision(4) : v]),
+    Object.entries(state).map(([k, v]) => [`${prefix}.${k}`, typeof v === 'number' ? +v.toPrecision(4) : String(v)]),
   );
   window.open(`${page}?${params}`, '_blank', 'noopener');
 }
@@ -261,7 +267,7 @@ function runFits(ctx) {
 }
 
 /** A table the worker read (with the worker that holds it) replaces the one shown; fits start over. */
-function showTable(ctx, next, result, words) {
+function showTable(ctx, next, result, { words, name }) {
   const { views, paint, data } = ctx;
   data.client.dispose();
   Object.assign(data, {
@@ -271,6 +277,7 @@ function showTable(ctx, next, result, words) {
     measured: measuredFromTable(result.table),
     fits: {},
     sourceWords: words,
+    sourceName: name,
   });
   views.drop.setSource(
     `${words}. Read in ${result.ms.toFixed(0)} ms in a worker; ${(result.missing / 3).toLocaleString('en')} ` +
@@ -299,6 +306,7 @@ export function createMeasuredBrdf(container, initialState = {}, { onStateChange
     fits: {},
     tabulated: null,
     sourceWords: '',
+    sourceName: '',
     generation: 0,
     requests: 0,
     shown: 0,
@@ -306,20 +314,20 @@ export function createMeasuredBrdf(container, initialState = {}, { onStateChange
   };
   const views = createViews(shell, shell.state, {
     onFile: (file) => loadFile(file),
-    onLoadFit: (model, target) => data.fits[model] && loadFitInto(data.fits[model], data.fits, target),
+    onLoadFit: (model, target) => data.fits[model] && loadFitInto(data.fits[model], data, target),
   });
   const paint = createPainter(views, shell, () => data);
   const ctx = { shell, views, paint, data };
 
   /** Reads a table in a new worker; only if it parses does it replace what is shown (and the old worker). */
-  const load = (request, words, failure) => {
+  const load = (request, source, failure) => {
     const next = createFitClient();
     const ticket = ++data.requests;
     request(next)
       .then((result) => {
         if (data.disposed || ticket < data.shown) return next.dispose();
         data.shown = ticket;
-        showTable(ctx, next, result, words);
+        showTable(ctx, next, result, source);
       })
       .catch((e) => {
         next.dispose();
@@ -330,7 +338,7 @@ export function createMeasuredBrdf(container, initialState = {}, { onStateChange
     const e = EXAMPLES[key];
     load(
       (c) => c.synthesize(e.model, e.params),
-      e.label,
+      { words: e.label, name: `synthetic ${e.model.toUpperCase()} example (writeMerl)` },
       (err) => err.message,
     );
   };
@@ -343,7 +351,7 @@ export function createMeasuredBrdf(container, initialState = {}, { onStateChange
     }
     load(
       (c) => file.arrayBuffer().then((b) => c.parse(b)),
-      `${file.name} (a MERL file you loaded)`,
+      { words: `${file.name} (a MERL file you loaded)`, name: file.name },
       (e) => `${file.name}: ${e.message} The BRDF shown before is kept.`,
     );
   };

@@ -113,10 +113,20 @@ export function lobeStateForFit(fit) {
   };
 }
 
-/** ndf-explorer's state for a fit: its half width, and the fitted ABC a2 and SGD p when those fits are there. */
-export function ndfStateForFit(fit, fits) {
+/** The best fit (smallest error) of those there, or null. */
+export const bestFit = (fits) => Object.values(fits).sort((a, b) => a.error - b.error)[0] ?? null;
+
+/**
+ * ndf-explorer's state for a fit: its half width, the fitted ABC a2 and SGD p when those fits are there, and
+ * the measured slice (measuredNdfSlice with the best fit, 3 digits, 0 where missing or under 1e-5) with `name`
+ * (characters a state text field does not take are dropped).
+ */
+export function ndfStateForFit(fit, fits, measured, name) {
   const state = { hwhm: clamp(fitHalfWidthDeg(fit), 1, 40) };
   if (fits.abc) state.abcA2 = clamp(fits.abc.params.a2, 0.5, 10);
   if (fits.sgd) state.sgdP = clamp(fits.sgd.params.p, 0, 1.9);
+  const slice = measuredNdfSlice(measured.table, bestFit(fits));
+  state.measured = slice.map((x) => (x > 1e-5 ? Math.min(+x.toPrecision(3), 1) : 0));
+  state.measuredName = name.replace(/[^\p{L}\p{N} ._()+,-]/gu, '').slice(0, 80);
   return state;
 }

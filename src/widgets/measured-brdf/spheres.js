@@ -6,7 +6,8 @@ import { assembleGlsl } from '../../core/glsl.js';
 import { SHADER_CHUNKS } from '../../core/shader-chunks.js';
 import { MERL_DIMS } from '../../measured/merl.js';
 
-function tableTexture(half) {
+/** A table (RGBA half floats, MERL order) as the 3-D texture measured.glsl reads. */
+export function tableTexture(half) {
   const [NH, ND, NP] = MERL_DIMS;
   const t = new THREE.Data3DTexture(half, NP, ND, NH);
   Object.assign(t, {

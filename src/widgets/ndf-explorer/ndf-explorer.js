@@ -8,6 +8,7 @@ import { lightDirFromAngles } from '../../core/light-control.js';
 import { NDF_TERMS, microfacetBRDFAt, punctualRadiance } from '../../math/brdf.js';
 import { matchNdfWidths } from '../../math/ndf-width.js';
 import { ndfProjectedIntegral } from '../../math/integrate.js';
+import { THETA_H_DEG } from '../measured-brdf/model.js';
 
 export const NDFS = {
   blinnPhong: { name: 'Blinn-Phong', define: 'NDF_BLINN_PHONG' },
@@ -24,6 +25,10 @@ export const schema = {
   ndfs: { type: 'set', options: Object.fromEntries(Object.entries(NDFS).map(([k, v]) => [k, v.name])), default: Object.keys(NDFS), label: 'Distributions' },
   lightTheta: { type: 'number', min: 0, max: 80, step: 1, default: 35, label: 'Light from view', unit: '°' },
   exposure: { type: 'number', min: 0.05, max: 50, step: 0.05, default: 1, label: 'Exposure' },
+  // the NDF a measurement implies, as the measured-BRDF widget hands it over: D/D(0) at the 90 θh nodes of a
+  // MERL table (0: missing or below 1e-5), and the name of its file
+  measured: { type: 'samples', length: 90, min: 0, max: 1, default: [], label: 'Measured NDF slice' },
+  measuredName: { type: 'text', maxLength: 80, default: '', label: 'Measured file' },
 };
 
 const ABOUT =
@@ -31,10 +36,17 @@ const ABOUT =
   'cores of the lobes match and only their shapes differ. The log plot shows the tails: GGX, ABC and SGD keep ' +
   'far more microfacets at large angles than Beckmann or Blinn-Phong, which is the halo around their highlights. ' +
   'Raise the exposure to see it. The spheres use F = 1 and V = 1 so that only D differs. The table integrates ' +
-  'each D·(n·m) over the hemisphere: a density must give 1.';
+  'each D·(n·m) over the hemisphere: a density must give 1. Opened from the measured-BRDF widget (BRDF page), ' +
+  'the log plot adds the NDF a measurement implies (black) and puts every curve over its own peak, so the ' +
+  'measured tail is read against the five shapes at the fitted width.';
 
 const DEG = Math.PI / 180;
-const ANGLES = Float64Array.from({ length: 361 }, (_, i) => i * 0.25);
+// every 0.25° and the θh nodes of a MERL table (where a measured slice has its values), in order
+const ANGLES = Float64Array.from(new Set([...Array.from({ length: 361 }, (_, i) => i * 0.25), ...THETA_H_DEG])).sort();
+const NODE_AT = new Map(Array.from(THETA_H_DEG, (deg, i) => [deg, i]));
+/** The measured slice on ANGLES: its value at each node, null between nodes and where it is 0 (missing). */
+const measuredOnAngles = (slice) =>
+  Array.from(ANGLES, (deg) => (NODE_AT.has(deg) && slice[NODE_AT.get(deg)] > 0 ? slice[NODE_AT.get(deg)] : null));
 
 /** The matched parameters of each NDF as the { alpha, exponent, a1, a2, p } object NDF_TERMS read. */
 function parameters(state) {
@@ -65,6 +77,19 @@ function curves(state) {
 
 const axis = { xLabel: 'Angle of the microfacet normal from n, θh (degrees)', x: { min: 0, max: 90 }, xValues: (u, t) => t.map((v) => `${v}°`) };
 
+/** The log plot with a measured slice: every curve over its own peak, so the tails compare at one width. */
+function relativeLogSpec(data, slice, name) {
+  const label = `measured: ${name || 'unnamed'}, θd = 0 slice / peak`;
+  const measured = { label, stroke: '#000000', width: 2.5, spanGaps: true };
+  const relative = (c) => c.values.map((v) => (v / c.values[0] > 1e-5 ? v / c.values[0] : null));
+  return {
+    ...axis, title: 'D(θh) / D(0), log scale: the measured tail against the models at the fitted width',
+    yLabel: 'D / D(0)', y: { min: 1e-5, max: 2, log: true }, legend: true,
+    series: [measured, ...data.map((c) => ({ label: c.label, stroke: c.stroke, dash: c.dash }))],
+    data: [ANGLES, measuredOnAngles(slice), ...data.map(relative)], filename: 'ndf-log', height: 260,
+  };
+}
+
 const TERMS_USED = ['ndfBlinnPhong', 'ndfBeckmann', 'ndfGGX', 'ndfABC', 'ndfSGD', 'microfacetBRDF'];
 
 export function createNdfExplorer(container, initialState = {}, { onStateChange } = {}) {
@@ -79,6 +104,8 @@ export function createNdfExplorer(container, initialState = {}, { onStateChange 
     series: data.map((c) => ({ label: c.label, stroke: c.stroke, dash: c.dash })), data: [ANGLES, ...data.map((c) => c.values)], filename: 'ndf-linear', height: 260,
   });
   const logSpec = () => {
+    const slice = shell.state.measured;
+    if (slice.length) return relativeLogSpec(data, slice, shell.state.measuredName);
     const peak = Math.max(...data.map((c) => c.values[0]), 1e-3);
     return {
       ...axis, title: 'D(θh), log scale: the tails', yLabel: 'D (1/sr)', y: { min: peak * 1e-7, max: peak * 2, log: true }, legend: false,
@@ -121,9 +148,10 @@ export function createNdfExplorer(container, initialState = {}, { onStateChange 
     if (changed.some((k) => ['hwhm', 'abcA2', 'sgdP', 'ndfs'].includes(k))) {
       data = curves(shell.state);
       linear.setData(linearSpec());
-      log.setData(logSpec());
       renderTable();
     }
+    const logKeys = ['hwhm', 'abcA2', 'sgdP', 'ndfs', 'measured', 'measuredName'];
+    if (changed.some((k) => logKeys.includes(k))) log.setData(logSpec());
     renderSpheres();
   };
   const update = shell.connect({ title: 'NDF explorer', onChanged, onStateChange });
@@ -132,6 +160,13 @@ export function createNdfExplorer(container, initialState = {}, { onStateChange 
     update,
     getState: () => shell.state,
     getIntegrals: () => Object.fromEntries(data.map((c) => [c.key, c.integral])),
+    /** The log plot's measured curve as uPlot holds it: its label and the (θh, value) points drawn. */
+    getMeasuredCurve() {
+      const u = log.uplot;
+      if (!shell.state.measured.length || !u) return null;
+      const points = [...u.data[0]].map((x, i) => [x, u.data[1][i]]).filter(([, y]) => y != null);
+      return { label: u.series[1].label, points };
+    },
     dispose() {
       linear.dispose();
       log.dispose();
