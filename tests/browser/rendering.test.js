@@ -315,7 +315,7 @@ describe('material lab', () => {
     const hdr = (w, h) => [...new TextEncoder().encode(`#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y ${h} +X ${w}\n`), ...Array(w * h).fill([128, 128, 128, 129]).flat()];
     await drop('square.hdr', hdr(4, 4));
     await page.waitForFunction(() => [...document.querySelectorAll('.widget-material-lab .notice')].some((n) => n.textContent.includes('square.hdr')));
-    expect((await notices()).join(' ')).toMatch(/square\.hdr” is 4×4: an environment must be equirectangular/);
+    expect((await notices()).join(' ')).toMatch(/square\.hdr” claims to be 4×4: an environment must be equirectangular/);
     expect((await getState(page, 'lab')).environment).toBe('sky');
 
     await drop('uniform.hdr', hdr(8, 4));

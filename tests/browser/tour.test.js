@@ -150,7 +150,7 @@ describe('guided tour', () => {
   it('says so for an unknown step and shows the first one', async () => {
     const page = await openTour(browser, '#no-such-step');
     await onStep(page, steps[0].id);
-    expect(await page.$eval('.tour-messages', (el) => el.textContent)).toMatch(/no step “no-such-step”/);
+    expect(await page.$eval('.tour-messages', (el) => el.textContent)).toMatch(/no step "no-such-step"/);
     expect(page.url()).toMatch(new RegExp(`#${steps[0].id}$`));
     // a bad hash later keeps the step that was shown
     await page.evaluate((id) => (location.hash = id), steps[2].id);
