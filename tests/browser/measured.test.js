@@ -74,6 +74,21 @@ describe('a synthetic MERL file picked on the BRDF page', () => {
     );
   });
 
+  it('the 3-D lobe is scaled to the larger peak of the measured green channel and the GGX fit (analytic)', async () => {
+    const label = await page.$eval('.measured-spheres .lobe-3d canvas', (c) => c.getAttribute('aria-label'));
+    const light = (30 * Math.PI) / 180; // the schema's default light
+    const l = [-Math.sin(light), 0, Math.cos(light)];
+    const ggx = (await fits()).ggx;
+    const peak = (f) => Math.max(...Array.from({ length: 179 }, (_, i) => {
+      const t = ((i - 89) * Math.PI) / 180; // the plane of incidence, where an isotropic lobe peaks
+      return f(l, [Math.sin(t), 0, Math.cos(t)])[1];
+    }));
+    const want = Math.max(peak(modelBRDF('abc', TRUTH)), peak(modelBRDF('ggx', ggx.params)));
+    const shown = Number(/scaled to ([\d.e+-]+) \/sr/.exec(label)?.[1]);
+    expect(label).toMatch(/3-D lobe of the measured table's green channel \(solid\) and the GGX fit \(wireframe\)/);
+    expect(Math.abs(shown / want - 1)).toBeLessThan(0.05);
+  });
+
   it('the spheres are drawn from the 3-D textures: copper-coloured highlight (R > G > B, as f0 0.9 / 0.6 / 0.3)', async () => {
     await page.evaluate(() => globalThis.__shadingLab.widgets.measured.update({ exposure: 0.05 })); // no channel clips
     await page.$eval('.measured-spheres', (e) => e.scrollIntoView());

@@ -7,6 +7,7 @@ import {
   EXAMPLES,
   THETA_H_DEG,
   fittedNdfSlice,
+  lobe3dSpec,
   lobeStateForFit,
   measuredNdfSlice,
   ndfStateForFit,
@@ -29,6 +30,17 @@ describe('the measured-BRDF widget model', () => {
     });
     // without the fit, the diffuse floor stays in: the slice no longer falls like D
     expect(measuredNdfSlice(table)[80]).toBeGreaterThan(10 * slice[80]);
+  });
+
+  it('the 3-D lobe reads the green channel with l at -θ in the plane, and its scale is the largest value shown', () => {
+    const f = modelBRDF('ggx', EXAMPLES.ggx.params);
+    const dirs = [[0, 0, 1], [Math.sin(30 * DEG), 0, Math.cos(30 * DEG)], [0, Math.sin(60 * DEG), Math.cos(60 * DEG)]];
+    const spec = lobe3dSpec(f, null, 30, dirs);
+    const l = [-Math.sin(30 * DEG), 0, Math.cos(30 * DEG)];
+    dirs.forEach((v) => expect(spec.fA(v)).toBe(f(l, v)[1]));
+    expect(spec.max).toBe(f(l, dirs[1])[1]); // the mirror direction is the brightest of the three
+    expect(spec.fB).toBeNull();
+    expect(spec.directions.mirror).toEqual([-l[0], 0, l[2]]);
   });
 
   it('a fit’s own slice is its normalised NDF (ABC, closed form)', () => {

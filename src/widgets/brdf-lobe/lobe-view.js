@@ -107,6 +107,9 @@ export function createLobeView(container) {
   };
 
   return {
+    /** The view directions the lobes are evaluated at (local frame), for a caller that scales to their maximum. */
+    directions: dirs,
+    canvas: viewport?.canvas ?? null,
     /** fA(v), fB(v) | null: the lobes for the current light; dirs: { n, l, v, h, mirror } as arrays (h may be null); the view in words. */
     update({ fA, fB, max, directions, description }) {
       describeCanvas(viewport?.canvas, description);

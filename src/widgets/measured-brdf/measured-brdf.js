@@ -9,6 +9,8 @@ import { lightDirFromAngles } from '../../core/light-control.js';
 import { FIT_MODELS } from '../../measured/fit.js';
 import { MERL_BYTES, measuredFromTable } from '../../measured/merl.js';
 import { createHalfDiffImage } from '../brdf-lobe/half-diff-image.js';
+import { createLobeView } from '../brdf-lobe/lobe-view.js';
+import { describeCanvas } from '../../core/describe.js';
 import { schema } from './schema.js';
 import {
   bestFit,
@@ -17,6 +19,7 @@ import {
   VIEW_ANGLES,
   fitBRDF,
   fittedNdfSlice,
+  lobe3dSpec,
   lobeStateForFit,
   measuredNdfSlice,
   ndfStateForFit,
@@ -41,6 +44,7 @@ const MB = (bytes) => `${(bytes / 1e6).toFixed(1)} MB`;
 
 const ABOUT =
   'Drop a file from the MERL BRDF database (Matusik et al. 2003; not shipped here) or keep a synthetic example. ' +
+  'It is drawn as a lobe in the plane of incidence, as a 3-D lobe (green channel; drag to orbit) and on spheres. ' +
   'The five models of the talk are fitted to it in the background, each with Schlick Fresnel and a Lambert ' +
   'diffuse per colour channel. The log plot of the NDF slice shows whether a model’s tail follows the data: ' +
   'on real materials GGX, ABC and shifted gamma keep up where Beckmann and Blinn-Phong fall away (Löw et al. ' +
@@ -136,6 +140,10 @@ function createViews(shell, state, { onFile, onLoadFit }) {
   const spheres = createMeasuredSpheres(sphereHolder, {
     label: 'Spheres: the measured BRDF (left) and the overlaid fit (right)',
   });
+  const lobeHolder = Object.assign(document.createElement('div'), { className: 'lobe-3d' });
+  sphereHolder.append(lobeHolder);
+  const lobe3d = createLobeView(lobeHolder);
+  describeCanvas(lobe3d.canvas, '3-D lobe of the measured table: no table yet (drop a file, or wait for the example).');
   const imageHolder = Object.assign(document.createElement('div'), { className: 'half-diff-row' });
   rows[1].append(imageHolder);
   const image = createHalfDiffImage(imageHolder, 'Measured (G) over (θh, θd)');
@@ -147,17 +155,18 @@ function createViews(shell, state, { onFile, onLoadFit }) {
   return {
     drop,
     lobePlot,
+    lobe3d,
     spheres,
     image,
     ndfPlot,
     table,
     residuals,
-    all: [lobePlot, ndfPlot, image, ...residuals, spheres, table, drop],
+    all: [lobePlot, lobe3d, ndfPlot, image, ...residuals, spheres, table, drop],
   };
 }
 
 /** Draws the views from the state and the data ({ measured, fits, sourceWords }) they show. */
-function createPainter({ lobePlot, spheres, image, ndfPlot, residuals }, shell, data) {
+function createPainter({ lobePlot, lobe3d, spheres, image, ndfPlot, residuals }, shell, data) {
   const s = () => shell.state;
   const images = () => {
     const { measured, fits } = data();
@@ -178,7 +187,19 @@ function createPainter({ lobePlot, spheres, image, ndfPlot, residuals }, shell, 
     );
   };
   return {
-    lobe: () => lobePlot.setData(lobeSpec(data().measured, data().fits[s().overlay], s().lightTheta)),
+    lobe() {
+      const { measured, fits } = data();
+      const fit = fits[s().overlay];
+      lobePlot.setData(lobeSpec(measured, fit, s().lightTheta));
+      if (!measured) return;
+      const spec = lobe3dSpec(measured.lookup, fit ? fitBRDF(fit) : null, s().lightTheta, lobe3d.directions);
+      const fitWords = fit ? ` and the ${FIT_MODELS[fit.model].label} fit (wireframe)` : '';
+      lobe3d.update({
+        ...spec,
+        description: `3-D lobe of the measured table's green channel (solid)${fitWords}, light ${s().lightTheta}° ` +
+          `from n; each direction's distance from the centre is f, scaled to ${spec.max.toPrecision(3)} /sr.`,
+      });
+    },
     ndf: () => ndfPlot.setData(ndfSpec(data().measured, data().fits, s().overlay)),
     images,
     spheres: () => spheres.setLight(lightDirFromAngles(s().sphereLight, 135), s().exposure),

@@ -33,6 +33,19 @@ export function planeOfIncidence(f, lightDeg) {
   return [0, 1, 2].map((c) => values.map((rgb) => rgb[c]));
 }
 
+/**
+ * The 3-D lobe's inputs for a light lightDeg from n in the plane of incidence: the green channel of the table
+ * (and of a fit) as functions of the view direction, their largest value over the lobe view's directions, and
+ * the arrows. Green, as the (θh, θd) image shows it: one channel keeps the shape readable.
+ */
+export function lobe3dSpec(lookup, fitF, lightDeg, directions) {
+  const l = lightDir(lightDeg);
+  const green = (f) => (f ? (v) => Math.max(f(l, v)[1], 0) : null);
+  const [fA, fB] = [green(lookup), green(fitF)];
+  const max = Math.max(1e-9, ...directions.map((v) => Math.max(fA(v), fB ? fB(v) : 0)));
+  return { fA, fB, max, directions: { n: [0, 0, 1], l, v: null, h: null, mirror: [-l[0], 0, l[2]] } };
+}
+
 /** The fitted BRDF of a fit result as f(l, v) → [r, g, b]. */
 export const fitBRDF = (fit) => modelBRDF(fit.model, fit.params);
 
