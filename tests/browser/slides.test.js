@@ -34,12 +34,37 @@ async function openDeck(path) {
   return page;
 }
 
-/** The state of the widget in the iframe of `selector` (read inside the cross-origin frame). */
-async function frameState(page, selector = '.present shading-lab-widget') {
+/**
+ * A DevTools call into a cross-origin frame that reveal has just removed can stay unanswered for good (seen once
+ * in the full suite: the 40-slide test waited out its whole timeout); bounded here, so the caller tries again.
+ */
+const within = (promise, what, ms = 10_000) =>
+  Promise.race([promise, new Promise((_, no) => setTimeout(() => no(new Error(`${what}: no answer in ${ms} ms`)), ms))]);
+
+/** The frame of the element on the current slide, once its widget is up. */
+async function currentFrame(page, selector = '.present shading-lab-widget') {
   const handle = await page.waitForSelector(`${selector} iframe`, { timeout: 30_000 });
-  const frame = await handle.contentFrame();
+  const frame = await within(handle.contentFrame(), 'contentFrame');
   await frame.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 1, { timeout: 30_000 });
-  return frame.evaluate(() => Object.values(globalThis.__shadingLab.widgets)[0].getState());
+  return frame;
+}
+
+/** Whether the current slide's widget says its WebGL context was lost (asked again if a call goes unanswered). */
+async function contextLostSaid(page) {
+  for (let tries = 1; ; tries++) {
+    try {
+      const frame = await currentFrame(page);
+      return await within(frame.evaluate(() => document.body.textContent.includes('context was lost')), 'text');
+    } catch (e) {
+      if (tries === 3) throw e;
+    }
+  }
+}
+
+/** The state of the widget in the iframe of `selector` (read inside the cross-origin frame). */
+async function frameState(page, selector) {
+  const frame = await currentFrame(page, selector);
+  return within(frame.evaluate(() => Object.values(globalThis.__shadingLab.widgets)[0].getState()), 'getState');
 }
 
 /** Waits until the element on the current slide reports `expected` (a subset of its state) in its iframe. */
@@ -187,8 +212,7 @@ describe('reveal.js plugin (reveal.js 6 from node_modules, the app on another or
     for (let i = 0; i < 40; i++) {
       await waitForState(page, { lightTheta: 40 + 3 * i });
       most = Math.max(most, await page.$$eval('shading-lab-widget iframe', (f) => f.length));
-      const frame = await (await page.$('.present shading-lab-widget iframe')).contentFrame();
-      const lost = await frame.evaluate(() => document.body.textContent.includes('context was lost'));
+      const lost = await contextLostSaid(page);
       expect(lost, `slide ${i + 1}`).toBe(false);
       if (i % 3 === 0) {
         await press(page, 'ArrowRight'); // its fragment
@@ -201,7 +225,7 @@ describe('reveal.js plugin (reveal.js 6 from node_modules, the app on another or
     expect(page.errors).toEqual([]);
     expect(page.warnings).toEqual([]);
     await page.close();
-  }, 600_000);
+  }, 240_000);
 
   it('print view (?print-pdf): each widget is a still image in the state of its printed page', async () => {
     const page = await openDeck(`/examples/deck/index.html?print-pdf&lab=${lab()}`);
