@@ -339,12 +339,19 @@ describe('twenty 3-D widgets on one page (wall.html)', () => {
 });
 
 describe('embeds in same-origin frames share one context budget', () => {
-  it('a gallery with a budget of 3 draws every 3-D preview it scrolls past, with at most 3 contexts live', async () => {
-    const LIMIT = 3; // seeded in the top window before any frame loads: the frames must find and use it
+  it('a gallery with a budget of 4 draws every 3-D preview it scrolls past, with at most 4 contexts live', async () => {
+    // Seeded in the top window before any frame loads: the frames must find and use it. Four, not three: the
+    // measured-BRDF card holds two views (spheres and 3-D lobe), and with a neighbour's view above and below,
+    // four can be in sight at once. The service worker is bypassed: this test is about the budget, and the
+    // first visit's precaching was seen to keep a preview from drawing (open question, see the offline test).
+    const LIMIT = 4;
     const page = await openCounted('gallery.html', {
-      beforeLoad: (p) => p.evaluateOnNewDocument((limit) => {
-        if (window === window.top) window.__shadingLabGl = { limit, views: [], clock: 0, peak: 0 };
-      }, LIMIT),
+      beforeLoad: async (p) => {
+        await p.setBypassServiceWorker(true);
+        await p.evaluateOnNewDocument((limit) => {
+          if (window === window.top) window.__shadingLabGl = { limit, views: [], clock: 0, peak: 0 };
+        }, LIMIT);
+      },
     });
     const drawn = new Set();
     const height = await page.evaluate(() => document.body.scrollHeight);
@@ -367,7 +374,10 @@ describe('embeds in same-origin frames share one context budget', () => {
         drawn.add(name);
       }
     }
-    const threeD = ['fresnel-zones', 'media', 'surfaces', 'brdf-lobe', 'ndf-explorer', 'visibility-explorer', 'energy', 'diffuse-explorer', 'material-lab', 'lighting-models'];
+    const threeD = [
+      'fresnel-zones', 'media', 'surfaces', 'brdf-lobe', 'measured-brdf', 'ndf-explorer', 'visibility-explorer', 'energy',
+      'diffuse-explorer', 'material-lab', 'lighting-models',
+    ];
     expect([...drawn].sort()).toEqual([...threeD].sort());
 
     // back to the first 3-D preview, which gave its context up on the way down: drawn again
