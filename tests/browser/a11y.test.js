@@ -21,7 +21,7 @@ const CHANGES = {
   'ndf-explorer': { hwhm: 15 },
   'visibility-explorer': { alpha: 0.2 },
   microfacets: { alpha: 0.8 },
-  energy: { alphas: ['0.25', '0.75'] },
+  energy: { alphas: ['0.25', '0.75'], metalAlpha: 0.5 },
   'diffuse-explorer': { sigma: 20, lightTheta: 60 },
   'material-lab': { alpha: 0.6 },
   'lighting-models': { alpha: 0.5 },

@@ -109,7 +109,8 @@ async function waitForPicture(page) {
   let share = 0;
   for (let i = 0; i < 40 && share <= 0.2; i++) {
     await settle(page, 250);
-    share = await coverage(page, await (await page.$('.present shading-lab-widget')).screenshot({ encoding: 'base64' }));
+    const element = await page.$('.present shading-lab-widget'); // absent for a moment while reveal swaps slides
+    if (element) share = await coverage(page, await element.screenshot({ encoding: 'base64' }));
   }
   return share;
 }
