@@ -3,11 +3,32 @@ import { basename, resolve } from 'node:path';
 import { VitePWA } from 'vite-plugin-pwa';
 
 // Every HTML page is an entry; relative base so the built site works from any static host and sub-path.
-const pages = ['index', 'embed', 'media', 'surfaces', 'brdf', 'microfacets', 'fresnel', 'ndf', 'visibility', 'diffuse', 'rendering', 'performance', 'parity', 'exercises', 'tour', 'gallery', 'wall'];
+const pages = [
+  'index',
+  'embed',
+  'media',
+  'surfaces',
+  'brdf',
+  'microfacets',
+  'fresnel',
+  'ndf',
+  'visibility',
+  'diffuse',
+  'rendering',
+  'performance',
+  'parity',
+  'exercises',
+  'tour',
+  'gallery',
+  'wall',
+];
 
 // Modules for other people's pages, built with stable names at the top of dist/ (README, "Embedding"): the
 // <shading-lab-widget> element (no three.js in it) and the reveal.js plugin on top of it.
-const modules = { 'shading-lab-widget': 'src/embedding/shading-lab-widget.js', 'shading-lab-reveal': 'src/embedding/reveal-plugin.js' };
+const modules = {
+  'shading-lab-widget': 'src/embedding/shading-lab-widget.js',
+  'shading-lab-reveal': 'src/embedding/reveal-plugin.js',
+};
 
 const HEAD = `
     <meta charset="utf-8" />
@@ -24,8 +45,12 @@ function pageChrome() {
     transformIndexHtml(html) {
       const withHead = html.replace(/<head>/, `<head>${HEAD}`);
       return withHead.replace(/<body([^>]*)data-crumb="([^"]*)"([^>]*)>/, (_, a, crumb, b) => {
-        const nav = crumb ? `<nav aria-label="Chapter"><a href="./">All chapters</a> · <span>${crumb}</span></nav>` : '';
-        const subtitle = crumb ? '' : '<span class="subtitle">an interactive companion to <em>Background: Physics and Math of Shading</em> (Naty Hoffman, SIGGRAPH 2013)</span>';
+        const nav = crumb
+          ? `<nav aria-label="Chapter"><a href="./">All chapters</a> · <span>${crumb}</span></nav>`
+          : '';
+        const subtitle = crumb
+          ? ''
+          : '<span class="subtitle">an interactive companion to <em>Background: Physics and Math of Shading</em> (Naty Hoffman, SIGGRAPH 2013)</span>';
         return `<body${a}${b}>\n    <header class="site-header"><a class="brand" href="./">Shading Lab</a>${nav}${subtitle}</header>`;
       });
     },
@@ -78,7 +103,10 @@ function cspMeta() {
 /** Every page loads src/core/offline.js, which registers the service worker (before Vite bundles the page). */
 function offlineScript() {
   const tag = '    <script type="module" src="/src/core/offline.js"></script>\n  </body>';
-  return { name: 'shading-lab-offline', transformIndexHtml: { order: 'pre', handler: (html) => html.replace('</body>', tag) } };
+  return {
+    name: 'shading-lab-offline',
+    transformIndexHtml: { order: 'pre', handler: (html) => html.replace('</body>', tag) },
+  };
 }
 
 // Offline after one visit: Workbox precaches the whole build (pages, chunks, exercises, icons). A page asked for
@@ -111,7 +139,9 @@ export default defineConfig({
     rollupOptions: {
       input: {
         ...Object.fromEntries(pages.map((p) => [p, resolve(import.meta.dirname, `${p}.html`)])),
-        ...Object.fromEntries(Object.entries(modules).map(([name, file]) => [name, resolve(import.meta.dirname, file)])),
+        ...Object.fromEntries(
+          Object.entries(modules).map(([name, file]) => [name, resolve(import.meta.dirname, file)]),
+        ),
       },
       preserveEntrySignatures: 'allow-extension', // the modules keep their exports
       output: { entryFileNames: (chunk) => (chunk.name in modules ? '[name].js' : 'assets/[name]-[hash].js') },

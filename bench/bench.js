@@ -23,9 +23,11 @@ const quick = args.includes('--quick');
 const only = args.includes('--only') ? args[args.indexOf('--only') + 1] : null;
 const timeCpu = only === null || args.includes('--time-cpu');
 const PARTS = ['families', 'measured'];
-if (only !== null && !PARTS.includes(only)) throw new Error(`--only ${only}: the parts that run alone are ${PARTS.join(', ')}`);
+if (only !== null && !PARTS.includes(only))
+  throw new Error(`--only ${only}: the parts that run alone are ${PARTS.join(', ')}`);
 const familyKey = args.includes('--family') ? args[args.indexOf('--family') + 1] : null;
-if (familyKey && !FAMILIES.some((f) => f.key === familyKey)) throw new Error(`--family ${familyKey}: families are ${FAMILIES.map((f) => f.key).join(', ')}`);
+if (familyKey && !FAMILIES.some((f) => f.key === familyKey))
+  throw new Error(`--family ${familyKey}: families are ${FAMILIES.map((f) => f.key).join(', ')}`);
 const out = args.includes('--out') ? resolve(args[args.indexOf('--out') + 1]) : join(ROOT, 'bench/results/latest.json');
 const CPU_SAMPLE = 2048; // inputs per timed call
 const cpuModel = () => cpus()[0]?.model ?? 'unknown';
@@ -42,16 +44,29 @@ async function cpuCosts(family) {
   await bench.run();
   if (Number.isNaN(sink)) throw new Error('NaN in the CPU benchmark');
   const untimed = family.variants.filter((v) => v.untimed).map((v) => [v.key, null]); // a reference run offline
-  return Object.fromEntries([...bench.tasks.map((t) => [t.name, (t.result.latency.mean * 1e6) / CPU_SAMPLE]), ...untimed]);
+  return Object.fromEntries([
+    ...bench.tasks.map((t) => [t.name, (t.result.latency.mean * 1e6) / CPU_SAMPLE]),
+    ...untimed,
+  ]);
 }
 
 async function gpuCosts() {
   const outDir = mkdtempSync(join(tmpdir(), 'shading-lab-bench-'));
-  await build({ root: ROOT, configFile: false, base: './', logLevel: 'warn', build: { outDir, emptyOutDir: true, rollupOptions: { input: { gpu: join(ROOT, 'bench/gpu-bench.html') } } } });
+  await build({
+    root: ROOT,
+    configFile: false,
+    base: './',
+    logLevel: 'warn',
+    build: { outDir, emptyOutDir: true, rollupOptions: { input: { gpu: join(ROOT, 'bench/gpu-bench.html') } } },
+  });
   const server = await serveStatic(outDir);
   const browser = await launchBrowser();
   try {
-    const page = await openPage(browser, server.url, `bench/gpu-bench.html?frames=${quick ? 1 : 9}${familyKey ? `&family=${familyKey}` : ''}`);
+    const page = await openPage(
+      browser,
+      server.url,
+      `bench/gpu-bench.html?frames=${quick ? 1 : 9}${familyKey ? `&family=${familyKey}` : ''}`,
+    );
     await page.waitForFunction(() => window.__gpuBench?.done, { timeout: 600_000, polling: 500 });
     const result = await page.evaluate(() => window.__gpuBench);
     if (page.errors.length) throw new Error(page.errors.join('\n'));
@@ -104,17 +119,26 @@ async function familiesOnly() {
   const families = [];
   for (const family of FAMILIES) {
     const [gpuMs, cpu] = [lastOf(family.key, 'gpuMsPerFrame'), lastOf(family.key, 'cpuNsPerEval')];
-    const missing = family.variants.filter((v) => !v.untimed && !(gpuMs[v.key] >= 0 && cpu[v.key] >= 0)).map((v) => `${family.key}/${v.key}`);
+    const missing = family.variants
+      .filter((v) => !v.untimed && !(gpuMs[v.key] >= 0 && cpu[v.key] >= 0))
+      .map((v) => `${family.key}/${v.key}`);
     if (missing.length) throw new Error(`no cost measured for ${missing.join(', ')}: run the whole bench`);
     families.push(await measureFamily(family, gpuMs, cpu));
   }
-  const familiesMeasured = { date: new Date().toISOString(), cpu: cpuModel(), node: process.version, timedCpu: timeCpu };
+  const familiesMeasured = {
+    date: new Date().toISOString(),
+    cpu: cpuModel(),
+    node: process.version,
+    timedCpu: timeCpu,
+  };
   return { ...last, families, familiesMeasured };
 }
 
 /** Only the measured-BRDF part, into the last full report (or alone when there is none yet). */
 function measuredOnly() {
-  const last = existsSync(out) ? JSON.parse(readFileSync(out, 'utf8')) : { version: 1, date: new Date().toISOString(), quick };
+  const last = existsSync(out)
+    ? JSON.parse(readFileSync(out, 'utf8'))
+    : { version: 1, date: new Date().toISOString(), quick };
   return { ...last, measured: measureMeasured({ quick }) };
 }
 
@@ -128,7 +152,13 @@ async function everything() {
     version: 1,
     date: new Date().toISOString(),
     quick,
-    machine: { cpu: cpuModel(), cores: cpus().length, node: process.version, chromium: gpu.chromium, gpuRenderer: gpu.renderer },
+    machine: {
+      cpu: cpuModel(),
+      cores: cpus().length,
+      node: process.version,
+      chromium: gpu.chromium,
+      gpuRenderer: gpu.renderer,
+    },
     gpuSetup: { ...gpu.setup, baselineMsPerFrame: gpu.baselineMs },
     families,
     versusThree: gpu.versusThree,
@@ -144,11 +174,19 @@ async function oneFamily() {
   const last = JSON.parse(readFileSync(out, 'utf8'));
   const family = FAMILIES.find((f) => f.key === familyKey);
   const measured = await measureFamily(family, (await gpuCosts()).results[family.key]);
-  const families = FAMILIES.map((f) => (f.key === familyKey ? measured : last.families.find((g) => g.key === f.key))).filter(Boolean);
+  const families = FAMILIES.map((f) =>
+    f.key === familyKey ? measured : last.families.find((g) => g.key === f.key),
+  ).filter(Boolean);
   return { ...last, families, familyMeasured: { ...last.familyMeasured, [familyKey]: new Date().toISOString() } };
 }
 
-const report = familyKey ? await oneFamily() : only === 'families' ? await familiesOnly() : only === 'measured' ? measuredOnly() : await everything();
+const report = familyKey
+  ? await oneFamily()
+  : only === 'families'
+    ? await familiesOnly()
+    : only === 'measured'
+      ? measuredOnly()
+      : await everything();
 mkdirSync(dirname(out), { recursive: true });
 writeFileSync(out, `${JSON.stringify(report, null, 1)}\n`);
 
@@ -159,16 +197,27 @@ if (only === 'measured') {
 }
 const pad = (s, n) => String(s).padEnd(n);
 const g = report.gpuSetup;
-console.log(`Machine: ${report.machine.cpu} (${report.machine.cores} cores), Node ${report.machine.node}, ${report.machine.chromium}, GPU: ${report.machine.gpuRenderer}`);
-console.log(`GPU pass: ${g.size}² pixels × ${g.loops} evaluations, median of ${g.frames} drained frames; the empty pass (x·y) takes ${g.baselineMsPerFrame.toFixed(2)} ms of each.`);
+console.log(
+  `Machine: ${report.machine.cpu} (${report.machine.cores} cores), Node ${report.machine.node}, ${report.machine.chromium}, GPU: ${report.machine.gpuRenderer}`,
+);
+console.log(
+  `GPU pass: ${g.size}² pixels × ${g.loops} evaluations, median of ${g.frames} drained frames; the empty pass (x·y) takes ${g.baselineMsPerFrame.toFixed(2)} ms of each.`,
+);
 const fixed = (x, digits) => (x === null ? '—' : x.toFixed(digits)); // null: a reference not timed
 for (const f of report.families.filter((g) => !familyKey || g.key === familyKey)) {
   console.log(`\n${f.title} — ${f.errorOf} over ${f.domain}${f.referenceNote ? ` (${f.referenceNote})` : ''}`);
-  console.log(`  ${pad('variant', 42)}${pad('measured against', 52)}${pad('max |Δ|', 11)}${pad('RMS', 11)}${pad('CPU ns/eval', 13)}${pad('GPU ms/frame', 14)}GPU relative`);
+  console.log(
+    `  ${pad('variant', 42)}${pad('measured against', 52)}${pad('max |Δ|', 11)}${pad('RMS', 11)}${pad('CPU ns/eval', 13)}${pad('GPU ms/frame', 14)}GPU relative`,
+  );
   for (const v of f.variants) {
     const d = v.error ?? v.difference;
-    const what = v.kind === 'reference' ? 'reference' : `${v.kind === 'difference' ? 'differs from' : 'error vs'} ${v.againstLabel}`;
-    console.log(`  ${pad(v.label, 42)}${pad(what, 52)}${pad(d.maxAbs.toExponential(2), 11)}${pad(d.rms.toExponential(2), 11)}${pad(fixed(v.cpuNsPerEval, 2), 13)}${pad(fixed(v.gpuMsPerFrame, 2), 14)}${fixed(v.gpuRelative, 2)}${v.gpuRelative === null ? '' : '×'}`);
+    const what =
+      v.kind === 'reference'
+        ? 'reference'
+        : `${v.kind === 'difference' ? 'differs from' : 'error vs'} ${v.againstLabel}`;
+    console.log(
+      `  ${pad(v.label, 42)}${pad(what, 52)}${pad(d.maxAbs.toExponential(2), 11)}${pad(d.rms.toExponential(2), 11)}${pad(fixed(v.cpuNsPerEval, 2), 13)}${pad(fixed(v.gpuMsPerFrame, 2), 14)}${fixed(v.gpuRelative, 2)}${v.gpuRelative === null ? '' : '×'}`,
+    );
   }
 }
 if (familyKey) {
@@ -182,14 +231,25 @@ if (only === 'families') {
 }
 const { versusThree: vt, ibl, pages } = report;
 console.log(`\nSphere at ${vt.size}² with GGX + height-correlated Smith + Schlick + Lambert + one punctual light:`);
-console.log(`  ours ${vt.oursMsPerFrame.toFixed(2)} ms/frame, three.js MeshStandardMaterial ${vt.threeMsPerFrame.toFixed(2)} ms/frame: ratio ${vt.ratio.toFixed(2)}`);
-console.log(`\nImage-based lighting against the Monte Carlo reference (${ibl.setup.referenceSamples} samples/pixel), ${ibl.setup.resolution}² pixels, median of ${ibl.setup.timingRuns} runs:`);
+console.log(
+  `  ours ${vt.oursMsPerFrame.toFixed(2)} ms/frame, three.js MeshStandardMaterial ${vt.threeMsPerFrame.toFixed(2)} ms/frame: ratio ${vt.ratio.toFixed(2)}`,
+);
+console.log(
+  `\nImage-based lighting against the Monte Carlo reference (${ibl.setup.referenceSamples} samples/pixel), ${ibl.setup.resolution}² pixels, median of ${ibl.setup.timingRuns} runs:`,
+);
 console.log(`  ${pad('environment, material', 30)}${pad('method', 22)}${pad('GPU ms', 10)}${pad('RMS', 11)}relative`);
 for (const r of ibl.rows) {
   const method = r.samples ? `importance, N = ${r.samples}` : r.method;
-  console.log(`  ${pad(`${r.environment}, ${r.material} α ${r.alpha}`, 30)}${pad(method, 22)}${pad(r.ms.toFixed(2), 10)}${pad(r.rms.toExponential(2), 11)}${(r.relative * 100).toFixed(2)} %`);
+  console.log(
+    `  ${pad(`${r.environment}, ${r.material} α ${r.alpha}`, 30)}${pad(method, 22)}${pad(r.ms.toFixed(2), 10)}${pad(r.rms.toExponential(2), 11)}${(r.relative * 100).toFixed(2)} %`,
+  );
 }
-console.log(`\n  ${pad('page', 30)}${pad('JS (KiB, uncompressed)', 30)}${pad('files', 7)}${pad('load (ms)', 11)}first frame (ms)`);
-for (const p of pages) console.log(`  ${pad(p.page, 30)}${pad(p.jsKB.toFixed(0), 30)}${pad(p.jsFiles, 7)}${pad(p.loadMs.toFixed(0), 11)}${p.firstFrameMs === null ? '—' : p.firstFrameMs.toFixed(0)}`);
+console.log(
+  `\n  ${pad('page', 30)}${pad('JS (KiB, uncompressed)', 30)}${pad('files', 7)}${pad('load (ms)', 11)}first frame (ms)`,
+);
+for (const p of pages)
+  console.log(
+    `  ${pad(p.page, 30)}${pad(p.jsKB.toFixed(0), 30)}${pad(p.jsFiles, 7)}${pad(p.loadMs.toFixed(0), 11)}${p.firstFrameMs === null ? '—' : p.firstFrameMs.toFixed(0)}`,
+  );
 printMeasured(report.measured);
 console.log(`\nWrote ${out}`);

@@ -39,7 +39,10 @@ void main() {
 
 function program(expr, setup) {
   const p = gl.createProgram();
-  for (const [type, src] of [[gl.VERTEX_SHADER, VERT], [gl.FRAGMENT_SHADER, fragment(expr, setup)]]) {
+  for (const [type, src] of [
+    [gl.VERTEX_SHADER, VERT],
+    [gl.FRAGMENT_SHADER, fragment(expr, setup)],
+  ]) {
     const s = gl.createShader(type);
     gl.shaderSource(s, src);
     gl.compileShader(s);
@@ -93,7 +96,8 @@ const only = params.get('family'); // one family alone (npm run bench -- --famil
 const results = {};
 for (const family of FAMILIES.filter((f) => !only || f.key === only)) {
   results[family.key] = {};
-  for (const v of family.variants.filter((w) => w.glsl)) results[family.key][v.key] = timeFrames(bindTables(program(v.glsl, family.gpu), family.gpu?.tables));
+  for (const v of family.variants.filter((w) => w.glsl))
+    results[family.key][v.key] = timeFrames(bindTables(program(v.glsl, family.gpu), family.gpu?.tables));
 }
 window.__gpuBench = {
   done: true,

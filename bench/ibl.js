@@ -19,24 +19,44 @@ export async function measureIbl({ quick }) {
   const rows = [];
   try {
     for (const c of quick ? CASES.slice(0, 1) : CASES) {
-      const page = await openPage(browser, server.url, `embed.html?w=material-lab&material=${c.material}&alpha=${c.alpha}&environment=${c.environment}&refSamples=${refSamples}`, { width: 1100, height: 700 });
-      await page.waitForFunction(() => {
-        const lab = globalThis.__shadingLab?.widgets?.['material-lab'];
-        const p = lab?.getProgress();
-        return p && p.frame >= p.target;
-      }, { timeout: 900_000, polling: 500 });
+      const page = await openPage(
+        browser,
+        server.url,
+        `embed.html?w=material-lab&material=${c.material}&alpha=${c.alpha}&environment=${c.environment}&refSamples=${refSamples}`,
+        { width: 1100, height: 700 },
+      );
+      await page.waitForFunction(
+        () => {
+          const lab = globalThis.__shadingLab?.widgets?.['material-lab'];
+          const p = lab?.getProgress();
+          return p && p.frame >= p.target;
+        },
+        { timeout: 900_000, polling: 500 },
+      );
       for (const [method, samples] of quick ? METHODS.slice(1, 2) : METHODS) {
-        const stats = await page.evaluate(async (method, samples, runs) => {
-          const lab = globalThis.__shadingLab.widgets['material-lab'];
-          lab.update({ envMethod: method, samples });
-          lab.remeasure(runs);
-          for (;;) {
-            await new Promise((r) => setTimeout(r, 100));
-            const s = lab.getStats();
-            if (s.method === method && s.samplesN === samples && s.timingRuns === runs) return s;
-          }
-        }, method, samples, runs);
-        rows.push({ ...c, method, samples: method === 'importance' ? samples : null, ms: stats.ms, rms: stats.rms, relative: stats.relative });
+        const stats = await page.evaluate(
+          async (method, samples, runs) => {
+            const lab = globalThis.__shadingLab.widgets['material-lab'];
+            lab.update({ envMethod: method, samples });
+            lab.remeasure(runs);
+            for (;;) {
+              await new Promise((r) => setTimeout(r, 100));
+              const s = lab.getStats();
+              if (s.method === method && s.samplesN === samples && s.timingRuns === runs) return s;
+            }
+          },
+          method,
+          samples,
+          runs,
+        );
+        rows.push({
+          ...c,
+          method,
+          samples: method === 'importance' ? samples : null,
+          ms: stats.ms,
+          rms: stats.rms,
+          relative: stats.relative,
+        });
       }
       if (page.errors.length) throw new Error(page.errors.join('\n'));
       await settle(page, 100);

@@ -23,7 +23,10 @@ const QUICK = { media: '&samples=16', 'material-lab': '&refSamples=128', 'lighti
 const DRAGS = {
   'fresnel-curves': ['ior', 1.2, 2.4],
   'fresnel-zones': ['lightTheta', 20, 120],
-  'f0-tables': ['selected', ['gold', 'silver', 'copper', 'iron', 'aluminum', 'water', 'glass-low', 'plastic-high', 'glass-high', 'diamond']],
+  'f0-tables': [
+    'selected',
+    ['gold', 'silver', 'copper', 'iron', 'aluminum', 'water', 'glass-low', 'plastic-high', 'glass-high', 'diamond'],
+  ],
   media: ['distance', -2, 1],
   surfaces: ['theta', 10, 70],
   'subsurface-scale': ['sigmaS', 1, 10],
@@ -42,7 +45,9 @@ function dragValues(name) {
   const drag = DRAGS[name];
   if (!drag) throw new Error(`bench/latency.js: add the drag of ${name} to DRAGS`);
   const [key, from, to] = drag;
-  const values = Array.isArray(from) ? [...from, ...from].slice(0, STEPS) : Array.from({ length: STEPS }, (_, i) => from + ((to - from) * i) / (STEPS - 1));
+  const values = Array.isArray(from)
+    ? [...from, ...from].slice(0, STEPS)
+    : Array.from({ length: STEPS }, (_, i) => from + ((to - from) * i) / (STEPS - 1));
   return { key, values };
 }
 
@@ -101,15 +106,24 @@ try {
   for (const name of Object.keys(WIDGETS).filter((n) => !only.length || only.includes(n))) {
     rows.push(await measure(browser, server.url, name));
     const r = rows.at(-1);
-    console.log(`${r.widget.padEnd(22)}${r.key.padEnd(14)}median ${r.medianMs.toFixed(1).padStart(7)} ms   worst ${r.worstMs.toFixed(1).padStart(7)} ms${r.progressive ? '   (progressive)' : ''}`);
+    console.log(
+      `${r.widget.padEnd(22)}${r.key.padEnd(14)}median ${r.medianMs.toFixed(1).padStart(7)} ms   worst ${r.worstMs.toFixed(1).padStart(7)} ms${r.progressive ? '   (progressive)' : ''}`,
+    );
   }
 } finally {
   await browser.close();
   server.close();
 }
 const slow = rows.filter((r) => !r.progressive && r.medianMs > TARGET_MS).map((r) => r.widget);
-console.log(slow.length ? `Over ${TARGET_MS} ms (median, not progressive): ${slow.join(', ')}` : `Every non-progressive widget within ${TARGET_MS} ms (median).`);
+console.log(
+  slow.length
+    ? `Over ${TARGET_MS} ms (median, not progressive): ${slow.join(', ')}`
+    : `Every non-progressive widget within ${TARGET_MS} ms (median).`,
+);
 const out = join(ROOT, 'bench/results', only.length ? 'latency-partial.json' : 'latency.json');
 mkdirSync(join(ROOT, 'bench/results'), { recursive: true });
-writeFileSync(out, `${JSON.stringify({ date: new Date().toISOString(), steps: STEPS, targetMs: TARGET_MS, rows }, null, 1)}\n`);
+writeFileSync(
+  out,
+  `${JSON.stringify({ date: new Date().toISOString(), steps: STEPS, targetMs: TARGET_MS, rows }, null, 1)}\n`,
+);
 console.log(`Wrote ${out}`);

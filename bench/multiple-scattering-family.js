@@ -18,9 +18,11 @@ const tableOnce = () => (table ??= M.buildAlbedoTableGGX());
 /** One walk per (mu, alpha), all six channels on the same paths, seeded by position in the grid. */
 function walkAll() {
   const out = new Map();
-  MUS.forEach((mu, i) => ALPHAS.forEach((alpha, j) => {
-    out.set(`${mu} ${alpha}`, M.randomWalkAlbedoGGX(mu, alpha, CHANNELS, walkSamples, 1 + i * ALPHAS.length + j));
-  }));
+  MUS.forEach((mu, i) =>
+    ALPHAS.forEach((alpha, j) => {
+      out.set(`${mu} ${alpha}`, M.randomWalkAlbedoGGX(mu, alpha, CHANNELS, walkSamples, 1 + i * ALPHAS.length + j));
+    }),
+  );
   return out;
 }
 
@@ -51,18 +53,33 @@ export const MULTIPLE_SCATTERING_FAMILY = {
   },
   // what the GPU pass needs besides the default chunks: the table, bound as a texture
   gpu: {
-    chunk: 'multiple-scattering.glsl', defines: { ALBEDO_TABLE_GGX: true }, tables: { uAlbedoTableGGX: tableOnce },
+    chunk: 'multiple-scattering.glsl',
+    defines: { ALBEDO_TABLE_GGX: true },
+    tables: { uAlbedoTableGGX: tableOnce },
   },
   variants: [
     {
-      key: 'walk', label: 'Random walk (Heitz et al. 2016)', kind: 'reference', model: MODEL,
+      key: 'walk',
+      label: 'Random walk (Heitz et al. 2016)',
+      kind: 'reference',
+      model: MODEL,
       // run once for the whole grid (~25 s), not per evaluation and not on the GPU: no cost columns
-      untimed: true, glsl: null, js: (mu, alpha, f0, channel) => walkOnce().get(`${mu} ${alpha}`).albedo[channel],
+      untimed: true,
+      glsl: null,
+      js: (mu, alpha, f0, channel) => walkOnce().get(`${mu} ${alpha}`).albedo[channel],
     },
-    ...[['none', 'Single scattering only', 'specularAlbedoGGX'], ['kullaConty', 'Kulla & Conty 2017', 'specularAlbedoKullaConty'],
-      ['turquin', 'Turquin 2019', 'specularAlbedoTurquin']].map(([compensation, label, glsl]) => ({
-      key: compensation === 'kullaConty' ? 'kulla-conty' : compensation, label, kind: 'approximation', against: 'walk', model: MODEL,
-      js: fromTable(compensation), glsl: `${glsl}(x, 0.05 + 0.95 * y, 0.5)`,
+    ...[
+      ['none', 'Single scattering only', 'specularAlbedoGGX'],
+      ['kullaConty', 'Kulla & Conty 2017', 'specularAlbedoKullaConty'],
+      ['turquin', 'Turquin 2019', 'specularAlbedoTurquin'],
+    ].map(([compensation, label, glsl]) => ({
+      key: compensation === 'kullaConty' ? 'kulla-conty' : compensation,
+      label,
+      kind: 'approximation',
+      against: 'walk',
+      model: MODEL,
+      js: fromTable(compensation),
+      glsl: `${glsl}(x, 0.05 + 0.95 * y, 0.5)`,
     })),
   ],
 };

@@ -8,7 +8,9 @@ const rows = new Map();
 for (const args of family.inputs) {
   const [, , f0, channel] = args;
   const ref = reference.js(...args);
-  const row = rows.get(channel) ?? rows.set(channel, { label: f0Label(f0, channel), errors: approximations.map(() => []) }).get(channel);
+  const row =
+    rows.get(channel) ??
+    rows.set(channel, { label: f0Label(f0, channel), errors: approximations.map(() => []) }).get(channel);
   approximations.forEach((v, i) => row.errors[i].push(v.js(...args) - ref));
 }
 const pad = (s, n) => String(s).padEnd(n);

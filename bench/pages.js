@@ -2,7 +2,22 @@
 // time to its first frame (the render loop's first draw) or, for pages without a 3-D view, to load.
 import { buildApp, launchBrowser, openPage, serveStatic, settle } from '../tests/browser/harness.js';
 
-export const MEASURED_PAGES = ['index.html', 'media.html', 'surfaces.html', 'brdf.html', 'microfacets.html', 'fresnel.html', 'ndf.html', 'visibility.html', 'diffuse.html', 'rendering.html', 'performance.html', 'exercises.html', 'embed.html?w=fresnel-zones', 'parity.html'];
+export const MEASURED_PAGES = [
+  'index.html',
+  'media.html',
+  'surfaces.html',
+  'brdf.html',
+  'microfacets.html',
+  'fresnel.html',
+  'ndf.html',
+  'visibility.html',
+  'diffuse.html',
+  'rendering.html',
+  'performance.html',
+  'exercises.html',
+  'embed.html?w=fresnel-zones',
+  'parity.html',
+];
 
 /** Timestamps the first frame the app's render loop draws (it counts frames in __shadingLab.frames). */
 function recordFirstFrame() {
@@ -24,19 +39,23 @@ export async function measurePages() {
   const rows = [];
   try {
     for (const path of MEASURED_PAGES) {
-      const page = await openPage(browser, server.url, path, { beforeLoad: (p) => p.evaluateOnNewDocument(recordFirstFrame) });
+      const page = await openPage(browser, server.url, path, {
+        beforeLoad: (p) => p.evaluateOnNewDocument(recordFirstFrame),
+      });
       await settle(page, 2500);
-      rows.push(await page.evaluate((p) => {
-        const js = performance.getEntriesByType('resource').filter((r) => r.name.endsWith('.js'));
-        const nav = performance.getEntriesByType('navigation')[0];
-        return {
-          page: p,
-          jsKB: js.reduce((s, r) => s + r.encodedBodySize, 0) / 1024,
-          jsFiles: js.length,
-          loadMs: nav.loadEventEnd,
-          firstFrameMs: globalThis.__shadingLab.firstFrameAt,
-        };
-      }, path));
+      rows.push(
+        await page.evaluate((p) => {
+          const js = performance.getEntriesByType('resource').filter((r) => r.name.endsWith('.js'));
+          const nav = performance.getEntriesByType('navigation')[0];
+          return {
+            page: p,
+            jsKB: js.reduce((s, r) => s + r.encodedBodySize, 0) / 1024,
+            jsFiles: js.length,
+            loadMs: nav.loadEventEnd,
+            firstFrameMs: globalThis.__shadingLab.firstFrameAt,
+          };
+        }, path),
+      );
       await page.close();
     }
   } finally {

@@ -17,18 +17,25 @@ const lines = [
 if (report.familiesMeasured) {
   const { date, timedCpu } = report.familiesMeasured;
   const date0 = report.date.slice(0, 10);
-  lines.push(`The term families' ${timedCpu ? 'errors and CPU costs' : 'errors'} below were measured again on ` +
-    `${date.slice(0, 10)} (\`npm run bench -- --only families\`); their ${timedCpu ? 'GPU columns are' : 'costs are'} ` +
-    `from the full run${iblStaleNote(report.date) ? `, as are the image-based lighting rows (${date0})` : ''}.`,
-    '');
+  lines.push(
+    `The term families' ${timedCpu ? 'errors and CPU costs' : 'errors'} below were measured again on ` +
+      `${date.slice(0, 10)} (\`npm run bench -- --only families\`); their ${timedCpu ? 'GPU columns are' : 'costs are'} ` +
+      `from the full run${iblStaleNote(report.date) ? `, as are the image-based lighting rows (${date0})` : ''}.`,
+    '',
+  );
 }
-const HEAD = (first, what) => [`| ${first} | ${what === 'error' ? 'error against' : 'difference from'} | max \\|${what}\\| | RMS | ` +
-  'CPU ns/eval | GPU relative |', '|---|---|---|---|---|---|'];
+const HEAD = (first, what) => [
+  `| ${first} | ${what === 'error' ? 'error against' : 'difference from'} | max \\|${what}\\| | RMS | ` +
+    'CPU ns/eval | GPU relative |',
+  '|---|---|---|---|---|---|',
+];
 const row = (v, m) => {
   const reference = v.kind === 'reference';
-  return `| ${esc(v.label)} | ${reference ? 'reference' : esc(v.againstLabel)} | ${reference ? '0' : m.maxAbs.toExponential(2)} | ` +
+  return (
+    `| ${esc(v.label)} | ${reference ? 'reference' : esc(v.againstLabel)} | ${reference ? '0' : m.maxAbs.toExponential(2)} | ` +
     `${m.rms.toExponential(2)} | ${v.cpuNsPerEval === null ? '— (run offline)' : v.cpuNsPerEval.toFixed(0)} | ` +
-    `${v.gpuRelative === null ? '—' : `${v.gpuRelative.toFixed(2)}×`} |`;
+    `${v.gpuRelative === null ? '—' : `${v.gpuRelative.toFixed(2)}×`} |`
+  );
 };
 for (const f of report.families) {
   const others = f.variants.filter((v) => v.kind === 'difference');
@@ -44,14 +51,17 @@ for (const f of report.families) {
   lines.push('');
 }
 lines.push(
-  '**Image-based lighting against the reference.** The material lab\'s environment methods on a ' +
+  "**Image-based lighting against the reference.** The material lab's environment methods on a " +
     `${ibl.setup.resolution}² sphere against its Monte Carlo reference (${ibl.setup.referenceSamples} samples per pixel, multiple importance ` +
     `sampling of the BRDF and the map); GPU time of the method's pass, median of ${ibl.setup.timingRuns}; RMS error over the sphere, in radiance ` +
     `and relative to the reference's RMS.${iblStaleNote(report.date) ? ` ${iblStaleNote(report.date)}` : ''}`,
   '',
   '| environment, material | method | GPU ms | RMS | relative |',
   '|---|---|---|---|---|',
-  ...ibl.rows.map((r) => `| ${r.environment}, ${r.material} α ${r.alpha} | ${r.samples ? `importance, N = ${r.samples}` : r.method} | ${r.ms.toFixed(1)} | ${r.rms.toExponential(2)} | ${(r.relative * 100).toFixed(1)} % |`),
+  ...ibl.rows.map(
+    (r) =>
+      `| ${r.environment}, ${r.material} α ${r.alpha} | ${r.samples ? `importance, N = ${r.samples}` : r.method} | ${r.ms.toFixed(1)} | ${r.rms.toExponential(2)} | ${(r.relative * 100).toFixed(1)} % |`,
+  ),
   '',
   `**Against three.js.** A sphere at ${vt.size}² with the terms of MeshStandardMaterial (GGX, height-correlated Smith, Schlick with ` +
     `F0 = 0.04, Lambert, one punctual light): this app's shader ${vt.oursMsPerFrame.toFixed(1)} ms per frame, MeshStandardMaterial ` +
@@ -62,12 +72,18 @@ lines.push(
   '',
   '| page | JS (KiB, uncompressed) | load (ms) | first 3-D frame (ms) |',
   '|---|---|---|---|',
-  ...report.pages.map((p) => `| \`${p.page}\` | ${p.jsKB.toFixed(0)} | ${p.loadMs.toFixed(0)} | ${p.firstFrameMs === null ? '—' : p.firstFrameMs.toFixed(0)} |`),
+  ...report.pages.map(
+    (p) =>
+      `| \`${p.page}\` | ${p.jsKB.toFixed(0)} | ${p.loadMs.toFixed(0)} | ${p.firstFrameMs === null ? '—' : p.firstFrameMs.toFixed(0)} |`,
+  ),
 );
 
 const path = join(ROOT, 'README.md');
 const readme = readFileSync(path, 'utf8');
 const [begin, end] = ['<!-- bench:begin -->', '<!-- bench:end -->'];
 if (!readme.includes(begin) || !readme.includes(end)) throw new Error(`README.md has no ${begin} … ${end} block`);
-writeFileSync(path, `${readme.slice(0, readme.indexOf(begin) + begin.length)}\n${lines.join('\n')}\n${readme.slice(readme.indexOf(end))}`);
+writeFileSync(
+  path,
+  `${readme.slice(0, readme.indexOf(begin) + begin.length)}\n${lines.join('\n')}\n${readme.slice(readme.indexOf(end))}`,
+);
 console.log('README.md: measured tables rewritten from bench/results/latest.json');

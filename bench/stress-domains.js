@@ -17,16 +17,40 @@ const unit = (x, y, z) => {
   return [x / n, y / n, z / n];
 };
 // direction pairs with the degenerate cases: l = v, l = -v, mirror, grazing, below the horizon
-const DIRS = [[0, 0, 1], [1, 0, 0], unit(1, 0, 1e-7), unit(0.6, 0, 0.8), unit(-0.6, 0, 0.8), unit(0, 0.6, 0.8), [0, 0, -1], unit(1, 0, -1)];
+const DIRS = [
+  [0, 0, 1],
+  [1, 0, 0],
+  unit(1, 0, 1e-7),
+  unit(0.6, 0, 0.8),
+  unit(-0.6, 0, 0.8),
+  unit(0, 0.6, 0.8),
+  [0, 0, -1],
+  unit(1, 0, -1),
+];
 const PAIRS = DIRS.flatMap((l) => [...DIRS.map((v) => [l, v]), [l, l.map((x) => -x)]]);
 
 const D_KINDS = ['ggx', 'beckmann', 'blinnPhong', 'abc', 'sgd'];
-const V_KINDS = ['implicit', 'cookTorrance', 'kelemen', 'smithGGXSeparable', 'smithGGXCorrelated', 'smithGGXCorrelatedFast', 'schlickGGX', 'smithBeckmannSeparable'];
-const BRDF_PARAMS = D_KINDS.flatMap((D) => V_KINDS.flatMap((V) => [0, 1e-4, 0.3, 1].map((alpha) => ({ F: 'schlick', D, V, alpha, f0: 0.04, exponent: 1e4, a1: 1e4, a2: 3, p: 1.9 }))));
+const V_KINDS = [
+  'implicit',
+  'cookTorrance',
+  'kelemen',
+  'smithGGXSeparable',
+  'smithGGXCorrelated',
+  'smithGGXCorrelatedFast',
+  'schlickGGX',
+  'smithBeckmannSeparable',
+];
+const BRDF_PARAMS = D_KINDS.flatMap((D) =>
+  V_KINDS.flatMap((V) =>
+    [0, 1e-4, 0.3, 1].map((alpha) => ({ F: 'schlick', D, V, alpha, f0: 0.04, exponent: 1e4, a1: 1e4, a2: 3, p: 1.9 })),
+  ),
+);
 
 const ZERO_TO_ONE = [0, 1];
 const SPLIT_SUM_TERMS = [
-  {}, { ndf: 'beckmann', visibility: 'cookTorrance' }, { visibility: 'kelemen' },
+  {},
+  { ndf: 'beckmann', visibility: 'cookTorrance' },
+  { visibility: 'kelemen' },
   { visibility: 'smithBeckmannSeparable' },
 ];
 const NON_NEGATIVE = [0, Infinity];
@@ -46,7 +70,13 @@ export const STRESS_DOMAINS = {
   fresnelConductor: { args: [COS, ETA, K], range: ZERO_TO_ONE },
   f0FromIor: { args: [ETA, K], range: ZERO_TO_ONE },
   iorFromF0: { args: [[-1, 0, 0.04, 0.999, 1, 2]], range: [1, Infinity] },
-  conductorIorFromF0EdgeTint: { args: [[-1, 0, 0.5, 0.999, 1, 2], [-1, 0, 0.5, 1, 2]], range: NON_NEGATIVE },
+  conductorIorFromF0EdgeTint: {
+    args: [
+      [-1, 0, 0.5, 0.999, 1, 2],
+      [-1, 0, 0.5, 1, 2],
+    ],
+    range: NON_NEGATIVE,
+  },
   edgeTintFromConductorIor: { args: [[0.01, 0.5, 1, 3, 100], K], range: FINITE },
   fresnelZone: { args: [COS], range: [0, 2] },
   sphereZoneFractions: { args: [], range: ZERO_TO_ONE },
@@ -60,9 +90,21 @@ export const STRESS_DOMAINS = {
   ndfBlinnPhong: { args: [COS, EXPONENT], range: NON_NEGATIVE },
   ndfBlinnPhongFromSin2: { args: [COS, [0, 1e-300, 1e-12, 0.5, 1], EXPONENT], range: NON_NEGATIVE },
   ndfABC: { args: [COS, ABC, ABC], range: NON_NEGATIVE },
-  abcNormalization: { args: [[0.01, 0.5, 1, 1e4], [0.05, 1, 2, 20]], range: [0, 1] },
+  abcNormalization: {
+    args: [
+      [0.01, 0.5, 1, 1e4],
+      [0.05, 1, 2, 20],
+    ],
+    range: [0, 1],
+  },
   ndfSGD: { args: [COS, ALPHA, SGD_P], range: NON_NEGATIVE },
-  sgdNormalization: { args: [[0.01, 0.3, 2], [0, 0.64, 1, 1.9]], range: NON_NEGATIVE },
+  sgdNormalization: {
+    args: [
+      [0.01, 0.3, 2],
+      [0, 0.64, 1, 1.9],
+    ],
+    range: NON_NEGATIVE,
+  },
   blinnPhongExponentFromBeckmannAlpha: { args: [ALPHA], range: NON_NEGATIVE },
   beckmannAlphaFromBlinnPhongExponent: { args: [EXPONENT], range: [1e-4, 1] },
   ndfParamsMatchingGGX: { args: [D_KINDS, [1e-3, 0.05, 0.5, 1]], range: NON_NEGATIVE },
@@ -83,13 +125,28 @@ export const STRESS_DOMAINS = {
   halfVector: { pairs: PAIRS, range: [-1, 1], nullable: true },
   brdfAngles: { pairs: PAIRS, range: [-1, 1] },
   halfDiffAngles: { pairs: PAIRS.filter(([l, v]) => l.some((x, i) => x !== -v[i])), range: [0, Math.PI] },
-  halfDiffFromDirections: { pairs: PAIRS.filter(([l, v]) => l.some((x, i) => x !== -v[i])), range: [-Math.PI, Math.PI] },
+  halfDiffFromDirections: {
+    pairs: PAIRS.filter(([l, v]) => l.some((x, i) => x !== -v[i])),
+    range: [-Math.PI, Math.PI],
+  },
   reflect: { pairs: PAIRS, range: [-1, 1] },
   microfacetBRDF: { pairs: PAIRS, params: BRDF_PARAMS, range: NON_NEGATIVE },
   microfacetTerms: { pairs: PAIRS, params: BRDF_PARAMS, pick: ['F', 'D', 'V', 'G'], range: NON_NEGATIVE },
-  microfacetTermsAt: { tuples: COS.flatMap((c) => BRDF_PARAMS.slice(0, 40).map((p) => [{ nl: c, nv: c, nh: c, lh: c }, p])), pick: ['F', 'D', 'V', 'G'], range: NON_NEGATIVE },
-  microfacetBRDFAt: { tuples: COS.flatMap((c) => BRDF_PARAMS.map((p) => [{ nl: c, nv: 1 - c / 3, nh: c, lh: c }, p])), range: NON_NEGATIVE },
-  microfacetFactors: { pairs: PAIRS, params: BRDF_PARAMS, use: { F: true, D: true, G: true, denominator: true }, range: NON_NEGATIVE },
+  microfacetTermsAt: {
+    tuples: COS.flatMap((c) => BRDF_PARAMS.slice(0, 40).map((p) => [{ nl: c, nv: c, nh: c, lh: c }, p])),
+    pick: ['F', 'D', 'V', 'G'],
+    range: NON_NEGATIVE,
+  },
+  microfacetBRDFAt: {
+    tuples: COS.flatMap((c) => BRDF_PARAMS.map((p) => [{ nl: c, nv: 1 - c / 3, nh: c, lh: c }, p])),
+    range: NON_NEGATIVE,
+  },
+  microfacetFactors: {
+    pairs: PAIRS,
+    params: BRDF_PARAMS,
+    use: { F: true, D: true, G: true, denominator: true },
+    range: NON_NEGATIVE,
+  },
   brdf: { pairs: PAIRS, params: BRDF_PARAMS, range: NON_NEGATIVE },
   diffuseLambert: { args: [SRGB], range: [0, 1 / Math.PI] },
   diffuseFresnelWeighted: { args: [COS, COS, F0, SRGB], range: [0, 1 / Math.PI] },
@@ -101,49 +158,190 @@ export const STRESS_DOMAINS = {
   directionsFromHalfDiff: { args: [ANGLE, ANGLE, ANGLE], range: [-1, 1] },
   sampleGGXNormal: { args: [[0, 0.5, 1 - 1e-12], [0, 0.5, 1], ALPHA], range: [-1, 1] },
   sampleBeckmannNormal: { args: [[0, 0.5, 1 - 1e-12], [0, 0.5, 1], ALPHA], range: [-1, 1] },
-  hammersley: { tuples: [[0, 1], [0, 256], [255, 256], [2 ** 31, 2 ** 32], [2 ** 32 - 1, 2 ** 32]], range: ZERO_TO_ONE },
+  hammersley: {
+    tuples: [
+      [0, 1],
+      [0, 256],
+      [255, 256],
+      [2 ** 31, 2 ** 32],
+      [2 ** 32 - 1, 2 ** 32],
+    ],
+    range: ZERO_TO_ONE,
+  },
   albedoGGX: { args: [COS, ALPHA], range: ZERO_TO_ONE },
   // a mismatched pair (GGX's D with Beckmann's Smith) sends back up to ~1.6 at grazing
   dfgSplitSum: { args: [COS, ALPHA, SPLIT_SUM_TERMS], range: [0, 2] },
   dfgTableUv: { args: [COS, ALPHA], range: ZERO_TO_ONE },
-  sampleCosine: { args: [[0, 0.5, 1 - 1e-12, 1], [0, 0.5, 1]], range: [-1, 1] },
-  sampleCone: { args: [[0, 0.5, 1], [0, 0.5, 1], [-1, 0, 0.9999, 1]], range: [-1, 1] },
-  sphereLightCLight: { args: [[0, 1, 1e4], [0, 1e-4, 0.05, 1]], range: NON_NEGATIVE },
-  sphereLightRepresentativeDir: { tuples: PAIRS.flatMap(([r, d]) => [0, 1e-4, 0.05, 1].map((s) => [r, d, s])), range: [-1, 1] },
+  sampleCosine: {
+    args: [
+      [0, 0.5, 1 - 1e-12, 1],
+      [0, 0.5, 1],
+    ],
+    range: [-1, 1],
+  },
+  sampleCone: {
+    args: [
+      [0, 0.5, 1],
+      [0, 0.5, 1],
+      [-1, 0, 0.9999, 1],
+    ],
+    range: [-1, 1],
+  },
+  sphereLightCLight: {
+    args: [
+      [0, 1, 1e4],
+      [0, 1e-4, 0.05, 1],
+    ],
+    range: NON_NEGATIVE,
+  },
+  sphereLightRepresentativeDir: {
+    tuples: PAIRS.flatMap(([r, d]) => [0, 1e-4, 0.05, 1].map((s) => [r, d, s])),
+    range: [-1, 1],
+  },
   equirectUv: { tuples: DIRS.map((d) => [d]), range: ZERO_TO_ONE },
-  equirectDirection: { args: [[0, 0.25, 1], [0, 0.5, 1]], range: [-1, 1] },
+  equirectDirection: {
+    args: [
+      [0, 0.25, 1],
+      [0, 0.5, 1],
+    ],
+    range: [-1, 1],
+  },
   sphereLightNormalization: { args: [ALPHA, [0, 1e-4, 0.05, 1]], range: ZERO_TO_ONE },
-  transmittance: { args: [[-1, 0, 1e-9, 0.3, 1e3], [-1, 0, 1, 1e6]], range: ZERO_TO_ONE },
-  opticalDepth: { args: [[-1, 0, 0.3, 1e3], [-1, 0, 1, 1e6]], range: NON_NEGATIVE },
-  scatteringAlbedo: { args: [[-1, 0, 1, 1e6], [-1, 0, 1, 1e6]], range: ZERO_TO_ONE },
+  transmittance: {
+    args: [
+      [-1, 0, 1e-9, 0.3, 1e3],
+      [-1, 0, 1, 1e6],
+    ],
+    range: ZERO_TO_ONE,
+  },
+  opticalDepth: {
+    args: [
+      [-1, 0, 0.3, 1e3],
+      [-1, 0, 1, 1e6],
+    ],
+    range: NON_NEGATIVE,
+  },
+  scatteringAlbedo: {
+    args: [
+      [-1, 0, 1, 1e6],
+      [-1, 0, 1, 1e6],
+    ],
+    range: ZERO_TO_ONE,
+  },
   meanFreePath: { args: [[-1, 0, 1e-9, 1, 1e6]], range: [0, Infinity], allowInfinity: true },
-  absorptionFromK: { args: [[0, 1e-9, 1], [0.4, 0.7]], range: NON_NEGATIVE },
+  absorptionFromK: {
+    args: [
+      [0, 1e-9, 1],
+      [0.4, 0.7],
+    ],
+    range: NON_NEGATIVE,
+  },
   waterAbsorptionRgb: { args: [], range: NON_NEGATIVE },
   lambertianEntryAngle2D: { args: [[() => 0, () => 0.5, () => 1 - 1e-12]], range: [-Math.PI / 2, Math.PI / 2] },
-  slopeDensity: { args: [['beckmann', 'ggx'], [0.01, 0.3, 1], [-1e6, -1, 0, 1, 1e6]], range: NON_NEGATIVE },
-  reflectedAngleDensity: { args: [[-Math.PI, -1, 0, 1, Math.PI], [0, 0.7, 1.5], ['beckmann', 'ggx'], [0.05, 0.5], [(c, a) => c ** a]], range: NON_NEGATIVE },
-  segmentNormal: { tuples: [[[0, 1, -5, 1e6], 0], [[0, 1, -5, 1e6], 1], [[0, 1, -5, 1e6], 2]], range: [-1, 1] },
+  slopeDensity: {
+    args: [
+      ['beckmann', 'ggx'],
+      [0.01, 0.3, 1],
+      [-1e6, -1, 0, 1, 1e6],
+    ],
+    range: NON_NEGATIVE,
+  },
+  reflectedAngleDensity: {
+    args: [[-Math.PI, -1, 0, 1, Math.PI], [0, 0.7, 1.5], ['beckmann', 'ggx'], [0.05, 0.5], [(c, a) => c ** a]],
+    range: NON_NEGATIVE,
+  },
+  segmentNormal: {
+    tuples: [
+      [[0, 1, -5, 1e6], 0],
+      [[0, 1, -5, 1e6], 1],
+      [[0, 1, -5, 1e6], 2],
+    ],
+    range: [-1, 1],
+  },
   heightBounds: { tuples: [[[0, 3, -2, 7]], [[5]]], range: FINITE },
   averageAlbedoGGX: { args: [ALPHA], range: ZERO_TO_ONE },
-  multipleScatteringFromLoss: { args: [[-0.5, 0, 1e-7, 0.3, 1, 1.5], [-0.5, 0, 1e-7, 0.3, 1, 1.5], [-0.5, 0, 1e-7, 0.59, 1, 1.5]], range: NON_NEGATIVE },
+  multipleScatteringFromLoss: {
+    args: [
+      [-0.5, 0, 1e-7, 0.3, 1, 1.5],
+      [-0.5, 0, 1e-7, 0.3, 1, 1.5],
+      [-0.5, 0, 1e-7, 0.59, 1, 1.5],
+    ],
+    range: NON_NEGATIVE,
+  },
   multipleScatteringKullaConty: { args: [COS, COS, ALPHA], range: NON_NEGATIVE },
   fresnelAverage: { args: [F0], range: ZERO_TO_ONE },
   fresnelMultipleScatteringKullaConty: { args: [F0, [0, 1e-7, 0.4, 1]], range: ZERO_TO_ONE },
   energyCompensationTurquin: { args: [F0, [-1, 0, 1e-7, 0.3, 1, 1.5]], range: [1, 1e4] },
   compensatedAlbedoGGX: { args: [COS, ALPHA, F0, ['none', 'kullaConty', 'turquin']], range: ZERO_TO_ONE },
-  sampleVisibleNormalGGX: { tuples: DIRS.flatMap((d) => ALPHA.flatMap((a) => [[0, 0], [0.5, 0.3], [1 - 1e-12, 1]].map(([u, w]) => [d, a, u, w]))), range: [-1, 1] },
+  sampleVisibleNormalGGX: {
+    tuples: DIRS.flatMap((d) =>
+      ALPHA.flatMap((a) =>
+        [
+          [0, 0],
+          [0.5, 0.3],
+          [1 - 1e-12, 1],
+        ].map(([u, w]) => [d, a, u, w]),
+      ),
+    ),
+    range: [-1, 1],
+  },
   randomWalkAlbedoGGX: {
     tuples: COS.flatMap((mu) => ALPHA.flatMap((a) => [0, 1, [1, 0.71, 0.29]].map((f0) => [mu, a, f0, 100, 1]))),
-    pick: ['albedo', 'single', 'standardError', 'singleStandardError', 'dropped'], range: ZERO_TO_ONE,
+    pick: ['albedo', 'single', 'standardError', 'singleStandardError', 'dropped'],
+    range: ZERO_TO_ONE,
   },
   buildAlbedoTableGGX: { tuples: [[2], [3]], pick: ['data'], range: ZERO_TO_ONE },
   tableSplitSum: { args: [COS, ALPHA], range: ZERO_TO_ONE },
-  albedoLossTableGGX: { tuples: [-1, 0, 1e-7, 0.5, 1, 1.5].flatMap((mu) => ALPHA.map((a) => [{ size: 2, data: new Float32Array([0.1, 0.2, 0, 1, 0.3, 0.2, 0.1, 1, 0, 0, 0, 1, 0.05, 0, 0.2, 1]) }, mu, a])), range: ZERO_TO_ONE },
-  specularAlbedoFromTable: { tuples: [0, 1e-7, 0.5, 1].flatMap((mu) => F0.flatMap((f0) => ['none', 'kullaConty', 'turquin'].map((c) => [{ size: 2, data: new Float32Array([0.1, 0.2, 0, 1, 0.3, 0.2, 0.1, 1, 0, 0, 0, 1, 0.05, 0, 0.2, 1]) }, mu, 0.5, f0, c]))), range: ZERO_TO_ONE },
-  randomWalkBRDFGGX: { tuples: PAIRS.flatMap(([l, v]) => [0, 1e-4, 0.3, 1].map((a) => [l, v, a, 0.5, 20, 1])), range: NON_NEGATIVE },
-  sphereSolidAngle: { args: [[-1, 0, 1e-9, 1, 1e6], [-1, 0, 1e-9, 1, 1e6]], range: [0, 2 * Math.PI] },
-  sphereLightIrradiance: { args: [[-1, 0, 1, 1e6], [-1, 0, 1e-9, 1, 1e6], [-1, 0, 1e-9, 1, 1e6]], range: NON_NEGATIVE },
-  planckRadiance: { args: [[-1, 0, 1e-3, 380, 780, 1e6], [-1, 0, 1, 1000, 6500, 1e6]], range: NON_NEGATIVE },
+  albedoLossTableGGX: {
+    tuples: [-1, 0, 1e-7, 0.5, 1, 1.5].flatMap((mu) =>
+      ALPHA.map((a) => [
+        { size: 2, data: new Float32Array([0.1, 0.2, 0, 1, 0.3, 0.2, 0.1, 1, 0, 0, 0, 1, 0.05, 0, 0.2, 1]) },
+        mu,
+        a,
+      ]),
+    ),
+    range: ZERO_TO_ONE,
+  },
+  specularAlbedoFromTable: {
+    tuples: [0, 1e-7, 0.5, 1].flatMap((mu) =>
+      F0.flatMap((f0) =>
+        ['none', 'kullaConty', 'turquin'].map((c) => [
+          { size: 2, data: new Float32Array([0.1, 0.2, 0, 1, 0.3, 0.2, 0.1, 1, 0, 0, 0, 1, 0.05, 0, 0.2, 1]) },
+          mu,
+          0.5,
+          f0,
+          c,
+        ]),
+      ),
+    ),
+    range: ZERO_TO_ONE,
+  },
+  randomWalkBRDFGGX: {
+    tuples: PAIRS.flatMap(([l, v]) => [0, 1e-4, 0.3, 1].map((a) => [l, v, a, 0.5, 20, 1])),
+    range: NON_NEGATIVE,
+  },
+  sphereSolidAngle: {
+    args: [
+      [-1, 0, 1e-9, 1, 1e6],
+      [-1, 0, 1e-9, 1, 1e6],
+    ],
+    range: [0, 2 * Math.PI],
+  },
+  sphereLightIrradiance: {
+    args: [
+      [-1, 0, 1, 1e6],
+      [-1, 0, 1e-9, 1, 1e6],
+      [-1, 0, 1e-9, 1, 1e6],
+    ],
+    range: NON_NEGATIVE,
+  },
+  planckRadiance: {
+    args: [
+      [-1, 0, 1e-3, 380, 780, 1e6],
+      [-1, 0, 1, 1000, 6500, 1e6],
+    ],
+    range: NON_NEGATIVE,
+  },
   cieXyzFit: { args: [[-1e6, 0, 380, 555, 780, 1e6]], range: [0, 2] },
   spectrumToXyz: { args: [[() => 0, () => 1, (l) => l / 780]], range: NON_NEGATIVE },
   xyzToLinearSrgb: { tuples: [[[0, 0, 0]], [[0.95047, 1, 1.08883]], [[1e6, 0, 0]]], range: FINITE },

@@ -15,14 +15,18 @@ function numbersIn(value) {
 function inputsOf(name, spec) {
   if (spec.pairs) {
     const params = spec.params ?? [undefined];
-    return spec.pairs.flatMap(([l, v]) => params.map((p) => (p === undefined ? [l, v] : spec.use ? [l, v, p, spec.use] : [l, v, p])));
+    return spec.pairs.flatMap(([l, v]) =>
+      params.map((p) => (p === undefined ? [l, v] : spec.use ? [l, v, p, spec.use] : [l, v, p])),
+    );
   }
   return spec.tuples ?? cartesian(spec.args);
 }
 
 export function sweepJs({ limit = Infinity } = {}) {
   const rows = [];
-  const unclassified = Object.keys(M).filter((k) => typeof M[k] === 'function' && !(k in STRESS_DOMAINS) && !(k in STRESS_DOMAINS.skipped));
+  const unclassified = Object.keys(M).filter(
+    (k) => typeof M[k] === 'function' && !(k in STRESS_DOMAINS) && !(k in STRESS_DOMAINS.skipped),
+  );
   for (const [name, spec] of Object.entries(STRESS_DOMAINS)) {
     if (name === 'skipped') continue;
     const inputs = inputsOf(name, spec).slice(0, limit);
@@ -35,7 +39,13 @@ export function sweepJs({ limit = Infinity } = {}) {
       const out = spec.pick ? spec.pick.map((k) => result[k]) : result;
       if (result === null && spec.nullable) continue;
       for (const x of numbersIn(out)) {
-        const bad = Number.isNaN(x) ? 'nan' : !Number.isFinite(x) && spec.range[1] !== Infinity ? 'inf' : x < spec.range[0] || x > spec.range[1] ? 'outside' : null;
+        const bad = Number.isNaN(x)
+          ? 'nan'
+          : !Number.isFinite(x) && spec.range[1] !== Infinity
+            ? 'inf'
+            : x < spec.range[0] || x > spec.range[1]
+              ? 'outside'
+              : null;
         if (!bad && (Number.isFinite(x) || spec.allowInfinity)) continue;
         if (bad === 'nan') nan++;
         else if (bad === 'inf' || !Number.isFinite(x)) inf++;
@@ -50,7 +60,15 @@ export function sweepJs({ limit = Infinity } = {}) {
     for (const model of Object.keys(M.CONDUCTOR_MODELS)) {
       const p = M.fresnelParams(key, model);
       const bad = [...p.eta, ...p.k, ...p.f0].filter((x) => !Number.isFinite(x) || x < 0).length;
-      rows.push({ name: `fresnelParams(${key}, ${model})`, inputs: 1, range: [0, Infinity], nan: 0, inf: 0, outside: bad, worst: null });
+      rows.push({
+        name: `fresnelParams(${key}, ${model})`,
+        inputs: 1,
+        range: [0, Infinity],
+        nan: 0,
+        inf: 0,
+        outside: bad,
+        worst: null,
+      });
     }
   }
   return { rows, unclassified };

@@ -20,14 +20,26 @@ export function compareWithMeshStandard({ size = 512, frames = 9 } = {}) {
   const ours = new THREE.ShaderMaterial({
     glslVersion: THREE.GLSL3,
     uniforms: {
-      uLightDir: { value: lightDir }, uLightIntensity: { value: 1 }, uExposure: { value: 1 }, uAlpha: { value: alpha }, uF0: { value: 0.04 },
-      uDiffuse: { value: 0.5 }, uExponent: { value: 1 }, uA1: { value: 1 }, uA2: { value: 1 }, uSgdP: { value: 0 },
+      uLightDir: { value: lightDir },
+      uLightIntensity: { value: 1 },
+      uExposure: { value: 1 },
+      uAlpha: { value: alpha },
+      uF0: { value: 0.04 },
+      uDiffuse: { value: 0.5 },
+      uExponent: { value: 1 },
+      uA1: { value: 1 },
+      uA2: { value: 1 },
+      uSgdP: { value: 0 },
     },
     vertexShader: SHADER_CHUNKS['surface.vert.glsl'],
     fragmentShader: assembleGlsl(SHADER_CHUNKS['brdf-sphere.frag.glsl'], { defines: { DIFFUSE_LAMBERT: true } }),
   });
   // three's roughness r gives alpha = r²; F0 = 0.04 for metalness 0
-  const theirs = new THREE.MeshStandardMaterial({ color: new THREE.Color(0.5, 0.5, 0.5), roughness: Math.sqrt(alpha), metalness: 0 });
+  const theirs = new THREE.MeshStandardMaterial({
+    color: new THREE.Color(0.5, 0.5, 0.5),
+    roughness: Math.sqrt(alpha),
+    metalness: 0,
+  });
   const mesh = new THREE.Mesh(geometry);
   const light = new THREE.DirectionalLight(0xffffff, 1);
   light.position.copy(lightDir);

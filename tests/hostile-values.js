@@ -13,17 +13,55 @@ export function seededRandom(seed) {
   };
 }
 
-export const PROTOTYPE_NAMES = ['__proto__', 'constructor', 'toString', 'hasOwnProperty', 'valueOf', 'prototype', '__defineGetter__'];
+export const PROTOTYPE_NAMES = [
+  '__proto__',
+  'constructor',
+  'toString',
+  'hasOwnProperty',
+  'valueOf',
+  'prototype',
+  '__defineGetter__',
+];
 const LONG = 'x'.repeat(5000);
-const HTML = ['<img src=x onerror="document.title=\'pwned\'">', '<script>document.title="pwned"</script>', '"><svg onload=alert(1)>'];
+const HTML = [
+  '<img src=x onerror="document.title=\'pwned\'">',
+  '<script>document.title="pwned"</script>',
+  '"><svg onload=alert(1)>',
+];
 
 /** As text (URL parameters) and typed (postMessage): every one of them is refused or clamped. */
-export const NUMBER_TEXTS = ['NaN', 'Infinity', '-Infinity', '1e309', '-1e309', '0x10', '0b11', '0o7', '١٢', '１２', '1_0', '', ' ', '1e', '.', '12abc', '1,5'];
+export const NUMBER_TEXTS = [
+  'NaN',
+  'Infinity',
+  '-Infinity',
+  '1e309',
+  '-1e309',
+  '0x10',
+  '0b11',
+  '0o7',
+  '١٢',
+  '１２',
+  '1_0',
+  '',
+  ' ',
+  '1e',
+  '.',
+  '12abc',
+  '1,5',
+];
 export const NUMBERS = [NaN, Infinity, -Infinity, Number.MAX_VALUE, -Number.MAX_VALUE, -0, 5e-324];
 export const STRINGS = [...PROTOTYPE_NAMES, LONG, ...HTML, 'javascript:alert(1)', '\u0000', '\u202e'];
 
 /** Lists with empty, repeated and inherited items, built around a real option `o`. */
-export const listTexts = (o) => [',', ',,', `${o},,${o}`, `${o},${o},${o}`, `${o},__proto__`, '__proto__,constructor', `,${o},`];
+export const listTexts = (o) => [
+  ',',
+  ',,',
+  `${o},,${o}`,
+  `${o},${o},${o}`,
+  `${o},__proto__`,
+  '__proto__,constructor',
+  `,${o},`,
+];
 export const listArrays = (o) => [[], [''], [o, o], [o, '', o], [o, '__proto__'], [[o]], [null], [{}], [o, 7]];
 /** Lists for a samples field: one short, one long, one with a bad item in the middle, one too large, one good. */
 function sampleLists(f, typed) {
@@ -97,7 +135,10 @@ export function isClean(f, raw) {
 /** True when a field must keep its value for `raw`: not clean, and nothing in it to clamp or keep. */
 export function isRefused(f, raw) {
   if (isClean(f, raw)) return false;
-  if (f.type === 'number') return !Number.isFinite(typeof raw === 'number' ? raw : typeof raw === 'string' && DECIMAL.test(raw) ? Number(raw) : NaN);
+  if (f.type === 'number')
+    return !Number.isFinite(
+      typeof raw === 'number' ? raw : typeof raw === 'string' && DECIMAL.test(raw) ? Number(raw) : NaN,
+    );
   if (f.type !== 'set') return true;
   const items = typeof raw === 'string' ? raw.split(',').filter((s) => s !== '') : Array.isArray(raw) ? raw : null;
   return items === null || !items.some((v) => isClean(f, [v]));
@@ -109,10 +150,18 @@ export function goodPartial(schema) {
   for (const [key, f] of Object.entries(schema).slice(0, 2)) {
     const options = f.options ? Object.keys(f.options) : [];
     const mid = Number(((f.min + f.max) / 2).toPrecision(3));
-    out[key] = f.type === 'number' ? (mid === f.default ? f.min : mid)
-      : f.type === 'enum' ? options.find((o) => o !== f.default)
-        : f.type === 'bool' ? !f.default
-          : f.type === 'set' ? [options.find((o) => !f.default.includes(o)) ?? options[0]] : '#336699';
+    out[key] =
+      f.type === 'number'
+        ? mid === f.default
+          ? f.min
+          : mid
+        : f.type === 'enum'
+          ? options.find((o) => o !== f.default)
+          : f.type === 'bool'
+            ? !f.default
+            : f.type === 'set'
+              ? [options.find((o) => !f.default.includes(o)) ?? options[0]]
+              : '#336699';
   }
   return out;
 }
@@ -128,8 +177,14 @@ export function oddButValid(schema) {
 }
 
 /** Numbers as JSON cannot carry them (NaN, ±Infinity, −0) and back: for sending values through DevTools. */
-export const encodeNumbers = (value) => JSON.stringify(value, (k, v) => (typeof v === 'number' && (!Number.isFinite(v) || Object.is(v, -0)) ? { $n: Object.is(v, -0) ? '-0' : String(v) } : v));
-export const reviveNumbers = (k, v) => (v && typeof v === 'object' && typeof v.$n === 'string' && Object.keys(v).length === 1 ? Number(v.$n) : v);
+export const encodeNumbers = (value) =>
+  JSON.stringify(value, (k, v) =>
+    typeof v === 'number' && (!Number.isFinite(v) || Object.is(v, -0))
+      ? { $n: Object.is(v, -0) ? '-0' : String(v) }
+      : v,
+  );
+export const reviveNumbers = (k, v) =>
+  v && typeof v === 'object' && typeof v.$n === 'string' && Object.keys(v).length === 1 ? Number(v.$n) : v;
 
 /** What is wrong with a widget's whole state against its schema: [] when every value is one it may hold. */
 export function stateProblems(schema, state) {
@@ -138,14 +193,23 @@ export function stateProblems(schema, state) {
   for (const [key, f] of Object.entries(schema)) {
     const v = state[key];
     const ok =
-      f.type === 'number' ? typeof v === 'number' && Number.isFinite(v) && v >= f.min && v <= f.max && !Object.is(v, -0)
-        : f.type === 'enum' ? own(f, v)
-          : f.type === 'bool' ? typeof v === 'boolean'
-            : f.type === 'set' ? Array.isArray(v) && v.every((x) => own(f, x)) && new Set(v).size === v.length
-              : f.type === 'color' ? /^#[0-9a-f]{6}$/.test(v)
-                : f.type === 'samples' ? Array.isArray(v) && (v.length === 0 || v.length === f.length)
-                  && v.every((x) => typeof x === 'number' && x >= f.min && x <= f.max && !Object.is(x, -0))
-                  : f.type === 'text' ? isClean(f, v) : false;
+      f.type === 'number'
+        ? typeof v === 'number' && Number.isFinite(v) && v >= f.min && v <= f.max && !Object.is(v, -0)
+        : f.type === 'enum'
+          ? own(f, v)
+          : f.type === 'bool'
+            ? typeof v === 'boolean'
+            : f.type === 'set'
+              ? Array.isArray(v) && v.every((x) => own(f, x)) && new Set(v).size === v.length
+              : f.type === 'color'
+                ? /^#[0-9a-f]{6}$/.test(v)
+                : f.type === 'samples'
+                  ? Array.isArray(v) &&
+                    (v.length === 0 || v.length === f.length) &&
+                    v.every((x) => typeof x === 'number' && x >= f.min && x <= f.max && !Object.is(x, -0))
+                  : f.type === 'text'
+                    ? isClean(f, v)
+                    : false;
     if (!ok) problems.push(`${key} = ${JSON.stringify(v)?.slice(0, 80)}`);
   }
   for (const key of Object.keys(state)) if (!Object.hasOwn(schema, key)) problems.push(`extra key ${key}`);

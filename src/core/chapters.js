@@ -1,6 +1,12 @@
 // The app's chapters in the talk's order, and which page and widgets each has.
 export const CHAPTERS = [
-  { key: 'media', title: 'Light in media', blurb: 'Absorption, scattering and the scale at which they show.', page: 'media.html', widgets: ['media'] },
+  {
+    key: 'media',
+    title: 'Light in media',
+    blurb: 'Absorption, scattering and the scale at which they show.',
+    page: 'media.html',
+    widgets: ['media'],
+  },
   {
     key: 'surfaces',
     title: 'Surfaces and microgeometry',
@@ -8,7 +14,13 @@ export const CHAPTERS = [
     page: 'surfaces.html',
     widgets: ['surfaces', 'subsurface-scale'],
   },
-  { key: 'brdf', title: 'The BRDF and the reflectance equation', blurb: 'Radiance and colour as numbers; lobes; the integral that sums them.', page: 'brdf.html', widgets: ['radiance', 'brdf-lobe'] },
+  {
+    key: 'brdf',
+    title: 'The BRDF and the reflectance equation',
+    blurb: 'Radiance and colour as numbers; lobes; the integral that sums them.',
+    page: 'brdf.html',
+    widgets: ['radiance', 'brdf-lobe'],
+  },
   {
     key: 'microfacets',
     title: 'Microfacet theory',
@@ -23,9 +35,27 @@ export const CHAPTERS = [
     page: 'fresnel.html',
     widgets: ['fresnel-curves', 'fresnel-zones', 'f0-tables'],
   },
-  { key: 'ndf', title: 'Normal distribution functions', blurb: 'Five NDFs at matched widths: highlights and tails.', page: 'ndf.html', widgets: ['ndf-explorer'] },
-  { key: 'visibility', title: 'Geometry and visibility terms', blurb: 'Implicit, Cook–Torrance, Kelemen, Smith.', page: 'visibility.html', widgets: ['visibility-explorer'] },
-  { key: 'diffuse', title: 'Diffuse', blurb: 'Lambert, the diffuse–specular trade-off, Oren–Nayar.', page: 'diffuse.html', widgets: ['diffuse-explorer'] },
+  {
+    key: 'ndf',
+    title: 'Normal distribution functions',
+    blurb: 'Five NDFs at matched widths: highlights and tails.',
+    page: 'ndf.html',
+    widgets: ['ndf-explorer'],
+  },
+  {
+    key: 'visibility',
+    title: 'Geometry and visibility terms',
+    blurb: 'Implicit, Cook–Torrance, Kelemen, Smith.',
+    page: 'visibility.html',
+    widgets: ['visibility-explorer'],
+  },
+  {
+    key: 'diffuse',
+    title: 'Diffuse',
+    blurb: 'Lambert, the diffuse–specular trade-off, Oren–Nayar.',
+    page: 'diffuse.html',
+    widgets: ['diffuse-explorer'],
+  },
   {
     key: 'rendering',
     title: 'From math to rendering',
@@ -33,5 +63,10 @@ export const CHAPTERS = [
     page: 'rendering.html',
     widgets: ['material-lab', 'lighting-models'],
   },
-  { key: 'performance', title: 'Performance and accuracy', blurb: 'Run time against error for every approximation.', page: 'performance.html' },
+  {
+    key: 'performance',
+    title: 'Performance and accuracy',
+    blurb: 'Run time against error for every approximation.',
+    page: 'performance.html',
+  },
 ];

@@ -30,11 +30,15 @@ const isId = (id) => id === undefined || (typeof id === 'string' && id.length <=
 export function parseAllowedOrigins(param, ownOrigin) {
   const origins = new Set([ownOrigin]);
   const notices = [];
-  for (const item of (param ?? '').split(',').map((s) => s.trim()).filter(Boolean)) {
+  for (const item of (param ?? '')
+    .split(',')
+    .map((s) => s.trim())
+    .filter(Boolean)) {
     let origin = null;
     try {
       const url = new URL(item);
-      if ((url.protocol === 'https:' || url.protocol === 'http:') && url.pathname === '/' && !url.search && !url.hash) origin = url.origin;
+      if ((url.protocol === 'https:' || url.protocol === 'http:') && url.pathname === '/' && !url.search && !url.hash)
+        origin = url.origin;
     } catch {
       /* not a URL: reported below */
     }
@@ -49,13 +53,17 @@ export function parseMessage(data) {
   if (!isPlainObject(data) || typeof data.type !== 'string' || !isId(data.id)) return null;
   if (data.type === `${MESSAGE_PREFIX}get`) return { kind: 'get', id: data.id };
   if (data.type === `${MESSAGE_PREFIX}snapshot`) return { kind: 'snapshot', id: data.id };
-  if (data.type === `${MESSAGE_PREFIX}set` && isPlainObject(data.state)) return { kind: 'set', id: data.id, state: data.state };
+  if (data.type === `${MESSAGE_PREFIX}set` && isPlainObject(data.state))
+    return { kind: 'set', id: data.id, state: data.state };
   return null;
 }
 
 /** One notice for any number of unknown keys: the first four named (cut short), the rest counted. */
 function unknownKeysNotice(schema, unknown) {
-  const named = unknown.slice(0, 4).map((k) => `“${cut(k)}”`).join(', ');
+  const named = unknown
+    .slice(0, 4)
+    .map((k) => `“${cut(k)}”`)
+    .join(', ');
   const more = unknown.length > 4 ? ` and ${unknown.length - 4} more` : '';
   const verb = unknown.length > 1 ? 'are not settings' : 'is not a setting';
   return `${named}${more} ${verb} of this widget (it has: ${Object.keys(schema).join(', ')}); ignored.`;
@@ -90,7 +98,15 @@ function parentOriginHint() {
  * shows as a PNG data URL (or null). Returns
  * { ready(), userChanged() (call on every state change), dispose() }.
  */
-export function connectEmbedProtocol({ name, schema, instance, origins, notices, capture = () => null, parent = window.parent }) {
+export function connectEmbedProtocol({
+  name,
+  schema,
+  instance,
+  origins,
+  notices,
+  capture = () => null,
+  parent = window.parent,
+}) {
   const hint = parentOriginHint();
   let parentOrigin = hint && origins.has(hint) ? hint : null; // where unsolicited messages go; null: nowhere yet
   let fromParent = false; // true while a `set` is applied: that is not a user change
@@ -100,7 +116,8 @@ export function connectEmbedProtocol({ name, schema, instance, origins, notices,
     const state = instance.getState();
     return { widget: name, state: structuredClone(state), query: stateToParams(schema, state).toString() };
   };
-  const post = (type, origin, fields = {}) => parent.postMessage({ type: `${MESSAGE_PREFIX}${type}`, ...snapshot(), ...fields }, origin);
+  const post = (type, origin, fields = {}) =>
+    parent.postMessage({ type: `${MESSAGE_PREFIX}${type}`, ...snapshot(), ...fields }, origin);
 
   const onMessage = (e) => {
     if (e.source !== parent || !origins.has(e.origin)) return;

@@ -19,7 +19,18 @@ function nearSightNow(element) {
 // The objects of a lost context die with it, but three.js still deletes them when their owner (a render
 // target, a geometry) is disposed after the restore, and the browser warns "object does not belong to this
 // context". So deletes of objects born before the last restore are skipped. Returns: call on each restore.
-const GL_OBJECT_KINDS = ['Buffer', 'Framebuffer', 'Program', 'Query', 'Renderbuffer', 'Sampler', 'Shader', 'Texture', 'TransformFeedback', 'VertexArray'];
+const GL_OBJECT_KINDS = [
+  'Buffer',
+  'Framebuffer',
+  'Program',
+  'Query',
+  'Renderbuffer',
+  'Sampler',
+  'Shader',
+  'Texture',
+  'TransformFeedback',
+  'VertexArray',
+];
 
 function skipStaleDeletes(gl) {
   const born = new WeakMap();

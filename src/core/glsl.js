@@ -10,11 +10,14 @@ function condition(kind, expr, defines) {
   if (kind === 'ifdef') return expr.trim() in defines;
   if (kind === 'ifndef') return !(expr.trim() in defines);
   // defined(A) || defined(B) && !defined(C): && binds tighter, as in C
-  return expr.split('||').some((any) => any.split('&&').every((term) => {
-    const m = DEFINED.exec(term.trim());
-    if (!m) throw new Error(`glsl: only 'defined(NAME)' conditions (with ||, &&) are supported, got '#${kind} ${expr}'`);
-    return (m[2] in defines) !== (m[1] === '!');
-  }));
+  return expr.split('||').some((any) =>
+    any.split('&&').every((term) => {
+      const m = DEFINED.exec(term.trim());
+      if (!m)
+        throw new Error(`glsl: only 'defined(NAME)' conditions (with ||, &&) are supported, got '#${kind} ${expr}'`);
+      return m[2] in defines !== (m[1] === '!');
+    }),
+  );
 }
 
 /** Removes the inactive branches of #ifdef/#ifndef/#if defined()/#elif defined()/#else/#endif blocks (|| and && allowed). */

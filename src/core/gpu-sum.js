@@ -6,8 +6,12 @@ import { SHADER_CHUNKS } from './shader-chunks.js';
 
 export function floatTarget(width, height, depthBuffer = false) {
   return new THREE.WebGLRenderTarget(width, height, {
-    type: THREE.FloatType, format: THREE.RGBAFormat, minFilter: THREE.NearestFilter, magFilter: THREE.NearestFilter,
-    depthBuffer, generateMipmaps: false,
+    type: THREE.FloatType,
+    format: THREE.RGBAFormat,
+    minFilter: THREE.NearestFilter,
+    magFilter: THREE.NearestFilter,
+    depthBuffer,
+    generateMipmaps: false,
   });
 }
 

@@ -11,7 +11,10 @@ const lock = (ctrl) => {
 const labelOf = (key, f) => (f.unit ? `${f.label ?? key} (${f.unit})` : (f.label ?? key));
 
 /** `locked`: keys shown but not editable (an exercise fixes them); their controls are disabled. */
-export function createStateGui(container, { schema, state, onChange, title = 'Controls', keys = Object.keys(schema), locked = [] }) {
+export function createStateGui(
+  container,
+  { schema, state, onChange, title = 'Controls', keys = Object.keys(schema), locked = [] },
+) {
   const gui = new GUI({ container, title, autoPlace: false });
   const model = { ...state };
   const setModels = {}; // set fields: one boolean per option
@@ -31,9 +34,12 @@ export function createStateGui(container, { schema, state, onChange, title = 'Co
       const flags = (setModels[key] = {});
       for (const [value, label] of Object.entries(f.options)) {
         flags[value] = model[key].includes(value);
-        const ctrl = folder.add(flags, value).name(label).onChange(() => {
-          onChange({ [key]: Object.keys(f.options).filter((v) => flags[v]) });
-        });
+        const ctrl = folder
+          .add(flags, value)
+          .name(label)
+          .onChange(() => {
+            onChange({ [key]: Object.keys(f.options).filter((v) => flags[v]) });
+          });
         if (locked.includes(key)) lock(ctrl);
       }
       continue;

@@ -18,7 +18,8 @@ export function attachLightControl(canvas, overlayParent, { get, set }) {
   const svg = document.createElementNS('http://www.w3.org/2000/svg', 'svg');
   svg.classList.add('light-overlay');
   svg.setAttribute('aria-hidden', 'true');
-  svg.innerHTML = '<circle class="ring" /><line class="ray" /><circle class="sun" r="7" /><text class="sun-label">light</text>';
+  svg.innerHTML =
+    '<circle class="ring" /><line class="ray" /><circle class="sun" r="7" /><text class="sun-label">light</text>';
   overlayParent.append(svg);
   const [ring, ray, sun, label] = svg.children;
 

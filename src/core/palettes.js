@@ -21,18 +21,29 @@ export const SERIES_COLORS = ['#0072b2', '#d55e00', '#009e73', '#cc79a7', '#e69f
  */
 export const SERIES_DASHES = [undefined, [9, 4], [2, 3], [10, 3, 2, 3], [4, 4]];
 /** Colour and line pattern of series i: { stroke, dash } for plot specs. */
-export const seriesStyle = (i) => ({ stroke: SERIES_COLORS[i % SERIES_COLORS.length], dash: SERIES_DASHES[i % SERIES_DASHES.length] });
+export const seriesStyle = (i) => ({
+  stroke: SERIES_COLORS[i % SERIES_COLORS.length],
+  dash: SERIES_DASHES[i % SERIES_DASHES.length],
+});
 /** The colour names in a palette's label, e.g. 'green, yellow, red'. */
 export const paletteColourNames = (key) => ZONE_PALETTES[key].label.match(/\((.*)\)/)[1];
 
 export function withAlpha(hex, alpha) {
-  const a = Math.round(alpha * 255).toString(16).padStart(2, '0');
+  const a = Math.round(alpha * 255)
+    .toString(16)
+    .padStart(2, '0');
   return `${hex}${a}`;
 }
 
 /** [r, g, b] in [0, 1] -> '#rrggbb'. */
 export function rgbToHex(rgb) {
-  return `#${rgb.map((c) => Math.round(Math.min(Math.max(c, 0), 1) * 255).toString(16).padStart(2, '0')).join('')}`;
+  return `#${rgb
+    .map((c) =>
+      Math.round(Math.min(Math.max(c, 0), 1) * 255)
+        .toString(16)
+        .padStart(2, '0'),
+    )
+    .join('')}`;
 }
 
 /** '#rrggbb' -> [r, g, b] in [0, 1] (display, i.e. sRGB-encoded, values). */
@@ -42,7 +53,13 @@ export function hexToRgb(hex) {
 }
 
 // Viridis (perceptually uniform, colour-blind safe) at five stops, interpolated linearly.
-const VIRIDIS = [[68, 1, 84], [59, 82, 139], [33, 145, 140], [94, 201, 98], [253, 231, 37]];
+const VIRIDIS = [
+  [68, 1, 84],
+  [59, 82, 139],
+  [33, 145, 140],
+  [94, 201, 98],
+  [253, 231, 37],
+];
 
 /** Viridis colour of t in [0, 1] as [r, g, b] in 0..255. */
 export function viridis(t) {

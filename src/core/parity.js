@@ -31,9 +31,15 @@ function evaluateOnGpu(renderer, testCase) {
   const wrap = `vec4(${testCase.glsl}${', 0.0'.repeat(4 - testCase.outputs)})`; // pad to vec4
   const material = new THREE.ShaderMaterial({
     glslVersion: THREE.GLSL3,
-    uniforms: { uArgs: { value: input }, uArgs2: { value: input2 }, ...Object.fromEntries(tables.map(([name, t]) => [name, { value: t }])) },
+    uniforms: {
+      uArgs: { value: input },
+      uArgs2: { value: input2 },
+      ...Object.fromEntries(tables.map(([name, t]) => [name, { value: t }])),
+    },
     vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
-    fragmentShader: assembleGlsl(`#include "${testCase.chunk}"\n${SHADER_CHUNKS['parity.frag.glsl']}`, { defines: { ...testCase.defines, CALL: wrap } }),
+    fragmentShader: assembleGlsl(`#include "${testCase.chunk}"\n${SHADER_CHUNKS['parity.frag.glsl']}`, {
+      defines: { ...testCase.defines, CALL: wrap },
+    }),
   });
   const quad = new THREE.Mesh(new THREE.PlaneGeometry(2, 2), material);
   const scene = new THREE.Scene().add(quad);
@@ -71,7 +77,17 @@ export function compareCase(testCase, gpu) {
       if (Math.abs(j) > 1e-6) maxRel = Math.max(maxRel, rel);
     });
   });
-  return { name: testCase.name, count: testCase.args.length, maxAbs, maxRel, worst, failures, invalid, tolerance: { atol, rtol }, pass: failures === 0 && invalid === 0 };
+  return {
+    name: testCase.name,
+    count: testCase.args.length,
+    maxAbs,
+    maxRel,
+    worst,
+    failures,
+    invalid,
+    tolerance: { atol, rtol },
+    pass: failures === 0 && invalid === 0,
+  };
 }
 
 export function runParity(renderer, cases) {

@@ -67,14 +67,23 @@ export function describePlot(spec) {
     if (!at.length) return `${s.label}: no values`;
     const top = at.reduce((a, i) => (ys[i] > ys[a] ? i : a), at[0]);
     const [first, last] = [at[0], at[at.length - 1]];
-    return `${s.label}${s.dash ? ' (dashed)' : ''}: ${spokenNumber(ys[first])} at ${spokenNumber(xs[first])}, ` +
-      `${spokenNumber(ys[last])} at ${spokenNumber(xs[last])}, largest ${spokenNumber(ys[top])} at ${spokenNumber(xs[top])}`;
+    return (
+      `${s.label}${s.dash ? ' (dashed)' : ''}: ${spokenNumber(ys[first])} at ${spokenNumber(xs[first])}, ` +
+      `${spokenNumber(ys[last])} at ${spokenNumber(xs[last])}, largest ${spokenNumber(ys[top])} at ${spokenNumber(xs[top])}`
+    );
   });
   const across = `${spec.xLabel} from ${spokenNumber(spec.x.min)} to ${spokenNumber(spec.x.max)}${spec.x.log ? ' (log scale)' : ''}`;
   return `Plot: ${spec.title}. Across: ${across}; up: ${spec.yLabel}${spec.y?.log ? ' (log scale)' : ''}. ${series.join('; ')}.`;
 }
 
-const axis = (label, extra = {}) => ({ label, labelSize: 22, size: 48, stroke: '#333', grid: { stroke: '#0000001a' }, ...extra });
+const axis = (label, extra = {}) => ({
+  label,
+  labelSize: 22,
+  size: 48,
+  stroke: '#333',
+  grid: { stroke: '#0000001a' },
+  ...extra,
+});
 
 /**
  * spec: { title, xLabel, yLabel, x: { min, max, log }, y: { min, max, log } | null (auto), series: [{ label, stroke, dash, width, points, spanGaps }],
@@ -101,23 +110,44 @@ export function createPlot(container, spec, { onCursor } = {}) {
     const opts = {
       ...size(),
       scales: {
-        x: current.x.log ? { time: false, distr: 3, log: 10, range: [current.x.min, current.x.max] } : { time: false, range: [current.x.min, current.x.max] },
-        y: current.y?.log ? { distr: 3, log: 10, range: [current.y.min, current.y.max] } : current.y ? { range: [current.y.min, current.y.max] } : { auto: true },
+        x: current.x.log
+          ? { time: false, distr: 3, log: 10, range: [current.x.min, current.x.max] }
+          : { time: false, range: [current.x.min, current.x.max] },
+        y: current.y?.log
+          ? { distr: 3, log: 10, range: [current.y.min, current.y.max] }
+          : current.y
+            ? { range: [current.y.min, current.y.max] }
+            : { auto: true },
       },
       // on log axes uPlot hands null for the ticks it leaves unlabelled for room
       axes: [
-        axis(current.xLabel, current.x.log ? { splits: decades, values: current.xValues } : { values: current.xValues }),
-        axis(current.yLabel, current.y?.log ? { splits: decades, values: (u, ticks) => ticks.map((t) => (t == null ? '' : `1e${Math.round(Math.log10(t))}`)), size: 56 } : {}),
+        axis(
+          current.xLabel,
+          current.x.log ? { splits: decades, values: current.xValues } : { values: current.xValues },
+        ),
+        axis(
+          current.yLabel,
+          current.y?.log
+            ? {
+                splits: decades,
+                values: (u, ticks) => ticks.map((t) => (t == null ? '' : `1e${Math.round(Math.log10(t))}`)),
+                size: 56,
+              }
+            : {},
+        ),
       ],
-      series: [{ label: current.xLabel, value: (_, v) => (v == null ? '—' : v.toFixed(1)) }, ...current.series.map((s) => ({
-        label: s.label,
-        stroke: s.stroke,
-        width: s.width ?? 2,
-        dash: s.dash,
-        points: { show: Boolean(s.points), size: 7, fill: s.stroke },
-        spanGaps: Boolean(s.spanGaps), // a curve over x values other series own
-        value: (_, v) => (v == null ? '—' : v.toFixed(4)),
-      }))],
+      series: [
+        { label: current.xLabel, value: (_, v) => (v == null ? '—' : v.toFixed(1)) },
+        ...current.series.map((s) => ({
+          label: s.label,
+          stroke: s.stroke,
+          width: s.width ?? 2,
+          dash: s.dash,
+          points: { show: Boolean(s.points), size: 7, fill: s.stroke },
+          spanGaps: Boolean(s.spanGaps), // a curve over x values other series own
+          value: (_, v) => (v == null ? '—' : v.toFixed(4)),
+        })),
+      ],
       legend: { show: current.legend ?? true, live: true },
       cursor: { drag: { x: false, y: false } },
       hooks: { setCursor: [(p) => onCursor?.(p.cursor.idx ?? null)] },
@@ -134,7 +164,9 @@ export function createPlot(container, spec, { onCursor } = {}) {
   holder.addEventListener('keydown', (e) => {
     const n = current.data[0].length;
     const step = e.shiftKey ? 10 : 1;
-    const next = { ArrowLeft: (cursorIndex ?? n) - step, ArrowRight: (cursorIndex ?? -1) + step, Home: 0, End: n - 1 }[e.key];
+    const next = { ArrowLeft: (cursorIndex ?? n) - step, ArrowRight: (cursorIndex ?? -1) + step, Home: 0, End: n - 1 }[
+      e.key
+    ];
     if (e.key === 'Escape') {
       cursorIndex = null;
       u.setCursor({ left: -10, top: -10 });
@@ -150,13 +182,20 @@ export function createPlot(container, spec, { onCursor } = {}) {
   resize.observe(holder);
 
   const toolbar = createToolbar(wrap, [
-    { label: 'Save PNG', title: 'Save this plot as an image', onClick: () => canvasToPng(composite(u, current), `${current.filename}.png`) },
+    {
+      label: 'Save PNG',
+      title: 'Save this plot as an image',
+      onClick: () => canvasToPng(composite(u, current), `${current.filename}.png`),
+    },
     {
       label: 'Save CSV',
       title: 'Save the plotted data',
       onClick: () =>
         downloadCsv(
-          [{ name: current.xLabel, values: current.data[0] }, ...current.series.map((s, i) => ({ name: s.label, values: current.data[i + 1] }))],
+          [
+            { name: current.xLabel, values: current.data[0] },
+            ...current.series.map((s, i) => ({ name: s.label, values: current.data[i + 1] })),
+          ],
           `${current.filename}.csv`,
         ),
     },
@@ -166,7 +205,8 @@ export function createPlot(container, spec, { onCursor } = {}) {
   return {
     setData(next) {
       const sameSeries =
-        next.series.length === current.series.length && next.series.every((s, i) => s.label === current.series[i].label);
+        next.series.length === current.series.length &&
+        next.series.every((s, i) => s.label === current.series[i].label);
       const sameScales = JSON.stringify([next.x, next.y]) === JSON.stringify([current.x, current.y]);
       current = next;
       if (sameSeries && sameScales) {

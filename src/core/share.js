@@ -30,12 +30,15 @@ export async function openShareDialog(title, link, opener) {
   const status = el('span', { className: 'share-status', role: 'status' });
   const copy = el('button', { type: 'button', textContent: 'Copy link' });
   const close = el('button', { type: 'button', textContent: 'Close', className: 'share-close' });
-  const dialog = el('dialog', { className: 'share-dialog' },
+  const dialog = el(
+    'dialog',
+    { className: 'share-dialog' },
     heading,
     el('p', { textContent: 'Scan the code to open this exact state on a phone, or copy the link.' }),
     qr,
     el('p', { className: 'share-row' }, field, copy, status),
-    close);
+    close,
+  );
   dialog.setAttribute('aria-labelledby', heading.id);
   copy.addEventListener('click', async () => {
     field.select();

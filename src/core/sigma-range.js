@@ -7,7 +7,8 @@ const DEG = Math.PI / 180;
 export const SIGMA_MODELLED_DEG = 45;
 
 /** The hint for a σ slider. */
-export const SIGMA_HINT = `Standard deviation of the facet slope angle, in degrees (the model itself takes radians). ` +
+export const SIGMA_HINT =
+  `Standard deviation of the facet slope angle, in degrees (the model itself takes radians). ` +
   `Above ${SIGMA_MODELLED_DEG}° it is an extrapolation: a Gaussian of tilts that wide puts over 4.6% of the facets ` +
   'past 90°, which no V-groove facet can have (the diffuse chapter says more).';
 

@@ -34,5 +34,5 @@ export function compositeCanvases(root, scale = Math.min(globalThis.devicePixelR
 /** The view of a widget (its `.widget-view`, without the controls) as a PNG data URL, or null. */
 export function snapshotWidget(widgetRoot) {
   const view = widgetRoot?.querySelector('.widget-view') ?? widgetRoot;
-  return view ? compositeCanvases(view)?.toDataURL('image/png') ?? null : null;
+  return view ? (compositeCanvases(view)?.toDataURL('image/png') ?? null) : null;
 }

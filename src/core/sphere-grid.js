@@ -9,7 +9,17 @@ import { SHADER_CHUNKS } from './shader-chunks.js';
 import { angleText, probeAngles, showProbeRows } from './probe.js';
 
 const UNIFORM_DEFAULTS = {
-  uLightDir: [0, 0, 1], uLightIntensity: 1, uExposure: 1, uAlpha: 0.3, uExponent: 40, uA1: 20, uA2: 2.5, uSgdP: 0.64, uF0: 1, uDiffuse: 0.5, uSigma: 0,
+  uLightDir: [0, 0, 1],
+  uLightIntensity: 1,
+  uExposure: 1,
+  uAlpha: 0.3,
+  uExponent: 40,
+  uA1: 20,
+  uA2: 2.5,
+  uSgdP: 0.64,
+  uF0: 1,
+  uDiffuse: 0.5,
+  uSigma: 0,
   uDfg: null, // the split-sum table, for the furnace
   uAlbedoTableGGX: null, // the albedo-loss table, for the compensated furnace
 };
@@ -24,14 +34,20 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
     const key = JSON.stringify(defines);
     if (!materials.has(key)) {
       const uniforms = Object.fromEntries(
-        Object.entries(UNIFORM_DEFAULTS).map(([k, v]) => [k, { value: Array.isArray(v) ? new THREE.Vector3(...v) : v }]),
+        Object.entries(UNIFORM_DEFAULTS).map(([k, v]) => [
+          k,
+          { value: Array.isArray(v) ? new THREE.Vector3(...v) : v },
+        ]),
       );
-      materials.set(key, new THREE.ShaderMaterial({
-        glslVersion: THREE.GLSL3,
-        uniforms,
-        vertexShader: SHADER_CHUNKS['surface.vert.glsl'],
-        fragmentShader: assembleGlsl(SHADER_CHUNKS['brdf-sphere.frag.glsl'], { defines }),
-      }));
+      materials.set(
+        key,
+        new THREE.ShaderMaterial({
+          glslVersion: THREE.GLSL3,
+          uniforms,
+          vertexShader: SHADER_CHUNKS['surface.vert.glsl'],
+          fragmentShader: assembleGlsl(SHADER_CHUNKS['brdf-sphere.frag.glsl'], { defines }),
+        }),
+      );
     }
     return materials.get(key);
   };
@@ -74,7 +90,8 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
   }
   const probePanel = document.createElement('div');
   probePanel.className = 'probe';
-  const idle = 'Probe: point at a sphere (or focus the picture and use the arrow keys) to read the angles and terms there.';
+  const idle =
+    'Probe: point at a sphere (or focus the picture and use the arrow keys) to read the angles and terms there.';
   probePanel.textContent = idle;
   container.append(probePanel);
   const marker = document.createElement('span'); // where the keyboard probe is
@@ -99,7 +116,11 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
     const l = cell.uniforms.uLightDir ?? UNIFORM_DEFAULTS.uLightDir;
     const a = probeAngles(n, l, [0, 0, 1]);
     showProbeRows(probePanel, [
-      ['sphere', cell.label], ['n·v', angleText(a.nv)], ['n·l', angleText(a.nl)], ['n·h', angleText(a.nh)], ['l·h', angleText(a.lh)],
+      ['sphere', cell.label],
+      ['n·v', angleText(a.nv)],
+      ['n·l', angleText(a.nl)],
+      ['n·h', angleText(a.nh)],
+      ['l·h', angleText(a.lh)],
       ...(cell.probe?.(a, n) ?? []),
     ]);
   };
@@ -107,7 +128,11 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
     const { rect, w, side } = layout();
     const i = Math.floor((e.clientX - rect.left) / w);
     marker.hidden = true;
-    probeAt(i, ((e.clientX - rect.left - i * w - w / 2) / (side / 2)) * HALF_SIZE, -((e.clientY - rect.top - rect.height / 2) / (side / 2)) * HALF_SIZE);
+    probeAt(
+      i,
+      ((e.clientX - rect.left - i * w - w / 2) / (side / 2)) * HALF_SIZE,
+      -((e.clientY - rect.top - rect.height / 2) / (side / 2)) * HALF_SIZE,
+    );
   };
   // the keyboard probe: arrows move it over a sphere (Shift: finer); across a sphere's edge it goes on to the next
   let keyProbe = { i: 0, x: 0, y: 0 };
@@ -118,7 +143,8 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
     e.preventDefault();
     let { i, x, y } = keyProbe;
     [x, y] = [x + move[0], y + move[1]];
-    if (x * x + y * y >= 1 && move[0] && cells[i + Math.sign(move[0])]) [i, x] = [i + Math.sign(move[0]), -Math.sign(move[0]) * 0.9];
+    if (x * x + y * y >= 1 && move[0] && cells[i + Math.sign(move[0])])
+      [i, x] = [i + Math.sign(move[0]), -Math.sign(move[0]) * 0.9];
     const r = Math.hypot(x, y);
     if (r > 0.98) [x, y] = [(x / r) * 0.98, (y / r) * 0.98];
     keyProbe = { i: Math.min(i, cells.length - 1), x, y };
@@ -132,13 +158,16 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
   viewport?.canvas.addEventListener('pointerleave', () => (probePanel.textContent = idle));
   viewport?.canvas.addEventListener('keydown', onKey);
   viewport?.canvas.addEventListener('blur', () => (marker.hidden = true));
-  const setAspect = () => viewport && (viewport.holder.style.aspectRatio = `${Math.max(cells.length, 1) * aspectPerCell} / 1`);
+  const setAspect = () =>
+    viewport && (viewport.holder.style.aspectRatio = `${Math.max(cells.length, 1) * aspectPerCell} / 1`);
 
   return {
     /** Replaces the cells and redraws. */
     setCells(next) {
       cells = next;
-      labels.replaceChildren(...cells.map((c) => Object.assign(document.createElement('span'), { textContent: c.label })));
+      labels.replaceChildren(
+        ...cells.map((c) => Object.assign(document.createElement('span'), { textContent: c.label })),
+      );
       setAspect();
       viewport?.invalidate();
     },

@@ -67,7 +67,8 @@ function coerceField(key, f, raw, fallback) {
       const kind = typeof raw === 'number' ? 'finite' : 'decimal';
       if (!Number.isFinite(x)) return bad(`${fmt(raw)} is not a ${kind} number`);
       const v = Math.min(Math.max(x, f.min), f.max) || 0; // `|| 0`: -0 is stored as 0
-      if (v !== x) return { value: v, notice: `${f.label ?? key}: ${x} is outside ${f.min}…${f.max}; clamped to ${v}.` };
+      if (v !== x)
+        return { value: v, notice: `${f.label ?? key}: ${x} is outside ${f.min}…${f.max}; clamped to ${v}.` };
       return { value: v };
     }
     case 'enum': {
@@ -82,8 +83,11 @@ function coerceField(key, f, raw, fallback) {
       return bad(`${fmt(raw)} is not true/false`);
     }
     case 'set': {
-      const items = Array.isArray(raw) ? raw.map((v) => (typeof v === 'number' ? String(v) : v))
-        : typeof raw === 'string' ? raw.split(',').filter(Boolean) : null;
+      const items = Array.isArray(raw)
+        ? raw.map((v) => (typeof v === 'number' ? String(v) : v))
+        : typeof raw === 'string'
+          ? raw.split(',').filter(Boolean)
+          : null;
       if (!items) return bad(`${fmt(raw)} is not a list`);
       const known = [...new Set(items.filter((v) => isOption(f.options, v)))];
       const unknown = [...new Set(items.filter((v) => !isOption(f.options, v)))];

@@ -27,28 +27,50 @@ export function createViewport(container, { draw, onResize, onContextLost, label
     message = kind ? { kind, box: showBlockingMessage(holder, title, text) } : null;
   };
   let loop = null;
-  const context = createBudgetedContext(canvas, { antialias: true, alpha: false }, {
-    onLost(planned) {
-      onContextLost?.();
-      if (!planned) say('lost', 'The graphics context was lost.', 'It will come back by itself; if it does not, reload the page.');
+  const context = createBudgetedContext(
+    canvas,
+    { antialias: true, alpha: false },
+    {
+      onLost(planned) {
+        onContextLost?.();
+        if (!planned)
+          say(
+            'lost',
+            'The graphics context was lost.',
+            'It will come back by itself; if it does not, reload the page.',
+          );
+      },
+      onRestored() {
+        say(null);
+        loop.invalidate();
+      },
+      onWaiting(waiting) {
+        if (waiting)
+          say(
+            'paused',
+            'This view is paused.',
+            'More 3-D views are in sight than the browser can draw at once; it draws again when some scroll away.',
+          );
+        else if (message?.kind === 'paused') say(null);
+      },
     },
-    onRestored() {
-      say(null);
-      loop.invalidate();
-    },
-    onWaiting(waiting) {
-      if (waiting) say('paused', 'This view is paused.', 'More 3-D views are in sight than the browser can draw at once; it draws again when some scroll away.');
-      else if (message?.kind === 'paused') say(null);
-    },
-  });
+  );
   if (!context) {
     canvas.remove();
-    showBlockingMessage(holder, 'This view needs WebGL2.', 'Your browser or device did not provide a WebGL2 context. Try a current Chrome, Firefox or Safari, or enable hardware acceleration. The rest of the page still works.');
+    showBlockingMessage(
+      holder,
+      'This view needs WebGL2.',
+      'Your browser or device did not provide a WebGL2 context. Try a current Chrome, Firefox or Safari, or enable hardware acceleration. The rest of the page still works.',
+    );
     return null;
   }
   const renderer = new THREE.WebGLRenderer({ canvas, context: context.gl, antialias: true });
   renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
-  loop = createRenderLoop(holder, () => draw(renderer), () => context.live);
+  loop = createRenderLoop(
+    holder,
+    () => draw(renderer),
+    () => context.live,
+  );
   registerRedraw(canvas, () => context.live && draw(renderer));
   context.start();
 

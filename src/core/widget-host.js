@@ -35,19 +35,25 @@ function writeUrl(schema, state, prefix) {
  * options: { prefix, syncUrl = true, onStateChange, state (instead of the URL's), initialState (under what the URL
  * says), locked (keys the GUI cannot change) }
  */
-export async function mountWidget(container, name, { prefix = '', syncUrl = true, onStateChange, options = {}, state, initialState = {}, locked = [] } = {}) {
+export async function mountWidget(
+  container,
+  name,
+  { prefix = '', syncUrl = true, onStateChange, options = {}, state, initialState = {}, locked = [] } = {},
+) {
   if (!isWidgetName(name)) throw new Error(`unknown widget ${name}`);
   const { widget } = await WIDGETS[name].load();
   let timer = 0;
-  const instance = createLocked(locked, () => widget.create(container, state ?? { ...initialState, ...widgetParams(location.search, prefix) }, {
-    ...options,
-    onStateChange(next) {
-      onStateChange?.(next);
-      if (!syncUrl) return;
-      clearTimeout(timer);
-      timer = setTimeout(() => writeUrl(widget.schema, next, prefix), 120);
-    },
-  }));
+  const instance = createLocked(locked, () =>
+    widget.create(container, state ?? { ...initialState, ...widgetParams(location.search, prefix) }, {
+      ...options,
+      onStateChange(next) {
+        onStateChange?.(next);
+        if (!syncUrl) return;
+        clearTimeout(timer);
+        timer = setTimeout(() => writeUrl(widget.schema, next, prefix), 120);
+      },
+    }),
+  );
   registry.widgets[prefix || name] = instance;
   return instance;
 }

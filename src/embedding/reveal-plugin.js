@@ -17,7 +17,9 @@ const SLOT_HEIGHT = '480px'; // of a slot the plugin adds (reveal's default slid
 
 /** "fresnel-zones?mode=zones-lh" → { name, query }. */
 export function parseWidgetSpec(spec) {
-  const [name, query = ''] = String(spec ?? '').trim().split(/\?(.*)/s);
+  const [name, query = ''] = String(spec ?? '')
+    .trim()
+    .split(/\?(.*)/s);
   return { name, query };
 }
 

@@ -34,10 +34,21 @@ export const fmt = (x, digits = 3) => {
 const pct = (x) => `${fmt(x * 100)}%`;
 const times = (r) => `${fmt(r, 2)}×`;
 
-export const NDF_NAMES = { ggx: 'GGX', beckmann: 'Beckmann', blinnPhong: 'Blinn-Phong', abc: 'ABC', sgd: 'Shifted gamma (SGD)' };
+export const NDF_NAMES = {
+  ggx: 'GGX',
+  beckmann: 'Beckmann',
+  blinnPhong: 'Blinn-Phong',
+  abc: 'ABC',
+  sgd: 'Shifted gamma (SGD)',
+};
 export const VISIBILITY_NAMES = {
-  implicit: 'Implicit', cookTorrance: 'Cook-Torrance', kelemen: 'Kelemen', smithGGXSeparable: 'Smith GGX, separable',
-  smithGGXCorrelated: 'Smith GGX, height-correlated', smithGGXCorrelatedFast: 'Hammon 2017', schlickGGX: 'Schlick-GGX',
+  implicit: 'Implicit',
+  cookTorrance: 'Cook-Torrance',
+  kelemen: 'Kelemen',
+  smithGGXSeparable: 'Smith GGX, separable',
+  smithGGXCorrelated: 'Smith GGX, height-correlated',
+  smithGGXCorrelatedFast: 'Hammon 2017',
+  schlickGGX: 'Schlick-GGX',
   smithBeckmannSeparable: 'Smith Beckmann, separable',
 };
 const CHANNELS = { r: 'red (650 nm)', g: 'green (550 nm)', b: 'blue (450 nm)' };
@@ -118,7 +129,8 @@ function offBy(answer, target, unit) {
 export const GRADERS = {
   'transmittance-depth': {
     title: 'Water depth for a transmittance',
-    summary: 'The depth of clear water (Hale & Querry) at which one RGB channel keeps `threshold` of its light: d = −ln(threshold) / σa.',
+    summary:
+      'The depth of clear water (Hale & Querry) at which one RGB channel keeps `threshold` of its light: d = −ln(threshold) / σa.',
     answer: { kind: 'number', label: 'Depth', unit: 'm' },
     widget: null,
     params: {
@@ -132,13 +144,19 @@ export const GRADERS = {
       const left = transmittance(sigma, answer);
       const name = CHANNELS[params.channel];
       if (Math.abs(answer - target) <= tolerance) {
-        return { ok: true, summary: `Right: at ${fmt(answer)} m water keeps ${pct(left)} of the ${name} light; the threshold is ${pct(params.threshold)} (within ±${fmt(tolerance)} m).`, details: [] };
+        return {
+          ok: true,
+          summary: `Right: at ${fmt(answer)} m water keeps ${pct(left)} of the ${name} light; the threshold is ${pct(params.threshold)} (within ±${fmt(tolerance)} m).`,
+          details: [],
+        };
       }
       return {
         ok: false,
         summary: `${offBy(answer, target, ' m')}; needs to be within ±${fmt(tolerance)} m.`,
-        details: [`At ${fmt(answer)} m, ${pct(left)} of the ${name} light is left; the exercise asks where ${pct(params.threshold)} is left.`,
-          answer < target ? 'Go deeper.' : 'The light was already below the threshold at a shallower depth.'],
+        details: [
+          `At ${fmt(answer)} m, ${pct(left)} of the ${name} light is left; the exercise asks where ${pct(params.threshold)} is left.`,
+          answer < target ? 'Go deeper.' : 'The light was already below the threshold at a shallower depth.',
+        ],
       };
     },
   },
@@ -156,7 +174,12 @@ export const GRADERS = {
       const R = interfaceReflectance(state.material, state.theta);
       const name = materialByKey(state.material).name;
       const where = `At ${state.theta}°, ${name} reflects ${pct(R)}`;
-      if (Math.abs(R - params.target) <= tolerance) return { ok: true, summary: `Right: ${where}; the target is ${pct(params.target)} ± ${pct(tolerance)}.`, details: [] };
+      if (Math.abs(R - params.target) <= tolerance)
+        return {
+          ok: true,
+          summary: `Right: ${where}; the target is ${pct(params.target)} ± ${pct(tolerance)}.`,
+          details: [],
+        };
       const rising = interfaceReflectance(state.material, Math.min(state.theta + 1, 89.9)) > R;
       const wantUp = params.target > R;
       return {
@@ -169,7 +192,8 @@ export const GRADERS = {
 
   'sphere-match': {
     title: 'Match a sphere',
-    summary: 'Match the target sphere (GGX, height-correlated Smith, Schlick F with F0 and α) by the RMS difference of the two pictures on a size × size grid.',
+    summary:
+      'Match the target sphere (GGX, height-correlated Smith, Schlick F with F0 and α) by the RMS difference of the two pictures on a size × size grid.',
     answer: { kind: 'state' },
     widget: 'brdf-lobe',
     reads: ['f0', 'alpha'],
@@ -191,9 +215,12 @@ export const GRADERS = {
       const details = [];
       const peak = peakOf(yours) / peakOf(target);
       const area = highlightArea(yours) / highlightArea(target);
-      if (Math.abs(peak - 1) > 0.05) details.push(`Your highlight is ${times(peak)} as bright as the target’s at its peak.`);
-      if (Math.abs(area - 1) > 0.05) details.push(`Your highlight covers ${times(area)} the target’s area (pixels above half its peak).`);
-      if (Math.abs(state.alpha - params.alpha) > 0.015) details.push(`Roughness too ${state.alpha < params.alpha ? 'low' : 'high'}.`);
+      if (Math.abs(peak - 1) > 0.05)
+        details.push(`Your highlight is ${times(peak)} as bright as the target’s at its peak.`);
+      if (Math.abs(area - 1) > 0.05)
+        details.push(`Your highlight covers ${times(area)} the target’s area (pixels above half its peak).`);
+      if (Math.abs(state.alpha - params.alpha) > 0.015)
+        details.push(`Roughness too ${state.alpha < params.alpha ? 'low' : 'high'}.`);
       if (Math.abs(state.f0 - params.f0) > 0.015) details.push(`F0 too ${state.f0 < params.f0 ? 'low' : 'high'}.`);
       return { ok: false, summary: verdict, details };
     },
@@ -209,20 +236,33 @@ export const GRADERS = {
     params: { target: { type: 'number', min: 0, max: 1, required: true, label: 'target G1' } },
     tolerance: 'G1 (0–1) either side of the target',
     grade({ state, params, tolerance }) {
-      const G1 = (state.kind === 'ggx' ? smithG1GGX : smithG1Beckmann)(Math.cos(Math.abs(state.viewTheta) * DEG), state.alpha);
+      const G1 = (state.kind === 'ggx' ? smithG1GGX : smithG1Beckmann)(
+        Math.cos(Math.abs(state.viewTheta) * DEG),
+        state.alpha,
+      );
       const where = `At θv = ${state.viewTheta}°, G1 = ${fmt(G1)}`;
-      if (Math.abs(G1 - params.target) <= tolerance) return { ok: true, summary: `Right: ${where}; the target is ${fmt(params.target)} ± ${fmt(tolerance)}.`, details: [] };
+      if (Math.abs(G1 - params.target) <= tolerance)
+        return {
+          ok: true,
+          summary: `Right: ${where}; the target is ${fmt(params.target)} ± ${fmt(tolerance)}.`,
+          details: [],
+        };
       return {
         ok: false,
         summary: `${where}: ${fmt(Math.abs(G1 - params.target))} ${G1 > params.target ? 'above' : 'below'} the target ${fmt(params.target)} (needs ± ${fmt(tolerance)}).`,
-        details: [G1 > params.target ? 'Too little is masked: view the surface at a more grazing angle.' : 'Too much is masked: view the surface closer to its normal.'],
+        details: [
+          G1 > params.target
+            ? 'Too little is masked: view the surface at a more grazing angle.'
+            : 'Too much is masked: view the surface closer to its normal.',
+        ],
       };
     },
   },
 
   'albedo-loss': {
     title: 'Energy lost by single scattering',
-    summary: 'The percentage of light a GGX surface (height-correlated Smith, F = 1) fails to reflect at one angle: ' +
+    summary:
+      'The percentage of light a GGX surface (height-correlated Smith, F = 1) fails to reflect at one angle: ' +
       '100 (1 − E(μ)), E by deterministic quadrature (albedoGGX, within 1e-5).',
     answer: { kind: 'number', label: 'Energy lost', unit: '%' },
     widget: null,
@@ -233,18 +273,28 @@ export const GRADERS = {
     tolerance: 'percentage points either side',
     grade({ answer, params, tolerance }) {
       const loss = 100 * (1 - albedoGGX(Math.cos(params.thetaDeg * DEG), params.alpha));
-      if (Math.abs(answer - loss) <= tolerance) return { ok: true, summary: `Right: the white furnace loses ${fmt(loss)}% at α = ${params.alpha}, θ = ${params.thetaDeg}° (within ±${fmt(tolerance)} points).`, details: [] };
+      if (Math.abs(answer - loss) <= tolerance)
+        return {
+          ok: true,
+          summary: `Right: the white furnace loses ${fmt(loss)}% at α = ${params.alpha}, θ = ${params.thetaDeg}° (within ±${fmt(tolerance)} points).`,
+          details: [],
+        };
       return {
         ok: false,
         summary: `${offBy(answer, loss, '%')}; needs to be within ±${fmt(tolerance)} points.`,
-        details: [answer < loss ? 'More light is lost than that: rough surfaces send much of it into second bounces that single scattering ignores.' : 'Less is lost than that: read the albedo E at the angle, the loss is 1 − E.'],
+        details: [
+          answer < loss
+            ? 'More light is lost than that: rough surfaces send much of it into second bounces that single scattering ignores.'
+            : 'Less is lost than that: read the albedo E at the angle, the loss is 1 − E.',
+        ],
       };
     },
   },
 
   'multiple-scattering-gain': {
     title: 'Energy that multiple bounces give back',
-    summary: 'The percentage points of albedo a GGX metal (height-correlated Smith, Schlick’s F of F0 at every bounce) gains ' +
+    summary:
+      'The percentage points of albedo a GGX metal (height-correlated Smith, Schlick’s F of F0 at every bounce) gains ' +
       'from light that bounces more than once: 100 (A − A₁), A the albedo and A₁ its first bounce, by the random walk on the ' +
       'Smith microsurface (Heitz et al. 2016; 100 000 seeded paths, standard error about 0.1 point).',
     answer: { kind: 'number', label: 'Energy given back', unit: 'percentage points' },
@@ -259,20 +309,28 @@ export const GRADERS = {
       const walk = randomWalkAlbedoGGX(Math.cos(params.thetaDeg * DEG), params.alpha, params.f0, 100_000, 1);
       const gain = 100 * (walk.albedo - walk.single);
       const where = `at α = ${params.alpha}, F0 = ${params.f0}, θ = ${params.thetaDeg}° one bounce reflects ${fmt(100 * walk.single)}% and all bounces ${fmt(100 * walk.albedo)}%`;
-      if (Math.abs(answer - gain) <= tolerance) return { ok: true, summary: `Right: ${where}, ${fmt(gain)} points more (within ±${fmt(tolerance)}).`, details: [] };
+      if (Math.abs(answer - gain) <= tolerance)
+        return {
+          ok: true,
+          summary: `Right: ${where}, ${fmt(gain)} points more (within ±${fmt(tolerance)}).`,
+          details: [],
+        };
       return {
         ok: false,
         summary: `${offBy(answer, gain, ' points')}; needs to be within ±${fmt(tolerance)} points.`,
-        details: [answer < gain
-          ? 'More comes back than that: a metal reflects most of what reaches a second facet, so most of what single scattering loses returns.'
-          : 'Less comes back than that: only what single scattering loses (1 − E with F = 1) can return, and each bounce keeps only F of it.'],
+        details: [
+          answer < gain
+            ? 'More comes back than that: a metal reflects most of what reaches a second facet, so most of what single scattering loses returns.'
+            : 'Less comes back than that: only what single scattering loses (1 − E with F = 1) can return, and each bounce keeps only F of it.',
+        ],
       };
     },
   },
 
   'light-zone': {
     title: 'Place the light for a Fresnel zone',
-    summary: 'Move the light so that l·h falls in `zone` (orthographic view: l·h = cos(θ/2) everywhere, θ the light’s angle from the view).',
+    summary:
+      'Move the light so that l·h falls in `zone` (orthographic view: l·h = cos(θ/2) everywhere, θ the light’s angle from the view).',
     answer: { kind: 'state' },
     widget: 'fresnel-zones',
     reads: ['lightTheta'],
@@ -291,14 +349,17 @@ export const GRADERS = {
       return {
         ok: false,
         summary: `${where}; the exercise wants it ${ZONES[params.zone]}, with θd at least ${fmt(tolerance)}° inside the zone.`,
-        details: [`Move the light about ${fmt(2 * gap, 2)}° ${thetaD < lo + tolerance ? 'further from' : 'closer to'} the view (θd changes half as fast as the light).`],
+        details: [
+          `Move the light about ${fmt(2 * gap, 2)}° ${thetaD < lo + tolerance ? 'further from' : 'closer to'} the view (θd changes half as fast as the light).`,
+        ],
       };
     },
   },
 
   'schlick-worst-angle': {
     title: 'Where Schlick is worst',
-    summary: 'The angle of incidence at which Schlick’s approximation is furthest from exact Fresnel, for the widget’s custom IOR (0.01° scan).',
+    summary:
+      'The angle of incidence at which Schlick’s approximation is furthest from exact Fresnel, for the widget’s custom IOR (0.01° scan).',
     answer: { kind: 'number', label: 'Angle', unit: '°' },
     widget: 'fresnel-curves',
     given: ['ior'],
@@ -309,18 +370,26 @@ export const GRADERS = {
       const f0 = f0FromIor(state.ior);
       const c = Math.cos(Math.min(Math.max(answer, 0), 90) * DEG);
       const there = Math.abs(fresnelSchlick(f0, c) - fresnelDielectric(c, state.ior));
-      if (Math.abs(answer - worst.deg) <= tolerance) return { ok: true, summary: `Right: Schlick is worst at ${fmt(worst.deg)}°, off by ${fmt(worst.error)} (within ±${fmt(tolerance)}°).`, details: [] };
+      if (Math.abs(answer - worst.deg) <= tolerance)
+        return {
+          ok: true,
+          summary: `Right: Schlick is worst at ${fmt(worst.deg)}°, off by ${fmt(worst.error)} (within ±${fmt(tolerance)}°).`,
+          details: [],
+        };
       return {
         ok: false,
         summary: `${offBy(answer, worst.deg, '°')}; needs to be within ±${fmt(tolerance)}°.`,
-        details: [`At ${fmt(answer)}° Schlick is off by ${fmt(there)}; at its worst it is off by ${fmt(worst.error)}, ${times(worst.error / Math.max(there, 1e-12))} as much.`],
+        details: [
+          `At ${fmt(answer)}° Schlick is off by ${fmt(there)}; at its worst it is off by ${fmt(worst.error)}, ${times(worst.error / Math.max(there, 1e-12))} as much.`,
+        ],
       };
     },
   },
 
   'ndf-profile': {
     title: 'Which NDF made the highlight',
-    summary: 'The page shows a highlight made by a hidden NDF (`hidden`, or a random one) at half width `hwhm`; a choice is right when its profile D(θh)/D(0) at that width matches the highlight’s wherever the highlight is at least `floor` of its peak.',
+    summary:
+      'The page shows a highlight made by a hidden NDF (`hidden`, or a random one) at half width `hwhm`; a choice is right when its profile D(θh)/D(0) at that width matches the highlight’s wherever the highlight is at least `floor` of its peak.',
     answer: { kind: 'choice', choices: () => NDF_NAMES },
     widget: null,
     params: {
@@ -341,8 +410,10 @@ export const GRADERS = {
         for (const k of Object.keys(NDF_NAMES)) {
           const f = k === h ? Infinity : profileFactor(profiles[k], profiles[h], params.floor).factor;
           if (f <= tolerance) {
-            problems.push(`at a half width of ${params.hwhm}° ${NDF_NAMES[k]} is within ${fmt(f, 3)}× of ${NDF_NAMES[h]}, ` +
-              `inside the tolerance ${fmt(tolerance, 3)}: two answers would be right`);
+            problems.push(
+              `at a half width of ${params.hwhm}° ${NDF_NAMES[k]} is within ${fmt(f, 3)}× of ${NDF_NAMES[h]}, ` +
+                `inside the tolerance ${fmt(tolerance, 3)}: two answers would be right`,
+            );
           }
         }
       }
@@ -357,19 +428,28 @@ export const GRADERS = {
       const profiles = ndfProfiles(params.hwhm, params);
       const mine = profileFactor(profiles[answer], profiles[hidden], params.floor);
       const verdict = `${NDF_NAMES[answer]}’s profile is within a factor ${fmt(mine.factor, 3)} of the highlight’s wherever the highlight is above ${pct(params.floor)} of its peak`;
-      if (mine.factor <= tolerance) return { ok: true, summary: `Right: ${verdict} (${fmt(tolerance, 3)} allowed).`, details: [] };
-      const side = profiles[answer][Math.round(mine.deg / 0.25)] > profiles[hidden][Math.round(mine.deg / 0.25)] ? 'brighter' : 'darker';
+      if (mine.factor <= tolerance)
+        return { ok: true, summary: `Right: ${verdict} (${fmt(tolerance, 3)} allowed).`, details: [] };
+      const side =
+        profiles[answer][Math.round(mine.deg / 0.25)] > profiles[hidden][Math.round(mine.deg / 0.25)]
+          ? 'brighter'
+          : 'darker';
       return {
         ok: false,
         summary: `${NDF_NAMES[answer]}’s profile is ${times(mine.factor)} ${side} than the highlight’s at θh = ${fmt(mine.deg)}°; a match needs ≤ ${fmt(tolerance, 3)}×.`,
-        details: [side === 'brighter' ? 'The highlight’s tail falls off faster than your choice’s.' : 'The highlight’s tail reaches further than your choice’s.'],
+        details: [
+          side === 'brighter'
+            ? 'The highlight’s tail falls off faster than your choice’s.'
+            : 'The highlight’s tail reaches further than your choice’s.',
+        ],
       };
     },
   },
 
   'visibility-ratio': {
     title: 'Ratio of two visibility terms',
-    summary: 'V_numerator / V_denominator with l and v mirrored about n at `thetaDeg` (h = n), at the widget’s roughness.',
+    summary:
+      'V_numerator / V_denominator with l and v mirrored about n at `thetaDeg` (h = n), at the widget’s roughness.',
     answer: { kind: 'number', label: 'Ratio', unit: '' },
     widget: 'visibility-explorer',
     given: ['alpha'],
@@ -384,7 +464,8 @@ export const GRADERS = {
       const den = visibilityAtMirror(params.denominator, params.thetaDeg, state.alpha);
       const ratio = num / den;
       const what = `${VISIBILITY_NAMES[params.numerator]} / ${VISIBILITY_NAMES[params.denominator]} at ${params.thetaDeg}°, α = ${state.alpha}`;
-      if (Math.abs(answer - ratio) <= tolerance) return { ok: true, summary: `Right: ${what} is ${fmt(ratio)} (within ±${fmt(tolerance)}).`, details: [] };
+      if (Math.abs(answer - ratio) <= tolerance)
+        return { ok: true, summary: `Right: ${what} is ${fmt(ratio)} (within ±${fmt(tolerance)}).`, details: [] };
       return {
         ok: false,
         summary: `${offBy(answer, ratio, '')} for ${what}; needs to be within ±${fmt(tolerance)}.`,
@@ -395,7 +476,8 @@ export const GRADERS = {
 
   'lambert-radiance': {
     title: 'Brightness of a Lambertian surface',
-    summary: 'Radiance of a Lambertian surface (albedo cdiff) under a punctual light c_light at `thetaDeg` from the normal: Lo = π (cdiff/π) c_light cos θ.',
+    summary:
+      'Radiance of a Lambertian surface (albedo cdiff) under a punctual light c_light at `thetaDeg` from the normal: Lo = π (cdiff/π) c_light cos θ.',
     answer: { kind: 'number', label: 'Radiance Lo', unit: '' },
     widget: null,
     params: {
@@ -407,12 +489,16 @@ export const GRADERS = {
     grade({ answer, params, tolerance }) {
       const { cdiff, cLight, thetaDeg } = params;
       const target = punctualRadiance(diffuseLambert(cdiff), Math.cos(thetaDeg * DEG), cLight);
-      if (Math.abs(answer - target) <= tolerance) return { ok: true, summary: `Right: Lo = ${fmt(target)} (within ±${fmt(tolerance)}).`, details: [] };
+      if (Math.abs(answer - target) <= tolerance)
+        return { ok: true, summary: `Right: Lo = ${fmt(target)} (within ±${fmt(tolerance)}).`, details: [] };
       const near = (x) => Math.abs(answer - x) <= tolerance * Math.max(1, x / Math.max(target, 1e-12));
       const details = [];
-      if (near(target * Math.PI)) details.push('That is π times too bright: the π of the punctual light equation cancels Lambert’s 1/π.');
-      else if (near(target / Math.PI)) details.push('That is π times too dark: the punctual light brings a factor π (Lo = π f c_light cos θ).');
-      else if (near(cLight * cdiff)) details.push('You left out the cosine: the light arrives at θ from the normal, spread over a larger area.');
+      if (near(target * Math.PI))
+        details.push('That is π times too bright: the π of the punctual light equation cancels Lambert’s 1/π.');
+      else if (near(target / Math.PI))
+        details.push('That is π times too dark: the punctual light brings a factor π (Lo = π f c_light cos θ).');
+      else if (near(cLight * cdiff))
+        details.push('You left out the cosine: the light arrives at θ from the normal, spread over a larger area.');
       else if (target > 0) details.push(`Your value is ${times(answer / target)} the right one.`);
       return { ok: false, summary: `${offBy(answer, target, '')}; needs to be within ±${fmt(tolerance)}.`, details };
     },

@@ -70,12 +70,18 @@ async function entriesOf(json, source, baseUrl, load) {
   }
   if (Array.isArray(json)) return json.map((raw, i) => ({ source: `${source} #${i + 1}`, raw }));
   if (list) {
-    return Promise.all(list.map(async (item, i) => {
-      if (typeof item !== 'string') return { source: `${source} #${i + 1}`, raw: item };
-      if (!baseUrl) return { source: item, error: 'is a file name, but a dropped index cannot fetch files: drop the exercise files themselves' };
-      const got = await load(new URL(item, baseUrl).href);
-      return got.error ? { source: item, error: got.error } : { source: item, raw: got.json };
-    }));
+    return Promise.all(
+      list.map(async (item, i) => {
+        if (typeof item !== 'string') return { source: `${source} #${i + 1}`, raw: item };
+        if (!baseUrl)
+          return {
+            source: item,
+            error: 'is a file name, but a dropped index cannot fetch files: drop the exercise files themselves',
+          };
+        const got = await load(new URL(item, baseUrl).href);
+        return got.error ? { source: item, error: got.error } : { source: item, raw: got.json };
+      }),
+    );
   }
   return [{ source, raw: json }];
 }
@@ -91,7 +97,8 @@ export async function readExerciseSet(json, { source, baseUrl = null, schemaOf, 
       continue;
     }
     const { exercise, errors } = await validateExercise(entry.raw, { schemaOf });
-    if (exercise && seen.has(exercise.id)) errors.push(`id: "${exercise.id}" is already used by ${seen.get(exercise.id)}`);
+    if (exercise && seen.has(exercise.id))
+      errors.push(`id: "${exercise.id}" is already used by ${seen.get(exercise.id)}`);
     if (errors.length) problems.push({ source: entry.source, errors });
     else {
       seen.set(exercise.id, entry.source);

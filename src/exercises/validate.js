@@ -4,11 +4,23 @@ import { CHAPTERS } from '../core/chapters.js';
 import { coerceState, defaultState, isOption, showValue } from '../core/state.js';
 import { GRADERS, isGraderName } from './graders.js';
 
-export const FIELDS = ['id', 'chapter', 'title', 'prompt', 'widget', 'state', 'locked', 'grader', 'params', 'tolerance'];
+export const FIELDS = [
+  'id',
+  'chapter',
+  'title',
+  'prompt',
+  'widget',
+  'state',
+  'locked',
+  'grader',
+  'params',
+  'tolerance',
+];
 
 const show = showValue;
 const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
-const sameValue = (a, b) => JSON.stringify(Array.isArray(a) ? [...a].sort() : a) === JSON.stringify(Array.isArray(b) ? [...b].sort() : b);
+const sameValue = (a, b) =>
+  JSON.stringify(Array.isArray(a) ? [...a].sort() : a) === JSON.stringify(Array.isArray(b) ? [...b].sort() : b);
 
 /** Why `value` does not fit state field `f` (src/core/state.js kinds), or null. Strict: no strings for numbers. */
 export function fieldProblem(f, value) {
@@ -26,10 +38,16 @@ export function fieldProblem(f, value) {
       return unknown.length ? `${unknown.map(show).join(', ')} not among ${Object.keys(f.options).join(', ')}` : null;
     }
     case 'color':
-      return typeof value === 'string' && /^#[0-9a-f]{6}$/i.test(value) ? null : `${show(value)} is not a colour like "#rrggbb"`;
+      return typeof value === 'string' && /^#[0-9a-f]{6}$/i.test(value)
+        ? null
+        : `${show(value)} is not a colour like "#rrggbb"`;
     case 'samples':
     case 'text': // as a link would carry them (a samples list's items may be numbers)
-      return coerceState({ value: f }, { value }).notices[0]?.replace(/^[^:]*: /, '').replace(/; kept .*$/, '') ?? null;
+      return (
+        coerceState({ value: f }, { value })
+          .notices[0]?.replace(/^[^:]*: /, '')
+          .replace(/; kept .*$/, '') ?? null
+      );
     default:
       return `unknown field type ${f.type}`;
   }
@@ -46,18 +64,29 @@ function requiredText(raw, key, errors) {
 export async function validateExercise(raw, { schemaOf }) {
   if (!isObject(raw)) return { exercise: null, errors: ['the exercise is not a JSON object'] };
   const errors = [];
-  for (const key of Object.keys(raw)) if (!FIELDS.includes(key)) errors.push(`${key}: unknown field (fields: ${FIELDS.join(', ')})`);
+  for (const key of Object.keys(raw))
+    if (!FIELDS.includes(key)) errors.push(`${key}: unknown field (fields: ${FIELDS.join(', ')})`);
 
-  if (typeof raw.id !== 'string' || !/^[a-z0-9][a-z0-9-]*$/.test(raw.id)) errors.push(`id: ${raw.id === undefined ? 'missing' : `${show(raw.id)} is not`} a name of lower-case letters, digits and dashes`);
+  if (typeof raw.id !== 'string' || !/^[a-z0-9][a-z0-9-]*$/.test(raw.id))
+    errors.push(
+      `id: ${raw.id === undefined ? 'missing' : `${show(raw.id)} is not`} a name of lower-case letters, digits and dashes`,
+    );
   const chapters = CHAPTERS.map((c) => c.key);
-  if (!chapters.includes(raw.chapter)) errors.push(`chapter: ${raw.chapter === undefined ? 'missing' : `${show(raw.chapter)} is not a chapter`} (chapters: ${chapters.join(', ')})`);
+  if (!chapters.includes(raw.chapter))
+    errors.push(
+      `chapter: ${raw.chapter === undefined ? 'missing' : `${show(raw.chapter)} is not a chapter`} (chapters: ${chapters.join(', ')})`,
+    );
   requiredText(raw, 'title', errors);
   requiredText(raw, 'prompt', errors);
   if (raw.tolerance === undefined) errors.push('tolerance: missing (a positive number)');
-  else if (typeof raw.tolerance !== 'number' || !(raw.tolerance > 0) || !Number.isFinite(raw.tolerance)) errors.push(`tolerance: ${show(raw.tolerance)} is not a positive number`);
+  else if (typeof raw.tolerance !== 'number' || !(raw.tolerance > 0) || !Number.isFinite(raw.tolerance))
+    errors.push(`tolerance: ${show(raw.tolerance)} is not a positive number`);
 
   const grader = isGraderName(raw.grader) ? GRADERS[raw.grader] : null;
-  if (!grader) errors.push(`grader: ${raw.grader === undefined ? 'missing' : `unknown grader ${show(raw.grader)}`} (graders: ${Object.keys(GRADERS).join(', ')})`);
+  if (!grader)
+    errors.push(
+      `grader: ${raw.grader === undefined ? 'missing' : `unknown grader ${show(raw.grader)}`} (graders: ${Object.keys(GRADERS).join(', ')})`,
+    );
 
   // the widget and its state
   let schema = null;
@@ -66,33 +95,43 @@ export async function validateExercise(raw, { schemaOf }) {
     if (!schema) errors.push(`widget: unknown widget ${show(raw.widget)}`);
   }
   const widgetFits = !grader?.widget || raw.widget === grader.widget;
-  if (!widgetFits) errors.push(`widget: grader "${raw.grader}" reads the "${grader.widget}" widget, not ${show(raw.widget ?? null)}`);
+  if (!widgetFits)
+    errors.push(`widget: grader "${raw.grader}" reads the "${grader.widget}" widget, not ${show(raw.widget ?? null)}`);
   const state = raw.state ?? {};
   const locked = raw.locked ?? [];
   if (!isObject(state)) errors.push('state: not an object of widget state keys');
   else if (Object.keys(state).length && !schema && raw.widget == null) errors.push('state: given without a widget');
   else if (schema) {
     for (const [key, value] of Object.entries(state)) {
-      if (!Object.hasOwn(schema, key)) errors.push(`state.${key}: unknown key for widget "${raw.widget}" (keys: ${Object.keys(schema).join(', ')})`);
+      if (!Object.hasOwn(schema, key))
+        errors.push(`state.${key}: unknown key for widget "${raw.widget}" (keys: ${Object.keys(schema).join(', ')})`);
       else {
         const why = fieldProblem(schema[key], value);
         if (why) errors.push(`state.${key}: ${why}`);
       }
     }
   }
-  if (!Array.isArray(locked) || locked.some((k) => typeof k !== 'string')) errors.push('locked: not a list of state keys');
+  if (!Array.isArray(locked) || locked.some((k) => typeof k !== 'string'))
+    errors.push('locked: not a list of state keys');
   else if (schema) {
-    for (const key of locked) if (!Object.hasOwn(schema, key)) errors.push(`locked: "${key}" is not a state key of widget "${raw.widget}"`);
+    for (const key of locked)
+      if (!Object.hasOwn(schema, key)) errors.push(`locked: "${key}" is not a state key of widget "${raw.widget}"`);
   } else if (locked.length && raw.widget == null) errors.push('locked: given without a widget');
 
   // what the grader needs of the state
   if (grader && widgetFits && schema && isObject(state) && Array.isArray(locked)) {
     const full = { ...defaultState(schema), ...state };
-    for (const key of grader.reads ?? []) if (locked.includes(key)) errors.push(`locked: "${key}" is what the student sets for grader "${raw.grader}"; it must stay free`);
-    for (const key of grader.given ?? []) if (!locked.includes(key)) errors.push(`locked: must include "${key}" (grader "${raw.grader}" takes the question from it)`);
+    for (const key of grader.reads ?? [])
+      if (locked.includes(key))
+        errors.push(`locked: "${key}" is what the student sets for grader "${raw.grader}"; it must stay free`);
+    for (const key of grader.given ?? [])
+      if (!locked.includes(key))
+        errors.push(`locked: must include "${key}" (grader "${raw.grader}" takes the question from it)`);
     for (const [key, value] of Object.entries(grader.requires ?? {})) {
-      if (!sameValue(full[key], value)) errors.push(`state.${key}: grader "${raw.grader}" needs ${show(value)}, got ${show(full[key])}`);
-      else if (!locked.includes(key)) errors.push(`locked: must include "${key}" (grader "${raw.grader}" assumes ${key} = ${show(value)})`);
+      if (!sameValue(full[key], value))
+        errors.push(`state.${key}: grader "${raw.grader}" needs ${show(value)}, got ${show(full[key])}`);
+      else if (!locked.includes(key))
+        errors.push(`locked: must include "${key}" (grader "${raw.grader}" assumes ${key} = ${show(value)})`);
     }
   }
 
@@ -105,7 +144,18 @@ export async function validateExercise(raw, { schemaOf }) {
 
   if (errors.length) return { exercise: null, errors };
   return {
-    exercise: { id: raw.id, chapter: raw.chapter, title: raw.title, prompt: raw.prompt, widget: raw.widget ?? null, state, locked, grader: raw.grader, params, tolerance: raw.tolerance },
+    exercise: {
+      id: raw.id,
+      chapter: raw.chapter,
+      title: raw.title,
+      prompt: raw.prompt,
+      widget: raw.widget ?? null,
+      state,
+      locked,
+      grader: raw.grader,
+      params,
+      tolerance: raw.tolerance,
+    },
     errors,
   };
 }

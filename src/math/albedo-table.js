@@ -4,7 +4,9 @@
 // not E, are stored: near alpha = 0 they are ~1e-7 and float32 keeps their digits, where 1 - E would have none.
 import { averageAlbedo, dfgSplitSum } from './integrate.js';
 import {
-  energyCompensationTurquin, fresnelAverage, fresnelMultipleScatteringKullaConty,
+  energyCompensationTurquin,
+  fresnelAverage,
+  fresnelMultipleScatteringKullaConty,
 } from './multiple-scattering.js';
 
 /**

@@ -4,8 +4,14 @@
 import { fresnelConductor, fresnelDielectric, fresnelSchlick } from './fresnel.js';
 import { ndfABC, ndfBeckmannFromSin2, ndfBlinnPhongFromSin2, ndfGGXFromSin2, ndfSGD } from './ndf.js';
 import {
-  visibilityCookTorrance, visibilityImplicit, visibilityKelemen, visibilitySchlickGGX, visibilitySmithBeckmannSeparable,
-  visibilitySmithGGXCorrelated, visibilitySmithGGXCorrelatedFast, visibilitySmithGGXSeparable,
+  visibilityCookTorrance,
+  visibilityImplicit,
+  visibilityKelemen,
+  visibilitySchlickGGX,
+  visibilitySmithBeckmannSeparable,
+  visibilitySmithGGXCorrelated,
+  visibilitySmithGGXCorrelatedFast,
+  visibilitySmithGGXSeparable,
 } from './visibility.js';
 
 /** Each F term of cos = l·h and the material params { f0, eta, k }. */
@@ -53,7 +59,13 @@ export function halfVector(l, v) {
 export function brdfAngles(l, v) {
   const h = halfVector(l, v);
   const cos = (x) => Math.min(Math.max(x, -1), 1); // rounding can put a dot product of unit vectors 1 ulp past 1
-  return { nl: cos(l[2]), nv: cos(v[2]), nh: h ? cos(h[2]) : 0, lh: h ? cos(l[0] * h[0] + l[1] * h[1] + l[2] * h[2]) : 0, h };
+  return {
+    nl: cos(l[2]),
+    nv: cos(v[2]),
+    nh: h ? cos(h[2]) : 0,
+    lh: h ? cos(l[0] * h[0] + l[1] * h[1] + l[2] * h[2]) : 0,
+    h,
+  };
 }
 
 /**

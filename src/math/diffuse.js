@@ -32,7 +32,7 @@ export function diffuseAshikhminShirley(nl, nv, f0, cdiff) {
     const m2 = m * m;
     return 1 - m2 * m2 * m;
   };
-  return ((28 / (23 * Math.PI)) * clamp01(cdiff) * (1 - clamp01(f0)) * p5(nl) * p5(nv));
+  return (28 / (23 * Math.PI)) * clamp01(cdiff) * (1 - clamp01(f0)) * p5(nl) * p5(nv);
 }
 
 /**

@@ -5,7 +5,11 @@
 /** l and v (unit, local frame, n = z) for the half/difference angles, with the half vector in the x-z plane. */
 export function directionsFromHalfDiff(thetaH, thetaD, phiD) {
   const d = [Math.sin(thetaD) * Math.cos(phiD), Math.sin(thetaD) * Math.sin(phiD), Math.cos(thetaD)];
-  const rotY = ([x, y, z]) => [x * Math.cos(thetaH) + z * Math.sin(thetaH), y, -x * Math.sin(thetaH) + z * Math.cos(thetaH)];
+  const rotY = ([x, y, z]) => [
+    x * Math.cos(thetaH) + z * Math.sin(thetaH),
+    y,
+    -x * Math.sin(thetaH) + z * Math.cos(thetaH),
+  ];
   return { l: rotY(d), v: rotY([-d[0], -d[1], d[2]]) };
 }
 

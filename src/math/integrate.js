@@ -98,7 +98,7 @@ export function ndfProjectedIntegral(D, n = 4000) {
     const g = D(Math.cos(theta)) * Math.cos(theta) * Math.sin(theta) * Math.PI * s; // dθ/ds = π s
     sum += (i === 0 || i === n ? 1 : i % 2 ? 4 : 2) * g;
   }
-  return ((2 * Math.PI * sum * h) / 3);
+  return (2 * Math.PI * sum * h) / 3;
 }
 
 /**
@@ -140,10 +140,16 @@ const KINK_SCAN = 96; // steps in θm when looking for where a kink enters the �
 /** ∫_lo^hi g with x = lo + (hi - lo) s²(3 - 2s): a kink (x - lo)^3/2 at either end becomes smooth in s. */
 function smoothedIntegral(integrate, g, lo, hi, tol) {
   if (!(hi > lo)) return [0, 0];
-  return integrate((s) => {
-    const w = 6 * s * (1 - s) * (hi - lo);
-    return g(lo + (hi - lo) * s * s * (3 - 2 * s)).map((y) => y * w);
-  }, 0, 1, tol, 2);
+  return integrate(
+    (s) => {
+      const w = 6 * s * (1 - s) * (hi - lo);
+      return g(lo + (hi - lo) * s * s * (3 - 2 * s)).map((y) => y * w);
+    },
+    0,
+    1,
+    tol,
+    2,
+  );
 }
 
 /** Roots of h in (0, b) by a scan of `steps` and bisection. */
@@ -202,10 +208,16 @@ function phiIntegral({ nv, sv, vis, kinks, params, integrate }, cm, sm, phiMax, 
   let bias = 0;
   for (let k = 0; k + 1 < cuts.length; k++) {
     const [lo, hi] = [cuts[k], cuts[k + 1]];
-    const piece = integrate((s) => {
-      const q = 1 - s;
-      return integrand(hi - (hi - lo) * q * q * q, 3 * q * q * (hi - lo));
-    }, 0, 1, tol / (cuts.length - 1), 2);
+    const piece = integrate(
+      (s) => {
+        const q = 1 - s;
+        return integrand(hi - (hi - lo) * q * q * q, 3 * q * q * (hi - lo));
+      },
+      0,
+      1,
+      tol / (cuts.length - 1),
+      2,
+    );
     scale += piece[0];
     bias += piece[1];
   }
@@ -251,8 +263,14 @@ export function dfgSplitSum(mu, alpha, terms = {}, { nodes = 0 } = {}) {
   // tan θ1 = μ/(1 + sin θv) and tan θ2 = (1 + sin θv)/μ, by the half-angle tangent
   const rOf = (tanTheta) => NDF_R[ndf](tanTheta * tanTheta, a2);
   const theta2 = Math.atan((1 + sv) / nv);
-  const cuts = [...new Set([rOf((1 + sv) / nv), rOf(nv / (1 + sv)), 1,
-    ...kinkAngles(kinks, nv, sv, theta2).map((t) => rOf(Math.tan(t)))])].sort((x, y) => x - y);
+  const cuts = [
+    ...new Set([
+      rOf((1 + sv) / nv),
+      rOf(nv / (1 + sv)),
+      1,
+      ...kinkAngles(kinks, nv, sv, theta2).map((t) => rOf(Math.tan(t))),
+    ]),
+  ].sort((x, y) => x - y);
   const sum = [0, 0];
   for (let k = 0; k + 1 < cuts.length; k++) {
     const piece = smoothedIntegral(integrate, overPhi, cuts[k], cuts[k + 1], R_TOL / (cuts.length - 1));

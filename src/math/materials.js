@@ -18,7 +18,10 @@ export const NON_METALS = [
   { key: 'water', name: 'Water', linear: [0.02, 0.02, 0.02], srgb: [0.15, 0.15, 0.15] },
   // printed as in the talk, though the pair disagrees: 0.03 linear is 0.19 sRGB, and 0.21 sRGB is 0.036 linear
   {
-    key: 'glass-low', name: 'Plastic / Glass (Low)', linear: [0.03, 0.03, 0.03], srgb: [0.21, 0.21, 0.21],
+    key: 'glass-low',
+    name: 'Plastic / Glass (Low)',
+    linear: [0.03, 0.03, 0.03],
+    srgb: [0.21, 0.21, 0.21],
     note: 'the printed pair disagrees: 0.03 linear is 0.19 in sRGB, and the printed 0.21 sRGB is 0.036 linear.',
   },
   { key: 'plastic-high', name: 'Plastic High', linear: [0.05, 0.05, 0.05], srgb: [0.24, 0.24, 0.24] },

@@ -26,9 +26,19 @@ export const absorptionFromK = (k, um) => (4 * Math.PI * k) / (um * 1e-6);
 export const WATER_K = {
   source: 'Hale & Querry, Appl. Opt. 12, 555 (1973)',
   rows: [
-    [0.4, 1.339, 1.86e-9], [0.425, 1.338, 1.3e-9], [0.45, 1.337, 1.02e-9], [0.475, 1.336, 9.35e-10], [0.5, 1.335, 1e-9],
-    [0.525, 1.334, 1.32e-9], [0.55, 1.333, 1.96e-9], [0.575, 1.333, 3.6e-9], [0.6, 1.332, 1.09e-8], [0.625, 1.332, 1.39e-8],
-    [0.65, 1.331, 1.64e-8], [0.675, 1.331, 2.23e-8], [0.7, 1.331, 3.35e-8],
+    [0.4, 1.339, 1.86e-9],
+    [0.425, 1.338, 1.3e-9],
+    [0.45, 1.337, 1.02e-9],
+    [0.475, 1.336, 9.35e-10],
+    [0.5, 1.335, 1e-9],
+    [0.525, 1.334, 1.32e-9],
+    [0.55, 1.333, 1.96e-9],
+    [0.575, 1.333, 3.6e-9],
+    [0.6, 1.332, 1.09e-8],
+    [0.625, 1.332, 1.39e-8],
+    [0.65, 1.331, 1.64e-8],
+    [0.675, 1.331, 2.23e-8],
+    [0.7, 1.331, 3.35e-8],
   ],
 };
 
@@ -43,7 +53,14 @@ export function waterAbsorptionRgb() {
  * exp(-sigmaA · path) (exact for a homogeneous medium), so one walk serves every absorption.
  * Returns { exit: 'back' | 'through' | 'lost', x (where it left), path (length inside), events, points }.
  */
-export function randomWalk2D({ sigmaS, thickness = Infinity, entryAngle = 0, rand, maxEvents = 10000, keepPoints = false }) {
+export function randomWalk2D({
+  sigmaS,
+  thickness = Infinity,
+  entryAngle = 0,
+  rand,
+  maxEvents = 10000,
+  keepPoints = false,
+}) {
   let [x, y] = [0, 0];
   let [dx, dy] = [Math.sin(entryAngle), Math.cos(entryAngle)];
   let path = 0;

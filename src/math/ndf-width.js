@@ -51,7 +51,10 @@ export function matchNdfWidths(hwhmDeg, { abcA2 = 2.5, sgdP = 0.64 } = {}) {
  */
 export function ndfParamsMatchingGGX(kind, alpha, shapes) {
   if (kind === 'ggx') return { alpha };
-  const m = matchNdfWidths(ndfHalfWidthDeg((c) => ndfGGX(c, alpha)), shapes);
+  const m = matchNdfWidths(
+    ndfHalfWidthDeg((c) => ndfGGX(c, alpha)),
+    shapes,
+  );
   // NDFs without an alpha keep GGX's, which the visibility terms read
   return { alpha: m[kind].alpha ?? alpha, exponent: m.blinnPhong.exponent, a1: m.abc.a1, a2: m.abc.a2, p: m.sgd.p };
 }

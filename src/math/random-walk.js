@@ -121,8 +121,11 @@ export function randomWalkAlbedoGGX(mu, alpha, f0, samples, seed = 1) {
   const all = meanAndError(sum, sum2, samples);
   const first = meanAndError(one, one2, samples);
   return {
-    albedo: shaped(f0, all.mean), standardError: shaped(f0, all.error),
-    single: shaped(f0, first.mean), singleStandardError: shaped(f0, first.error), dropped: dropped / samples,
+    albedo: shaped(f0, all.mean),
+    standardError: shaped(f0, all.error),
+    single: shaped(f0, first.mean),
+    singleStandardError: shaped(f0, first.error),
+    dropped: dropped / samples,
   };
 }
 
@@ -175,7 +178,9 @@ export function randomWalkBRDFGGX(l, v, alpha, f0, samples, seed = 1) {
   const all = meanAndError(sum, sum2, samples);
   const single = meanAndError(one, one2, samples);
   return {
-    value: shaped(f0, all.mean), standardError: shaped(f0, all.error),
-    single: shaped(f0, single.mean), singleStandardError: shaped(f0, single.error),
+    value: shaped(f0, all.mean),
+    standardError: shaped(f0, all.error),
+    single: shaped(f0, single.mean),
+    singleStandardError: shaped(f0, single.error),
   };
 }

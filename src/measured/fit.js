@@ -30,9 +30,19 @@ const range = (key, min, max, log = true) => ({ key, min, max, log });
 export const FIT_MODELS = {
   ggx: { label: 'GGX', D: 'ggx', V: 'smithGGXCorrelated', shape: [range('alpha', 1e-3, 1)] },
   beckmann: { label: 'Beckmann', D: 'beckmann', V: 'smithBeckmannSeparable', shape: [range('alpha', 1e-3, 1)] },
-  blinnPhong: { label: 'Blinn-Phong', D: 'blinnPhong', V: 'smithBeckmannSeparable', shape: [range('exponent', 1, 1e6)] },
+  blinnPhong: {
+    label: 'Blinn-Phong',
+    D: 'blinnPhong',
+    V: 'smithBeckmannSeparable',
+    shape: [range('exponent', 1, 1e6)],
+  },
   abc: { label: 'ABC', D: 'abc', V: 'cookTorrance', shape: [range('a1', 0.01, 1e4), range('a2', 0.05, 20)] },
-  sgd: { label: 'Shifted gamma', D: 'sgd', V: 'cookTorrance', shape: [range('alpha', 0.01, 2), range('p', 0, 1.9, false)] },
+  sgd: {
+    label: 'Shifted gamma',
+    D: 'sgd',
+    V: 'cookTorrance',
+    shape: [range('alpha', 0.01, 2), range('p', 0, 1.9, false)],
+  },
 };
 
 /** The NDF/V parameter object NDF_TERMS and VISIBILITY_TERMS read, from a model's shape parameters. */

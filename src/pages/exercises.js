@@ -30,16 +30,26 @@ let exercises = [];
 let current = null; // { exercise, widget, preview, hidden }
 
 function showProblems(problems) {
-  problemsEl.replaceChildren(...problems.map(({ source, errors }) => el('div', { className: 'notice notice-error' },
-    el('strong', { textContent: `${source}: ${errors.length} problem${errors.length > 1 ? 's' : ''}, not loaded` }),
-    el('ul', {}, ...errors.map((e) => el('li', { textContent: e }))))));
+  problemsEl.replaceChildren(
+    ...problems.map(({ source, errors }) =>
+      el(
+        'div',
+        { className: 'notice notice-error' },
+        el('strong', { textContent: `${source}: ${errors.length} problem${errors.length > 1 ? 's' : ''}, not loaded` }),
+        el('ul', {}, ...errors.map((e) => el('li', { textContent: e }))),
+      ),
+    ),
+  );
 }
 
 function renderList() {
   const solved = exercises.filter((e) => progress.of(e.id).solved).length;
-  const summary = el('p', { className: 'exercise-progress' },
+  const summary = el(
+    'p',
+    { className: 'exercise-progress' },
     el('progress', { max: exercises.length || 1, value: solved }),
-    ` ${solved} of ${exercises.length} solved`);
+    ` ${solved} of ${exercises.length} solved`,
+  );
   summary.firstChild.setAttribute('aria-label', 'Exercises solved');
   const reset = el('button', { type: 'button', className: 'exercise-reset', textContent: 'Reset progress' });
   reset.addEventListener('click', () => {
@@ -49,14 +59,26 @@ function renderList() {
     if (current) renderStatus();
   });
   const groups = CHAPTERS.filter((ch) => exercises.some((e) => e.chapter === ch.key)).map((ch) => {
-    const items = exercises.filter((e) => e.chapter === ch.key).map((e) => {
-      const p = progress.of(e.id);
-      const a = el('a', { href: `#${e.id}`, textContent: e.title });
-      if (current?.exercise.id === e.id) a.setAttribute('aria-current', 'true');
-      const status = p.solved ? '✓ solved' : p.attempts ? `${p.attempts} attempt${p.attempts > 1 ? 's' : ''}` : '';
-      return el('li', { className: p.solved ? 'solved' : '' }, a, status ? el('span', { className: 'exercise-status', textContent: ` ${status}` }) : '');
-    });
-    return el('section', {}, el('h2', { textContent: `${CHAPTERS.indexOf(ch) + 1}. ${ch.title}` }), el('ol', {}, ...items));
+    const items = exercises
+      .filter((e) => e.chapter === ch.key)
+      .map((e) => {
+        const p = progress.of(e.id);
+        const a = el('a', { href: `#${e.id}`, textContent: e.title });
+        if (current?.exercise.id === e.id) a.setAttribute('aria-current', 'true');
+        const status = p.solved ? '✓ solved' : p.attempts ? `${p.attempts} attempt${p.attempts > 1 ? 's' : ''}` : '';
+        return el(
+          'li',
+          { className: p.solved ? 'solved' : '' },
+          a,
+          status ? el('span', { className: 'exercise-status', textContent: ` ${status}` }) : '',
+        );
+      });
+    return el(
+      'section',
+      {},
+      el('h2', { textContent: `${CHAPTERS.indexOf(ch) + 1}. ${ch.title}` }),
+      el('ol', {}, ...items),
+    );
   });
   listEl.replaceChildren(summary, reset, ...groups);
 }
@@ -65,24 +87,42 @@ function renderStatus() {
   const p = progress.of(current.exercise.id);
   articleEl.querySelector('.exercise-meta').textContent = p.solved
     ? `Solved${p.attempts ? ` (${p.attempts} attempt${p.attempts > 1 ? 's' : ''})` : ''}`
-    : p.attempts ? `Not solved yet: ${p.attempts} attempt${p.attempts > 1 ? 's' : ''}` : 'Not tried yet';
+    : p.attempts
+      ? `Not solved yet: ${p.attempts} attempt${p.attempts > 1 ? 's' : ''}`
+      : 'Not tried yet';
 }
 
 /** The answer part of the form: a number box, a group of options, or a note that the widget is the answer. */
 function answerField(exercise, grader) {
   const a = grader.answer;
   if (a.kind === 'number') {
-    const input = el('input', { type: 'text', inputMode: 'decimal', name: 'answer', id: 'exercise-answer', autocomplete: 'off', required: true });
+    const input = el('input', {
+      type: 'text',
+      inputMode: 'decimal',
+      name: 'answer',
+      id: 'exercise-answer',
+      autocomplete: 'off',
+      required: true,
+    });
     const label = el('label', { htmlFor: 'exercise-answer', textContent: `${a.label}${a.unit ? ` (${a.unit})` : ''}` });
     return { node: el('div', { className: 'exercise-answer' }, label, input), read: () => input.value.trim() };
   }
   if (a.kind === 'choice') {
     const options = Object.entries(a.choices(exercise.params)).map(([value, text]) =>
-      el('label', {}, el('input', { type: 'radio', name: 'answer', value }), ` ${text}`));
-    const fieldset = el('fieldset', { className: 'exercise-answer' }, el('legend', { textContent: 'Your answer' }), ...options);
+      el('label', {}, el('input', { type: 'radio', name: 'answer', value }), ` ${text}`),
+    );
+    const fieldset = el(
+      'fieldset',
+      { className: 'exercise-answer' },
+      el('legend', { textContent: 'Your answer' }),
+      ...options,
+    );
     return { node: fieldset, read: () => fieldset.querySelector('input:checked')?.value ?? '' };
   }
-  return { node: el('p', { className: 'exercise-answer', textContent: 'Answer with the widget’s controls, then check.' }), read: () => null };
+  return {
+    node: el('p', { className: 'exercise-answer', textContent: 'Answer with the widget’s controls, then check.' }),
+    read: () => null,
+  };
 }
 
 /** Grades the current answer; null when there is nothing to grade yet (an empty or unreadable box). */
@@ -93,22 +133,42 @@ function check(read) {
   let answer = raw;
   if (grader.answer.kind === 'number') {
     answer = parseNumberAnswer(raw);
-    if (raw === '' || !Number.isFinite(answer)) return { ok: false, counted: false, summary: `Enter a number${grader.answer.unit ? ` in ${grader.answer.unit}` : ''}.`, details: [] };
+    if (raw === '' || !Number.isFinite(answer))
+      return {
+        ok: false,
+        counted: false,
+        summary: `Enter a number${grader.answer.unit ? ` in ${grader.answer.unit}` : ''}.`,
+        details: [],
+      };
   }
   if (grader.answer.kind === 'choice' && !isOption(grader.answer.choices(exercise.params), raw)) {
     return { ok: false, counted: false, summary: 'Pick one of the options.', details: [] };
   }
   try {
-    const result = grader.grade({ state: widget?.getState() ?? {}, answer, params: exercise.params, tolerance: exercise.tolerance, hidden });
+    const result = grader.grade({
+      state: widget?.getState() ?? {},
+      answer,
+      params: exercise.params,
+      tolerance: exercise.tolerance,
+      hidden,
+    });
     return { ...result, counted: true };
   } catch (e) {
-    return { ok: false, counted: false, summary: `The grader could not check this answer (${e.message}).`, details: [] };
+    return {
+      ok: false,
+      counted: false,
+      summary: `The grader could not check this answer (${e.message}).`,
+      details: [],
+    };
   }
 }
 
 function showFeedback(box, result) {
   box.className = `exercise-feedback ${result.ok ? 'ok' : 'wrong'}`;
-  box.replaceChildren(el('p', { textContent: result.summary }), ...(result.details.length ? [el('ul', {}, ...result.details.map((d) => el('li', { textContent: d })))] : []));
+  box.replaceChildren(
+    el('p', { textContent: result.summary }),
+    ...(result.details.length ? [el('ul', {}, ...result.details.map((d) => el('li', { textContent: d })))] : []),
+  );
 }
 
 function closeCurrent() {
@@ -132,7 +192,12 @@ async function openExercise(exercise, { focus = false } = {}) {
   const field = answerField(exercise, grader);
   const feedback = el('div', { className: 'exercise-feedback', role: 'status' });
   feedback.setAttribute('aria-live', 'polite');
-  const form = el('form', { className: 'exercise-form' }, field.node, el('button', { type: 'submit', className: 'exercise-check', textContent: 'Check' }));
+  const form = el(
+    'form',
+    { className: 'exercise-form' },
+    field.node,
+    el('button', { type: 'submit', className: 'exercise-check', textContent: 'Check' }),
+  );
   form.addEventListener('submit', (e) => {
     e.preventDefault();
     const result = check(field.read);
@@ -145,8 +210,17 @@ async function openExercise(exercise, { focus = false } = {}) {
   });
   const slot = el('div', { className: 'exercise-widget' });
   articleEl.replaceChildren(
-    el('p', { className: 'exercise-chapter', textContent: `Chapter ${CHAPTERS.indexOf(chapter) + 1}: ${chapter.title}` }),
-    heading, meta, prompt, pictures, form, feedback, slot,
+    el('p', {
+      className: 'exercise-chapter',
+      textContent: `Chapter ${CHAPTERS.indexOf(chapter) + 1}: ${chapter.title}`,
+    }),
+    heading,
+    meta,
+    prompt,
+    pictures,
+    form,
+    feedback,
+    slot,
   );
   renderStatus();
   renderList();
@@ -159,7 +233,12 @@ async function openExercise(exercise, { focus = false } = {}) {
   if (exercise.locked.length) {
     const schema = await schemaOf(exercise.widget);
     const names = exercise.locked.map((k) => schema[k].label ?? k);
-    slot.append(el('p', { className: 'exercise-locked', textContent: `Fixed by the exercise (greyed out below): ${names.join(', ')}.` }));
+    slot.append(
+      el('p', {
+        className: 'exercise-locked',
+        textContent: `Fixed by the exercise (greyed out below): ${names.join(', ')}.`,
+      }),
+    );
   }
   const mine = current;
   const widget = await mountWidget(slot, exercise.widget, {
@@ -198,7 +277,9 @@ window.addEventListener('hashchange', route);
 
 // A lecturer's own file, chosen or dropped: it replaces the list shown.
 const readFile = async (file) => useSet(await readExerciseFile(file, { schemaOf }));
-document.getElementById('exercise-file').addEventListener('change', (e) => e.target.files[0] && readFile(e.target.files[0]));
+document
+  .getElementById('exercise-file')
+  .addEventListener('change', (e) => e.target.files[0] && readFile(e.target.files[0]));
 const drop = document.getElementById('exercise-drop');
 drop.addEventListener('dragover', (e) => {
   e.preventDefault();

@@ -11,7 +11,8 @@ await mountWidget(slot('f0-tables'), 'f0-tables', {
   prefix: 'tables',
   options: {
     onPick(key, target) {
-      if (target === 'fresnel-curves') curves.update({ materials: [...new Set([...curves.getState().materials, key])] });
+      if (target === 'fresnel-curves')
+        curves.update({ materials: [...new Set([...curves.getState().materials, key])] });
       else zones.update({ material: key, mode: 'fresnel-nv' });
       slot(target).scrollIntoView({ behavior: 'smooth', block: 'start' });
       return true;

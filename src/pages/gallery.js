@@ -11,7 +11,8 @@ const NEAR_VIEW = '300px 0px'; // start loading a preview a little before it scr
 const escapeAttr = (s) => s.replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;');
 
 /** The embed URL of a widget in a state given as URL parameters, absolute, from this page's location. */
-const embedUrl = (name, query) => new URL(`embed.html?w=${encodeURIComponent(name)}${query ? `&${query}` : ''}`, location.href).href;
+const embedUrl = (name, query) =>
+  new URL(`embed.html?w=${encodeURIComponent(name)}${query ? `&${query}` : ''}`, location.href).href;
 
 const snippetFor = (name, query) =>
   `<iframe src="${escapeAttr(embedUrl(name, query))}" title="${escapeAttr(`${WIDGETS[name].title} — Shading Lab`)}" ` +
@@ -41,8 +42,16 @@ function card(name) {
   preview.style.height = `${PREVIEW_HEIGHT}px`;
   preview.textContent = 'The live preview loads when you scroll to it.';
 
-  const label = Object.assign(document.createElement('label'), { htmlFor: `${name}-snippet`, textContent: 'Embed code' });
-  const snippet = Object.assign(document.createElement('textarea'), { id: `${name}-snippet`, readOnly: true, rows: 3, value: snippetFor(name, '') });
+  const label = Object.assign(document.createElement('label'), {
+    htmlFor: `${name}-snippet`,
+    textContent: 'Embed code',
+  });
+  const snippet = Object.assign(document.createElement('textarea'), {
+    id: `${name}-snippet`,
+    readOnly: true,
+    rows: 3,
+    value: snippetFor(name, ''),
+  });
   snippet.className = 'gallery-snippet';
   snippet.spellcheck = false;
   snippet.addEventListener('focus', () => snippet.select());
@@ -61,7 +70,10 @@ function card(name) {
     article,
     preview,
     load() {
-      frame = Object.assign(document.createElement('iframe'), { title: `${title} (live preview)`, src: embedUrl(name, '') });
+      frame = Object.assign(document.createElement('iframe'), {
+        title: `${title} (live preview)`,
+        src: embedUrl(name, ''),
+      });
       preview.replaceChildren(frame);
     },
     /** A message from this card's preview: `ready`, `changed` or `state` carry the state as URL parameters. */

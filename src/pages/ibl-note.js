@@ -6,7 +6,9 @@ export const DFG_QUADRATURE_SINCE = '2026-11-30';
 export function iblStaleNote(date) {
   const day = date.slice(0, 10);
   if (day >= DFG_QUADRATURE_SINCE) return '';
-  return `Measured ${day}, before the split sum's DFG table became the float64 quadrature (one table per D and V, ` +
+  return (
+    `Measured ${day}, before the split sum's DFG table became the float64 quadrature (one table per D and V, ` +
     '72², shipped precomputed; it was a 32² Monte Carlo table): the split-sum rows may differ now. Rerun ' +
-    '`npm run bench` to update.';
+    '`npm run bench` to update.'
+  );
 }

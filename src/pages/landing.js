@@ -25,7 +25,9 @@ const list = document.getElementById('chapters');
 CHAPTERS.forEach((ch, i) => {
   const li = document.createElement('li');
   li.className = ch.page ? 'chapter live' : 'chapter coming';
-  const title = ch.page ? Object.assign(document.createElement('a'), { href: ch.page }) : document.createElement('span');
+  const title = ch.page
+    ? Object.assign(document.createElement('a'), { href: ch.page })
+    : document.createElement('span');
   title.className = 'chapter-title';
   title.textContent = `${i + 1}. ${ch.title}`;
   const blurb = document.createElement('p');
@@ -43,7 +45,10 @@ CHAPTERS.forEach((ch, i) => {
     ul.className = 'widget-links';
     for (const name of ch.widgets) {
       const w = document.createElement('li');
-      const a = Object.assign(document.createElement('a'), { href: `embed.html?w=${name}`, textContent: WIDGETS[name].title });
+      const a = Object.assign(document.createElement('a'), {
+        href: `embed.html?w=${name}`,
+        textContent: WIDGETS[name].title,
+      });
       w.append(a, ` — ${WIDGETS[name].summary}`);
       ul.append(w);
     }

@@ -9,12 +9,19 @@ const out = document.getElementById('parity');
 const canvas = document.createElement('canvas');
 const gl = canvas.getContext('webgl2');
 if (!gl || !gl.getExtension('EXT_color_buffer_float')) {
-  showBlockingMessage(out, 'This check needs WebGL2 with float render targets.', 'Your browser did not provide them, so the shaders cannot be compared here.');
+  showBlockingMessage(
+    out,
+    'This check needs WebGL2 with float render targets.',
+    'Your browser did not provide them, so the shaders cannot be compared here.',
+  );
 } else {
   const renderer = new THREE.WebGLRenderer({ canvas, context: gl });
   // ?only=name1,name2 runs the rows whose names start with one of those (a quick check of a few functions)
   const only = new URLSearchParams(location.search).get('only')?.split(',').filter(Boolean);
-  const results = runParity(renderer, only ? PARITY_CASES.filter((c) => only.some((o) => c.name.startsWith(o))) : PARITY_CASES);
+  const results = runParity(
+    renderer,
+    only ? PARITY_CASES.filter((c) => only.some((o) => c.name.startsWith(o))) : PARITY_CASES,
+  );
   renderer.dispose();
   (globalThis.__shadingLab ??= {}).parity = results;
   const failed = results.filter((r) => !r.pass);
@@ -26,13 +33,23 @@ if (!gl || !gl.getExtension('EXT_color_buffer_float')) {
     : `All ${results.length} functions match the float64 reference within |g − j| ≤ ${TOLERANCE.atol} + ${TOLERANCE.rtol}·|j| (or the looser tolerance shown in their row), with no NaN, Inf or out-of-range value.`;
   const table = document.createElement('table');
   table.className = 'data-table';
-  table.innerHTML = '<thead><tr><th>Function</th><th>Inputs</th><th>Max abs error</th><th>Max rel error</th><th>Worst input (float32)</th><th>GPU / JS there</th><th>Beyond tol.</th><th>NaN/Inf/out of range</th></tr></thead>';
+  table.innerHTML =
+    '<thead><tr><th>Function</th><th>Inputs</th><th>Max abs error</th><th>Max rel error</th><th>Worst input (float32)</th><th>GPU / JS there</th><th>Beyond tol.</th><th>NaN/Inf/out of range</th></tr></thead>';
   const body = table.createTBody();
   const anchored = new Set();
   for (const r of results) {
     const tr = body.insertRow();
     const own = r.tolerance.rtol !== TOLERANCE.rtol ? ` (rtol ${r.tolerance.rtol})` : '';
-    const cells = [`${r.name}${own}`, r.count, r.maxAbs.toExponential(2), r.maxRel.toExponential(2), r.worst.args.map((x) => x.toPrecision(7)).join(', '), `${r.worst.gpu.toPrecision(7)} / ${r.worst.js.toPrecision(7)}`, r.failures, r.invalid];
+    const cells = [
+      `${r.name}${own}`,
+      r.count,
+      r.maxAbs.toExponential(2),
+      r.maxRel.toExponential(2),
+      r.worst.args.map((x) => x.toPrecision(7)).join(', '),
+      `${r.worst.gpu.toPrecision(7)} / ${r.worst.js.toPrecision(7)}`,
+      r.failures,
+      r.invalid,
+    ];
     cells.forEach((c) => (tr.insertCell().textContent = c));
     tr.className = r.pass ? '' : 'fail';
     const fn = r.name.split(' ')[0]; // the widgets' "terms used" links land on the first row of each function

@@ -20,13 +20,16 @@ document.getElementById('machine').textContent =
     : '');
 
 const costOf = (v) => (costSelect.value === 'gpu' ? v.gpuRelative : v.cpuNsPerEval);
-const costLabel = () => (costSelect.value === 'gpu' ? 'GPU cost, relative to the cheapest variant' : 'CPU cost (ns per evaluation, JS)');
+const costLabel = () =>
+  costSelect.value === 'gpu' ? 'GPU cost, relative to the cheapest variant' : 'CPU cost (ns per evaluation, JS)';
 
 const plots = [];
 const measureOf = (v) => v.error ?? v.difference;
 const maxText = (v) => (v.kind === 'reference' ? '0 (reference)' : measureOf(v).maxAbs.toExponential(2));
 const againstText = (v) =>
-  (v.kind === 'reference' ? 'reference' : `${v.kind === 'difference' ? 'differs from' : 'error against'} ${v.againstLabel}`);
+  v.kind === 'reference'
+    ? 'reference'
+    : `${v.kind === 'difference' ? 'differs from' : 'error against'} ${v.againstLabel}`;
 const colourOf = (f, v) => SERIES_COLORS[f.variants.indexOf(v) % SERIES_COLORS.length];
 
 /**
@@ -36,31 +39,42 @@ const colourOf = (f, v) => SERIES_COLORS[f.variants.indexOf(v) % SERIES_COLORS.l
 function errorChart(section, f, all) {
   const variants = all.filter((v) => v.cpuNsPerEval !== null && v.gpuRelative !== null);
   const costs = [...new Set(variants.map(costOf))].sort((a, b) => a - b);
-  plots.push(createPlot(section, {
-    title: `${f.title.split(':')[0]}: largest error of each approximation against its cost ` +
-      '(lower left is better; exact forms sit at 1e-7)',
-    xLabel: costLabel(),
-    yLabel: 'max |error|',
-    x: { min: costs[0] * 0.9, max: costs[costs.length - 1] * 1.1 },
-    y: { min: ERROR_FLOOR / 2, max: 2, log: true },
-    series: variants.map((v) => ({
-      label: v.kind === 'reference' ? `${v.label} (reference)` : `${v.label} (vs ${v.againstLabel})`,
-      stroke: colourOf(f, v),
-      width: 0,
-      points: true,
-    })),
-    data: [costs, ...variants.map((v) => costs.map((c) => (c === costOf(v) ? Math.max(v.error.maxAbs, ERROR_FLOOR) : null)))],
-    filename: `cost-accuracy-${f.key}`,
-    height: 240,
-  }));
+  plots.push(
+    createPlot(section, {
+      title:
+        `${f.title.split(':')[0]}: largest error of each approximation against its cost ` +
+        '(lower left is better; exact forms sit at 1e-7)',
+      xLabel: costLabel(),
+      yLabel: 'max |error|',
+      x: { min: costs[0] * 0.9, max: costs[costs.length - 1] * 1.1 },
+      y: { min: ERROR_FLOOR / 2, max: 2, log: true },
+      series: variants.map((v) => ({
+        label: v.kind === 'reference' ? `${v.label} (reference)` : `${v.label} (vs ${v.againstLabel})`,
+        stroke: colourOf(f, v),
+        width: 0,
+        points: true,
+      })),
+      data: [
+        costs,
+        ...variants.map((v) => costs.map((c) => (c === costOf(v) ? Math.max(v.error.maxAbs, ERROR_FLOOR) : null))),
+      ],
+      filename: `cost-accuracy-${f.key}`,
+      height: 240,
+    }),
+  );
 }
 
 const cost = (x, digits) => (x === null ? '— (run offline)' : x.toFixed(digits));
 
 function rowsOf(f, variants) {
-  return variants.map((v) => `<tr><td><span class="swatch" style="background:${colourOf(f, v)}"></span> ${v.label}</td>` +
-    `<td>${againstText(v)}</td><td>${maxText(v)}</td><td>${measureOf(v).rms.toExponential(2)}</td>` +
-    `<td>${cost(v.cpuNsPerEval, 1)}</td><td>${cost(v.gpuMsPerFrame, 2)}</td><td>${cost(v.gpuRelative, 2)}${v.gpuRelative === null ? '' : '×'}</td></tr>`).join('');
+  return variants
+    .map(
+      (v) =>
+        `<tr><td><span class="swatch" style="background:${colourOf(f, v)}"></span> ${v.label}</td>` +
+        `<td>${againstText(v)}</td><td>${maxText(v)}</td><td>${measureOf(v).rms.toExponential(2)}</td>` +
+        `<td>${cost(v.cpuNsPerEval, 1)}</td><td>${cost(v.gpuMsPerFrame, 2)}</td><td>${cost(v.gpuRelative, 2)}${v.gpuRelative === null ? '' : '×'}</td></tr>`,
+    )
+    .join('');
 }
 
 function render() {
@@ -70,15 +84,18 @@ function render() {
     const approximations = f.variants.filter((v) => v.kind !== 'difference');
     const others = f.variants.filter((v) => v.kind === 'difference');
     const section = document.createElement('section');
-    section.innerHTML = `<h2>${f.title}</h2><p class="domain">${f.errorOf} over ${f.domain}.` +
+    section.innerHTML =
+      `<h2>${f.title}</h2><p class="domain">${f.errorOf} over ${f.domain}.` +
       `${f.referenceNote ? ` The reference is itself measured: ${f.referenceNote}.` : ''}</p>`;
     root.append(section);
     if (approximations.length > 1) errorChart(section, f, approximations);
-    const head = (what) => `<tr><th>Variant</th><th>Measured against</th><th>max |${what}|</th><th>RMS ${what}</th>` +
+    const head = (what) =>
+      `<tr><th>Variant</th><th>Measured against</th><th>max |${what}|</th><th>RMS ${what}</th>` +
       '<th>CPU ns/eval</th><th>GPU ms/frame</th><th>GPU relative</th></tr>';
     const table = document.createElement('table');
     table.className = 'data-table compact';
-    table.innerHTML = `<thead>${head('error')}</thead><tbody>${rowsOf(f, approximations)}</tbody>` +
+    table.innerHTML =
+      `<thead>${head('error')}</thead><tbody>${rowsOf(f, approximations)}</tbody>` +
       (others.length
         ? '<tbody class="differences"><tr><th colspan="7" scope="rowgroup">Other models: how far each is from ' +
           `${others[0].againstLabel}. A difference, not an error: neither model approximates the other, and a ` +
@@ -94,7 +111,8 @@ render();
 // image-based lighting: each method's error against the lab's Monte Carlo reference, against its GPU time
 function renderIbl(ibl) {
   const section = document.createElement('section');
-  section.innerHTML = '<h2>Image-based lighting against the reference</h2>' +
+  section.innerHTML =
+    '<h2>Image-based lighting against the reference</h2>' +
     `<p class="domain">The material lab's environment methods on a ${ibl.setup.resolution}² sphere, each against the lab's converged ` +
     `Monte Carlo reference (${ibl.setup.referenceSamples} samples per pixel): relative RMS error over the sphere against the GPU time ` +
     `of the method's pass (median of ${ibl.setup.timingRuns}). Importance sampling is one curve, N = 4 to 256 ` +
@@ -107,23 +125,41 @@ function renderIbl(ibl) {
     const [environment, material, alpha] = c.split('|');
     const methods = [...new Set(rows.map((r) => r.method))];
     const xs = [...new Set(rows.map((r) => r.ms))].sort((a, b) => a - b);
-    plots.push(createPlot(section, {
-      title: `${environment}, ${material} α ${alpha}: relative RMS error against GPU time (lower left is better)`,
-      xLabel: 'GPU time of the pass (ms)',
-      yLabel: 'relative RMS error',
-      x: { min: xs[0] * 0.8, max: xs[xs.length - 1] * 1.2, log: true },
-      y: { min: 0.005, max: 10 ** Math.ceil(Math.log10(Math.max(...rows.map((r) => r.relative)) * 1.5)), log: true },
-      series: methods.map((m, i) => ({ label: m, stroke: SERIES_COLORS[i % SERIES_COLORS.length], width: m === 'importance' ? 1.5 : 0, points: true, spanGaps: true })),
-      data: [xs, ...methods.map((m) => xs.map((x) => rows.find((r) => r.method === m && r.ms === x)?.relative ?? null))],
-      filename: `ibl-${environment}-${material}`,
-      height: 220,
-    }));
+    plots.push(
+      createPlot(section, {
+        title: `${environment}, ${material} α ${alpha}: relative RMS error against GPU time (lower left is better)`,
+        xLabel: 'GPU time of the pass (ms)',
+        yLabel: 'relative RMS error',
+        x: { min: xs[0] * 0.8, max: xs[xs.length - 1] * 1.2, log: true },
+        y: { min: 0.005, max: 10 ** Math.ceil(Math.log10(Math.max(...rows.map((r) => r.relative)) * 1.5)), log: true },
+        series: methods.map((m, i) => ({
+          label: m,
+          stroke: SERIES_COLORS[i % SERIES_COLORS.length],
+          width: m === 'importance' ? 1.5 : 0,
+          points: true,
+          spanGaps: true,
+        })),
+        data: [
+          xs,
+          ...methods.map((m) => xs.map((x) => rows.find((r) => r.method === m && r.ms === x)?.relative ?? null)),
+        ],
+        filename: `ibl-${environment}-${material}`,
+        height: 220,
+      }),
+    );
   }
   const table = document.createElement('table');
   table.className = 'data-table compact';
-  table.innerHTML = '<thead><tr><th>Environment, material</th><th>Method</th><th>GPU ms</th><th>RMS error</th><th>relative</th></tr></thead><tbody>' +
-    ibl.rows.map((r) => `<tr><td>${r.environment}, ${r.material} α ${r.alpha}</td><td>${r.samples ? `importance, N = ${r.samples}` : r.method}</td>` +
-      `<td>${r.ms.toFixed(2)}</td><td>${r.rms.toExponential(2)}</td><td>${(r.relative * 100).toFixed(2)} %</td></tr>`).join('') + '</tbody>';
+  table.innerHTML =
+    '<thead><tr><th>Environment, material</th><th>Method</th><th>GPU ms</th><th>RMS error</th><th>relative</th></tr></thead><tbody>' +
+    ibl.rows
+      .map(
+        (r) =>
+          `<tr><td>${r.environment}, ${r.material} α ${r.alpha}</td><td>${r.samples ? `importance, N = ${r.samples}` : r.method}</td>` +
+          `<td>${r.ms.toFixed(2)}</td><td>${r.rms.toExponential(2)}</td><td>${(r.relative * 100).toFixed(2)} %</td></tr>`,
+      )
+      .join('') +
+    '</tbody>';
   section.append(table);
 }
 
@@ -135,7 +171,12 @@ extra.innerHTML =
   `Schlick with F0 = 0.04, Lambert, one punctual light): this app's shader takes <strong>${vt.oursMsPerFrame.toFixed(2)} ms</strong> a frame, ` +
   `MeshStandardMaterial <strong>${vt.threeMsPerFrame.toFixed(2)} ms</strong>: a ratio of <strong>${vt.ratio.toFixed(2)}</strong>.</p>` +
   '<h2>What each page loads</h2><table class="data-table compact"><thead><tr><th>Page</th><th>JavaScript (KiB, uncompressed)</th><th>files</th><th>load (ms)</th><th>first 3-D frame (ms)</th></tr></thead><tbody>' +
-  report.pages.map((p) => `<tr><td>${p.page}</td><td>${p.jsKB.toFixed(0)}</td><td>${p.jsFiles}</td><td>${p.loadMs.toFixed(0)}</td><td>${p.firstFrameMs === null ? '—' : p.firstFrameMs.toFixed(0)}</td></tr>`).join('') +
+  report.pages
+    .map(
+      (p) =>
+        `<tr><td>${p.page}</td><td>${p.jsKB.toFixed(0)}</td><td>${p.jsFiles}</td><td>${p.loadMs.toFixed(0)}</td><td>${p.firstFrameMs === null ? '—' : p.firstFrameMs.toFixed(0)}</td></tr>`,
+    )
+    .join('') +
   '</tbody></table>';
 if (report.ibl) renderIbl(report.ibl);
 (globalThis.__shadingLab ??= {}).performance = report;

@@ -42,9 +42,13 @@ async function setUp(step, i) {
     if (mounted) release(mounted.instance);
     mounted = null;
     stage.replaceChildren();
-    mounted = { name: step.widget, instance: await mountWidget(stage, step.widget, { prefix: 'tour', syncUrl: false, initialState: state }) };
+    mounted = {
+      name: step.widget,
+      instance: await mountWidget(stage, step.widget, { prefix: 'tour', syncUrl: false, initialState: state }),
+    };
   }
-  if (i === index) registry.tour = { index: i, id: step.id, widget: step.widget, instance: mounted.instance, ready: true };
+  if (i === index)
+    registry.tour = { index: i, id: step.id, widget: step.widget, instance: mounted.instance, ready: true };
 }
 
 /**
@@ -60,7 +64,8 @@ function release(instance) {
 function renderText(step, i) {
   const section = sections.find((s) => s.key === step.section);
   $('.tour-count').textContent = `Step ${i + 1} of ${steps.length}`;
-  $('.tour-section').textContent = `${sections.indexOf(section) + 1}. ${section.title} (${i - section.first + 1} of ${section.count})`;
+  $('.tour-section').textContent =
+    `${sections.indexOf(section) + 1}. ${section.title} (${i - section.first + 1} of ${section.count})`;
   $('.tour-title').textContent = step.title;
   $('.tour-spoken-title').textContent = `: ${step.title}`; // the live progress line reads the new title too
   $('.tour-text').textContent = step.text;
@@ -82,16 +87,23 @@ function renderText(step, i) {
 
 /** The talk's sections: a link to the first step of each, or "coming" where there is none yet. */
 function renderSections() {
-  $('.tour-sections ol').replaceChildren(...sections.map((s) => {
-    const li = document.createElement('li');
-    li.dataset.section = s.key;
-    if (s.count) li.append(Object.assign(document.createElement('a'), { href: `#${steps[s.first].id}`, textContent: s.title }));
-    else {
-      li.className = 'coming';
-      li.append(s.title, ' ', Object.assign(document.createElement('span'), { className: 'tag', textContent: 'coming' }));
-    }
-    return li;
-  }));
+  $('.tour-sections ol').replaceChildren(
+    ...sections.map((s) => {
+      const li = document.createElement('li');
+      li.dataset.section = s.key;
+      if (s.count)
+        li.append(Object.assign(document.createElement('a'), { href: `#${steps[s.first].id}`, textContent: s.title }));
+      else {
+        li.className = 'coming';
+        li.append(
+          s.title,
+          ' ',
+          Object.assign(document.createElement('span'), { className: 'tag', textContent: 'coming' }),
+        );
+      }
+      return li;
+    }),
+  );
 }
 
 /** Moves to step i; the URL changes with a history entry, and the hashchange shows the step. */
@@ -118,11 +130,21 @@ function route() {
 // plot cursor marks the keys it used with preventDefault); everything else drives the tour.
 const NEXT = new Set(['ArrowRight', 'PageDown', ' ']);
 const PREVIOUS = new Set(['ArrowLeft', 'PageUp']);
-const typingIn = (el) => el instanceof Element && (el.isContentEditable || el.matches('input, select, textarea, [role=slider], [role=spinbutton]'));
+const typingIn = (el) =>
+  el instanceof Element &&
+  (el.isContentEditable || el.matches('input, select, textarea, [role=slider], [role=spinbutton]'));
 window.addEventListener('keydown', (e) => {
   if (e.defaultPrevented || e.altKey || e.ctrlKey || e.metaKey || typingIn(e.target)) return;
   if (e.key === ' ' && e.target instanceof Element && e.target.closest('button, a, summary, [role=button]')) return; // Space presses it
-  const to = NEXT.has(e.key) ? index + 1 : PREVIOUS.has(e.key) ? index - 1 : e.key === 'Home' ? 0 : e.key === 'End' ? steps.length - 1 : null;
+  const to = NEXT.has(e.key)
+    ? index + 1
+    : PREVIOUS.has(e.key)
+      ? index - 1
+      : e.key === 'Home'
+        ? 0
+        : e.key === 'End'
+          ? steps.length - 1
+          : null;
   if (to !== null) {
     e.preventDefault();
     go(to);
@@ -132,9 +154,13 @@ window.addEventListener('keydown', (e) => {
   }
 });
 // Escape hands the keys back to the tour from inside the widget (lil-gui keeps its keys from bubbling)
-window.addEventListener('keydown', (e) => {
-  if (e.key === 'Escape' && stage.contains(document.activeElement)) document.activeElement.blur();
-}, true);
+window.addEventListener(
+  'keydown',
+  (e) => {
+    if (e.key === 'Escape' && stage.contains(document.activeElement)) document.activeElement.blur();
+  },
+  true,
+);
 
 prevButton.addEventListener('click', () => go(index - 1));
 nextButton.addEventListener('click', () => go(index + 1));
@@ -146,7 +172,9 @@ async function toggleFullscreen() {
     if (!document.fullscreenEnabled) throw new Error('full screen is not enabled');
     await root.requestFullscreen();
   } catch {
-    notices.show('The browser did not allow full screen here (a frame or a setting may forbid it). Use the browser’s own full-screen key instead, usually F11.');
+    notices.show(
+      'The browser did not allow full screen here (a frame or a setting may forbid it). Use the browser’s own full-screen key instead, usually F11.',
+    );
   }
 }
 document.addEventListener('fullscreenchange', () => {

@@ -23,7 +23,11 @@ const TILES = [
   ['ndf-explorer', 'GGX against Beckmann at 3°', { hwhm: 3, ndfs: 'ggx,beckmann', exposure: 8 }],
   ['visibility-explorer', 'Visibility terms at α 0.5', {}],
   ['visibility-explorer', 'Smooth, α 0.1', { alpha: 0.1 }],
-  ['visibility-explorer', 'Smith family, rough', { alpha: 0.9, terms: 'smithGGXSeparable,smithGGXCorrelated,smithGGXCorrelatedFast' }],
+  [
+    'visibility-explorer',
+    'Smith family, rough',
+    { alpha: 0.9, terms: 'smithGGXSeparable,smithGGXCorrelated,smithGGXCorrelatedFast' },
+  ],
   ['media', 'Clean water, 5 cm', { samples: '16' }],
   ['media', 'The talk’s grid of glasses', { view: 'grid', samples: '16' }],
   ['energy', 'White furnace', {}],
@@ -50,8 +54,18 @@ for (const [i, [name, caption, state]] of TILES.entries()) {
   wall.append(tile);
   const { widget } = await WIDGETS[name].load();
   const alone = Object.assign(document.createElement('a'), { className: 'wall-open', textContent: 'open alone' });
-  const link = (s) => (alone.href = `embed.html?${new URLSearchParams([['w', name], ...stateToParams(widget.schema, s)])}`);
+  const link = (s) =>
+    (alone.href = `embed.html?${new URLSearchParams([['w', name], ...stateToParams(widget.schema, s)])}`);
   heading.append(' ', alone);
-  link((await mountWidget(slot, name, { prefix: `tile${i + 1}`, syncUrl: false, initialState: state, onStateChange: link })).getState());
+  link(
+    (
+      await mountWidget(slot, name, {
+        prefix: `tile${i + 1}`,
+        syncUrl: false,
+        initialState: state,
+        onStateChange: link,
+      })
+    ).getState(),
+  );
   showStatus();
 }

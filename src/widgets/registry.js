@@ -17,23 +17,27 @@ export const WIDGETS = {
   },
   media: {
     title: 'Light in media',
-    summary: 'Absorption by Beer–Lambert over millimetres to 100 m, scattering from cloudy to opaque, the talk’s grid of glasses.',
+    summary:
+      'Absorption by Beer–Lambert over millimetres to 100 m, scattering from cloudy to opaque, the talk’s grid of glasses.',
     load: () => import('./media/media.js'),
   },
   surfaces: {
     title: 'Surfaces',
-    summary: 'A flat interface (reflection, refraction, metals vs non-metals), a rough one’s reflection cone, blurrier reflections.',
+    summary:
+      'A flat interface (reflection, refraction, metals vs non-metals), a rough one’s reflection cone, blurrier reflections.',
     load: () => import('./surfaces/surfaces.js'),
   },
   'subsurface-scale': {
     title: 'Subsurface scale',
-    summary: 'Random walks in a scattering slab: how far light travels before it re-emerges, against a pixel’s ' +
+    summary:
+      'Random walks in a scattering slab: how far light travels before it re-emerges, against a pixel’s ' +
       'footprint radius.',
     load: () => import('./subsurface-scale/subsurface-scale.js'),
   },
   radiance: {
     title: 'Radiance and colour',
-    summary: 'Radiance along a ray stays put while a lamp’s irradiance falls as 1/d²; a spectrum reduced to RGB, and ' +
+    summary:
+      'Radiance along a ray stays put while a lamp’s irradiance falls as 1/d²; a spectrum reduced to RGB, and ' +
       'where RGB ⊗ RGB misleads.',
     load: () => import('./radiance/radiance.js'),
   },
@@ -44,7 +48,8 @@ export const WIDGETS = {
   },
   'measured-brdf': {
     title: 'Measured BRDF',
-    summary: 'Drop a MERL file (or keep a synthetic one): its lobe, spheres and NDF slice beside the five models fitted to it.',
+    summary:
+      'Drop a MERL file (or keep a synthetic one): its lobe, spheres and NDF slice beside the five models fitted to it.',
     load: () => import('./measured-brdf/measured-brdf.js'),
   },
   'ndf-explorer': {
@@ -69,17 +74,20 @@ export const WIDGETS = {
   },
   'diffuse-explorer': {
     title: 'Diffuse explorer',
-    summary: 'Lambert, the diffuse–specular trade-off and Oren–Nayar on spheres and against angle; the rough “full moon” flattening.',
+    summary:
+      'Lambert, the diffuse–specular trade-off and Oren–Nayar on spheres and against angle; the rough “full moon” flattening.',
     load: () => import('./diffuse-explorer/diffuse-explorer.js'),
   },
   'material-lab': {
     title: 'Material lab',
-    summary: 'A material under punctual, sphere, environment and ambient light: each approximation beside a converging Monte Carlo reference, with its error and cost.',
+    summary:
+      'A material under punctual, sphere, environment and ambient light: each approximation beside a converging Monte Carlo reference, with its error and cost.',
     load: () => import('./material-lab/material-lab.js'),
   },
   'lighting-models': {
     title: 'Lighting models',
-    summary: 'One material under a sky with a sun: general lighting, image-based, area, punctual and ambient light, each with its cost and error.',
+    summary:
+      'One material under a sky with a sun: general lighting, image-based, area, punctual and ambient light, each with its cost and error.',
     load: () => import('./lighting-models/lighting-models.js'),
   },
 };

@@ -41,7 +41,8 @@ afterAll(async () => {
 /** The widget's visible canvases (role, description) and its live summary. */
 const readWords = (page) =>
   page.evaluate(() => ({
-    canvases: [...document.querySelectorAll('.widget canvas')].filter((c) => c.getClientRects().length)
+    canvases: [...document.querySelectorAll('.widget canvas')]
+      .filter((c) => c.getClientRects().length)
       .map((c) => ({ role: c.getAttribute('role'), label: c.getAttribute('aria-label') ?? '' })),
     live: document.querySelector('.widget-live')?.textContent ?? '',
   }));
@@ -69,17 +70,27 @@ describe('every widget describes its canvases and is usable by keyboard', () => 
       const after = await readWords(page);
       expect(after.canvases.length).toBe(before.canvases.length);
       after.canvases.forEach((c, i) => {
-        if (!STATIC_PICTURE.test(c.label)) expect(c.label, `canvas ${i} kept its words: ${c.label}`).not.toBe(before.canvases[i].label);
+        if (!STATIC_PICTURE.test(c.label))
+          expect(c.label, `canvas ${i} kept its words: ${c.label}`).not.toBe(before.canvases[i].label);
       });
       expect(after.live).not.toBe(before.live);
 
       // Tab reaches every control of the panel, and each has a name a screen reader can read
       const controls = await page.evaluate(() => {
-        const els = [...document.querySelectorAll('.lil-gui input, .lil-gui select, .lil-gui button')]
-          .filter((el) => el.tabIndex >= 0 && !el.disabled && el.getClientRects().length);
+        const els = [...document.querySelectorAll('.lil-gui input, .lil-gui select, .lil-gui button')].filter(
+          (el) => el.tabIndex >= 0 && !el.disabled && el.getClientRects().length,
+        );
         els.forEach((el, i) => (el.dataset.a11yIndex = i));
-        const nameOf = (el) => (el.getAttribute('aria-labelledby') ? document.getElementById(el.getAttribute('aria-labelledby'))?.textContent : el.textContent)?.trim();
-        return { count: els.length, unnamed: els.filter((el) => !nameOf(el)).map((el) => el.outerHTML.slice(0, 80)), stops: document.querySelectorAll('a[href], button, input, select, [tabindex]').length };
+        const nameOf = (el) =>
+          (el.getAttribute('aria-labelledby')
+            ? document.getElementById(el.getAttribute('aria-labelledby'))?.textContent
+            : el.textContent
+          )?.trim();
+        return {
+          count: els.length,
+          unnamed: els.filter((el) => !nameOf(el)).map((el) => el.outerHTML.slice(0, 80)),
+          stops: document.querySelectorAll('a[href], button, input, select, [tabindex]').length,
+        };
       });
       expect(controls.count).toBeGreaterThan(0);
       expect(controls.unnamed).toEqual([]);
@@ -137,7 +148,10 @@ describe('interactive canvases answer the keyboard', () => {
     const page = await openWidget('ndf-explorer');
     await page.focus('.sphere-grid canvas');
     for (let i = 0; i < 3; i++) await page.keyboard.press('ArrowRight');
-    const rows = () => page.$$eval('.probe tr', (trs) => Object.fromEntries(trs.map((tr) => [tr.cells[0].textContent, tr.cells[1].textContent])));
+    const rows = () =>
+      page.$$eval('.probe tr', (trs) =>
+        Object.fromEntries(trs.map((tr) => [tr.cells[0].textContent, tr.cells[1].textContent])),
+      );
     let probe = await rows();
     expect(probe.sphere).toBe('Blinn-Phong');
     expect(Number.parseFloat(probe['n·v'])).toBeCloseTo(Math.sqrt(1 - 0.3 ** 2), 3); // at x = 0.3 on the unit sphere, seen head-on
@@ -170,7 +184,9 @@ describe('interactive canvases answer the keyboard', () => {
     await settle(page, 800); // the live region speaks once changes settle
     expect((await getState(page, 'f0-tables')).selected).toBe('copper');
     expect(await page.evaluate(() => document.activeElement.dataset.material)).toBe('copper');
-    expect(await page.$eval('.widget-live', (el) => el.textContent)).toMatch(/Copper, a metal; F\(0°\) linear 0\.95, 0\.64, 0\.54/);
+    expect(await page.$eval('.widget-live', (el) => el.textContent)).toMatch(
+      /Copper, a metal; F\(0°\) linear 0\.95, 0\.64, 0\.54/,
+    );
     expect(page.errors).toEqual([]);
     await page.close();
   });
@@ -181,7 +197,9 @@ describe('the words carry the numbers', () => {
     const page = await openWidget('fresnel-zones&mode=zones-nv');
     await settle(page, 500);
     const label = await page.$eval('.viewport canvas', (c) => c.getAttribute('aria-label'));
-    const shares = [...label.matchAll(/(barely changes|changes somewhat|goes rapidly to 1) ([\d.]+)%/g)].map((m) => Number(m[2]) / 100);
+    const shares = [...label.matchAll(/(barely changes|changes somewhat|goes rapidly to 1) ([\d.]+)%/g)].map(
+      (m) => Number(m[2]) / 100,
+    );
     expect(shares).toHaveLength(3);
     sphereZoneFractions().forEach((f, i) => expect(Math.abs(shares[i] - f)).toBeLessThan(0.01));
     expect(label).toMatch(/Light 60° from the view direction/);

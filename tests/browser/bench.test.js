@@ -10,9 +10,21 @@ import { ROOT } from './harness.js';
 const num = expect.any(Number);
 
 function checkShape(report) {
-  expect(report).toMatchObject({ version: 1, date: expect.any(String), machine: { cpu: expect.any(String), cores: num, gpuRenderer: expect.any(String) } });
+  expect(report).toMatchObject({
+    version: 1,
+    date: expect.any(String),
+    machine: { cpu: expect.any(String), cores: num, gpuRenderer: expect.any(String) },
+  });
   expect(report.gpuSetup).toMatchObject({ size: num, loops: num, frames: num, baselineMsPerFrame: num });
-  expect(report.families.map((f) => f.key)).toEqual(['fresnel-dielectric', 'fresnel-conductor', 'smith-g1-beckmann', 'visibility', 'ndf', 'oren-nayar', 'multiple-scattering']);
+  expect(report.families.map((f) => f.key)).toEqual([
+    'fresnel-dielectric',
+    'fresnel-conductor',
+    'smith-g1-beckmann',
+    'visibility',
+    'ndf',
+    'oren-nayar',
+    'multiple-scattering',
+  ]);
   for (const f of report.families) {
     expect(f).toMatchObject({ title: expect.any(String), domain: expect.any(String), errorOf: expect.any(String) });
     expect(f.variants.length).toBeGreaterThanOrEqual(2);
@@ -21,12 +33,24 @@ function checkShape(report) {
       const measure = v.kind === 'difference' ? 'difference' : 'error';
       // a Monte Carlo reference run once offline (the random walk) has no cost columns, and says its own error
       const untimed = v.kind === 'reference' && v.cpuNsPerEval === null;
-      const costs = untimed ? { cpuNsPerEval: null, gpuMsPerFrame: null, gpuRelative: null } : { cpuNsPerEval: num, gpuMsPerFrame: num, gpuRelative: num };
+      const costs = untimed
+        ? { cpuNsPerEval: null, gpuMsPerFrame: null, gpuRelative: null }
+        : { cpuNsPerEval: num, gpuMsPerFrame: num, gpuRelative: num };
       if (untimed) expect(f.referenceNote).toEqual(expect.any(String));
-      expect(v).toMatchObject({ key: expect.any(String), label: expect.any(String), kind: expect.any(String), [measure]: { maxAbs: num, rms: num }, ...costs });
+      expect(v).toMatchObject({
+        key: expect.any(String),
+        label: expect.any(String),
+        kind: expect.any(String),
+        [measure]: { maxAbs: num, rms: num },
+        ...costs,
+      });
       expect(v).not.toHaveProperty(measure === 'error' ? 'difference' : 'error');
       if (v.kind !== 'reference') expect(f.variants.map((w) => w.key)).toContain(v.against);
-      const numbers = [v[measure].maxAbs, v[measure].rms, ...(untimed ? [] : [v.cpuNsPerEval, v.gpuMsPerFrame, v.gpuRelative])];
+      const numbers = [
+        v[measure].maxAbs,
+        v[measure].rms,
+        ...(untimed ? [] : [v.cpuNsPerEval, v.gpuMsPerFrame, v.gpuRelative]),
+      ];
       for (const x of numbers) expect(Number.isFinite(x) && x >= 0).toBe(true);
     }
     expect(f.variants[0]).toMatchObject({ kind: 'reference', error: { maxAbs: 0 } }); // the reference against itself
@@ -37,7 +61,14 @@ function checkShape(report) {
   expect(report.ibl.setup).toMatchObject({ resolution: num, referenceSamples: num, timingRuns: num });
   expect(report.ibl.rows.length).toBeGreaterThanOrEqual(1);
   for (const r of report.ibl.rows) {
-    expect(r).toMatchObject({ environment: expect.any(String), material: expect.any(String), method: expect.any(String), ms: num, rms: num, relative: num });
+    expect(r).toMatchObject({
+      environment: expect.any(String),
+      material: expect.any(String),
+      method: expect.any(String),
+      ms: num,
+      rms: num,
+      relative: num,
+    });
     for (const x of [r.ms, r.rms, r.relative]) expect(Number.isFinite(x) && x >= 0).toBe(true);
   }
   for (const p of report.pages) expect(p).toMatchObject({ jsKB: num, jsFiles: num, loadMs: num });
@@ -46,7 +77,11 @@ function checkShape(report) {
 describe('npm run bench', () => {
   it('runs on a tiny budget and writes JSON of the documented shape', () => {
     const out = join(mkdtempSync(join(tmpdir(), 'bench-')), 'quick.json');
-    const log = execFileSync('node', ['bench/bench.js', '--quick', '--out', out], { cwd: ROOT, encoding: 'utf8', timeout: 300_000 });
+    const log = execFileSync('node', ['bench/bench.js', '--quick', '--out', out], {
+      cwd: ROOT,
+      encoding: 'utf8',
+      timeout: 300_000,
+    });
     expect(log).toMatch(/Fresnel, dielectrics/);
     const report = JSON.parse(readFileSync(out, 'utf8'));
     expect(report.quick).toBe(true);

@@ -31,20 +31,34 @@ for (const [key, [path, selector = '.widget-view canvas', fit = 'cover']] of Obj
   await target.scrollIntoView();
   await settle(page, 2500); // progressive views (the material lab's reference) get time to converge
   const png = await target.screenshot({ encoding: 'base64' });
-  const webp = await page.evaluate(async (b64, { width, height }, quality, fit) => {
-    const img = new Image();
-    img.src = `data:image/png;base64,${b64}`;
-    await img.decode();
-    const scale = (fit === 'cover' ? Math.max : Math.min)(width / img.width, height / img.height);
-    const c = Object.assign(document.createElement('canvas'), { width, height });
-    const ctx = c.getContext('2d');
-    ctx.fillStyle = getComputedStyle(document.body).backgroundColor;
-    ctx.fillRect(0, 0, width, height);
-    ctx.drawImage(img, (width - img.width * scale) / 2, (height - img.height * scale) / 2, img.width * scale, img.height * scale);
-    return c.toDataURL('image/webp', quality).split(',')[1];
-  }, png, SIZE, QUALITY, fit);
+  const webp = await page.evaluate(
+    async (b64, { width, height }, quality, fit) => {
+      const img = new Image();
+      img.src = `data:image/png;base64,${b64}`;
+      await img.decode();
+      const scale = (fit === 'cover' ? Math.max : Math.min)(width / img.width, height / img.height);
+      const c = Object.assign(document.createElement('canvas'), { width, height });
+      const ctx = c.getContext('2d');
+      ctx.fillStyle = getComputedStyle(document.body).backgroundColor;
+      ctx.fillRect(0, 0, width, height);
+      ctx.drawImage(
+        img,
+        (width - img.width * scale) / 2,
+        (height - img.height * scale) / 2,
+        img.width * scale,
+        img.height * scale,
+      );
+      return c.toDataURL('image/webp', quality).split(',')[1];
+    },
+    png,
+    SIZE,
+    QUALITY,
+    fit,
+  );
   writeFileSync(join(out, `${key}.webp`), Buffer.from(webp, 'base64'));
-  console.log(`${key}.webp ${Math.round(webp.length * 0.75 / 1024)} KiB${page.errors.length ? `  errors: ${page.errors.join(' | ')}` : ''}`);
+  console.log(
+    `${key}.webp ${Math.round((webp.length * 0.75) / 1024)} KiB${page.errors.length ? `  errors: ${page.errors.join(' | ')}` : ''}`,
+  );
   await page.close();
 }
 await browser.close();

@@ -17,11 +17,15 @@ afterAll(async () => {
 /** Every violation in the page and its same-origin frames, in window.top.__csp (installed before any script). */
 function recordViolations() {
   document.addEventListener('securitypolicyviolation', (e) => {
-    (window.top.__csp ??= []).push(`${e.violatedDirective}: ${e.blockedURI || e.sample || '(inline)'} in ${location.pathname}`);
+    (window.top.__csp ??= []).push(
+      `${e.violatedDirective}: ${e.blockedURI || e.sample || '(inline)'} in ${location.pathname}`,
+    );
   });
 }
 
-const BUILT = readdirSync(join(ROOT, 'dist')).filter((f) => f.endsWith('.html')).sort();
+const BUILT = readdirSync(join(ROOT, 'dist'))
+  .filter((f) => f.endsWith('.html'))
+  .sort();
 // when each page has finished what it does on load (its widgets mounted, its data drawn); run in the page
 const READY = {
   'embed.html?w=fresnel-zones': () => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 1,
@@ -31,11 +35,22 @@ const READY = {
   'performance.html': () => globalThis.__shadingLab?.performance,
   'wall.html': () => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length > 0,
 };
-const chapterReady = () => document.querySelectorAll('[data-slot]').length === Object.keys(globalThis.__shadingLab?.widgets ?? {}).length;
-const ONE_EXERCISE = [{
-  id: 'csp-check', chapter: 'media', title: 'A set from a data: URL', prompt: 'Fetched under connect-src.', widget: 'media',
-  state: { medium: 'water', view: 'one' }, locked: ['medium', 'view'], grader: 'transmittance-depth', params: { channel: 'r' }, tolerance: 1,
-}];
+const chapterReady = () =>
+  document.querySelectorAll('[data-slot]').length === Object.keys(globalThis.__shadingLab?.widgets ?? {}).length;
+const ONE_EXERCISE = [
+  {
+    id: 'csp-check',
+    chapter: 'media',
+    title: 'A set from a data: URL',
+    prompt: 'Fetched under connect-src.',
+    widget: 'media',
+    state: { medium: 'water', view: 'one' },
+    locked: ['medium', 'view'],
+    grader: 'transmittance-depth',
+    params: { channel: 'r' },
+    tolerance: 1,
+  },
+];
 
 /** The pages to run: every built HTML file, the embed with a widget, exercises with ?src=. */
 const PAGES = [
@@ -45,7 +60,11 @@ const PAGES = [
 ];
 
 async function openUnderPolicy(path) {
-  const page = await openPage(browser, baseUrl(), path, { width: 1100, height: 800, beforeLoad: (p) => p.evaluateOnNewDocument(recordViolations) });
+  const page = await openPage(browser, baseUrl(), path, {
+    width: 1100,
+    height: 800,
+    beforeLoad: (p) => p.evaluateOnNewDocument(recordViolations),
+  });
   const ready = READY[path.startsWith('embed.html') ? path : path.split('?')[0]] ?? chapterReady;
   if (ready) await page.waitForFunction(ready, { timeout: 60_000 });
   await settle(page, 800);
@@ -61,7 +80,12 @@ describe('Content-Security-Policy', () => {
       const { policy, beforeScripts } = await page.evaluate(() => {
         const meta = document.querySelector('meta[http-equiv="Content-Security-Policy"]');
         const first = document.querySelector('script');
-        return { policy: meta?.content, beforeScripts: Boolean(meta && first && meta.compareDocumentPosition(first) & Node.DOCUMENT_POSITION_FOLLOWING) };
+        return {
+          policy: meta?.content,
+          beforeScripts: Boolean(
+            meta && first && meta.compareDocumentPosition(first) & Node.DOCUMENT_POSITION_FOLLOWING,
+          ),
+        };
       });
       expect(policy, file).toMatch(/(^|; )script-src 'self'(;|$)/);
       expect(policy, file).toMatch(/(^|; )worker-src 'self'(;|$)/); // explicit, should script-src ever loosen
@@ -70,7 +94,9 @@ describe('Content-Security-Policy', () => {
       expect(policy, file).not.toMatch(/unsafe-eval|script-src[^;]*unsafe-inline|\*/);
       expect(beforeScripts, file).toBe(true);
       // only the exercises page fetches from other hosts (?src=); the rest only from their own origin
-      expect(policy.match(/connect-src [^;]*/)[0], file).toBe(file === 'exercises.html' ? "connect-src 'self' https: data:" : "connect-src 'self'");
+      expect(policy.match(/connect-src [^;]*/)[0], file).toBe(
+        file === 'exercises.html' ? "connect-src 'self' https: data:" : "connect-src 'self'",
+      );
     }
     await page.close();
   });

@@ -17,12 +17,18 @@ export function serveDecks(pages) {
     const file = normalize(join(ROOT, path));
     if (!SERVED.some((p) => path.startsWith(p)) || !file.startsWith(ROOT)) return void res.writeHead(404).end();
     try {
-      res.writeHead(200, { 'content-type': TYPES[extname(file)] ?? 'application/octet-stream' }).end(readFileSync(file));
+      res
+        .writeHead(200, { 'content-type': TYPES[extname(file)] ?? 'application/octet-stream' })
+        .end(readFileSync(file));
     } catch {
       res.writeHead(404).end();
     }
   });
-  return new Promise((ok) => server.listen(0, '127.0.0.1', () => ok({ url: `http://localhost:${server.address().port}`, close: () => server.close() })));
+  return new Promise((ok) =>
+    server.listen(0, '127.0.0.1', () =>
+      ok({ url: `http://localhost:${server.address().port}`, close: () => server.close() }),
+    ),
+  );
 }
 
 /** A deck of `n` slides, each with a 3-D widget; fragments on every third (cheap modes: no 64-light average). */
@@ -36,4 +42,3 @@ export function longDeck(n) {
 <body><div class="reveal"><div class="slides">${slides.join('')}</div></div>
 <script type="module" src="/examples/deck/deck.js"></script></body></html>`;
 }
-

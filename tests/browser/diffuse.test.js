@@ -2,7 +2,12 @@
 // data against the JS terms, the URL state.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { getState, launchBrowser, open, setControl, settle, shot, widget, withPixels } from './helpers.js';
-import { diffuseFresnelWeighted, diffuseLambert, diffuseOrenNayar, diffuseOrenNayarQualitative } from '../../src/math/diffuse.js';
+import {
+  diffuseFresnelWeighted,
+  diffuseLambert,
+  diffuseOrenNayar,
+  diffuseOrenNayarQualitative,
+} from '../../src/math/diffuse.js';
 import { fresnelSchlick } from '../../src/math/fresnel.js';
 import { linearToSrgb } from '../../src/math/color.js';
 
@@ -22,7 +27,9 @@ async function readSpheres(page) {
   await page.addStyleTag({ content: '.sphere-labels { display: none; }' }); // a screenshot includes the labels drawn over the spheres
   const png = await shot(page, '.sphere-grid canvas');
   const { width, height, red } = await withPixels(page, png, (image) => ({
-    width: image.width, height: image.height, red: Array.from(image.data.filter((_, i) => i % 4 === 0)),
+    width: image.width,
+    height: image.height,
+    red: Array.from(image.data.filter((_, i) => i % 4 === 0)),
   }));
   return { width, height, at: (x, y) => red[y * width + x] };
 }
@@ -58,7 +65,11 @@ function pixelAt(disc, x, y) {
 
 const to8bit = (radiance) => Math.round(linearToSrgb(Math.min(Math.max(radiance, 0), 1)) * 255);
 const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-const lightFrom = (theta, phi) => [Math.sin(theta * DEG) * Math.cos(phi * DEG), Math.sin(theta * DEG) * Math.sin(phi * DEG), Math.cos(theta * DEG)];
+const lightFrom = (theta, phi) => [
+  Math.sin(theta * DEG) * Math.cos(phi * DEG),
+  Math.sin(theta * DEG) * Math.sin(phi * DEG),
+  Math.cos(theta * DEG),
+];
 /** cos of the azimuth between l and v about n, from their tangent-plane parts (written out here, not imported). */
 function azimuthCos(n, l, v) {
   const lt = [0, 1, 2].map((k) => l[k] - dot(n, l) * n[k]);
@@ -67,7 +78,16 @@ function azimuthCos(n, l, v) {
   return d > 1e-6 ? dot(lt, vt) / d : 1;
 }
 // sample points on the disc, away from the silhouette (where a pixel spans a wide range of normals)
-const SAMPLES = [[0, 0], [0.3, 0.1], [-0.4, 0.3], [0.6, -0.2], [-0.5, -0.5], [0.1, 0.75], [0.8, 0.1], [-0.82, 0.05]];
+const SAMPLES = [
+  [0, 0],
+  [0.3, 0.1],
+  [-0.4, 0.3],
+  [0.6, -0.2],
+  [-0.5, -0.5],
+  [0.1, 0.75],
+  [0.8, 0.1],
+  [-0.82, 0.05],
+];
 
 describe('diffuse chapter page', () => {
   it('loads cleanly with every model drawn and the plots filled', async () => {
@@ -83,7 +103,9 @@ describe('diffuse chapter page', () => {
     await page.mouse.move(box.x + box.width * 0.7, box.y + box.height * 0.5);
     await settle(page, 200);
     const ratio = diffuseOrenNayar(1, 1, 1, 40 * DEG, 0.8) / diffuseLambert(0.8);
-    expect(await page.$eval('.widget-diffuse-explorer .probe', (el) => el.textContent)).toContain(`f / Lambert${ratio.toFixed(4)}`);
+    expect(await page.$eval('.widget-diffuse-explorer .probe', (el) => el.textContent)).toContain(
+      `f / Lambert${ratio.toFixed(4)}`,
+    );
     expect(page.errors).toEqual([]);
     await page.close();
   });
@@ -94,7 +116,11 @@ describe('diffuse-explorer spheres, read back from the canvas', () => {
 
   it('at sigma = 0 the Oren–Nayar spheres equal the Lambert sphere, pixel for pixel', async () => {
     // one sphere at a time in the same cell, so every model is rasterised at exactly the same pixels
-    const page = await open(browser, 'embed.html?w=diffuse-explorer&models=lambert&sigma=0&lightTheta=50&lightPhi=30', W);
+    const page = await open(
+      browser,
+      'embed.html?w=diffuse-explorer&models=lambert&sigma=0&lightTheta=50&lightPhi=30',
+      W,
+    );
     await widget(page, 'diffuse-explorer');
     const lambert = await readSpheres(page);
     const disc = findDisc(lambert, 0, 1);
@@ -110,7 +136,9 @@ describe('diffuse-explorer spheres, read back from the canvas', () => {
           if (Math.hypot(x + 0.5 - disc.cx, y + 0.5 - disc.cy) < disc.r && lambert.at(x, y) > 40) lit++;
         }
       }
-      console.log(`sigma = 0, ${model}: ${img.width}×${img.height} pixels (${lit} lit), worst |difference from Lambert| = ${worst}/255`);
+      console.log(
+        `sigma = 0, ${model}: ${img.width}×${img.height} pixels (${lit} lit), worst |difference from Lambert| = ${worst}/255`,
+      );
       expect(lit).toBeGreaterThan(10_000);
       expect(worst).toBeLessThanOrEqual(1);
     }
@@ -120,7 +148,11 @@ describe('diffuse-explorer spheres, read back from the canvas', () => {
 
   it('the Lambert sphere follows c·max(n·l, 0) across the disc', async () => {
     const [theta, phi, c] = [40, 20, 0.8];
-    const page = await open(browser, `embed.html?w=diffuse-explorer&models=lambert&lightTheta=${theta}&lightPhi=${phi}&cdiff=${c}`, W);
+    const page = await open(
+      browser,
+      `embed.html?w=diffuse-explorer&models=lambert&lightTheta=${theta}&lightPhi=${phi}&cdiff=${c}`,
+      W,
+    );
     await widget(page, 'diffuse-explorer');
     const img = await readSpheres(page);
     const disc = findDisc(img, 0, 1);
@@ -137,7 +169,11 @@ describe('diffuse-explorer spheres, read back from the canvas', () => {
 
   it('at high sigma with the light at the viewer, Oren–Nayar shows the full-moon flattening', async () => {
     const [sigma, c] = [60, 0.8];
-    const page = await open(browser, `embed.html?w=diffuse-explorer&models=lambert,orenNayar,orenNayarQualitative&sigma=${sigma}&lightTheta=0&cdiff=${c}`, W);
+    const page = await open(
+      browser,
+      `embed.html?w=diffuse-explorer&models=lambert,orenNayar,orenNayarQualitative&sigma=${sigma}&lightTheta=0&cdiff=${c}`,
+      W,
+    );
     await widget(page, 'diffuse-explorer');
     const img = await readSpheres(page);
     const [lam, on, onq] = [0, 1, 2].map((i) => findDisc(img, i, 3));
@@ -154,10 +190,14 @@ describe('diffuse-explorer spheres, read back from the canvas', () => {
     }
     // rim (85% of the radius) to centre, in linear radiance read back from the pixels
     const linear = (v8) => Math.pow((v8 / 255 + 0.055) / 1.055, 2.4);
-    const ratio = (disc) => linear(img.at(pixelAt(disc, 0.85, 0).px, pixelAt(disc, 0.85, 0).py)) / linear(img.at(pixelAt(disc, 0, 0).px, pixelAt(disc, 0, 0).py));
+    const ratio = (disc) =>
+      linear(img.at(pixelAt(disc, 0.85, 0).px, pixelAt(disc, 0.85, 0).py)) /
+      linear(img.at(pixelAt(disc, 0, 0).px, pixelAt(disc, 0, 0).py));
     const [rl, ro, rq] = [ratio(lam), ratio(on), ratio(onq)];
     const expected = (f) => (f([0.85, 0, Math.sqrt(1 - 0.85 ** 2)]) * Math.sqrt(1 - 0.85 ** 2)) / f([0, 0, 1]);
-    console.log(`rim/centre at 0.85 R, sigma ${sigma}°: Lambert ${rl.toFixed(3)}, Oren–Nayar ${ro.toFixed(3)} (JS ${expected(models[0][1]).toFixed(3)}), qualitative ${rq.toFixed(3)} (JS ${expected(models[1][1]).toFixed(3)})`);
+    console.log(
+      `rim/centre at 0.85 R, sigma ${sigma}°: Lambert ${rl.toFixed(3)}, Oren–Nayar ${ro.toFixed(3)} (JS ${expected(models[0][1]).toFixed(3)}), qualitative ${rq.toFixed(3)} (JS ${expected(models[1][1]).toFixed(3)})`,
+    );
     expect(rl).toBeCloseTo(Math.sqrt(1 - 0.85 ** 2), 1);
     expect(ro).toBeGreaterThan(rl + 0.3);
     expect(ro).toBeCloseTo(expected(models[0][1]), 1);
@@ -170,7 +210,9 @@ describe('diffuse-explorer spheres, read back from the canvas', () => {
 describe('diffuse-explorer plots and state', () => {
   it('plot data equal the JS terms', async () => {
     const s = { sigma: 35, cdiff: 0.7, f0: 0.08, lightTheta: 30, lightPhi: 60, viewTheta: 40 };
-    const query = Object.entries(s).map(([k, v]) => `${k}=${v}`).join('&');
+    const query = Object.entries(s)
+      .map(([k, v]) => `${k}=${v}`)
+      .join('&');
     const page = await open(browser, `embed.html?w=diffuse-explorer&models=lambert,fresnelWeighted,orenNayar&${query}`);
     await widget(page, 'diffuse-explorer');
     const plots = await page.evaluate(() => globalThis.__shadingLab.widgets['diffuse-explorer'].getPlots());
@@ -209,7 +251,10 @@ describe('diffuse-explorer plots and state', () => {
   });
 
   it('round-trips through the URL under its prefix; bad values give notices; the light pad takes the keyboard', async () => {
-    const page = await open(browser, 'diffuse.html?diffuse.sigma=55&diffuse.models=lambert,orenNayar&diffuse.cdiff=banana');
+    const page = await open(
+      browser,
+      'diffuse.html?diffuse.sigma=55&diffuse.models=lambert,orenNayar&diffuse.cdiff=banana',
+    );
     await widget(page, 'diffuse');
     const state = await getState(page, 'diffuse');
     expect([state.sigma, state.models, state.cdiff]).toEqual([55, ['lambert', 'orenNayar'], 0.8]);

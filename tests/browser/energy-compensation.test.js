@@ -16,7 +16,10 @@ const ALPHAS = ['0.05', '0.5', '1.0']; // the sweep's option keys
 
 /** The darkest channel value inside each of the row's spheres (points within 0.9 of the radius). */
 function darkestPerSphere(page, png, cells) {
-  return withPixels(page, png, `(image) => Array.from({ length: ${cells} }, (_, i) => {
+  return withPixels(
+    page,
+    png,
+    `(image) => Array.from({ length: ${cells} }, (_, i) => {
     const cell = image.width / ${cells};
     const radius = Math.min(cell, image.height) / 2 / 1.08; // the grid's camera half extent (sphere-grid.js)
     const [cx, cy] = [cell * (i + 0.5), image.height / 2];
@@ -29,19 +32,28 @@ function darkestPerSphere(page, png, cells) {
       }
     }
     return darkest;
-  })`);
+  })`,
+  );
 }
 
 describe('energy: compensated furnace spheres', () => {
   for (const compensation of ['kullaConty', 'turquin', 'none']) {
     it(`${compensation}: ${compensation === 'none' ? 'the rough sphere stays grey' : 'every sphere reads back as the white background'}`, async () => {
-      const page = await open(browser, `embed.html?w=energy&alphas=${ALPHAS.join(',')}&compensation=${compensation}`, { width: 1200, height: 900 });
+      const page = await open(browser, `embed.html?w=energy&alphas=${ALPHAS.join(',')}&compensation=${compensation}`, {
+        width: 1200,
+        height: 900,
+      });
       await widget(page, 'energy');
       await settle(page, 1500);
-      expect((await page.evaluate(() => globalThis.__shadingLab.widgets['energy'].getAlbedos())).length).toBe(ALPHAS.length);
+      expect((await page.evaluate(() => globalThis.__shadingLab.widgets['energy'].getAlbedos())).length).toBe(
+        ALPHAS.length,
+      );
       const darkest = await darkestPerSphere(page, await shot(page, '.sphere-grid canvas'), ALPHAS.length);
-      console.log(`furnace, ${compensation}: darkest 8-bit value inside the spheres α ${ALPHAS.join(', ')}: ${darkest.join(', ')}`);
-      if (compensation === 'none') expect(darkest[2]).toBeLessThan(200); // E(1) = 1 − ln 2 at α = 1: sRGB 150
+      console.log(
+        `furnace, ${compensation}: darkest 8-bit value inside the spheres α ${ALPHAS.join(', ')}: ${darkest.join(', ')}`,
+      );
+      if (compensation === 'none')
+        expect(darkest[2]).toBeLessThan(200); // E(1) = 1 − ln 2 at α = 1: sRGB 150
       else for (const d of darkest) expect(d).toBeGreaterThanOrEqual(254);
       expect(page.errors).toEqual([]);
       await page.close();
@@ -49,19 +61,24 @@ describe('energy: compensated furnace spheres', () => {
   }
 });
 
-describe('energy: the coloured metal\'s random walk', () => {
-  it('runs in a worker: α changes leave no main-thread task near the old 1.1 s walk, and the newest α\'s points (walkPoints) are shown', async () => {
+describe("energy: the coloured metal's random walk", () => {
+  it("runs in a worker: α changes leave no main-thread task near the old 1.1 s walk, and the newest α's points (walkPoints) are shown", async () => {
     const { walkPoints } = await import('../../src/widgets/energy/compensation.js');
     const { materialByKey } = await import('../../src/math/materials.js');
     const page = await open(browser, 'embed.html?w=energy&alphas=0.5', { width: 1200, height: 900 });
     await widget(page, 'energy');
-    const walkShown = () => page.waitForFunction(() => document.querySelector('.data-table caption')
-      && !document.querySelector('.walk-pending'), { timeout: 60_000 });
+    const walkShown = () =>
+      page.waitForFunction(
+        () => document.querySelector('.data-table caption') && !document.querySelector('.walk-pending'),
+        { timeout: 60_000 },
+      );
     await walkShown();
     await settle(page, 800);
     await page.evaluate(() => {
       window.__longTasks = [];
-      new PerformanceObserver((list) => window.__longTasks.push(...list.getEntries().map((e) => e.duration))).observe({ type: 'longtask' });
+      new PerformanceObserver((list) => window.__longTasks.push(...list.getEntries().map((e) => e.duration))).observe({
+        type: 'longtask',
+      });
     });
     for (const alpha of [0.3, 0.55, 0.05, 1]) {
       await page.evaluate((a) => globalThis.__shadingLab.widgets['energy'].update({ metalAlpha: a }), alpha);
@@ -70,17 +87,28 @@ describe('energy: the coloured metal\'s random walk', () => {
     await walkShown();
     await settle(page, 500);
     const longest = await page.evaluate(() => Math.max(0, ...window.__longTasks));
-    console.log(`energy: longest main-thread task over 4 α changes: ${longest.toFixed(0)} ms (the walk on the main thread took ~1100 ms)`);
+    console.log(
+      `energy: longest main-thread task over 4 α changes: ${longest.toFixed(0)} ms (the walk on the main thread took ~1100 ms)`,
+    );
     // the real property: the walk runs in a worker; the bound is generous (other engineers share the 2 cores)
-    expect(page.workers().map((w) => w.url()).some((u) => /walk-worker/.test(u))).toBe(true);
+    expect(
+      page
+        .workers()
+        .map((w) => w.url())
+        .some((u) => /walk-worker/.test(u)),
+    ).toBe(true);
     expect(longest).toBeLessThan(700);
     const { caption, head } = await page.evaluate(() => {
-      const t = [...document.querySelectorAll('.data-table')].find((x) => x.caption?.textContent.includes('seen head-on'));
+      const t = [...document.querySelectorAll('.data-table')].find((x) =>
+        x.caption?.textContent.includes('seen head-on'),
+      );
       const walkRow = [...t.querySelectorAll('tbody tr')].at(-1);
       return { caption: t.caption.textContent, head: walkRow.cells[2].textContent };
     });
     expect(caption).toMatch(/at α = 1,/);
-    const expected = walkPoints(1, materialByKey('gold').linear)[0].albedo.map((x) => x.toFixed(3)).join(', ');
+    const expected = walkPoints(1, materialByKey('gold').linear)[0]
+      .albedo.map((x) => x.toFixed(3))
+      .join(', ');
     expect(head).toBe(expected); // the newest α's walk, not a stale one drawn over it
     expect(page.errors).toEqual([]);
     await page.close();

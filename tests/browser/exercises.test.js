@@ -22,12 +22,18 @@ async function choose(page, id, { keyboard = false } = {}) {
     await page.focus(`#exercise-list a[href="#${id}"]`);
     await page.keyboard.press('Enter');
   } else await page.click(`#exercise-list a[href="#${id}"]`);
-  await page.waitForFunction((i) => globalThis.__shadingLab.exercise?.id === i && globalThis.__shadingLab.exercise.ready, { timeout: 30_000 }, id);
+  await page.waitForFunction(
+    (i) => globalThis.__shadingLab.exercise?.id === i && globalThis.__shadingLab.exercise.ready,
+    { timeout: 30_000 },
+    id,
+  );
   await settle(page, 300);
 }
 
 async function typeAnswer(page, text) {
-  await page.$eval('#exercise-answer', (el) => { el.value = ''; });
+  await page.$eval('#exercise-answer', (el) => {
+    el.value = '';
+  });
   await page.type('#exercise-answer', text);
 }
 
@@ -117,7 +123,13 @@ describe('exercises', () => {
 
     await choose(page, 'which-ndf');
     const hidden = await page.evaluate(() => globalThis.__shadingLab.exercise.hidden);
-    const NAMES = { ggx: 'GGX', beckmann: 'Beckmann', blinnPhong: 'Blinn-Phong', abc: 'ABC', sgd: 'Shifted gamma (SGD)' };
+    const NAMES = {
+      ggx: 'GGX',
+      beckmann: 'Beckmann',
+      blinnPhong: 'Blinn-Phong',
+      abc: 'ABC',
+      sgd: 'Shifted gamma (SGD)',
+    };
     const wrongPick = ['beckmann', 'blinnPhong'].includes(hidden) ? 'ggx' : 'beckmann';
     await page.click(`input[name=answer][value=${wrongPick}]`);
     r = await check(page);
@@ -147,7 +159,9 @@ describe('exercises', () => {
     await page.reload({ waitUntil: 'load' });
     await page.waitForSelector('#exercise-list a');
     expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('11 of 11 solved');
-    expect(await page.$eval('#exercise-list a[href="#lake-mirror"]', (a) => a.parentElement.textContent)).toContain('✓ solved');
+    expect(await page.$eval('#exercise-list a[href="#lake-mirror"]', (a) => a.parentElement.textContent)).toContain(
+      '✓ solved',
+    );
     page.once('dialog', (d) => d.accept());
     await page.click('.exercise-reset');
     await settle(page, 100);
@@ -161,10 +175,21 @@ describe('exercises', () => {
 
   it('shows a bad set’s errors on the page and keeps its good exercises', async () => {
     const set = [
-      { id: 'good', chapter: 'diffuse', title: 'Good', prompt: 'Lo?', grader: 'lambert-radiance', params: { cLight: 1, thetaDeg: 0 }, tolerance: 0.1 },
+      {
+        id: 'good',
+        chapter: 'diffuse',
+        title: 'Good',
+        prompt: 'Lo?',
+        grader: 'lambert-radiance',
+        params: { cLight: 1, thetaDeg: 0 },
+        tolerance: 0.1,
+      },
       { id: 'bad', chapter: 'media', title: 'Bad', prompt: 'x', widget: 'media', state: { depth: 1 }, grader: 'guess' },
     ];
-    const page = await open(browser, `exercises.html?src=${encodeURIComponent(`data:application/json,${JSON.stringify(set)}`)}`);
+    const page = await open(
+      browser,
+      `exercises.html?src=${encodeURIComponent(`data:application/json,${JSON.stringify(set)}`)}`,
+    );
     await page.waitForSelector('.notice-error');
     const text = await page.$eval('#exercise-problems', (el) => el.textContent);
     expect(text).toContain('data URL #2: 3 problems, not loaded');
@@ -180,7 +205,9 @@ describe('exercises', () => {
     writeFileSync(file, '{ "id": ');
     const input = await page.$('#exercise-file');
     await input.uploadFile(file);
-    await page.waitForFunction(() => document.querySelector('#exercise-problems').textContent.includes('not-json.json is not valid JSON'));
+    await page.waitForFunction(() =>
+      document.querySelector('#exercise-problems').textContent.includes('not-json.json is not valid JSON'),
+    );
     expect(await page.$eval('#exercise', (el) => el.textContent)).toBe('No exercises to show.');
     expect(page.errors).toEqual([]);
     await page.close();

@@ -15,7 +15,13 @@ afterAll(async () => {
 const CANVAS = '.widget-fresnel-zones canvas';
 
 describe('pages load cleanly', () => {
-  for (const path of ['index.html', 'fresnel.html', 'embed.html?w=fresnel-curves', 'embed.html?w=fresnel-zones', 'embed.html?w=f0-tables']) {
+  for (const path of [
+    'index.html',
+    'fresnel.html',
+    'embed.html?w=fresnel-curves',
+    'embed.html?w=fresnel-zones',
+    'embed.html?w=f0-tables',
+  ]) {
     it(path, async () => {
       const page = await open(browser, path);
       if (path.includes('w=')) await widget(page, new URL(path, 'http://x').searchParams.get('w'));
@@ -35,7 +41,23 @@ describe('pages load cleanly', () => {
     const page = await open(browser, 'index.html');
     await settle(page);
     const links = await page.$$eval('#chapters a', (as) => as.map((a) => a.getAttribute('href')));
-    expect(links).toEqual(expect.arrayContaining(['fresnel.html', 'embed.html?w=fresnel-curves', 'embed.html?w=fresnel-zones', 'embed.html?w=f0-tables', 'brdf.html', 'microfacets.html', 'ndf.html', 'visibility.html', 'embed.html?w=brdf-lobe', 'embed.html?w=microfacets', 'embed.html?w=energy', 'embed.html?w=ndf-explorer', 'embed.html?w=visibility-explorer']));
+    expect(links).toEqual(
+      expect.arrayContaining([
+        'fresnel.html',
+        'embed.html?w=fresnel-curves',
+        'embed.html?w=fresnel-zones',
+        'embed.html?w=f0-tables',
+        'brdf.html',
+        'microfacets.html',
+        'ndf.html',
+        'visibility.html',
+        'embed.html?w=brdf-lobe',
+        'embed.html?w=microfacets',
+        'embed.html?w=energy',
+        'embed.html?w=ndf-explorer',
+        'embed.html?w=visibility-explorer',
+      ]),
+    );
     const { CHAPTERS } = await import('../../src/core/chapters.js');
     expect(await page.$$eval('.chapter.coming', (els) => els.length)).toBe(CHAPTERS.filter((c) => !c.page).length);
     expect(await page.$$eval('.chapter.live', (els) => els.length)).toBe(CHAPTERS.filter((c) => c.page).length);
@@ -88,29 +110,38 @@ describe('fresnel-zones', () => {
     await widget(page, 'fresnel-zones');
     const shares = await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].getZoneShares());
     const analytic = sphereZoneFractions();
-    console.log(`zone shares GPU ${shares.map((s) => (s * 100).toFixed(2)).join(' / ')} % vs analytic ${analytic.map((s) => (s * 100).toFixed(2)).join(' / ')} %`);
+    console.log(
+      `zone shares GPU ${shares.map((s) => (s * 100).toFixed(2)).join(' / ')} % vs analytic ${analytic.map((s) => (s * 100).toFixed(2)).join(' / ')} %`,
+    );
     shares.forEach((s, i) => expect(Math.abs(s - analytic[i])).toBeLessThan(0.003));
     await page.close();
   });
 
   it('on an orthographic sphere, the weighted shares match a float64 quadrature over the same 64 lights (α 0.1: 4.0% red, α 0.3: 1.4%)', async () => {
-    for (const [alpha, red] of [[0.1, 0.0405], [0.3, 0.0136]]) {
+    for (const [alpha, red] of [
+      [0.1, 0.0405],
+      [0.3, 0.0136],
+    ]) {
       const expected = weightedSphereShares(alpha);
       expect(expected[2]).toBeCloseTo(red, 3); // the figures fresnel.html quotes
       const page = await open(browser, `embed.html?w=fresnel-zones&mode=zones-lh-weighted&shape=sphere&alpha=${alpha}`);
       await widget(page, 'fresnel-zones');
       const avg = await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].getAverageShares());
-      console.log(`weighted shares, sphere, α ${alpha}: GPU ${avg.map((x) => (x * 100).toFixed(2))} %, quadrature ${expected.map((x) => (x * 100).toFixed(2))} %`);
+      console.log(
+        `weighted shares, sphere, α ${alpha}: GPU ${avg.map((x) => (x * 100).toFixed(2))} %, quadrature ${expected.map((x) => (x * 100).toFixed(2))} %`,
+      );
       avg.forEach((x, i) => expect(Math.abs(x - expected[i]), `zone ${i}`).toBeLessThan(0.003)); // a 128² image of the sphere
       await page.close();
     }
   });
 
-  it("bears out the talk: weighted by the BRDF, over all light directions, green predominates and red is rare", async () => {
+  it('bears out the talk: weighted by the BRDF, over all light directions, green predominates and red is rare', async () => {
     const page = await open(browser, 'embed.html?w=fresnel-zones&mode=zones-lh-weighted&shape=torusknot');
     await widget(page, 'fresnel-zones');
     const avg = await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].getAverageShares());
-    console.log(`weighted l·h zone shares over 64 lights (torus knot, alpha 0.3): ${avg.map((s) => (s * 100).toFixed(1)).join(' / ')} %`);
+    console.log(
+      `weighted l·h zone shares over 64 lights (torus knot, alpha 0.3): ${avg.map((s) => (s * 100).toFixed(1)).join(' / ')} %`,
+    );
     expect(avg[0]).toBeGreaterThan(0.5);
     expect(avg[2]).toBeLessThan(0.05);
     expect(avg.reduce((a, b) => a + b)).toBeCloseTo(1, 6);
@@ -195,7 +226,9 @@ describe('fresnel-curves and f0-tables', () => {
       return blob.text();
     });
     const lines = csv.trim().split('\n');
-    expect(lines[0]).toBe('"Angle of incidence θ (degrees)","Gold R exact","Gold R Schlick","Gold G exact","Gold G Schlick","Gold B exact","Gold B Schlick","Silver R exact","Silver R Schlick","Silver G exact","Silver G Schlick","Silver B exact","Silver B Schlick"');
+    expect(lines[0]).toBe(
+      '"Angle of incidence θ (degrees)","Gold R exact","Gold R Schlick","Gold G exact","Gold G Schlick","Gold B exact","Gold B Schlick","Silver R exact","Silver R Schlick","Silver G exact","Silver G Schlick","Silver B exact","Silver B Schlick"',
+    );
     expect(lines).toHaveLength(362); // 0°..90° in 0.25° steps, plus the header
     expect(Number(lines[1].split(',')[1])).toBeCloseTo(0.999, 3); // gold R at 0°: the talk's 1.00, clamped
     expect(Number(lines[361].split(',')[1])).toBeCloseTo(1, 9); // grazing
@@ -224,7 +257,9 @@ describe('without WebGL2', () => {
     try {
       const page = await open(noGl, 'fresnel.html');
       await widget(page, 'tables');
-      expect(await page.$eval('.widget-fresnel-zones .blocking-message', (el) => el.textContent)).toMatch(/needs WebGL2/);
+      expect(await page.$eval('.widget-fresnel-zones .blocking-message', (el) => el.textContent)).toMatch(
+        /needs WebGL2/,
+      );
       expect(await page.$$eval('.widget-fresnel-curves .plot', (els) => els.length)).toBe(2);
       expect(page.errors).toEqual([]);
     } finally {
@@ -238,7 +273,10 @@ describe('GLSL vs JS parity', () => {
     const page = await open(browser, 'parity.html');
     await page.waitForSelector('#parity-summary', { timeout: 60_000 });
     const results = await page.evaluate(() => globalThis.__shadingLab.parity);
-    for (const r of results) console.log(`parity ${r.name.padEnd(30)} n=${String(r.count).padStart(5)} maxAbs=${r.maxAbs.toExponential(2)} maxRel=${r.maxRel.toExponential(2)} invalid=${r.invalid}`);
+    for (const r of results)
+      console.log(
+        `parity ${r.name.padEnd(30)} n=${String(r.count).padStart(5)} maxAbs=${r.maxAbs.toExponential(2)} maxRel=${r.maxRel.toExponential(2)} invalid=${r.invalid}`,
+      );
     for (const r of results) {
       expect(r.invalid, r.name).toBe(0);
       expect(r.failures, r.name).toBe(0);

@@ -5,14 +5,25 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { WIDGETS } from '../../src/widgets/registry.js';
 import { defaultState } from '../../src/core/state.js';
 import {
-  PROTOTYPE_NAMES, candidates, encodeNumbers, goodPartial, hostilePartial, isRefused, oddButValid, prototypeNames,
-  reviveNumbers, seededRandom, stateProblems,
+  PROTOTYPE_NAMES,
+  candidates,
+  encodeNumbers,
+  goodPartial,
+  hostilePartial,
+  isRefused,
+  oddButValid,
+  prototypeNames,
+  reviveNumbers,
+  seededRandom,
+  stateProblems,
 } from '../hostile-values.js';
 import { baseUrl, launchBrowser, open, openForeignParent, otherOrigin, settle } from './helpers.js';
 
 const SEED = 17;
 const SETS_PER_WIDGET = 40;
-const schemas = Object.fromEntries(await Promise.all(Object.entries(WIDGETS).map(async ([n, w]) => [n, (await w.load()).widget.schema])));
+const schemas = Object.fromEntries(
+  await Promise.all(Object.entries(WIDGETS).map(async ([n, w]) => [n, (await w.load()).widget.schema])),
+);
 const widgetOrigin = () => new URL(baseUrl()).origin;
 const counts = { widgets: 0, inputs: 0, refusals: 0 };
 
@@ -59,7 +70,9 @@ async function embed(src) {
     document.body.replaceChildren(frame);
   }, src);
   const frame = await (await parent.waitForSelector('#embedded')).contentFrame();
-  await frame.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 1, { timeout: 45_000 });
+  await frame.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 1, {
+    timeout: 45_000,
+  });
   await parent.waitForFunction(() => window.__inbox.some((d) => d?.type === 'shading-lab:ready'), { timeout: 45_000 });
   return frame;
 }
@@ -72,7 +85,11 @@ async function postAll(messages, last) {
     for (const text of ${JSON.stringify(messages.map(encodeNumbers))}) win.postMessage(JSON.parse(text, ${reviveNumbers}), ${JSON.stringify(widgetOrigin())});
     win.postMessage({ type: 'shading-lab:get', id: ${JSON.stringify(last)} }, ${JSON.stringify(widgetOrigin())});
   })()`);
-  await parent.waitForFunction((id) => window.__inbox.some((d) => d?.id === id && d.type === 'shading-lab:state'), { timeout: 30_000 }, last);
+  await parent.waitForFunction(
+    (id) => window.__inbox.some((d) => d?.id === id && d.type === 'shading-lab:state'),
+    { timeout: 30_000 },
+    last,
+  );
   return parent.evaluate(() => window.__inbox.splice(0));
 }
 
@@ -82,45 +99,58 @@ async function postAll(messages, last) {
  */
 async function settled(frame) {
   await frame.$$eval('.notice-close', (buttons) => buttons.forEach((b) => b.click()));
-  await frame.waitForFunction(() => {
-    const p = Object.values(globalThis.__shadingLab.widgets)[0].getProgress?.();
-    return !p || p.frame >= p.target;
-  }, { timeout: 90_000 });
+  await frame.waitForFunction(
+    () => {
+      const p = Object.values(globalThis.__shadingLab.widgets)[0].getProgress?.();
+      return !p || p.frame >= p.target;
+    },
+    { timeout: 90_000 },
+  );
   await settle(frame, 600);
 }
 
 const frameState = (frame) => frame.evaluate(() => Object.values(globalThis.__shadingLab.widgets)[0].getState());
 const noticeText = (frame) => frame.$$eval('.notice', (n) => n.map((x) => x.textContent).join('\n'));
 /** Markup a hostile value would have added, and what a handler that ran would have set. */
-const injected = (frame) => frame.evaluate(() => ({
-  elements: document.querySelectorAll('script:not([src]), img[src="x"], svg[onload], [onerror], [onload]').length,
-  pwned: window.__pwned ?? null,
-  title: document.title.includes('pwned'),
-}));
+const injected = (frame) =>
+  frame.evaluate(() => ({
+    elements: document.querySelectorAll('script:not([src]), img[src="x"], svg[onload], [onerror], [onload]').length,
+    pwned: window.__pwned ?? null,
+    title: document.title.includes('pwned'),
+  }));
 const frameShot = async () => (await parent.$('#embedded')).screenshot({ encoding: 'base64' });
 
 /** Share of pixels that differ by more than 48 in some channel between two screenshots (decoded in the parent). */
 function pixelChange(a, b) {
-  return parent.evaluate(async (a, b) => {
-    const decode = async (b64) => {
-      const bitmap = await createImageBitmap(new Blob([Uint8Array.from(atob(b64), (c) => c.charCodeAt(0))]));
-      const ctx = new OffscreenCanvas(bitmap.width, bitmap.height).getContext('2d');
-      ctx.drawImage(bitmap, 0, 0);
-      return ctx.getImageData(0, 0, bitmap.width, bitmap.height).data;
-    };
-    const [p, q] = await Promise.all([decode(a), decode(b)]);
-    let changed = 0;
-    for (let i = 0; i < p.length; i += 4) if (Math.max(...[0, 1, 2].map((c) => Math.abs(p[i + c] - q[i + c]))) > 48) changed++;
-    return changed / (p.length / 4);
-  }, a, b);
+  return parent.evaluate(
+    async (a, b) => {
+      const decode = async (b64) => {
+        const bitmap = await createImageBitmap(new Blob([Uint8Array.from(atob(b64), (c) => c.charCodeAt(0))]));
+        const ctx = new OffscreenCanvas(bitmap.width, bitmap.height).getContext('2d');
+        ctx.drawImage(bitmap, 0, 0);
+        return ctx.getImageData(0, 0, bitmap.width, bitmap.height).data;
+      };
+      const [p, q] = await Promise.all([decode(a), decode(b)]);
+      let changed = 0;
+      for (let i = 0; i < p.length; i += 4)
+        if (Math.max(...[0, 1, 2].map((c) => Math.abs(p[i + c] - q[i + c]))) > 48) changed++;
+      return changed / (p.length / 4);
+    },
+    a,
+    b,
+  );
 }
 
 const NOT_OBJECTS = [null, 42, 'shading-lab:set', [1, 2], true];
 const malformed = (good) => [
   ...NOT_OBJECTS,
-  { type: 'shading-lab:set', state: null }, { type: 'shading-lab:set', state: [good] }, { type: 'shading-lab:set', state: 'mode=x' },
-  { type: 'shading-lab:set', id: { x: 1 }, state: good }, { type: 'shading-lab:set', id: 'x'.repeat(5000), state: good },
-  { type: 'constructor', state: good }, { type: '__proto__' },
+  { type: 'shading-lab:set', state: null },
+  { type: 'shading-lab:set', state: [good] },
+  { type: 'shading-lab:set', state: 'mode=x' },
+  { type: 'shading-lab:set', id: { x: 1 }, state: good },
+  { type: 'shading-lab:set', id: 'x'.repeat(5000), state: good },
+  { type: 'constructor', state: good },
+  { type: '__proto__' },
 ];
 
 describe('fuzz: every widget by URL and by postMessage from another origin', () => {
@@ -133,22 +163,33 @@ describe('fuzz: every widget by URL and by postMessage from another origin', () 
       const labelOf = (k) => schema[k].label ?? k;
       // by URL: every field refused, each named in a notice; the state is the defaults
       const query = hostileQuery(schema, random);
-      const frame = await embed(new URL(`embed.html?w=${name}&origins=${encodeURIComponent(new URL(otherOrigin()).origin)}&${query}`, baseUrl()).href);
+      const frame = await embed(
+        new URL(`embed.html?w=${name}&origins=${encodeURIComponent(new URL(otherOrigin()).origin)}&${query}`, baseUrl())
+          .href,
+      );
       counts.widgets++;
       counts.inputs += [...query.keys()].length;
       const notices = await noticeText(frame);
-      for (const key of Object.keys(schema)) expect(notices, `URL ${key}=${query.get(key).slice(0, 40)}`).toContain(`${labelOf(key)}:`);
+      for (const key of Object.keys(schema))
+        expect(notices, `URL ${key}=${query.get(key).slice(0, 40)}`).toContain(`${labelOf(key)}:`);
       counts.refusals += Object.keys(schema).length;
       expect(await frameState(frame)).toEqual(defaultState(schema));
 
       // odd but valid values are taken without a fault; then a good state, and a picture of it
       const odd = oddButValid(schema).map((state, i) => ({ type: 'shading-lab:set', id: `odd${i}`, state }));
       // a good state that converges soon: the fewest samples a progressive widget offers
-      const fewest = Object.fromEntries(['refSamples', 'samples'].filter((k) => schema[k]?.type === 'enum').map((k) => [k, Object.keys(schema[k].options)[0]]));
+      const fewest = Object.fromEntries(
+        ['refSamples', 'samples']
+          .filter((k) => schema[k]?.type === 'enum')
+          .map((k) => [k, Object.keys(schema[k].options)[0]]),
+      );
       const good = { ...goodPartial(schema), ...fewest };
       const replies = await postAll([...odd, { type: 'shading-lab:set', id: 'good', state: good }], 'after-good');
       counts.inputs += odd.length;
-      expect(replies.filter((d) => d.type === 'shading-lab:error'), 'odd but valid values').toEqual([]);
+      expect(
+        replies.filter((d) => d.type === 'shading-lab:error'),
+        'odd but valid values',
+      ).toEqual([]);
       const goodState = await frameState(frame);
       expect(goodState).toMatchObject(good);
       await settled(frame);
@@ -156,7 +197,11 @@ describe('fuzz: every widget by URL and by postMessage from another origin', () 
 
       // hostile `set`s (refused values only) and malformed messages: an error reply for each set, naming each
       // field and unknown key; no reply to the malformed ones
-      const sets = Array.from({ length: SETS_PER_WIDGET }, (_, i) => ({ type: 'shading-lab:set', id: `h${i}`, state: refusedPartial(schema, random, i % 2 === 0) }));
+      const sets = Array.from({ length: SETS_PER_WIDGET }, (_, i) => ({
+        type: 'shading-lab:set',
+        id: `h${i}`,
+        state: refusedPartial(schema, random, i % 2 === 0),
+      }));
       sets.push({ type: 'shading-lab:set', id: 'proto', state: JSON.parse(`{"__proto__": ${JSON.stringify(good)}}`) }); // an own key, as JSON makes it
       const inbox = await postAll([...sets, ...malformed(good)], 'after-hostile');
       counts.inputs += sets.length + malformed(good).length;
@@ -164,7 +209,9 @@ describe('fuzz: every widget by URL and by postMessage from another origin', () 
         const error = inbox.find((d) => d.type === 'shading-lab:error' && d.id === id);
         expect(error, `no error reply to ${encodeNumbers(state).slice(0, 200)}`).toBeTruthy();
         for (const key of Object.keys(state)) {
-          expect(error.errors.join('\n'), `${id}: ${key}`).toContain(Object.hasOwn(schema, key) ? `${labelOf(key)}:` : `“${key}” is not a setting`);
+          expect(error.errors.join('\n'), `${id}: ${key}`).toContain(
+            Object.hasOwn(schema, key) ? `${labelOf(key)}:` : `“${key}” is not a setting`,
+          );
         }
         counts.refusals += error.errors.length;
       }
@@ -176,7 +223,9 @@ describe('fuzz: every widget by URL and by postMessage from another origin', () 
       expect(stateProblems(schema, final)).toEqual([]);
       expect(final).toEqual(goodState);
       expect(await injected(frame)).toEqual({ elements: 0, pwned: null, title: false });
-      expect(await frame.evaluate(() => Object.getOwnPropertyNames(Object.prototype).sort().join(','))).toBe(prototypeBefore);
+      expect(await frame.evaluate(() => Object.getOwnPropertyNames(Object.prototype).sort().join(','))).toBe(
+        prototypeBefore,
+      );
       expect(await frame.evaluate(() => ({}).pwned ?? null)).toBe(null);
       expect(await frame.$$eval('.blocking-message', (m) => m.length)).toBe(0);
       await settled(frame);
@@ -188,11 +237,19 @@ describe('fuzz: every widget by URL and by postMessage from another origin', () 
 });
 
 /** Drops a file of `bytes` on `selector` (bytes as an array, or { size } for that many zero bytes). */
-const dropFile = (page, selector, name, bytes) => page.evaluate((selector, name, bytes) => {
-  const dt = new DataTransfer();
-  dt.items.add(new File([Array.isArray(bytes) ? new Uint8Array(bytes) : new Uint8Array(bytes.size)], name));
-  document.querySelector(selector).dispatchEvent(new DragEvent('drop', { dataTransfer: dt, bubbles: true, cancelable: true }));
-}, selector, name, bytes);
+const dropFile = (page, selector, name, bytes) =>
+  page.evaluate(
+    (selector, name, bytes) => {
+      const dt = new DataTransfer();
+      dt.items.add(new File([Array.isArray(bytes) ? new Uint8Array(bytes) : new Uint8Array(bytes.size)], name));
+      document
+        .querySelector(selector)
+        .dispatchEvent(new DragEvent('drop', { dataTransfer: dt, bubbles: true, cancelable: true }));
+    },
+    selector,
+    name,
+    bytes,
+  );
 const text = (s) => [...new TextEncoder().encode(s)];
 const int32 = (...v) => [...new Uint8Array(new Int32Array(v).buffer)];
 const PNG_MAGIC = [0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a];
@@ -203,15 +260,23 @@ describe('fuzz: files dropped and fetched', () => {
     await page.waitForFunction(() => globalThis.__shadingLab?.widgets?.['material-lab'], { timeout: 45_000 });
     const hdrHead = (w, h) => text(`#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y ${h} +X ${w}\n`);
     const files = {
-      'empty.hdr': [], 'empty.exr': [], 'magic.hdr': PNG_MAGIC, 'magic.exr': PNG_MAGIC,
-      'cut.hdr': [...hdrHead(8, 4), ...Array(40).fill(128)], 'cut.exr': [0x76, 0x2f, 0x31, 0x01, 2, 0],
+      'empty.hdr': [],
+      'empty.exr': [],
+      'magic.hdr': PNG_MAGIC,
+      'magic.exr': PNG_MAGIC,
+      'cut.hdr': [...hdrHead(8, 4), ...Array(40).fill(128)],
+      'cut.exr': [0x76, 0x2f, 0x31, 0x01, 2, 0],
       'giga.hdr': [...hdrHead(200000, 100000), 128, 128, 128, 128],
       'giga.exr': [...int32(20000630, 2), ...text('dataWindow\0box2i\0'), ...int32(16, 0, 0, 199999, 99999), 0],
       'over-64-MB.hdr': { size: 64 * 2 ** 20 + 1 },
     };
     for (const [name, bytes] of Object.entries(files)) {
       await dropFile(page, '.widget-material-lab', name, bytes);
-      await page.waitForFunction((n) => [...document.querySelectorAll('.notice')].some((x) => x.textContent.includes(`“${n}”`)), { timeout: 20_000 }, name);
+      await page.waitForFunction(
+        (n) => [...document.querySelectorAll('.notice')].some((x) => x.textContent.includes(`“${n}”`)),
+        { timeout: 20_000 },
+        name,
+      );
       counts.inputs++;
       counts.refusals++;
     }
@@ -220,7 +285,9 @@ describe('fuzz: files dropped and fetched', () => {
     expect(notices).toMatch(/“giga\.exr” claims to be 200000×100000/);
     expect(notices).toMatch(/“cut\.exr” could not be read as EXR: its header ends early/);
     expect(notices).toMatch(/“over-64-MB\.hdr” is 67,108,865 bytes; the limit is 67,108,864 bytes \(64 MB\)/);
-    expect(await page.evaluate(() => globalThis.__shadingLab.widgets['material-lab'].getState().environment)).toBe('sky');
+    expect(await page.evaluate(() => globalThis.__shadingLab.widgets['material-lab'].getState().environment)).toBe(
+      'sky',
+    );
     expect(page.errors).toEqual([]);
     await page.close();
   }, 120_000);
@@ -232,17 +299,31 @@ describe('fuzz: files dropped and fetched', () => {
     const protoNames = () => page.evaluate(() => Object.getOwnPropertyNames(Object.prototype).sort().join(','));
     const prototypeBefore = await protoNames();
     const files = {
-      'empty.binary': [], 'short.binary': [1, 2, 3], 'huge-claim.binary': [...int32(90, 90, 10980), ...Array(4096).fill(0)],
-      'dims.binary': [...int32(1, 2, 3), ...Array(4096).fill(0)], 'over.binary': { size: 34_992_013 },
+      'empty.binary': [],
+      'short.binary': [1, 2, 3],
+      'huge-claim.binary': [...int32(90, 90, 10980), ...Array(4096).fill(0)],
+      'dims.binary': [...int32(1, 2, 3), ...Array(4096).fill(0)],
+      'over.binary': { size: 34_992_013 },
     };
     const faults = {
-      'empty.binary': /Empty file/, 'short.binary': /Truncated header/, 'huge-claim.binary': /claims .* GB/,
-      'dims.binary': /Wrong dimensions 1 × 2 × 3/, 'over.binary': /34,992,013 bytes, more than a MERL file’s 34,992,012/,
+      'empty.binary': /Empty file/,
+      'short.binary': /Truncated header/,
+      'huge-claim.binary': /claims .* GB/,
+      'dims.binary': /Wrong dimensions 1 × 2 × 3/,
+      'over.binary': /34,992,013 bytes, more than a MERL file’s 34,992,012/,
     };
     for (const [name, bytes] of Object.entries(files)) {
       await dropFile(page, '.measured-drop', name, bytes);
-      await page.waitForFunction((n) => [...document.querySelectorAll('.notice')].some((x) => x.textContent.includes(`${n}:`)), { timeout: 20_000 }, name);
-      const notice = await page.$$eval('.notice', (n, name) => n.map((x) => x.textContent).find((t) => t.includes(`${name}:`)), name);
+      await page.waitForFunction(
+        (n) => [...document.querySelectorAll('.notice')].some((x) => x.textContent.includes(`${n}:`)),
+        { timeout: 20_000 },
+        name,
+      );
+      const notice = await page.$$eval(
+        '.notice',
+        (n, name) => n.map((x) => x.textContent).find((t) => t.includes(`${name}:`)),
+        name,
+      );
       expect(notice, name).toMatch(faults[name]);
       counts.inputs++;
       counts.refusals++;
@@ -257,13 +338,20 @@ describe('fuzz: files dropped and fetched', () => {
     const long = 'x'.repeat(5000);
     const embed = await open(browser, `embed.html?w=${long}`);
     await embed.waitForSelector('.blocking-message');
-    expect(await embed.$eval('.blocking-message', (el) => el.textContent)).toContain(`"${'x'.repeat(59)}… (5002 characters)`);
+    expect(await embed.$eval('.blocking-message', (el) => el.textContent)).toContain(
+      `"${'x'.repeat(59)}… (5002 characters)`,
+    );
     expect(await embed.$eval('.blocking-message', (el) => el.textContent.length)).toBeLessThan(1000);
     expect(embed.errors).toEqual([]);
     await embed.close();
     const tour = await open(browser, `tour.html#${long}`);
-    await tour.waitForFunction(() => [...document.querySelectorAll('.notice')].some((x) => x.textContent.includes('There is no step')), { timeout: 45_000 });
-    const notice = await tour.$$eval('.notice', (n) => n.map((x) => x.textContent).find((t) => t.includes('There is no step')));
+    await tour.waitForFunction(
+      () => [...document.querySelectorAll('.notice')].some((x) => x.textContent.includes('There is no step')),
+      { timeout: 45_000 },
+    );
+    const notice = await tour.$$eval('.notice', (n) =>
+      n.map((x) => x.textContent).find((t) => t.includes('There is no step')),
+    );
     expect(notice).toContain('… (5002 characters)');
     expect(notice.length).toBeLessThan(400);
     expect(tour.errors).toEqual([]);
@@ -273,9 +361,30 @@ describe('fuzz: files dropped and fetched', () => {
   }, 120_000);
 
   it('exercises: a set naming inherited properties and holding HTML, and empty, truncated, wrong-magic and 2 MB files', async () => {
-    const good = { id: 'ok', chapter: 'diffuse', title: '<img src=x onerror="window.__pwned=1">', prompt: '<script>window.__pwned=1</script>', grader: 'lambert-radiance', params: { cLight: 1, thetaDeg: 0 }, tolerance: 0.1 };
-    const set = [good, ...PROTOTYPE_NAMES.map((n, i) => ({ ...good, id: `bad-${i}`, widget: n, grader: n, chapter: n, params: { [n]: 1 } }))];
-    const page = await open(browser, `exercises.html?src=${encodeURIComponent(`data:application/json,${JSON.stringify(set)}`)}#%E0%A4%A`);
+    const good = {
+      id: 'ok',
+      chapter: 'diffuse',
+      title: '<img src=x onerror="window.__pwned=1">',
+      prompt: '<script>window.__pwned=1</script>',
+      grader: 'lambert-radiance',
+      params: { cLight: 1, thetaDeg: 0 },
+      tolerance: 0.1,
+    };
+    const set = [
+      good,
+      ...PROTOTYPE_NAMES.map((n, i) => ({
+        ...good,
+        id: `bad-${i}`,
+        widget: n,
+        grader: n,
+        chapter: n,
+        params: { [n]: 1 },
+      })),
+    ];
+    const page = await open(
+      browser,
+      `exercises.html?src=${encodeURIComponent(`data:application/json,${JSON.stringify(set)}`)}#%E0%A4%A`,
+    );
     await page.waitForFunction(() => globalThis.__shadingLab?.exercise?.ready, { timeout: 45_000 });
     const problems = await page.$eval('#exercise-problems', (el) => el.textContent);
     for (const n of PROTOTYPE_NAMES) expect(problems).toContain(`unknown grader "${n}"`);
@@ -283,15 +392,31 @@ describe('fuzz: files dropped and fetched', () => {
     counts.inputs += set.length;
     counts.refusals += PROTOTYPE_NAMES.length;
 
-    const files = { 'empty.json': [], 'cut.json': text(JSON.stringify(good).slice(0, 40)), 'magic.json': PNG_MAGIC, 'two-MB.json': { size: 2 * 2 ** 20 } };
+    const files = {
+      'empty.json': [],
+      'cut.json': text(JSON.stringify(good).slice(0, 40)),
+      'magic.json': PNG_MAGIC,
+      'two-MB.json': { size: 2 * 2 ** 20 },
+    };
     for (const [name, bytes] of Object.entries(files)) {
       await dropFile(page, '#exercise-drop', name, bytes);
-      await page.waitForFunction((n) => document.querySelector('#exercise-problems').textContent.includes(`${n}: 1 problem`), { timeout: 20_000 }, name);
+      await page.waitForFunction(
+        (n) => document.querySelector('#exercise-problems').textContent.includes(`${n}: 1 problem`),
+        { timeout: 20_000 },
+        name,
+      );
       counts.inputs++;
       counts.refusals++;
     }
-    expect(await page.$eval('#exercise-problems', (el) => el.textContent)).toContain('two-MB.json is 2,097,152 bytes; the limit is 1,048,576 bytes (1 MB)');
-    expect(await page.evaluate(() => ({ pwned: window.__pwned ?? null, injected: document.querySelectorAll('img[src="x"], script:not([src])').length }))).toEqual({ pwned: null, injected: 0 });
+    expect(await page.$eval('#exercise-problems', (el) => el.textContent)).toContain(
+      'two-MB.json is 2,097,152 bytes; the limit is 1,048,576 bytes (1 MB)',
+    );
+    expect(
+      await page.evaluate(() => ({
+        pwned: window.__pwned ?? null,
+        injected: document.querySelectorAll('img[src="x"], script:not([src])').length,
+      })),
+    ).toEqual({ pwned: null, injected: 0 });
     expect(dialogs).toEqual([]);
     expect(page.errors).toEqual([]);
     await page.close();
@@ -302,7 +427,10 @@ describe('the three links of issue 17 that crashed a widget', () => {
   const LINKS = {
     'brdf-lobe': ['F=__proto__', ['F']],
     'visibility-explorer': ['terms=__proto__', ['terms']],
-    'fresnel-zones': ['shape=__proto__&camera=constructor&palette=toString&mode=hasOwnProperty', ['shape', 'camera', 'palette', 'mode']],
+    'fresnel-zones': [
+      'shape=__proto__&camera=constructor&palette=toString&mode=hasOwnProperty',
+      ['shape', 'camera', 'palette', 'mode'],
+    ],
   };
   for (const [name, [query, keys]] of Object.entries(LINKS)) {
     it(`embed.html?w=${name}&${query}: mounts with its defaults, says what it refused, draws, no error`, async () => {

@@ -10,7 +10,8 @@ import { build } from 'vite';
 
 export const ROOT = resolve(import.meta.dirname, '../..');
 export const SUB_PATH = '/course/shading-lab/'; // served under a sub-path: the build must not assume '/'
-export const CHROME_HINT = 'No Chromium found: set CHROME_PATH, or install one (Debian/Ubuntu: apt-get install -y chromium).';
+export const CHROME_HINT =
+  'No Chromium found: set CHROME_PATH, or install one (Debian/Ubuntu: apt-get install -y chromium).';
 
 export function findChrome() {
   if (process.env.CHROME_PATH && existsSync(process.env.CHROME_PATH)) return process.env.CHROME_PATH;
@@ -23,7 +24,9 @@ export function findChrome() {
   }
   const cache = join(homedir(), '.cache/puppeteer/chrome');
   if (existsSync(cache)) {
-    const found = execFileSync('find', [cache, '-type', 'f', '-name', 'chrome', '-perm', '-u+x'], { encoding: 'utf8' }).trim().split('\n')[0];
+    const found = execFileSync('find', [cache, '-type', 'f', '-name', 'chrome', '-perm', '-u+x'], { encoding: 'utf8' })
+      .trim()
+      .split('\n')[0];
     if (found) return found;
   }
   return null;
@@ -34,7 +37,15 @@ export async function buildApp(outDir = join(ROOT, 'dist')) {
   return outDir;
 }
 
-const TYPES = { '.html': 'text/html', '.js': 'text/javascript', '.css': 'text/css', '.svg': 'image/svg+xml', '.png': 'image/png', '.json': 'application/json', '.hdr': 'application/octet-stream' };
+const TYPES = {
+  '.html': 'text/html',
+  '.js': 'text/javascript',
+  '.css': 'text/css',
+  '.svg': 'image/svg+xml',
+  '.png': 'image/png',
+  '.json': 'application/json',
+  '.hdr': 'application/octet-stream',
+};
 
 /** Serves `dir` at SUB_PATH; everything outside it is a 404. Resolves to { url, close }. */
 export function serveStatic(dir) {
@@ -49,7 +60,9 @@ export function serveStatic(dir) {
     res.end(readFileSync(file));
   });
   return new Promise((ok) => {
-    server.listen(0, '127.0.0.1', () => ok({ url: `http://127.0.0.1:${server.address().port}${SUB_PATH}`, close: () => server.close() }));
+    server.listen(0, '127.0.0.1', () =>
+      ok({ url: `http://127.0.0.1:${server.address().port}${SUB_PATH}`, close: () => server.close() }),
+    );
   });
 }
 
@@ -61,8 +74,16 @@ export async function launchBrowser(extraArgs = []) {
     executablePath,
     headless: true,
     userDataDir,
-    args: ['--no-sandbox', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run',
-      '--enable-unsafe-swiftshader', '--ignore-gpu-blocklist', ...extraArgs],
+    args: [
+      '--no-sandbox',
+      '--disable-background-networking',
+      '--disable-component-update',
+      '--disable-sync',
+      '--no-first-run',
+      '--enable-unsafe-swiftshader',
+      '--ignore-gpu-blocklist',
+      ...extraArgs,
+    ],
   });
   browser.on('disconnected', () => {
     try {

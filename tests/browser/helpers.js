@@ -8,7 +8,13 @@ export { launchBrowser, settle };
 /** Counts every WebGL draw call of the page in window.__drawCalls. */
 function countDrawCalls() {
   window.__drawCalls = 0;
-  for (const fn of ['drawArrays', 'drawElements', 'drawArraysInstanced', 'drawElementsInstanced', 'drawRangeElements']) {
+  for (const fn of [
+    'drawArrays',
+    'drawElements',
+    'drawArraysInstanced',
+    'drawElementsInstanced',
+    'drawRangeElements',
+  ]) {
     const orig = WebGL2RenderingContext.prototype[fn];
     WebGL2RenderingContext.prototype[fn] = function counted(...args) {
       window.__drawCalls++;
@@ -30,7 +36,9 @@ export const otherOrigin = () => baseUrl().replace('127.0.0.1', 'localhost');
  * the app's origin only). The embedded widget keeps its policy.
  */
 export const openForeignParent = (browser) =>
-  openPage(browser, baseUrl(), new URL('index.html', otherOrigin()).href, { beforeLoad: (page) => page.setBypassCSP(true) });
+  openPage(browser, baseUrl(), new URL('index.html', otherOrigin()).href, {
+    beforeLoad: (page) => page.setBypassCSP(true),
+  });
 
 /** Waits for a widget instance to be registered under `key` (its name, or its prefix on a page). */
 export async function widget(page, key) {
@@ -44,7 +52,9 @@ export const getState = (page, key) => page.evaluate((k) => globalThis.__shading
 export async function setControl(page, label, value, root = 'body') {
   const ok = await page.evaluate(
     (label, value, root) => {
-      const ctrl = [...document.querySelectorAll(`${root} .lil-gui .lil-controller`)].find((c) => c.querySelector('.lil-name')?.textContent === label);
+      const ctrl = [...document.querySelectorAll(`${root} .lil-gui .lil-controller`)].find(
+        (c) => c.querySelector('.lil-name')?.textContent === label,
+      );
       if (!ctrl) return false;
       const select = ctrl.querySelector('select');
       const checkbox = ctrl.querySelector('input[type=checkbox]');
@@ -96,12 +106,17 @@ export function withPixels(page, png, fn) {
 export function distinctColors(page, png) {
   return withPixels(page, png, (image) => {
     const seen = new Set();
-    for (let i = 0; i < image.data.length; i += 4 * 7) seen.add((image.data[i] << 16) | (image.data[i + 1] << 8) | image.data[i + 2]);
+    for (let i = 0; i < image.data.length; i += 4 * 7)
+      seen.add((image.data[i] << 16) | (image.data[i + 1] << 8) | image.data[i + 2]);
     return seen.size;
   });
 }
 
 /** The red channel of a base64 PNG at fractional positions [[fx, fy], ...]. */
 export function redAt(page, png, points) {
-  return withPixels(page, png, `(image) => ${JSON.stringify(points)}.map(([fx, fy]) => image.data[(Math.round(image.height * fy) * image.width + Math.round(image.width * fx)) * 4])`);
+  return withPixels(
+    page,
+    png,
+    `(image) => ${JSON.stringify(points)}.map(([fx, fy]) => image.data[(Math.round(image.height * fy) * image.width + Math.round(image.width * fx)) * 4])`,
+  );
 }

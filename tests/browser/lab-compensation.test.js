@@ -7,7 +7,12 @@ import { launchBrowser, open, widget } from './helpers.js';
 
 const EXTENT = 1.1; // the lab's view half width (src/core/lab/lab-renderer.js)
 const RES = 192; // the lab's image size (src/widgets/material-lab/material-lab.js)
-const POINTS = [[0, 0], [0.5, 0], [-0.5, 0.5], [0, -0.8]]; // sphere coordinates, n = (x, y, sqrt(1 - x² - y²))
+const POINTS = [
+  [0, 0],
+  [0.5, 0],
+  [-0.5, 0.5],
+  [0, -0.8],
+]; // sphere coordinates, n = (x, y, sqrt(1 - x² - y²))
 const texelOf = ([x, y]) => [x, y].map((c) => Math.floor((c / (2 * EXTENT) + 0.5) * RES));
 
 let browser;
@@ -22,20 +27,29 @@ async function furnaceLab(compensation) {
   const query = `lab.environment=furnace&lab.layers=specular&lab.fresnel=one&lab.alpha=1&lab.compensation=${compensation}&lab.refSamples=128`;
   const page = await open(browser, `rendering.html?${query}`, { width: 1200, height: 900 });
   await widget(page, 'lab');
-  await page.waitForFunction(() => {
-    const p = globalThis.__shadingLab.widgets.lab.getProgress();
-    return p.frame >= p.target;
-  }, { timeout: 90_000 });
+  await page.waitForFunction(
+    () => {
+      const p = globalThis.__shadingLab.widgets.lab.getProgress();
+      return p.frame >= p.target;
+    },
+    { timeout: 90_000 },
+  );
   // the red channel, averaged over the 5 × 5 texels around each point (the reference's noise, up to 3× larger
   // under Turquin's factor 1/E, averages down; the furnace is smooth there)
-  const read = (which) => page.evaluate((which, list, res) => {
-    const image = globalThis.__shadingLab.widgets.lab.read(which);
-    return list.map(([i, j]) => {
-      let sum = 0;
-      for (let dj = -2; dj <= 2; dj++) for (let di = -2; di <= 2; di++) sum += image[((j + dj) * res + i + di) * 4];
-      return sum / 25;
-    });
-  }, which, POINTS.map(texelOf), RES);
+  const read = (which) =>
+    page.evaluate(
+      (which, list, res) => {
+        const image = globalThis.__shadingLab.widgets.lab.read(which);
+        return list.map(([i, j]) => {
+          let sum = 0;
+          for (let dj = -2; dj <= 2; dj++) for (let di = -2; di <= 2; di++) sum += image[((j + dj) * res + i + di) * 4];
+          return sum / 25;
+        });
+      },
+      which,
+      POINTS.map(texelOf),
+      RES,
+    );
   return { page, approx: await read('approx'), reference: await read('reference') };
 }
 
@@ -43,8 +57,10 @@ describe('material lab: multiple-scattering compensation in the white furnace', 
   for (const compensation of ['kullaConty', 'turquin']) {
     it(`${compensation}: albedo 1 in the split sum (within 1e-2) and in the converged reference (within 3e-2)`, async () => {
       const { page, approx, reference } = await furnaceLab(compensation);
-      console.log(`lab furnace, ${compensation}: approximation ${approx.map((x) => x.toFixed(4)).join(', ')}; ` +
-        `reference ${reference.map((x) => x.toFixed(4)).join(', ')}`);
+      console.log(
+        `lab furnace, ${compensation}: approximation ${approx.map((x) => x.toFixed(4)).join(', ')}; ` +
+          `reference ${reference.map((x) => x.toFixed(4)).join(', ')}`,
+      );
       for (const x of approx) expect(Math.abs(x - 1)).toBeLessThan(1e-2);
       for (const x of reference) expect(Math.abs(x - 1)).toBeLessThan(3e-2);
       expect(page.errors).toEqual([]);

@@ -15,35 +15,52 @@ import { EXAMPLES } from '../../src/widgets/measured-brdf/model.js';
 
 const EXTENT = 1.1; // the lab's view half width (src/core/lab/lab-renderer.js)
 const RES = 192; // the lab's image size (src/widgets/material-lab/material-lab.js)
-const POINTS = [[0, 0], [0.5, 0], [-0.5, 0.5], [0, -0.8], [0.7, 0.6]]; // sphere coordinates
+const POINTS = [
+  [0, 0],
+  [0.5, 0],
+  [-0.5, 0.5],
+  [0, -0.8],
+  [0.7, 0.6],
+]; // sphere coordinates
 const texelOf = ([x, y]) => [x, y].map((c) => Math.floor((c / (2 * EXTENT) + 0.5) * RES));
 const TRUTH = EXAMPLES.ggx.params; // α 0.2, f0 0.04, c_diff 0.3
 // c_diff 0.3 linear as the lab's sRGB colour field takes it: 0.3005 back in linear (0.2 % off, far below the noise)
-const QUERY = 'lab.alpha=0.2&lab.f0=0.04&lab.diffuse=959595&lab.envMethod=importance&lab.samples=256&lab.refSamples=512';
+const QUERY =
+  'lab.alpha=0.2&lab.f0=0.04&lab.diffuse=959595&lab.envMethod=importance&lab.samples=256&lab.refSamples=512';
 
 let browser;
 let page;
 let file;
 const lab = () => page.evaluate(() => globalThis.__shadingLab.widgets.lab.getStats());
 const converged = () =>
-  page.waitForFunction(() => {
-    const p = globalThis.__shadingLab.widgets.lab.getProgress();
-    return p.frame >= p.target;
-  }, { timeout: 300_000, polling: 500 });
+  page.waitForFunction(
+    () => {
+      const p = globalThis.__shadingLab.widgets.lab.getProgress();
+      return p.frame >= p.target;
+    },
+    { timeout: 300_000, polling: 500 },
+  );
 /**
  * Per point and channel of the reference image, the mean of the 5 × 5 texels around it and its standard error
  * (their spread / 5: Monte Carlo noise, and the picture's own variation there, which only makes it larger).
  */
 const readReference = () =>
-  page.evaluate((list, res) => {
-    const image = globalThis.__shadingLab.widgets.lab.read('reference');
-    return list.map(([i, j]) => [0, 1, 2].map((c) => {
-      const x = [];
-      for (let dj = -2; dj <= 2; dj++) for (let di = -2; di <= 2; di++) x.push(image[((j + dj) * res + i + di) * 4 + c]);
-      const mean = x.reduce((a, b) => a + b) / 25;
-      return { mean, se: Math.sqrt(x.reduce((a, b) => a + (b - mean) ** 2, 0) / 24 / 25) };
-    }));
-  }, POINTS.map(texelOf), RES);
+  page.evaluate(
+    (list, res) => {
+      const image = globalThis.__shadingLab.widgets.lab.read('reference');
+      return list.map(([i, j]) =>
+        [0, 1, 2].map((c) => {
+          const x = [];
+          for (let dj = -2; dj <= 2; dj++)
+            for (let di = -2; di <= 2; di++) x.push(image[((j + dj) * res + i + di) * 4 + c]);
+          const mean = x.reduce((a, b) => a + b) / 25;
+          return { mean, se: Math.sqrt(x.reduce((a, b) => a + (b - mean) ** 2, 0) / 24 / 25) };
+        }),
+      );
+    },
+    POINTS.map(texelOf),
+    RES,
+  );
 const setAndConverge = async (state) => {
   await page.evaluate((s) => globalThis.__shadingLab.widgets.lab.update(s), state);
   await settle(page, 1000);
@@ -91,8 +108,10 @@ describe('material lab: a measured BRDF (a MERL file written from GGX) against t
       await setAndConverge({ environment });
       const measured = await readReference();
       const g = (p) => `${p[1].mean.toFixed(4)} ± ${p[1].se.toFixed(4)}`;
-      console.log(`lab, measured vs analytic GGX, ${environment} (G): ` +
-        measured.map((m, k) => `${g(m)} / ${g(analytic[environment][k])}`).join(', '));
+      console.log(
+        `lab, measured vs analytic GGX, ${environment} (G): ` +
+          measured.map((m, k) => `${g(m)} / ${g(analytic[environment][k])}`).join(', '),
+      );
       measured.forEach((rgb, k) =>
         rgb.forEach((x, c) => {
           const want = analytic[environment][k][c];
@@ -105,8 +124,10 @@ describe('material lab: a measured BRDF (a MERL file written from GGX) against t
       // importance sampling gets (256 samples, the same pattern on every pixel): the method's error, not the table's
       const stats = await lab();
       const own = analytic[`${environment}Stats`].relative;
-      console.log(`lab, ${environment}: importance vs reference, relative RMS: measured ${(100 * stats.relative).toFixed(2)} %, ` +
-        `analytic GGX ${(100 * own).toFixed(2)} %`);
+      console.log(
+        `lab, ${environment}: importance vs reference, relative RMS: measured ${(100 * stats.relative).toFixed(2)} %, ` +
+          `analytic GGX ${(100 * own).toFixed(2)} %`,
+      );
       if (environment === 'furnace') expect(stats.relative).toBeLessThan(0.01);
       else expect(stats.relative).toBeLessThan(1.5 * own);
     }, 600_000);

@@ -79,10 +79,13 @@ describe('a synthetic MERL file picked on the BRDF page', () => {
     const light = (30 * Math.PI) / 180; // the schema's default light
     const l = [-Math.sin(light), 0, Math.cos(light)];
     const ggx = (await fits()).ggx;
-    const peak = (f) => Math.max(...Array.from({ length: 179 }, (_, i) => {
-      const t = ((i - 89) * Math.PI) / 180; // the plane of incidence, where an isotropic lobe peaks
-      return f(l, [Math.sin(t), 0, Math.cos(t)])[1];
-    }));
+    const peak = (f) =>
+      Math.max(
+        ...Array.from({ length: 179 }, (_, i) => {
+          const t = ((i - 89) * Math.PI) / 180; // the plane of incidence, where an isotropic lobe peaks
+          return f(l, [Math.sin(t), 0, Math.cos(t)])[1];
+        }),
+      );
     const want = Math.max(peak(modelBRDF('abc', TRUTH)), peak(modelBRDF('ggx', ggx.params)));
     const shown = Number(/scaled to ([\d.e+-]+) \/sr/.exec(label)?.[1]);
     expect(label).toMatch(/3-D lobe of the measured table's green channel \(solid\) and the GGX fit \(wireframe\)/);
@@ -128,7 +131,10 @@ describe('a synthetic MERL file picked on the BRDF page', () => {
     const ndf = await (await opened).page();
     await ndf.waitForFunction(() => globalThis.__shadingLab?.widgets?.ndf, { timeout: 60_000, polling: 250 });
     const state = await ndf.evaluate(() => globalThis.__shadingLab.widgets.ndf.getState());
-    expect(state.hwhm).toBeCloseTo(ndfHalfWidthDeg((c) => ndfABC(c, TRUTH.a1, TRUTH.a2)), 1); // 4 digits in the URL
+    expect(state.hwhm).toBeCloseTo(
+      ndfHalfWidthDeg((c) => ndfABC(c, TRUTH.a1, TRUTH.a2)),
+      1,
+    ); // 4 digits in the URL
     expect(state.abcA2).toBeCloseTo(TRUTH.a2, 2);
     await ndf.close();
   }, 90_000);

@@ -21,7 +21,12 @@ async function glassColour(page) {
     const c = new OffscreenCanvas(img.width, img.height);
     const ctx = c.getContext('2d');
     ctx.drawImage(img, 0, 0);
-    const d = ctx.getImageData(Math.round(img.width * 0.3), Math.round(img.height * 0.3), Math.round(img.width * 0.4), Math.round(img.height * 0.4)).data;
+    const d = ctx.getImageData(
+      Math.round(img.width * 0.3),
+      Math.round(img.height * 0.3),
+      Math.round(img.width * 0.4),
+      Math.round(img.height * 0.4),
+    ).data;
     const toLinear = (v) => (v <= 0.04045 ? v / 12.92 : ((v + 0.055) / 1.055) ** 2.4);
     const sum = [0, 0, 0];
     for (let i = 0; i < d.length; i += 4) for (let k = 0; k < 3; k++) sum[k] += toLinear(d[i + k] / 255);
@@ -37,7 +42,9 @@ describe('media', () => {
     await setControl(page, 'Depth, log₁₀ metres', 1.3);
     const deep = await glassColour(page);
     const T = waterAbsorptionRgb().map((s) => transmittance(s, 20));
-    console.log(`water: 5 cm glass RGB ${shallow.map((x) => x.toFixed(3))}, 20 m ${deep.map((x) => x.toFixed(3))}; predicted ratios R/B ${(T[0] / T[2]).toFixed(4)}, G/B ${(T[1] / T[2]).toFixed(3)}`);
+    console.log(
+      `water: 5 cm glass RGB ${shallow.map((x) => x.toFixed(3))}, 20 m ${deep.map((x) => x.toFixed(3))}; predicted ratios R/B ${(T[0] / T[2]).toFixed(4)}, G/B ${(T[1] / T[2]).toFixed(3)}`,
+    );
     expect(shallow[0] / shallow[2]).toBeGreaterThan(0.97);
     expect(deep[0] / deep[2]).toBeLessThan(0.02); // predicted 0.0035: the red is gone
     expect(Math.abs(deep[1] / deep[2] - T[1] / T[2])).toBeLessThan(0.03);
@@ -49,14 +56,18 @@ describe('media', () => {
   it('renders the grid and milk progressively, then stops drawing', async () => {
     const page = await open(browser, 'embed.html?w=media&view=grid&samples=16');
     await widget(page, 'media');
-    await page.waitForFunction(() => globalThis.__shadingLab.widgets.media.getProgress().frame >= 16, { timeout: 60_000 });
+    await page.waitForFunction(() => globalThis.__shadingLab.widgets.media.getProgress().frame >= 16, {
+      timeout: 60_000,
+    });
     await settle(page, 500);
     const before = await page.evaluate(() => window.__drawCalls);
     await settle(page, 1500);
     expect(await page.evaluate(() => window.__drawCalls)).toBe(before);
     // milk: high scattering, low absorption: bright and without colour
     await page.evaluate(() => globalThis.__shadingLab.widgets.media.update({ view: 'one', medium: 'milk' }));
-    await page.waitForFunction(() => globalThis.__shadingLab.widgets.media.getProgress().frame >= 16, { timeout: 60_000 });
+    await page.waitForFunction(() => globalThis.__shadingLab.widgets.media.getProgress().frame >= 16, {
+      timeout: 60_000,
+    });
     const milk = await glassColour(page);
     console.log(`milk (16 samples): glass RGB ${milk.map((x) => x.toFixed(3))}`);
     expect(Math.min(...milk)).toBeGreaterThan(0.35);

@@ -1,7 +1,16 @@
 // The microfacet chapters (BRDF, microfacet theory, NDF, visibility) in a real Chromium.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import {
-  distinctColors, getState, launchBrowser, open, redAt, setControl, settle, shot, widget, withPixels,
+  distinctColors,
+  getState,
+  launchBrowser,
+  open,
+  redAt,
+  setControl,
+  settle,
+  shot,
+  widget,
+  withPixels,
 } from './helpers.js';
 import { linearToSrgb } from '../../src/math/color.js';
 import { albedoGGX } from '../../src/math/integrate.js';
@@ -17,7 +26,13 @@ afterAll(async () => {
 });
 
 describe('chapter pages load cleanly', () => {
-  for (const [path, keys] of [['brdf.html', ['lobe']], ['microfacets.html', ['surface', 'energy']], ['ndf.html', ['ndf']], ['visibility.html', ['vis']], ['performance.html', []]]) {
+  for (const [path, keys] of [
+    ['brdf.html', ['lobe']],
+    ['microfacets.html', ['surface', 'energy']],
+    ['ndf.html', ['ndf']],
+    ['visibility.html', ['vis']],
+    ['performance.html', []],
+  ]) {
     it(path, async () => {
       const page = await open(browser, path);
       for (const k of keys) await widget(page, k);
@@ -48,7 +63,7 @@ describe('chapter page state', () => {
     expect(again.errors).toEqual([]);
     await Promise.all([page.close(), again.close()]);
   });
-  it("each widget links the terms it uses to their rows on the parity page", async () => {
+  it('each widget links the terms it uses to their rows on the parity page', async () => {
     const page = await open(browser, 'visibility.html');
     await widget(page, 'vis');
     const hrefs = await page.$$eval('.widget-terms a', (as) => as.map((a) => a.getAttribute('href')));
@@ -56,7 +71,8 @@ describe('chapter page state', () => {
     await page.close();
     const parity = await open(browser, 'parity.html#fn-visibilityKelemen');
     await parity.waitForSelector('#parity-summary', { timeout: 60_000 });
-    for (const href of hrefs.filter((h) => h.includes('#'))) expect(await parity.$(href.slice(href.indexOf('#')))).not.toBeNull();
+    for (const href of hrefs.filter((h) => h.includes('#')))
+      expect(await parity.$(href.slice(href.indexOf('#')))).not.toBeNull();
     await parity.close();
   });
 });
@@ -66,7 +82,11 @@ describe('ndf-explorer', () => {
     const page = await open(browser, 'embed.html?w=ndf-explorer');
     await widget(page, 'ndf-explorer');
     const integrals = await page.evaluate(() => globalThis.__shadingLab.widgets['ndf-explorer'].getIntegrals());
-    console.log(`NDF normalisation: ${Object.entries(integrals).map(([k, v]) => `${k} ${v.toFixed(8)}`).join(', ')}`);
+    console.log(
+      `NDF normalisation: ${Object.entries(integrals)
+        .map(([k, v]) => `${k} ${v.toFixed(8)}`)
+        .join(', ')}`,
+    );
     expect(Object.keys(integrals)).toHaveLength(5);
     for (const v of Object.values(integrals)) expect(Math.abs(v - 1)).toBeLessThan(1e-6);
     const before = await shot(page, '.sphere-grid canvas');
@@ -77,7 +97,9 @@ describe('ndf-explorer', () => {
     const box = await (await page.$('.sphere-grid canvas')).boundingBox();
     await page.mouse.move(box.x + box.width * 0.5, box.y + box.height * 0.5);
     await settle(page, 200);
-    expect(await page.$eval('.widget-ndf-explorer .probe', (el) => el.textContent)).toMatch(/GGX.*n·v1\.0000.*D\(n·h\)/s);
+    expect(await page.$eval('.widget-ndf-explorer .probe', (el) => el.textContent)).toMatch(
+      /GGX.*n·v1\.0000.*D\(n·h\)/s,
+    );
     expect(page.errors).toEqual([]);
     await page.close();
   });
@@ -105,12 +127,17 @@ describe('energy (white furnace)', () => {
     await widget(page, 'energy');
     await settle(page, 1500);
     const albedos = await page.evaluate(() => globalThis.__shadingLab.widgets['energy'].getAlbedos());
-    console.log(`albedo: ${albedos.map((a) => `α ${a.alpha}: E(1) ${a.atNormal.toFixed(4)}, E_avg ${a.average.toFixed(4)}`).join('; ')}`);
+    console.log(
+      `albedo: ${albedos.map((a) => `α ${a.alpha}: E(1) ${a.atNormal.toFixed(4)}, E_avg ${a.average.toFixed(4)}`).join('; ')}`,
+    );
     expect(albedos[1].atNormal).toBeCloseTo(1 - Math.log(2), 6);
     expect(Object.keys(await getState(page, 'energy'))).toEqual(['alphas', 'compensation', 'metal', 'metalAlpha']);
     // read the rendered centres back: cell i of 2 spans half the canvas
     const png = await shot(page, '.sphere-grid canvas');
-    const centres = await redAt(page, png, [[0.25, 0.5], [0.75, 0.5]]);
+    const centres = await redAt(page, png, [
+      [0.25, 0.5],
+      [0.75, 0.5],
+    ]);
     const expected = Math.round(linearToSrgb(1 - Math.log(2)) * 255);
     console.log(`furnace centres (8-bit): α 0.05 → ${centres[0]}, α 1 → ${centres[1]} (expected ${expected})`);
     expect(centres[0]).toBeGreaterThan(250);
@@ -118,23 +145,24 @@ describe('energy (white furnace)', () => {
     expect(page.errors).toEqual([]);
     await page.close();
   });
-  it("the rim of the alpha = 0.5 sphere matches albedoGGX pixel by pixel out to 85° (E 0.872, not 64 samples' 0.959)",
-    async () => {
-      const page = await open(browser, 'embed.html?w=energy&alphas=0.5', { width: 900, height: 900 });
-      await widget(page, 'energy');
-      await settle(page, 1500);
-      const rim = rimAgainstAlbedo(await centreRow(page, await shot(page, '.sphere-grid canvas')), 0.5);
-      const { at85, worst } = rim;
-      console.log(`furnace rim α 0.5 (sphere radius ${rim.radius.toFixed(1)} px): the pixel at n·v ` +
+  it("the rim of the alpha = 0.5 sphere matches albedoGGX pixel by pixel out to 85° (E 0.872, not 64 samples' 0.959)", async () => {
+    const page = await open(browser, 'embed.html?w=energy&alphas=0.5', { width: 900, height: 900 });
+    await widget(page, 'energy');
+    await settle(page, 1500);
+    const rim = rimAgainstAlbedo(await centreRow(page, await shot(page, '.sphere-grid canvas')), 0.5);
+    const { at85, worst } = rim;
+    console.log(
+      `furnace rim α 0.5 (sphere radius ${rim.radius.toFixed(1)} px): the pixel at n·v ` +
         `${at85.nv.toFixed(4)} reads ${at85.got}, albedoGGX gives ${at85.expected.toFixed(1)}; ` +
-        `worst from 70° ${JSON.stringify(worst)}`);
-      expect(Math.acos(rim.at85.nv) / DEG).toBeGreaterThan(84.5);
-      expect(Math.abs(rim.at85.got - rim.at85.expected)).toBeLessThanOrEqual(2);
-      expect(rim.worst.diff).toBeLessThanOrEqual(2.5);
-      expect(rim.at85.got).toBeLessThan(linearToSrgb(0.959) * 255 - 5); // what 64 Hammersley samples gave
-      expect(page.errors).toEqual([]);
-      await page.close();
-    });
+        `worst from 70° ${JSON.stringify(worst)}`,
+    );
+    expect(Math.acos(rim.at85.nv) / DEG).toBeGreaterThan(84.5);
+    expect(Math.abs(rim.at85.got - rim.at85.expected)).toBeLessThanOrEqual(2);
+    expect(rim.worst.diff).toBeLessThanOrEqual(2.5);
+    expect(rim.at85.got).toBeLessThan(linearToSrgb(0.959) * 255 - 5); // what 64 Hammersley samples gave
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
 });
 
 /** The red channel along the middle row of a base64 PNG, and its size. */
@@ -174,7 +202,9 @@ describe('microfacets', () => {
     for (const kind of ['beckmann', 'ggx']) {
       const page = await open(browser, `embed.html?w=microfacets&kind=${kind}&alpha=0.6`);
       await widget(page, 'microfacets');
-      await page.waitForFunction(() => globalThis.__shadingLab.widgets.microfacets.getG1().complete, { timeout: 30_000 });
+      await page.waitForFunction(() => globalThis.__shadingLab.widgets.microfacets.getG1().complete, {
+        timeout: 30_000,
+      });
       const g = await page.evaluate(() => globalThis.__shadingLab.widgets.microfacets.getG1());
       const worst = Math.max(...g.measured.map((m, i) => Math.abs(m - g.smith[i])));
       console.log(`microsurface ${kind} α 0.6: worst |ray-traced G1 − Smith G1| over 0–85° = ${worst.toFixed(4)}`);

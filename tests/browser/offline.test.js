@@ -9,7 +9,14 @@ import { WIDGETS } from '../../src/widgets/registry.js';
 import { ROOT, SUB_PATH, openPage, settle } from './harness.js';
 import { launchBrowser } from './helpers.js';
 
-const TYPES = { '.html': 'text/html', '.js': 'text/javascript', '.css': 'text/css', '.svg': 'image/svg+xml', '.json': 'application/json', '.webmanifest': 'application/manifest+json' };
+const TYPES = {
+  '.html': 'text/html',
+  '.js': 'text/javascript',
+  '.css': 'text/css',
+  '.svg': 'image/svg+xml',
+  '.json': 'application/json',
+  '.webmanifest': 'application/manifest+json',
+};
 
 /** Serves `dir` under SUB_PATH like the harness, with a switch that makes the network fail (connections dropped). */
 function serveSwitchable(dir) {
@@ -21,12 +28,25 @@ function serveSwitchable(dir) {
     if (!path.startsWith(SUB_PATH) || !file.startsWith(dir)) return void res.writeHead(404).end();
     if (path.endsWith('/')) file = join(file, 'index.html');
     try {
-      res.writeHead(200, { 'content-type': TYPES[extname(file)] ?? 'application/octet-stream', 'cache-control': 'no-cache' }).end(readFileSync(file));
+      res
+        .writeHead(200, {
+          'content-type': TYPES[extname(file)] ?? 'application/octet-stream',
+          'cache-control': 'no-cache',
+        })
+        .end(readFileSync(file));
     } catch {
       res.writeHead(404).end();
     }
   });
-  return new Promise((ok) => server.listen(0, '127.0.0.1', () => ok({ state, url: `http://127.0.0.1:${server.address().port}${SUB_PATH}`, close: () => (server.closeAllConnections(), server.close()) })));
+  return new Promise((ok) =>
+    server.listen(0, '127.0.0.1', () =>
+      ok({
+        state,
+        url: `http://127.0.0.1:${server.address().port}${SUB_PATH}`,
+        close: () => (server.closeAllConnections(), server.close()),
+      }),
+    ),
+  );
 }
 
 let browser;
@@ -62,8 +82,13 @@ describe('offline, after one visit', () => {
 
   it('the first visit saves the whole build and says so', async () => {
     const page = await visit('index.html');
-    await page.waitForFunction(() => document.querySelector('.offline-status')?.textContent.includes('saved on this device'), { timeout: 60_000 });
-    await page.waitForFunction(async () => (await navigator.serviceWorker.ready).active.state === 'activated', { timeout: 30_000 });
+    await page.waitForFunction(
+      () => document.querySelector('.offline-status')?.textContent.includes('saved on this device'),
+      { timeout: 60_000 },
+    );
+    await page.waitForFunction(async () => (await navigator.serviceWorker.ready).active.state === 'activated', {
+      timeout: 30_000,
+    });
     expect(page.errors).toEqual([]);
     await page.close();
   });
@@ -89,7 +114,9 @@ describe('offline, after one visit', () => {
     const failed = [];
     for (const name of Object.keys(WIDGETS)) {
       await page.goto(new URL(`embed.html?w=${name}`, site.url).href, { waitUntil: 'load' });
-      const mounted = await page.waitForFunction((n) => globalThis.__shadingLab?.widgets?.[n], { timeout: 60_000 }, name).catch(() => null);
+      const mounted = await page
+        .waitForFunction((n) => globalThis.__shadingLab?.widgets?.[n], { timeout: 60_000 }, name)
+        .catch(() => null);
       const blocked = await page.$$eval('.blocking-message', (m) => m.map((b) => b.textContent).join(' '));
       if (!mounted || blocked) failed.push(`${name}: ${mounted ? blocked : 'not mounted in 60 s'}`);
     }
@@ -103,11 +130,19 @@ describe('offline, after one visit', () => {
     const page = await visit('exercises.html');
     await goOffline(page);
     await page.reload({ waitUntil: 'load' });
-    await page.waitForFunction((n) => document.querySelectorAll('#exercise-list a').length === n, { timeout: 30_000 }, EXERCISES.length);
+    await page.waitForFunction(
+      (n) => document.querySelectorAll('#exercise-list a').length === n,
+      { timeout: 30_000 },
+      EXERCISES.length,
+    );
     const ids = await page.$$eval('#exercise-list a', (as) => as.map((a) => a.getAttribute('href').slice(1)));
     for (const id of ids) {
       await page.$eval(`#exercise-list a[href="#${id}"]`, (a) => a.click());
-      await page.waitForFunction((i) => globalThis.__shadingLab.exercise?.id === i && globalThis.__shadingLab.exercise.ready, { timeout: 30_000 }, id);
+      await page.waitForFunction(
+        (i) => globalThis.__shadingLab.exercise?.id === i && globalThis.__shadingLab.exercise.ready,
+        { timeout: 30_000 },
+        id,
+      );
     }
     expect(page.errors).toEqual([]);
     site.state.online = true;
@@ -117,7 +152,10 @@ describe('offline, after one visit', () => {
   it('a new deploy is fetched into the cache and announced; after Reload the new version runs, offline too', async () => {
     // the deploy: a changed page, and the service worker's manifest with that page's new revision
     const marker = '<meta name="shading-lab-build" content="next" />';
-    writeFileSync(join(dir, 'index.html'), readFileSync(join(dir, 'index.html'), 'utf8').replace('</head>', `${marker}</head>`));
+    writeFileSync(
+      join(dir, 'index.html'),
+      readFileSync(join(dir, 'index.html'), 'utf8').replace('</head>', `${marker}</head>`),
+    );
     const sw = readFileSync(join(dir, 'sw.js'), 'utf8');
     const next = sw.replace(/(url"?:\s*"index\.html",\s*"?revision"?:\s*")[0-9a-f]+"/, '$1next"');
     expect(next).not.toBe(sw);
@@ -125,7 +163,10 @@ describe('offline, after one visit', () => {
 
     const page = await visit('index.html');
     expect(await page.$('meta[name="shading-lab-build"]')).toBeNull(); // the cached version still runs
-    const reload = await page.waitForFunction(() => [...document.querySelectorAll('.offline-status button')].find((b) => b.textContent.includes('Reload')), { timeout: 60_000 });
+    const reload = await page.waitForFunction(
+      () => [...document.querySelectorAll('.offline-status button')].find((b) => b.textContent.includes('Reload')),
+      { timeout: 60_000 },
+    );
     expect(await page.$eval('.offline-status', (s) => s.textContent)).toMatch(/new version/);
     await Promise.all([page.waitForNavigation({ waitUntil: 'load' }), reload.click()]);
     expect(await page.$('meta[name="shading-lab-build"]')).not.toBeNull();

@@ -27,7 +27,10 @@ const ZONES = ZONE_PALETTES.talk.colors.map(hexToRgb);
 
 /** Shares of the pixels nearest each zone colour (within 40 per channel), among all such pixels of a base64 PNG. */
 const zoneShares = (page, png) =>
-  withPixels(page, png, `(image) => {
+  withPixels(
+    page,
+    png,
+    `(image) => {
     const zones = ${JSON.stringify(ZONES)};
     const counts = [0, 0, 0];
     for (let i = 0; i < image.data.length; i += 4) {
@@ -37,7 +40,8 @@ const zoneShares = (page, png) =>
     }
     const total = counts.reduce((a, b) => a + b, 0);
     return counts.map((c) => c / total);
-  }`);
+  }`,
+  );
 
 describe('a printed chapter page', () => {
   it('shows each widget as a still of its state (zone shares of n·v on the orthographic sphere: sin²45°, sin²75° − sin²45°, cos²75°) with its link and QR code, no controls', async () => {
@@ -49,7 +53,9 @@ describe('a printed chapter page', () => {
     writeFileSync(join(dir, 'page.pdf'), pdf);
 
     const widgets = await page.$$eval('.widget', (ws) => ws.map((w) => w.dataset.widget));
-    const stills = await page.$$eval('.widget > .print-still', (fs) => fs.map((f) => ({ img: f.querySelector('img')?.src ?? null, link: f.querySelector('a').href })));
+    const stills = await page.$$eval('.widget > .print-still', (fs) =>
+      fs.map((f) => ({ img: f.querySelector('img')?.src ?? null, link: f.querySelector('a').href })),
+    );
     expect(stills.length).toBe(widgets.length);
     const zones = stills[widgets.indexOf('fresnel-zones')];
     expect(new URL(zones.link).searchParams.get('mode')).toBe('zones-nv');
@@ -57,21 +63,28 @@ describe('a printed chapter page', () => {
     sphereZoneFractions().forEach((f, i) => expect(shares[i]).toBeCloseTo(f, 1)); // ±0.05: the silhouette's edge pixels
 
     // each QR code decodes (jsQR, an independent decoder) to its link
-    const qrs = await page.$$eval('.print-still .print-qr', (cs) => cs.map((c) => {
-      const image = c.getContext('2d').getImageData(0, 0, c.width, c.height);
-      return { width: c.width, height: c.height, data: Array.from(image.data) };
-    }));
-    expect(qrs.map((q) => jsQR(Uint8ClampedArray.from(q.data), q.width, q.height)?.data)).toEqual(stills.map((s) => s.link));
+    const qrs = await page.$$eval('.print-still .print-qr', (cs) =>
+      cs.map((c) => {
+        const image = c.getContext('2d').getImageData(0, 0, c.width, c.height);
+        return { width: c.width, height: c.height, data: Array.from(image.data) };
+      }),
+    );
+    expect(qrs.map((q) => jsQR(Uint8ClampedArray.from(q.data), q.width, q.height)?.data)).toEqual(
+      stills.map((s) => s.link),
+    );
 
     // in print media: the stills show, the controls, share buttons and live views do not
     await page.emulateMediaType('print');
     const shown = (sel) => page.$$eval(sel, (els) => els.some((e) => e.getClientRects().length > 0)); // laid out at all
     expect(await shown('.print-still')).toBe(true);
-    for (const sel of ['.widget-controls', '.lil-gui', '.share-button', '.viewport', '.toolbar']) expect(await shown(sel), sel).toBe(false);
+    for (const sel of ['.widget-controls', '.lil-gui', '.share-button', '.viewport', '.toolbar'])
+      expect(await shown(sel), sel).toBe(false);
 
     // the PDF, rendered: somewhere on its pages are the still's zone colours
     execFileSync('pdftoppm', ['-r', '40', '-png', join(dir, 'page.pdf'), join(dir, 'p')]);
-    const pngs = readdirSync(dir).filter((f) => f.endsWith('.png')).sort();
+    const pngs = readdirSync(dir)
+      .filter((f) => f.endsWith('.png'))
+      .sort();
     expect(pngs.length).toBeGreaterThan(1);
     const printed = [];
     for (const f of pngs) printed.push(await zoneShares(page, readFileSync(join(dir, f)).toString('base64')));

@@ -19,10 +19,16 @@ const SHOTS = [
   ['surfaces-page', 'surfaces.html', { fullPage: true }],
   // tall: a 3-D view out of sight draws nothing; shot once the measured-BRDF widget's five fits are in, from
   // the viewport as it is (capturing beyond it re-lays the page out and the 3-D views come out blank)
-  ['brdf-page', 'brdf.html', {
-    fullPage: true, height: 6000, captureBeyondViewport: false,
-    ready: 'Object.keys(globalThis.__shadingLab.widgets.measured?.getFits() ?? {}).length === 5',
-  }],
+  [
+    'brdf-page',
+    'brdf.html',
+    {
+      fullPage: true,
+      height: 6000,
+      captureBeyondViewport: false,
+      ready: 'Object.keys(globalThis.__shadingLab.widgets.measured?.getFits() ?? {}).length === 5',
+    },
+  ],
   ['brdf-lobe-compare', 'embed.html?w=brdf-lobe&compare=1&cosine=1&lightTheta=60&viewTheta=20'],
   ['brdf-lobe-multiple', 'embed.html?w=brdf-lobe&multiple=1&alpha=1&F=one&lightTheta=30&viewTheta=20'],
   ['microfacets-page', 'microfacets.html', { fullPage: true }],

@@ -25,7 +25,9 @@ describe('Share', () => {
   it('every widget of a chapter has one; from the keyboard it opens a dialog whose QR code decodes to the link of the exact state', async () => {
     const page = await open(browser, 'fresnel.html');
     await widget(page, 'zones');
-    expect(await page.$$eval('.widget', (ws) => ws.every((w) => w.querySelector(':scope > .widget-share .share-button')))).toBe(true);
+    expect(
+      await page.$$eval('.widget', (ws) => ws.every((w) => w.querySelector(':scope > .widget-share .share-button'))),
+    ).toBe(true);
     await setControl(page, 'Mode', 'Zones of l·h', '.widget-fresnel-zones');
     await setControl(page, 'Shape', 'Torus knot', '.widget-fresnel-zones');
     const state = await getState(page, 'zones');
@@ -55,10 +57,11 @@ describe('Share', () => {
 });
 
 describe('touch', () => {
-  const touchPage = (path) => open(browser, path, { width: 800, height: 900 }).then(async (page) => {
-    await page.setViewport({ width: 800, height: 900, hasTouch: true });
-    return page;
-  });
+  const touchPage = (path) =>
+    open(browser, path, { width: 800, height: 900 }).then(async (page) => {
+      await page.setViewport({ width: 800, height: 900, hasTouch: true });
+      return page;
+    });
 
   it('a drag moves the light (right of centre: φ = 0°); a tap at the centre of the orthographic sphere reads n·v = 1', async () => {
     const page = await touchPage('embed.html?w=fresnel-zones');

@@ -10,7 +10,20 @@ afterAll(async () => {
   await browser?.close();
 });
 
-const PAGES = ['index.html', 'media.html', 'surfaces.html', 'brdf.html', 'microfacets.html', 'fresnel.html', 'ndf.html', 'visibility.html', 'diffuse.html', 'rendering.html?lab.refSamples=128&models.refSamples=128', 'performance.html', 'parity.html'];
+const PAGES = [
+  'index.html',
+  'media.html',
+  'surfaces.html',
+  'brdf.html',
+  'microfacets.html',
+  'fresnel.html',
+  'ndf.html',
+  'visibility.html',
+  'diffuse.html',
+  'rendering.html?lab.refSamples=128&models.refSamples=128',
+  'performance.html',
+  'parity.html',
+];
 const draws = (page) => page.evaluate(() => window.__drawCalls);
 
 /** Scroll through the page so every view gets its first frame, then let it settle. */
@@ -23,14 +36,24 @@ async function visitAll(page) {
   await settle(page, 1500);
   // progressive views (the media path tracer, the lab's references) run until their sample count is reached,
   // then stop; they only run in sight, so each unfinished one is brought into view until it is done
-  const unfinished = await page.evaluate(() => Object.entries(globalThis.__shadingLab?.widgets ?? {})
-    .filter(([, w]) => w.getProgress && w.getProgress().frame < w.getProgress().target).map(([key]) => key));
+  const unfinished = await page.evaluate(() =>
+    Object.entries(globalThis.__shadingLab?.widgets ?? {})
+      .filter(([, w]) => w.getProgress && w.getProgress().frame < w.getProgress().target)
+      .map(([key]) => key),
+  );
   for (const key of unfinished) {
-    await page.evaluate((k) => (document.querySelector(`[data-prefix="${k}"]`) ?? document.querySelector('.widget'))?.scrollIntoView(), key);
-    await page.waitForFunction((k) => {
-      const p = globalThis.__shadingLab.widgets[k].getProgress();
-      return p.frame >= p.target;
-    }, { timeout: 120_000, polling: 250 }, key);
+    await page.evaluate(
+      (k) => (document.querySelector(`[data-prefix="${k}"]`) ?? document.querySelector('.widget'))?.scrollIntoView(),
+      key,
+    );
+    await page.waitForFunction(
+      (k) => {
+        const p = globalThis.__shadingLab.widgets[k].getProgress();
+        return p.frame >= p.target;
+      },
+      { timeout: 120_000, polling: 250 },
+      key,
+    );
   }
 }
 

@@ -28,7 +28,8 @@ async function openDeck(path) {
   const page = await openPage(browser, decks.url, path, {
     width: 1200,
     height: 800,
-    beforeLoad: (p) => p.on('console', (m) => WARNING.test(m.text()) && !m.text().includes('GPU stall') && warnings.push(m.text())),
+    beforeLoad: (p) =>
+      p.on('console', (m) => WARNING.test(m.text()) && !m.text().includes('GPU stall') && warnings.push(m.text())),
   });
   page.warnings = warnings;
   return page;
@@ -39,13 +40,18 @@ async function openDeck(path) {
  * in the full suite: the 40-slide test waited out its whole timeout); bounded here, so the caller tries again.
  */
 const within = (promise, what, ms = 10_000) =>
-  Promise.race([promise, new Promise((_, no) => setTimeout(() => no(new Error(`${what}: no answer in ${ms} ms`)), ms))]);
+  Promise.race([
+    promise,
+    new Promise((_, no) => setTimeout(() => no(new Error(`${what}: no answer in ${ms} ms`)), ms)),
+  ]);
 
 /** The frame of the element on the current slide, once its widget is up. */
 async function currentFrame(page, selector = '.present shading-lab-widget') {
   const handle = await page.waitForSelector(`${selector} iframe`, { timeout: 30_000 });
   const frame = await within(handle.contentFrame(), 'contentFrame');
-  await frame.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 1, { timeout: 30_000 });
+  await frame.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 1, {
+    timeout: 30_000,
+  });
   return frame;
 }
 
@@ -54,7 +60,10 @@ async function contextLostSaid(page) {
   for (let tries = 1; ; tries++) {
     try {
       const frame = await currentFrame(page);
-      return await within(frame.evaluate(() => document.body.textContent.includes('context was lost')), 'text');
+      return await within(
+        frame.evaluate(() => document.body.textContent.includes('context was lost')),
+        'text',
+      );
     } catch (e) {
       if (tries === 3) throw e;
     }
@@ -64,7 +73,10 @@ async function contextLostSaid(page) {
 /** The state of the widget in the iframe of `selector` (read inside the cross-origin frame). */
 async function frameState(page, selector) {
   const frame = await currentFrame(page, selector);
-  return within(frame.evaluate(() => Object.values(globalThis.__shadingLab.widgets)[0].getState()), 'getState');
+  return within(
+    frame.evaluate(() => Object.values(globalThis.__shadingLab.widgets)[0].getState()),
+    'getState',
+  );
 }
 
 /** Waits until the element on the current slide reports `expected` (a subset of its state) in its iframe. */
@@ -75,32 +87,40 @@ async function waitForState(page, expected) {
     if (state && keys.every((k) => state[k] === expected[k])) return state;
     await new Promise((r) => setTimeout(r, 250));
   }
-  throw new Error(`the widget never reached ${JSON.stringify(expected)}; it is ${JSON.stringify(await frameState(page))}`);
+  throw new Error(
+    `the widget never reached ${JSON.stringify(expected)}; it is ${JSON.stringify(await frameState(page))}`,
+  );
 }
 
 /** Mean |difference| per channel (0…255) of two base64 PNGs, both drawn at 64 × 64. */
 const meanDifference = (page, a, b) =>
-  page.evaluate(async (a, b) => {
-    const pixels = async (b64) => {
-      const img = new Image();
-      img.src = `data:image/png;base64,${b64}`;
-      await img.decode();
-      const ctx = new OffscreenCanvas(64, 64).getContext('2d');
-      ctx.drawImage(img, 0, 0, 64, 64);
-      return ctx.getImageData(0, 0, 64, 64).data;
-    };
-    const [p, q] = [await pixels(a), await pixels(b)];
-    let sum = 0;
-    for (let i = 0; i < p.length; i += 4) sum += Math.abs(p[i] - q[i]) + Math.abs(p[i + 1] - q[i + 1]) + Math.abs(p[i + 2] - q[i + 2]);
-    return sum / (3 * 64 * 64);
-  }, a, b);
+  page.evaluate(
+    async (a, b) => {
+      const pixels = async (b64) => {
+        const img = new Image();
+        img.src = `data:image/png;base64,${b64}`;
+        await img.decode();
+        const ctx = new OffscreenCanvas(64, 64).getContext('2d');
+        ctx.drawImage(img, 0, 0, 64, 64);
+        return ctx.getImageData(0, 0, 64, 64).data;
+      };
+      const [p, q] = [await pixels(a), await pixels(b)];
+      let sum = 0;
+      for (let i = 0; i < p.length; i += 4)
+        sum += Math.abs(p[i] - q[i]) + Math.abs(p[i + 1] - q[i + 1]) + Math.abs(p[i + 2] - q[i + 2]);
+      return sum / (3 * 64 * 64);
+    },
+    a,
+    b,
+  );
 
 /** The share of a base64 PNG's pixels that differ from its top-left pixel (the background). */
 const coverage = (page, png) =>
   withPixels(page, png, (image) => {
     const d = image.data;
     let n = 0;
-    for (let i = 0; i < d.length; i += 4) n += Math.abs(d[i] - d[0]) + Math.abs(d[i + 1] - d[1]) + Math.abs(d[i + 2] - d[2]) > 24 ? 1 : 0;
+    for (let i = 0; i < d.length; i += 4)
+      n += Math.abs(d[i] - d[0]) + Math.abs(d[i + 1] - d[1]) + Math.abs(d[i + 2] - d[2]) > 24 ? 1 : 0;
     return n / (d.length / 4);
   });
 
@@ -124,7 +144,9 @@ describe('<shading-lab-widget> on another origin', () => {
   it('is one small module without three.js (gzip size printed)', () => {
     const code = readFileSync(join(ROOT, 'dist/shading-lab-widget.js'));
     const gzip = gzipSync(code, { level: 9 }).length;
-    console.log(`dist/shading-lab-widget.js: ${code.length} B, ${gzip} B gzip; dist/shading-lab-reveal.js: ${gzipSync(readFileSync(join(ROOT, 'dist/shading-lab-reveal.js')), { level: 9 }).length} B gzip`);
+    console.log(
+      `dist/shading-lab-widget.js: ${code.length} B, ${gzip} B gzip; dist/shading-lab-reveal.js: ${gzipSync(readFileSync(join(ROOT, 'dist/shading-lab-reveal.js')), { level: 9 }).length} B gzip`,
+    );
     expect(gzip).toBeLessThan(10 * 1024);
     expect(code.toString()).not.toMatch(/\bimport\b|WebGLRenderer|THREE/);
   });
@@ -140,7 +162,9 @@ describe('<shading-lab-widget> on another origin', () => {
 
     // the page's button calls set(); the state and the widget inside the frame follow
     await page.click('#weighted');
-    await page.waitForFunction(() => document.getElementById('now').value === 'mode=zones-lh-weighted', { timeout: 15_000 });
+    await page.waitForFunction(() => document.getElementById('now').value === 'mode=zones-lh-weighted', {
+      timeout: 15_000,
+    });
     expect((await frameState(page, '#zones')).mode).toBe('zones-lh-weighted');
 
     // a bad value keeps the last good one and comes back in errors; a number out of range is clamped
@@ -151,7 +175,12 @@ describe('<shading-lab-widget> on another origin', () => {
     // the user moves the widget: a change event with the new state
     const handle = await page.$('#zones iframe');
     const frame = await handle.contentFrame();
-    const changed = page.evaluate(() => new Promise((ok) => document.getElementById('zones').addEventListener('change', (e) => ok(e.detail), { once: true })));
+    const changed = page.evaluate(
+      () =>
+        new Promise((ok) =>
+          document.getElementById('zones').addEventListener('change', (e) => ok(e.detail), { once: true }),
+        ),
+    );
     await frame.evaluate(() => Object.values(globalThis.__shadingLab.widgets)[0].update({ mode: 'zones-nv' }));
     expect((await changed).state.mode).toBe('zones-nv');
     expect(await page.$eval('#zones', (z) => z.query)).toContain('mode=zones-nv');
@@ -172,7 +201,7 @@ describe('<shading-lab-widget> on another origin', () => {
 describe('reveal.js plugin (reveal.js 6 from node_modules, the app on another origin)', () => {
   it('keyboard through slides and fragments: the widget follows its slide and fragments, back and forth', async () => {
     const page = await openDeck(`/examples/deck/index.html?lab=${lab()}`);
-    await page.waitForFunction(() => document.querySelector(".reveal.ready"), { timeout: 30_000 });
+    await page.waitForFunction(() => document.querySelector('.reveal.ready'), { timeout: 30_000 });
     expect(await page.$$eval('shading-lab-widget', (els) => els.length)).toBe(1); // the next slide's, preloaded
 
     await press(page, 'ArrowRight');
@@ -208,7 +237,7 @@ describe('reveal.js plugin (reveal.js 6 from node_modules, the app on another or
 
   it('a 40-slide deck: at most three live widgets, each current one draws, no context lost', async () => {
     const page = await openDeck(`/long-deck.html?lab=${lab()}`);
-    await page.waitForFunction(() => document.querySelector(".reveal.ready"), { timeout: 30_000 });
+    await page.waitForFunction(() => document.querySelector('.reveal.ready'), { timeout: 30_000 });
     let most = 0;
     for (let i = 0; i < 40; i++) {
       await waitForState(page, { lightTheta: 40 + 3 * i });
@@ -232,7 +261,9 @@ describe('reveal.js plugin (reveal.js 6 from node_modules, the app on another or
     const page = await openDeck(`/examples/deck/index.html?print-pdf&lab=${lab()}`);
     await page.waitForSelector('.reveal[data-shading-lab-printed]', { timeout: 120_000 });
     expect(await page.$$eval('shading-lab-widget', (els) => els.length)).toBe(0); // no live widget left
-    const stills = await page.$$eval('.pdf-page img[src^="data:image/png"]', (imgs) => imgs.map((i) => ({ src: i.src, alt: i.alt })));
+    const stills = await page.$$eval('.pdf-page img[src^="data:image/png"]', (imgs) =>
+      imgs.map((i) => ({ src: i.src, alt: i.alt })),
+    );
     // slides 2 and 4, and slide 3 once per fragment step (none, one, both shown)
     expect(stills.map((s) => s.alt)).toEqual([
       'fresnel-zones: mode=zones-nv',
@@ -243,10 +274,12 @@ describe('reveal.js plugin (reveal.js 6 from node_modules, the app on another or
     ]);
     for (const s of stills) expect(await coverage(page, s.src.split(',')[1]), s.alt).toBeGreaterThan(0.05); // plots are thin lines on white
     expect(new Set(stills.map((s) => s.src)).size).toBe(stills.length); // each state its own picture
-    const inside = await page.$$eval('.pdf-page img', (imgs) => imgs.map((img) => {
-      const [r, p] = [img.getBoundingClientRect(), img.closest('.pdf-page').getBoundingClientRect()];
-      return r.height > 100 && r.top >= p.top && r.bottom <= p.bottom;
-    }));
+    const inside = await page.$$eval('.pdf-page img', (imgs) =>
+      imgs.map((img) => {
+        const [r, p] = [img.getBoundingClientRect(), img.closest('.pdf-page').getBoundingClientRect()];
+        return r.height > 100 && r.top >= p.top && r.bottom <= p.bottom;
+      }),
+    );
     expect(inside).toEqual(stills.map(() => true)); // on its printed page, not cut off below it
     const pdf = await page.pdf({ printBackground: true, preferCSSPageSize: true });
     expect(pdf.length).toBeGreaterThan(10_000);

@@ -40,7 +40,9 @@ describe('subsurface-scale', () => {
     await page.evaluate(() => globalThis.__shadingLab.widgets['subsurface-scale'].update({ sigmaA: 1 }));
     await settle(page, 300);
     const dark = await page.evaluate(() => globalThis.__shadingLab.widgets['subsurface-scale'].getStatistics());
-    console.log(`subsurface: σa 0 → reflectance ${clear.reflectance.toFixed(3)}, mean exit ${clear.mean.toFixed(3)} mm; σa 1/mm → ${dark.reflectance.toFixed(3)}, ${dark.mean.toFixed(3)} mm`);
+    console.log(
+      `subsurface: σa 0 → reflectance ${clear.reflectance.toFixed(3)}, mean exit ${clear.mean.toFixed(3)} mm; σa 1/mm → ${dark.reflectance.toFixed(3)}, ${dark.mean.toFixed(3)} mm`,
+    );
     expect(clear.reflectance).toBeGreaterThan(0.95); // nothing absorbs: (nearly) all of it comes back
     expect(dark.reflectance).toBeLessThan(clear.reflectance / 2);
     expect(dark.mean).toBeLessThan(clear.mean);

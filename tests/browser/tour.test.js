@@ -14,18 +14,27 @@ function trackContexts() {
   const getContext = HTMLCanvasElement.prototype.getContext;
   HTMLCanvasElement.prototype.getContext = function tracked(type, ...rest) {
     const ctx = getContext.call(this, type, ...rest);
-    if (ctx && type.startsWith('webgl') && !window.__glContexts.some((c) => c.ctx === ctx)) window.__glContexts.push({ canvas: this, ctx });
+    if (ctx && type.startsWith('webgl') && !window.__glContexts.some((c) => c.ctx === ctx))
+      window.__glContexts.push({ canvas: this, ctx });
     return ctx;
   };
 }
 
 // a presenter's small window: software WebGL's cost grows with the pixels
 const openTour = (browser, hash = '') =>
-  openPage(browser, baseUrl(), `tour.html${hash}`, { width: 1024, height: 720, beforeLoad: (page) => page.evaluateOnNewDocument(trackContexts) });
+  openPage(browser, baseUrl(), `tour.html${hash}`, {
+    width: 1024,
+    height: 720,
+    beforeLoad: (page) => page.evaluateOnNewDocument(trackContexts),
+  });
 
 /** Waits until step `id` is shown and its widget set up, then for the picture to settle. */
 async function onStep(page, id, ms = 250) {
-  await page.waitForFunction((id) => globalThis.__shadingLab?.tour?.ready && globalThis.__shadingLab.tour.id === id, { timeout: 45_000 }, id);
+  await page.waitForFunction(
+    (id) => globalThis.__shadingLab?.tour?.ready && globalThis.__shadingLab.tour.id === id,
+    { timeout: 45_000 },
+    id,
+  );
   await settle(page, ms);
 }
 
@@ -44,7 +53,13 @@ describe('guided tour', () => {
     expect(steps.length).toBeGreaterThanOrEqual(25);
     const page = await openTour(browser);
     await onStep(page, steps[0].id);
-    const shown = await page.$$eval('.tour-sections li', (lis) => lis.map((li) => ({ key: li.dataset.section, coming: li.classList.contains('coming'), href: li.querySelector('a')?.getAttribute('href') ?? null })));
+    const shown = await page.$$eval('.tour-sections li', (lis) =>
+      lis.map((li) => ({
+        key: li.dataset.section,
+        coming: li.classList.contains('coming'),
+        href: li.querySelector('a')?.getAttribute('href') ?? null,
+      })),
+    );
     expect(shown.map((s) => s.key)).toEqual(sections.map((s) => s.key));
     for (const s of sections) {
       const li = shown.find((x) => x.key === s.key);
@@ -70,12 +85,18 @@ describe('guided tour', () => {
       const where = `step ${k + 1} (${step.id})`;
       expect(page.url(), where).toMatch(new RegExp(`tour\\.html#${step.id}$`));
       const view = await page.evaluate(() => ({
-        widgets: [...document.querySelectorAll('.tour-stage .widget')].map((w) => ({ name: w.dataset.widget, previous: Boolean(w.__previous) })),
+        widgets: [...document.querySelectorAll('.tour-stage .widget')].map((w) => ({
+          name: w.dataset.widget,
+          previous: Boolean(w.__previous),
+        })),
         count: document.querySelector('.tour-count').textContent,
         title: document.querySelector('.tour-title').textContent,
         notices: document.querySelectorAll('.notice').length,
       }));
-      expect(view.widgets.map((w) => w.name), where).toEqual([step.widget]);
+      expect(
+        view.widgets.map((w) => w.name),
+        where,
+      ).toEqual([step.widget]);
       // the same widget going on is kept (and only updated); a different one replaces it
       if (k > 0 && steps[k - 1].widget === step.widget) {
         expect(view.widgets[0].previous, where).toBe(true);
@@ -85,7 +106,8 @@ describe('guided tour', () => {
       expect(view.title).toBe(step.title);
       expect(view.notices, where).toBe(0);
       const state = await getState(page, 'tour');
-      for (const [key, value] of Object.entries(step.state)) expect(sameValue(state[key], value), `${where}: ${key} = ${JSON.stringify(state[key])}`).toBe(true);
+      for (const [key, value] of Object.entries(step.state))
+        expect(sameValue(state[key], value), `${where}: ${key} = ${JSON.stringify(state[key])}`).toBe(true);
       // the picture: the widget's first canvas has drawn something (the F0 tables have none: their rows instead)
       const canvas = await page.$('.tour-stage .widget-view canvas');
       if (canvas) {
@@ -122,7 +144,9 @@ describe('guided tour', () => {
       live: window.__glContexts.filter((c) => !c.ctx.isContextLost()).length,
       mounted: document.querySelectorAll('.tour-stage .viewport canvas').length,
     }));
-    console.log(`tour: ${steps.length} steps walked, ${reused} reused their widget; WebGL contexts created ${contexts.created}, live ${contexts.live}`);
+    console.log(
+      `tour: ${steps.length} steps walked, ${reused} reused their widget; WebGL contexts created ${contexts.created}, live ${contexts.live}`,
+    );
     expect(contexts.created).toBeGreaterThan(contexts.mounted);
     expect(contexts.leaked).toBe(0);
     expect(contexts.live).toBe(contexts.mounted);
@@ -132,7 +156,10 @@ describe('guided tour', () => {
 
   it('opens a step URL directly on that step, with the state it has when walked to', async () => {
     // a step that follows another of the same widget: whatever the walk left behind must not leak into it
-    const k = steps.findIndex((s, i) => i > 0 && steps[i - 1].widget === s.widget && Object.keys(steps[i - 1].state).some((key) => !(key in s.state)));
+    const k = steps.findIndex(
+      (s, i) =>
+        i > 0 && steps[i - 1].widget === s.widget && Object.keys(steps[i - 1].state).some((key) => !(key in s.state)),
+    );
     expect(k).toBeGreaterThan(0);
     const walked = await openTour(browser, `#${steps[k - 1].id}`);
     await onStep(walked, steps[k - 1].id);
@@ -170,7 +197,10 @@ describe('guided tour', () => {
     const before = await getState(page, 'tour');
     // the number box of a lil-gui slider: ↑ changes its value, ←/→ move the caret, Page keys stay with it
     const input = await page.evaluateHandle(() =>
-      [...document.querySelectorAll('.tour-stage .lil-controller')].find((c) => c.querySelector('.lil-name').textContent.startsWith('Light θ')).querySelector('input'));
+      [...document.querySelectorAll('.tour-stage .lil-controller')]
+        .find((c) => c.querySelector('.lil-name').textContent.startsWith('Light θ'))
+        .querySelector('input'),
+    );
     await input.focus();
     for (const key of ['ArrowRight', 'ArrowLeft', 'PageDown', 'Space', 'ArrowUp']) await page.keyboard.press(key);
     await settle(page, 400);
@@ -195,7 +225,11 @@ describe('guided tour', () => {
     const light = steps.find((s) => s.widget === 'f0-tables') ?? steps[0]; // a step without WebGL: quick in software
     const page = await openTour(browser, `#${light.id}`);
     await onStep(page, light.id, 200);
-    const status = () => page.evaluate(() => ({ full: document.fullscreenElement?.id ?? null, message: document.querySelector('.tour-messages').textContent }));
+    const status = () =>
+      page.evaluate(() => ({
+        full: document.fullscreenElement?.id ?? null,
+        message: document.querySelector('.tour-messages').textContent,
+      }));
     await page.keyboard.press('f');
     await settle(page, 400);
     const afterKey = await status();
@@ -213,7 +247,9 @@ describe('guided tour', () => {
     if ((await status()).full) await page.click('.tour-fullscreen');
     await settle(page, 300);
     expect((await status()).full).toBeNull();
-    await page.evaluate(() => void Object.defineProperty(Document.prototype, 'fullscreenEnabled', { get: () => false }));
+    await page.evaluate(
+      () => void Object.defineProperty(Document.prototype, 'fullscreenEnabled', { get: () => false }),
+    );
     await page.click('.tour-fullscreen');
     await settle(page, 200);
     expect((await status()).message).toMatch(/did not allow full screen/);

@@ -32,7 +32,12 @@ describe('split-sum DFG against a quadrature over the light direction', () => {
   const smooth = Object.keys(VISIBILITY_TERMS).filter((V) => V !== 'cookTorrance');
   const pairs = ['ggx', 'beckmann'].flatMap((D) => smooth.map((V) => [D, V]));
   it.each(pairs)('D = %s, V = %s: albedo within 1e-5 at grazing, mid and normal view', (D, V) => {
-    for (const [mu, alpha] of [[1e-3, 0.01], [1e-3, 1], [0.3, 0.3], [1, 0.05]]) {
+    for (const [mu, alpha] of [
+      [1e-3, 0.01],
+      [1e-3, 1],
+      [0.3, 0.3],
+      [1, 0.05],
+    ]) {
       const [s, b] = splitSumOverLight(mu, alpha, D, V);
       const albedo = albedoGGX(mu, alpha, { ndf: D, visibility: V });
       expect(Math.abs(albedo - (s + b)), `mu ${mu}, alpha ${alpha}`).toBeLessThan(1e-5);

@@ -4,14 +4,30 @@ import { albedoGGX, directionFromCos, hemisphereIntegral, reflectanceImportanceG
 import { fresnelSchlick } from '../../src/math/fresnel.js';
 
 const dir = (theta, phi) => [Math.sin(theta) * Math.cos(phi), Math.sin(theta) * Math.sin(phi), Math.cos(theta)];
-const base = { F: 'schlick', D: 'ggx', V: 'smithGGXCorrelated', f0: 0.04, alpha: 0.3, exponent: 40, a1: 20, a2: 2.5, p: 0.64, eta: 1.5, k: 0 };
+const base = {
+  F: 'schlick',
+  D: 'ggx',
+  V: 'smithGGXCorrelated',
+  f0: 0.04,
+  alpha: 0.3,
+  exponent: 40,
+  a1: 20,
+  a2: 2.5,
+  p: 0.64,
+  eta: 1.5,
+  k: 0,
+};
 
 describe('microfacet BRDF', () => {
   it('is reciprocal: f(l, v) = f(v, l) for every term combination', () => {
     for (const D of Object.keys(NDF_TERMS)) {
       for (const V of Object.keys(VISIBILITY_TERMS)) {
         const p = { ...base, D, V };
-        for (const [l, v] of [[dir(0.3, 0), dir(1.1, 2)], [dir(1.4, 1), dir(0.2, -1)], [dir(0.8, 0.5), dir(0.8, 0.5 + Math.PI)]]) {
+        for (const [l, v] of [
+          [dir(0.3, 0), dir(1.1, 2)],
+          [dir(1.4, 1), dir(0.2, -1)],
+          [dir(0.8, 0.5), dir(0.8, 0.5 + Math.PI)],
+        ]) {
           expect(microfacetBRDF(l, v, p)).toBeCloseTo(microfacetBRDF(v, l, p), 10);
         }
       }
@@ -19,7 +35,10 @@ describe('microfacet BRDF', () => {
   });
   it('gives the same value from the cosines alone (as a probe reads them) as from the vectors', async () => {
     const { microfacetBRDFAt, brdfAngles } = await import('../../src/math/brdf.js');
-    for (const [l, v] of [[dir(0.3, 0), dir(1.1, 2)], [dir(1.4, 1), dir(0.2, -1)]]) {
+    for (const [l, v] of [
+      [dir(0.3, 0), dir(1.1, 2)],
+      [dir(1.4, 1), dir(0.2, -1)],
+    ]) {
       const { h, ...cosines } = brdfAngles(l, v);
       expect(microfacetBRDFAt(cosines, base)).toBeCloseTo(microfacetBRDF(l, v, base), 9);
     }
@@ -29,7 +48,15 @@ describe('microfacet BRDF', () => {
     expect(microfacetBRDF([0, 0, 1], [0, 0, -1], base)).toBe(0);
     const grazing = [1, 0, 0];
     for (const p of [base, { ...base, alpha: 1e-4 }, { ...base, alpha: 0 }]) {
-      for (const [l, v] of [[grazing, grazing], [[0, 0, 1], [0, 0, 1]], [grazing, [0, 0, 1]], [dir(1.5707, 0), dir(1.5707, Math.PI)]]) {
+      for (const [l, v] of [
+        [grazing, grazing],
+        [
+          [0, 0, 1],
+          [0, 0, 1],
+        ],
+        [grazing, [0, 0, 1]],
+        [dir(1.5707, 0), dir(1.5707, Math.PI)],
+      ]) {
         const f = brdf(l, v, p);
         expect(Number.isFinite(f) && f >= 0).toBe(true);
       }
@@ -106,14 +133,16 @@ describe('directional albedo (white furnace, F = 1)', () => {
 describe('half/difference angles (Rusinkiewicz 1998)', async () => {
   const { directionsFromHalfDiff, halfDiffAngles } = await import('../../src/math/half-diff.js');
   it('round-trips and gives unit directions whose half vector is at theta_h', () => {
-    for (const th of [0, 0.3, 1.2]) for (const td of [0, 0.4, 1.1]) for (const pd of [0, 1, 2.5]) {
-      const { l, v } = directionsFromHalfDiff(th, td, pd);
-      expect(Math.hypot(...l)).toBeCloseTo(1, 12);
-      expect(Math.hypot(...v)).toBeCloseTo(1, 12);
-      const back = halfDiffAngles(l, v);
-      expect(back.thetaH).toBeCloseTo(th, 9);
-      expect(back.thetaD).toBeCloseTo(td, 9);
-    }
+    for (const th of [0, 0.3, 1.2])
+      for (const td of [0, 0.4, 1.1])
+        for (const pd of [0, 1, 2.5]) {
+          const { l, v } = directionsFromHalfDiff(th, td, pd);
+          expect(Math.hypot(...l)).toBeCloseTo(1, 12);
+          expect(Math.hypot(...v)).toBeCloseTo(1, 12);
+          const back = halfDiffAngles(l, v);
+          expect(back.thetaH).toBeCloseTo(th, 9);
+          expect(back.thetaD).toBeCloseTo(td, 9);
+        }
   });
   it('theta_h = 0, theta_d = θ is the mirror configuration at θ', () => {
     const { l, v } = directionsFromHalfDiff(0, 0.7, 0);
@@ -134,7 +163,10 @@ describe('2-D microsurface (independent of the Smith formulas it is compared wit
     expect(g[g.length / 2]).toBeCloseTo(0.4 / Math.sqrt(3), 2);
   });
   it("ray-traced shadowing matches Smith's G1 within 0.03", () => {
-    for (const [kind, G1] of [['beckmann', smithG1Beckmann], ['ggx', smithG1GGX]]) {
+    for (const [kind, G1] of [
+      ['beckmann', smithG1Beckmann],
+      ['ggx', smithG1GGX],
+    ]) {
       const h = generateProfile(80000, kind, 0.5, 4);
       for (const deg of [30, 60, 75, 85]) {
         const t = (deg * Math.PI) / 180;
@@ -145,10 +177,14 @@ describe('2-D microsurface (independent of the Smith formulas it is compared wit
 });
 
 describe('reflection off a 2-D microsurface', async () => {
-  const { generateProfile, reflectedAngleDensity, reflectedAngles, seededRandom } = await import('../../src/math/microsurface.js');
+  const { generateProfile, reflectedAngleDensity, reflectedAngles, seededRandom } =
+    await import('../../src/math/microsurface.js');
   const { smithG1Beckmann, smithG1GGX } = await import('../../src/math/visibility.js');
   it('ray-traced first reflections follow the microfacet prediction (histogram converges)', () => {
-    for (const [kind, G1] of [['beckmann', smithG1Beckmann], ['ggx', smithG1GGX]]) {
+    for (const [kind, G1] of [
+      ['beckmann', smithG1Beckmann],
+      ['ggx', smithG1GGX],
+    ]) {
       for (const deg of [20, 60]) {
         const ti = (deg * Math.PI) / 180;
         const h = generateProfile(60000, kind, 0.3, 5);
@@ -157,12 +193,14 @@ describe('reflection off a 2-D microsurface', async () => {
         const width = (2 * Math.PI) / bins;
         const hist = (n) => {
           const counts = new Float64Array(bins);
-          for (const t of reflectedAngles(h, ti, n, seededRandom(n))) counts[Math.min(Math.floor((t - lo) / width), bins - 1)] += 1 / n / width;
+          for (const t of reflectedAngles(h, ti, n, seededRandom(n)))
+            counts[Math.min(Math.floor((t - lo) / width), bins - 1)] += 1 / n / width;
           return counts;
         };
         const predicted = Float64Array.from({ length: bins }, (_, b) => {
           let s = 0;
-          for (let k = 0; k < 20; k++) s += reflectedAngleDensity(lo + (b + (k + 0.5) / 20) * width, ti, kind, 0.3, G1) / 20;
+          for (let k = 0; k < 20; k++)
+            s += reflectedAngleDensity(lo + (b + (k + 0.5) / 20) * width, ti, kind, 0.3, G1) / 20;
           return s;
         });
         const l1 = (c) => c.reduce((s, x, b) => s + Math.abs(x - predicted[b]) * width, 0);

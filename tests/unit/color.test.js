@@ -47,5 +47,4 @@ describe('sRGB transfer (IEC 61966-2-1)', () => {
     expect(glass.note).toMatch(/0\.19.*0\.036/);
     expect([...METALS, ...NON_METALS].filter((m) => m.note).map((m) => m.key)).toEqual(['glass-low']);
   });
-
 });

@@ -27,10 +27,11 @@ function worstError(terms, mus = MUS, alphas = ALPHAS) {
 
 // every (D, V) pair the material lab offers
 const LAB_PAIRS = Object.keys(LAB_TERMS.ndf).flatMap((ndf) =>
-  Object.keys(LAB_TERMS.visibility).map((visibility) => ({ ndf, visibility })));
+  Object.keys(LAB_TERMS.visibility).map((visibility) => ({ ndf, visibility })),
+);
 
 describe('shipped DFG tables (dfg-tables.data.js, npm run dfg-tables)', { timeout: 120_000 }, () => {
-  it('hold exactly the lab\'s (D, V) pairs', () => {
+  it("hold exactly the lab's (D, V) pairs", () => {
     expect(Object.keys(DFG_TABLES).sort()).toEqual(LAB_PAIRS.map((t) => `${t.ndf}/${t.visibility}`).sort());
   });
   // every 7th texel (7 is prime to the 72 columns, so every column and row is visited) against the quadrature

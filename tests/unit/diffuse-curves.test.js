@@ -1,14 +1,31 @@
 // The diffuse explorer's plot data against closed forms and an independent quadrature.
 import { describe, expect, it } from 'vitest';
 import {
-  DEG, PROFILE_XS, SWEEP_XS, TRADE_XS, cosPhiDiff, diffuseAlbedo, lightSweep, profile, tradeOff,
+  DEG,
+  PROFILE_XS,
+  SWEEP_XS,
+  TRADE_XS,
+  cosPhiDiff,
+  diffuseAlbedo,
+  lightSweep,
+  profile,
+  tradeOff,
 } from '../../src/widgets/diffuse-explorer/diffuse-curves.js';
 import { diffuseOrenNayar } from '../../src/math/diffuse.js';
 import { fresnelSchlick } from '../../src/math/fresnel.js';
 import { hemisphereIntegral } from '../../src/math/integrate.js';
 
 const ALL = ['lambert', 'fresnelWeighted', 'ashikhminShirley', 'orenNayar', 'orenNayarQualitative'];
-const state = (over = {}) => ({ models: ALL, sigma: 40, cdiff: 0.8, f0: 0.04, lightTheta: 0, lightPhi: 0, viewTheta: 45, ...over });
+const state = (over = {}) => ({
+  models: ALL,
+  sigma: 40,
+  cdiff: 0.8,
+  f0: 0.04,
+  lightTheta: 0,
+  lightPhi: 0,
+  viewTheta: 45,
+  ...over,
+});
 const params = { cdiff: 0.8, f0: 0.04, sigma: 0.6 };
 
 describe('cosPhiDiff', () => {
@@ -19,7 +36,10 @@ describe('cosPhiDiff', () => {
     expect(cosPhiDiff(n, [0, 0.6, 0.8], [0.6, 0, 0.8])).toBeCloseTo(0, 14);
     // a tilted normal: rotate all three about y by 30°, the azimuth does not change
     const r = (a) => [a[0] * Math.cos(0.5) + a[2] * Math.sin(0.5), a[1], -a[0] * Math.sin(0.5) + a[2] * Math.cos(0.5)];
-    const [l, v] = [[0.48, 0.36, 0.8], [0.6, 0, 0.8]];
+    const [l, v] = [
+      [0.48, 0.36, 0.8],
+      [0.6, 0, 0.8],
+    ];
     expect(cosPhiDiff(r(n), r(l), r(v))).toBeCloseTo(cosPhiDiff(n, l, v), 12);
     expect(cosPhiDiff(n, n, [0.6, 0, 0.8])).toBe(1); // l along n: undefined, 1 by convention
   });

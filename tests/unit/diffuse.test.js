@@ -1,6 +1,10 @@
 import { describe, expect, it } from 'vitest';
 import {
-  diffuseAshikhminShirley, diffuseFresnelWeighted, diffuseLambert, diffuseOrenNayar, diffuseOrenNayarQualitative,
+  diffuseAshikhminShirley,
+  diffuseFresnelWeighted,
+  diffuseLambert,
+  diffuseOrenNayar,
+  diffuseOrenNayarQualitative,
 } from '../../src/math/diffuse.js';
 import { projectedNdfIntegral } from './integration-helpers.js';
 
@@ -13,16 +17,27 @@ describe('diffuse terms', () => {
     expect(albedo(() => diffuseLambert(0.7))).toBeCloseTo(0.7, 6);
   });
   it('Oren-Nayar, full and simplified, is Lambert at sigma = 0', () => {
-    for (const [nl, nv, cp] of [[0.3, 0.9, 1], [0.7, 0.2, -0.5], [1, 1, 0]]) {
+    for (const [nl, nv, cp] of [
+      [0.3, 0.9, 1],
+      [0.7, 0.2, -0.5],
+      [1, 1, 0],
+    ]) {
       expect(diffuseOrenNayar(nl, nv, cp, 0, 0.6)).toBeCloseTo(diffuseLambert(0.6), 14);
       expect(diffuseOrenNayarQualitative(nl, nv, cp, 0, 0.6)).toBeCloseTo(diffuseLambert(0.6), 14);
     }
   });
   it('every diffuse term is reciprocal', () => {
-    for (const [nl, nv] of [[0.2, 0.9], [0.5, 0.6], [0.95, 0.05]]) {
+    for (const [nl, nv] of [
+      [0.2, 0.9],
+      [0.5, 0.6],
+      [0.95, 0.05],
+    ]) {
       for (const cp of [-1, 0, 0.7]) {
         expect(diffuseOrenNayar(nl, nv, cp, 0.5, 0.8)).toBeCloseTo(diffuseOrenNayar(nv, nl, cp, 0.5, 0.8), 12);
-        expect(diffuseOrenNayarQualitative(nl, nv, cp, 0.5, 0.8)).toBeCloseTo(diffuseOrenNayarQualitative(nv, nl, cp, 0.5, 0.8), 12);
+        expect(diffuseOrenNayarQualitative(nl, nv, cp, 0.5, 0.8)).toBeCloseTo(
+          diffuseOrenNayarQualitative(nv, nl, cp, 0.5, 0.8),
+          12,
+        );
       }
       expect(diffuseFresnelWeighted(nl, nv, 0.04, 0.8)).toBeCloseTo(diffuseFresnelWeighted(nv, nl, 0.04, 0.8), 14);
       expect(diffuseAshikhminShirley(nl, nv, 0.04, 0.8)).toBeCloseTo(diffuseAshikhminShirley(nv, nl, 0.04, 0.8), 14);
@@ -44,13 +59,17 @@ describe('diffuse terms', () => {
     expect(closed).toBeCloseTo(0.878, 3);
     expect(albedo((c) => diffuseFresnelWeighted(c, 1, f0, 1))).toBeCloseTo(closed, 6);
     // Shirley et al. 1997 scale the same shape by 21/20 and one (1 − F0): head-on they return (1 − F0) c_diff
-    const shirley = albedo((c) => diffuseFresnelWeighted(c, 1, f0, 1) * (21 / 20) / (1 - f0));
+    const shirley = albedo((c) => (diffuseFresnelWeighted(c, 1, f0, 1) * (21 / 20)) / (1 - f0));
     expect(shirley).toBeCloseTo(1 - f0, 6);
   });
   it('the qualitative Oren-Nayar stays close to the full model without its inter-reflection term', () => {
     // the full model adds L2 (light bounced between V-grooves) and C3; for moderate sigma and angles
     // the two agree within 15%
-    for (const [nl, nv, cp] of [[0.8, 0.8, 1], [0.6, 0.9, 0.5], [0.9, 0.5, 1]]) {
+    for (const [nl, nv, cp] of [
+      [0.8, 0.8, 1],
+      [0.6, 0.9, 0.5],
+      [0.9, 0.5, 1],
+    ]) {
       const full = diffuseOrenNayar(nl, nv, cp, 0.3, 0.5);
       const simple = diffuseOrenNayarQualitative(nl, nv, cp, 0.3, 0.5);
       expect(Math.abs(simple / full - 1)).toBeLessThan(0.15);

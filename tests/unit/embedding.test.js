@@ -12,10 +12,26 @@ describe('<shading-lab-widget> iframe URL', () => {
   });
 
   it('names the widget, carries the state and allows the embedding page’s origin (not its own)', () => {
-    const url = frameUrl('https://lab.example.org/course/embed.html', 'fresnel-zones', 'mode=zones-lh&lightTheta=120', 'https://slides.example.com');
+    const url = frameUrl(
+      'https://lab.example.org/course/embed.html',
+      'fresnel-zones',
+      'mode=zones-lh&lightTheta=120',
+      'https://slides.example.com',
+    );
     expect(url.origin + url.pathname).toBe('https://lab.example.org/course/embed.html');
-    expect(Object.fromEntries(url.searchParams)).toEqual({ w: 'fresnel-zones', mode: 'zones-lh', lightTheta: '120', origins: 'https://slides.example.com' });
-    const same = frameUrl('embed.html', 'ndf-explorer', null, 'https://lab.example.org', 'https://lab.example.org/course/deck.html');
+    expect(Object.fromEntries(url.searchParams)).toEqual({
+      w: 'fresnel-zones',
+      mode: 'zones-lh',
+      lightTheta: '120',
+      origins: 'https://slides.example.com',
+    });
+    const same = frameUrl(
+      'embed.html',
+      'ndf-explorer',
+      null,
+      'https://lab.example.org',
+      'https://lab.example.org/course/deck.html',
+    );
     expect(same.href).toBe('https://lab.example.org/course/embed.html?w=ndf-explorer');
     expect(frameUrl('https://lab.example.org/embed.html', 'media', '', 'null').searchParams.has('origins')).toBe(false); // a file:// page
   });
@@ -23,7 +39,10 @@ describe('<shading-lab-widget> iframe URL', () => {
 
 describe('reveal plugin markup', () => {
   it('data-shading-lab="name?query" splits at the first ?', () => {
-    expect(parseWidgetSpec('fresnel-zones?mode=zones-lh&lightTheta=120')).toEqual({ name: 'fresnel-zones', query: 'mode=zones-lh&lightTheta=120' });
+    expect(parseWidgetSpec('fresnel-zones?mode=zones-lh&lightTheta=120')).toEqual({
+      name: 'fresnel-zones',
+      query: 'mode=zones-lh&lightTheta=120',
+    });
     expect(parseWidgetSpec(' ndf-explorer ')).toEqual({ name: 'ndf-explorer', query: '' });
     expect(parseWidgetSpec('media?a=1?b')).toEqual({ name: 'media', query: 'a=1?b' });
   });

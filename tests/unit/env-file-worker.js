@@ -5,7 +5,10 @@ import { parseEnvironmentFile } from '../../src/core/lab/environments.js';
 
 const results = workerData.map(({ name, bytes }) => {
   try {
-    const { data, width, height } = parseEnvironmentFile(name, bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength));
+    const { data, width, height } = parseEnvironmentFile(
+      name,
+      bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength),
+    );
     const mean = data.reduce((s, x, i) => (i % 4 === 3 ? s : s + x), 0) / (width * height * 3);
     return { name, ok: true, width, height, mean };
   } catch (e) {

@@ -22,7 +22,7 @@ describe('environment sampling tables', () => {
     const n = 4;
     for (let j = 0; j < H * n; j++) {
       const v = (j + 0.5) / (H * n);
-      const dOmega = 2 * Math.PI * Math.PI * Math.cos((v - 0.5) * Math.PI) / (W * n * H * n);
+      const dOmega = (2 * Math.PI * Math.PI * Math.cos((v - 0.5) * Math.PI)) / (W * n * H * n);
       for (let i = 0; i < W * n; i++) sum += pdfAt((i + 0.5) / (W * n), v) * dOmega;
     }
     expect(sum).toBeCloseTo(1, 2);
@@ -36,8 +36,9 @@ describe('environment sampling tables', () => {
     let sunTexels = 0;
     let inSun = 0;
     const sunShare = [];
-    for (let j = 0; j < H; j++) for (let i = 0; i < W; i++) if (sky.data[(j * W + i) * 4] > 100) sunShare.push(j * W + i);
-    for (const t of sunShare) sunTexels += tables.pdf[t] * 2 * Math.PI * Math.PI / (W * H);
+    for (let j = 0; j < H; j++)
+      for (let i = 0; i < W; i++) if (sky.data[(j * W + i) * 4] > 100) sunShare.push(j * W + i);
+    for (const t of sunShare) sunTexels += (tables.pdf[t] * 2 * Math.PI * Math.PI) / (W * H);
     const n = 20000;
     for (let s = 0; s < n; s++) {
       const u1 = (s + 0.5) / n;

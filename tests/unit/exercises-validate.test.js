@@ -17,10 +17,17 @@ const errorsOf = async (raw) => (await validateExercise(raw, { schemaOf })).erro
 describe('shipped exercises', () => {
   it('the index loads eleven valid exercises over eight chapters', async () => {
     const index = JSON.parse(readFileSync(join(DIR, 'index.json'), 'utf8'));
-    const { exercises, problems } = await readExerciseSet(index, { source: 'index.json', baseUrl: 'http://x/exercises/index.json', schemaOf, load: fromDisk });
+    const { exercises, problems } = await readExerciseSet(index, {
+      source: 'index.json',
+      baseUrl: 'http://x/exercises/index.json',
+      schemaOf,
+      load: fromDisk,
+    });
     expect(problems).toEqual([]);
     expect(exercises).toHaveLength(11);
-    expect(new Set(exercises.map((e) => e.chapter))).toEqual(new Set(['media', 'surfaces', 'brdf', 'microfacets', 'fresnel', 'ndf', 'visibility', 'diffuse']));
+    expect(new Set(exercises.map((e) => e.chapter))).toEqual(
+      new Set(['media', 'surfaces', 'brdf', 'microfacets', 'fresnel', 'ndf', 'visibility', 'diffuse']),
+    );
   });
 
   it('fills in the defaults of optional params', async () => {
@@ -33,20 +40,56 @@ describe('validator messages', () => {
   const cases = [
     ['not an object', [], ['the exercise is not a JSON object']],
     ['unknown widget', { widget: 'banana', locked: [], state: {} }, ['widget: unknown widget "banana"']],
-    ['unknown state key', { state: { depth: 3 } }, ['state.depth: unknown key for widget "media" (keys: view, medium, distance, samples)']],
-    ['state value out of range', { state: { medium: 'water', view: 'one', distance: 5 } }, ['state.distance: 5 is outside -3…2']],
-    ['state value of the wrong type', { state: { medium: 'water', view: 'one', distance: '1' } }, ['state.distance: "1" is not a number']],
-    ['enum value unknown', { state: { medium: 'beer', view: 'one' } }, ['state.medium: "beer" is not one of water, red, cloudy, milk']],
+    [
+      'unknown state key',
+      { state: { depth: 3 } },
+      ['state.depth: unknown key for widget "media" (keys: view, medium, distance, samples)'],
+    ],
+    [
+      'state value out of range',
+      { state: { medium: 'water', view: 'one', distance: 5 } },
+      ['state.distance: 5 is outside -3…2'],
+    ],
+    [
+      'state value of the wrong type',
+      { state: { medium: 'water', view: 'one', distance: '1' } },
+      ['state.distance: "1" is not a number'],
+    ],
+    [
+      'enum value unknown',
+      { state: { medium: 'beer', view: 'one' } },
+      ['state.medium: "beer" is not one of water, red, cloudy, milk'],
+    ],
     ['locked key unknown', { locked: ['medium', 'colour'] }, ['locked: "colour" is not a state key of widget "media"']],
     ['missing tolerance', { tolerance: undefined }, ['tolerance: missing (a positive number)']],
     ['negative tolerance', { tolerance: -1 }, ['tolerance: -1 is not a positive number']],
-    ['unknown grader', { grader: 'guess' }, ['grader: unknown grader "guess" (graders: transmittance-depth, fresnel-reflectance-angle, sphere-match, smith-g1, albedo-loss, multiple-scattering-gain, light-zone, schlick-worst-angle, ndf-profile, visibility-ratio, lambert-radiance)']],
-    ['unknown param', { params: { channel: 'r', depth: 3 } }, ['params.depth: unknown for grader "transmittance-depth" (params: channel, threshold)']],
+    [
+      'unknown grader',
+      { grader: 'guess' },
+      [
+        'grader: unknown grader "guess" (graders: transmittance-depth, fresnel-reflectance-angle, sphere-match, smith-g1, albedo-loss, multiple-scattering-gain, light-zone, schlick-worst-angle, ndf-profile, visibility-ratio, lambert-radiance)',
+      ],
+    ],
+    [
+      'unknown param',
+      { params: { channel: 'r', depth: 3 } },
+      ['params.depth: unknown for grader "transmittance-depth" (params: channel, threshold)'],
+    ],
     ['param out of range', { params: { threshold: 2 } }, ['params.threshold: 2 is outside 0.000001…0.99']],
-    ['unknown chapter', { chapter: 'optics' }, ['chapter: "optics" is not a chapter (chapters: media, surfaces, brdf, microfacets, fresnel, ndf, visibility, diffuse, rendering, performance)']],
+    [
+      'unknown chapter',
+      { chapter: 'optics' },
+      [
+        'chapter: "optics" is not a chapter (chapters: media, surfaces, brdf, microfacets, fresnel, ndf, visibility, diffuse, rendering, performance)',
+      ],
+    ],
     ['bad id', { id: 'Red Depth' }, ['id: "Red Depth" is not a name of lower-case letters, digits and dashes']],
     ['missing prompt', { prompt: '' }, ['prompt: missing (a non-empty string)']],
-    ['unknown field', { answer: 14 }, ['answer: unknown field (fields: id, chapter, title, prompt, widget, state, locked, grader, params, tolerance)']],
+    [
+      'unknown field',
+      { answer: 14 },
+      ['answer: unknown field (fields: id, chapter, title, prompt, widget, state, locked, grader, params, tolerance)'],
+    ],
   ];
   for (const [what, change, expected] of cases) {
     it(what, async () => {
@@ -58,22 +101,38 @@ describe('validator messages', () => {
 
   it('checks a colour field of the widget', async () => {
     const lambert = JSON.parse(readFileSync(join(DIR, 'lambert-brightness.json'), 'utf8'));
-    expect(await errorsOf({ ...lambert, state: { ...lambert.state, diffuse: 'white' } })).toEqual(['state.diffuse: "white" is not a colour like "#rrggbb"']);
+    expect(await errorsOf({ ...lambert, state: { ...lambert.state, diffuse: 'white' } })).toEqual([
+      'state.diffuse: "white" is not a colour like "#rrggbb"',
+    ]);
   });
 
   it('names what a grader needs of the widget', async () => {
     const sphere = JSON.parse(readFileSync(join(DIR, 'match-sphere.json'), 'utf8'));
-    expect(await errorsOf({ ...sphere, locked: ['D', 'V', 'F', 'alpha'] })).toEqual(['locked: "alpha" is what the student sets for grader "sphere-match"; it must stay free']);
-    expect(await errorsOf({ ...sphere, state: { ...sphere.state, D: 'beckmann' } })).toEqual(['state.D: grader "sphere-match" needs "ggx", got "beckmann"']);
-    expect(await errorsOf({ ...sphere, locked: ['D', 'V'] })).toEqual(['locked: must include "F" (grader "sphere-match" assumes F = "schlick")']);
-    expect(await errorsOf({ ...sphere, params: { f0: 0.5 } })).toEqual(['params.alpha: missing (required by grader "sphere-match")']);
-    expect(await errorsOf({ ...sphere, widget: 'media', state: {}, locked: [] })).toEqual(['widget: grader "sphere-match" reads the "brdf-lobe" widget, not "media"']);
+    expect(await errorsOf({ ...sphere, locked: ['D', 'V', 'F', 'alpha'] })).toEqual([
+      'locked: "alpha" is what the student sets for grader "sphere-match"; it must stay free',
+    ]);
+    expect(await errorsOf({ ...sphere, state: { ...sphere.state, D: 'beckmann' } })).toEqual([
+      'state.D: grader "sphere-match" needs "ggx", got "beckmann"',
+    ]);
+    expect(await errorsOf({ ...sphere, locked: ['D', 'V'] })).toEqual([
+      'locked: must include "F" (grader "sphere-match" assumes F = "schlick")',
+    ]);
+    expect(await errorsOf({ ...sphere, params: { f0: 0.5 } })).toEqual([
+      'params.alpha: missing (required by grader "sphere-match")',
+    ]);
+    expect(await errorsOf({ ...sphere, widget: 'media', state: {}, locked: [] })).toEqual([
+      'widget: grader "sphere-match" reads the "brdf-lobe" widget, not "media"',
+    ]);
     const ndf = JSON.parse(readFileSync(join(DIR, 'which-ndf.json'), 'utf8'));
     const twins = await errorsOf({ ...ndf, state: { hwhm: 5 }, params: { ...ndf.params, hwhm: 5 }, tolerance: 1.3 });
     expect(twins).toHaveLength(2); // each of the pair accepts the other
-    expect(twins[0]).toMatch(/^params: at a half width of 5° Blinn-Phong is within 1\.1\d*× of Beckmann, inside the tolerance 1\.3: two answers would be right$/);
+    expect(twins[0]).toMatch(
+      /^params: at a half width of 5° Blinn-Phong is within 1\.1\d*× of Beckmann, inside the tolerance 1\.3: two answers would be right$/,
+    );
     const schlick = JSON.parse(readFileSync(join(DIR, 'schlick-worst.json'), 'utf8'));
-    expect(await errorsOf({ ...schlick, locked: ['materials'] })).toEqual(['locked: must include "ior" (grader "schlick-worst-angle" takes the question from it)']);
+    expect(await errorsOf({ ...schlick, locked: ['materials'] })).toEqual([
+      'locked: must include "ior" (grader "schlick-worst-angle" takes the question from it)',
+    ]);
   });
 
   it('a set reports bad JSON, missing files and duplicate ids by source, and keeps the good ones', async () => {
@@ -81,8 +140,20 @@ describe('validator messages', () => {
       if (url.endsWith('missing.json')) return { error: 'could not be loaded (HTTP 404)' };
       return fromDisk(url);
     };
-    const index = { exercises: ['water-red-depth.json', 'missing.json', 'water-red-depth.json', { ...good(), id: 'other', widget: 'nope' }] };
-    const { exercises, problems } = await readExerciseSet(index, { source: 'mine.json', baseUrl: 'http://x/mine.json', schemaOf, load });
+    const index = {
+      exercises: [
+        'water-red-depth.json',
+        'missing.json',
+        'water-red-depth.json',
+        { ...good(), id: 'other', widget: 'nope' },
+      ],
+    };
+    const { exercises, problems } = await readExerciseSet(index, {
+      source: 'mine.json',
+      baseUrl: 'http://x/mine.json',
+      schemaOf,
+      load,
+    });
     expect(exercises.map((e) => e.id)).toEqual(['water-red-depth']);
     expect(problems).toEqual([
       { source: 'missing.json', errors: ['missing.json could not be loaded (HTTP 404)'] },

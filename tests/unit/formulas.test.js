@@ -5,9 +5,16 @@ import katex from 'katex';
 import { describe, expect, it } from 'vitest';
 
 const ROOT = join(import.meta.dirname, '../..');
-const decode = (s) => s.replaceAll('&quot;', '"').replaceAll('&lt;', '<').replaceAll('&gt;', '>').replaceAll('&amp;', '&');
-const formulas = readdirSync(ROOT).filter((f) => f.endsWith('.html'))
-  .flatMap((page) => [...readFileSync(join(ROOT, page), 'utf8').matchAll(/data-tex="([^"]*)"/g)].map((m) => ({ page, tex: decode(m[1]) })));
+const decode = (s) =>
+  s.replaceAll('&quot;', '"').replaceAll('&lt;', '<').replaceAll('&gt;', '>').replaceAll('&amp;', '&');
+const formulas = readdirSync(ROOT)
+  .filter((f) => f.endsWith('.html'))
+  .flatMap((page) =>
+    [...readFileSync(join(ROOT, page), 'utf8').matchAll(/data-tex="([^"]*)"/g)].map((m) => ({
+      page,
+      tex: decode(m[1]),
+    })),
+  );
 
 describe('formulas', () => {
   it('there are some', () => expect(formulas.length).toBeGreaterThan(0));
@@ -15,7 +22,9 @@ describe('formulas', () => {
   for (const { page, tex } of formulas) {
     it(`${page}: ${tex.slice(0, 60)}…`, () => {
       const html = katex.renderToString(tex, { output: 'mathml', displayMode: true, throwOnError: true });
-      expect(html).toMatch(/^<span class="katex"><math xmlns="http:\/\/www.w3.org\/1998\/Math\/MathML" display="block">/);
+      expect(html).toMatch(
+        /^<span class="katex"><math xmlns="http:\/\/www.w3.org\/1998\/Math\/MathML" display="block">/,
+      );
       expect(html).not.toMatch(/katex-error|style=/); // MathML only: nothing a strict style policy would block
     });
   }

@@ -1,6 +1,12 @@
 import { describe, expect, it } from 'vitest';
 import {
-  conductorIorFromF0EdgeTint, edgeTintFromConductorIor, f0FromIor, fresnelConductor, fresnelDielectric, fresnelSchlick, iorFromF0,
+  conductorIorFromF0EdgeTint,
+  edgeTintFromConductorIor,
+  f0FromIor,
+  fresnelConductor,
+  fresnelDielectric,
+  fresnelSchlick,
+  iorFromF0,
 } from '../../src/math/fresnel.js';
 import { METALS, NON_METALS, channelIor, fresnelParams } from '../../src/math/materials.js';
 import { MEASURED_NK, measuredRgbNk, nkAtWavelength } from '../../src/math/optical-constants.js';
@@ -20,11 +26,13 @@ function fresnelTextbook(thetaI, eta) {
 
 describe('fresnelDielectric', () => {
   it('is ((eta-1)/(eta+1))^2 at normal incidence', () => {
-    for (const eta of [0.5, 1.33, 1.5, 2.42, 4]) expect(fresnelDielectric(1, eta)).toBeCloseTo(((eta - 1) / (eta + 1)) ** 2, 14);
+    for (const eta of [0.5, 1.33, 1.5, 2.42, 4])
+      expect(fresnelDielectric(1, eta)).toBeCloseTo(((eta - 1) / (eta + 1)) ** 2, 14);
   });
   it('matches the textbook Snell form over all angles', () => {
     for (const eta of [1 / 1.5, 1.33, 1.5, 2.42]) {
-      for (let d = 0; d < 90; d += 0.5) expect(fresnelDielectric(cosDeg(d), eta)).toBeCloseTo(fresnelTextbook((d * Math.PI) / 180, eta), 12);
+      for (let d = 0; d < 90; d += 0.5)
+        expect(fresnelDielectric(cosDeg(d), eta)).toBeCloseTo(fresnelTextbook((d * Math.PI) / 180, eta), 12);
     }
   });
   it('goes to 1 at grazing incidence', () => {
@@ -38,7 +46,7 @@ describe('fresnelDielectric', () => {
   });
   it('stays accurate as eta -> 1 (no cancellation): F ~ ((eta-1)/2)^2 at normal incidence', () => {
     const eta = 1 + 1e-6;
-    expect(fresnelDielectric(1, eta) / (((eta - 1) / (eta + 1)) ** 2)).toBeCloseTo(1, 9);
+    expect(fresnelDielectric(1, eta) / ((eta - 1) / (eta + 1)) ** 2).toBeCloseTo(1, 9);
     expect(fresnelDielectric(0.5, 1)).toBe(0);
   });
   it('has Brewster zero of the p-polarisation: F = rs²/2 at tan(theta) = eta', () => {
@@ -53,11 +61,17 @@ describe('fresnelDielectric', () => {
 describe('fresnelConductor', () => {
   it('reduces to the dielectric when k = 0, total internal reflection included', () => {
     for (const eta of [1 / 1.5, 0.9, 1 + 1e-6, 1.33, 1.5, 2.42, 100]) {
-      for (let d = 0; d <= 90; d += 0.25) expect(fresnelConductor(cosDeg(d), eta, 0)).toBeCloseTo(fresnelDielectric(cosDeg(d), eta), 12);
+      for (let d = 0; d <= 90; d += 0.25)
+        expect(fresnelConductor(cosDeg(d), eta, 0)).toBeCloseTo(fresnelDielectric(cosDeg(d), eta), 12);
     }
   });
   it('equals f0FromIor at normal incidence and 1 at grazing', () => {
-    for (const [n, k] of [[0.27, 2.78], [1.5, 7.7], [0.05, 4.4], [2.9, 3.1]]) {
+    for (const [n, k] of [
+      [0.27, 2.78],
+      [1.5, 7.7],
+      [0.05, 4.4],
+      [2.9, 3.1],
+    ]) {
       expect(fresnelConductor(1, n, k)).toBeCloseTo(f0FromIor(n, k), 14);
       expect(fresnelConductor(0, n, k)).toBeCloseTo(1, 14);
     }
@@ -68,10 +82,21 @@ describe('fresnelConductor', () => {
     const mul = (a, b) => cx(a.re * b.re - a.im * b.im, a.re * b.im + a.im * b.re);
     const add = (a, b) => cx(a.re + b.re, a.im + b.im);
     const sub = (a, b) => cx(a.re - b.re, a.im - b.im);
-    const div = (a, b) => { const d = b.re * b.re + b.im * b.im; return cx((a.re * b.re + a.im * b.im) / d, (a.im * b.re - a.re * b.im) / d); };
-    const sqrt = (a) => { const r = Math.hypot(a.re, a.im); return cx(Math.sqrt((r + a.re) / 2), Math.sign(a.im || 1) * Math.sqrt((r - a.re) / 2)); };
+    const div = (a, b) => {
+      const d = b.re * b.re + b.im * b.im;
+      return cx((a.re * b.re + a.im * b.im) / d, (a.im * b.re - a.re * b.im) / d);
+    };
+    const sqrt = (a) => {
+      const r = Math.hypot(a.re, a.im);
+      return cx(Math.sqrt((r + a.re) / 2), Math.sign(a.im || 1) * Math.sqrt((r - a.re) / 2));
+    };
     const abs2 = (a) => a.re * a.re + a.im * a.im;
-    for (const [n, k] of [[0.27, 2.78], [1.5, 7.7], [2.9, 3.1], [1.2, 0.3]]) {
+    for (const [n, k] of [
+      [0.27, 2.78],
+      [1.5, 7.7],
+      [2.9, 3.1],
+      [1.2, 0.3],
+    ]) {
       const N = cx(n, k);
       for (let d = 0; d < 90; d += 3) {
         const ci = cosDeg(d);
@@ -101,8 +126,18 @@ describe('Schlick', () => {
     // Hoffman models Schlick's error with the term cos(1 - cos)^6, which peaks at cos = 1/7.
     const peaks = [];
     const curves = [
-      ...NON_METALS.map((m) => ({ name: m.name, f: (c) => fresnelDielectric(c, iorFromF0(m.linear[0])), f0: m.linear[0] })),
-      ...METALS.flatMap((m) => measuredRgbNk(m.key).map(([n, k], ch) => ({ name: `${m.name} ${ch}`, f: (c) => fresnelConductor(c, n, k), f0: f0FromIor(n, k) }))),
+      ...NON_METALS.map((m) => ({
+        name: m.name,
+        f: (c) => fresnelDielectric(c, iorFromF0(m.linear[0])),
+        f0: m.linear[0],
+      })),
+      ...METALS.flatMap((m) =>
+        measuredRgbNk(m.key).map(([n, k], ch) => ({
+          name: `${m.name} ${ch}`,
+          f: (c) => fresnelConductor(c, n, k),
+          f0: f0FromIor(n, k),
+        })),
+      ),
     ];
     for (const { name, f, f0 } of curves) {
       let worst = 0;
@@ -157,7 +192,9 @@ describe('measured optical constants', () => {
   });
   it("differ from the talk's F0 by at most ~0.12 (the difference the curves widget shows)", () => {
     for (const m of METALS) {
-      channelIor(m.key, 'measured').forEach(([n, k], i) => expect(Math.abs(f0FromIor(n, k) - m.linear[i])).toBeLessThan(0.12));
+      channelIor(m.key, 'measured').forEach(([n, k], i) =>
+        expect(Math.abs(f0FromIor(n, k) - m.linear[i])).toBeLessThan(0.12),
+      );
     }
   });
 });

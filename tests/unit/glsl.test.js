@@ -5,7 +5,9 @@ import * as math from '../../src/math/index.js';
 
 describe('GLSL assembly', () => {
   it('keeps only the active branch of conditionals', () => {
-    const src = ['#ifdef A', 'a', '#elif defined(B)', 'b', '#else', 'c', '#endif', '#ifndef A', 'notA', '#endif'].join('\n');
+    const src = ['#ifdef A', 'a', '#elif defined(B)', 'b', '#else', 'c', '#endif', '#ifndef A', 'notA', '#endif'].join(
+      '\n',
+    );
     expect(resolveConditionals(src, { A: true }).split('\n')).toEqual(['a']);
     expect(resolveConditionals(src, { B: true }).split('\n')).toEqual(['b', 'notA']);
     expect(resolveConditionals(src, {}).split('\n')).toEqual(['c', 'notA']);
@@ -29,7 +31,16 @@ describe('GLSL assembly', () => {
   });
   it('has a GLSL function of the same name for every JS shading function the shaders mirror', () => {
     const glsl = Object.values(SHADER_CHUNKS).join('\n');
-    const mirrored = ['srgbToLinear', 'linearToSrgb', 'fresnelSchlick', 'fresnelDielectric', 'fresnelConductor', 'ndfGGX', 'visibilitySmithGGXCorrelated', 'fresnelZone'];
+    const mirrored = [
+      'srgbToLinear',
+      'linearToSrgb',
+      'fresnelSchlick',
+      'fresnelDielectric',
+      'fresnelConductor',
+      'ndfGGX',
+      'visibilitySmithGGXCorrelated',
+      'fresnelZone',
+    ];
     for (const name of mirrored) {
       expect(typeof math[name]).toBe('function');
       expect(glsl).toMatch(new RegExp(`\\b(float|vec3) ${name}\\(`));

@@ -4,7 +4,13 @@ import { describe, expect, it, vi } from 'vitest';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { validateExercise } from '../../src/exercises/validate.js';
-import { MAX_SET_BYTES, MAX_SET_ENTRIES, fetchJson, readExerciseFile, readExerciseSet } from '../../src/exercises/load.js';
+import {
+  MAX_SET_BYTES,
+  MAX_SET_ENTRIES,
+  fetchJson,
+  readExerciseFile,
+  readExerciseSet,
+} from '../../src/exercises/load.js';
 import { GRADERS } from '../../src/exercises/graders.js';
 import { isOption } from '../../src/core/state.js';
 import { hashId } from '../../src/core/url-hash.js';
@@ -22,8 +28,14 @@ describe('an exercise file that names inherited properties', () => {
     for (const name of PROTOTYPE_NAMES) {
       const good = file('water-red-depth.json');
       const variants = [
-        { widget: name }, { grader: name }, { chapter: name }, { state: { ...good.state, medium: name } },
-        { params: { channel: name } }, { locked: [name] }, { state: JSON.parse(`{"${name}": 1}`) }, { params: JSON.parse(`{"${name}": 1}`) },
+        { widget: name },
+        { grader: name },
+        { chapter: name },
+        { state: { ...good.state, medium: name } },
+        { params: { channel: name } },
+        { locked: [name] },
+        { state: JSON.parse(`{"${name}": 1}`) },
+        { params: JSON.parse(`{"${name}": 1}`) },
       ];
       for (const change of variants) {
         const errors = await errorsOf({ ...good, ...change });
@@ -38,7 +50,9 @@ describe('an exercise file that names inherited properties', () => {
     const worst = file('schlick-worst.json');
     expect(worst.widget).toBe('fresnel-curves');
     const errors = await errorsOf({ ...worst, state: { ...worst.state, materials: [['water']] } });
-    expect(errors).toEqual(['state.materials: ["water"] not among gold, silver, copper, iron, aluminum, water, glass-low, plastic-high, glass-high, diamond, custom']);
+    expect(errors).toEqual([
+      'state.materials: ["water"] not among gold, silver, copper, iron, aluminum, water, glass-low, plastic-high, glass-high, diamond, custom',
+    ]);
   });
 
   it('a choice answer counts only when it is one of the grader’s own choices (ndf-profile)', () => {
@@ -53,20 +67,29 @@ describe('an exercise set too large to read', () => {
   const respond = (body, headers = {}) => vi.fn(async () => new Response(body, { headers }));
 
   it('is refused from a Content-Length that claims gigabytes, without reading the body', async () => {
-    const body = new ReadableStream({ pull: () => { throw new Error('the body was read'); } });
+    const body = new ReadableStream({
+      pull: () => {
+        throw new Error('the body was read');
+      },
+    });
     vi.stubGlobal('fetch', respond(body, { 'content-length': String(5 * 2 ** 30) }));
-    expect(await fetchJson('https://x.example/set.json')).toEqual({ error: 'is 5,368,709,120 bytes; the limit is 1,048,576 bytes (1 MB)' });
+    expect(await fetchJson('https://x.example/set.json')).toEqual({
+      error: 'is 5,368,709,120 bytes; the limit is 1,048,576 bytes (1 MB)',
+    });
     vi.unstubAllGlobals();
   });
 
   it('is refused when the body runs past 1 MB with no length given (the read stops there)', async () => {
     vi.stubGlobal('fetch', respond(new Blob([big]).stream()));
-    expect(await fetchJson('https://x.example/set.json')).toEqual({ error: 'is larger than the limit of 1,048,576 bytes (1 MB)' });
+    expect(await fetchJson('https://x.example/set.json')).toEqual({
+      error: 'is larger than the limit of 1,048,576 bytes (1 MB)',
+    });
     vi.unstubAllGlobals();
   });
 
   it('a dropped file over the limit is refused by its size; an empty or truncated one is not valid JSON', async () => {
-    const refuse = async (name, bytes) => (await readExerciseFile(new File([bytes], name), { schemaOf })).problems[0].errors[0];
+    const refuse = async (name, bytes) =>
+      (await readExerciseFile(new File([bytes], name), { schemaOf })).problems[0].errors[0];
     expect(await refuse('big.json', big)).toBe('big.json is 1,048,577 bytes; the limit is 1,048,576 bytes (1 MB)');
     expect(await refuse('empty.json', '')).toMatch(/^empty\.json is not valid JSON/);
     const text = readFileSync(join(DIR, 'red-zone.json'), 'utf8');
@@ -75,9 +98,17 @@ describe('an exercise set too large to read', () => {
   });
 
   it(`a set listing more than ${MAX_SET_ENTRIES} exercises is refused as a whole`, async () => {
-    const { exercises, problems } = await readExerciseSet(Array(MAX_SET_ENTRIES + 1).fill({}), { source: 'many.json', schemaOf });
+    const { exercises, problems } = await readExerciseSet(Array(MAX_SET_ENTRIES + 1).fill({}), {
+      source: 'many.json',
+      schemaOf,
+    });
     expect(exercises).toEqual([]);
-    expect(problems).toEqual([{ source: 'many.json', errors: [`many.json lists ${MAX_SET_ENTRIES + 1} exercises; a set holds at most ${MAX_SET_ENTRIES}`] }]);
+    expect(problems).toEqual([
+      {
+        source: 'many.json',
+        errors: [`many.json lists ${MAX_SET_ENTRIES + 1} exercises; a set holds at most ${MAX_SET_ENTRIES}`],
+      },
+    ]);
   });
 });
 

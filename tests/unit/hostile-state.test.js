@@ -6,11 +6,25 @@ import { coerceState, defaultState } from '../../src/core/state.js';
 import { checkIncomingState, parseMessage } from '../../src/core/embed-protocol.js';
 import { WIDGETS } from '../../src/widgets/registry.js';
 import {
-  NUMBERS, NUMBER_TEXTS, PROTOTYPE_NAMES, hostilePartial, isClean, prototypeNames, seededRandom, stateProblems,
+  NUMBERS,
+  NUMBER_TEXTS,
+  PROTOTYPE_NAMES,
+  hostilePartial,
+  isClean,
+  prototypeNames,
+  seededRandom,
+  stateProblems,
 } from '../hostile-values.js';
 
-const schemas = Object.fromEntries(await Promise.all(Object.entries(WIDGETS).map(async ([name, w]) => [name, (await w.load()).widget.schema])));
-const fieldsOf = (type) => Object.entries(schemas).flatMap(([w, s]) => Object.entries(s).filter(([, f]) => f.type === type).map(([k, f]) => [w, k, f]));
+const schemas = Object.fromEntries(
+  await Promise.all(Object.entries(WIDGETS).map(async ([name, w]) => [name, (await w.load()).widget.schema])),
+);
+const fieldsOf = (type) =>
+  Object.entries(schemas).flatMap(([w, s]) =>
+    Object.entries(s)
+      .filter(([, f]) => f.type === type)
+      .map(([k, f]) => [w, k, f]),
+  );
 
 describe('an enum or list value naming an inherited property is refused (the brdf-lobe, visibility and zones crashes)', () => {
   it('every enum field of every widget keeps its value for __proto__, constructor, toString, … and says so', () => {
@@ -55,7 +69,10 @@ describe('a number that is not a plain decimal is refused, whether text (URL) or
   it('decimals are taken as written (ECMAScript Number of the text), clamped to the range, and −0 is stored as 0', () => {
     expect(coerceState(schema, { a: ' .5 ' }).state.a).toBe(0.5);
     expect(coerceState(schema, { a: '-1e-3' }).state.a).toBe(-0.001);
-    expect(coerceState(schema, { a: '+7' })).toEqual({ state: { a: 1 }, notices: ['A: 7 is outside -1…1; clamped to 1.'] });
+    expect(coerceState(schema, { a: '+7' })).toEqual({
+      state: { a: 1 },
+      notices: ['A: 7 is outside -1…1; clamped to 1.'],
+    });
     expect(Object.is(coerceState(schema, { a: '-0' }).state.a, 0)).toBe(true);
     expect(Object.is(coerceState(schema, { a: -0 }).state.a, 0)).toBe(true);
   });
@@ -69,11 +86,15 @@ describe('a number that is not a plain decimal is refused, whether text (URL) or
 describe('a message whose state carries a prototype key (as JSON.parse makes it)', () => {
   it('is reported as an unknown setting and changes neither the state nor Object.prototype', () => {
     const before = prototypeNames();
-    const msg = parseMessage(JSON.parse('{"type":"shading-lab:set","state":{"__proto__":{"polluted":1},"mode":"zones-lh"}}'));
+    const msg = parseMessage(
+      JSON.parse('{"type":"shading-lab:set","state":{"__proto__":{"polluted":1},"mode":"zones-lh"}}'),
+    );
     const schema = schemas['fresnel-zones'];
     const { state } = coerceState(schema, msg.state);
     expect(state.mode).toBe('zones-lh');
-    expect(checkIncomingState(schema, msg.state, defaultState(schema)).unknown[0]).toMatch(/“__proto__” is not a setting/);
+    expect(checkIncomingState(schema, msg.state, defaultState(schema)).unknown[0]).toMatch(
+      /“__proto__” is not a setting/,
+    );
     expect({}.polluted).toBeUndefined();
     expect(prototypeNames()).toBe(before);
   });
@@ -91,7 +112,9 @@ describe('seeded fuzz of the coercion over every registered widget', () => {
         const partial = hostilePartial(schema, random, i % 2 === 0);
         const next = coerceState(schema, partial, state);
         tried++;
-        expect(stateProblems(schema, next.state), `${widget} after ${JSON.stringify(partial).slice(0, 200)}`).toEqual([]);
+        expect(stateProblems(schema, next.state), `${widget} after ${JSON.stringify(partial).slice(0, 200)}`).toEqual(
+          [],
+        );
         for (const [key, raw] of Object.entries(partial)) {
           if (!Object.hasOwn(schema, key)) continue;
           const label = schema[key].label ?? key;
@@ -104,7 +127,9 @@ describe('seeded fuzz of the coercion over every registered widget', () => {
     }
     expect(prototypeNames()).toBe(before);
     expect({}.pwned).toBeUndefined();
-    console.log(`coercion fuzz: ${Object.keys(schemas).length} widgets, ${tried} partial states, ${refused} refusals reported`);
+    console.log(
+      `coercion fuzz: ${Object.keys(schemas).length} widgets, ${tried} partial states, ${refused} refusals reported`,
+    );
     expect(refused).toBeGreaterThan(tried / 2);
   });
 
@@ -112,7 +137,9 @@ describe('seeded fuzz of the coercion over every registered widget', () => {
     for (const [widget, key, f] of fieldsOf('number')) {
       for (const x of NUMBERS) {
         const v = coerceState(schemas[widget], { [key]: x }).state[key];
-        expect(Number.isFinite(v) && v >= f.min && v <= f.max && !Object.is(v, -0), `${widget}.${key} ← ${x}`).toBe(true);
+        expect(Number.isFinite(v) && v >= f.min && v <= f.max && !Object.is(v, -0), `${widget}.${key} ← ${x}`).toBe(
+          true,
+        );
       }
     }
   });

@@ -46,12 +46,18 @@ function gradedCuts(lo, hi, at, finest, longest) {
  */
 export function albedoOverLight(f, thetaV, width, longest = Math.PI / 8) {
   const finest = width / 20;
-  return 2 * piecewiseGauss((theta) => {
-    const st = Math.sin(theta);
-    const ct = Math.cos(theta);
-    const phiCuts = gradedCuts(0, Math.PI, Math.PI, Math.min(finest / Math.max(st, 1e-12), longest), longest);
-    return st * ct * piecewiseGauss((phi) => f([st * Math.cos(phi), st * Math.sin(phi), ct]), phiCuts);
-  }, gradedCuts(0, Math.PI / 2, thetaV, finest, longest));
+  return (
+    2 *
+    piecewiseGauss(
+      (theta) => {
+        const st = Math.sin(theta);
+        const ct = Math.cos(theta);
+        const phiCuts = gradedCuts(0, Math.PI, Math.PI, Math.min(finest / Math.max(st, 1e-12), longest), longest);
+        return st * ct * piecewiseGauss((phi) => f([st * Math.cos(phi), st * Math.sin(phi), ct]), phiCuts);
+      },
+      gradedCuts(0, Math.PI / 2, thetaV, finest, longest),
+    )
+  );
 }
 
 /** ∫_a^b g(x) dx by a Gauss–Legendre rule ({ x, w } of quadrature.js). */

@@ -13,21 +13,37 @@ const env = { intensity: 1 };
 
 describe('material lab approximations', () => {
   it('with a measured table: no DFG table or prefiltered map is read, and every method without a form for it says so', () => {
-    const measured = (lights, methods) => ({ ...scene({}, lights, methods), measured: 'gold.binary', material: { alpha: 0.2 } });
+    const measured = (lights, methods) => ({
+      ...scene({}, lights, methods),
+      measured: 'gold.binary',
+      material: { alpha: 0.2 },
+    });
     expect(approximationInputs(measured({ env, ambient: [1, 1, 1] }, {}))).toEqual({ dfg: null, prefilter: null });
     for (const method of ['split-sum', 'mirror', 'pmrem']) {
       const notes = approximationNotes(measured({ env }, { env: method }));
       expect(notes[0]).toMatch(/^Measured BRDF \(gold\.binary\): the reference integrates the table itself.*α 0\.200/);
-      expect(notes[1]).toMatch(/has no form for a table .* left out of the approximation: choose importance sampling\.$/);
+      expect(notes[1]).toMatch(
+        /has no form for a table .* left out of the approximation: choose importance sampling\.$/,
+      );
     }
-    expect(approximationNotes(measured({ env }, { env: 'importance' }))[1]).toMatch(/^Importance sampling: N directions from the fitted GGX lobe/);
-    expect(approximationNotes(measured({ ambient: [1, 1, 1] }, {})).join(' ')).toMatch(/Ambient: .* no form for a measured table/);
+    expect(approximationNotes(measured({ env }, { env: 'importance' }))[1]).toMatch(
+      /^Importance sampling: N directions from the fitted GGX lobe/,
+    );
+    expect(approximationNotes(measured({ ambient: [1, 1, 1] }, {})).join(' ')).toMatch(
+      /Ambient: .* no form for a measured table/,
+    );
   });
 
   it('read the DFG table of the chosen D and V, and the map prefiltered with the chosen D, only where used', () => {
     const terms = { D: 'beckmann', V: 'kelemen' };
-    expect(approximationInputs(scene(terms, { env }))).toEqual({ dfg: { ndf: 'beckmann', visibility: 'kelemen' }, prefilter: 'beckmann' });
-    expect(approximationInputs(scene(terms, { ambient: [1, 1, 1] }))).toEqual({ dfg: { ndf: 'beckmann', visibility: 'kelemen' }, prefilter: null });
+    expect(approximationInputs(scene(terms, { env }))).toEqual({
+      dfg: { ndf: 'beckmann', visibility: 'kelemen' },
+      prefilter: 'beckmann',
+    });
+    expect(approximationInputs(scene(terms, { ambient: [1, 1, 1] }))).toEqual({
+      dfg: { ndf: 'beckmann', visibility: 'kelemen' },
+      prefilter: null,
+    });
     for (const method of ['mirror', 'importance', 'pmrem']) {
       expect(approximationInputs(scene(terms, { env }, { env: method }))).toEqual({ dfg: null, prefilter: null });
     }
@@ -35,9 +51,15 @@ describe('material lab approximations', () => {
 
   it('say, for every diffuse term but Lambert, that the mirror, the split sum and ambient light use Lambert in its place', () => {
     for (const diffuse of Object.keys(LAB_TERMS.diffuse).filter((k) => k !== 'lambert')) {
-      for (const [lights, methods] of [[{ env }, { env: 'split-sum' }], [{ env }, { env: 'mirror' }], [{ ambient: [1, 1, 1] }, {}]]) {
+      for (const [lights, methods] of [
+        [{ env }, { env: 'split-sum' }],
+        [{ env }, { env: 'mirror' }],
+        [{ ambient: [1, 1, 1] }, {}],
+      ]) {
         const notes = approximationNotes(scene({ diffuse }, lights, methods)).join(' ');
-        expect(notes).toContain(`form for ${LAB_TERMS.diffuse[diffuse]}, so ${LAB_TERMS.diffuse[diffuse]} is approximated by Lambert`);
+        expect(notes).toContain(
+          `form for ${LAB_TERMS.diffuse[diffuse]}, so ${LAB_TERMS.diffuse[diffuse]} is approximated by Lambert`,
+        );
       }
       // importance sampling evaluates the chosen term; with the diffuse layer off there is nothing to say
       expect(approximationNotes(scene({ diffuse }, { env }, { env: 'importance' })).join(' ')).not.toContain('Lambert');
@@ -65,12 +87,14 @@ describe('the sky environment', () => {
 });
 
 describe('material lab: multiple-scattering compensation notes', () => {
-  it('say nothing without compensation; name the method, the split sum\'s irradiance form, the mirror\'s lack of one, and foreign D/V', () => {
+  it("say nothing without compensation; name the method, the split sum's irradiance form, the mirror's lack of one, and foreign D/V", () => {
     expect(approximationNotes(scene({ compensation: 'none' }, { env })).join(' ')).not.toContain('Multiple scattering');
     const kc = approximationNotes(scene({ compensation: 'kullaConty' }, { env })).join(' ');
     expect(kc).toContain('Kulla & Conty’s lobe');
     expect(kc).toContain('multiplies the irradiance');
-    const mirror = approximationNotes(scene({ compensation: 'turquin', D: 'beckmann' }, { env }, { env: 'mirror' })).join(' ');
+    const mirror = approximationNotes(
+      scene({ compensation: 'turquin', D: 'beckmann' }, { env }, { env: 'mirror' }),
+    ).join(' ');
     expect(mirror).toContain('The mirror method has no form for it');
     expect(mirror).toContain('stand in for Beckmann');
   });

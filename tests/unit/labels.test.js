@@ -30,7 +30,7 @@ describe('fitted (n, k) flag of the Fresnel curves', () => {
 
 describe('Oren–Nayar σ extrapolation label', () => {
   it('rests on 4.6% of a Gaussian of tilts with σ = 45° lying past 90° (2σ, erfc(√2))', () => {
-    expect(erfc(((90 / SIGMA_MODELLED_DEG) / Math.SQRT2))).toBeCloseTo(0.0455, 4);
+    expect(erfc(90 / SIGMA_MODELLED_DEG / Math.SQRT2)).toBeCloseTo(0.0455, 4);
   });
   it('sigmaText says "extrapolated" above 45° and not at 45°', () => {
     expect(sigmaText(46)).toContain('extrapolated');

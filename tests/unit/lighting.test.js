@@ -2,7 +2,13 @@
 // densities, and the sphere light (its c_light and its representative point) against quadrature.
 import { describe, expect, it } from 'vitest';
 import { microfacetBRDF } from '../../src/math/brdf.js';
-import { dfgSplitSum, directionFromCos, hemisphereIntegral, sampleCone, sampleCosine } from '../../src/math/integrate.js';
+import {
+  dfgSplitSum,
+  directionFromCos,
+  hemisphereIntegral,
+  sampleCone,
+  sampleCosine,
+} from '../../src/math/integrate.js';
 import { sphereLightCLight, sphereLightNormalization, sphereLightRepresentativeDir } from '../../src/math/lighting.js';
 import { diffuseLambert } from '../../src/math/diffuse.js';
 
@@ -11,7 +17,12 @@ const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 
 describe('split-sum DFG term', () => {
   // independent: the midpoint rule over the hemisphere of the whole BRDF, once with F0 = 0 and once with F0 = 1
-  it.each([[0.9, 0.3], [0.5, 0.5], [0.2, 0.8], [1, 1]])('at mu = %f, alpha = %f matches ∫ f (n·l) with F0 = 0 and 1', (mu, alpha) => {
+  it.each([
+    [0.9, 0.3],
+    [0.5, 0.5],
+    [0.2, 0.8],
+    [1, 1],
+  ])('at mu = %f, alpha = %f matches ∫ f (n·l) with F0 = 0 and 1', (mu, alpha) => {
     const v = directionFromCos(mu);
     const [scale, bias] = dfgSplitSum(mu, alpha);
     const withF0 = (f0) => hemisphereIntegral((l) => microfacetBRDF(l, v, params(f0, alpha)), 200);
@@ -36,7 +47,12 @@ describe('samplers', () => {
   });
   it('cone sampling is uniform in solid angle: directions stay in the cone and the mean cosine is (1 + cosMax)/2', () => {
     const cosMax = Math.cos(0.3);
-    expect(mean((u1, u2) => sampleCone(u1, u2, cosMax), (l) => l[2])).toBeCloseTo((1 + cosMax) / 2, 6);
+    expect(
+      mean(
+        (u1, u2) => sampleCone(u1, u2, cosMax),
+        (l) => l[2],
+      ),
+    ).toBeCloseTo((1 + cosMax) / 2, 6);
     expect(sampleCone(1, 0.3, cosMax)[2]).toBeCloseTo(cosMax, 12);
     expect(Math.hypot(...sampleCone(0.4, 0.3, cosMax))).toBeCloseTo(1, 12);
   });

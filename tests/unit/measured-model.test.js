@@ -34,7 +34,11 @@ describe('the measured-BRDF widget model', () => {
 
   it('the 3-D lobe reads the green channel with l at -θ in the plane, and its scale is the largest value shown', () => {
     const f = modelBRDF('ggx', EXAMPLES.ggx.params);
-    const dirs = [[0, 0, 1], [Math.sin(30 * DEG), 0, Math.cos(30 * DEG)], [0, Math.sin(60 * DEG), Math.cos(60 * DEG)]];
+    const dirs = [
+      [0, 0, 1],
+      [Math.sin(30 * DEG), 0, Math.cos(30 * DEG)],
+      [0, Math.sin(60 * DEG), Math.cos(60 * DEG)],
+    ];
     const spec = lobe3dSpec(f, null, 30, dirs);
     const l = [-Math.sin(30 * DEG), 0, Math.cos(30 * DEG)];
     dirs.forEach((v) => expect(spec.fA(v)).toBe(f(l, v)[1]));
@@ -76,8 +80,10 @@ describe('the measured-BRDF widget model', () => {
       if (THETA_H_DEG[i] < 89) expect(Math.abs(x - want)).toBeLessThanOrEqual(want > 1e-5 ? 5e-3 * want : 1e-5);
     });
     // and ndf-explorer's state takes it as it is (no notice)
-    const { state: taken, notices } = coerceState(ndfSchema, Object.fromEntries(
-      Object.entries(state).map(([k, v]) => [k, String(v)]))); // as the URL carries it
+    const { state: taken, notices } = coerceState(
+      ndfSchema,
+      Object.fromEntries(Object.entries(state).map(([k, v]) => [k, String(v)])),
+    ); // as the URL carries it
     expect(notices).toEqual([]);
     expect(taken.measured).toEqual(state.measured);
   });

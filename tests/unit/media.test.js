@@ -1,6 +1,13 @@
 import { describe, expect, it } from 'vitest';
 import {
-  WHOLE_MILK, absorptionFromK, lambertianEntryAngle2D, meanFreePath, opticalDepth, randomWalk2D, scatteringAlbedo, transmittance,
+  WHOLE_MILK,
+  absorptionFromK,
+  lambertianEntryAngle2D,
+  meanFreePath,
+  opticalDepth,
+  randomWalk2D,
+  scatteringAlbedo,
+  transmittance,
   waterAbsorptionRgb,
 } from '../../src/math/media.js';
 import { seededRandom } from '../../src/math/microsurface.js';
@@ -35,7 +42,8 @@ describe('random walk in a 2-D slab', () => {
       const rand = seededRandom(42);
       let sum = 0;
       const n = 40000;
-      for (let i = 0; i < n; i++) sum += randomWalk2D({ sigmaS, thickness: d, entryAngle: lambertianEntryAngle2D(rand), rand }).path;
+      for (let i = 0; i < n; i++)
+        sum += randomWalk2D({ sigmaS, thickness: d, entryAngle: lambertianEntryAngle2D(rand), rand }).path;
       expect(Math.abs(sum / n / ((Math.PI * d) / 2) - 1)).toBeLessThan(0.015);
     }
   });

@@ -1,7 +1,14 @@
 import { describe, expect, it } from 'vitest';
 import {
-  abcNormalization, beckmannAlphaFromBlinnPhongExponent, blinnPhongExponentFromBeckmannAlpha, ndfABC, ndfBeckmann, ndfBlinnPhong,
-  ndfBlinnPhongFromSin2, ndfGGX, ndfSGD,
+  abcNormalization,
+  beckmannAlphaFromBlinnPhongExponent,
+  blinnPhongExponentFromBeckmannAlpha,
+  ndfABC,
+  ndfBeckmann,
+  ndfBlinnPhong,
+  ndfBlinnPhongFromSin2,
+  ndfGGX,
+  ndfSGD,
 } from '../../src/math/ndf.js';
 import { integrate } from '../../src/math/quadrature.js';
 import { matchNdfWidths, ndfHalfWidthDeg } from '../../src/math/ndf-width.js';
@@ -15,10 +22,31 @@ const alphas = [1e-3, 0.01, 0.05, 0.1, 0.3, 0.6, 1];
 
 describe('every NDF is a normalised density: ∫ D (n·m) dω = 1', () => {
   const cases = [
-    ...[0.02, 0.05, 0.1, 0.3, 0.6, 1].flatMap((a) => [[`GGX α=${a}`, (c) => ndfGGX(c, a)], [`Beckmann α=${a}`, (c) => ndfBeckmann(c, a)]]),
+    ...[0.02, 0.05, 0.1, 0.3, 0.6, 1].flatMap((a) => [
+      [`GGX α=${a}`, (c) => ndfGGX(c, a)],
+      [`Beckmann α=${a}`, (c) => ndfBeckmann(c, a)],
+    ]),
     ...[0, 1, 10, 100, 1e4, 1e6].map((p) => [`Blinn-Phong p=${p}`, (c) => ndfBlinnPhong(c, p)]),
-    ...[[0.01, 1], [0.5, 20], [1, 1], [1, 2], [10, 2.5], [100, 1.5], [1e4, 3], [50, 0.5], [5, 10]].map(([a1, a2]) => [`ABC ${a1},${a2}`, (c) => ndfABC(c, a1, a2)]),
-    ...[[0.01, 0.5], [0.05, 0.64], [0.1, 1], [0.3, 1.5], [1, 0], [2, 1.9], [0.5, 1.9]].map(([a, p]) => [`SGD ${a},${p}`, (c) => ndfSGD(c, a, p)]),
+    ...[
+      [0.01, 1],
+      [0.5, 20],
+      [1, 1],
+      [1, 2],
+      [10, 2.5],
+      [100, 1.5],
+      [1e4, 3],
+      [50, 0.5],
+      [5, 10],
+    ].map(([a1, a2]) => [`ABC ${a1},${a2}`, (c) => ndfABC(c, a1, a2)]),
+    ...[
+      [0.01, 0.5],
+      [0.05, 0.64],
+      [0.1, 1],
+      [0.3, 1.5],
+      [1, 0],
+      [2, 1.9],
+      [0.5, 1.9],
+    ].map(([a, p]) => [`SGD ${a},${p}`, (c) => ndfSGD(c, a, p)]),
   ];
   for (const [name, D] of cases) {
     it(name, () => expect(Math.abs(projectedIntegral(D) - 1)).toBeLessThan(1e-5));
@@ -61,7 +89,8 @@ describe('Blinn-Phong for any exponent a double holds', () => {
 
 describe('NDF widths', () => {
   it('Blinn-Phong ↔ Beckmann (Walter 2007): p = 2/α² - 2 and back', () => {
-    for (const a of [0.05, 0.2, 0.5]) expect(beckmannAlphaFromBlinnPhongExponent(blinnPhongExponentFromBeckmannAlpha(a))).toBeCloseTo(a, 12);
+    for (const a of [0.05, 0.2, 0.5])
+      expect(beckmannAlphaFromBlinnPhongExponent(blinnPhongExponentFromBeckmannAlpha(a))).toBeCloseTo(a, 12);
     // the matched pair has nearly the same lobe: peak values within 1% for small alpha
     const a = 0.1;
     expect(ndfBlinnPhong(1, blinnPhongExponentFromBeckmannAlpha(a)) / ndfBeckmann(1, a)).toBeCloseTo(1, 2);
@@ -129,7 +158,9 @@ describe('Smith G1', () => {
     }
   });
   it("Walter's rational fit stays within 0.4% of the exact Beckmann G1", () => {
-    for (const a of alphas) for (const c of cosGrid) expect(Math.abs(V.smithG1BeckmannWalter(c, a) - V.smithG1Beckmann(c, a))).toBeLessThan(4e-3);
+    for (const a of alphas)
+      for (const c of cosGrid)
+        expect(Math.abs(V.smithG1BeckmannWalter(c, a) - V.smithG1Beckmann(c, a))).toBeLessThan(4e-3);
   });
 });
 
@@ -138,23 +169,35 @@ describe('visibility terms', () => {
     for (const a of alphas) {
       for (const nl of cosGrid) {
         for (const nv of cosGrid) {
-          expect(V.visibilitySmithGGXSeparable(nl, nv, a)).toBeLessThanOrEqual(visibilitySmithGGXCorrelated(nl, nv, a) * (1 + 1e-12));
+          expect(V.visibilitySmithGGXSeparable(nl, nv, a)).toBeLessThanOrEqual(
+            visibilitySmithGGXCorrelated(nl, nv, a) * (1 + 1e-12),
+          );
         }
       }
     }
   });
   it('the separable form is G1(l) G1(v) / ((n·l)(n·v))', () => {
-    for (const a of [0.1, 0.5]) for (const [nl, nv] of [[0.3, 0.9], [0.7, 0.2]]) {
-      expect(V.visibilitySmithGGXSeparable(nl, nv, a)).toBeCloseTo((V.smithG1GGX(nl, a) * V.smithG1GGX(nv, a)) / (nl * nv), 12);
-    }
+    for (const a of [0.1, 0.5])
+      for (const [nl, nv] of [
+        [0.3, 0.9],
+        [0.7, 0.2],
+      ]) {
+        expect(V.visibilitySmithGGXSeparable(nl, nv, a)).toBeCloseTo(
+          (V.smithG1GGX(nl, a) * V.smithG1GGX(nv, a)) / (nl * nv),
+          12,
+        );
+      }
   });
   it('the implicit term ignores roughness and the Cook-Torrance G stays in [0, 1]', () => {
     expect(V.visibilityImplicit(0.3, 0.4)).toBe(1);
-    for (const nl of cosGrid) for (const nv of cosGrid) for (const nh of [0.5, 0.9, 1]) for (const vh of [0.2, 0.7, 1]) {
-      const G = V.visibilityCookTorrance(nl, nv, nh, vh) * nl * nv;
-      expect(G).toBeGreaterThanOrEqual(0);
-      expect(G).toBeLessThanOrEqual(1 + 1e-12);
-    }
+    for (const nl of cosGrid)
+      for (const nv of cosGrid)
+        for (const nh of [0.5, 0.9, 1])
+          for (const vh of [0.2, 0.7, 1]) {
+            const G = V.visibilityCookTorrance(nl, nv, nh, vh) * nl * nv;
+            expect(G).toBeGreaterThanOrEqual(0);
+            expect(G).toBeLessThanOrEqual(1 + 1e-12);
+          }
   });
   it("Kelemen's 1/(l·h)² tracks Cook-Torrance where Cook-Torrance's G is 1", () => {
     // with l = v = n: G_ct = 1, V_ct = 1/(nl nv) = 1 = 1/(l·h)²
@@ -165,15 +208,22 @@ describe('visibility terms', () => {
     for (const a of [0.1, 0.3, 0.6]) {
       expect(V.visibilitySmithGGXCorrelatedFast(1, 1, a)).toBeCloseTo(visibilitySmithGGXCorrelated(1, 1, a), 12);
       expect(V.visibilitySchlickGGX(1, 1, a)).toBeCloseTo(visibilitySmithGGXCorrelated(1, 1, a), 12);
-      for (const nl of [0.4, 0.7, 1]) for (const nv of [0.4, 0.7, 1]) {
-        const ref = visibilitySmithGGXCorrelated(nl, nv, a);
-        expect(Math.abs(V.visibilitySmithGGXCorrelatedFast(nl, nv, a) / ref - 1)).toBeLessThan(0.2);
-        expect(Math.abs(V.visibilitySchlickGGX(nl, nv, a) / ref - 1)).toBeLessThan(0.2);
-      }
+      for (const nl of [0.4, 0.7, 1])
+        for (const nv of [0.4, 0.7, 1]) {
+          const ref = visibilitySmithGGXCorrelated(nl, nv, a);
+          expect(Math.abs(V.visibilitySmithGGXCorrelatedFast(nl, nv, a) / ref - 1)).toBeLessThan(0.2);
+          expect(Math.abs(V.visibilitySchlickGGX(nl, nv, a) / ref - 1)).toBeLessThan(0.2);
+        }
     }
   });
   it('every V is 0 below the horizon and finite above it, down to cos = 1e-7 and alpha = 0', () => {
-    const fns = [V.visibilitySmithGGXSeparable, V.visibilitySmithGGXCorrelated, V.visibilitySmithGGXCorrelatedFast, V.visibilitySchlickGGX, V.visibilitySmithBeckmannSeparable];
+    const fns = [
+      V.visibilitySmithGGXSeparable,
+      V.visibilitySmithGGXCorrelated,
+      V.visibilitySmithGGXCorrelatedFast,
+      V.visibilitySchlickGGX,
+      V.visibilitySmithBeckmannSeparable,
+    ];
     for (const f of fns) {
       expect(f(-0.1, 0.5, 0.3)).toBe(0);
       expect(f(0.5, 0, 0.3)).toBe(0);
@@ -188,7 +238,8 @@ describe('ndfGGX', () => {
   });
   it('equals the textbook form where that form is well conditioned', () => {
     const textbook = (c, a) => (a * a) / (Math.PI * (c * c * (a * a - 1) + 1) ** 2);
-    for (const a of [0.1, 0.5, 1]) for (const c of [0.1, 0.5, 0.9, 1]) expect(ndfGGX(c, a)).toBeCloseTo(textbook(c, a), 10);
+    for (const a of [0.1, 0.5, 1])
+      for (const c of [0.1, 0.5, 0.9, 1]) expect(ndfGGX(c, a)).toBeCloseTo(textbook(c, a), 10);
   });
   it('peaks at 1/(pi alpha²) and stays finite down to alpha = 1e-4 (and alpha = 0 is clamped)', () => {
     expect(ndfGGX(1, 1e-4)).toBeCloseTo(1 / (Math.PI * 1e-8), -2);
@@ -227,6 +278,7 @@ describe('visibilitySmithGGXCorrelated', () => {
   it('is 0 at and below the horizon and never NaN or Inf in its domain', () => {
     expect(visibilitySmithGGXCorrelated(0, 0.5, 0.3)).toBe(0);
     expect(visibilitySmithGGXCorrelated(0.5, -0.1, 0.3)).toBe(0);
-    for (const a of [0, 1e-5, 1e-4, 1]) for (const c of [1e-7, 1e-4, 1]) expect(Number.isFinite(visibilitySmithGGXCorrelated(c, c, a))).toBe(true);
+    for (const a of [0, 1e-5, 1e-4, 1])
+      for (const c of [1e-7, 1e-4, 1]) expect(Number.isFinite(visibilitySmithGGXCorrelated(c, c, a))).toBe(true);
   });
 });

@@ -2,7 +2,12 @@
 // chain checked against published colorimetry (CIE 15:2004 white points, IEC 61966-2-1) and Wien's law.
 import { describe, expect, it } from 'vitest';
 import {
-  cieXyzFit, planckRadiance, spectrumToXyz, sphereLightIrradiance, sphereSolidAngle, xyzToLinearSrgb,
+  cieXyzFit,
+  planckRadiance,
+  spectrumToXyz,
+  sphereLightIrradiance,
+  sphereSolidAngle,
+  xyzToLinearSrgb,
 } from '../../src/math/radiometry.js';
 
 /** ∫ over the lamp's cap (half angle θs) of g(θ) dω = 2π ∫_0^θs g(θ) sin θ dθ, midpoint rule. */
@@ -19,10 +24,21 @@ const chromaticity = ([x, y, z]) => [x / (x + y + z), y / (x + y + z)];
 
 describe('radiance and irradiance', () => {
   it('a sphere lamp’s solid angle and irradiance equal the integrals over its cap (∫ dω, ∫ L cos θ dω)', () => {
-    for (const [r, d] of [[0.05, 0.06], [0.05, 1], [0.05, 30], [1, 1]]) {
+    for (const [r, d] of [
+      [0.05, 0.06],
+      [0.05, 1],
+      [0.05, 30],
+      [1, 1],
+    ]) {
       const thetaS = Math.asin(Math.min(r / d, 1));
-      expect(sphereSolidAngle(r, d)).toBeCloseTo(capIntegral(thetaS, () => 1), 7);
-      expect(sphereLightIrradiance(3, r, d)).toBeCloseTo(capIntegral(thetaS, (t) => 3 * Math.cos(t)), 7);
+      expect(sphereSolidAngle(r, d)).toBeCloseTo(
+        capIntegral(thetaS, () => 1),
+        7,
+      );
+      expect(sphereLightIrradiance(3, r, d)).toBeCloseTo(
+        capIntegral(thetaS, (t) => 3 * Math.cos(t)),
+        7,
+      );
     }
   });
   it('radiance stays L with distance while the irradiance falls as 1/d² (inverse-square law)', () => {
@@ -42,7 +58,9 @@ describe('a spectrum reduced to RGB', () => {
     expect(Math.abs(x - 1 / 3)).toBeLessThan(0.001);
     expect(Math.abs(y - 1 / 3)).toBeLessThan(0.001);
     expect(Math.abs(xyz[1] / 106.857 - 1)).toBeLessThan(0.002);
-    const peak = [...Array(400).keys()].map((i) => 380 + i).reduce((a, l) => (cieXyzFit(l)[1] > cieXyzFit(a)[1] ? l : a));
+    const peak = [...Array(400).keys()]
+      .map((i) => 380 + i)
+      .reduce((a, l) => (cieXyzFit(l)[1] > cieXyzFit(a)[1] ? l : a));
     expect(Math.abs(peak - 555)).toBeLessThanOrEqual(1);
   });
   it('a black body at 2856 K lands on CIE illuminant A (x 0.44757, y 0.40745, CIE 15:2004) within 0.002', () => {

@@ -1,12 +1,25 @@
 import { describe, expect, it } from 'vitest';
-import { randomWalkAlbedoGGX, randomWalkBRDFGGX, sampleVisibleNormalGGX, WALK_MAX_BOUNCES } from '../../src/math/random-walk.js';
+import {
+  randomWalkAlbedoGGX,
+  randomWalkBRDFGGX,
+  sampleVisibleNormalGGX,
+  WALK_MAX_BOUNCES,
+} from '../../src/math/random-walk.js';
 import { microfacetBRDF } from '../../src/math/brdf.js';
 import { ndfGGX } from '../../src/math/ndf.js';
 import { seededRandom } from '../../src/math/microsurface.js';
 import { METALS } from '../../src/math/materials.js';
 import { albedoGGXQuadrature } from './integration-helpers.js';
 
-const GRID = [[1, 1], [0.5, 0.3], [0.1, 0.6], [0.05, 0.05], [0.9, 0.01], [0.3, 1], [0.7, 0.5]];
+const GRID = [
+  [1, 1],
+  [0.5, 0.3],
+  [0.1, 0.6],
+  [0.05, 0.05],
+  [0.9, 0.01],
+  [0.3, 1],
+  [0.7, 0.5],
+];
 const SIGMAS = 4; // seeded, so deterministic; 4 standard errors is a 6e-5 two-sided chance per check
 
 describe('random walk on the Smith microsurface (Heitz et al. 2016)', { timeout: 60_000 }, () => {
@@ -29,7 +42,11 @@ describe('random walk on the Smith microsurface (Heitz et al. 2016)', { timeout:
 
   it('its BRDF by next-event estimation: first bounce = D V / 4 (F = 1) within 4 standard errors', () => {
     const l = [0.6, 0, 0.8];
-    for (const v of [[-0.3, 0.4, Math.sqrt(0.75)], [0.6, 0, 0.8], [-0.99, 0, Math.sqrt(1 - 0.99 ** 2)]]) {
+    for (const v of [
+      [-0.3, 0.4, Math.sqrt(0.75)],
+      [0.6, 0, 0.8],
+      [-0.99, 0, Math.sqrt(1 - 0.99 ** 2)],
+    ]) {
       for (const alpha of [0.3, 0.7, 1]) {
         const r = randomWalkBRDFGGX(l, v, alpha, 1, 20000, 3);
         const single = microfacetBRDF(l, v, { F: 'schlick', D: 'ggx', V: 'smithGGXCorrelated', alpha, f0: 1 });
@@ -40,7 +57,10 @@ describe('random walk on the Smith microsurface (Heitz et al. 2016)', { timeout:
   });
 
   it('its BRDF is reciprocal, f(l, v) = f(v, l), all bounces, within 4 combined standard errors', () => {
-    const [l, v] = [[0.8, 0, 0.6], [-0.2, 0.3, Math.sqrt(1 - 0.13)]];
+    const [l, v] = [
+      [0.8, 0, 0.6],
+      [-0.2, 0.3, Math.sqrt(1 - 0.13)],
+    ];
     for (const alpha of [0.5, 1]) {
       const a = randomWalkBRDFGGX(l, v, alpha, 1, 40000, 8);
       const b = randomWalkBRDFGGX(v, l, alpha, 1, 40000, 9);
@@ -48,7 +68,7 @@ describe('random walk on the Smith microsurface (Heitz et al. 2016)', { timeout:
     }
   });
 
-  it('gold\'s colour per channel: each channel equals a scalar walk with that f0 and the same seed', () => {
+  it("gold's colour per channel: each channel equals a scalar walk with that f0 and the same seed", () => {
     const gold = METALS.find((m) => m.key === 'gold').linear;
     const rgb = randomWalkAlbedoGGX(0.5, 0.8, gold, 5000, 4);
     gold.forEach((f0, c) => expect(rgb.albedo[c]).toBeCloseTo(randomWalkAlbedoGGX(0.5, 0.8, f0, 5000, 4).albedo, 14));
@@ -56,30 +76,39 @@ describe('random walk on the Smith microsurface (Heitz et al. 2016)', { timeout:
   });
 });
 
-describe('visible-normal sampling inside the walk (Dupuy & Benyoub 2023), both hemispheres', { timeout: 60_000 }, () => {
-  it('mean of m over the samples matches ∫ m max(0, wi·m) D(m) dω / ∫ max(0, wi·m) D(m) dω (quadrature)', () => {
-    const alpha = 0.6;
-    for (const wi of [[0.6, 0, 0.8], [0.8, 0, -0.6], [0, 0.28, -0.96]]) {
-      const rand = seededRandom(2);
-      const n = 200000;
-      const mean = [0, 0, 0];
-      for (let i = 0; i < n; i++) sampleVisibleNormalGGX(wi, alpha, rand(), rand()).forEach((x, k) => (mean[k] += x / n));
-      // midpoint rule over the hemisphere of normals
-      const want = [0, 0, 0];
-      let norm = 0;
-      const N = 400;
-      for (let i = 0; i < N; i++) {
-        const c = (i + 0.5) / N;
-        const s = Math.sqrt(1 - c * c);
-        for (let j = 0; j < 2 * N; j++) {
-          const phi = (Math.PI * (j + 0.5)) / N;
-          const m = [s * Math.cos(phi), s * Math.sin(phi), c];
-          const w = Math.max(0, wi[0] * m[0] + wi[1] * m[1] + wi[2] * m[2]) * ndfGGX(c, alpha);
-          norm += w;
-          m.forEach((x, k) => (want[k] += w * x));
+describe(
+  'visible-normal sampling inside the walk (Dupuy & Benyoub 2023), both hemispheres',
+  { timeout: 60_000 },
+  () => {
+    it('mean of m over the samples matches ∫ m max(0, wi·m) D(m) dω / ∫ max(0, wi·m) D(m) dω (quadrature)', () => {
+      const alpha = 0.6;
+      for (const wi of [
+        [0.6, 0, 0.8],
+        [0.8, 0, -0.6],
+        [0, 0.28, -0.96],
+      ]) {
+        const rand = seededRandom(2);
+        const n = 200000;
+        const mean = [0, 0, 0];
+        for (let i = 0; i < n; i++)
+          sampleVisibleNormalGGX(wi, alpha, rand(), rand()).forEach((x, k) => (mean[k] += x / n));
+        // midpoint rule over the hemisphere of normals
+        const want = [0, 0, 0];
+        let norm = 0;
+        const N = 400;
+        for (let i = 0; i < N; i++) {
+          const c = (i + 0.5) / N;
+          const s = Math.sqrt(1 - c * c);
+          for (let j = 0; j < 2 * N; j++) {
+            const phi = (Math.PI * (j + 0.5)) / N;
+            const m = [s * Math.cos(phi), s * Math.sin(phi), c];
+            const w = Math.max(0, wi[0] * m[0] + wi[1] * m[1] + wi[2] * m[2]) * ndfGGX(c, alpha);
+            norm += w;
+            m.forEach((x, k) => (want[k] += w * x));
+          }
         }
+        want.forEach((x, k) => expect(mean[k]).toBeCloseTo(x / norm, 2));
       }
-      want.forEach((x, k) => expect(mean[k]).toBeCloseTo(x / norm, 2));
-    }
-  });
-});
+    });
+  },
+);

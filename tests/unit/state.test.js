@@ -6,14 +6,23 @@ import { schema as curvesSchema } from '../../src/widgets/fresnel-curves/fresnel
 describe('widget state', () => {
   it('round-trips through URL parameters', () => {
     for (const schema of [zonesSchema, curvesSchema]) {
-      const { state } = coerceState(schema, { mode: 'zones-lh', lightTheta: 123.4, materials: ['gold', 'water'], schlick: false });
+      const { state } = coerceState(schema, {
+        mode: 'zones-lh',
+        lightTheta: 123.4,
+        materials: ['gold', 'water'],
+        schlick: false,
+      });
       const back = coerceState(schema, paramsToObject(stateToParams(schema, state).toString())).state;
       expect(back).toEqual(state);
     }
   });
   it('clamps numbers, keeps the previous value for bad ones, ignores unknown keys, and reports each', () => {
     const base = defaultState(zonesSchema);
-    const { state, notices } = coerceState(zonesSchema, { lightTheta: '400', alpha: 'x', mode: 'banana', nonsense: '1' }, base);
+    const { state, notices } = coerceState(
+      zonesSchema,
+      { lightTheta: '400', alpha: 'x', mode: 'banana', nonsense: '1' },
+      base,
+    );
     expect(state.lightTheta).toBe(180);
     expect(state.alpha).toBe(base.alpha);
     expect(state.mode).toBe(base.mode);
@@ -60,9 +69,14 @@ describe('samples and text fields (the measured NDF slice handed to ndf-explorer
   });
   it('refuse a list of the wrong length, with a bad or out-of-range item, or not a list, whole, and say why', () => {
     const cases = [
-      ['1,1,1', /3 values, not 4/], ['1,1,1,1,1', /5 values, not 4/], ['1,NaN,1,1', /value 2, "NaN", is not a decimal/],
-      ['1,1,2,1', /value 3, "2", is not a decimal in 0…1/], [[1, 1, null, 1], /value 3, null/],
-      ['0x1,1,1,1', /value 1/], [7, /7 is not a list/], ['__proto__', /1 values, not 4/],
+      ['1,1,1', /3 values, not 4/],
+      ['1,1,1,1,1', /5 values, not 4/],
+      ['1,NaN,1,1', /value 2, "NaN", is not a decimal/],
+      ['1,1,2,1', /value 3, "2", is not a decimal in 0…1/],
+      [[1, 1, null, 1], /value 3, null/],
+      ['0x1,1,1,1', /value 1/],
+      [7, /7 is not a list/],
+      ['__proto__', /1 values, not 4/],
     ];
     for (const [raw, why] of cases) {
       const { state, notices } = coerceState(schema, { s: raw }, { ...good, s: [1, 1, 1, 1] });

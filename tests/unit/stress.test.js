@@ -8,7 +8,12 @@ describe('numerical stress (JS)', () => {
   it('classifies every exported function', () => expect(unclassified).toEqual([]));
   for (const r of rows) {
     it(`${r.name}: no NaN, Inf or value outside [${r.range.join(', ')}] over ${r.inputs} inputs`, () => {
-      expect({ nan: r.nan, inf: r.inf, outside: r.outside, example: r.worst }).toEqual({ nan: 0, inf: 0, outside: 0, example: null });
+      expect({ nan: r.nan, inf: r.inf, outside: r.outside, example: r.worst }).toEqual({
+        nan: 0,
+        inf: 0,
+        outside: 0,
+        example: null,
+      });
     });
   }
 });

@@ -33,7 +33,11 @@ describe('tour steps', () => {
     expect(steps.length).toBeLessThanOrEqual(50);
     for (const ch of CHAPTERS.filter((c) => c.widgets && c.key !== 'performance')) {
       expect(sections.find((s) => s.key === ch.key).count, ch.key).toBeGreaterThan(0);
-      for (const w of ch.widgets) expect(steps.some((s) => s.widget === w), w).toBe(true);
+      for (const w of ch.widgets)
+        expect(
+          steps.some((s) => s.widget === w),
+          w,
+        ).toBe(true);
     }
   });
 
@@ -51,7 +55,9 @@ describe('tour steps', () => {
 
 describe('series styles', () => {
   it('tell the first 35 series apart by colour or line pattern', () => {
-    const keys = Array.from({ length: SERIES_COLORS.length * SERIES_DASHES.length }, (_, i) => JSON.stringify(seriesStyle(i)));
+    const keys = Array.from({ length: SERIES_COLORS.length * SERIES_DASHES.length }, (_, i) =>
+      JSON.stringify(seriesStyle(i)),
+    );
     expect(new Set(keys).size).toBe(35);
   });
 });

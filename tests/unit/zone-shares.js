@@ -15,7 +15,10 @@ export function weightedSphereShares(alpha, lights = 64, nTheta = 200, nPhi = 96
     const th = Math.acos(1 - (2 * (i + 0.5)) / lights);
     const l = [Math.sin(th), 0, Math.cos(th)];
     const h = [Math.sin(th / 2), 0, Math.cos(th / 2)];
-    const [b1, b2] = [[Math.cos(th / 2), 0, -Math.sin(th / 2)], [0, 1, 0]]; // a frame around h
+    const [b1, b2] = [
+      [Math.cos(th / 2), 0, -Math.sin(th / 2)],
+      [0, 1, 0],
+    ]; // a frame around h
     let sum = 0;
     for (let j = 0; j < nTheta; j++) {
       const [u0, u1] = [j / nTheta, (j + 1) / nTheta];
@@ -27,7 +30,8 @@ export function weightedSphereShares(alpha, lights = 64, nTheta = 200, nPhi = 96
         const n = [0, 1, 2].map((c) => h[c] * Math.cos(t) + Math.sin(t) * (Math.cos(p) * b1[c] + Math.sin(p) * b2[c]));
         const [nv, nl] = [n[2], n[0] * l[0] + n[2] * l[2]];
         if (!(nv > 0 && nl > 0)) continue;
-        sum += ((Math.PI * ndfGGX(Math.cos(t), alpha) * visibilitySmithGGXCorrelated(nl, nv, alpha)) / 4) * nl * nv * dmu;
+        sum +=
+          ((Math.PI * ndfGGX(Math.cos(t), alpha) * visibilitySmithGGXCorrelated(nl, nv, alpha)) / 4) * nl * nv * dmu;
       }
     }
     totals[fresnelZone(Math.cos(th / 2))] += (sum * 2 * Math.PI) / nPhi;

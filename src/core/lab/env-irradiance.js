@@ -10,7 +10,8 @@ export function irradianceMap(rgba, width, height, outWidth, outHeight) {
   const dirs = new Float64Array(3 * n);
   const power = new Float64Array(3 * n);
   for (let j = 0; j < height; j++) {
-    const solidAngle = ((2 * Math.PI) / width) * (Math.sin(((j + 1) / height - 0.5) * Math.PI) - Math.sin((j / height - 0.5) * Math.PI));
+    const solidAngle =
+      ((2 * Math.PI) / width) * (Math.sin(((j + 1) / height - 0.5) * Math.PI) - Math.sin((j / height - 0.5) * Math.PI));
     for (let i = 0; i < width; i++) {
       const t = j * width + i;
       dirs.set(equirectDirection((i + 0.5) / width, (j + 0.5) / height), 3 * t);

@@ -14,7 +14,8 @@ const luminance = (r, g, b) => 0.2126 * r + 0.7152 * g + 0.0722 * b;
  */
 export function buildEnvSampling(rgba, width, height) {
   const lum = new Float64Array(width * height);
-  for (let t = 0; t < width * height; t++) lum[t] = Math.max(luminance(rgba[4 * t], rgba[4 * t + 1], rgba[4 * t + 2]), 0);
+  for (let t = 0; t < width * height; t++)
+    lum[t] = Math.max(luminance(rgba[4 * t], rgba[4 * t + 1], rgba[4 * t + 2]), 0);
   const brightestAround = (i, j) => {
     let m = 0;
     for (let dj = -1; dj <= 1; dj++) {

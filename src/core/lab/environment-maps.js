@@ -41,9 +41,16 @@ function halfTexture({ data, width, height }) {
   return t;
 }
 
-const halfTarget = (w, h, options = {}) => new THREE.WebGLRenderTarget(w, h, {
-  type: THREE.HalfFloatType, format: THREE.RGBAFormat, depthBuffer: false, magFilter: THREE.LinearFilter, minFilter: THREE.LinearFilter, wrapS: THREE.RepeatWrapping, ...options,
-});
+const halfTarget = (w, h, options = {}) =>
+  new THREE.WebGLRenderTarget(w, h, {
+    type: THREE.HalfFloatType,
+    format: THREE.RGBAFormat,
+    depthBuffer: false,
+    magFilter: THREE.LinearFilter,
+    minFilter: THREE.LinearFilter,
+    wrapS: THREE.RepeatWrapping,
+    ...options,
+  });
 
 export function createEnvironmentMaps(renderer) {
   const env = halfTarget(...ENV_SIZE, { minFilter: THREE.LinearMipmapLinearFilter, generateMipmaps: true });
@@ -53,15 +60,36 @@ export function createEnvironmentMaps(renderer) {
   quad.frustumCulled = false;
   const scene = new THREE.Scene().add(quad);
   const camera = new THREE.Camera();
-  const pass = (fragment, defines, uniforms) => new THREE.ShaderMaterial({
-    glslVersion: THREE.GLSL3, uniforms, vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
-    fragmentShader: assembleGlsl(SHADER_CHUNKS[fragment], { defines }), depthTest: false, depthWrite: false,
-  });
-  const copyFlat = pass('env-copy.frag.glsl', {}, { uSource: { value: null }, uSize: { value: new THREE.Vector2(...ENV_SIZE) } });
-  const copyWeighted = pass('env-copy.frag.glsl', { WEIGHTED: 1 }, { uSource: { value: env.texture }, uSize: { value: new THREE.Vector2(...ENV_SIZE) } });
-  const copyCube = pass('env-copy.frag.glsl', { CUBE_SOURCE: 1 }, { uSource: { value: null }, uSize: { value: new THREE.Vector2(...ENV_SIZE) } });
+  const pass = (fragment, defines, uniforms) =>
+    new THREE.ShaderMaterial({
+      glslVersion: THREE.GLSL3,
+      uniforms,
+      vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
+      fragmentShader: assembleGlsl(SHADER_CHUNKS[fragment], { defines }),
+      depthTest: false,
+      depthWrite: false,
+    });
+  const copyFlat = pass(
+    'env-copy.frag.glsl',
+    {},
+    { uSource: { value: null }, uSize: { value: new THREE.Vector2(...ENV_SIZE) } },
+  );
+  const copyWeighted = pass(
+    'env-copy.frag.glsl',
+    { WEIGHTED: 1 },
+    { uSource: { value: env.texture }, uSize: { value: new THREE.Vector2(...ENV_SIZE) } },
+  );
+  const copyCube = pass(
+    'env-copy.frag.glsl',
+    { CUBE_SOURCE: 1 },
+    { uSource: { value: null }, uSize: { value: new THREE.Vector2(...ENV_SIZE) } },
+  );
   const filterUniforms = () => ({
-    uEnv: { value: weighted.texture }, uEnvSize: { value: new THREE.Vector2(...ENV_SIZE) }, uSize: { value: new THREE.Vector2() }, uAlpha: { value: 0 }, uSamples: { value: 64 },
+    uEnv: { value: weighted.texture },
+    uEnvSize: { value: new THREE.Vector2(...ENV_SIZE) },
+    uSize: { value: new THREE.Vector2() },
+    uAlpha: { value: 0 },
+    uSamples: { value: 64 },
   });
   const run = (material, target, layer = 0) => {
     quad.material = material;
@@ -137,7 +165,10 @@ function createPrefilterCache(renderer, run, makeFilter) {
   const entryOf = (ndf) => {
     if (!byNdf.has(ndf)) {
       const target = new THREE.WebGLArrayRenderTarget(...PREFILTER_SIZE, PREFILTER_LEVELS, {
-        type: THREE.HalfFloatType, depthBuffer: false, magFilter: THREE.LinearFilter, minFilter: THREE.LinearFilter,
+        type: THREE.HalfFloatType,
+        depthBuffer: false,
+        magFilter: THREE.LinearFilter,
+        minFilter: THREE.LinearFilter,
         wrapS: THREE.RepeatWrapping,
       });
       const filter = makeFilter(PREFILTER_DEFINES[ndf]);
@@ -176,7 +207,10 @@ function createEnvReadback(renderer, env) {
     return t;
   };
   const sampling = {
-    marginal: table(ENV_SIZE[1], 1), conditional: table(...ENV_SIZE), pdf: table(...ENV_SIZE), usable: false,
+    marginal: table(ENV_SIZE[1], 1),
+    conditional: table(...ENV_SIZE),
+    pdf: table(...ENV_SIZE),
+    usable: false,
   };
   const update = () => {
     const half = new Uint16Array(ENV_SIZE[0] * ENV_SIZE[1] * 4);

@@ -7,15 +7,21 @@ import * as THREE from 'three';
 import { equirectDirection } from '../../math/lighting.js';
 
 export const ENVIRONMENTS = {
-  studio: 'Studio (three.js RoomEnvironment)', sky: 'Sky with an enlarged sun (2°, the real one 0.27°)',
-  furnace: 'White furnace (radiance 1)', file: 'Your file (drop .hdr / .exr)',
+  studio: 'Studio (three.js RoomEnvironment)',
+  sky: 'Sky with an enlarged sun (2°, the real one 0.27°)',
+  furnace: 'White furnace (radiance 1)',
+  file: 'Your file (drop .hdr / .exr)',
 };
 
 /**
  * The sky's sun: a disc of angular radius 2°, 35° up. The real sun's is 0.27° (7.5× smaller): enlarged so that the
  * 256 × 128 map (1.4° texels) resolves it and the reference's samples find it.
  */
-export const SUN = { dir: unit([-0.45, Math.sin((35 * Math.PI) / 180), 0.65]), sin: Math.sin((2 * Math.PI) / 180), radiance: [900, 820, 700] };
+export const SUN = {
+  dir: unit([-0.45, Math.sin((35 * Math.PI) / 180), 0.65]),
+  sin: Math.sin((2 * Math.PI) / 180),
+  radiance: [900, 820, 700],
+};
 
 function unit(d) {
   const n = Math.hypot(...d);
@@ -107,7 +113,8 @@ export function claimedSize(ext, buffer) {
 function sizeProblem(name, width, height, claims = 'is') {
   const size = `“${name}” ${claims} ${width}×${height}`;
   if (width > MAX_WIDTH || height > MAX_WIDTH / 2) return `${size}; the limit is ${MAX_WIDTH}×${MAX_WIDTH / 2}.`;
-  if (Math.abs(width - 2 * height) > 2) return `${size}: an environment must be equirectangular, twice as wide as high.`;
+  if (Math.abs(width - 2 * height) > 2)
+    return `${size}: an environment must be equirectangular, twice as wide as high.`;
   return null;
 }
 
@@ -131,10 +138,13 @@ export function parseEnvironmentFile(name, buffer) {
     const loader = ext === 'hdr' ? new HDRLoader() : new EXRLoader();
     parsed = loader.setDataType(THREE.FloatType).parse(buffer);
   } catch (e) {
-    throw new Error(`“${name}” could not be read as ${ext.toUpperCase()}: ${String(e?.message ?? e).replace(/^THREE\.\w+:\s*/, '')}`);
+    throw new Error(
+      `“${name}” could not be read as ${ext.toUpperCase()}: ${String(e?.message ?? e).replace(/^THREE\.\w+:\s*/, '')}`,
+    );
   }
   const { width, height, data, flipY } = parsed ?? {};
-  if (!data || !(width > 0) || !(height > 0)) throw new Error(`“${name}” could not be read as ${ext.toUpperCase()}: no image in it.`);
+  if (!data || !(width > 0) || !(height > 0))
+    throw new Error(`“${name}” could not be read as ${ext.toUpperCase()}: no image in it.`);
   const problem = sizeProblem(name, width, height);
   if (problem) throw new Error(problem);
   const channels = data.length / (width * height);
@@ -154,6 +164,7 @@ export function parseEnvironmentFile(name, buffer) {
     }
     rgba[q + 3] = 1;
   }
-  if (bad > (width * height) / 100) throw new Error(`“${name}” has ${bad} negative, NaN or infinite values: not a usable radiance map.`);
+  if (bad > (width * height) / 100)
+    throw new Error(`“${name}” has ${bad} negative, NaN or infinite values: not a usable radiance map.`);
   return { data: rgba, width, height };
 }

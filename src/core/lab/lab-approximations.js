@@ -9,12 +9,19 @@ export const LAB_TERMS = {
   fresnel: { schlick: 'Schlick', one: 'F = 1' },
   ndf: { ggx: 'GGX', beckmann: 'Beckmann' },
   visibility: {
-    smithGGXCorrelated: 'Smith GGX height-correlated', smithGGXSeparable: 'Smith GGX separable',
-    schlickGGX: 'Schlick-GGX', kelemen: 'Kelemen', cookTorrance: 'Cook-Torrance', implicit: 'Implicit',
+    smithGGXCorrelated: 'Smith GGX height-correlated',
+    smithGGXSeparable: 'Smith GGX separable',
+    schlickGGX: 'Schlick-GGX',
+    kelemen: 'Kelemen',
+    cookTorrance: 'Cook-Torrance',
+    implicit: 'Implicit',
   },
   diffuse: {
-    lambert: 'Lambert', 'fresnel-weighted': 'Fresnel-weighted Lambert', 'ashikhmin-shirley': 'Ashikhmin-Shirley',
-    'oren-nayar': 'Oren-Nayar', 'oren-nayar-qualitative': 'Oren-Nayar (qualitative)',
+    lambert: 'Lambert',
+    'fresnel-weighted': 'Fresnel-weighted Lambert',
+    'ashikhmin-shirley': 'Ashikhmin-Shirley',
+    'oren-nayar': 'Oren-Nayar',
+    'oren-nayar-qualitative': 'Oren-Nayar (qualitative)',
   },
 };
 
@@ -42,24 +49,32 @@ function specularNotes({ terms, lights, methods }) {
   const ndf = LAB_TERMS.ndf[terms.D];
   const env = lights.env ? methods.env : null;
   if (env === 'split-sum') {
-    notes.push(`Split sum: the map prefiltered with the ${ndf} lobe (n = v = r) times the DFG table of ` +
-      `${specularWords(terms)} (${fresnelWords(terms)}).`);
+    notes.push(
+      `Split sum: the map prefiltered with the ${ndf} lobe (n = v = r) times the DFG table of ` +
+        `${specularWords(terms)} (${fresnelWords(terms)}).`,
+    );
   }
   if (env === 'mirror') {
-    notes.push(`Mirror: ${terms.F === 'one' ? 'F = 1' : 'Schlick’s F at n·v'} times the map in the reflected ` +
-      'direction; the roughness is ignored, which is the method’s error.');
+    notes.push(
+      `Mirror: ${terms.F === 'one' ? 'F = 1' : 'Schlick’s F at n·v'} times the map in the reflected ` +
+        'direction; the roughness is ignored, which is the method’s error.',
+    );
   }
   if (env === 'importance') {
-    notes.push(`Importance sampling: N normals drawn from ${ndf}, every term evaluated at each sample; the diffuse ` +
-      'term by N cosine-distributed directions.');
+    notes.push(
+      `Importance sampling: N normals drawn from ${ndf}, every term evaluated at each sample; the diffuse ` +
+        'term by N cosine-distributed directions.',
+    );
   }
   if (lights.ambient) {
-    notes.push(`Ambient: the directional albedo from the DFG table of ${specularWords(terms)} ` +
-      `(${fresnelWords(terms)}).`);
+    notes.push(
+      `Ambient: the directional albedo from the DFG table of ${specularWords(terms)} ` + `(${fresnelWords(terms)}).`,
+    );
   }
   if (lights.sphere && methods.area !== 'centre' && terms.D !== 'ggx') {
-    notes.push(`Sphere light: the representative point’s energy factor (α/α′)² is Karis’s (2013) for GGX, ` +
-      `kept for ${ndf}.`);
+    notes.push(
+      `Sphere light: the representative point’s energy factor (α/α′)² is Karis’s (2013) for GGX, ` + `kept for ${ndf}.`,
+    );
   }
   return notes;
 }
@@ -79,19 +94,25 @@ export function diffuseUnderSurround({ terms, lights, methods }) {
   if (terms.diffuse === 'lambert') return `Diffuse under ${where}: irradiance × c_diff/π, Lambert’s exact answer.`;
   const name = LAB_TERMS.diffuse[terms.diffuse];
   const none = byIrradiance.length > 1 ? 'neither has a form' : 'it has no form';
-  return `Diffuse under ${where}: ${none} for ${name}, so ${name} is approximated by Lambert ` +
-    `(irradiance × c_diff/π) while the reference uses ${name}: that substitution is part of the error image.`;
+  return (
+    `Diffuse under ${where}: ${none} for ${name}, so ${name} is approximated by Lambert ` +
+    `(irradiance × c_diff/π) while the reference uses ${name}: that substitution is part of the error image.`
+  );
 }
 
 /** How each method treats the chosen energy compensation (its tables are GGX with height-correlated Smith). */
 export function compensationNote({ terms, lights, methods }) {
   if (!terms.compensation || terms.compensation === 'none') return null;
   const name = terms.compensation === 'turquin' ? 'Turquin’s factor' : 'Kulla & Conty’s lobe';
-  const tables = terms.D === 'ggx' && terms.V === 'smithGGXCorrelated' ? ''
-    : ` Its tables are for GGX with height-correlated Smith; here they stand in for ${LAB_TERMS.ndf[terms.D]}.`;
+  const tables =
+    terms.D === 'ggx' && terms.V === 'smithGGXCorrelated'
+      ? ''
+      : ` Its tables are for GGX with height-correlated Smith; here they stand in for ${LAB_TERMS.ndf[terms.D]}.`;
   const env = lights.env && methods.env === 'mirror' ? ' The mirror method has no form for it and leaves it out.' : '';
-  const split = lights.env && methods.env === 'split-sum' && terms.compensation === 'kullaConty'
-    ? ' Under the split sum the lobe’s albedo F_ms (1 − E) multiplies the irradiance (Fdez-Agüera 2019).' : '';
+  const split =
+    lights.env && methods.env === 'split-sum' && terms.compensation === 'kullaConty'
+      ? ' Under the split sum the lobe’s albedo F_ms (1 − E) multiplies the irradiance (Fdez-Agüera 2019).'
+      : '';
   return `Multiple scattering: ${name} in the reference and every method that evaluates the BRDF.${split}${env}${tables}`;
 }
 
@@ -104,23 +125,31 @@ const ENV_WORDS = { 'split-sum': 'The split sum', mirror: 'The mirror method', p
 
 /** What each method does with a measured table: the methods built on a model's terms have no form for it. */
 export function measuredNotes({ lights, methods, measured, material }) {
-  const notes = [`Measured BRDF (${measured}): the reference integrates the table itself (a 3-D texture, ` +
-    `trilinear between its nodes), drawing directions from the GGX fit’s lobe (α ${material.alpha.toFixed(3)}), ` +
-    'by cosine and from the map; the fit only steers the samples, it is not what is rendered. The material ' +
-    'and terms chosen above are not used.'];
+  const notes = [
+    `Measured BRDF (${measured}): the reference integrates the table itself (a 3-D texture, ` +
+      `trilinear between its nodes), drawing directions from the GGX fit’s lobe (α ${material.alpha.toFixed(3)}), ` +
+      'by cosine and from the map; the fit only steers the samples, it is not what is rendered. The material ' +
+      'and terms chosen above are not used.',
+  ];
   if (lights.env && methods.env === 'importance') {
-    notes.push('Importance sampling: N directions from the fitted GGX lobe and N by cosine, each weighted by the ' +
-      'balance heuristic, the table evaluated at every one (it has no separate diffuse part to sample alone).');
+    notes.push(
+      'Importance sampling: N directions from the fitted GGX lobe and N by cosine, each weighted by the ' +
+        'balance heuristic, the table evaluated at every one (it has no separate diffuse part to sample alone).',
+    );
   } else if (lights.env) {
-    notes.push(`${ENV_WORDS[methods.env]} has no form for a table (it needs a model’s D, V and F), so the ` +
-      'environment is left out of the approximation: choose importance sampling.');
+    notes.push(
+      `${ENV_WORDS[methods.env]} has no form for a table (it needs a model’s D, V and F), so the ` +
+        'environment is left out of the approximation: choose importance sampling.',
+    );
   }
   if (lights.ambient) {
     notes.push('Ambient: the DFG table of a model has no form for a measured table; left out of the approximation.');
   }
   if (lights.sphere && methods.area !== 'centre') {
-    notes.push('Sphere light: the table at the representative point, with Karis’s (2013) GGX energy factor at the ' +
-      'fitted α.');
+    notes.push(
+      'Sphere light: the table at the representative point, with Karis’s (2013) GGX energy factor at the ' +
+        'fitted α.',
+    );
   }
   return notes;
 }
@@ -135,8 +164,10 @@ export function approximationNotes(scene) {
   if (scene.lights.env && scene.methods.env === 'pmrem') notes.push(PMREM_NOTE);
   const sigmaDeg = Math.round(((scene.material?.sigma ?? 0) * 180) / Math.PI);
   if (diffuse && scene.terms.diffuse.startsWith('oren-nayar') && sigmaExtrapolated(sigmaDeg)) {
-    notes.push(`Oren-Nayar at ${sigmaText(sigmaDeg)}: past ${SIGMA_MODELLED_DEG}° a Gaussian of facet tilts puts ` +
-      'over 4.6% of them beyond 90°, which no V-groove can have (the diffuse chapter).');
+    notes.push(
+      `Oren-Nayar at ${sigmaText(sigmaDeg)}: past ${SIGMA_MODELLED_DEG}° a Gaussian of facet tilts puts ` +
+        'over 4.6% of them beyond 90°, which no V-groove can have (the diffuse chapter).',
+    );
   }
   const compensation = specular ? compensationNote(scene) : null;
   if (compensation) notes.push(compensation);

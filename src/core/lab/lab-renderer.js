@@ -15,9 +15,20 @@ import { approximationInputs } from './lab-approximations.js';
 export const EXTENT = 1.1; // the view's half width: the unit sphere fills 1/1.1 of it
 export const REFERENCE_BATCH = 8; // samples per pixel and light in one reference batch
 
-const DIFFUSE_DEFINES = { 'fresnel-weighted': 'DIFFUSE_FRESNEL_WEIGHTED', 'ashikhmin-shirley': 'DIFFUSE_ASHIKHMIN_SHIRLEY', 'oren-nayar': 'DIFFUSE_OREN_NAYAR', 'oren-nayar-qualitative': 'DIFFUSE_OREN_NAYAR_QUALITATIVE' };
+const DIFFUSE_DEFINES = {
+  'fresnel-weighted': 'DIFFUSE_FRESNEL_WEIGHTED',
+  'ashikhmin-shirley': 'DIFFUSE_ASHIKHMIN_SHIRLEY',
+  'oren-nayar': 'DIFFUSE_OREN_NAYAR',
+  'oren-nayar-qualitative': 'DIFFUSE_OREN_NAYAR_QUALITATIVE',
+};
 const NDF_DEFINES = { beckmann: 'NDF_BECKMANN' };
-const VIS_DEFINES = { implicit: 'VIS_IMPLICIT', cookTorrance: 'VIS_COOK_TORRANCE', kelemen: 'VIS_KELEMEN', smithGGXSeparable: 'VIS_SMITH_GGX_SEPARABLE', schlickGGX: 'VIS_SCHLICK_GGX' };
+const VIS_DEFINES = {
+  implicit: 'VIS_IMPLICIT',
+  cookTorrance: 'VIS_COOK_TORRANCE',
+  kelemen: 'VIS_KELEMEN',
+  smithGGXSeparable: 'VIS_SMITH_GGX_SEPARABLE',
+  schlickGGX: 'VIS_SCHLICK_GGX',
+};
 const COMPENSATION_DEFINES = { kullaConty: 'COMPENSATION_KULLA_CONTY', turquin: 'COMPENSATION_TURQUIN' };
 const ENV_DEFINES = { mirror: 'ENV_MIRROR', importance: 'ENV_IMPORTANCE', 'split-sum': 'ENV_SPLIT_SUM' };
 
@@ -72,7 +83,16 @@ function modelDefines(scene, reference) {
 
 export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
   const res = resolution;
-  const approxTargets = Array.from({ length: slots }, () => new THREE.WebGLRenderTarget(res, res, { type: THREE.HalfFloatType, depthBuffer: false, magFilter: THREE.NearestFilter, minFilter: THREE.NearestFilter }));
+  const approxTargets = Array.from(
+    { length: slots },
+    () =>
+      new THREE.WebGLRenderTarget(res, res, {
+        type: THREE.HalfFloatType,
+        depthBuffer: false,
+        magFilter: THREE.NearestFilter,
+        minFilter: THREE.NearestFilter,
+      }),
+  );
   const ping = [floatTarget(res, res), floatTarget(res, res)];
   const errorTarget = floatTarget(res, res);
   const sum = createGpuSum(renderer);
@@ -82,35 +102,74 @@ export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
   const camera = new THREE.Camera();
   const programs = new Map();
   const uniforms = {
-    uSize: { value: new THREE.Vector2(res, res) }, uExtent: { value: EXTENT }, uF0: { value: new THREE.Vector3() }, uDiffuseColor: { value: new THREE.Vector3() },
-    uAlpha: { value: 0.3 }, uSigma: { value: 0 }, uExponent: { value: 40 }, uA1: { value: 20 }, uA2: { value: 2.5 }, uSgdP: { value: 0.64 },
-    uPunctualDir: { value: new THREE.Vector3(0, 0, 1) }, uPunctualCLight: { value: new THREE.Vector3() },
-    uSphereDir: { value: new THREE.Vector3(0, 0, 1) }, uSphereSin: { value: 0.1 }, uSphereRadiance: { value: new THREE.Vector3() },
-    uEnv: { value: null }, uEnvIntensity: { value: 1 }, uAmbient: { value: new THREE.Vector3() },
-    uPrefiltered: { value: null }, uPrefilterLevels: { value: PREFILTER_LEVELS }, uIrradiance: { value: null },
+    uSize: { value: new THREE.Vector2(res, res) },
+    uExtent: { value: EXTENT },
+    uF0: { value: new THREE.Vector3() },
+    uDiffuseColor: { value: new THREE.Vector3() },
+    uAlpha: { value: 0.3 },
+    uSigma: { value: 0 },
+    uExponent: { value: 40 },
+    uA1: { value: 20 },
+    uA2: { value: 2.5 },
+    uSgdP: { value: 0.64 },
+    uPunctualDir: { value: new THREE.Vector3(0, 0, 1) },
+    uPunctualCLight: { value: new THREE.Vector3() },
+    uSphereDir: { value: new THREE.Vector3(0, 0, 1) },
+    uSphereSin: { value: 0.1 },
+    uSphereRadiance: { value: new THREE.Vector3() },
+    uEnv: { value: null },
+    uEnvIntensity: { value: 1 },
+    uAmbient: { value: new THREE.Vector3() },
+    uPrefiltered: { value: null },
+    uPrefilterLevels: { value: PREFILTER_LEVELS },
+    uIrradiance: { value: null },
     uDfg: { value: null },
     uAlbedoTableGGX: { value: null }, // the albedo-loss table, made when a compensation is first chosen
     uMeasured: { value: null }, // a measured table's 3-D texture (scene.table), owned by the widget
-    uEnvMarginal: { value: null }, uEnvConditional: { value: null }, uEnvPdf: { value: null }, uEnvSampling: { value: false },
-    uSamples: { value: 16 }, uJitter: { value: new THREE.Vector2() }, uPrevious: { value: null }, uWeight: { value: 1 },
+    uEnvMarginal: { value: null },
+    uEnvConditional: { value: null },
+    uEnvPdf: { value: null },
+    uEnvSampling: { value: false },
+    uSamples: { value: 16 },
+    uJitter: { value: new THREE.Vector2() },
+    uPrevious: { value: null },
+    uWeight: { value: 1 },
   };
   const program = (defines) => {
     const key = JSON.stringify(defines);
     if (!programs.has(key)) {
-      programs.set(key, new THREE.ShaderMaterial({
-        glslVersion: THREE.GLSL3, uniforms, vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
-        fragmentShader: assembleGlsl(SHADER_CHUNKS['lab-shade.frag.glsl'], { defines }), depthTest: false, depthWrite: false,
-      }));
+      programs.set(
+        key,
+        new THREE.ShaderMaterial({
+          glslVersion: THREE.GLSL3,
+          uniforms,
+          vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
+          fragmentShader: assembleGlsl(SHADER_CHUNKS['lab-shade.frag.glsl'], { defines }),
+          depthTest: false,
+          depthWrite: false,
+        }),
+      );
     }
     return programs.get(key);
   };
   const errorPass = new THREE.ShaderMaterial({
-    glslVersion: THREE.GLSL3, uniforms: { uImage: { value: null }, uOther: { value: null } }, vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
-    fragmentShader: assembleGlsl(SHADER_CHUNKS['lab-error.frag.glsl']), depthTest: false, depthWrite: false,
+    glslVersion: THREE.GLSL3,
+    uniforms: { uImage: { value: null }, uOther: { value: null } },
+    vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
+    fragmentShader: assembleGlsl(SHADER_CHUNKS['lab-error.frag.glsl']),
+    depthTest: false,
+    depthWrite: false,
   });
 
   // three.js's own answer for the environment: MeshPhysicalMaterial with the PMREM, added onto the rest
-  const pmremMaterial = new THREE.MeshPhysicalMaterial({ metalness: 0, ior: 1.5, specularIntensity: 1, blending: THREE.AdditiveBlending, depthTest: false, depthWrite: false });
+  const pmremMaterial = new THREE.MeshPhysicalMaterial({
+    metalness: 0,
+    ior: 1.5,
+    specularIntensity: 1,
+    blending: THREE.AdditiveBlending,
+    depthTest: false,
+    depthWrite: false,
+  });
   const pmremSphere = new THREE.Mesh(new THREE.SphereGeometry(1, 128, 64), pmremMaterial);
   const pmremScene = new THREE.Scene().add(pmremSphere);
   const orthoCamera = new THREE.OrthographicCamera(-EXTENT, EXTENT, EXTENT, -EXTENT, 0.1, 10);
@@ -156,7 +215,15 @@ export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
   };
   const pixel = new Float32Array(4);
   const halfPixel = new Uint16Array(4);
-  const sync = (target) => renderer.readRenderTargetPixels(target, 0, 0, 1, 1, target.texture.type === THREE.HalfFloatType ? halfPixel : pixel);
+  const sync = (target) =>
+    renderer.readRenderTargetPixels(
+      target,
+      0,
+      0,
+      1,
+      1,
+      target.texture.type === THREE.HalfFloatType ? halfPixel : pixel,
+    );
 
   let batches = 0;
   let current = 0;
@@ -237,7 +304,9 @@ export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
       return programs.size;
     },
     dispose() {
-      [...approxTargets, ...ping, errorTarget, errorPass, pmremMaterial, pmremSphere.geometry, quad.geometry].forEach((x) => x.dispose());
+      [...approxTargets, ...ping, errorTarget, errorPass, pmremMaterial, pmremSphere.geometry, quad.geometry].forEach(
+        (x) => x.dispose(),
+      );
       programs.forEach((p) => p.dispose());
       uniforms.uAlbedoTableGGX.value?.dispose();
       sum.dispose();

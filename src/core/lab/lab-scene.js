@@ -7,7 +7,9 @@ import { hexToRgb } from '../palettes.js';
 
 export const MATERIAL_OPTIONS = {
   custom: 'Custom (F0 and diffuse below)',
-  ...Object.fromEntries([...METALS, ...NON_METALS].map((m) => [m.key, `${m.name} (${isMetal(m.key) ? 'metal' : 'non-metal'})`])),
+  ...Object.fromEntries(
+    [...METALS, ...NON_METALS].map((m) => [m.key, `${m.name} (${isMetal(m.key) ? 'metal' : 'non-metal'})`]),
+  ),
 };
 
 /** The material fields every lab widget's schema shares. */
@@ -32,7 +34,11 @@ export function labScene(state, lights) {
   return {
     material: materialOf(state),
     terms: {
-      F: state.fresnel, D: state.ndf, V: state.visibility, diffuse: state.diffuseModel, layers: state.layers,
+      F: state.fresnel,
+      D: state.ndf,
+      V: state.visibility,
+      diffuse: state.diffuseModel,
+      layers: state.layers,
       compensation: state.compensation ?? 'none',
     },
     lights,

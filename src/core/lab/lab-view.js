@@ -10,16 +10,28 @@ import { createDfgTexture, createEnvironmentMaps } from './environment-maps.js';
 import { createLabRenderer } from './lab-renderer.js';
 import { FURNACE, skyPixels } from './environments.js';
 
-const viewMaterial = (defines) => new THREE.ShaderMaterial({
-  glslVersion: THREE.GLSL3,
-  uniforms: { uImage: { value: null }, uOther: { value: null }, uRect: { value: new THREE.Vector4() }, uExposure: { value: 1 }, uErrorScale: { value: 0.1 } },
-  vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
-  fragmentShader: assembleGlsl(SHADER_CHUNKS['lab-view.frag.glsl'], { defines }),
-  depthTest: false,
-  depthWrite: false,
-});
+const viewMaterial = (defines) =>
+  new THREE.ShaderMaterial({
+    glslVersion: THREE.GLSL3,
+    uniforms: {
+      uImage: { value: null },
+      uOther: { value: null },
+      uRect: { value: new THREE.Vector4() },
+      uExposure: { value: 1 },
+      uErrorScale: { value: 0.1 },
+    },
+    vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
+    fragmentShader: assembleGlsl(SHADER_CHUNKS['lab-view.frag.glsl'], { defines }),
+    depthTest: false,
+    depthWrite: false,
+  });
 
-const BUILT_IN = { studio: () => 'studio', furnace: () => FURNACE, sky: () => skyPixels(512, 256, true), 'sky-no-sun': () => skyPixels(512, 256, false) };
+const BUILT_IN = {
+  studio: () => 'studio',
+  furnace: () => FURNACE,
+  sky: () => skyPixels(512, 256, true),
+  'sky-no-sun': () => skyPixels(512, 256, false),
+};
 
 /**
  * frame({ lab, environment, again }) runs in each drawn frame and returns the panels to show: [{ image:
@@ -65,7 +77,9 @@ export function createLabView(container, { label, resolution, slots = 1, frame, 
       renderer.render(scene, camera);
     });
     renderer.setScissorTest(false);
-    captions.replaceChildren(...panels.map((p) => Object.assign(document.createElement('span'), { textContent: p.caption })));
+    captions.replaceChildren(
+      ...panels.map((p) => Object.assign(document.createElement('span'), { textContent: p.caption })),
+    );
     if (again) viewport.invalidate();
   };
 
@@ -115,15 +129,17 @@ function createLabResources() {
   const dfgTextures = new Map(); // "ndf/visibility" -> the DFG table of those terms
   const environments = new Map(); // key -> { maps, pixels }
   return {
-    environment: (renderer) => (key, pixels = null) => {
-      let entry = environments.get(key);
-      if (!entry) environments.set(key, (entry = { maps: createEnvironmentMaps(renderer), pixels: undefined }));
-      if (entry.pixels !== pixels) {
-        entry.maps.load(pixels ?? BUILT_IN[key]());
-        entry.pixels = pixels;
-      }
-      return entry.maps;
-    },
+    environment:
+      (renderer) =>
+      (key, pixels = null) => {
+        let entry = environments.get(key);
+        if (!entry) environments.set(key, (entry = { maps: createEnvironmentMaps(renderer), pixels: undefined }));
+        if (entry.pixels !== pixels) {
+          entry.maps.load(pixels ?? BUILT_IN[key]());
+          entry.pixels = pixels;
+        }
+        return entry.maps;
+      },
     dfg(terms) {
       const key = `${terms.ndf}/${terms.visibility}`;
       if (!dfgTextures.has(key)) dfgTextures.set(key, createDfgTexture(terms));

@@ -56,10 +56,29 @@ const viewDir = (deg) => [Math.sin(deg * DEG), 0, Math.cos(deg * DEG)];
 
 function brdfSpec(state, which) {
   const [D, V, alpha] = which === 'B' ? [state.D2, state.V2, state.alpha2] : [state.D, state.V, state.alpha];
-  return { D, V, F: state.F, f0: state.f0, ...ndfParamsMatchingGGX(D, alpha), samplingAlpha: alpha, label: `${which}: ${NDFS[D].name.split(' (')[0]} + ${TERMS[V].name}` };
+  return {
+    D,
+    V,
+    F: state.F,
+    f0: state.f0,
+    ...ndfParamsMatchingGGX(D, alpha),
+    samplingAlpha: alpha,
+    label: `${which}: ${NDFS[D].name.split(' (')[0]} + ${TERMS[V].name}`,
+  };
 }
 
-const TERMS_USED = ['microfacetBRDF', 'fresnelSchlick', 'ndfGGX', 'ndfBeckmann', 'ndfBlinnPhong', 'ndfABC', 'ndfSGD', 'visibilitySmithGGXCorrelated', 'multipleScatteringKullaConty', 'fresnelMultipleScatteringKullaConty'];
+const TERMS_USED = [
+  'microfacetBRDF',
+  'fresnelSchlick',
+  'ndfGGX',
+  'ndfBeckmann',
+  'ndfBlinnPhong',
+  'ndfABC',
+  'ndfSGD',
+  'visibilitySmithGGXCorrelated',
+  'multipleScatteringKullaConty',
+  'fresnelMultipleScatteringKullaConty',
+];
 
 const multipleF0 = (s) => (s.F === 'one' || !s.useF ? 1 : s.f0); // F = 1 when Fresnel is off
 const kullaContyAt = (s, l, v) => kullaContyLobe(l, v, s.alpha, multipleF0(s));
@@ -85,12 +104,20 @@ function multipleWords(s, A, ms) {
   if (!s.multiple) return '';
   if (!ms.lobe) return ' Multiple scattering is shown for GGX with height-correlated Smith only: choose those for A.';
   const at = (theta) => ms.lobe[Math.round((theta + 89) * 2)][1];
-  return ` Dotted: the multiple-scattering lobe of Kulla & Conty (${at(0).toPrecision(3)} /sr at 0°, ${at(60).toPrecision(3)} at 60°), ` +
-    `with dots from the random walk (${ms.points.find((p) => p[0] === 5)[1].toPrecision(3)} ± ${ms.points.find((p) => p[0] === 5)[2].toPrecision(1)} at 5°).`;
+  return (
+    ` Dotted: the multiple-scattering lobe of Kulla & Conty (${at(0).toPrecision(3)} /sr at 0°, ${at(60).toPrecision(3)} at 60°), ` +
+    `with dots from the random walk (${ms.points.find((p) => p[0] === 5)[1].toPrecision(3)} ± ${ms.points.find((p) => p[0] === 5)[2].toPrecision(1)} at 5°).`
+  );
 }
 
 export function createBrdfLobe(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'brdf-lobe', schema, initialState, about: ABOUT, terms: TERMS_USED });
+  const shell = createWidgetShell(container, {
+    name: 'brdf-lobe',
+    schema,
+    initialState,
+    about: ABOUT,
+    terms: TERMS_USED,
+  });
   const top = document.createElement('div');
   top.className = 'lobe-row';
   const bottom = document.createElement('div');
@@ -112,18 +139,40 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange } =
   plotHolder.className = 'albedo-plot';
   bottom.append(plotHolder);
 
-  const use = () => ({ F: shell.state.useF, D: shell.state.useD, G: shell.state.useG, denominator: shell.state.useDenominator });
+  const use = () => ({
+    F: shell.state.useF,
+    D: shell.state.useD,
+    G: shell.state.useG,
+    denominator: shell.state.useDenominator,
+  });
   const specs = () => [brdfSpec(shell.state, 'A'), ...(shell.state.compare ? [brdfSpec(shell.state, 'B')] : [])];
 
   const albedoSpec = () => {
     const angles = Float64Array.from({ length: 45 }, (_, i) => i * 2 + 1);
     const series = specs().map((p, i) => ({
-      label: p.label, stroke: i ? '#009e73' : '#d55e00', dash: i ? [6, 4] : undefined, // B dashed, as on the polar plot
-      values: angles.map((deg) => reflectanceImportanceGGX((l, v) => microfacetBRDF(l, v, p), directionFromCos(Math.cos(deg * DEG)), p.samplingAlpha, 512)),
+      label: p.label,
+      stroke: i ? '#009e73' : '#d55e00',
+      dash: i ? [6, 4] : undefined, // B dashed, as on the polar plot
+      values: angles.map((deg) =>
+        reflectanceImportanceGGX(
+          (l, v) => microfacetBRDF(l, v, p),
+          directionFromCos(Math.cos(deg * DEG)),
+          p.samplingAlpha,
+          512,
+        ),
+      ),
     }));
     return {
-      title: 'Directional albedo E(θv) = ∫ f (n·l) dω (all factors on)', xLabel: 'View angle θv (degrees)', yLabel: 'E', x: { min: 0, max: 90 },
-      y: null, xValues: (u, t) => t.map((v) => `${v}°`), series, data: [angles, ...series.map((s) => s.values)], filename: 'brdf-albedo', height: 250,
+      title: 'Directional albedo E(θv) = ∫ f (n·l) dω (all factors on)',
+      xLabel: 'View angle θv (degrees)',
+      yLabel: 'E',
+      x: { min: 0, max: 90 },
+      y: null,
+      xValues: (u, t) => t.map((v) => `${v}°`),
+      series,
+      data: [angles, ...series.map((s) => s.values)],
+      filename: 'brdf-albedo',
+      height: 250,
     };
   };
   let albedo = createPlot(plotHolder, albedoSpec());
@@ -134,28 +183,49 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange } =
     const v = viewDir(s.viewTheta);
     const [A, B] = specs();
     const f = (p) => (vv) => microfacetFactors(l, vv, p, use()) * (s.cosine ? Math.max(vv[2], 0) : 1);
-    const lobeOf = (p) => Array.from({ length: 357 }, (_, i) => {
-      const theta = -89 + i * 0.5;
-      return [theta, f(p)(viewDir(theta))];
-    });
+    const lobeOf = (p) =>
+      Array.from({ length: 357 }, (_, i) => {
+        const theta = -89 + i * 0.5;
+        return [theta, f(p)(viewDir(theta))];
+      });
     const lobeA = lobeOf(A);
     const lobeB = B ? lobeOf(B) : null;
     const ms = multipleScattering(s, A, l);
     const max = Math.max(...[lobeA, lobeB, ms.lobe, ms.points].flatMap((lobe) => (lobe ?? []).map((x) => x[1])), 1e-9);
     const a = brdfAngles(l, v);
-    polar.draw({ lobeA, lobeB, lobeMS: ms.lobe, points: ms.points, max, lightTheta: s.lightTheta, viewTheta: s.viewTheta, halfTheta: a.h ? Math.atan2(a.h[0], a.h[2]) / DEG : null });
+    polar.draw({
+      lobeA,
+      lobeB,
+      lobeMS: ms.lobe,
+      points: ms.points,
+      max,
+      lightTheta: s.lightTheta,
+      viewTheta: s.viewTheta,
+      halfTheta: a.h ? Math.atan2(a.h[0], a.h[2]) / DEG : null,
+    });
     const peakOf = (lobe) => lobe.reduce((a, x) => (x[1] > a[1] ? x : a));
     const off = ['F', 'D', 'G'].filter((k) => !s[`use${k}`]).concat(s.useDenominator ? [] : ['the denominator']);
     const what = `${s.cosine ? 'f(l, v) × n·v' : 'f(l, v)'} for ${A.label}${B ? ` and, dashed, ${B.label}` : ''}${off.length ? ` with ${off.join(', ')} switched off` : ''}`;
-    const peaks = [[A, lobeA], [B, lobeB]].filter(([p]) => p).map(([p, lobe]) => {
-      const [theta, value] = peakOf(lobe);
-      return `${p.label.slice(0, 1)} peaks at ${theta.toFixed(1)}° (${value.toPrecision(3)} /sr)`;
-    });
-    shell.describe(`Polar plot in the plane of incidence: ${what}. Light ${s.lightTheta}° from n on the left, view at ${s.viewTheta}°, mirror direction at ${s.lightTheta}°. ${peaks.join('; ')}.${multipleWords(s, A, ms)}`, polar.canvas);
+    const peaks = [
+      [A, lobeA],
+      [B, lobeB],
+    ]
+      .filter(([p]) => p)
+      .map(([p, lobe]) => {
+        const [theta, value] = peakOf(lobe);
+        return `${p.label.slice(0, 1)} peaks at ${theta.toFixed(1)}° (${value.toPrecision(3)} /sr)`;
+      });
+    shell.describe(
+      `Polar plot in the plane of incidence: ${what}. Light ${s.lightTheta}° from n on the left, view at ${s.viewTheta}°, mirror direction at ${s.lightTheta}°. ${peaks.join('; ')}.${multipleWords(s, A, ms)}`,
+      polar.canvas,
+    );
     const max3d = Math.max(max, 1e-9);
     lobe3d.update({
-      fA: f(A), fB: B ? f(B) : null, max: max3d,
-      description: `3-D lobe of ${A.label}${B ? ` (solid) and ${B.label} (wireframe)` : ''} over the hemisphere, light ${s.lightTheta}° from n; ` +
+      fA: f(A),
+      fB: B ? f(B) : null,
+      max: max3d,
+      description:
+        `3-D lobe of ${A.label}${B ? ` (solid) and ${B.label} (wireframe)` : ''} over the hemisphere, light ${s.lightTheta}° from n; ` +
         `each direction's distance from the centre is ${s.cosine ? 'f × n·v' : 'f'}, scaled to ${max3d.toPrecision(3)}. Arrows: n, l, v, h and the mirror direction.`,
       directions: { n: [0, 0, 1], l, v, h: a.h, mirror: [-l[0], 0, l[2]] },
     });
@@ -169,7 +239,8 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange } =
       imageB.draw(B ? image(B) : () => 0, B ? words(B, s.alpha2) : 'not shown (no overlay)');
       images.classList.toggle('single', !B);
     }
-    if (changed?.some((k) => ['D', 'V', 'F', 'alpha', 'f0', 'compare', 'D2', 'V2', 'alpha2'].includes(k))) albedo.setData(albedoSpec());
+    if (changed?.some((k) => ['D', 'V', 'F', 'alpha', 'f0', 'compare', 'D2', 'V2', 'alpha2'].includes(k)))
+      albedo.setData(albedoSpec());
     const rows = [A, B].filter(Boolean).map((p) => {
       const t = microfacetFactors(l, v, p, { F: true, D: true, G: true, denominator: true });
       const terms = { F: 1, D: 1, G: 1 };
@@ -180,10 +251,13 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange } =
       }
       return `<tr><td>${p.label}</td><td>${terms.F.toFixed(4)}</td><td>${terms.D.toPrecision(4)}</td><td>${terms.G.toFixed(4)}</td><td>${t.toPrecision(4)}</td></tr>`;
     });
-    readout.innerHTML = `<table class="data-table compact"><caption>At l = ${s.lightTheta}°, v = ${s.viewTheta}°: n·l ${a.nl.toFixed(3)}, n·v ${a.nv.toFixed(3)}, n·h ${a.nh.toFixed(3)}, l·h ${a.lh.toFixed(3)}</caption>` +
+    readout.innerHTML =
+      `<table class="data-table compact"><caption>At l = ${s.lightTheta}°, v = ${s.viewTheta}°: n·l ${a.nl.toFixed(3)}, n·v ${a.nv.toFixed(3)}, n·h ${a.nh.toFixed(3)}, l·h ${a.lh.toFixed(3)}</caption>` +
       `<thead><tr><th>BRDF</th><th>F</th><th>D (1/sr)</th><th>G</th><th>f = FDG/(4 n·l n·v) (1/sr)</th></tr></thead><tbody>${rows.join('')}</tbody></table>` +
-      (ms.lobe ? `<p class="multiple-readout">Multiple scattering at v (A): Kulla–Conty ${kullaContyAt(s, l, v).toPrecision(3)} /sr` +
-        ` beside single scattering ${microfacetBRDF(l, v, A).toPrecision(3)} /sr (dotted lobe; dots: the random walk, bars ± 2 standard errors).</p>` : '');
+      (ms.lobe
+        ? `<p class="multiple-readout">Multiple scattering at v (A): Kulla–Conty ${kullaContyAt(s, l, v).toPrecision(3)} /sr` +
+          ` beside single scattering ${microfacetBRDF(l, v, A).toPrecision(3)} /sr (dotted lobe; dots: the random walk, bars ± 2 standard errors).</p>`
+        : '');
   };
 
   const updateState = shell.connect({ title: 'BRDF lobe', onChanged: render, onStateChange });

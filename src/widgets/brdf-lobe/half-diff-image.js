@@ -30,7 +30,8 @@ export function createHalfDiffImage(container, title) {
     draw(value, description, { max: sharedMax } = {}) {
       const vals = new Float64Array(N * N);
       for (let j = 0; j < N; j++) {
-        for (let i = 0; i < N; i++) vals[j * N + i] = value(((i + 0.5) * Math.PI) / 2 / N, ((j + 0.5) * Math.PI) / 2 / N);
+        for (let i = 0; i < N; i++)
+          vals[j * N + i] = value(((i + 0.5) * Math.PI) / 2 / N, ((j + 0.5) * Math.PI) / 2 / N);
       }
       const sorted = Float64Array.from(vals).sort();
       const max = sharedMax ?? sorted[Math.floor(TOP_PERCENTILE * (sorted.length - 1))];
@@ -62,7 +63,10 @@ export function createHalfDiffImage(container, title) {
       ctx.rotate(-Math.PI / 2);
       ctx.fillText('θd (l from h)', 0, 0);
       ctx.restore();
-      describeCanvas(canvas, `${title}: ${description}; viridis colours on a log scale, brightest (yellow) at ${max.toPrecision(3)}${sharedMax ? '' : ' per steradian (99th percentile)'}, darkest ${DECADES} decades below.`);
+      describeCanvas(
+        canvas,
+        `${title}: ${description}; viridis colours on a log scale, brightest (yellow) at ${max.toPrecision(3)}${sharedMax ? '' : ' per steradian (99th percentile)'}, darkest ${DECADES} decades below.`,
+      );
       return max;
     },
     dispose() {

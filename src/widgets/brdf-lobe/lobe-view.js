@@ -51,12 +51,27 @@ export function createLobeView(container) {
   sun.position.set(2, 4, 3);
   scene.add(sun);
 
-  const patch = new THREE.Mesh(new THREE.CircleGeometry(1.25, 64), new THREE.MeshLambertMaterial({ color: '#c8ccd2', side: THREE.DoubleSide }));
-  const lobeA = new THREE.Mesh(makeGeometry(), new THREE.MeshLambertMaterial({ color: '#d55e00', side: THREE.DoubleSide }));
-  const lobeB = new THREE.Mesh(makeGeometry(), new THREE.MeshBasicMaterial({ color: '#009e73', wireframe: true, transparent: true, opacity: 0.45 }));
+  const patch = new THREE.Mesh(
+    new THREE.CircleGeometry(1.25, 64),
+    new THREE.MeshLambertMaterial({ color: '#c8ccd2', side: THREE.DoubleSide }),
+  );
+  const lobeA = new THREE.Mesh(
+    makeGeometry(),
+    new THREE.MeshLambertMaterial({ color: '#d55e00', side: THREE.DoubleSide }),
+  );
+  const lobeB = new THREE.Mesh(
+    makeGeometry(),
+    new THREE.MeshBasicMaterial({ color: '#009e73', wireframe: true, transparent: true, opacity: 0.45 }),
+  );
   local.add(patch, lobeA, lobeB);
   const arrows = {};
-  for (const [key, color] of Object.entries({ n: '#333333', l: '#e6a700', v: '#0072b2', h: '#cc79a7', mirror: '#888888' })) {
+  for (const [key, color] of Object.entries({
+    n: '#333333',
+    l: '#e6a700',
+    v: '#0072b2',
+    h: '#cc79a7',
+    mirror: '#888888',
+  })) {
     arrows[key] = new THREE.ArrowHelper(new THREE.Vector3(0, 0, 1), new THREE.Vector3(), 1.3, color, 0.1, 0.06);
     local.add(arrows[key]);
   }

@@ -2,7 +2,10 @@
 // model both are defined for): Kulla & Conty's lobe times its Fresnel factor, and the random walk's multiply
 // scattered part (all bounces but the first) at a few view angles, with its Monte Carlo standard error.
 import {
-  averageAlbedoGGX, fresnelAverage, fresnelMultipleScatteringKullaConty, multipleScatteringKullaConty,
+  averageAlbedoGGX,
+  fresnelAverage,
+  fresnelMultipleScatteringKullaConty,
+  multipleScatteringKullaConty,
 } from '../../math/multiple-scattering.js';
 import { randomWalkBRDFGGX } from '../../math/random-walk.js';
 

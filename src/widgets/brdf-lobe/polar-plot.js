@@ -5,7 +5,16 @@
 import { sizeCanvas2d } from '../../core/canvas2d.js';
 
 const DEG = Math.PI / 180;
-const COLORS = { light: '#e6a700', view: '#0072b2', half: '#cc79a7', mirror: '#777', grid: '#0000001f', a: '#d55e00', b: '#009e73', ms: '#56b4e9' };
+const COLORS = {
+  light: '#e6a700',
+  view: '#0072b2',
+  half: '#cc79a7',
+  mirror: '#777',
+  grid: '#0000001f',
+  a: '#d55e00',
+  b: '#009e73',
+  ms: '#56b4e9',
+};
 
 export function createPolarPlot(container, { onDrag }) {
   const figure = document.createElement('figure');
@@ -60,7 +69,11 @@ export function createPolarPlot(container, { onDrag }) {
     ctx.textAlign = 'left';
     ctx.fillText('surface', g.cx - g.R * 1.05, g.cy + 12);
     // lobes: A filled, B dashed, the multiple-scattering lobe dotted
-    for (const [lobe, color, fill, dash] of [[spec.lobeA, COLORS.a, true, []], [spec.lobeB, COLORS.b, false, [6, 4]], [spec.lobeMS, COLORS.ms, false, [2, 3]]]) {
+    for (const [lobe, color, fill, dash] of [
+      [spec.lobeA, COLORS.a, true, []],
+      [spec.lobeB, COLORS.b, false, [6, 4]],
+      [spec.lobeMS, COLORS.ms, false, [2, 3]],
+    ]) {
       if (!lobe) continue;
       ctx.beginPath();
       lobe.forEach(([theta, value], i) => {

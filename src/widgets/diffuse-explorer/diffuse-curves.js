@@ -2,7 +2,11 @@
 // of the cosines and the azimuth, the brightness profile across a sphere, the radiance as the light sweeps
 // past a fixed view, and the light a surface returns (specular plus diffuse) against the view angle.
 import {
-  diffuseAshikhminShirley, diffuseFresnelWeighted, diffuseLambert, diffuseOrenNayar, diffuseOrenNayarQualitative,
+  diffuseAshikhminShirley,
+  diffuseFresnelWeighted,
+  diffuseLambert,
+  diffuseOrenNayar,
+  diffuseOrenNayarQualitative,
 } from '../../math/diffuse.js';
 import { fresnelSchlick } from '../../math/fresnel.js';
 import { punctualRadiance } from '../../math/brdf.js';
@@ -15,23 +19,35 @@ export const DEG = Math.PI / 180;
  */
 export const MODELS = {
   lambert: {
-    name: 'Lambert', short: 'Lambert', define: null,
+    name: 'Lambert',
+    short: 'Lambert',
+    define: null,
     f: (nl, nv, cp, p) => (nl > 0 && nv > 0 ? diffuseLambert(p.cdiff) : 0),
   },
   fresnelWeighted: {
-    name: 'Fresnel-weighted Lambert', short: 'Fresnel-weighted', define: 'DIFFUSE_MODEL_FRESNEL_WEIGHTED',
+    name: 'Fresnel-weighted Lambert',
+    short: 'Fresnel-weighted',
+    define: 'DIFFUSE_MODEL_FRESNEL_WEIGHTED',
     f: (nl, nv, cp, p) => diffuseFresnelWeighted(nl, nv, p.f0, p.cdiff),
   },
   ashikhminShirley: {
-    name: 'Ashikhmin–Shirley', short: 'Ashikhmin–Shirley', define: 'DIFFUSE_MODEL_ASHIKHMIN_SHIRLEY',
+    name: 'Ashikhmin–Shirley',
+    short: 'Ashikhmin–Shirley',
+    define: 'DIFFUSE_MODEL_ASHIKHMIN_SHIRLEY',
     f: (nl, nv, cp, p) => diffuseAshikhminShirley(nl, nv, p.f0, p.cdiff),
   },
   orenNayar: {
-    name: 'Oren–Nayar (full)', short: 'Oren–Nayar', define: 'DIFFUSE_MODEL_OREN_NAYAR', azimuthal: true,
+    name: 'Oren–Nayar (full)',
+    short: 'Oren–Nayar',
+    define: 'DIFFUSE_MODEL_OREN_NAYAR',
+    azimuthal: true,
     f: (nl, nv, cp, p) => diffuseOrenNayar(nl, nv, cp, p.sigma, p.cdiff),
   },
   orenNayarQualitative: {
-    name: 'Oren–Nayar (qualitative)', short: 'O–N qualitative', define: 'DIFFUSE_MODEL_OREN_NAYAR_QUALITATIVE', azimuthal: true,
+    name: 'Oren–Nayar (qualitative)',
+    short: 'O–N qualitative',
+    define: 'DIFFUSE_MODEL_OREN_NAYAR_QUALITATIVE',
+    azimuthal: true,
     f: (nl, nv, cp, p) => diffuseOrenNayarQualitative(nl, nv, cp, p.sigma, p.cdiff),
   },
 };
@@ -82,7 +98,9 @@ export function lightSweep(state) {
   const p = paramsOf(state);
   const tv = state.viewTheta * DEG;
   const v = [Math.sin(tv), 0, Math.cos(tv)];
-  return state.models.map((m) => SWEEP_XS.map((deg) => radianceAt(m, [0, 0, 1], [Math.sin(deg * DEG), 0, Math.cos(deg * DEG)], v, p)));
+  return state.models.map((m) =>
+    SWEEP_XS.map((deg) => radianceAt(m, [0, 0, 1], [Math.sin(deg * DEG), 0, Math.cos(deg * DEG)], v, p)),
+  );
 }
 
 export const TRADE_XS = Float64Array.from({ length: 90 }, (_, i) => i + 0.5);
@@ -110,6 +128,8 @@ export function diffuseAlbedo(model, nv, params, n = 32) {
 export function tradeOff(state) {
   const p = paramsOf(state);
   const specular = TRADE_XS.map((deg) => fresnelSchlick(p.f0, Math.cos(deg * DEG)));
-  const totals = state.models.map((m) => TRADE_XS.map((deg, i) => specular[i] + diffuseAlbedo(m, Math.cos(deg * DEG), p)));
+  const totals = state.models.map((m) =>
+    TRADE_XS.map((deg, i) => specular[i] + diffuseAlbedo(m, Math.cos(deg * DEG), p)),
+  );
   return { specular, totals };
 }

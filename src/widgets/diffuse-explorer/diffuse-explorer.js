@@ -10,7 +10,16 @@ import { SERIES_COLORS } from '../../core/palettes.js';
 import { lightDirFromAngles } from '../../core/light-control.js';
 import { createLightPad } from './light-pad.js';
 import {
-  MODELS, PROFILE_XS, SWEEP_XS, TRADE_XS, cosPhiDiff, lightSweep, paramsOf, profile, radianceAt, tradeOff,
+  MODELS,
+  PROFILE_XS,
+  SWEEP_XS,
+  TRADE_XS,
+  cosPhiDiff,
+  lightSweep,
+  paramsOf,
+  profile,
+  radianceAt,
+  tradeOff,
 } from './diffuse-curves.js';
 
 const MODEL_KEYS = Object.keys(MODELS);
@@ -23,7 +32,14 @@ export const schema = {
     label: 'Diffuse models',
   },
   sigma: {
-    type: 'number', min: 0, max: 90, step: 1, default: 40, label: 'Oren–Nayar roughness σ', unit: '°', hint: SIGMA_HINT,
+    type: 'number',
+    min: 0,
+    max: 90,
+    step: 1,
+    default: 40,
+    label: 'Oren–Nayar roughness σ',
+    unit: '°',
+    hint: SIGMA_HINT,
   },
   cdiff: { type: 'number', min: 0, max: 1, step: 0.01, default: 0.8, label: 'Diffuse colour c_diff' },
   f0: { type: 'number', min: 0, max: 1, step: 0.01, default: 0.04, label: 'Specular F0 (trade-off)' },
@@ -47,7 +63,14 @@ const ABOUT =
   'pair reflects more light than arrives. Fresnel-weighted Lambert is not normalised: head-on it returns ' +
   '(1 − F0)²·20/21 of c_diff (0.878 at F0 = 0.04).';
 
-const TERMS_USED = ['diffuseLambert', 'diffuseFresnelWeighted', 'diffuseAshikhminShirley', 'diffuseOrenNayar', 'diffuseOrenNayarQualitative', 'fresnelSchlick'];
+const TERMS_USED = [
+  'diffuseLambert',
+  'diffuseFresnelWeighted',
+  'diffuseAshikhminShirley',
+  'diffuseOrenNayar',
+  'diffuseOrenNayarQualitative',
+  'fresnelSchlick',
+];
 
 const colorOf = (key) => SERIES_COLORS[MODEL_KEYS.indexOf(key) % SERIES_COLORS.length];
 const degValues = (u, ticks) => ticks.map((t) => `${t}°`);
@@ -55,7 +78,13 @@ const degValues = (u, ticks) => ticks.map((t) => `${t}°`);
 const RIM = 0.9;
 
 export function createDiffuseExplorer(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'diffuse-explorer', schema, initialState, about: ABOUT, terms: TERMS_USED });
+  const shell = createWidgetShell(container, {
+    name: 'diffuse-explorer',
+    schema,
+    initialState,
+    about: ABOUT,
+    terms: TERMS_USED,
+  });
   const lightDir = () => lightDirFromAngles(shell.state.lightTheta, shell.state.lightPhi);
   let update = () => {};
   // the spheres, their probe readout and, beside it, the pad that moves their light
@@ -79,32 +108,49 @@ export function createDiffuseExplorer(container, initialState = {}, { onStateCha
 
   const profileSpec = () => ({
     title: `Brightness across the sphere, through the side the light is on (${sigmaText(shell.state.sigma)})`,
-    xLabel: 'Diameter position (radii, + = light side)', yLabel: 'Lo / c_light',
-    x: { min: -1, max: 1 }, y: null, series: series(), data: [PROFILE_XS, ...profileData], filename: 'diffuse-profile', height: 260,
+    xLabel: 'Diameter position (radii, + = light side)',
+    yLabel: 'Lo / c_light',
+    x: { min: -1, max: 1 },
+    y: null,
+    series: series(),
+    data: [PROFILE_XS, ...profileData],
+    filename: 'diffuse-profile',
+    height: 260,
   });
   const sweepSpec = () => {
     const tv = shell.state.viewTheta;
     return {
       title: `Radiance of a flat patch seen from θv = ${tv}°, the light sweeping through the plane of n and v (${sigmaText(shell.state.sigma)})`,
-      xLabel: 'Light angle θl (degrees, + = viewer’s side)', yLabel: 'Lo / c_light',
-      x: { min: -90, max: 90 }, y: null, xValues: degValues, series: series(), data: [SWEEP_XS, ...sweepData],
+      xLabel: 'Light angle θl (degrees, + = viewer’s side)',
+      yLabel: 'Lo / c_light',
+      x: { min: -90, max: 90 },
+      y: null,
+      xValues: degValues,
+      series: series(),
+      data: [SWEEP_XS, ...sweepData],
       bands: [
         { from: tv - 0.6, to: tv + 0.6, color: '#e69f0055', label: 'l = v' },
         { from: -tv - 0.6, to: -tv + 0.6, color: '#56b4e955', label: 'mirror' },
       ],
-      filename: 'diffuse-light-sweep', height: 260,
+      filename: 'diffuse-light-sweep',
+      height: 260,
     };
   };
   const tradeSpec = () => ({
     title: `Light sent back: smooth specular F(θv) (F0 = ${shell.state.f0}) plus each diffuse albedo (c_diff = ${shell.state.cdiff})`,
-    xLabel: 'View angle θv (degrees)', yLabel: 'returned / incident', x: { min: 0, max: 90 }, y: { min: 0, max: 2 }, xValues: degValues,
+    xLabel: 'View angle θv (degrees)',
+    yLabel: 'returned / incident',
+    x: { min: 0, max: 90 },
+    y: { min: 0, max: 2 },
+    xValues: degValues,
     series: [
       ...series().map((s) => ({ ...s, label: `F + ${s.label}` })),
       { label: 'F alone (specular)', stroke: '#777777', dash: [6, 4] },
       { label: 'all the incident light', stroke: '#000000', dash: [2, 3], width: 1 },
     ],
     data: [TRADE_XS, ...tradeData.totals, tradeData.specular, TRADE_XS.map(() => 1)],
-    filename: 'diffuse-specular-tradeoff', height: 260,
+    filename: 'diffuse-specular-tradeoff',
+    height: 260,
   });
   const profilePlot = createPlot(plots, profileSpec());
   plots.append(table);
@@ -118,27 +164,35 @@ export function createDiffuseExplorer(container, initialState = {}, { onStateCha
       const [c, r] = [profileData[i][centre], profileData[i][rim]];
       return `<tr><td><span class="swatch" style="background:${colorOf(k)}"></span> ${MODELS[k].name}</td><td>${c.toFixed(4)}</td><td>${r.toFixed(4)}</td><td>${c > 1e-9 ? (r / c).toFixed(3) : '—'}</td></tr>`;
     });
-    table.innerHTML = `<table class="data-table compact"><caption>How flat the disc looks: Lo / c_light at the centre and ${RIM * 100}% of the way to the rim (light’s side)</caption>` +
-      '<thead><tr><th>Model</th><th>centre</th><th>at 0.9 R</th><th>rim / centre</th></tr></thead><tbody>' + rows.join('') + '</tbody></table>';
+    table.innerHTML =
+      `<table class="data-table compact"><caption>How flat the disc looks: Lo / c_light at the centre and ${RIM * 100}% of the way to the rim (light’s side)</caption>` +
+      '<thead><tr><th>Model</th><th>centre</th><th>at 0.9 R</th><th>rim / centre</th></tr></thead><tbody>' +
+      rows.join('') +
+      '</tbody></table>';
   };
   const renderSpheres = () => {
     const s = shell.state;
     const p = paramsOf(s);
     const l = lightDir();
-    spheres.setCells(s.models.map((k) => ({
-      label: MODELS[k].short,
-      defines: { DIFFUSE_ONLY: true, ...(MODELS[k].define ? { [MODELS[k].define]: true } : {}) },
-      uniforms: { uLightDir: l, uExposure: s.exposure, uDiffuse: s.cdiff, uF0: s.f0, uSigma: p.sigma },
-      probe: (a, n) => {
-        const f = MODELS[k].f(a.nl, a.nv, cosPhiDiff(n, l, [0, 0, 1]), p);
-        return [
-          ['f (1/sr)', f.toFixed(5)],
-          ['f / Lambert', s.cdiff > 0 ? (f / (s.cdiff / Math.PI)).toFixed(4) : '—'],
-          ['Lo / c_light', radianceAt(k, n, l, [0, 0, 1], p).toFixed(4)],
-        ];
-      },
-    })));
-    shell.describe(`Spheres with a diffuse term only (c_diff ${s.cdiff}, F0 ${s.f0}, ${sigmaText(s.sigma)}), light ${s.lightTheta}° from the view: ${s.models.map((k) => MODELS[k].name).join(', ')}.`, spheres.canvas);
+    spheres.setCells(
+      s.models.map((k) => ({
+        label: MODELS[k].short,
+        defines: { DIFFUSE_ONLY: true, ...(MODELS[k].define ? { [MODELS[k].define]: true } : {}) },
+        uniforms: { uLightDir: l, uExposure: s.exposure, uDiffuse: s.cdiff, uF0: s.f0, uSigma: p.sigma },
+        probe: (a, n) => {
+          const f = MODELS[k].f(a.nl, a.nv, cosPhiDiff(n, l, [0, 0, 1]), p);
+          return [
+            ['f (1/sr)', f.toFixed(5)],
+            ['f / Lambert', s.cdiff > 0 ? (f / (s.cdiff / Math.PI)).toFixed(4) : '—'],
+            ['Lo / c_light', radianceAt(k, n, l, [0, 0, 1], p).toFixed(4)],
+          ];
+        },
+      })),
+    );
+    shell.describe(
+      `Spheres with a diffuse term only (c_diff ${s.cdiff}, F0 ${s.f0}, ${sigmaText(s.sigma)}), light ${s.lightTheta}° from the view: ${s.models.map((k) => MODELS[k].name).join(', ')}.`,
+      spheres.canvas,
+    );
   };
   renderTable();
   renderSpheres();

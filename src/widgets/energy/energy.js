@@ -18,12 +18,22 @@ export const schema = {
   alphas: {
     type: 'set',
     // '1.0', not '1': an integer-like key would be listed first
-    options: { '0.05': 'α 0.05', '0.25': 'α 0.25', '0.5': 'α 0.5', '0.75': 'α 0.75', '1.0': 'α 1' },
+    options: { 0.05: 'α 0.05', 0.25: 'α 0.25', 0.5: 'α 0.5', 0.75: 'α 0.75', '1.0': 'α 1' },
     default: ['0.05', '0.25', '0.5', '0.75', '1.0'],
     label: 'Roughness sweep',
   },
-  compensation: { type: 'enum', options: { none: 'None', kullaConty: 'Kulla–Conty 2017', turquin: 'Turquin 2019' }, default: 'none', label: 'Energy compensation' },
-  metal: { type: 'enum', options: Object.fromEntries(METALS.map((m) => [m.key, m.name])), default: 'gold', label: 'Coloured metal' },
+  compensation: {
+    type: 'enum',
+    options: { none: 'None', kullaConty: 'Kulla–Conty 2017', turquin: 'Turquin 2019' },
+    default: 'none',
+    label: 'Energy compensation',
+  },
+  metal: {
+    type: 'enum',
+    options: Object.fromEntries(METALS.map((m) => [m.key, m.name])),
+    default: 'gold',
+    label: 'Coloured metal',
+  },
   metalAlpha: { type: 'number', min: 0.05, max: 1, step: 0.05, default: 0.8, label: 'Metal roughness α' },
 };
 
@@ -53,14 +63,23 @@ const DEG = Math.PI / 180;
 const PLOT_QUADRATURE = { nodes: 24 };
 
 function sweep(state) {
-  return state.alphas.map(Number).sort((a, b) => a - b).map((alpha, i) => {
-    const E = ANGLES.map((deg) => albedoGGX(Math.cos(deg * DEG), alpha, {}, PLOT_QUADRATURE));
-    const avg = averageAlbedo((mu) => albedoGGX(mu, alpha));
-    return { alpha, E, loss: E.map((e) => 1 - e), avg, ...seriesStyle(i), atNormal: albedoGGX(1, alpha) };
-  });
+  return state.alphas
+    .map(Number)
+    .sort((a, b) => a - b)
+    .map((alpha, i) => {
+      const E = ANGLES.map((deg) => albedoGGX(Math.cos(deg * DEG), alpha, {}, PLOT_QUADRATURE));
+      const avg = averageAlbedo((mu) => albedoGGX(mu, alpha));
+      return { alpha, E, loss: E.map((e) => 1 - e), avg, ...seriesStyle(i), atNormal: albedoGGX(1, alpha) };
+    });
 }
 
-const TERMS_USED = ['dfgTableUv', 'visibilitySmithGGXCorrelated', 'ndfGGX', 'specularAlbedoKullaConty', 'specularAlbedoTurquin'];
+const TERMS_USED = [
+  'dfgTableUv',
+  'visibilitySmithGGXCorrelated',
+  'ndfGGX',
+  'specularAlbedoKullaConty',
+  'specularAlbedoTurquin',
+];
 
 export function createEnergy(container, initialState = {}, { onStateChange } = {}) {
   const shell = createWidgetShell(container, { name: 'energy', schema, initialState, about: ABOUT, terms: TERMS_USED });
@@ -77,12 +96,25 @@ export function createEnergy(container, initialState = {}, { onStateChange } = {
 
   const base = { xLabel: 'View angle θv (degrees)', x: { min: 0, max: 90 }, xValues: (u, t) => t.map((v) => `${v}°`) };
   const eSpec = () => ({
-    ...base, title: 'Directional albedo E(θv), F = 1', yLabel: 'E', y: { min: 0, max: 1.02 },
-    series: data.map((d) => ({ label: `α = ${d.alpha}`, stroke: d.stroke, dash: d.dash })), data: [ANGLES, ...data.map((d) => d.E)], filename: 'albedo', height: 260,
+    ...base,
+    title: 'Directional albedo E(θv), F = 1',
+    yLabel: 'E',
+    y: { min: 0, max: 1.02 },
+    series: data.map((d) => ({ label: `α = ${d.alpha}`, stroke: d.stroke, dash: d.dash })),
+    data: [ANGLES, ...data.map((d) => d.E)],
+    filename: 'albedo',
+    height: 260,
   });
   const lossSpec = () => ({
-    ...base, title: 'Energy lost to ignoring multiple bounces, 1 − E', yLabel: '1 − E', y: { min: 0, max: 0.8 }, legend: false,
-    series: data.map((d) => ({ label: `α = ${d.alpha}`, stroke: d.stroke, dash: d.dash })), data: [ANGLES, ...data.map((d) => d.loss)], filename: 'energy-loss', height: 220,
+    ...base,
+    title: 'Energy lost to ignoring multiple bounces, 1 − E',
+    yLabel: '1 − E',
+    y: { min: 0, max: 0.8 },
+    legend: false,
+    series: data.map((d) => ({ label: `α = ${d.alpha}`, stroke: d.stroke, dash: d.dash })),
+    data: [ANGLES, ...data.map((d) => d.loss)],
+    filename: 'energy-loss',
+    height: 220,
   });
   const ePlot = createPlot(plots, eSpec());
   const lossPlot = createPlot(plots, lossSpec());
@@ -90,30 +122,53 @@ export function createEnergy(container, initialState = {}, { onStateChange } = {
   /** The text for screen readers. */
   const describe = (metal) => {
     const comp = shell.state.compensation;
-    const compensated = comp === 'none' ? '' : ` With ${schema.compensation.options[comp]} every sphere reflects all of it and vanishes.`;
-    shell.describe('Spheres in a uniform white environment (F = 1); a sphere that loses no energy vanishes into it.' + compensated + ' ' +
-      `${data.map((d) => `α ${d.alpha}: albedo ${d.atNormal.toFixed(3)} head-on, ${d.avg.toFixed(3)} on average, ${((1 - d.avg) * 100).toFixed(1)}% lost`).join('; ') || 'No roughness chosen'}. ` +
-      `${metal.metal.name} at α ${metal.alpha} head-on: single scattering ${metal.curves.none[0].map((x) => x.toFixed(2)).join(', ')}, ` +
-      `random walk ${metal.walk ? metal.walk[0].albedo.map((x) => x.toFixed(2)).join(', ') : 'still running'} (R, G, B).`, spheres.canvas);
+    const compensated =
+      comp === 'none' ? '' : ` With ${schema.compensation.options[comp]} every sphere reflects all of it and vanishes.`;
+    shell.describe(
+      'Spheres in a uniform white environment (F = 1); a sphere that loses no energy vanishes into it.' +
+        compensated +
+        ' ' +
+        `${data.map((d) => `α ${d.alpha}: albedo ${d.atNormal.toFixed(3)} head-on, ${d.avg.toFixed(3)} on average, ${((1 - d.avg) * 100).toFixed(1)}% lost`).join('; ') || 'No roughness chosen'}. ` +
+        `${metal.metal.name} at α ${metal.alpha} head-on: single scattering ${metal.curves.none[0].map((x) => x.toFixed(2)).join(', ')}, ` +
+        `random walk ${metal.walk ? metal.walk[0].albedo.map((x) => x.toFixed(2)).join(', ') : 'still running'} (R, G, B).`,
+      spheres.canvas,
+    );
   };
   const render = () => {
-    table.innerHTML = '<table class="data-table compact"><caption>Albedo with F = 1 (GGX, height-correlated Smith)</caption>' +
+    table.innerHTML =
+      '<table class="data-table compact"><caption>Albedo with F = 1 (GGX, height-correlated Smith)</caption>' +
       '<thead><tr><th>α</th><th>E at normal incidence</th><th>E averaged over the hemisphere</th><th>energy lost on average</th></tr></thead><tbody>' +
-      data.map((d) => `<tr><td><span class="swatch" style="background:${d.stroke}"></span> ${d.alpha}</td><td>${d.atNormal.toFixed(4)}</td><td>${d.avg.toFixed(4)}</td><td>${((1 - d.avg) * 100).toFixed(1)}%</td></tr>`).join('') +
+      data
+        .map(
+          (d) =>
+            `<tr><td><span class="swatch" style="background:${d.stroke}"></span> ${d.alpha}</td><td>${d.atNormal.toFixed(4)}</td><td>${d.avg.toFixed(4)}</td><td>${((1 - d.avg) * 100).toFixed(1)}%</td></tr>`,
+        )
+        .join('') +
       '</tbody></table>';
     const comp = shell.state.compensation;
     if (comp !== 'none') lossTable ??= createAlbedoTableTexture();
-    spheres.setCells(data.map((d) => ({
-      label: `α = ${d.alpha}`,
-      defines: FURNACE_DEFINES[comp],
-      uniforms: { uAlpha: d.alpha, uDfg: dfg, uAlbedoTableGGX: lossTable },
-      probe: (a) => {
-        const e = albedoGGX(a.nv, d.alpha);
-        const rows = [['E(n·v), F = 1', e.toFixed(4)], ['energy lost', `${((1 - e) * 100).toFixed(1)}%`]];
-        if (comp === 'none') return rows;
-        return [...rows, [`with ${schema.compensation.options[comp]}`, specularAlbedoFromTable(albedoTableOnce(), a.nv, d.alpha, 1, comp).toFixed(4)]];
-      },
-    })));
+    spheres.setCells(
+      data.map((d) => ({
+        label: `α = ${d.alpha}`,
+        defines: FURNACE_DEFINES[comp],
+        uniforms: { uAlpha: d.alpha, uDfg: dfg, uAlbedoTableGGX: lossTable },
+        probe: (a) => {
+          const e = albedoGGX(a.nv, d.alpha);
+          const rows = [
+            ['E(n·v), F = 1', e.toFixed(4)],
+            ['energy lost', `${((1 - e) * 100).toFixed(1)}%`],
+          ];
+          if (comp === 'none') return rows;
+          return [
+            ...rows,
+            [
+              `with ${schema.compensation.options[comp]}`,
+              specularAlbedoFromTable(albedoTableOnce(), a.nv, d.alpha, 1, comp).toFixed(4),
+            ],
+          ];
+        },
+      })),
+    );
     describe(metalNow());
   };
   render();

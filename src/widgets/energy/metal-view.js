@@ -9,9 +9,15 @@ import { linearToSrgb } from '../../math/color.js';
 import { materialByKey } from '../../math/materials.js';
 import { WALK_DEGREES, WALK_PATHS, albedoCurves, saturation } from './compensation.js';
 
-const CHANNELS = [['R', '#c0392b'], ['G', '#27ae60'], ['B', '#2c6fbb']];
+const CHANNELS = [
+  ['R', '#c0392b'],
+  ['G', '#27ae60'],
+  ['B', '#2c6fbb'],
+];
 const MODELS = [
-  ['none', 'single scattering', [2, 4]], ['kullaConty', 'Kulla–Conty', undefined], ['turquin', 'Turquin', [9, 4]],
+  ['none', 'single scattering', [2, 4]],
+  ['kullaConty', 'Kulla–Conty', undefined],
+  ['turquin', 'Turquin', [9, 4]],
 ];
 const DEGREES = [...new Set([...Array.from({ length: 45 }, (_, i) => 2 * i), ...WALK_DEGREES])].sort((a, b) => a - b);
 
@@ -55,8 +61,15 @@ function plotSpec({ metal, alpha, curves, walk }) {
   });
   return {
     title: `${metal.name} (linear F0 ${metal.linear.join(', ')}) at α = ${alpha}: albedo per channel, all bounces`,
-    xLabel: 'View angle θv (degrees)', yLabel: 'albedo', x: { min: 0, max: 90 }, y: { min: 0, max: 1.02 },
-    xValues: (u, t) => t.map((v) => `${v}°`), series, data, filename: `metal-albedo-${metal.key}`, height: 280,
+    xLabel: 'View angle θv (degrees)',
+    yLabel: 'albedo',
+    x: { min: 0, max: 90 },
+    y: { min: 0, max: 1.02 },
+    xValues: (u, t) => t.map((v) => `${v}°`),
+    series,
+    data,
+    filename: `metal-albedo-${metal.key}`,
+    height: 280,
   };
 }
 
@@ -64,14 +77,18 @@ function swatchTable({ metal, alpha, curves, walk }) {
   const walkRow = [`random walk (${WALK_PATHS / 1000}k paths${walk ? '' : ', running'})`, walk?.[0].albedo];
   const rows = [...MODELS.map(([key, name]) => [name, curves[key][0]]), walkRow];
   const swatch = (rgb) => `<span class="swatch" style="background:${rgbToHex(rgb.map(linearToSrgb))}"></span>`;
-  const row = ([name, rgb]) => (rgb
-    ? `<tr><td>${name}</td><td>${swatch(rgb)}</td><td>${rgb.map((x) => x.toFixed(3)).join(', ')}</td>` +
-      `<td>${saturation(rgb).toFixed(3)}</td></tr>`
-    : `<tr class="walk-pending"><td>${name}</td><td></td><td>…</td><td>…</td></tr>`);
-  return `<table class="data-table compact"><caption>${metal.name} at α = ${alpha}, seen head-on: the colour each ` +
+  const row = ([name, rgb]) =>
+    rgb
+      ? `<tr><td>${name}</td><td>${swatch(rgb)}</td><td>${rgb.map((x) => x.toFixed(3)).join(', ')}</td>` +
+        `<td>${saturation(rgb).toFixed(3)}</td></tr>`
+      : `<tr class="walk-pending"><td>${name}</td><td></td><td>…</td><td>…</td></tr>`;
+  return (
+    `<table class="data-table compact"><caption>${metal.name} at α = ${alpha}, seen head-on: the colour each ` +
     'model gives (linear albedo, shown in sRGB)</caption><thead><tr><th>model</th><th>colour</th>' +
     '<th>albedo R, G, B</th><th>saturation (1 − min/max)</th></tr></thead><tbody>' +
-    rows.map(row).join('') + '</tbody></table>';
+    rows.map(row).join('') +
+    '</tbody></table>'
+  );
 }
 
 /**

@@ -7,7 +7,12 @@ import { linearToSrgb } from '../../math/color.js';
 import { METALS, NON_METALS, TABLE_SOURCE, iorFromF0, measuredSource } from '../../math/index.js';
 
 export const schema = {
-  selected: { type: 'enum', options: Object.fromEntries([...METALS, ...NON_METALS].map((m) => [m.key, m.name])), default: 'gold', label: 'Selected' },
+  selected: {
+    type: 'enum',
+    options: Object.fromEntries([...METALS, ...NON_METALS].map((m) => [m.key, m.name])),
+    default: 'gold',
+    label: 'Selected',
+  },
   recomputed: { type: 'bool', default: true, label: 'Show recomputed sRGB' },
 };
 
@@ -32,7 +37,15 @@ function swatch(rgb, title) {
 function buildTable(caption, rows, state, { metal, onPick, onSelect }) {
   const table = document.createElement('table');
   table.className = 'data-table f0-table';
-  const cols = ['Material', 'F(0°) linear', 'F(0°) sRGB (talk)', ...(state.recomputed ? ['sRGB from linear'] : []), metal ? 'Measured n, k from' : 'IOR implied', 'Colour', 'Load into'];
+  const cols = [
+    'Material',
+    'F(0°) linear',
+    'F(0°) sRGB (talk)',
+    ...(state.recomputed ? ['sRGB from linear'] : []),
+    metal ? 'Measured n, k from' : 'IOR implied',
+    'Colour',
+    'Load into',
+  ];
   table.innerHTML = `<caption>${caption}</caption><thead><tr>${cols.map((c) => `<th scope="col">${c}</th>`).join('')}</tr></thead>`;
   const body = table.createTBody();
   for (const m of rows) {
@@ -93,28 +106,45 @@ function buildTable(caption, rows, state, { metal, onPick, onSelect }) {
 const TERMS_USED = ['linearToSrgb', 'srgbToLinear'];
 
 export function createF0Tables(container, initialState = {}, { onStateChange, onPick } = {}) {
-  const shell = createWidgetShell(container, { name: 'f0-tables', schema, initialState, about: ABOUT, terms: TERMS_USED });
+  const shell = createWidgetShell(container, {
+    name: 'f0-tables',
+    schema,
+    initialState,
+    about: ABOUT,
+    terms: TERMS_USED,
+  });
   const holder = document.createElement('div');
   holder.className = 'f0-tables';
   shell.view.append(holder);
   const source = document.createElement('p');
   source.className = 'source';
-  const notes = [...METALS, ...NON_METALS].filter((m) => m.note).map((m) => ` ${m.name}: ${m.note}`).join('');
+  const notes = [...METALS, ...NON_METALS]
+    .filter((m) => m.note)
+    .map((m) => ` ${m.name}: ${m.note}`)
+    .join('');
   source.textContent = `Tables: ${TABLE_SOURCE}. Swatches show the printed sRGB value.${notes}`;
 
   const render = () => {
     const onSelect = (key) => update({ selected: key });
-    const focused = holder.contains(document.activeElement) ? document.activeElement.closest('tr')?.dataset.material : null;
+    const focused = holder.contains(document.activeElement)
+      ? document.activeElement.closest('tr')?.dataset.material
+      : null;
     holder.replaceChildren(
       buildTable('Normal-incidence Fresnel for metals', METALS, shell.state, { metal: true, onPick, onSelect }),
-      buildTable('Normal-incidence Fresnel for non-metals', NON_METALS, shell.state, { metal: false, onPick, onSelect }),
+      buildTable('Normal-incidence Fresnel for non-metals', NON_METALS, shell.state, {
+        metal: false,
+        onPick,
+        onSelect,
+      }),
       source,
     );
     if (focused) holder.querySelector(`tr[data-material="${focused}"]`)?.focus(); // keep the keyboard's place
     const m = [...METALS, ...NON_METALS].find((x) => x.key === shell.state.selected);
     const metal = METALS.includes(m);
-    shell.describe(`Selected: ${m.name}, a ${metal ? 'metal' : 'non-metal'}; F(0°) linear ${fmt(m.linear)}, sRGB ${fmt(m.srgb)}` +
-      `${metal ? '' : `, so an index of refraction near ${iorFromF0(m.linear[0]).toFixed(3)}`}.`);
+    shell.describe(
+      `Selected: ${m.name}, a ${metal ? 'metal' : 'non-metal'}; F(0°) linear ${fmt(m.linear)}, sRGB ${fmt(m.srgb)}` +
+        `${metal ? '' : `, so an index of refraction near ${iorFromF0(m.linear[0]).toFixed(3)}`}.`,
+    );
   };
 
   const update = shell.connect({ title: 'F0 tables', onChanged: render, onStateChange });

@@ -27,8 +27,7 @@ export function curveSpecs({ materials, conductor, ior }) {
     const fitted = conductor !== 'measured';
     if (isMetal(key)) {
       iors.forEach(([eta, k], channel) => specs.push({ key, name: m.name, metal: true, channel, eta, k, fitted }));
-    }
-    else specs.push({ key, name: m.name, metal: false, channel: null, eta: iors[0][0], k: 0 });
+    } else specs.push({ key, name: m.name, metal: false, channel: null, eta: iors[0][0], k: 0 });
   }
   return specs;
 }

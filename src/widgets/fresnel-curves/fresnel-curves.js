@@ -14,14 +14,20 @@ const MATERIAL_OPTIONS = Object.fromEntries([
 ]);
 
 export const schema = {
-  materials: { type: 'set', options: MATERIAL_OPTIONS, default: ['copper', 'aluminum', 'glass-low', 'diamond'], label: 'Materials' },
+  materials: {
+    type: 'set',
+    options: MATERIAL_OPTIONS,
+    default: ['copper', 'aluminum', 'glass-low', 'diamond'],
+    label: 'Materials',
+  },
   ior: { type: 'number', min: 1, max: 3, step: 0.01, default: 1.5, label: 'Custom IOR' },
   conductor: {
     type: 'enum',
     options: CONDUCTOR_MODELS,
     default: 'f0-tint',
     label: 'Metal n, k',
-    hint: 'Talk F0 + edge tint: Gulbrandsen 2014’s fitted n, k (a reparametrisation that reproduces the table, not ' +
+    hint:
+      'Talk F0 + edge tint: Gulbrandsen 2014’s fitted n, k (a reparametrisation that reproduces the table, not ' +
       'optical constants). Measured: published optical constants at 650/550/450 nm.',
   },
   schlick: { type: 'bool', default: true, label: 'Show Schlick' },
@@ -55,7 +61,11 @@ function buildSeries(state) {
   return { angles, curves, bands };
 }
 
-const xAxis = { xLabel: 'Angle of incidence θ (degrees)', x: { min: 0, max: 90 }, xValues: (u, ticks) => ticks.map((t) => `${t}°`) };
+const xAxis = {
+  xLabel: 'Angle of incidence θ (degrees)',
+  x: { min: 0, max: 90 },
+  xValues: (u, ticks) => ticks.map((t) => `${t}°`),
+};
 
 function reflectanceSpec({ angles, curves, bands }, state) {
   const series = [];
@@ -73,20 +83,37 @@ function reflectanceSpec({ angles, curves, bands }, state) {
     .filter((c) => c.spec.metal)
     .map((c, i) => ({ x: 2 + 5 * (i % 3), y: c.exact[at], text: CHANNELS[c.spec.channel], color: c.stroke }));
   return {
-    title: 'Fresnel reflectance F(θ) — solid: exact, dashed: Schlick', ...xAxis, yLabel: 'Reflectance (linear)',
-    y: { min: 0, max: 1 }, series, data, bands, annotations, legend: false, filename: 'fresnel-reflectance', height: 320,
+    title: 'Fresnel reflectance F(θ) — solid: exact, dashed: Schlick',
+    ...xAxis,
+    yLabel: 'Reflectance (linear)',
+    y: { min: 0, max: 1 },
+    series,
+    data,
+    bands,
+    annotations,
+    legend: false,
+    filename: 'fresnel-reflectance',
+    height: 320,
   };
 }
 
 function errorSpec({ angles, curves, bands }) {
   return {
-    title: 'Schlick − exact', ...xAxis, yLabel: 'Error (reflectance)', y: null,
+    title: 'Schlick − exact',
+    ...xAxis,
+    yLabel: 'Error (reflectance)',
+    y: null,
     series: curves.map((c) => ({ label: c.label, stroke: c.stroke, width: 1.5 })),
-    data: [angles, ...curves.map((c) => c.error)], bands, legend: false, filename: 'fresnel-schlick-error', height: 220,
+    data: [angles, ...curves.map((c) => c.error)],
+    bands,
+    legend: false,
+    filename: 'fresnel-schlick-error',
+    height: 220,
   };
 }
 
-const FITTED_NOTE = '† Fitted, not measured: Gulbrandsen 2014’s n, k, chosen to reproduce the talk’s F(0°) and the ' +
+const FITTED_NOTE =
+  '† Fitted, not measured: Gulbrandsen 2014’s n, k, chosen to reproduce the talk’s F(0°) and the ' +
   'measured edge tint. They give the curve its shape but are not the metal’s optical constants (choose “Measured n, k” ' +
   'for those).';
 
@@ -111,7 +138,15 @@ function renderReadout(el, { angles, curves }, index) {
     sw.style.background = c.stroke;
     name.append(sw, ` ${c.label}`);
     const mark = c.spec.fitted ? '†' : '';
-    for (const text of [`${c.spec.eta.toFixed(3)}${mark}`, `${c.spec.k.toFixed(3)}${mark}`, c.f0.toFixed(3), c.exact[i].toFixed(4), c.schlick[i].toFixed(4), Math.abs(c.maxError).toFixed(4), `${c.maxErrorAt.toFixed(2)}°`]) {
+    for (const text of [
+      `${c.spec.eta.toFixed(3)}${mark}`,
+      `${c.spec.k.toFixed(3)}${mark}`,
+      c.f0.toFixed(3),
+      c.exact[i].toFixed(4),
+      c.schlick[i].toFixed(4),
+      Math.abs(c.maxError).toFixed(4),
+      `${c.maxErrorAt.toFixed(2)}°`,
+    ]) {
       tr.insertCell().textContent = text;
     }
   }
@@ -121,7 +156,13 @@ function renderReadout(el, { angles, curves }, index) {
 const TERMS_USED = ['fresnelDielectric', 'fresnelConductor', 'fresnelSchlick']; // those with a GLSL twin
 
 export function createFresnelCurves(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'fresnel-curves', schema, initialState, about: ABOUT, terms: TERMS_USED });
+  const shell = createWidgetShell(container, {
+    name: 'fresnel-curves',
+    schema,
+    initialState,
+    about: ABOUT,
+    terms: TERMS_USED,
+  });
   const plots = document.createElement('div');
   plots.className = 'plots';
   shell.view.append(plots);
@@ -139,7 +180,9 @@ export function createFresnelCurves(container, initialState = {}, { onStateChang
     const worst = data.curves.reduce((a, c) => (!a || Math.abs(c.maxError) > Math.abs(a.maxError) ? c : a), null);
     shell.describe(
       `Fresnel reflectance against angle of incidence for ${data.curves.map((c) => `${c.label} (F(0°) ${c.f0.toFixed(3)})`).join(', ') || 'no material'}` +
-        (worst ? `. Schlick's largest error: ${worst.maxError.toFixed(4)} for ${worst.label} at ${worst.maxErrorAt.toFixed(1)}°.` : '.'),
+        (worst
+          ? `. Schlick's largest error: ${worst.maxError.toFixed(4)} for ${worst.label} at ${worst.maxErrorAt.toFixed(1)}°.`
+          : '.'),
     );
   };
   describe();

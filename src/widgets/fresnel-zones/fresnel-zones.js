@@ -30,7 +30,12 @@ const MODES = {
 export const schema = {
   mode: { type: 'enum', options: MODES, default: 'fresnel-nv', label: 'Mode' },
   shape: { type: 'enum', options: SHAPES, default: 'sphere', label: 'Shape' },
-  camera: { type: 'enum', options: { orthographic: 'Orthographic', perspective: 'Perspective' }, default: 'orthographic', label: 'Camera' },
+  camera: {
+    type: 'enum',
+    options: { orthographic: 'Orthographic', perspective: 'Perspective' },
+    default: 'orthographic',
+    label: 'Camera',
+  },
   material: {
     type: 'enum',
     options: Object.fromEntries([...NON_METALS, ...METALS].map((m) => [m.key, m.name])),
@@ -81,10 +86,24 @@ function defines(state, stats) {
   return d;
 }
 
-const TERMS_USED = ['fresnelZone', 'fresnelDielectric', 'fresnelConductor', 'fresnelSchlick', 'ndfGGX', 'visibilitySmithGGXCorrelated', 'linearToSrgb'];
+const TERMS_USED = [
+  'fresnelZone',
+  'fresnelDielectric',
+  'fresnelConductor',
+  'fresnelSchlick',
+  'ndfGGX',
+  'visibilitySmithGGXCorrelated',
+  'linearToSrgb',
+];
 
 export function createFresnelZones(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'fresnel-zones', schema, initialState, about: ABOUT, terms: TERMS_USED });
+  const shell = createWidgetShell(container, {
+    name: 'fresnel-zones',
+    schema,
+    initialState,
+    about: ABOUT,
+    terms: TERMS_USED,
+  });
   const viewCol = document.createElement('div');
   viewCol.className = 'view-column';
   shell.view.append(viewCol);
@@ -102,12 +121,15 @@ export function createFresnelZones(container, initialState = {}, { onStateChange
   const materialFor = (d) => {
     const key = JSON.stringify(d);
     if (!materials.has(key)) {
-      materials.set(key, new THREE.ShaderMaterial({
-        glslVersion: THREE.GLSL3,
-        uniforms,
-        vertexShader: SHADER_CHUNKS['surface.vert.glsl'],
-        fragmentShader: assembleGlsl(SHADER_CHUNKS['fresnel-zones.frag.glsl'], { defines: d }),
-      }));
+      materials.set(
+        key,
+        new THREE.ShaderMaterial({
+          glslVersion: THREE.GLSL3,
+          uniforms,
+          vertexShader: SHADER_CHUNKS['surface.vert.glsl'],
+          fragmentShader: assembleGlsl(SHADER_CHUNKS['fresnel-zones.frag.glsl'], { defines: d }),
+        }),
+      );
     }
     return materials.get(key);
   };
@@ -116,19 +138,24 @@ export function createFresnelZones(container, initialState = {}, { onStateChange
   scene.background = new THREE.Color('#22252b');
   const mesh = new THREE.Mesh(createShapeGeometry(shell.state.shape), undefined);
   scene.add(mesh);
-  const cameras = { orthographic: new THREE.OrthographicCamera(), perspective: new THREE.PerspectiveCamera(30, 1, 0.1, 20) };
+  const cameras = {
+    orthographic: new THREE.OrthographicCamera(),
+    perspective: new THREE.PerspectiveCamera(30, 1, 0.1, 20),
+  };
   cameras.perspective.position.set(0, 0, 1.1 / Math.sin((15 * Math.PI) / 180));
   cameras.orthographic.position.set(0, 0, 5);
   const fit = (w, h) => {
     const aspect = w / h;
     const half = 1.1;
     const o = cameras.orthographic;
-    [o.left, o.right, o.top, o.bottom] = aspect >= 1 ? [-half * aspect, half * aspect, half, -half] : [-half, half, half / aspect, -half / aspect];
+    [o.left, o.right, o.top, o.bottom] =
+      aspect >= 1 ? [-half * aspect, half * aspect, half, -half] : [-half, half, half / aspect, -half / aspect];
     o.near = 0.1;
     o.far = 10;
     o.updateProjectionMatrix();
     cameras.perspective.aspect = aspect;
-    cameras.perspective.fov = aspect >= 1 ? 30 : (2 * Math.atan(Math.tan((15 * Math.PI) / 180) / aspect) * 180) / Math.PI;
+    cameras.perspective.fov =
+      aspect >= 1 ? 30 : (2 * Math.atan(Math.tan((15 * Math.PI) / 180) / aspect) * 180) / Math.PI;
     cameras.perspective.updateProjectionMatrix();
   };
   const camera = () => cameras[shell.state.camera];
@@ -243,7 +270,14 @@ export function createFresnelZones(container, initialState = {}, { onStateChange
       ['zone of n·v / l·h', `${zoneOf(a.nv)} / ${zoneOf(a.lh)}`],
       ['D GGX(n·h)', ndfGGX(a.nh, s.alpha).toPrecision(4)],
       ['V Smith corr.', visibilitySmithGGXCorrelated(a.nl, a.nv, s.alpha).toPrecision(4)],
-      ['π·D·V/4·(n·l)', punctualRadiance(microfacetBRDFAt(a, { F: 'one', D: 'ggx', V: 'smithGGXCorrelated', alpha: s.alpha }), a.nl, 1).toPrecision(4)],
+      [
+        'π·D·V/4·(n·l)',
+        punctualRadiance(
+          microfacetBRDFAt(a, { F: 'one', D: 'ggx', V: 'smithGGXCorrelated', alpha: s.alpha }),
+          a.nl,
+          1,
+        ).toPrecision(4),
+      ],
     ];
   };
 
@@ -261,10 +295,23 @@ export function createFresnelZones(container, initialState = {}, { onStateChange
       isBusy: () => lightControl.dragging,
     });
     createToolbar(viewCol, [
-      { label: 'Save PNG', onClick: () => { draw(viewport.renderer); canvasToPng(viewport.canvas, `fresnel-zones-${shell.state.mode}.png`); } },
+      {
+        label: 'Save PNG',
+        onClick: () => {
+          draw(viewport.renderer);
+          canvasToPng(viewport.canvas, `fresnel-zones-${shell.state.mode}.png`);
+        },
+      },
       {
         label: 'Save CSV',
-        onClick: () => downloadCsv([{ name: 'zone', values: ZONE_LABELS }, { name: 'share', values: zoneShares }], `fresnel-zones-${shell.state.mode}.csv`),
+        onClick: () =>
+          downloadCsv(
+            [
+              { name: 'zone', values: ZONE_LABELS },
+              { name: 'share', values: zoneShares },
+            ],
+            `fresnel-zones-${shell.state.mode}.csv`,
+          ),
       },
     ]);
   }
@@ -273,7 +320,10 @@ export function createFresnelZones(container, initialState = {}, { onStateChange
   function renderLegend() {
     const s = shell.state;
     const weighted = s.mode === 'zones-lh-weighted';
-    const analytic = s.shape === 'sphere' && s.camera === 'orthographic' && !s.mode.startsWith('zones-lh') ? sphereZoneFractions() : null;
+    const analytic =
+      s.shape === 'sphere' && s.camera === 'orthographic' && !s.mode.startsWith('zones-lh')
+        ? sphereZoneFractions()
+        : null;
     const what = weighted ? 'share of reflected light' : 'share of covered pixels';
     legend.replaceChildren();
     const head = document.createElement('div');
@@ -300,7 +350,8 @@ export function createFresnelZones(container, initialState = {}, { onStateChange
       avg.className = 'zone-average';
       avg.textContent =
         `Averaged over ${AVERAGE_LIGHTS} light directions all around the object (GGX α ${s.alpha}): ` +
-        averageShares.map((z, i) => `${ZONE_LABELS[i].split(' (')[0]} ${(z * 100).toFixed(1)}%`).join(', ') + '.';
+        averageShares.map((z, i) => `${ZONE_LABELS[i].split(' (')[0]} ${(z * 100).toFixed(1)}%`).join(', ') +
+        '.';
       legend.append(avg);
     }
     shell.describe(describeView(), viewport?.canvas);
@@ -313,14 +364,19 @@ export function createFresnelZones(container, initialState = {}, { onStateChange
     const pct = (x) => `${(x * 100).toFixed(1)}%`;
     const zones = (xs) => xs.map((z, i) => `${ZONE_LABELS[i].split(' (')[0]} ${pct(z)}`).join(', ');
     const f0 = fresnelParams(s.material, s.conductor).f0;
-    const picture = s.mode === 'fresnel-nv'
-      ? `${s.fresnel} Fresnel reflectance of n·v: ${f0.map(pct).join(' / ')} where the surface faces the viewer, rising to 100% at the silhouette`
-      : `${MODES[s.mode]}${s.mode === 'zones-lh-weighted' ? ` (GGX α ${s.alpha})` : ''}, zones coloured ${paletteColourNames(s.palette)}`;
+    const picture =
+      s.mode === 'fresnel-nv'
+        ? `${s.fresnel} Fresnel reflectance of n·v: ${f0.map(pct).join(' / ')} where the surface faces the viewer, rising to 100% at the silhouette`
+        : `${MODES[s.mode]}${s.mode === 'zones-lh-weighted' ? ` (GGX α ${s.alpha})` : ''}, zones coloured ${paletteColourNames(s.palette)}`;
     const shareOf = s.mode === 'zones-lh-weighted' ? 'reflected light' : 'covered pixels';
-    return `${SHAPES[s.shape]} (${s.camera}), ${materialByKey(s.material).name}: ${picture}. ` +
+    return (
+      `${SHAPES[s.shape]} (${s.camera}), ${materialByKey(s.material).name}: ${picture}. ` +
       `Light ${s.lightTheta.toFixed(0)}° from the view direction, ${s.lightPhi.toFixed(0)}° around it${s.lightTheta > 90 ? ' (behind the object)' : ''}. ` +
       `Share of ${shareOf} by zone of ${lh ? 'l·h' : 'n·v'}: ${zones(zoneShares)}.` +
-      (averageShares && s.mode === 'zones-lh-weighted' ? ` Averaged over ${AVERAGE_LIGHTS} light directions: ${zones(averageShares)}.` : '');
+      (averageShares && s.mode === 'zones-lh-weighted'
+        ? ` Averaged over ${AVERAGE_LIGHTS} light directions: ${zones(averageShares)}.`
+        : '')
+    );
   }
   if (!viewport) renderLegend();
 

@@ -15,7 +15,12 @@ export const schema = {
   diffuse: { ...MATERIAL_FIELDS.diffuse, default: '#2f4f7f' },
   alpha: { ...MATERIAL_FIELDS.alpha, default: 0.1 },
   show: { type: 'enum', options: { images: 'Images', errors: 'Error images' }, default: 'images', label: 'Show' },
-  refSamples: { type: 'enum', options: { 128: '128', 512: '512', 2048: '2048' }, default: '512', label: 'Reference samples / pixel' },
+  refSamples: {
+    type: 'enum',
+    options: { 128: '128', 512: '512', 2048: '2048' },
+    default: '512',
+    label: 'Reference samples / pixel',
+  },
   exposure: { type: 'number', min: 0.1, max: 8, step: 0.05, default: 0.8, label: 'Exposure' },
   errorScale: { type: 'number', min: 0.005, max: 1, step: 0.005, default: 0.1, label: 'Error image: full scale' },
 };
@@ -39,10 +44,36 @@ const sky = { intensity: 1 };
 const sunSphere = { dir: SUN.dir, sin: SUN.sin, radiance: SUN.radiance };
 // each model: its lights, which map its sky is (with the sun painted in, or without), and where it fails
 export const MODELS = [
-  { key: 'ibl', name: 'Image-based', lights: { env: sky }, map: 'sky', fails: 'The sun is one more bright patch of a prefiltered map: its highlight is blurred by the map’s resolution and the prefilter assumes n = v = r, wrong at grazing angles.' },
-  { key: 'area', name: 'Area light + IBL sky', lights: { env: sky, sphere: sunSphere }, map: 'sky-no-sun', fails: 'The representative point reshapes the highlight for the sun’s size, with an energy factor that is only approximate; the sky is still prefiltered.' },
-  { key: 'punctual', name: 'Punctual light + IBL sky', lights: { env: sky, punctual: { dir: SUN.dir, cLight: sunCLight } }, map: 'sky-no-sun', fails: 'The sun has no size: on smooth surfaces its highlight is a needle far too bright and far too small.' },
-  { key: 'ambient', name: 'Ambient only', lights: { ambient: skyMean() }, map: 'furnace', fails: 'No direction at all: no shading from the sun, no sky-to-ground gradient, no reflections.' },
+  {
+    key: 'ibl',
+    name: 'Image-based',
+    lights: { env: sky },
+    map: 'sky',
+    fails:
+      'The sun is one more bright patch of a prefiltered map: its highlight is blurred by the map’s resolution and the prefilter assumes n = v = r, wrong at grazing angles.',
+  },
+  {
+    key: 'area',
+    name: 'Area light + IBL sky',
+    lights: { env: sky, sphere: sunSphere },
+    map: 'sky-no-sun',
+    fails:
+      'The representative point reshapes the highlight for the sun’s size, with an energy factor that is only approximate; the sky is still prefiltered.',
+  },
+  {
+    key: 'punctual',
+    name: 'Punctual light + IBL sky',
+    lights: { env: sky, punctual: { dir: SUN.dir, cLight: sunCLight } },
+    map: 'sky-no-sun',
+    fails: 'The sun has no size: on smooth surfaces its highlight is a needle far too bright and far too small.',
+  },
+  {
+    key: 'ambient',
+    name: 'Ambient only',
+    lights: { ambient: skyMean() },
+    map: 'furnace',
+    fails: 'No direction at all: no shading from the sun, no sky-to-ground gradient, no reflections.',
+  },
 ];
 
 const ABOUT =
@@ -57,7 +88,11 @@ const ABOUT =
   'near-mirrors, and the map would smear it over a whole texel.';
 
 const TERMS_USED = [
-  'dfgTableUv', 'sphereLightRepresentativeDir', 'sphereLightNormalization', 'sphereLightCLight', 'sampleCone',
+  'dfgTableUv',
+  'sphereLightRepresentativeDir',
+  'sphereLightNormalization',
+  'sphereLightCLight',
+  'sampleCone',
 ];
 const TERMS = { F: 'schlick', D: 'ggx', V: 'smithGGXCorrelated', diffuse: 'lambert', layers: 'both' };
 const METHODS = { env: 'split-sum', area: 'representative', samples: 1 };
@@ -65,7 +100,11 @@ const fmt = (x, digits = 3) => (Number.isFinite(x) ? x.toPrecision(digits) : '�
 
 export function createLightingModels(container, initialState = {}, { onStateChange } = {}) {
   const shell = createWidgetShell(container, {
-    name: 'lighting-models', schema, initialState, about: ABOUT, terms: TERMS_USED,
+    name: 'lighting-models',
+    schema,
+    initialState,
+    about: ABOUT,
+    terms: TERMS_USED,
   });
   const table = document.createElement('div');
   table.className = 'lab-readout';
@@ -107,11 +146,20 @@ export function createLightingModels(container, initialState = {}, { onStateChan
       <thead><tr><th>Illumination model</th><th>GPU time (${view.resolution}² px)</th><th>RMS error</th><th>relative</th><th>Where it fails</th></tr></thead><tbody>
       ${results.map((r) => `<tr><th scope="row">${r.name}</th><td>${fmt(r.ms)} ms</td><td>${fmt(r.rms)}</td><td>${fmt(r.relative * 100)} %</td><td>${r.fails}</td></tr>`).join('')}
       </tbody></table>`;
-    shell.describe(`Lighting models: a sphere (${st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material}, roughness α ${st.alpha}) under a sky with a sun, by the reference and four illumination models. ${samples < Number(st.refSamples) ? 'The reference is still converging.' : `Relative RMS errors: ${results.map((r) => `${r.name} ${fmt(r.relative * 100)} %`).join(', ')}.`}`, view.canvas);
+    shell.describe(
+      `Lighting models: a sphere (${st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material}, roughness α ${st.alpha}) under a sky with a sun, by the reference and four illumination models. ${samples < Number(st.refSamples) ? 'The reference is still converging.' : `Relative RMS errors: ${results.map((r) => `${r.name} ${fmt(r.relative * 100)} %`).join(', ')}.`}`,
+      view.canvas,
+    );
   };
 
   const onReset = () => ([approxKey, refKey] = ['', '']);
-  const view = createLabView(shell.view, { label: 'Lighting models', resolution: 160, slots: MODELS.length, frame, onReset });
+  const view = createLabView(shell.view, {
+    label: 'Lighting models',
+    resolution: 160,
+    slots: MODELS.length,
+    frame,
+    onReset,
+  });
   view.setAspect(MODELS.length + 1);
   shell.view.append(table);
   const onChanged = () => view.setDisplay({ exposure: shell.state.exposure, errorScale: shell.state.errorScale });

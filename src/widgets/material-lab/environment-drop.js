@@ -5,9 +5,17 @@ const TEXT = 'Load an .hdr / .exr environment…';
 export function attachEnvironmentDrop(root, { onFile, maxBytes, accept = '.hdr,.exr', text = TEXT }) {
   const bar = document.createElement('div');
   bar.className = 'env-drop';
-  const input = Object.assign(document.createElement('input'), { type: 'file', accept, className: 'visually-hidden', id: `env-file-${Math.random().toString(36).slice(2)}` });
+  const input = Object.assign(document.createElement('input'), {
+    type: 'file',
+    accept,
+    className: 'visually-hidden',
+    id: `env-file-${Math.random().toString(36).slice(2)}`,
+  });
   const button = Object.assign(document.createElement('button'), { type: 'button', textContent: text });
-  const status = Object.assign(document.createElement('span'), { className: 'env-drop-status', textContent: 'or drop one on the widget' });
+  const status = Object.assign(document.createElement('span'), {
+    className: 'env-drop-status',
+    textContent: 'or drop one on the widget',
+  });
   button.addEventListener('click', () => input.click());
   bar.append(button, input, status);
   root.querySelector('.widget-controls')?.append(bar);

@@ -14,52 +14,209 @@ import { attachEnvironmentDrop } from './environment-drop.js';
 import { createMeasuredMaterial } from './measured-material.js';
 import { MERL_TEXTURE_BYTES } from '../measured-brdf/texture-size.js';
 
-export const ENV_METHODS = { 'split-sum': 'Split sum (prefiltered + DFG)', importance: 'Importance sampling, N samples', mirror: 'Mirror: F(v, n) × environment', pmrem: 'three.js PMREM (MeshPhysicalMaterial)' };
+export const ENV_METHODS = {
+  'split-sum': 'Split sum (prefiltered + DFG)',
+  importance: 'Importance sampling, N samples',
+  mirror: 'Mirror: F(v, n) × environment',
+  pmrem: 'three.js PMREM (MeshPhysicalMaterial)',
+};
 export const AREA_METHODS = { representative: 'Representative point (Karis)', centre: 'Punctual at the centre' };
 
 export const schema = {
   ...MATERIAL_FIELDS,
-  layers: { group: 'BRDF terms', type: 'enum', options: { both: 'Specular + diffuse', specular: 'Specular only', diffuse: 'Diffuse only' }, default: 'both', label: 'Layers' },
+  layers: {
+    group: 'BRDF terms',
+    type: 'enum',
+    options: { both: 'Specular + diffuse', specular: 'Specular only', diffuse: 'Diffuse only' },
+    default: 'both',
+    label: 'Layers',
+  },
   fresnel: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.fresnel, default: 'schlick', label: 'F' },
   ndf: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.ndf, default: 'ggx', label: 'D' },
   visibility: {
-    group: 'BRDF terms', type: 'enum', options: LAB_TERMS.visibility, default: 'smithGGXCorrelated', label: 'V',
+    group: 'BRDF terms',
+    type: 'enum',
+    options: LAB_TERMS.visibility,
+    default: 'smithGGXCorrelated',
+    label: 'V',
   },
   compensation: {
-    group: 'BRDF terms', type: 'enum', options: { none: 'None', kullaConty: 'Kulla–Conty 2017', turquin: 'Turquin 2019' },
-    default: 'none', label: 'Multiple scattering',
+    group: 'BRDF terms',
+    type: 'enum',
+    options: { none: 'None', kullaConty: 'Kulla–Conty 2017', turquin: 'Turquin 2019' },
+    default: 'none',
+    label: 'Multiple scattering',
   },
   diffuseModel: {
-    group: 'BRDF terms', type: 'enum', options: LAB_TERMS.diffuse, default: 'lambert', label: 'Diffuse term',
+    group: 'BRDF terms',
+    type: 'enum',
+    options: LAB_TERMS.diffuse,
+    default: 'lambert',
+    label: 'Diffuse term',
   },
   sigma: {
-    group: 'BRDF terms', type: 'number', min: 0, max: 60, step: 1, default: 20, label: 'Oren-Nayar σ', unit: '°',
+    group: 'BRDF terms',
+    type: 'number',
+    min: 0,
+    max: 60,
+    step: 1,
+    default: 20,
+    label: 'Oren-Nayar σ',
+    unit: '°',
     hint: SIGMA_HINT,
   },
   brdfSource: {
-    group: 'BRDF terms', type: 'enum', default: 'model', label: 'BRDF',
+    group: 'BRDF terms',
+    type: 'enum',
+    default: 'model',
+    label: 'BRDF',
     options: { model: 'The model (terms above)', measured: 'Measured (a dropped MERL file)' },
   },
   punctual: { group: 'Punctual light', type: 'bool', default: false, label: 'Punctual light' },
-  lightTheta: { group: 'Punctual light', type: 'number', min: 0, max: 180, step: 1, default: 45, label: 'Punctual θ from view', unit: '°' },
-  lightPhi: { group: 'Punctual light', type: 'number', min: -180, max: 180, step: 1, default: 45, label: 'Punctual φ', unit: '°' },
-  cLight: { group: 'Punctual light', type: 'number', min: 0, max: 10, step: 0.05, default: 1, label: 'Punctual c_light' },
+  lightTheta: {
+    group: 'Punctual light',
+    type: 'number',
+    min: 0,
+    max: 180,
+    step: 1,
+    default: 45,
+    label: 'Punctual θ from view',
+    unit: '°',
+  },
+  lightPhi: {
+    group: 'Punctual light',
+    type: 'number',
+    min: -180,
+    max: 180,
+    step: 1,
+    default: 45,
+    label: 'Punctual φ',
+    unit: '°',
+  },
+  cLight: {
+    group: 'Punctual light',
+    type: 'number',
+    min: 0,
+    max: 10,
+    step: 0.05,
+    default: 1,
+    label: 'Punctual c_light',
+  },
   area: { group: 'Sphere light', type: 'bool', default: false, label: 'Sphere light' },
-  areaTheta: { group: 'Sphere light', type: 'number', min: 0, max: 180, step: 1, default: 40, label: 'Sphere light θ', unit: '°' },
-  areaPhi: { group: 'Sphere light', type: 'number', min: -180, max: 180, step: 1, default: 135, label: 'Sphere light φ', unit: '°' },
-  areaRadius: { group: 'Sphere light', type: 'number', min: 0.5, max: 30, step: 0.5, default: 8, label: 'Sphere light radius', unit: '°' },
-  areaCLight: { group: 'Sphere light', type: 'number', min: 0, max: 10, step: 0.05, default: 1, label: 'Sphere light c_light' },
-  areaMethod: { group: 'Sphere light', type: 'enum', options: AREA_METHODS, default: 'representative', label: 'Sphere light by' },
+  areaTheta: {
+    group: 'Sphere light',
+    type: 'number',
+    min: 0,
+    max: 180,
+    step: 1,
+    default: 40,
+    label: 'Sphere light θ',
+    unit: '°',
+  },
+  areaPhi: {
+    group: 'Sphere light',
+    type: 'number',
+    min: -180,
+    max: 180,
+    step: 1,
+    default: 135,
+    label: 'Sphere light φ',
+    unit: '°',
+  },
+  areaRadius: {
+    group: 'Sphere light',
+    type: 'number',
+    min: 0.5,
+    max: 30,
+    step: 0.5,
+    default: 8,
+    label: 'Sphere light radius',
+    unit: '°',
+  },
+  areaCLight: {
+    group: 'Sphere light',
+    type: 'number',
+    min: 0,
+    max: 10,
+    step: 0.05,
+    default: 1,
+    label: 'Sphere light c_light',
+  },
+  areaMethod: {
+    group: 'Sphere light',
+    type: 'enum',
+    options: AREA_METHODS,
+    default: 'representative',
+    label: 'Sphere light by',
+  },
   env: { group: 'Environment', type: 'bool', default: true, label: 'Environment' },
-  environment: { group: 'Environment', type: 'enum', options: ENVIRONMENTS, default: 'studio', label: 'Environment map' },
-  envIntensity: { group: 'Environment', type: 'number', min: 0, max: 4, step: 0.05, default: 1, label: 'Environment intensity' },
-  envMethod: { group: 'Environment', type: 'enum', options: ENV_METHODS, default: 'split-sum', label: 'Environment by' },
-  samples: { group: 'Environment', type: 'number', min: 1, max: 256, step: 1, default: 16, label: 'Importance samples N' },
+  environment: {
+    group: 'Environment',
+    type: 'enum',
+    options: ENVIRONMENTS,
+    default: 'studio',
+    label: 'Environment map',
+  },
+  envIntensity: {
+    group: 'Environment',
+    type: 'number',
+    min: 0,
+    max: 4,
+    step: 0.05,
+    default: 1,
+    label: 'Environment intensity',
+  },
+  envMethod: {
+    group: 'Environment',
+    type: 'enum',
+    options: ENV_METHODS,
+    default: 'split-sum',
+    label: 'Environment by',
+  },
+  samples: {
+    group: 'Environment',
+    type: 'number',
+    min: 1,
+    max: 256,
+    step: 1,
+    default: 16,
+    label: 'Importance samples N',
+  },
   ambient: { group: 'Ambient light', type: 'bool', default: false, label: 'Ambient light' },
-  ambientLevel: { group: 'Ambient light', type: 'number', min: 0, max: 2, step: 0.05, default: 0.3, label: 'Ambient radiance' },
-  refSamples: { group: 'Reference and display', type: 'enum', options: { 128: '128', 512: '512', 2048: '2048' }, default: '512', label: 'Reference samples / pixel' },
-  exposure: { group: 'Reference and display', type: 'number', min: 0.1, max: 8, step: 0.05, default: 1, label: 'Exposure' },
-  errorScale: { group: 'Reference and display', type: 'number', min: 0.005, max: 1, step: 0.005, default: 0.05, label: 'Error image: full scale' },
+  ambientLevel: {
+    group: 'Ambient light',
+    type: 'number',
+    min: 0,
+    max: 2,
+    step: 0.05,
+    default: 0.3,
+    label: 'Ambient radiance',
+  },
+  refSamples: {
+    group: 'Reference and display',
+    type: 'enum',
+    options: { 128: '128', 512: '512', 2048: '2048' },
+    default: '512',
+    label: 'Reference samples / pixel',
+  },
+  exposure: {
+    group: 'Reference and display',
+    type: 'number',
+    min: 0.1,
+    max: 8,
+    step: 0.05,
+    default: 1,
+    label: 'Exposure',
+  },
+  errorScale: {
+    group: 'Reference and display',
+    type: 'number',
+    min: 0.005,
+    max: 1,
+    step: 0.005,
+    default: 0.05,
+    label: 'Error image: full scale',
+  },
 };
 
 const ABOUT =
@@ -78,8 +235,16 @@ const ABOUT =
   'sampling have a form for it.';
 
 const TERMS_USED = [
-  'microfacetBRDF', 'dfgTableUv', 'sampleGGXNormal', 'sampleBeckmannNormal', 'sampleCosine', 'sampleCone',
-  'sphereLightRepresentativeDir', 'sphereLightNormalization', 'equirectUv', 'diffuseOrenNayar',
+  'microfacetBRDF',
+  'dfgTableUv',
+  'sampleGGXNormal',
+  'sampleBeckmannNormal',
+  'sampleCosine',
+  'sampleCone',
+  'sphereLightRepresentativeDir',
+  'sphereLightNormalization',
+  'equirectUv',
+  'diffuseOrenNayar',
 ];
 
 /** A lab scene with a measured table for its BRDF: no terms; the GGX fit's α (the state's until it is in) to
@@ -97,7 +262,9 @@ function measuredScene(scene, table) {
 export function lightsOf(state) {
   const c = (x) => [x, x, x];
   return {
-    punctual: state.punctual ? { dir: lightDirFromAngles(state.lightTheta, state.lightPhi), cLight: c(state.cLight) } : null,
+    punctual: state.punctual
+      ? { dir: lightDirFromAngles(state.lightTheta, state.lightPhi), cLight: c(state.cLight) }
+      : null,
     sphere: state.area ? sphereLight(state.areaTheta, state.areaPhi, state.areaRadius, state.areaCLight) : null,
     env: state.env ? { intensity: state.envIntensity, map: state.environment } : null,
     ambient: state.ambient ? c(state.ambientLevel) : null,
@@ -122,7 +289,13 @@ function methodText(st, lights) {
 }
 
 export function createMaterialLab(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'material-lab', schema, initialState, about: ABOUT, terms: TERMS_USED });
+  const shell = createWidgetShell(container, {
+    name: 'material-lab',
+    schema,
+    initialState,
+    about: ABOUT,
+    terms: TERMS_USED,
+  });
   const readout = document.createElement('div');
   readout.className = 'lab-readout';
   readout.setAttribute('aria-live', 'polite');
@@ -143,7 +316,10 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
     const aKey = JSON.stringify([scene, envKey, table?.key]);
     const rKey = JSON.stringify([scene.material, scene.terms, scene.lights, envKey, table?.key]);
     scene.table = table?.texture;
-    scene.maps = environment(st.env ? st.environment : 'furnace', st.env && st.environment === 'file' ? filePixels : null);
+    scene.maps = environment(
+      st.env ? st.environment : 'furnace',
+      st.env && st.environment === 'file' ? filePixels : null,
+    );
     if (aKey !== approxKey) {
       const times = Array.from({ length: timingRuns }, () => lab.renderApprox(scene)).sort((a, b) => a - b);
       ms = times[Math.floor(times.length / 2)];
@@ -158,7 +334,15 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
       lab.accumulate(scene);
       again();
     }
-    stats = { ...lab.error(), ms, timingRuns, samples: lab.batches * REFERENCE_BATCH, target: Number(st.refSamples), samplesN: st.samples, method: st.envMethod };
+    stats = {
+      ...lab.error(),
+      ms,
+      timingRuns,
+      samples: lab.batches * REFERENCE_BATCH,
+      target: Number(st.refSamples),
+      samplesN: st.samples,
+      method: st.envMethod,
+    };
     showReadout(st, lights);
     notes.show(scene);
     return [
@@ -177,11 +361,16 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
         <tr><th scope="row">RMS error against the reference</th><td>${fmt(stats.rms)} (radiance), ${fmt(stats.relative * 100, 3)} % of the reference’s RMS${converging ? ' — reference still converging' : ''}</td></tr>
         </tbody></table>`
       : '<p class="lab-empty">Every light is off: switch one on in the controls.</p>';
-    const errorWords = converging ? 'The reference is still converging.' : `RMS error ${fmt(stats.rms, 3)}, ${fmt(stats.relative * 100, 3)} % relative; ${fmt(stats.ms, 3)} ms.`;
+    const errorWords = converging
+      ? 'The reference is still converging.'
+      : `RMS error ${fmt(stats.rms, 3)}, ${fmt(stats.relative * 100, 3)} % relative; ${fmt(stats.ms, 3)} ms.`;
     const table = st.brdfSource === 'measured' ? measured.current : null;
     const model = st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material;
     const what = table ? `the measured BRDF ${table.name}` : `${model}, roughness α ${st.alpha}`;
-    shell.describe(`Material lab. A sphere (${what}) lit by ${methodText(st, lights)}; beside it the Monte Carlo reference (${stats.target} samples per pixel) and the error image. ${errorWords}`, view.canvas);
+    shell.describe(
+      `Material lab. A sphere (${what}) lit by ${methodText(st, lights)}; beside it the Monte Carlo reference (${stats.target} samples per pixel) and the error image. ${errorWords}`,
+      view.canvas,
+    );
   };
 
   // under the images: how each light's approximation treats the chosen terms (lab-approximations.js)
@@ -206,7 +395,9 @@ export function createMaterialLab(container, initialState = {}, { onStateChange 
       return;
     }
     if (changed.includes('environment') && shell.state.environment === 'file' && !filePixels) {
-      shell.notices.show('No environment file has been dropped yet: drop an .hdr or .exr panorama on the widget. Kept the studio.');
+      shell.notices.show(
+        'No environment file has been dropped yet: drop an .hdr or .exr panorama on the widget. Kept the studio.',
+      );
       update({ environment: 'studio' });
       return;
     }

@@ -180,7 +180,7 @@ function createPainter({ lobePlot, lobe3d, spheres, image, ndfPlot, residuals },
         measured && fits[k] ? residualImage(measured, fits[k], s().phiD) : () => 0,
         fits[k]
           ? `residual of the ${FIT_MODELS[k].label} fit ${at} (green; between nodes it holds the table's ` +
-            'interpolation error too), one scale for all five'
+              'interpolation error too), one scale for all five'
           : `not fitted yet (${at})`,
         { max: RESIDUAL_TOP },
       ),
@@ -196,7 +196,8 @@ function createPainter({ lobePlot, lobe3d, spheres, image, ndfPlot, residuals },
       const fitWords = fit ? ` and the ${FIT_MODELS[fit.model].label} fit (wireframe)` : '';
       lobe3d.update({
         ...spec,
-        description: `3-D lobe of the measured table's green channel (solid)${fitWords}, light ${s().lightTheta}° ` +
+        description:
+          `3-D lobe of the measured table's green channel (solid)${fitWords}, light ${s().lightTheta}° ` +
           `from n; each direction's distance from the centre is f, scaled to ${spec.max.toPrecision(3)} /sr.`,
       });
     },

@@ -15,21 +15,49 @@ import { WATER_K, WHOLE_MILK, transmittance, waterAbsorptionRgb } from '../../ma
 
 export const MEDIA = {
   water: { name: 'Clean water', sigmaA: waterAbsorptionRgb(), sigmaS: [0, 0, 0], source: WATER_K.source },
-  red: { name: 'Red absorber (wine-like, illustrative)', sigmaA: [3, 60, 90], sigmaS: [0, 0, 0], source: 'illustrative values' },
-  cloudy: { name: 'Cloudy water (illustrative)', sigmaA: waterAbsorptionRgb(), sigmaS: [25, 25, 25], source: 'water plus illustrative scattering' },
+  red: {
+    name: 'Red absorber (wine-like, illustrative)',
+    sigmaA: [3, 60, 90],
+    sigmaS: [0, 0, 0],
+    source: 'illustrative values',
+  },
+  cloudy: {
+    name: 'Cloudy water (illustrative)',
+    sigmaA: waterAbsorptionRgb(),
+    sigmaS: [25, 25, 25],
+    source: 'water plus illustrative scattering',
+  },
   // milk's σ′s stands in for σs with isotropic scattering (the similarity relation): the picture diffuses light as
   // milk does, but the straight-through light it implies is only an upper bound on milk's
   milk: {
-    name: 'Whole milk (reduced scattering σ′s)', sigmaA: WHOLE_MILK.sigmaA, sigmaS: WHOLE_MILK.sigmaSReduced,
-    source: WHOLE_MILK.source, reduced: true,
+    name: 'Whole milk (reduced scattering σ′s)',
+    sigmaA: WHOLE_MILK.sigmaA,
+    sigmaS: WHOLE_MILK.sigmaSReduced,
+    source: WHOLE_MILK.source,
+    reduced: true,
   },
 };
 
 export const schema = {
-  view: { type: 'enum', options: { one: 'One glass', grid: 'The talk’s grid of glasses' }, default: 'one', label: 'View' },
-  medium: { type: 'enum', options: Object.fromEntries(Object.entries(MEDIA).map(([k, m]) => [k, m.name])), default: 'water', label: 'Medium' },
+  view: {
+    type: 'enum',
+    options: { one: 'One glass', grid: 'The talk’s grid of glasses' },
+    default: 'one',
+    label: 'View',
+  },
+  medium: {
+    type: 'enum',
+    options: Object.fromEntries(Object.entries(MEDIA).map(([k, m]) => [k, m.name])),
+    default: 'water',
+    label: 'Medium',
+  },
   distance: { type: 'number', min: -3, max: 2, step: 0.05, default: -1.3, label: 'Depth, log₁₀ metres' },
-  samples: { type: 'enum', options: { 16: '16', 64: '64', 256: '256', 1024: '1024' }, default: '64', label: 'Samples per pixel' },
+  samples: {
+    type: 'enum',
+    options: { 16: '16', 64: '64', 256: '256', 1024: '1024' },
+    default: '64',
+    label: 'Samples per pixel',
+  },
 };
 
 const ABOUT =
@@ -41,7 +69,8 @@ const ABOUT =
   'refines for a moment after each change.';
 
 const TERMS_USED = ['transmittance'];
-const MILK_CAVEAT = 'would pass unscattered if milk scattered evenly in all directions with its reduced ' +
+const MILK_CAVEAT =
+  'would pass unscattered if milk scattered evenly in all directions with its reduced ' +
   'coefficient σ′s (the similarity relation, which the picture uses). Milk’s fat globules, about a wavelength ' +
   'across or more, scatter mostly forwards (g > 0 by Lorenz–Mie theory, which Frisvad, Christensen & Jensen 2007 ' +
   'apply to milk; Jensen et al. 2001 give σ′s only), so its true σs = σ′s/(1 − g) is larger and the light that ' +
@@ -78,15 +107,23 @@ export function createMedia(container, initialState = {}, { onStateChange } = {}
     const key = `${cx}x${cy}`;
     if (!programs.has(key)) {
       const n = cx * cy;
-      programs.set(key, new THREE.ShaderMaterial({
-        glslVersion: THREE.GLSL3,
-        uniforms: {
-          uPrev: { value: null }, uSize: { value: new THREE.Vector2() }, uFrame: { value: 0 },
-          uSigmaA: { value: Array.from({ length: n }, () => new THREE.Vector3()) }, uSigmaS: { value: Array.from({ length: n }, () => new THREE.Vector3()) },
-        },
-        vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
-        fragmentShader: assembleGlsl(SHADER_CHUNKS['media-tracer.frag.glsl'], { defines: { CELLS: n, CELLS_X: cx, CELLS_Y: cy } }),
-      }));
+      programs.set(
+        key,
+        new THREE.ShaderMaterial({
+          glslVersion: THREE.GLSL3,
+          uniforms: {
+            uPrev: { value: null },
+            uSize: { value: new THREE.Vector2() },
+            uFrame: { value: 0 },
+            uSigmaA: { value: Array.from({ length: n }, () => new THREE.Vector3()) },
+            uSigmaS: { value: Array.from({ length: n }, () => new THREE.Vector3()) },
+          },
+          vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
+          fragmentShader: assembleGlsl(SHADER_CHUNKS['media-tracer.frag.glsl'], {
+            defines: { CELLS: n, CELLS_X: cx, CELLS_Y: cy },
+          }),
+        }),
+      );
     }
     return programs.get(key);
   };
@@ -116,7 +153,10 @@ export function createMedia(container, initialState = {}, { onStateChange } = {}
     draw(renderer) {
       const canvasSize = renderer.getDrawingBufferSize(bufferSize);
       const scale = Math.min(1, TRACE_MAX_WIDTH / canvasSize.x); // long walks (milk) are costly: trace fewer pixels
-      const size = traceSize.set(Math.max(1, Math.round(canvasSize.x * scale)), Math.max(1, Math.round(canvasSize.y * scale)));
+      const size = traceSize.set(
+        Math.max(1, Math.round(canvasSize.x * scale)),
+        Math.max(1, Math.round(canvasSize.y * scale)),
+      );
       if (!targets) {
         targets = [floatTarget(size.x, size.y), floatTarget(size.x, size.y)];
         targets.forEach((t) => {
@@ -164,12 +204,21 @@ export function createMedia(container, initialState = {}, { onStateChange } = {}
       title: m.reduced
         ? `${m.name}: e^(−(σa + σ′s) d), an upper bound on the light left unscattered (Beer–Lambert, ${m.source})`
         : `${m.name}: light left unscattered and unabsorbed after a depth d (Beer–Lambert, ${m.source})`,
-      xLabel: 'Depth d (m, log scale)', yLabel: 'transmittance', x: { min: 1e-3, max: 100, log: true }, y: { min: 0, max: 1.02 },
-      xValues: (u, t) => t.map((v) => (v == null ? '' : v >= 1 ? `${v} m` : v >= 0.01 ? `${v * 100} cm` : `${v * 1000} mm`)),
-      series: ['red (650 nm)', 'green (550 nm)', 'blue (450 nm)'].map((label, i) => ({ label, stroke: ['#d55e00', '#009e73', '#0072b2'][i], dash: SERIES_DASHES[i] })),
+      xLabel: 'Depth d (m, log scale)',
+      yLabel: 'transmittance',
+      x: { min: 1e-3, max: 100, log: true },
+      y: { min: 0, max: 1.02 },
+      xValues: (u, t) =>
+        t.map((v) => (v == null ? '' : v >= 1 ? `${v} m` : v >= 0.01 ? `${v * 100} cm` : `${v * 1000} mm`)),
+      series: ['red (650 nm)', 'green (550 nm)', 'blue (450 nm)'].map((label, i) => ({
+        label,
+        stroke: ['#d55e00', '#009e73', '#0072b2'][i],
+        dash: SERIES_DASHES[i],
+      })),
       data: [DISTANCES, ...st.map((sig) => DISTANCES.map((x) => transmittance(sig, x)))],
       bands: [{ from: d / 1.06, to: d * 1.06, color: '#0000002a', label: '' }],
-      filename: `transmittance-${shell.state.medium}`, height: 240,
+      filename: `transmittance-${shell.state.medium}`,
+      height: 240,
     };
   };
   const plot = createPlot(shell.view, plotSpec());
@@ -177,18 +226,31 @@ export function createMedia(container, initialState = {}, { onStateChange } = {}
   const describe = () => {
     const s = shell.state;
     if (s.view === 'grid') {
-      readout.textContent = 'Across: no, some and strong scattering. Upwards: no, some and strong absorption (strongest in blue). Bottom right: high scattering, no absorption, white like milk.';
-      shell.describe('Nine glasses in front of a chequered wall: absorption grows upwards, scattering to the right; the top-left is clear dark red, the bottom-right white and opaque like milk.', viewport?.canvas);
+      readout.textContent =
+        'Across: no, some and strong scattering. Upwards: no, some and strong absorption (strongest in blue). Bottom right: high scattering, no absorption, white like milk.';
+      shell.describe(
+        'Nine glasses in front of a chequered wall: absorption grows upwards, scattering to the right; the top-left is clear dark red, the bottom-right white and opaque like milk.',
+        viewport?.canvas,
+      );
       return;
     }
     const m = MEDIA[s.medium];
     const d = 10 ** s.distance;
     const T = m.sigmaA.map((a, i) => transmittance(a + m.sigmaS[i], d));
     const hex = rgbToHex(T.map(linearToSrgb));
-    const depth = d >= 1 ? `${d.toPrecision(3)} m` : d >= 0.01 ? `${(d * 100).toPrecision(3)} cm` : `${(d * 1000).toPrecision(3)} mm`;
-    readout.innerHTML = `<span class="swatch big" style="background:${hex}"></span> <span>White light after <strong>${depth}</strong> of ${m.name.toLowerCase()}: ` +
+    const depth =
+      d >= 1
+        ? `${d.toPrecision(3)} m`
+        : d >= 0.01
+          ? `${(d * 100).toPrecision(3)} cm`
+          : `${(d * 1000).toPrecision(3)} mm`;
+    readout.innerHTML =
+      `<span class="swatch big" style="background:${hex}"></span> <span>White light after <strong>${depth}</strong> of ${m.name.toLowerCase()}: ` +
       `R ${(T[0] * 100).toFixed(1)}%, G ${(T[1] * 100).toFixed(1)}%, B ${(T[2] * 100).toFixed(1)}% ${m.reduced ? MILK_CAVEAT : 'passes without being absorbed or scattered.'}</span>`;
-    shell.describe(`A glass of ${m.name.toLowerCase()} ${depth} deep in front of a chequered wall; ${readout.textContent.trim()}`, viewport?.canvas);
+    shell.describe(
+      `A glass of ${m.name.toLowerCase()} ${depth} deep in front of a chequered wall; ${readout.textContent.trim()}`,
+      viewport?.canvas,
+    );
   };
   describe();
 

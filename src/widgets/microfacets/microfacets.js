@@ -4,12 +4,24 @@
 import { createWidgetShell } from '../../core/widget-shell.js';
 import { createPlot } from '../../core/plot.js';
 import { sizeCanvas2d } from '../../core/canvas2d.js';
-import { castUp, generateProfile, heightBounds, intersectProfile, measuredG1, segmentNormal } from '../../math/microsurface.js';
+import {
+  castUp,
+  generateProfile,
+  heightBounds,
+  intersectProfile,
+  measuredG1,
+  segmentNormal,
+} from '../../math/microsurface.js';
 import { smithG1Beckmann, smithG1GGX } from '../../math/visibility.js';
 import { reflect } from '../../math/integrate.js';
 
 export const schema = {
-  kind: { type: 'enum', options: { beckmann: 'Beckmann (Gaussian slopes)', ggx: 'GGX' }, default: 'beckmann', label: 'Slope distribution' },
+  kind: {
+    type: 'enum',
+    options: { beckmann: 'Beckmann (Gaussian slopes)', ggx: 'GGX' },
+    default: 'beckmann',
+    label: 'Slope distribution',
+  },
   alpha: { type: 'number', min: 0.1, max: 1, step: 0.01, default: 0.5, label: 'Roughness α' },
   lightTheta: { type: 'number', min: -85, max: 85, step: 1, default: 70, label: 'Light angle θl', unit: '°' },
   viewTheta: { type: 'number', min: -85, max: 85, step: 1, default: -40, label: 'View angle θv', unit: '°' },
@@ -34,13 +46,20 @@ const dirOf = (deg) => [Math.sin(deg * DEG), Math.cos(deg * DEG)];
 const TERMS_USED = ['smithG1Beckmann', 'smithG1GGX'];
 
 export function createMicrofacets(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'microfacets', schema, initialState, about: ABOUT, terms: TERMS_USED });
+  const shell = createWidgetShell(container, {
+    name: 'microfacets',
+    schema,
+    initialState,
+    about: ABOUT,
+    terms: TERMS_USED,
+  });
   const canvas = document.createElement('canvas');
   canvas.className = 'microsurface';
   shell.view.append(canvas);
   const legend = document.createElement('p');
   legend.className = 'micro-legend';
-  legend.innerHTML = '<span style="color:#e6a700">━</span> light rays &nbsp; <span style="color:#d62728">━</span> second bounce &nbsp; ' +
+  legend.innerHTML =
+    '<span style="color:#e6a700">━</span> light rays &nbsp; <span style="color:#d62728">━</span> second bounce &nbsp; ' +
     '<span style="color:#cc79a7">▮</span> facet normal = h &nbsp; <span style="color:#111">▬</span> shadowed (solid) &nbsp; <span style="color:#0072b2">▭</span> masked (hollow)';
   shell.view.append(legend);
   const stats = document.createElement('div');
@@ -79,10 +98,19 @@ export function createMicrofacets(container, initialState = {}, { onStateChange 
     const curve = smithCurve();
     const measured = Array.from(curve.xs, (d) => (d % 5 === 0 ? g1Data.measured[d / 5] : null)); // a typed array would turn null into 0
     return {
-      title: 'Share of microfacets the light reaches, G1: ray-traced vs Smith', xLabel: 'Light angle from the mean normal (degrees)', yLabel: 'G1',
-      x: { min: 0, max: 90 }, y: { min: 0, max: 1.02 }, xValues: (u, t) => t.map((v) => `${v}°`),
-      series: [{ label: 'Smith G1', stroke: '#0072b2' }, { label: 'ray-traced profile', stroke: '#d55e00', width: 0, points: true }],
-      data: [curve.xs, curve.ys, measured], filename: 'microsurface-g1', height: 240,
+      title: 'Share of microfacets the light reaches, G1: ray-traced vs Smith',
+      xLabel: 'Light angle from the mean normal (degrees)',
+      yLabel: 'G1',
+      x: { min: 0, max: 90 },
+      y: { min: 0, max: 1.02 },
+      xValues: (u, t) => t.map((v) => `${v}°`),
+      series: [
+        { label: 'Smith G1', stroke: '#0072b2' },
+        { label: 'ray-traced profile', stroke: '#d55e00', width: 0, points: true },
+      ],
+      data: [curve.xs, curve.ys, measured],
+      filename: 'microsurface-g1',
+      height: 240,
     };
   };
 
@@ -210,15 +238,23 @@ export function createMicrofacets(container, initialState = {}, { onStateChange 
     const s = shell.state;
     const c = Math.cos(Math.abs(s.lightTheta) * DEG);
     const measured = measuredG1(profile, Math.abs(s.lightTheta) * DEG, G1_OPTIONS);
-    stats.innerHTML = `<table class="data-table compact"><caption>At the light angle ${Math.abs(s.lightTheta)}°</caption><tbody>` +
+    stats.innerHTML =
+      `<table class="data-table compact"><caption>At the light angle ${Math.abs(s.lightTheta)}°</caption><tbody>` +
       `<tr><td>shadowed share of facets facing the light, ray-traced</td><td>${((1 - measured) * 100).toFixed(2)}%</td></tr>` +
       `<tr><td>the same, predicted by Smith (1 − G1)</td><td>${((1 - smith(c)) * 100).toFixed(2)}%</td></tr>` +
       `<tr><td>rays drawn that bounce twice</td><td>${twice} of ${s.rays}</td></tr></tbody></table>`;
-    const hDeg = Math.atan2(Math.sin(s.lightTheta * DEG) + Math.sin(s.viewTheta * DEG), Math.cos(s.lightTheta * DEG) + Math.cos(s.viewTheta * DEG)) / DEG;
-    shell.describe(`Magnified cross-section of a rough surface, ${schema.kind.options[s.kind]}, α ${s.alpha}: ${s.rays} rays from the light at ${s.lightTheta}°, ` +
-      `eye at ${s.viewTheta}°, so the half vector h is ${hDeg.toFixed(1)}° from the mean normal; facets along h are marked. ` +
-      `Shadowed share of the facets facing the light: ${((1 - measured) * 100).toFixed(1)}% ray-traced, ${((1 - smith(c)) * 100).toFixed(1)}% by Smith. ` +
-      `${twice} of ${s.rays} rays hit the surface a second time${s.bounces ? ' (drawn in red)' : ''}.`, canvas);
+    const hDeg =
+      Math.atan2(
+        Math.sin(s.lightTheta * DEG) + Math.sin(s.viewTheta * DEG),
+        Math.cos(s.lightTheta * DEG) + Math.cos(s.viewTheta * DEG),
+      ) / DEG;
+    shell.describe(
+      `Magnified cross-section of a rough surface, ${schema.kind.options[s.kind]}, α ${s.alpha}: ${s.rays} rays from the light at ${s.lightTheta}°, ` +
+        `eye at ${s.viewTheta}°, so the half vector h is ${hDeg.toFixed(1)}° from the mean normal; facets along h are marked. ` +
+        `Shadowed share of the facets facing the light: ${((1 - measured) * 100).toFixed(1)}% ray-traced, ${((1 - smith(c)) * 100).toFixed(1)}% by Smith. ` +
+        `${twice} of ${s.rays} rays hit the surface a second time${s.bounces ? ' (drawn in red)' : ''}.`,
+      canvas,
+    );
     if (rebuild) {
       if (plot) plot.setData(plotSpec());
       else plot = createPlot(shell.view, plotSpec());
@@ -235,7 +271,12 @@ export function createMicrofacets(container, initialState = {}, { onStateChange 
     update,
     getState: () => shell.state,
     /** Ray-traced G1 at 0°, 5°, … 85° and Smith's, for tests. */
-    getG1: () => ({ complete: g1Data.complete, angles: [...g1Data.angles], measured: [...g1Data.measured], smith: g1Data.angles.map((d) => smith(Math.cos(d * DEG))) }),
+    getG1: () => ({
+      complete: g1Data.complete,
+      angles: [...g1Data.angles],
+      measured: [...g1Data.measured],
+      smith: g1Data.angles.map((d) => smith(Math.cos(d * DEG))),
+    }),
     dispose() {
       generation++;
       resize.disconnect();

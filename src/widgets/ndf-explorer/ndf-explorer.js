@@ -22,7 +22,12 @@ export const schema = {
   hwhm: { type: 'number', min: 1, max: 40, step: 0.5, default: 8, label: 'Matched half width', unit: '°' },
   abcA2: { type: 'number', min: 0.5, max: 10, step: 0.1, default: 2.5, label: 'ABC shape a2' },
   sgdP: { type: 'number', min: 0, max: 1.9, step: 0.01, default: 0.64, label: 'SGD shape p' },
-  ndfs: { type: 'set', options: Object.fromEntries(Object.entries(NDFS).map(([k, v]) => [k, v.name])), default: Object.keys(NDFS), label: 'Distributions' },
+  ndfs: {
+    type: 'set',
+    options: Object.fromEntries(Object.entries(NDFS).map(([k, v]) => [k, v.name])),
+    default: Object.keys(NDFS),
+    label: 'Distributions',
+  },
   lightTheta: { type: 'number', min: 0, max: 80, step: 1, default: 35, label: 'Light from view', unit: '°' },
   exposure: { type: 'number', min: 0.05, max: 50, step: 0.05, default: 1, label: 'Exposure' },
   // the NDF a measurement implies, as the measured-BRDF widget hands it over: D/D(0) at the 90 θh nodes of a
@@ -61,7 +66,13 @@ function parameters(state) {
 }
 
 const describeParams = (key, p) =>
-  key === 'blinnPhong' ? `exponent ${p.exponent.toFixed(1)}` : key === 'abc' ? `a1 ${p.a1.toFixed(2)}, a2 ${p.a2.toFixed(2)}` : key === 'sgd' ? `α ${p.alpha.toFixed(4)}, p ${p.p.toFixed(2)}` : `α ${p.alpha.toFixed(4)}`;
+  key === 'blinnPhong'
+    ? `exponent ${p.exponent.toFixed(1)}`
+    : key === 'abc'
+      ? `a1 ${p.a1.toFixed(2)}, a2 ${p.a2.toFixed(2)}`
+      : key === 'sgd'
+        ? `α ${p.alpha.toFixed(4)}, p ${p.p.toFixed(2)}`
+        : `α ${p.alpha.toFixed(4)}`;
 
 function curves(state) {
   const params = parameters(state);
@@ -69,13 +80,21 @@ function curves(state) {
     const p = params[key];
     const D = (c) => NDF_TERMS[key](c, p);
     return {
-      key, p, label: NDFS[key].name, ...seriesStyle(Object.keys(NDFS).indexOf(key)),
-      values: ANGLES.map((deg) => D(Math.cos(deg * DEG))), integral: ndfProjectedIntegral(D),
+      key,
+      p,
+      label: NDFS[key].name,
+      ...seriesStyle(Object.keys(NDFS).indexOf(key)),
+      values: ANGLES.map((deg) => D(Math.cos(deg * DEG))),
+      integral: ndfProjectedIntegral(D),
     };
   });
 }
 
-const axis = { xLabel: 'Angle of the microfacet normal from n, θh (degrees)', x: { min: 0, max: 90 }, xValues: (u, t) => t.map((v) => `${v}°`) };
+const axis = {
+  xLabel: 'Angle of the microfacet normal from n, θh (degrees)',
+  x: { min: 0, max: 90 },
+  xValues: (u, t) => t.map((v) => `${v}°`),
+};
 
 /** The log plot with a measured slice: every curve over its own peak, so the tails compare at one width. */
 function relativeLogSpec(data, slice, name) {
@@ -83,34 +102,58 @@ function relativeLogSpec(data, slice, name) {
   const measured = { label, stroke: '#000000', width: 2.5, spanGaps: true };
   const relative = (c) => c.values.map((v) => (v / c.values[0] > 1e-5 ? v / c.values[0] : null));
   return {
-    ...axis, title: 'D(θh) / D(0), log scale: the measured tail against the models at the fitted width',
-    yLabel: 'D / D(0)', y: { min: 1e-5, max: 2, log: true }, legend: true,
+    ...axis,
+    title: 'D(θh) / D(0), log scale: the measured tail against the models at the fitted width',
+    yLabel: 'D / D(0)',
+    y: { min: 1e-5, max: 2, log: true },
+    legend: true,
     series: [measured, ...data.map((c) => ({ label: c.label, stroke: c.stroke, dash: c.dash }))],
-    data: [ANGLES, measuredOnAngles(slice), ...data.map(relative)], filename: 'ndf-log', height: 260,
+    data: [ANGLES, measuredOnAngles(slice), ...data.map(relative)],
+    filename: 'ndf-log',
+    height: 260,
   };
 }
 
 const TERMS_USED = ['ndfBlinnPhong', 'ndfBeckmann', 'ndfGGX', 'ndfABC', 'ndfSGD', 'microfacetBRDF'];
 
 export function createNdfExplorer(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'ndf-explorer', schema, initialState, about: ABOUT, terms: TERMS_USED });
+  const shell = createWidgetShell(container, {
+    name: 'ndf-explorer',
+    schema,
+    initialState,
+    about: ABOUT,
+    terms: TERMS_USED,
+  });
   const plots = document.createElement('div');
   shell.view.append(plots);
   const table = document.createElement('div');
 
   let data = curves(shell.state);
   const linearSpec = () => ({
-    ...axis, title: 'D(θh), linear', yLabel: 'D (1/sr)', y: null, legend: true,
-    series: data.map((c) => ({ label: c.label, stroke: c.stroke, dash: c.dash })), data: [ANGLES, ...data.map((c) => c.values)], filename: 'ndf-linear', height: 260,
+    ...axis,
+    title: 'D(θh), linear',
+    yLabel: 'D (1/sr)',
+    y: null,
+    legend: true,
+    series: data.map((c) => ({ label: c.label, stroke: c.stroke, dash: c.dash })),
+    data: [ANGLES, ...data.map((c) => c.values)],
+    filename: 'ndf-linear',
+    height: 260,
   });
   const logSpec = () => {
     const slice = shell.state.measured;
     if (slice.length) return relativeLogSpec(data, slice, shell.state.measuredName);
     const peak = Math.max(...data.map((c) => c.values[0]), 1e-3);
     return {
-      ...axis, title: 'D(θh), log scale: the tails', yLabel: 'D (1/sr)', y: { min: peak * 1e-7, max: peak * 2, log: true }, legend: false,
+      ...axis,
+      title: 'D(θh), log scale: the tails',
+      yLabel: 'D (1/sr)',
+      y: { min: peak * 1e-7, max: peak * 2, log: true },
+      legend: false,
       series: data.map((c) => ({ label: c.label, stroke: c.stroke, dash: c.dash })),
-      data: [ANGLES, ...data.map((c) => c.values.map((v) => (v > peak * 1e-7 ? v : null)))], filename: 'ndf-log', height: 260,
+      data: [ANGLES, ...data.map((c) => c.values.map((v) => (v > peak * 1e-7 ? v : null)))],
+      filename: 'ndf-log',
+      height: 260,
     };
   };
   const linear = createPlot(plots, linearSpec());
@@ -122,24 +165,47 @@ export function createNdfExplorer(container, initialState = {}, { onStateChange 
     table.innerHTML =
       '<table class="data-table compact"><caption>Normalisation, measured: ∫ D(m)(n·m) dω over the hemisphere (Simpson, 4000 intervals)</caption>' +
       '<thead><tr><th>NDF</th><th>parameters at this width</th><th>∫ D (n·m) dω</th><th>|error|</th><th>D(0°)</th></tr></thead><tbody>' +
-      data.map((c) => `<tr><td><span class="swatch" style="background:${c.stroke}"></span> ${c.label}</td><td>${describeParams(c.key, c.p)}</td>` +
-        `<td>${c.integral.toFixed(7)}</td><td>${Math.abs(c.integral - 1).toExponential(1)}</td><td>${c.values[0].toPrecision(4)}</td></tr>`).join('') +
+      data
+        .map(
+          (c) =>
+            `<tr><td><span class="swatch" style="background:${c.stroke}"></span> ${c.label}</td><td>${describeParams(c.key, c.p)}</td>` +
+            `<td>${c.integral.toFixed(7)}</td><td>${Math.abs(c.integral - 1).toExponential(1)}</td><td>${c.values[0].toPrecision(4)}</td></tr>`,
+        )
+        .join('') +
       '</tbody></table>';
   };
   const renderSpheres = () => {
     const s = shell.state;
     const l = lightDirFromAngles(s.lightTheta, 135);
-    spheres.setCells(data.map((c) => ({
-      label: c.label.split(' (')[0],
-      defines: { [NDFS[c.key].define]: true, VIS_IMPLICIT: true, F_ONE: true },
-      uniforms: { uLightDir: l, uExposure: s.exposure, uAlpha: c.p.alpha ?? 0.3, uExponent: c.p.exponent ?? 1, uA1: c.p.a1 ?? 1, uA2: c.p.a2 ?? 1, uSgdP: c.p.p ?? 0 },
-      probe: (a) => [
-        ['D(n·h)', `${NDF_TERMS[c.key](a.nh, c.p).toPrecision(4)} /sr`],
-        ['radiance π·D/4·(n·l)', punctualRadiance(microfacetBRDFAt(a, { F: 'one', D: c.key, V: 'implicit', ...c.p }), a.nl, 1).toPrecision(4)],
-      ],
-    })));
-    shell.describe(`Spheres lit by one small light ${s.lightTheta}° from the view, exposure ${s.exposure}, F = 1 and V = 1, one per NDF at a half width of ${s.hwhm}°: ` +
-      `${data.map((c) => `${c.label} (${describeParams(c.key, c.p)}, peak D ${c.values[0].toPrecision(3)} /sr)`).join(', ') || 'none chosen'}.`, spheres.canvas);
+    spheres.setCells(
+      data.map((c) => ({
+        label: c.label.split(' (')[0],
+        defines: { [NDFS[c.key].define]: true, VIS_IMPLICIT: true, F_ONE: true },
+        uniforms: {
+          uLightDir: l,
+          uExposure: s.exposure,
+          uAlpha: c.p.alpha ?? 0.3,
+          uExponent: c.p.exponent ?? 1,
+          uA1: c.p.a1 ?? 1,
+          uA2: c.p.a2 ?? 1,
+          uSgdP: c.p.p ?? 0,
+        },
+        probe: (a) => [
+          ['D(n·h)', `${NDF_TERMS[c.key](a.nh, c.p).toPrecision(4)} /sr`],
+          [
+            'radiance π·D/4·(n·l)',
+            punctualRadiance(microfacetBRDFAt(a, { F: 'one', D: c.key, V: 'implicit', ...c.p }), a.nl, 1).toPrecision(
+              4,
+            ),
+          ],
+        ],
+      })),
+    );
+    shell.describe(
+      `Spheres lit by one small light ${s.lightTheta}° from the view, exposure ${s.exposure}, F = 1 and V = 1, one per NDF at a half width of ${s.hwhm}°: ` +
+        `${data.map((c) => `${c.label} (${describeParams(c.key, c.p)}, peak D ${c.values[0].toPrecision(3)} /sr)`).join(', ') || 'none chosen'}.`,
+      spheres.canvas,
+    );
   };
   renderTable();
   renderSpheres();

@@ -1,7 +1,11 @@
 // The radiance widget's model, pure: what the eye gets from a lamp at a distance, and the RGB a renderer keeps
 // for a light and a surface against the RGB of the light the surface really reflects.
 import {
-  planckRadiance, spectrumToXyz, sphereLightIrradiance, sphereSolidAngle, xyzToLinearSrgb,
+  planckRadiance,
+  spectrumToXyz,
+  sphereLightIrradiance,
+  sphereSolidAngle,
+  xyzToLinearSrgb,
 } from '../../math/radiometry.js';
 
 export const LAMP_RADIANCE = 1; // W sr⁻¹ m⁻²: the units cancel in every ratio the widget shows

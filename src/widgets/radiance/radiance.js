@@ -108,10 +108,10 @@ function lampTableHtml(s, view) {
 }
 
 function rgbTableHtml(c) {
-  const ratio = c.product.map((p, i) =>
-    (Math.abs(c.spectral[i]) > 1e-6 ? `${(p / c.spectral[i]).toFixed(2)}×` : '—'));
+  const ratio = c.product.map((p, i) => (Math.abs(c.spectral[i]) > 1e-6 ? `${(p / c.spectral[i]).toFixed(2)}×` : '—'));
   const shown = (rgb) => `${swatch(rgb)} ${triple(rgb)}`;
-  const caption = 'Linear RGB, white (the 6504 K black body) = (1, 1, 1); values outside 0…1 are outside the sRGB ' +
+  const caption =
+    'Linear RGB, white (the 6504 K black body) = (1, 1, 1); values outside 0…1 are outside the sRGB ' +
     'gamut (swatches clip them)';
   return table(caption, [
     row('the light', shown(c.light)),
@@ -124,7 +124,11 @@ function rgbTableHtml(c) {
 
 export function createRadiance(container, initialState = {}, { onStateChange } = {}) {
   const shell = createWidgetShell(container, {
-    name: 'radiance', schema, initialState, about: ABOUT, terms: TERMS_USED,
+    name: 'radiance',
+    schema,
+    initialState,
+    about: ABOUT,
+    terms: TERMS_USED,
   });
   const canvas = document.createElement('canvas');
   canvas.className = 'radiance-lamp';
@@ -146,10 +150,13 @@ export function createRadiance(container, initialState = {}, { onStateChange } =
     lampTable.innerHTML = lampTableHtml(s, view);
     const c = colours(s.light, s.surface);
     rgbTable.innerHTML = rgbTableHtml(c);
-    shell.describe(`A lamp ${s.distance} m away covers ${(2 * view.angularRadiusDeg).toFixed(2)}° and still shows ` +
-      `radiance L; the irradiance it gives is ${fmt(view.irradiance)} L. ${LIGHTS[s.light].name} on ` +
-      `${SURFACES[s.surface].name.toLowerCase()}: reflected light per wavelength is RGB ${triple(c.spectral)}, ` +
-      `the RGB shortcut gives ${triple(c.product)}.`, canvas);
+    shell.describe(
+      `A lamp ${s.distance} m away covers ${(2 * view.angularRadiusDeg).toFixed(2)}° and still shows ` +
+        `radiance L; the irradiance it gives is ${fmt(view.irradiance)} L. ${LIGHTS[s.light].name} on ` +
+        `${SURFACES[s.surface].name.toLowerCase()}: reflected light per wavelength is RGB ${triple(c.spectral)}, ` +
+        `the RGB shortcut gives ${triple(c.product)}.`,
+      canvas,
+    );
   };
   render(null);
   const resize = new ResizeObserver(() => drawLamp(canvas, shell.state, lampView(shell.state)));

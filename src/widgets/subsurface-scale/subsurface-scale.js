@@ -49,7 +49,14 @@ function statistics(s) {
   let acc = 0;
   const median = exits.find(([, w]) => (acc += w) >= back / 2)?.[0] ?? 0;
   const mean = back > 0 ? exits.reduce((t, [d, w]) => t + d * w, 0) / back : 0;
-  return { exits, reflectance: back / STATS_WALKS, insideShare: back > 0 ? inside / back : 0, median, mean, stuck: stuck / STATS_WALKS };
+  return {
+    exits,
+    reflectance: back / STATS_WALKS,
+    insideShare: back > 0 ? inside / back : 0,
+    median,
+    mean,
+    stuck: stuck / STATS_WALKS,
+  };
 }
 
 function histogram(stats, maxDist) {
@@ -62,7 +69,13 @@ function histogram(stats, maxDist) {
 }
 
 export function createSubsurfaceScale(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'subsurface-scale', schema, initialState, about: ABOUT, terms: TERMS_USED });
+  const shell = createWidgetShell(container, {
+    name: 'subsurface-scale',
+    schema,
+    initialState,
+    about: ABOUT,
+    terms: TERMS_USED,
+  });
   const canvas = document.createElement('canvas');
   canvas.className = 'subsurface';
   const verdict = document.createElement('p');
@@ -78,10 +91,19 @@ export function createSubsurfaceScale(container, initialState = {}, { onStateCha
     const maxDist = range();
     const { xs, ys } = histogram(stats, maxDist);
     return {
-      title: 'Where the light comes back out: distance from the entry point', xLabel: 'Entry-to-exit distance (mm)', yLabel: 'light per mm',
-      x: { min: 0, max: maxDist }, y: null, legend: false, series: [{ label: 'exiting light', stroke: '#d55e00' }], data: [xs, ys],
-      bands: [{ from: 0, to: shell.state.pixel, color: withAlpha('#009e73', 0.15), label: 'inside the shading sample' }],
-      filename: 'subsurface-exit-distance', height: 220,
+      title: 'Where the light comes back out: distance from the entry point',
+      xLabel: 'Entry-to-exit distance (mm)',
+      yLabel: 'light per mm',
+      x: { min: 0, max: maxDist },
+      y: null,
+      legend: false,
+      series: [{ label: 'exiting light', stroke: '#d55e00' }],
+      data: [xs, ys],
+      bands: [
+        { from: 0, to: shell.state.pixel, color: withAlpha('#009e73', 0.15), label: 'inside the shading sample' },
+      ],
+      filename: 'subsurface-exit-distance',
+      height: 220,
     };
   };
   const plot = createPlot(plotHolder, plotSpec());
@@ -143,7 +165,11 @@ export function createSubsurfaceScale(container, initialState = {}, { onStateCha
     ctx.fillText(`${span.toFixed(1)} mm across`, 8, h - 8);
     // the verdict in words too, not by the circle's colour alone (dashed when subsurface scattering is needed)
     ctx.fillStyle = local ? '#0b5d3b' : '#8c1d18';
-    ctx.fillText(`shading sample: ${local ? 'local, diffuse is enough' : 'too small, needs subsurface scattering'}`, Math.min(w / 2 + s.pixel * scale * 0.72 + 6, w - 270), Math.max(surfaceY + s.pixel * scale * 0.72 + 14, surfaceY + 30));
+    ctx.fillText(
+      `shading sample: ${local ? 'local, diffuse is enough' : 'too small, needs subsurface scattering'}`,
+      Math.min(w / 2 + s.pixel * scale * 0.72 + 6, w - 270),
+      Math.max(surfaceY + s.pixel * scale * 0.72 + 14, surfaceY + 30),
+    );
   }
 
   const render = (changed) => {
@@ -158,9 +184,13 @@ export function createSubsurfaceScale(container, initialState = {}, { onStateCha
     verdict.textContent = local
       ? `${(stats.insideShare * 100).toFixed(1)}% of the light that comes back out leaves inside the shading sample: treat it as local, a diffuse term is enough.`
       : `Only ${(stats.insideShare * 100).toFixed(1)}% of the light that comes back out leaves inside the shading sample: the rest appears elsewhere, so subsurface scattering is needed.`;
-    shell.describe(`${s.walks} light paths in a material with scattering ${s.sigmaS}/mm and absorption ${s.sigmaA}/mm, entering at one point; ` +
-      `median entry-to-exit distance ${stats.median.toFixed(2)} mm against a shading sample of radius ${s.pixel} mm. ${verdict.textContent}`, canvas);
-    table.innerHTML = '<table class="data-table compact"><caption>From 20 000 paths</caption><tbody>' +
+    shell.describe(
+      `${s.walks} light paths in a material with scattering ${s.sigmaS}/mm and absorption ${s.sigmaA}/mm, entering at one point; ` +
+        `median entry-to-exit distance ${stats.median.toFixed(2)} mm against a shading sample of radius ${s.pixel} mm. ${verdict.textContent}`,
+      canvas,
+    );
+    table.innerHTML =
+      '<table class="data-table compact"><caption>From 20 000 paths</caption><tbody>' +
       `<tr><td>mean free path 1/σt</td><td>${meanFreePath(s.sigmaS + s.sigmaA).toFixed(3)} mm</td></tr>` +
       `<tr><td>single-scattering albedo σs/σt</td><td>${scatteringAlbedo(s.sigmaS, s.sigmaA).toFixed(3)}</td></tr>` +
       `<tr><td>light that comes back out of this 2-D slab (isotropic scattering, no refraction at the surface: not a real material’s diffuse albedo)</td><td>${(stats.reflectance * 100).toFixed(1)}%</td></tr>` +
@@ -175,7 +205,12 @@ export function createSubsurfaceScale(container, initialState = {}, { onStateCha
   return {
     update,
     getState: () => shell.state,
-    getStatistics: () => ({ reflectance: stats.reflectance, insideShare: stats.insideShare, median: stats.median, mean: stats.mean }),
+    getStatistics: () => ({
+      reflectance: stats.reflectance,
+      insideShare: stats.insideShare,
+      median: stats.median,
+      mean: stats.mean,
+    }),
     dispose() {
       resize.disconnect();
       plot.dispose();

@@ -50,7 +50,11 @@ export function drawInterface(canvas, spec) {
   if (spec.metal) {
     // in a metal the refracted light dies within a few tens of nanometres: drawn as a short stub
     ray(cx, y0, cx + 12 * Math.sin(tt), y0 + 12 * Math.cos(tt), W * (1 - spec.F), '#b5651d');
-    ctx.fillText(`refracted ${((1 - spec.F) * 100).toFixed(1)}%: absorbed within ~${spec.depthNm.toFixed(0)} nm (λ/4πk)`, cx + 16, y0 + 34);
+    ctx.fillText(
+      `refracted ${((1 - spec.F) * 100).toFixed(1)}%: absorbed within ~${spec.depthNm.toFixed(0)} nm (λ/4πk)`,
+      cx + 16,
+      y0 + 34,
+    );
   } else {
     ray(cx, y0, cx + 40 * Math.sin(tt), y0 + 40 * Math.cos(tt), W * (1 - spec.F), '#e6a700aa');
     // inside a non-metal the light scatters: walks that start along the refracted ray (Snell's angle);
@@ -62,17 +66,25 @@ export function drawInterface(canvas, spec) {
       ctx.strokeStyle = walk.exit === 'back' ? '#0072b2aa' : '#0072b244';
       ctx.lineWidth = 1;
       ctx.beginPath();
-      walk.points.forEach(([x, y], k) => (k ? ctx.lineTo(cx + x * scale, y0 + y * scale) : ctx.moveTo(cx + x * scale, y0 + y * scale)));
+      walk.points.forEach(([x, y], k) =>
+        k ? ctx.lineTo(cx + x * scale, y0 + y * scale) : ctx.moveTo(cx + x * scale, y0 + y * scale),
+      );
       ctx.stroke();
       if (walk.exit === 'back') ray(cx + walk.x * scale, y0, cx + walk.x * scale, y0 - 14, 2, '#0072b2');
     }
     ctx.fillStyle = '#222';
-    ctx.fillText(`refracted ${((1 - spec.F) * 100).toFixed(1)}%: scattered inside; where paths reach the surface again, light leaves (diffuse)`, 12, h - 12);
+    ctx.fillText(
+      `refracted ${((1 - spec.F) * 100).toFixed(1)}%: scattered inside; where paths reach the surface again, light leaves (diffuse)`,
+      12,
+      h - 12,
+    );
   }
 }
 
 /** The cross-section in words. */
 export function describeInterface(spec) {
-  const rest = spec.metal ? `absorbed by the metal within about ${spec.depthNm.toFixed(0)} nm` : 'refracted and scattered inside; some of it comes back out as diffuse light';
+  const rest = spec.metal
+    ? `absorbed by the metal within about ${spec.depthNm.toFixed(0)} nm`
+    : 'refracted and scattered inside; some of it comes back out as diffuse light';
   return `Optically flat ${spec.name} in cross-section: light at ${spec.theta.toFixed(0)}° incidence, ${(spec.F * 100).toFixed(1)}% reflected; the other ${((1 - spec.F) * 100).toFixed(1)}% is ${rest}.`;
 }

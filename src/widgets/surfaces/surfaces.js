@@ -14,7 +14,12 @@ import { smithG1Beckmann } from '../../math/visibility.js';
 import { describeInterface, drawInterface } from './interface-view.js';
 
 export const schema = {
-  material: { type: 'enum', options: Object.fromEntries([...NON_METALS, ...METALS].map((m) => [m.key, m.name])), default: 'glass-high', label: 'Material' },
+  material: {
+    type: 'enum',
+    options: Object.fromEntries([...NON_METALS, ...METALS].map((m) => [m.key, m.name])),
+    default: 'glass-high',
+    label: 'Material',
+  },
   theta: { type: 'number', min: 0, max: 89, step: 1, default: 40, label: 'Angle of incidence', unit: '°' },
   alpha: { type: 'number', min: 0.02, max: 0.8, step: 0.01, default: 0.2, label: 'Microsurface roughness α' },
 };
@@ -40,7 +45,14 @@ function interfaceSpec(s) {
   const green = 1; // the 550 nm channel stands for the picture
   const F = metal ? fresnelConductor(c, p.eta[green], p.k[green]) : fresnelDielectric(c, p.eta[green]);
   const k550 = metal ? measuredRgbNk(s.material)[green][1] : 0;
-  return { theta: s.theta, F, etaRefr: metal ? Math.max(p.eta[green], 1) : p.eta[green], metal, depthNm: metal ? 550 / (4 * Math.PI * k550) : 0, name: materialByKey(s.material).name };
+  return {
+    theta: s.theta,
+    F,
+    etaRefr: metal ? Math.max(p.eta[green], 1) : p.eta[green],
+    metal,
+    depthNm: metal ? 550 / (4 * Math.PI * k550) : 0,
+    name: materialByKey(s.material).name,
+  };
 }
 
 function coneSpec(s, profile) {
@@ -53,17 +65,35 @@ function coneSpec(s, profile) {
     if (b >= 0 && b < bins) counts[b] += 1 / RAYS / width / (180 / Math.PI);
   }
   const xs = Float64Array.from({ length: bins }, (_, b) => ((b + 0.5) * width - Math.PI / 2) / DEG);
-  const predicted = xs.map((deg) => reflectedAngleDensity(deg * DEG, ti, 'beckmann', s.alpha, smithG1Beckmann) / (180 / Math.PI));
+  const predicted = xs.map(
+    (deg) => reflectedAngleDensity(deg * DEG, ti, 'beckmann', s.alpha, smithG1Beckmann) / (180 / Math.PI),
+  );
   return {
     title: `Where light from ${s.theta}° goes after one reflection (rough surface, α = ${s.alpha})`,
-    xLabel: 'Outgoing angle (degrees; the mirror direction is −θ)', yLabel: 'share per degree', x: { min: -90, max: 90 }, y: null,
-    series: [{ label: 'ray-traced microsurface', stroke: '#d55e00' }, { label: 'microfacet prediction', stroke: '#0072b2', dash: [6, 4] }],
-    data: [xs, counts, predicted], bands: [], xValues: (u, t) => t.map((v) => `${v}°`), filename: 'reflection-cone', height: 230,
+    xLabel: 'Outgoing angle (degrees; the mirror direction is −θ)',
+    yLabel: 'share per degree',
+    x: { min: -90, max: 90 },
+    y: null,
+    series: [
+      { label: 'ray-traced microsurface', stroke: '#d55e00' },
+      { label: 'microfacet prediction', stroke: '#0072b2', dash: [6, 4] },
+    ],
+    data: [xs, counts, predicted],
+    bands: [],
+    xValues: (u, t) => t.map((v) => `${v}°`),
+    filename: 'reflection-cone',
+    height: 230,
   };
 }
 
 export function createSurfaces(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'surfaces', schema, initialState, about: ABOUT, terms: TERMS_USED });
+  const shell = createWidgetShell(container, {
+    name: 'surfaces',
+    schema,
+    initialState,
+    about: ABOUT,
+    terms: TERMS_USED,
+  });
   const flat = document.createElement('canvas');
   flat.className = 'interface';
   shell.view.append(flat);
@@ -75,7 +105,9 @@ export function createSurfaces(container, initialState = {}, { onStateChange } =
   const camera = new THREE.PerspectiveCamera(24, 1, 0.1, 20);
   camera.position.set(0, 0, 5.2);
   const geometry = new THREE.SphereGeometry(1, 96, 48);
-  const materials = SPHERE_ROUGHNESS.map((r) => new THREE.MeshStandardMaterial({ color: '#b8bcc2', metalness: 1, roughness: r }));
+  const materials = SPHERE_ROUGHNESS.map(
+    (r) => new THREE.MeshStandardMaterial({ color: '#b8bcc2', metalness: 1, roughness: r }),
+  );
   const mesh = new THREE.Mesh(geometry);
   scene.add(mesh);
   let pmrem = null;
@@ -113,14 +145,19 @@ export function createSurfaces(container, initialState = {}, { onStateChange } =
     viewport.holder.style.aspectRatio = `${materials.length} / 1`;
     const labels = document.createElement('div');
     labels.className = 'sphere-labels';
-    labels.append(...SPHERE_ROUGHNESS.map((r) => Object.assign(document.createElement('span'), { textContent: `roughness ${r}` })));
+    labels.append(
+      ...SPHERE_ROUGHNESS.map((r) => Object.assign(document.createElement('span'), { textContent: `roughness ${r}` })),
+    );
     viewport.holder.append(labels);
   }
 
   const render = (changed) => {
     const spec = interfaceSpec(shell.state);
     drawInterface(flat, spec);
-    shell.describe(`${describeInterface(spec)} With microgeometry of roughness α ${shell.state.alpha}, the reflection spreads into a cone around the mirror direction (plot below).`, flat);
+    shell.describe(
+      `${describeInterface(spec)} With microgeometry of roughness α ${shell.state.alpha}, the reflection spreads into a cone around the mirror direction (plot below).`,
+      flat,
+    );
     if (changed?.includes('alpha')) profile = generateProfile(PROFILE, 'beckmann', shell.state.alpha, 2);
     if (!changed || changed.some((k) => k === 'alpha' || k === 'theta')) cone.setData(coneSpec(shell.state, profile));
   };

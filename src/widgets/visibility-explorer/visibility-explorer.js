@@ -31,7 +31,15 @@ export const schema = {
   terms: {
     type: 'set',
     options: Object.fromEntries(Object.entries(TERMS).map(([k, v]) => [k, v.name])),
-    default: ['implicit', 'cookTorrance', 'kelemen', 'smithGGXSeparable', 'smithGGXCorrelated', 'smithGGXCorrelatedFast', 'schlickGGX'],
+    default: [
+      'implicit',
+      'cookTorrance',
+      'kelemen',
+      'smithGGXSeparable',
+      'smithGGXCorrelated',
+      'smithGGXCorrelatedFast',
+      'schlickGGX',
+    ],
     label: 'Terms',
   },
   lightTheta: { type: 'number', min: 0, max: 85, step: 1, default: 30, label: 'Sphere light from view', unit: '°' },
@@ -58,37 +66,79 @@ function directions(state, deg) {
 
 function curves(state) {
   const params = { alpha: state.alpha };
-  const evalTerm = (key) => ANGLES.map((deg) => {
-    const { l, v } = directions(state, deg);
-    const a = brdfAngles(l, v);
-    return VISIBILITY_TERMS[key](a, params) * a.nl * a.nv;
-  });
+  const evalTerm = (key) =>
+    ANGLES.map((deg) => {
+      const { l, v } = directions(state, deg);
+      const a = brdfAngles(l, v);
+      return VISIBILITY_TERMS[key](a, params) * a.nl * a.nv;
+    });
   const reference = evalTerm(REFERENCE);
   return state.terms.map((key) => {
     const G = evalTerm(key);
     const error = G.map((g, i) => (reference[i] > 1e-9 ? (100 * (g - reference[i])) / reference[i] : null));
     const within = error.filter((e, i) => e !== null && ANGLES[i] <= 80);
-    return { key, label: TERMS[key].name, ...seriesStyle(Object.keys(TERMS).indexOf(key)), G, error, worst: Math.max(...within.map(Math.abs)) };
+    return {
+      key,
+      label: TERMS[key].name,
+      ...seriesStyle(Object.keys(TERMS).indexOf(key)),
+      G,
+      error,
+      worst: Math.max(...within.map(Math.abs)),
+    };
   });
 }
 
-const TERMS_USED = ['visibilityImplicit', 'visibilityCookTorrance', 'visibilityKelemen', 'visibilitySmithGGXSeparable', 'visibilitySmithGGXCorrelated', 'visibilitySmithGGXCorrelatedFast', 'visibilitySchlickGGX', 'visibilitySmithBeckmannSeparable', 'microfacetBRDF'];
+const TERMS_USED = [
+  'visibilityImplicit',
+  'visibilityCookTorrance',
+  'visibilityKelemen',
+  'visibilitySmithGGXSeparable',
+  'visibilitySmithGGXCorrelated',
+  'visibilitySmithGGXCorrelatedFast',
+  'visibilitySchlickGGX',
+  'visibilitySmithBeckmannSeparable',
+  'microfacetBRDF',
+];
 
 export function createVisibilityExplorer(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'visibility-explorer', schema, initialState, about: ABOUT, terms: TERMS_USED });
+  const shell = createWidgetShell(container, {
+    name: 'visibility-explorer',
+    schema,
+    initialState,
+    about: ABOUT,
+    terms: TERMS_USED,
+  });
   const plots = document.createElement('div');
   shell.view.append(plots);
   let data = curves(shell.state);
-  const xLabel = () => (shell.state.config === 'mirror' ? 'Angle of l and of v from n (degrees)' : `Light angle θl, view fixed at ${shell.state.viewTheta}° (degrees)`);
+  const xLabel = () =>
+    shell.state.config === 'mirror'
+      ? 'Angle of l and of v from n (degrees)'
+      : `Light angle θl, view fixed at ${shell.state.viewTheta}° (degrees)`;
   const gSpec = () => ({
-    title: `G = V·(n·l)(n·v) at α = ${shell.state.alpha}`, xLabel: xLabel(), yLabel: 'G', x: { min: 0, max: 90 }, y: { min: 0, max: 1.05 },
-    xValues: (u, t) => t.map((v) => `${v}°`), series: data.map((c) => ({ label: c.label, stroke: c.stroke, dash: c.dash })),
-    data: [ANGLES, ...data.map((c) => c.G)], filename: 'visibility-G', height: 280,
+    title: `G = V·(n·l)(n·v) at α = ${shell.state.alpha}`,
+    xLabel: xLabel(),
+    yLabel: 'G',
+    x: { min: 0, max: 90 },
+    y: { min: 0, max: 1.05 },
+    xValues: (u, t) => t.map((v) => `${v}°`),
+    series: data.map((c) => ({ label: c.label, stroke: c.stroke, dash: c.dash })),
+    data: [ANGLES, ...data.map((c) => c.G)],
+    filename: 'visibility-G',
+    height: 280,
   });
   const errSpec = () => ({
-    title: 'Difference from height-correlated Smith (%)', xLabel: xLabel(), yLabel: 'error (%)', x: { min: 0, max: 90 }, y: { min: -100, max: 100 },
-    xValues: (u, t) => t.map((v) => `${v}°`), legend: false, series: data.map((c) => ({ label: c.label, stroke: c.stroke, dash: c.dash })),
-    data: [ANGLES, ...data.map((c) => c.error)], filename: 'visibility-error', height: 220,
+    title: 'Difference from height-correlated Smith (%)',
+    xLabel: xLabel(),
+    yLabel: 'error (%)',
+    x: { min: 0, max: 90 },
+    y: { min: -100, max: 100 },
+    xValues: (u, t) => t.map((v) => `${v}°`),
+    legend: false,
+    series: data.map((c) => ({ label: c.label, stroke: c.stroke, dash: c.dash })),
+    data: [ANGLES, ...data.map((c) => c.error)],
+    filename: 'visibility-error',
+    height: 220,
   });
   const gPlot = createPlot(plots, gSpec());
   const errPlot = createPlot(plots, errSpec());
@@ -97,24 +147,40 @@ export function createVisibilityExplorer(container, initialState = {}, { onState
   shell.view.append(table);
 
   const renderTable = () => {
-    table.innerHTML = '<table class="data-table compact"><caption>Largest difference from height-correlated Smith up to 80°, in these directions</caption>' +
+    table.innerHTML =
+      '<table class="data-table compact"><caption>Largest difference from height-correlated Smith up to 80°, in these directions</caption>' +
       '<thead><tr><th>Term</th><th>max |error|</th></tr></thead><tbody>' +
-      data.map((c) => `<tr><td><span class="swatch" style="background:${c.stroke}"></span> ${c.label}</td><td>${c.worst.toFixed(1)}%</td></tr>`).join('') + '</tbody></table>';
+      data
+        .map(
+          (c) =>
+            `<tr><td><span class="swatch" style="background:${c.stroke}"></span> ${c.label}</td><td>${c.worst.toFixed(1)}%</td></tr>`,
+        )
+        .join('') +
+      '</tbody></table>';
   };
   const renderSpheres = () => {
     const s = shell.state;
-    spheres.setCells(data.map((c) => ({
-      label: c.label.split(' (')[0].replace(', height-correlated', ' corr.').replace(', separable', ' sep.'),
-      defines: { [TERMS[c.key].define]: true, NDF_GGX: true, F_ONE: true },
-      uniforms: { uLightDir: lightDirFromAngles(s.lightTheta, 135), uExposure: s.exposure, uAlpha: s.alpha },
-      probe: (a) => {
-        const V = VISIBILITY_TERMS[c.key](a, { alpha: s.alpha });
-        return [['V', V.toPrecision(4)], ['G = V (n·l)(n·v)', (V * Math.max(a.nl, 0) * Math.max(a.nv, 0)).toFixed(4)], ['V / V Smith corr.', (V / VISIBILITY_TERMS[REFERENCE](a, { alpha: s.alpha })).toFixed(4)]];
-      },
-    })));
-    shell.describe(`Spheres with GGX D at α ${s.alpha} and F = 1, light ${s.lightTheta}° from the view, exposure ${s.exposure}, one per visibility term. ` +
-      `Largest difference from height-correlated Smith up to 80° (${s.config === 'mirror' ? 'l and v mirrored' : `view at ${s.viewTheta}°`}): ` +
-      `${data.map((c) => `${c.label} ${c.worst.toFixed(1)}%`).join(', ') || 'no term chosen'}.`, spheres.canvas);
+    spheres.setCells(
+      data.map((c) => ({
+        label: c.label.split(' (')[0].replace(', height-correlated', ' corr.').replace(', separable', ' sep.'),
+        defines: { [TERMS[c.key].define]: true, NDF_GGX: true, F_ONE: true },
+        uniforms: { uLightDir: lightDirFromAngles(s.lightTheta, 135), uExposure: s.exposure, uAlpha: s.alpha },
+        probe: (a) => {
+          const V = VISIBILITY_TERMS[c.key](a, { alpha: s.alpha });
+          return [
+            ['V', V.toPrecision(4)],
+            ['G = V (n·l)(n·v)', (V * Math.max(a.nl, 0) * Math.max(a.nv, 0)).toFixed(4)],
+            ['V / V Smith corr.', (V / VISIBILITY_TERMS[REFERENCE](a, { alpha: s.alpha })).toFixed(4)],
+          ];
+        },
+      })),
+    );
+    shell.describe(
+      `Spheres with GGX D at α ${s.alpha} and F = 1, light ${s.lightTheta}° from the view, exposure ${s.exposure}, one per visibility term. ` +
+        `Largest difference from height-correlated Smith up to 80° (${s.config === 'mirror' ? 'l and v mirrored' : `view at ${s.viewTheta}°`}): ` +
+        `${data.map((c) => `${c.label} ${c.worst.toFixed(1)}%`).join(', ') || 'no term chosen'}.`,
+      spheres.canvas,
+    );
   };
   renderTable();
   renderSpheres();
