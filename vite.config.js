@@ -100,9 +100,9 @@ function cspMeta() {
   };
 }
 
-/** Every page loads src/core/offline.js, which registers the service worker (before Vite bundles the page). */
+/** Every page loads src/core/framework/offline.js, which registers the service worker (before Vite bundles the page). */
 function offlineScript() {
-  const tag = '    <script type="module" src="/src/core/offline.js"></script>\n  </body>';
+  const tag = '    <script type="module" src="/src/core/framework/offline.js"></script>\n  </body>';
   return {
     name: 'shading-lab-offline',
     transformIndexHtml: { order: 'pre', handler: (html) => html.replace('</body>', tag) },

@@ -1,7 +1,7 @@
 // node bench/dfg-tables.js: how long the split sum's float64 quadrature takes: each DFG table (DFG_TABLE_SIZE²
 // texels; npm run dfg-tables builds them ahead, the page only decodes them, also timed), the energy widget's
 // sweep, and one adaptive evaluation. Wall-clock on this machine; the figures vary with its load.
-import { computeDfgTable, dfgTableData } from '../src/core/lab/dfg-table.js';
+import { computeDfgTable, dfgTableData } from '../src/lab/dfg-table.js';
 import { DFG_TABLE_SIZE, albedoGGX, averageAlbedo } from '../src/math/integrate.js';
 
 const time = (fn) => {

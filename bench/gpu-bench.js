@@ -1,7 +1,7 @@
 // The GPU half of `npm run bench`: each variant's GLSL expression evaluated LOOPS times per pixel over a
 // full-screen pass; each frame is drained (a 1-pixel readPixels waits for the GPU), the median frame kept.
 import { FAMILIES } from './families.js';
-import { assembleGlsl } from '../src/core/glsl.js';
+import { assembleGlsl } from '../src/core/gpu/glsl.js';
 import { compareWithMeshStandard } from './versus-three.js';
 
 const params = new URLSearchParams(location.search);

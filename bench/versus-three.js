@@ -2,8 +2,8 @@
 // Schlick with F0 = 0.04, Lambert, one punctual light) against MeshStandardMaterial itself: same mesh,
 // same resolution, same light; each frame drained with a 1-pixel readPixels, the median kept.
 import * as THREE from 'three';
-import { assembleGlsl } from '../src/core/glsl.js';
-import { SHADER_CHUNKS } from '../src/core/shader-chunks.js';
+import { assembleGlsl } from '../src/core/gpu/glsl.js';
+import { SHADER_CHUNKS } from '../src/core/gpu/shader-chunks.js';
 
 export function compareWithMeshStandard({ size = 512, frames = 9 } = {}) {
   const canvas = document.createElement('canvas');

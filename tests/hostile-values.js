@@ -1,6 +1,6 @@
 // Hostile values for the fuzz tests (unit and browser): what a crafted link or a hostile parent page may send,
 // a seeded generator of partial states from them, and the rules a widget's state must keep whatever came in.
-// The rules are written here from the README's description of the state, not from src/core/state.js.
+// The rules are written here from the README's description of the state, not from src/core/framework/state.js.
 
 /** A small seeded generator (mulberry32): the same seed gives the same inputs on every run. */
 export function seededRandom(seed) {

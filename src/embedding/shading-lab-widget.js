@@ -8,7 +8,7 @@
 //   events            'ready' and 'change' (the user moved the widget), detail { state, query }
 // Built alone into dist/shading-lab-widget.js: it imports nothing, so the page embedding it loads no three.js.
 
-// The protocol's message prefix (src/core/embed-protocol.js MESSAGE_PREFIX; a unit test holds them equal).
+// The protocol's message prefix (src/core/framework/embed-protocol.js MESSAGE_PREFIX; a unit test holds them equal).
 export const PREFIX = 'shading-lab:';
 const HELLO_MS = 250; // how often to ask a widget that has not said `ready` (a browser that hides the parent's origin)
 const HELLO_TRIES = 120;

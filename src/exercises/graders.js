@@ -6,7 +6,7 @@
 //             { kind: 'number', label, unit }: typed into a box; { kind: 'choice', choices(params) }: picked.
 //   widget    the widget it reads (null: any widget, or none); reads: state keys the student sets (left free);
 //             given: state keys that pose the question (must be locked); requires: locked values it assumes.
-//   params    a state-style schema (src/core/state.js) for the file's "params"; `required: true` has no default.
+//   params    a state-style schema (src/core/framework/state.js) for the file's "params"; `required: true` has no default.
 //   tolerance what the file's "tolerance" (a positive number) means.
 //   grade({ state, answer, params, tolerance, hidden }) → { ok, summary, details: [text] }
 //   hide(params, random) → the secret part of the question, drawn when the exercise opens (optional).

@@ -1,7 +1,7 @@
 // Reads a set of exercises: one exercise object, a list of them, or an index { "exercises": [file names
 // relative to the index, or objects] }, from a URL or from a dropped file's text. Never throws: every
 // problem comes back as { source, errors } next to the exercises that are fine.
-import { showValue } from '../core/state.js';
+import { showValue } from '../core/framework/state.js';
 import { validateExercise } from './validate.js';
 
 // An exercise file is a few kB; a set is refused past these, before it is read into memory.

@@ -1,6 +1,6 @@
 // Pictures some graders show next to the prompt, drawn from the same JS math they grade with: the target
 // sphere beside the student's (sphere-match), and the hidden NDF's highlight and profile (ndf-profile).
-import { createPlot } from '../core/plot.js';
+import { createPlot } from '../core/ui/plot.js';
 import { displayValue, peakOf } from './sphere-image.js';
 import { highlightSphere, materialSphere, ndfProfiles } from './graders.js';
 

@@ -1,7 +1,7 @@
 // Checks an exercise file (parsed JSON) against the format in docs/exercises.md. Never throws: returns
 // { exercise, errors }, each error naming the field and what is wrong, so a lecturer can fix the file.
-import { CHAPTERS } from '../core/chapters.js';
-import { coerceState, defaultState, isOption, showValue } from '../core/state.js';
+import { CHAPTERS } from '../pages/chapters.js';
+import { coerceState, defaultState, isOption, showValue } from '../core/framework/state.js';
 import { GRADERS, isGraderName } from './graders.js';
 
 export const FIELDS = [
@@ -22,7 +22,7 @@ const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v)
 const sameValue = (a, b) =>
   JSON.stringify(Array.isArray(a) ? [...a].sort() : a) === JSON.stringify(Array.isArray(b) ? [...b].sort() : b);
 
-/** Why `value` does not fit state field `f` (src/core/state.js kinds), or null. Strict: no strings for numbers. */
+/** Why `value` does not fit state field `f` (src/core/framework/state.js kinds), or null. Strict: no strings for numbers. */
 export function fieldProblem(f, value) {
   switch (f.type) {
     case 'number':

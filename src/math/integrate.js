@@ -280,7 +280,7 @@ export function dfgSplitSum(mu, alpha, terms = {}, { nodes = 0 } = {}) {
   return [sum[0] / Math.PI, sum[1] / Math.PI];
 }
 
-/** Texels per side of the DFG table the GPU samples (src/core/lab/dfg-table.js builds it). */
+/** Texels per side of the DFG table the GPU samples (src/lab/dfg-table.js builds it). */
 export const DFG_TABLE_SIZE = 72;
 
 /**

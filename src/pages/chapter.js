@@ -1,7 +1,7 @@
 // A chapter page: every element with data-slot="WIDGET" gets that widget, its URL keys under data-prefix.
 import '../styles.css';
-import { mountWidget } from '../core/widget-host.js';
-import { typesetFormulas } from '../core/formulas.js';
+import { mountWidget } from '../core/framework/widget-host.js';
+import { typesetFormulas } from '../core/ui/formulas.js';
 
 typesetFormulas();
 

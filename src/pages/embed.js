@@ -1,13 +1,13 @@
 // embed.html?w=NAME&...: one widget alone, no page chrome, filling its frame. In an iframe it speaks the
-// postMessage protocol of src/core/embed-protocol.js with its parent, if the parent's origin is allowed
+// postMessage protocol of src/core/framework/embed-protocol.js with its parent, if the parent's origin is allowed
 // (`origins=`, a comma list; the widget's own origin always is).
 import '../styles.css';
-import { mountWidget } from '../core/widget-host.js';
-import { connectEmbedProtocol, parseAllowedOrigins } from '../core/embed-protocol.js';
+import { mountWidget } from '../core/framework/widget-host.js';
+import { connectEmbedProtocol, parseAllowedOrigins } from '../core/framework/embed-protocol.js';
 import { WIDGETS, isWidgetName } from '../widgets/registry.js';
-import { createNoticeArea, showBlockingMessage } from '../core/notice.js';
-import { showValue } from '../core/state.js';
-import { snapshotWidget } from '../core/snapshot.js';
+import { createNoticeArea, showBlockingMessage } from '../core/framework/notice.js';
+import { showValue } from '../core/framework/state.js';
+import { snapshotWidget } from '../core/framework/snapshot.js';
 
 const root = document.getElementById('embed');
 const params = new URLSearchParams(location.search);

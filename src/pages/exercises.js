@@ -2,16 +2,16 @@
 // pictures, the widget with its locked controls, an answer, Check, feedback). The set comes from
 // exercises/index.json, from ?src=URL, or from a dropped file; a bad file shows its errors, nothing throws.
 import '../styles.css';
-import { CHAPTERS } from '../core/chapters.js';
-import { mountWidget } from '../core/widget-host.js';
-import { isOption } from '../core/state.js';
+import { CHAPTERS } from './chapters.js';
+import { mountWidget } from '../core/framework/widget-host.js';
+import { isOption } from '../core/framework/state.js';
 import { WIDGETS, isWidgetName } from '../widgets/registry.js';
 import { GRADERS } from '../exercises/graders.js';
 import { loadExerciseSet, readExerciseFile } from '../exercises/load.js';
 import { createProgress } from '../exercises/progress.js';
 import { parseNumberAnswer } from '../exercises/answer.js';
 import { createPreview } from '../exercises/previews.js';
-import { hashId } from '../core/url-hash.js';
+import { hashId } from '../core/framework/url-hash.js';
 
 const registry = (globalThis.__shadingLab ??= { frames: 0 });
 const listEl = document.getElementById('exercise-list');

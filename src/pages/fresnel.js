@@ -1,7 +1,7 @@
 // The Fresnel chapter: curves, the zones demo and the F0 tables, each in its own section of the page.
 // A material picked in the tables loads into the two other widgets in place.
 import '../styles.css';
-import { mountWidget } from '../core/widget-host.js';
+import { mountWidget } from '../core/framework/widget-host.js';
 
 const slot = (name) => document.querySelector(`[data-slot="${name}"]`);
 

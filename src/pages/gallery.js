@@ -1,8 +1,8 @@
 // gallery.html: every registered widget with a live preview (loaded when scrolled to) and the iframe snippet
 // that embeds it in the state the preview shows. The previews report their state through the embed
-// protocol (src/core/embed-protocol.js); the gallery is on their origin, so they talk to it by default.
+// protocol (src/core/framework/embed-protocol.js); the gallery is on their origin, so they talk to it by default.
 import '../styles.css';
-import { MESSAGE_PREFIX } from '../core/embed-protocol.js';
+import { MESSAGE_PREFIX } from '../core/framework/embed-protocol.js';
 import { WIDGETS } from '../widgets/registry.js';
 
 const PREVIEW_HEIGHT = 600; // px: room for a view and its controls; the widget scrolls inside the frame

@@ -1,8 +1,8 @@
 // The landing page: every chapter in the talk's order, live ones linked with their widgets.
 import '../styles.css';
-import { CHAPTERS } from '../core/chapters.js';
+import { CHAPTERS } from './chapters.js';
 import { WIDGETS } from '../widgets/registry.js';
-import { CHAPTER_PICTURES, CHAPTER_PICTURE_SIZE, chapterPictureUrl } from '../core/chapter-pictures.js';
+import { CHAPTER_PICTURES, CHAPTER_PICTURE_SIZE, chapterPictureUrl } from './chapter-pictures.js';
 
 /** The chapter's picture, linked to its page when it has one. */
 function picture(ch) {

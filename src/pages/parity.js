@@ -1,9 +1,9 @@
 // parity.html: runs the GLSL-vs-JS parity harness on this browser's GPU and shows the table.
 import '../styles.css';
 import * as THREE from 'three';
-import { PARITY_CASES, TOLERANCE } from '../core/parity-cases.js';
-import { runParity } from '../core/parity.js';
-import { showBlockingMessage } from '../core/notice.js';
+import { PARITY_CASES, TOLERANCE } from '../core/gpu/parity-cases.js';
+import { runParity } from '../core/gpu/parity.js';
+import { showBlockingMessage } from '../core/framework/notice.js';
 
 const out = document.getElementById('parity');
 const canvas = document.createElement('canvas');

@@ -3,8 +3,8 @@
 import '../styles.css';
 import report from '../../bench/results/latest.json';
 import { iblStaleNote } from './ibl-note.js';
-import { createPlot } from '../core/plot.js';
-import { SERIES_COLORS } from '../core/palettes.js';
+import { createPlot } from '../core/ui/plot.js';
+import { SERIES_COLORS } from '../core/ui/palettes.js';
 
 const ERROR_FLOOR = 1e-7; // the reference has error 0, which a log axis cannot show: drawn on the floor
 const root = document.getElementById('families');

@@ -3,12 +3,12 @@
 // forward walk the tour. A widget that goes on from one step to the next is kept and only given the new
 // state; a different one replaces it, and the old one is disposed (its WebGL context with it).
 import '../styles.css';
-import { mountWidget } from '../core/widget-host.js';
-import { defaultState, showValue } from '../core/state.js';
-import { createNoticeArea } from '../core/notice.js';
+import { mountWidget } from '../core/framework/widget-host.js';
+import { defaultState, showValue } from '../core/framework/state.js';
+import { createNoticeArea } from '../core/framework/notice.js';
 import { WIDGETS, isWidgetName } from '../widgets/registry.js';
 import { tourPlan } from '../tour/steps.js';
-import { hashId } from '../core/url-hash.js';
+import { hashId } from '../core/framework/url-hash.js';
 
 const { steps, sections } = tourPlan(isWidgetName);
 const root = document.getElementById('tour');

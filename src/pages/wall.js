@@ -1,9 +1,9 @@
 // wall.html: twenty 3-D widgets mounted on one page, more than the browser's cap on live WebGL contexts;
-// the shared context budget (src/core/gl-budget.js) keeps every one of them drawable.
+// the shared context budget (src/core/gpu/gl-budget.js) keeps every one of them drawable.
 import '../styles.css';
-import { mountWidget } from '../core/widget-host.js';
-import { glBudgetStatus } from '../core/gl-budget.js';
-import { stateToParams } from '../core/state.js';
+import { mountWidget } from '../core/framework/widget-host.js';
+import { glBudgetStatus } from '../core/gpu/gl-budget.js';
+import { stateToParams } from '../core/framework/state.js';
 import { WIDGETS } from '../widgets/registry.js';
 
 // [widget, caption, state]: every widget with a 3-D view, in a few of its states each

@@ -3,7 +3,7 @@
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { ROOT, buildApp, launchBrowser, openPage, serveStatic, settle } from './harness.js';
-import { CHAPTER_PICTURE_SIZE as SIZE } from '../../src/core/chapter-pictures.js';
+import { CHAPTER_PICTURE_SIZE as SIZE } from '../../src/pages/chapter-pictures.js';
 
 const QUALITY = 0.78;
 // chapter key → the page shot, the element pictured (default: the first canvas of the widget's view), and how it

@@ -58,7 +58,7 @@ describe('pages load cleanly', () => {
         'embed.html?w=visibility-explorer',
       ]),
     );
-    const { CHAPTERS } = await import('../../src/core/chapters.js');
+    const { CHAPTERS } = await import('../../src/pages/chapters.js');
     expect(await page.$$eval('.chapter.coming', (els) => els.length)).toBe(CHAPTERS.filter((c) => !c.page).length);
     expect(await page.$$eval('.chapter.live', (els) => els.length)).toBe(CHAPTERS.filter((c) => c.page).length);
     await page.close();

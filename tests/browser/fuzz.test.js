@@ -3,7 +3,7 @@
 // and exercise sets (?src= and dropped files). The rules checked are in tests/hostile-values.js.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { WIDGETS } from '../../src/widgets/registry.js';
-import { defaultState } from '../../src/core/state.js';
+import { defaultState } from '../../src/core/framework/state.js';
 import {
   PROTOTYPE_NAMES,
   candidates,

@@ -5,7 +5,7 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { launchBrowser, open, widget } from './helpers.js';
 
-const EXTENT = 1.1; // the lab's view half width (src/core/lab/lab-renderer.js)
+const EXTENT = 1.1; // the lab's view half width (src/lab/lab-renderer.js)
 const RES = 192; // the lab's image size (src/widgets/material-lab/material-lab.js)
 const POINTS = [
   [0, 0],

@@ -13,7 +13,7 @@ import { writeMerl } from '../../src/measured/merl.js';
 import { modelBRDF } from '../../src/measured/fit.js';
 import { EXAMPLES } from '../../src/widgets/measured-brdf/model.js';
 
-const EXTENT = 1.1; // the lab's view half width (src/core/lab/lab-renderer.js)
+const EXTENT = 1.1; // the lab's view half width (src/lab/lab-renderer.js)
 const RES = 192; // the lab's image size (src/widgets/material-lab/material-lab.js)
 const POINTS = [
   [0, 0],

@@ -7,7 +7,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import jsQR from 'jsqr';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { ZONE_PALETTES } from '../../src/core/palettes.js';
+import { ZONE_PALETTES } from '../../src/core/ui/palettes.js';
 import { sphereZoneFractions } from '../../src/math/zones.js';
 import { launchBrowser, open, settle, widget, withPixels } from './helpers.js';
 

@@ -6,15 +6,15 @@ import { baseUrl, getState, launchBrowser, open, settle, shot, widget, withPixel
 import { openPage } from './harness.js';
 import { linearToSrgb, srgbToLinear } from '../../src/math/color.js';
 import { diffuseOrenNayar } from '../../src/math/diffuse.js';
-import { lightDirFromAngles } from '../../src/core/light-control.js';
-import { hexToRgb } from '../../src/core/palettes.js';
+import { lightDirFromAngles } from '../../src/core/ui/light-control.js';
+import { hexToRgb } from '../../src/core/ui/palettes.js';
 import { fresnelSchlick } from '../../src/math/fresnel.js';
 import { dfgSplitSum } from '../../src/math/integrate.js';
 import { ndfBeckmann, ndfGGX } from '../../src/math/ndf.js';
-import { dfgTableData } from '../../src/core/lab/dfg-table.js';
+import { dfgTableData } from '../../src/lab/dfg-table.js';
 import { sampleDfgTable } from '../unit/dfg-lookup.js';
 
-const EXTENT = 1.1; // the lab's view half width (src/core/lab/lab-renderer.js)
+const EXTENT = 1.1; // the lab's view half width (src/lab/lab-renderer.js)
 const RES = 192; // the lab's image size (src/widgets/material-lab/material-lab.js)
 /** The centre of the lab texel that holds sphere point [x, y]: the image shows each texel's own normal. */
 const texelCentre = (points) =>

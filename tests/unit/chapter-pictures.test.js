@@ -2,8 +2,8 @@
 import { readFileSync, statSync } from 'node:fs';
 import { join } from 'node:path';
 import { describe, expect, it } from 'vitest';
-import { CHAPTERS } from '../../src/core/chapters.js';
-import { CHAPTER_PICTURES, chapterPictureUrl } from '../../src/core/chapter-pictures.js';
+import { CHAPTERS } from '../../src/pages/chapters.js';
+import { CHAPTER_PICTURES, chapterPictureUrl } from '../../src/pages/chapter-pictures.js';
 
 const file = (key) => join(import.meta.dirname, '../../public', chapterPictureUrl(key));
 

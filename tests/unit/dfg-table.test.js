@@ -2,9 +2,9 @@
 // them (half floats, bilinear between texel centres, clamped at the edges) against the adaptive dfgSplitSum.
 import { describe, expect, it } from 'vitest';
 import { DFG_TABLE_SIZE, dfgSplitSum, dfgTableUv } from '../../src/math/integrate.js';
-import { dfgTableData, dfgTexel } from '../../src/core/lab/dfg-table.js';
-import { DFG_TABLES } from '../../src/core/lab/dfg-tables.data.js';
-import { LAB_TERMS } from '../../src/core/lab/lab-approximations.js';
+import { dfgTableData, dfgTexel } from '../../src/lab/dfg-table.js';
+import { DFG_TABLES } from '../../src/lab/dfg-tables.data.js';
+import { LAB_TERMS } from '../../src/lab/lab-approximations.js';
 import { sampleDfgTable } from './dfg-lookup.js';
 
 // probes between and on texel centres, denser toward grazing view and low roughness

@@ -1,6 +1,6 @@
 // The message and origin parsing of the embed protocol: what is accepted, what is ignored, what is reported.
 import { describe, expect, it } from 'vitest';
-import { checkIncomingState, parseAllowedOrigins, parseMessage } from '../../src/core/embed-protocol.js';
+import { checkIncomingState, parseAllowedOrigins, parseMessage } from '../../src/core/framework/embed-protocol.js';
 
 const OWN = 'https://lab.example.org';
 

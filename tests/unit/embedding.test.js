@@ -1,12 +1,12 @@
 // The lecturers' modules without a browser: the element's iframe URL, the plugin's slide markup, and the
 // element speaking the same protocol as embed.html.
 import { describe, expect, it } from 'vitest';
-import { MESSAGE_PREFIX, parseMessage } from '../../src/core/embed-protocol.js';
+import { MESSAGE_PREFIX, parseMessage } from '../../src/core/framework/embed-protocol.js';
 import { PREFIX, frameUrl } from '../../src/embedding/shading-lab-widget.js';
 import { parseWidgetSpec } from '../../src/embedding/reveal-plugin.js';
 
 describe('<shading-lab-widget> iframe URL', () => {
-  it('uses the protocol of src/core/embed-protocol.js', () => {
+  it('uses the protocol of src/core/framework/embed-protocol.js', () => {
     expect(PREFIX).toBe(MESSAGE_PREFIX);
     expect(parseMessage({ type: `${PREFIX}snapshot`, id: 'el-1' })).toEqual({ kind: 'snapshot', id: 'el-1' });
   });

@@ -1,7 +1,7 @@
 // The irradiance map against closed forms: a uniform environment gives its radiance everywhere; a sky that is
 // 1 above the horizon and 0 below gives (1 + n_y)/2 (the cosine-weighted share of the sky seen by n).
 import { describe, expect, it } from 'vitest';
-import { irradianceMap } from '../../src/core/lab/env-irradiance.js';
+import { irradianceMap } from '../../src/lab/env-irradiance.js';
 import { equirectDirection } from '../../src/math/lighting.js';
 
 const W = 128;

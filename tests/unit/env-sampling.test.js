@@ -1,8 +1,8 @@
 // The environment sampling tables against direct integration: the density integrates to 1 over the sphere,
 // and drawing from the tables reproduces it (the share of samples in a bright patch matches its probability).
 import { describe, expect, it } from 'vitest';
-import { buildEnvSampling } from '../../src/core/lab/env-sampling.js';
-import { skyPixels } from '../../src/core/lab/environments.js';
+import { buildEnvSampling } from '../../src/lab/env-sampling.js';
+import { skyPixels } from '../../src/lab/environments.js';
 
 const W = 64;
 const H = 32;

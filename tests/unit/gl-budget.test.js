@@ -10,7 +10,7 @@ beforeAll(async () => {
   vi.stubGlobal('window', win);
   vi.stubGlobal('location', { origin: 'https://lab.example.org' });
   vi.stubGlobal('addEventListener', () => {});
-  ({ joinGlBudget, glBudgetStatus } = await import('../../src/core/gl-budget.js'));
+  ({ joinGlBudget, glBudgetStatus } = await import('../../src/core/gpu/gl-budget.js'));
   window.__shadingLabGl = { limit: 3, views: [], clock: 0, peak: 0 }; // seeded, as a test page can
 });
 

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { assembleGlsl, resolveConditionals } from '../../src/core/glsl.js';
-import { SHADER_CHUNKS } from '../../src/core/shader-chunks.js';
+import { assembleGlsl, resolveConditionals } from '../../src/core/gpu/glsl.js';
+import { SHADER_CHUNKS } from '../../src/core/gpu/shader-chunks.js';
 import * as math from '../../src/math/index.js';
 
 describe('GLSL assembly', () => {

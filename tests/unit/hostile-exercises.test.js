@@ -12,8 +12,8 @@ import {
   readExerciseSet,
 } from '../../src/exercises/load.js';
 import { GRADERS } from '../../src/exercises/graders.js';
-import { isOption } from '../../src/core/state.js';
-import { hashId } from '../../src/core/url-hash.js';
+import { isOption } from '../../src/core/framework/state.js';
+import { hashId } from '../../src/core/framework/url-hash.js';
 import { WIDGETS } from '../../src/widgets/registry.js';
 import { PROTOTYPE_NAMES, prototypeNames } from '../hostile-values.js';
 

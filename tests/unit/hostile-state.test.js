@@ -1,9 +1,9 @@
-// Hostile values through the one coercion function (src/core/state.js) and the embed protocol's checks: one test
+// Hostile values through the one coercion function (src/core/framework/state.js) and the embed protocol's checks: one test
 // per class of crash seen (an enum or list value naming an inherited property, numbers that are not plain
 // decimals), then a seeded fuzz of every registered widget's schema against the rules in tests/hostile-values.js.
 import { describe, expect, it } from 'vitest';
-import { coerceState, defaultState } from '../../src/core/state.js';
-import { checkIncomingState, parseMessage } from '../../src/core/embed-protocol.js';
+import { coerceState, defaultState } from '../../src/core/framework/state.js';
+import { checkIncomingState, parseMessage } from '../../src/core/framework/embed-protocol.js';
 import { WIDGETS } from '../../src/widgets/registry.js';
 import {
   NUMBERS,

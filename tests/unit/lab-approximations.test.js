@@ -1,8 +1,8 @@
 // The material lab's approximations against the terms chosen: which DFG table and prefiltered map each reads,
 // and the sentences that say where a method has no form for a term. The sky's sun against its real size.
 import { describe, expect, it } from 'vitest';
-import { LAB_TERMS, approximationInputs, approximationNotes } from '../../src/core/lab/lab-approximations.js';
-import { ENVIRONMENTS, SUN } from '../../src/core/lab/environments.js';
+import { LAB_TERMS, approximationInputs, approximationNotes } from '../../src/lab/lab-approximations.js';
+import { ENVIRONMENTS, SUN } from '../../src/lab/environments.js';
 
 const scene = (terms = {}, lights = {}, methods = {}) => ({
   terms: { F: 'schlick', D: 'ggx', V: 'smithGGXCorrelated', diffuse: 'lambert', layers: 'both', ...terms },

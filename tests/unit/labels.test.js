@@ -6,8 +6,8 @@ import { curveSpecs } from '../../src/widgets/fresnel-curves/curve-data.js';
 import { f0FromIor } from '../../src/math/fresnel.js';
 import { materialByKey, measuredSource } from '../../src/math/materials.js';
 import { erfc } from '../../src/math/special.js';
-import { SIGMA_MODELLED_DEG, sigmaText } from '../../src/core/sigma-range.js';
-import { approximationNotes } from '../../src/core/lab/lab-approximations.js';
+import { SIGMA_MODELLED_DEG, sigmaText } from '../../src/core/ui/sigma-range.js';
+import { approximationNotes } from '../../src/lab/lab-approximations.js';
 
 describe('fitted (n, k) flag of the Fresnel curves', () => {
   it('marks f0-tint rows fitted: their F0 is the talk’s table (Fresnel at 0°), their n, k not the measured', () => {

@@ -13,7 +13,7 @@ import {
   ndfStateForFit,
 } from '../../src/widgets/measured-brdf/model.js';
 
-import { coerceState } from '../../src/core/state.js';
+import { coerceState } from '../../src/core/framework/state.js';
 import { schema as ndfSchema } from '../../src/widgets/ndf-explorer/ndf-explorer.js';
 
 const DEG = Math.PI / 180;

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { coerceState, defaultState, paramsToObject, stateToParams } from '../../src/core/state.js';
+import { coerceState, defaultState, paramsToObject, stateToParams } from '../../src/core/framework/state.js';
 import { schema as zonesSchema } from '../../src/widgets/fresnel-zones/fresnel-zones.js';
 import { schema as curvesSchema } from '../../src/widgets/fresnel-curves/fresnel-curves.js';
 

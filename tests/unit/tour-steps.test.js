@@ -2,9 +2,9 @@
 // widgets not built yet are left out with their section shown as coming.
 import { describe, expect, it } from 'vitest';
 import { TOUR_SECTIONS, TOUR_STEPS, tourPlan } from '../../src/tour/steps.js';
-import { CHAPTERS } from '../../src/core/chapters.js';
+import { CHAPTERS } from '../../src/pages/chapters.js';
 import { isWidgetName } from '../../src/widgets/registry.js';
-import { SERIES_COLORS, SERIES_DASHES, seriesStyle } from '../../src/core/palettes.js';
+import { SERIES_COLORS, SERIES_DASHES, seriesStyle } from '../../src/core/ui/palettes.js';
 
 describe('tour steps', () => {
   it('have unique ids that can stand in a URL fragment as they are', () => {

@@ -1,7 +1,7 @@
 // Each widget's "Terms used" links to parity.html#fn-<name>; the parity page anchors the first row of each
 // function (the first word of a PARITY_CASES name), so a term with no row is a dead link.
 import { describe, expect, test } from 'vitest';
-import { PARITY_CASES } from '../../src/core/parity-cases.js';
+import { PARITY_CASES } from '../../src/core/gpu/parity-cases.js';
 import { WIDGETS } from '../../src/widgets/registry.js';
 
 const anchored = new Set(PARITY_CASES.map((c) => c.name.split(' ')[0]));

@@ -1,8 +1,8 @@
 // brdf-lobe: the microfacet BRDF taken apart, in the spirit of Disney's BRDF Explorer. For a light the user
 // drags: the BRDF in the plane of incidence (polar), as a 3-D lobe, over the half/difference angles, and its
 // directional albedo; each factor (F, D, G, the denominator) can be switched off, and a second BRDF overlaid.
-import { createWidgetShell } from '../../core/widget-shell.js';
-import { createPlot } from '../../core/plot.js';
+import { createWidgetShell } from '../../core/framework/widget-shell.js';
+import { createPlot } from '../../core/ui/plot.js';
 import { NDF_TERMS, VISIBILITY_TERMS, brdfAngles, microfacetBRDF, microfacetFactors } from '../../math/brdf.js';
 import { ndfParamsMatchingGGX } from '../../math/ndf-width.js';
 import { directionFromCos, reflectanceImportanceGGX } from '../../math/integrate.js';

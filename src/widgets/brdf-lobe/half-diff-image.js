@@ -1,7 +1,7 @@
 // A BRDF as an image over the half/difference angles: theta_h across, theta_d up, at one phi_d, with
 // log-scaled viridis colours. Specular peaks lie along theta_h = 0; Fresnel brightens towards theta_d = 90°.
-import { viridis } from '../../core/palettes.js';
-import { describeCanvas } from '../../core/describe.js';
+import { viridis } from '../../core/ui/palettes.js';
+import { describeCanvas } from '../../core/framework/describe.js';
 
 const N = 90;
 const DECADES = 4; // colour range: the top of the scale down to 1e-4 of it

@@ -3,8 +3,8 @@
 // direction are drawn as arrows.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { createViewport } from '../../core/viewport.js';
-import { describeCanvas } from '../../core/describe.js';
+import { createViewport } from '../../core/gpu/viewport.js';
+import { describeCanvas } from '../../core/framework/describe.js';
 
 const THETA_STEPS = 45;
 const PHI_STEPS = 96;

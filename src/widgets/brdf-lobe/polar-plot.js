@@ -2,7 +2,7 @@
 // The light handle (left) and the view handle (right) can be dragged; n, l, v, the mirror direction and
 // the half vector of l and v are drawn. uPlot has no polar mode, hence a canvas of its own.
 
-import { sizeCanvas2d } from '../../core/canvas2d.js';
+import { sizeCanvas2d } from '../../core/ui/canvas2d.js';
 
 const DEG = Math.PI / 180;
 const COLORS = {

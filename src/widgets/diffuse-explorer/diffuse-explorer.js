@@ -2,12 +2,12 @@
 // Oren-Nayar (full and qualitative), on a row of GPU-shaded spheres under a light the user moves, and as plots:
 // the brightness across a sphere (the rough "full moon" flattening), radiance as the light sweeps past a fixed
 // view, and the light returned by specular plus diffuse against the view angle.
-import { SIGMA_HINT, sigmaText } from '../../core/sigma-range.js';
-import { createWidgetShell } from '../../core/widget-shell.js';
-import { createPlot } from '../../core/plot.js';
-import { createSphereGrid } from '../../core/sphere-grid.js';
-import { SERIES_COLORS } from '../../core/palettes.js';
-import { lightDirFromAngles } from '../../core/light-control.js';
+import { SIGMA_HINT, sigmaText } from '../../core/ui/sigma-range.js';
+import { createWidgetShell } from '../../core/framework/widget-shell.js';
+import { createPlot } from '../../core/ui/plot.js';
+import { createSphereGrid } from '../../core/ui/sphere-grid.js';
+import { SERIES_COLORS } from '../../core/ui/palettes.js';
+import { lightDirFromAngles } from '../../core/ui/light-control.js';
 import { createLightPad } from './light-pad.js';
 import {
   MODELS,

@@ -1,7 +1,7 @@
 // A square pad for placing the light of a row of spheres: the shared light control (drag, or focus and use
 // the arrow keys) on a canvas of its own, since a row of spheres has no single centre to drag around.
-import { attachLightControl } from '../../core/light-control.js';
-import { describeCanvas } from '../../core/describe.js';
+import { attachLightControl } from '../../core/ui/light-control.js';
+import { describeCanvas } from '../../core/framework/describe.js';
 
 export function createLightPad(container, { get, set, label }) {
   const box = document.createElement('div');

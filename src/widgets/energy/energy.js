@@ -3,12 +3,12 @@
 // sweep of roughness, the energy lost 1 - E, and spheres in a uniform white environment, each pixel reading
 // E(n·v) from the split-sum table (the same float64 quadrature, bilinear on the GPU). A compensation switch puts
 // the lost energy back (Kulla & Conty 2017, Turquin 2019), and a coloured metal's albedo is set beside the walk.
-import { createWidgetShell } from '../../core/widget-shell.js';
-import { createPlot } from '../../core/plot.js';
-import { createSphereGrid } from '../../core/sphere-grid.js';
-import { seriesStyle } from '../../core/palettes.js';
-import { createDfgTexture } from '../../core/lab/environment-maps.js';
-import { createAlbedoTableTexture, albedoTableOnce } from '../../core/albedo-table-texture.js';
+import { createWidgetShell } from '../../core/framework/widget-shell.js';
+import { createPlot } from '../../core/ui/plot.js';
+import { createSphereGrid } from '../../core/ui/sphere-grid.js';
+import { seriesStyle } from '../../core/ui/palettes.js';
+import { createDfgTexture } from '../../lab/environment-maps.js';
+import { createAlbedoTableTexture, albedoTableOnce } from '../../core/gpu/albedo-table-texture.js';
 import { albedoGGX, averageAlbedo } from '../../math/integrate.js';
 import { specularAlbedoFromTable } from '../../math/albedo-table.js';
 import { METALS } from '../../math/materials.js';

@@ -2,9 +2,9 @@
 // scattering, Kulla–Conty and Turquin (from the albedo table, as the spheres compute them) and random-walk
 // points, and the colours they give head-on: the bounces that come back make gold more saturated, since a
 // channel that reflects more also gets more of its lost light back.
-import { createPlot } from '../../core/plot.js';
-import { rgbToHex } from '../../core/palettes.js';
-import { albedoTableOnce } from '../../core/albedo-table-texture.js';
+import { createPlot } from '../../core/ui/plot.js';
+import { rgbToHex } from '../../core/ui/palettes.js';
+import { albedoTableOnce } from '../../core/gpu/albedo-table-texture.js';
 import { linearToSrgb } from '../../math/color.js';
 import { materialByKey } from '../../math/materials.js';
 import { WALK_DEGREES, WALK_PATHS, albedoCurves, saturation } from './compensation.js';

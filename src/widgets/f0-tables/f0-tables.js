@@ -1,8 +1,8 @@
 // f0-tables: the talk's two tables of normal-incidence reflectance, with swatches, the linear and sRGB
 // columns as printed and the sRGB recomputed from the linear column, and links that load each material
 // into the other Fresnel widgets.
-import { createWidgetShell } from '../../core/widget-shell.js';
-import { rgbToHex } from '../../core/palettes.js';
+import { createWidgetShell } from '../../core/framework/widget-shell.js';
+import { rgbToHex } from '../../core/ui/palettes.js';
 import { linearToSrgb } from '../../math/color.js';
 import { METALS, NON_METALS, TABLE_SOURCE, iorFromF0, measuredSource } from '../../math/index.js';
 

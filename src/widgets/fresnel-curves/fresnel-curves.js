@@ -1,8 +1,8 @@
 // fresnel-curves: reflectance against angle of incidence for chosen materials, exact and Schlick
 // overlaid, the talk's three zones shaded behind, and a second plot of Schlick's error.
-import { createWidgetShell } from '../../core/widget-shell.js';
-import { createPlot } from '../../core/plot.js';
-import { SERIES_COLORS, ZONE_PALETTES, ZONE_PALETTE_FIELD, withAlpha } from '../../core/palettes.js';
+import { createWidgetShell } from '../../core/framework/widget-shell.js';
+import { createPlot } from '../../core/ui/plot.js';
+import { SERIES_COLORS, ZONE_PALETTES, ZONE_PALETTE_FIELD, withAlpha } from '../../core/ui/palettes.js';
 import { FRESNEL_ZONE_BOUNDS_DEG } from '../../math/zones.js';
 import { CONDUCTOR_MODELS, METALS, NON_METALS } from '../../math/materials.js';
 import { CHANNELS, angleGrid, curveSpecs, evaluateCurve } from './curve-data.js';

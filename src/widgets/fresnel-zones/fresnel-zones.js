@@ -2,15 +2,21 @@
 // the zones of n·v, the zones of l·h, and the l·h zones weighted by the rest of the BRDF, with the share
 // of covered pixels (or of reflected light) in each zone summed on the GPU.
 import * as THREE from 'three';
-import { createWidgetShell } from '../../core/widget-shell.js';
-import { createViewport } from '../../core/viewport.js';
-import { createGpuSum, floatTarget } from '../../core/gpu-sum.js';
-import { assembleGlsl } from '../../core/glsl.js';
-import { SHADER_CHUNKS } from '../../core/shader-chunks.js';
-import { attachLightControl, lightDirFromAngles } from '../../core/light-control.js';
-import { attachProbe, angleText, probeAngles } from '../../core/probe.js';
-import { createToolbar, canvasToPng, downloadCsv } from '../../core/export.js';
-import { ZONE_LABELS, ZONE_PALETTES, ZONE_PALETTE_FIELD, hexToRgb, paletteColourNames } from '../../core/palettes.js';
+import { createWidgetShell } from '../../core/framework/widget-shell.js';
+import { createViewport } from '../../core/gpu/viewport.js';
+import { createGpuSum, floatTarget } from '../../core/gpu/gpu-sum.js';
+import { assembleGlsl } from '../../core/gpu/glsl.js';
+import { SHADER_CHUNKS } from '../../core/gpu/shader-chunks.js';
+import { attachLightControl, lightDirFromAngles } from '../../core/ui/light-control.js';
+import { attachProbe, angleText, probeAngles } from '../../core/ui/probe.js';
+import { createToolbar, canvasToPng, downloadCsv } from '../../core/ui/export.js';
+import {
+  ZONE_LABELS,
+  ZONE_PALETTES,
+  ZONE_PALETTE_FIELD,
+  hexToRgb,
+  paletteColourNames,
+} from '../../core/ui/palettes.js';
 import { CONDUCTOR_MODELS, METALS, NON_METALS, fresnelParams, materialByKey } from '../../math/materials.js';
 import { fresnelConductor, fresnelDielectric, fresnelSchlick } from '../../math/fresnel.js';
 import { ndfGGX } from '../../math/ndf.js';

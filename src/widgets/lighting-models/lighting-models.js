@@ -2,11 +2,11 @@
 // lighting (the reference: Monte Carlo over the sky and the sun's disc), then image-based lighting (the whole sky,
 // sun included, by the split sum), an area light (the sun as a sphere light), a punctual light (the sun as a
 // point) and ambient light (one constant for everything), each with its GPU time and its error.
-import { createWidgetShell } from '../../core/widget-shell.js';
-import { REFERENCE_BATCH } from '../../core/lab/lab-renderer.js';
-import { MATERIAL_FIELDS, materialOf } from '../../core/lab/lab-scene.js';
-import { createLabView } from '../../core/lab/lab-view.js';
-import { SUN, skyPixels } from '../../core/lab/environments.js';
+import { createWidgetShell } from '../../core/framework/widget-shell.js';
+import { REFERENCE_BATCH } from '../../lab/lab-renderer.js';
+import { MATERIAL_FIELDS, materialOf } from '../../lab/lab-scene.js';
+import { createLabView } from '../../lab/lab-view.js';
+import { SUN, skyPixels } from '../../lab/environments.js';
 import { sphereLightCLight } from '../../math/lighting.js';
 
 export const schema = {

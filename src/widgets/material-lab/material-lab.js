@@ -2,14 +2,14 @@
 // own), the BRDF's terms to choose, and four kinds of light to switch on: punctual, a sphere (area) light, an
 // environment, ambient. Each light is rendered by the approximation chosen for it; beside it the same view by
 // a converging Monte Carlo reference, the error image, and the RMS error and GPU time of the approximation.
-import { createWidgetShell } from '../../core/widget-shell.js';
-import { lightDirFromAngles } from '../../core/light-control.js';
-import { REFERENCE_BATCH } from '../../core/lab/lab-renderer.js';
-import { ENVIRONMENTS, MAX_FILE_BYTES, parseEnvironmentFile } from '../../core/lab/environments.js';
-import { MATERIAL_FIELDS, labScene, sphereLight } from '../../core/lab/lab-scene.js';
-import { createLabView } from '../../core/lab/lab-view.js';
-import { LAB_TERMS, createNotesList } from '../../core/lab/lab-approximations.js';
-import { SIGMA_HINT } from '../../core/sigma-range.js';
+import { createWidgetShell } from '../../core/framework/widget-shell.js';
+import { lightDirFromAngles } from '../../core/ui/light-control.js';
+import { REFERENCE_BATCH } from '../../lab/lab-renderer.js';
+import { ENVIRONMENTS, MAX_FILE_BYTES, parseEnvironmentFile } from '../../lab/environments.js';
+import { MATERIAL_FIELDS, labScene, sphereLight } from '../../lab/lab-scene.js';
+import { createLabView } from '../../lab/lab-view.js';
+import { LAB_TERMS, createNotesList } from '../../lab/lab-approximations.js';
+import { SIGMA_HINT } from '../../core/ui/sigma-range.js';
 import { attachEnvironmentDrop } from './environment-drop.js';
 import { createMeasuredMaterial } from './measured-material.js';
 import { MERL_TEXTURE_BYTES } from '../measured-brdf/texture-size.js';

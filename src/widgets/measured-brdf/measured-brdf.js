@@ -2,15 +2,15 @@
 // models: its lobe in the plane of incidence per channel with a fit overlaid, spheres under a punctual light
 // (3-D textures on the GPU), its (θh, θd) image, the NDF it implies against the five fits, and the fits
 // themselves with their residuals. Parsing and fitting run in a worker (src/measured/fit-worker.js).
-import { createWidgetShell } from '../../core/widget-shell.js';
-import { createPlot } from '../../core/plot.js';
-import { seriesStyle } from '../../core/palettes.js';
-import { lightDirFromAngles } from '../../core/light-control.js';
+import { createWidgetShell } from '../../core/framework/widget-shell.js';
+import { createPlot } from '../../core/ui/plot.js';
+import { seriesStyle } from '../../core/ui/palettes.js';
+import { lightDirFromAngles } from '../../core/ui/light-control.js';
 import { FIT_MODELS } from '../../measured/fit.js';
 import { MERL_BYTES, measuredFromTable } from '../../measured/merl.js';
 import { createHalfDiffImage } from '../brdf-lobe/half-diff-image.js';
 import { createLobeView } from '../brdf-lobe/lobe-view.js';
-import { describeCanvas } from '../../core/describe.js';
+import { describeCanvas } from '../../core/framework/describe.js';
 import { schema } from './schema.js';
 import {
   bestFit,

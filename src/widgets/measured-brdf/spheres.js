@@ -1,9 +1,9 @@
 // Spheres of tabulated BRDFs under one punctual light, side by side: the measured table and a fit tabulated
 // the same way, each a 3-D texture (90 θh × 90 θd × 180 φd texels, RGBA half floats) read by measured.glsl.
 import * as THREE from 'three';
-import { createViewport } from '../../core/viewport.js';
-import { assembleGlsl } from '../../core/glsl.js';
-import { SHADER_CHUNKS } from '../../core/shader-chunks.js';
+import { createViewport } from '../../core/gpu/viewport.js';
+import { assembleGlsl } from '../../core/gpu/glsl.js';
+import { SHADER_CHUNKS } from '../../core/gpu/shader-chunks.js';
 import { MERL_DIMS } from '../../measured/merl.js';
 
 /** A table (RGBA half floats, MERL order) as the 3-D texture measured.glsl reads. */

@@ -3,13 +3,13 @@
 // from low to high absorption and scattering. Rendered on the GPU by a progressive Monte Carlo volume path
 // tracer (unscattered light transmitted exactly), with the transmitted colour plotted against distance.
 import * as THREE from 'three';
-import { createWidgetShell } from '../../core/widget-shell.js';
-import { createPlot } from '../../core/plot.js';
-import { createViewport } from '../../core/viewport.js';
-import { floatTarget } from '../../core/gpu-sum.js';
-import { assembleGlsl } from '../../core/glsl.js';
-import { SHADER_CHUNKS } from '../../core/shader-chunks.js';
-import { SERIES_DASHES, rgbToHex } from '../../core/palettes.js';
+import { createWidgetShell } from '../../core/framework/widget-shell.js';
+import { createPlot } from '../../core/ui/plot.js';
+import { createViewport } from '../../core/gpu/viewport.js';
+import { floatTarget } from '../../core/gpu/gpu-sum.js';
+import { assembleGlsl } from '../../core/gpu/glsl.js';
+import { SHADER_CHUNKS } from '../../core/gpu/shader-chunks.js';
+import { SERIES_DASHES, rgbToHex } from '../../core/ui/palettes.js';
 import { linearToSrgb } from '../../math/color.js';
 import { WATER_K, WHOLE_MILK, transmittance, waterAbsorptionRgb } from '../../math/media.js';
 

@@ -1,9 +1,9 @@
 // microfacets: a 2-D microsurface under a bundle of light rays. Which facets face along h (and so reflect
 // the light to the eye), which are shadowed from the light or masked from the eye, which rays bounce twice;
 // and the measured share of shadowed microfacets against Smith's G1.
-import { createWidgetShell } from '../../core/widget-shell.js';
-import { createPlot } from '../../core/plot.js';
-import { sizeCanvas2d } from '../../core/canvas2d.js';
+import { createWidgetShell } from '../../core/framework/widget-shell.js';
+import { createPlot } from '../../core/ui/plot.js';
+import { sizeCanvas2d } from '../../core/ui/canvas2d.js';
 import {
   castUp,
   generateProfile,

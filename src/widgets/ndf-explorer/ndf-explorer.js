@@ -1,10 +1,10 @@
 // ndf-explorer: the talk's five normal distribution functions at one matched width, on linear and log
 // axes, their normalisation integrals measured live, and their highlights side by side on spheres.
-import { createWidgetShell } from '../../core/widget-shell.js';
-import { createPlot } from '../../core/plot.js';
-import { createSphereGrid } from '../../core/sphere-grid.js';
-import { seriesStyle } from '../../core/palettes.js';
-import { lightDirFromAngles } from '../../core/light-control.js';
+import { createWidgetShell } from '../../core/framework/widget-shell.js';
+import { createPlot } from '../../core/ui/plot.js';
+import { createSphereGrid } from '../../core/ui/sphere-grid.js';
+import { seriesStyle } from '../../core/ui/palettes.js';
+import { lightDirFromAngles } from '../../core/ui/light-control.js';
 import { NDF_TERMS, microfacetBRDFAt, punctualRadiance } from '../../math/brdf.js';
 import { matchNdfWidths } from '../../math/ndf-width.js';
 import { ndfProjectedIntegral } from '../../math/integrate.js';

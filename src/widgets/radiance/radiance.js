@@ -1,10 +1,10 @@
 // radiance: the talk's "physics → math" step. A lamp seen from a distance the user sets: every pixel it covers
 // shows the same radiance at any distance, while the irradiance it gives falls as 1/d². And a light spectrum
 // and a surface's reflectance reduced to RGB: the per-wavelength product against the renderer's RGB ⊗ RGB.
-import { createWidgetShell } from '../../core/widget-shell.js';
-import { createPlot } from '../../core/plot.js';
-import { sizeCanvas2d } from '../../core/canvas2d.js';
-import { rgbToHex } from '../../core/palettes.js';
+import { createWidgetShell } from '../../core/framework/widget-shell.js';
+import { createPlot } from '../../core/ui/plot.js';
+import { sizeCanvas2d } from '../../core/ui/canvas2d.js';
+import { rgbToHex } from '../../core/ui/palettes.js';
 import { linearToSrgb } from '../../math/color.js';
 import { LIGHTS, SURFACES, colours, lampView } from './model.js';
 

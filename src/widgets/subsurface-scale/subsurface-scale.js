@@ -1,10 +1,10 @@
 // subsurface-scale: light entering a scattering material at one point comes back out at some distance.
 // Random walks in a 2-D slab show where; a histogram gives how far; a shading-sample circle the user resizes
 // shows when that distance can be ignored (the pixel is large: diffuse shading is local) and when not.
-import { createWidgetShell } from '../../core/widget-shell.js';
-import { createPlot } from '../../core/plot.js';
-import { sizeCanvas2d } from '../../core/canvas2d.js';
-import { withAlpha } from '../../core/palettes.js';
+import { createWidgetShell } from '../../core/framework/widget-shell.js';
+import { createPlot } from '../../core/ui/plot.js';
+import { sizeCanvas2d } from '../../core/ui/canvas2d.js';
+import { withAlpha } from '../../core/ui/palettes.js';
 import { meanFreePath, randomWalk2D, scatteringAlbedo } from '../../math/media.js';
 import { seededRandom } from '../../math/microsurface.js';
 

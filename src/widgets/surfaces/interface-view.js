@@ -3,7 +3,7 @@
 // scatters it, and some comes back out.
 import { randomWalk2D } from '../../math/media.js';
 import { seededRandom } from '../../math/microsurface.js';
-import { sizeCanvas2d } from '../../core/canvas2d.js';
+import { sizeCanvas2d } from '../../core/ui/canvas2d.js';
 
 const DEG = Math.PI / 180;
 

@@ -3,9 +3,9 @@
 // prediction, and environment reflections blurring as roughness grows.
 import * as THREE from 'three';
 import { RoomEnvironment } from 'three/addons/environments/RoomEnvironment.js';
-import { createWidgetShell } from '../../core/widget-shell.js';
-import { createPlot } from '../../core/plot.js';
-import { createViewport } from '../../core/viewport.js';
+import { createWidgetShell } from '../../core/framework/widget-shell.js';
+import { createPlot } from '../../core/ui/plot.js';
+import { createViewport } from '../../core/gpu/viewport.js';
 import { METALS, NON_METALS, fresnelParams, isMetal, materialByKey } from '../../math/materials.js';
 import { fresnelConductor, fresnelDielectric } from '../../math/fresnel.js';
 import { measuredRgbNk } from '../../math/optical-constants.js';

@@ -1,10 +1,10 @@
 // visibility-explorer: every geometry/visibility term of the talk against angle at one roughness, how far
 // each is from height-correlated Smith, and what that does to a sphere's edges.
-import { createWidgetShell } from '../../core/widget-shell.js';
-import { createPlot } from '../../core/plot.js';
-import { createSphereGrid } from '../../core/sphere-grid.js';
-import { seriesStyle } from '../../core/palettes.js';
-import { lightDirFromAngles } from '../../core/light-control.js';
+import { createWidgetShell } from '../../core/framework/widget-shell.js';
+import { createPlot } from '../../core/ui/plot.js';
+import { createSphereGrid } from '../../core/ui/sphere-grid.js';
+import { seriesStyle } from '../../core/ui/palettes.js';
+import { lightDirFromAngles } from '../../core/ui/light-control.js';
 import { VISIBILITY_TERMS, brdfAngles } from '../../math/brdf.js';
 
 export const TERMS = {

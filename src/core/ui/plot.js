@@ -3,7 +3,7 @@
 import uPlot from 'uplot';
 import 'uplot/dist/uPlot.min.css';
 import { canvasToPng, createToolbar, downloadCsv } from './export.js';
-import { describeCanvas, spokenNumber } from './describe.js';
+import { describeCanvas, spokenNumber } from '../framework/describe.js';
 
 /** Draws vertical bands behind the series: [{ from, to, color, label }]. */
 function bandsPlugin(getBands) {

@@ -1,9 +1,9 @@
 // What the parity harness checks: each GLSL function against its float64 JS twin, over a grid that
 // includes the stress inputs (cos = 0, 1e-7, 1 and just above 1, eta near 1, total internal reflection,
 // large k, alpha down to 0, sRGB values outside [0, 1]).
-import * as M from '../math/index.js';
-import { merlCoordinates } from '../measured/merl.js';
-import { buildAlbedoTableGGX, albedoLossTableGGX } from '../math/albedo-table.js';
+import * as M from '../../math/index.js';
+import { merlCoordinates } from '../../measured/merl.js';
+import { buildAlbedoTableGGX, albedoLossTableGGX } from '../../math/albedo-table.js';
 
 let albedoTable = null; // built on first use (~0.5 s)
 const albedoTableOnce = () => (albedoTable ??= buildAlbedoTableGGX());

@@ -8,8 +8,8 @@
 import * as THREE from 'three';
 import { createRenderLoop } from './render-loop.js';
 import { createBudgetedContext } from './gl-context.js';
-import { showBlockingMessage } from './notice.js';
-import { registerRedraw } from './snapshot.js';
+import { showBlockingMessage } from '../framework/notice.js';
+import { registerRedraw } from '../framework/snapshot.js';
 
 export function createViewport(container, { draw, onResize, onContextLost, label }) {
   const holder = document.createElement('div');

@@ -2,7 +2,7 @@
 // it with texelFetch (no filtering: the bilinear rule is the shader's, the same as the JS lookup's). The table
 // is built once per page (~0.5 s), when first asked for; each caller owns and disposes its texture.
 import * as THREE from 'three';
-import { buildAlbedoTableGGX } from '../math/albedo-table.js';
+import { buildAlbedoTableGGX } from '../../math/albedo-table.js';
 
 let table = null;
 export const albedoTableOnce = () => (table ??= buildAlbedoTableGGX());

@@ -2,7 +2,7 @@
 // texel, a normal n, holds (1/π) Σ L(t) max(n·d_t, 0) Ω_t, the radiance of a white Lambertian surface facing n.
 // Exact for the map as it is (no noise from its small bright lamps, no bias from mip-mapping near the poles,
 // where equirectangular texels shrink), and cheap at the sizes used: 32 × 16 normals × the map's texels.
-import { equirectDirection } from '../../math/lighting.js';
+import { equirectDirection } from '../math/lighting.js';
 
 export function irradianceMap(rgba, width, height, outWidth, outHeight) {
   // each source texel as a direction and its radiance times its exact solid angle

@@ -3,7 +3,7 @@
 // takes 0.4–5 s, which would freeze the page, so the app ships them precomputed as half floats
 // (dfg-tables.data.js, written by `npm run dfg-tables` with computeDfgTable) and only decodes them.
 import { DataUtils } from 'three';
-import { DFG_DEFAULT_TERMS, DFG_TABLE_SIZE, dfgSplitSum, dfgTableUv } from '../../math/integrate.js';
+import { DFG_DEFAULT_TERMS, DFG_TABLE_SIZE, dfgSplitSum, dfgTableUv } from '../math/integrate.js';
 import { DFG_TABLES } from './dfg-tables.data.js';
 
 const dfgTables = new Map();

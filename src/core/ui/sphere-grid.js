@@ -3,9 +3,9 @@
 // one draw in its own viewport. Variants are compiled once and reused. Hovering a sphere probes it: the
 // angles there, and the rows the cell's probe(angles, n) returns ([[label, text], ...]; n in view space).
 import * as THREE from 'three';
-import { createViewport } from './viewport.js';
-import { assembleGlsl } from './glsl.js';
-import { SHADER_CHUNKS } from './shader-chunks.js';
+import { createViewport } from '../gpu/viewport.js';
+import { assembleGlsl } from '../gpu/glsl.js';
+import { SHADER_CHUNKS } from '../gpu/shader-chunks.js';
 import { angleText, probeAngles, showProbeRows } from './probe.js';
 
 const UNIFORM_DEFAULTS = {

@@ -2,7 +2,7 @@
 // table and the prefiltered map it reads (built for the chosen NDF and visibility term), and, where a method has
 // no form for a term, what stands in for it. The sentences the lab shows under its images come from here, so
 // the error image is read as the method's error and not as a difference between two models.
-import { SIGMA_MODELLED_DEG, sigmaExtrapolated, sigmaText } from '../sigma-range.js';
+import { SIGMA_MODELLED_DEG, sigmaExtrapolated, sigmaText } from '../core/ui/sigma-range.js';
 
 /** The terms the lab offers, with the words the page uses for them. */
 export const LAB_TERMS = {

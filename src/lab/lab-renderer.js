@@ -5,10 +5,10 @@
 // the DFG table and the prefiltered map of the chosen terms (lab-approximations.js says which): `dfg(terms)` gives
 // the table's texture.
 import * as THREE from 'three';
-import { assembleGlsl } from '../glsl.js';
-import { SHADER_CHUNKS } from '../shader-chunks.js';
-import { createGpuSum, floatTarget } from '../gpu-sum.js';
-import { createAlbedoTableTexture } from '../albedo-table-texture.js';
+import { assembleGlsl } from '../core/gpu/glsl.js';
+import { SHADER_CHUNKS } from '../core/gpu/shader-chunks.js';
+import { createGpuSum, floatTarget } from '../core/gpu/gpu-sum.js';
+import { createAlbedoTableTexture } from '../core/gpu/albedo-table-texture.js';
 import { PREFILTER_LEVELS } from './environment-maps.js';
 import { approximationInputs } from './lab-approximations.js';
 

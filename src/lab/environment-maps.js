@@ -5,9 +5,9 @@
 // precomputed), which does not depend on the environment.
 import * as THREE from 'three';
 import { RoomEnvironment } from 'three/examples/jsm/environments/RoomEnvironment.js';
-import { assembleGlsl } from '../glsl.js';
-import { SHADER_CHUNKS } from '../shader-chunks.js';
-import { DFG_TABLE_SIZE } from '../../math/integrate.js';
+import { assembleGlsl } from '../core/gpu/glsl.js';
+import { SHADER_CHUNKS } from '../core/gpu/shader-chunks.js';
+import { DFG_TABLE_SIZE } from '../math/integrate.js';
 import { dfgTableData } from './dfg-table.js';
 import { buildEnvSampling } from './env-sampling.js';
 import { irradianceMap } from './env-irradiance.js';

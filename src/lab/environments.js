@@ -4,7 +4,7 @@
 import { HDRLoader } from 'three/examples/jsm/loaders/HDRLoader.js';
 import { EXRLoader } from 'three/examples/jsm/loaders/EXRLoader.js';
 import * as THREE from 'three';
-import { equirectDirection } from '../../math/lighting.js';
+import { equirectDirection } from '../math/lighting.js';
 
 export const ENVIRONMENTS = {
   studio: 'Studio (three.js RoomEnvironment)',

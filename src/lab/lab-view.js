@@ -3,9 +3,9 @@
 // the lab renderer, each environment's maps and each DFG table, made when first asked for and kept for switching
 // back.
 import * as THREE from 'three';
-import { createViewport } from '../viewport.js';
-import { assembleGlsl } from '../glsl.js';
-import { SHADER_CHUNKS } from '../shader-chunks.js';
+import { createViewport } from '../core/gpu/viewport.js';
+import { assembleGlsl } from '../core/gpu/glsl.js';
+import { SHADER_CHUNKS } from '../core/gpu/shader-chunks.js';
 import { createDfgTexture, createEnvironmentMaps } from './environment-maps.js';
 import { createLabRenderer } from './lab-renderer.js';
 import { FURNACE, skyPixels } from './environments.js';

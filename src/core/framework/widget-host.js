@@ -1,6 +1,6 @@
 // Mounts a widget by name and keeps its state in the page URL (optionally under a prefix, so several
 // widgets can share one page), and exposes it for tests and parent pages.
-import { WIDGETS, isWidgetName } from '../widgets/registry.js';
+import { WIDGETS, isWidgetName } from '../../widgets/registry.js';
 import { stateToParams } from './state.js';
 import { createLocked } from './widget-shell.js';
 

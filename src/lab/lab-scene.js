@@ -1,9 +1,9 @@
 // From a lab widget's state to the renderer's scene: the material (from the talk's F0 tables or custom), the
 // terms, the lights that are on (directions in view space: z towards the viewer, y up) and the methods.
-import { METALS, NON_METALS, materialByKey, isMetal } from '../../math/materials.js';
-import { srgbToLinear } from '../../math/color.js';
-import { lightDirFromAngles } from '../light-control.js';
-import { hexToRgb } from '../palettes.js';
+import { METALS, NON_METALS, materialByKey, isMetal } from '../math/materials.js';
+import { srgbToLinear } from '../math/color.js';
+import { lightDirFromAngles } from '../core/ui/light-control.js';
+import { hexToRgb } from '../core/ui/palettes.js';
 
 export const MATERIAL_OPTIONS = {
   custom: 'Custom (F0 and diffuse below)',
