@@ -10,10 +10,10 @@
 // kinds consistent with it.
 import * as M from '../src/math/index.js';
 import { MULTIPLE_SCATTERING_FAMILY } from './multiple-scattering-family.js';
+import { DEG } from '../src/math/angles.js';
 
 const range = (n, lo, hi) => Array.from({ length: n }, (_, i) => lo + ((hi - lo) * i) / (n - 1));
 const COS = range(1001, 0, 1);
-const DEG = Math.PI / 180;
 
 /** G = V (n·l)(n·v) of a visibility term V(n·l, n·v, α), over the visibility family's inputs. */
 const asG = (V) => (nl, nv, nh, lh, a) => V(nl, nv, a) * nl * nv;

@@ -21,8 +21,7 @@ import { diffuseLambert } from '../math/diffuse.js';
 import { transmittance, waterAbsorptionRgb } from '../math/media.js';
 import { FRESNEL_ZONE_BOUNDS_DEG, fresnelZone } from '../math/zones.js';
 import { displayRms, highlightArea, peakOf, sphereRadiance } from './sphere-image.js';
-
-const DEG = Math.PI / 180;
+import { DEG } from '../math/angles.js';
 
 /** A number for feedback: 3 significant digits, no exponent for everyday sizes. */
 export const fmt = (x, digits = 3) => {

@@ -2,8 +2,7 @@
 // on an N×N grid: the picture a grader compares, and the one the exercises page draws next to the widget.
 import { punctualRadiance } from '../math/brdf.js';
 import { linearToSrgb } from '../math/color.js';
-
-const DEG = Math.PI / 180;
+import { DEG } from '../math/angles.js';
 
 /**
  * Radiance over the grid, row-major from the top-left; pixels off the disk are NaN.

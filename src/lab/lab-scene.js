@@ -2,8 +2,9 @@
 // terms, the lights that are on (directions in view space: z towards the viewer, y up) and the methods.
 import { METALS, NON_METALS, materialByKey, isMetal } from '../math/materials.js';
 import { srgbToLinear } from '../math/color.js';
-import { lightDirFromAngles } from '../core/ui/light-control.js';
+import { lightDirFromAngles } from '../math/angles.js';
 import { hexToRgb } from '../core/ui/palettes.js';
+import { DEG } from '../math/angles.js';
 
 export const MATERIAL_OPTIONS = {
   custom: 'Custom (F0 and diffuse below)',
@@ -19,8 +20,6 @@ export const MATERIAL_FIELDS = {
   diffuse: { type: 'color', default: '#b5532e', label: 'Diffuse colour' },
   alpha: { type: 'number', min: 0, max: 1, step: 0.005, default: 0.25, label: 'Roughness α' },
 };
-
-const DEG = Math.PI / 180;
 
 /** F0 and diffuse colour (linear) of the chosen material: metals have no diffuse term (the talk). */
 export function materialOf(state) {

@@ -2,8 +2,7 @@
 // maximum (HWHM): the angle theta_h at which D falls to half of D(n). Each NDF's width parameter is solved
 // for by bisection so that all five share one HWHM; the shape parameters (ABC's a2, SGD's p) stay as chosen.
 import { ndfABC, ndfBeckmann, ndfGGX, ndfSGD } from './ndf.js';
-
-const DEG = Math.PI / 180;
+import { DEG } from './angles.js';
 
 /** HWHM in degrees of D(cos), a function decreasing in theta_h. */
 export function ndfHalfWidthDeg(D) {

@@ -21,8 +21,8 @@ import { directionsFromHalfDiff } from '../math/half-diff.js';
 import { MERL_DIMS, MERL_SAMPLES, merlIndex, merlNodeAngles } from './merl.js';
 import { nelderMead } from './nelder-mead.js';
 import { solveWeights } from './weights.js';
+import { DEG } from '../math/angles.js';
 
-const DEG = Math.PI / 180;
 const RELATIVE_FLOOR = 1e-3; // 1/sr: keeps the first, relative fit's weights finite where m is 0
 
 /** Each model: its NDF and V terms, and its shape parameters with their search ranges. */

@@ -10,8 +10,8 @@ import {
 } from '../../src/math/diffuse.js';
 import { fresnelSchlick } from '../../src/math/fresnel.js';
 import { linearToSrgb } from '../../src/math/color.js';
+import { DEG } from '../../src/math/angles.js';
 
-const DEG = Math.PI / 180;
 const BACKGROUND = 0x16; // the sphere grid's background, #16181d
 
 let browser;

@@ -6,8 +6,8 @@ import { writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { getState, launchBrowser, open, setControl, settle } from './helpers.js';
+import { DEG } from '../../src/math/angles.js';
 
-const DEG = Math.PI / 180;
 let browser;
 beforeAll(async () => {
   browser = await launchBrowser();

@@ -14,8 +14,7 @@ import {
 } from './helpers.js';
 import { linearToSrgb } from '../../src/math/color.js';
 import { albedoGGX } from '../../src/math/integrate.js';
-
-const DEG = Math.PI / 180;
+import { DEG } from '../../src/math/angles.js';
 
 let browser;
 beforeAll(async () => {

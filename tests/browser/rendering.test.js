@@ -6,7 +6,7 @@ import { baseUrl, getState, launchBrowser, open, settle, shot, widget, withPixel
 import { openPage } from './harness.js';
 import { linearToSrgb, srgbToLinear } from '../../src/math/color.js';
 import { diffuseOrenNayar } from '../../src/math/diffuse.js';
-import { lightDirFromAngles } from '../../src/core/ui/light-control.js';
+import { lightDirFromAngles } from '../../src/math/angles.js';
 import { hexToRgb } from '../../src/core/ui/palettes.js';
 import { fresnelSchlick } from '../../src/math/fresnel.js';
 import { dfgSplitSum } from '../../src/math/integrate.js';

@@ -1,7 +1,7 @@
 // The diffuse explorer's plot data against closed forms and an independent quadrature.
+import { DEG } from '../../src/math/angles.js';
 import { describe, expect, it } from 'vitest';
 import {
-  DEG,
   PROFILE_XS,
   SWEEP_XS,
   TRADE_XS,

@@ -3,8 +3,8 @@
 import { describe, expect, it } from 'vitest';
 import { GRADERS, materialSphere, ndfProfiles, profileFactor, schlickWorstAngle } from '../../src/exercises/graders.js';
 import { matchNdfWidths } from '../../src/math/ndf-width.js';
+import { DEG } from '../../src/math/angles.js';
 
-const DEG = Math.PI / 180;
 const grade = (name, args) => GRADERS[name].grade(args);
 
 /** Unpolarised Fresnel of a dielectric by Snell's law and the textbook rs, rp (not the app's rewritten form). */

@@ -15,8 +15,8 @@ import {
 
 import { coerceState } from '../../src/core/framework/state.js';
 import { schema as ndfSchema } from '../../src/widgets/ndf-explorer/ndf-explorer.js';
+import { DEG } from '../../src/math/angles.js';
 
-const DEG = Math.PI / 180;
 const asFit = (key) => ({ model: EXAMPLES[key].model, params: EXAMPLES[key].params, error: 0 });
 
 describe('the measured-BRDF widget model', () => {

@@ -10,8 +10,8 @@ import { TOUR_STEPS } from '../../src/tour/steps.js';
 import { MEDIA } from '../../src/widgets/media/media.js';
 import { schema as LOBE } from '../../src/widgets/brdf-lobe/brdf-lobe.js';
 import { weightedSphereShares } from './zone-shares.js';
+import { DEG } from '../../src/math/angles.js';
 
-const DEG = Math.PI / 180;
 const text = (file) => readFileSync(new URL(`../../${file}`, import.meta.url), 'utf8').replace(/\s+/g, ' ');
 const stepText = (id) => TOUR_STEPS.find((s) => s.id === id);
 /** The numbers the first match of `re` captures; fails if the sentence no longer reads that way. */

@@ -2,14 +2,7 @@
 // viewing direction (0° = light behind the viewer, 90° = from the side, 180° = from behind the object),
 // and phi, around the viewing direction (0° = right, 90° = up). Dragging maps the pointer's distance from
 // the canvas centre to theta (the dashed ring is 90°); the arrow keys move the light 5° at a time.
-
-const DEG = Math.PI / 180;
-
-export function lightDirFromAngles(thetaDeg, phiDeg) {
-  const t = thetaDeg * DEG;
-  const p = phiDeg * DEG;
-  return [Math.sin(t) * Math.cos(p), Math.sin(t) * Math.sin(p), Math.cos(t)];
-}
+import { DEG } from '../../math/angles.js';
 
 /** Radius, in CSS pixels, of the ring that stands for theta = 90°. */
 const ringRadius = (w, h) => 0.42 * Math.min(w, h);

@@ -1,7 +1,6 @@
 // The probe of a 3-D view: point at the surface and read the angles there and the value of each term.
 import * as THREE from 'three';
-
-const DEG = 180 / Math.PI;
+import { TO_DEGREES } from '../../math/angles.js';
 
 /** Angles at a surface point, all in view space: n, l, v unit vectors (arrays). */
 export function probeAngles(n, l, v) {
@@ -23,7 +22,8 @@ export function showProbeRows(panel, rows) {
   panel.replaceChildren(table);
 }
 
-export const angleText = (c) => `${c.toFixed(4)} (${(Math.acos(Math.min(Math.max(c, -1), 1)) * DEG).toFixed(1)}°)`;
+export const angleText = (c) =>
+  `${c.toFixed(4)} (${(Math.acos(Math.min(Math.max(c, -1), 1)) * TO_DEGREES).toFixed(1)}°)`;
 
 /**
  * A panel that follows the pointer over `canvas`, raycasts `getMesh()` seen by `getCamera()`, and shows

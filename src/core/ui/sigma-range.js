@@ -1,7 +1,7 @@
 // How far Oren–Nayar's σ is modelled: one rule and one wording for the diffuse explorer and the material lab.
 // σ is the standard deviation of the facet tilt angle; past 2σ = 90° a Gaussian puts 4.6% of the facets beyond
 // 90°, which no V-groove can have. The limit is this app's argument, not Oren & Nayar's (1994).
-const DEG = Math.PI / 180;
+import { DEG } from '../../math/angles.js';
 
 /** Above this σ (degrees) the model is extrapolated. */
 export const SIGMA_MODELLED_DEG = 45;

@@ -13,8 +13,8 @@ import { createPolarPlot } from './polar-plot.js';
 import { createLobeView } from './lobe-view.js';
 import { createHalfDiffImage } from './half-diff-image.js';
 import { WALK_ANGLES, hasMultipleLobe, kullaContyLobe, walkMultiplePart } from './multiple-lobe.js';
+import { DEG } from '../../math/angles.js';
 
-const DEG = Math.PI / 180;
 const ndfOptions = Object.fromEntries(Object.keys(NDF_TERMS).map((k) => [k, NDFS[k].name]));
 const visOptions = Object.fromEntries(Object.keys(VISIBILITY_TERMS).map((k) => [k, TERMS[k].name]));
 

@@ -3,8 +3,8 @@
 // the half vector of l and v are drawn. uPlot has no polar mode, hence a canvas of its own.
 
 import { sizeCanvas2d } from '../../core/ui/canvas2d.js';
+import { DEG } from '../../math/angles.js';
 
-const DEG = Math.PI / 180;
 const COLORS = {
   light: '#e6a700',
   view: '#0072b2',

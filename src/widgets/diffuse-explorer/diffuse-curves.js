@@ -10,8 +10,7 @@ import {
 } from '../../math/diffuse.js';
 import { fresnelSchlick } from '../../math/fresnel.js';
 import { punctualRadiance } from '../../math/brdf.js';
-
-export const DEG = Math.PI / 180;
+import { DEG } from '../../math/angles.js';
 
 /**
  * Every model: its name, the shader switch that picks it, whether it depends on the azimuth between l and v,

@@ -7,7 +7,7 @@ import { createWidgetShell } from '../../core/framework/widget-shell.js';
 import { createPlot } from '../../core/ui/plot.js';
 import { createSphereGrid } from '../../core/ui/sphere-grid.js';
 import { SERIES_COLORS } from '../../core/ui/palettes.js';
-import { lightDirFromAngles } from '../../core/ui/light-control.js';
+import { lightDirFromAngles } from '../../math/angles.js';
 import { createLightPad } from './light-pad.js';
 import {
   MODELS,

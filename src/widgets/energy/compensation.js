@@ -3,11 +3,11 @@
 // the spheres compute it) and the random walk on the Smith microsurface (the truth they approximate).
 import { specularAlbedoFromTable } from '../../math/albedo-table.js';
 import { randomWalkAlbedoGGX } from '../../math/random-walk.js';
+import { DEG } from '../../math/angles.js';
 
 /** View angles (degrees) where the walk runs, and its paths per angle (standard error ≈ 1e-3). */
 export const WALK_DEGREES = [0, 15, 30, 45, 60, 70, 80, 85];
 export const WALK_PATHS = 20_000;
-const DEG = Math.PI / 180;
 
 /** { none, kullaConty, turquin }: per view angle (degrees), the [r, g, b] albedo from the table. */
 export function albedoCurves(table, alpha, f0rgb, degrees) {

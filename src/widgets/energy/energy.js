@@ -13,6 +13,7 @@ import { albedoGGX, averageAlbedo } from '../../math/integrate.js';
 import { specularAlbedoFromTable } from '../../math/albedo-table.js';
 import { METALS } from '../../math/materials.js';
 import { createMetalView } from './metal-view.js';
+import { DEG } from '../../math/angles.js';
 
 export const schema = {
   alphas: {
@@ -57,7 +58,6 @@ const ABOUT =
   'facet to facet.';
 
 const ANGLES = Float64Array.from({ length: 90 }, (_, i) => i + 0.5); // view angles 0.5°..89.5°
-const DEG = Math.PI / 180;
 
 // the plots' curves: 24 Gauss-Legendre nodes per piece, within 2e-5 of the adaptive quadrature (unit-tested)
 const PLOT_QUADRATURE = { nodes: 24 };

@@ -7,7 +7,8 @@ import { createViewport } from '../../core/gpu/viewport.js';
 import { createGpuSum, floatTarget } from '../../core/gpu/gpu-sum.js';
 import { assembleGlsl } from '../../core/gpu/glsl.js';
 import { SHADER_CHUNKS } from '../../core/gpu/shader-chunks.js';
-import { attachLightControl, lightDirFromAngles } from '../../core/ui/light-control.js';
+import { attachLightControl } from '../../core/ui/light-control.js';
+import { lightDirFromAngles } from '../../math/angles.js';
 import { attachProbe, angleText, probeAngles } from '../../core/ui/probe.js';
 import { createToolbar, canvasToPng, downloadCsv } from '../../core/ui/export.js';
 import {

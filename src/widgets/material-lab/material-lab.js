@@ -3,7 +3,7 @@
 // environment, ambient. Each light is rendered by the approximation chosen for it; beside it the same view by
 // a converging Monte Carlo reference, the error image, and the RMS error and GPU time of the approximation.
 import { createWidgetShell } from '../../core/framework/widget-shell.js';
-import { lightDirFromAngles } from '../../core/ui/light-control.js';
+import { lightDirFromAngles } from '../../math/angles.js';
 import { REFERENCE_BATCH } from '../../lab/lab-renderer.js';
 import { ENVIRONMENTS, MAX_FILE_BYTES, parseEnvironmentFile } from '../../lab/environments.js';
 import { MATERIAL_FIELDS, labScene, sphereLight } from '../../lab/lab-scene.js';

@@ -5,7 +5,7 @@
 import { createWidgetShell } from '../../core/framework/widget-shell.js';
 import { createPlot } from '../../core/ui/plot.js';
 import { seriesStyle } from '../../core/ui/palettes.js';
-import { lightDirFromAngles } from '../../core/ui/light-control.js';
+import { lightDirFromAngles } from '../../math/angles.js';
 import { FIT_MODELS } from '../../measured/fit.js';
 import { MERL_BYTES, measuredFromTable } from '../../measured/merl.js';
 import { createHalfDiffImage } from '../brdf-lobe/half-diff-image.js';
@@ -31,10 +31,10 @@ import { createFitClient } from './fit-client.js';
 import { createMeasuredSpheres } from './spheres.js';
 import { MERL_TEXTURE_BYTES } from './texture-size.js';
 import { createDropZone, createFitTable } from './views.js';
+import { DEG } from '../../math/angles.js';
 
 export { schema };
 const MODELS = Object.keys(FIT_MODELS);
-const DEG = Math.PI / 180;
 const CHANNELS = [
   ['R', '#c0392b'],
   ['G', '#1e8449'],

@@ -5,8 +5,7 @@ import { MERL_DIMS, MERL_SAMPLES, merlIndex, merlNodeAngles } from '../../measur
 import { NDF_TERMS, VISIBILITY_TERMS } from '../../math/brdf.js';
 import { matchNdfWidths, ndfHalfWidthDeg } from '../../math/ndf-width.js';
 import { directionsFromHalfDiff } from '../../math/half-diff.js';
-
-const DEG = Math.PI / 180;
+import { DEG } from '../../math/angles.js';
 
 /** Synthetic files the app makes itself with writeMerl (the MERL database is not ours to ship). */
 export const EXAMPLES = {

@@ -14,6 +14,7 @@ import {
 } from '../../math/microsurface.js';
 import { smithG1Beckmann, smithG1GGX } from '../../math/visibility.js';
 import { reflect } from '../../math/integrate.js';
+import { DEG } from '../../math/angles.js';
 
 export const schema = {
   kind: {
@@ -40,7 +41,6 @@ const ABOUT =
 const PROFILE = 80000; // long enough that GGX's heavy-tailed slopes measure within ~0.03 of Smith
 const WINDOW = 44; // facets shown
 const H_TOLERANCE_DEG = 3;
-const DEG = Math.PI / 180;
 const dirOf = (deg) => [Math.sin(deg * DEG), Math.cos(deg * DEG)];
 
 const TERMS_USED = ['smithG1Beckmann', 'smithG1GGX'];

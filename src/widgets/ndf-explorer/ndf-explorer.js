@@ -4,11 +4,12 @@ import { createWidgetShell } from '../../core/framework/widget-shell.js';
 import { createPlot } from '../../core/ui/plot.js';
 import { createSphereGrid } from '../../core/ui/sphere-grid.js';
 import { seriesStyle } from '../../core/ui/palettes.js';
-import { lightDirFromAngles } from '../../core/ui/light-control.js';
+import { lightDirFromAngles } from '../../math/angles.js';
 import { NDF_TERMS, microfacetBRDFAt, punctualRadiance } from '../../math/brdf.js';
 import { matchNdfWidths } from '../../math/ndf-width.js';
 import { ndfProjectedIntegral } from '../../math/integrate.js';
 import { THETA_H_DEG } from '../measured-brdf/model.js';
+import { DEG } from '../../math/angles.js';
 
 export const NDFS = {
   blinnPhong: { name: 'Blinn-Phong', define: 'NDF_BLINN_PHONG' },
@@ -45,7 +46,6 @@ const ABOUT =
   'the log plot adds the NDF a measurement implies (black) and puts every curve over its own peak, so the ' +
   'measured tail is read against the five shapes at the fitted width.';
 
-const DEG = Math.PI / 180;
 // every 0.25° and the θh nodes of a MERL table (where a measured slice has its values), in order
 const ANGLES = Float64Array.from(new Set([...Array.from({ length: 361 }, (_, i) => i * 0.25), ...THETA_H_DEG])).sort();
 const NODE_AT = new Map(Array.from(THETA_H_DEG, (deg, i) => [deg, i]));

@@ -4,8 +4,7 @@
 import { randomWalk2D } from '../../math/media.js';
 import { seededRandom } from '../../math/microsurface.js';
 import { sizeCanvas2d } from '../../core/ui/canvas2d.js';
-
-const DEG = Math.PI / 180;
+import { DEG } from '../../math/angles.js';
 
 /** spec: { theta (deg), F (reflected share), etaRefr (real index for Snell), metal, depthNm (metals), name } */
 export function drawInterface(canvas, spec) {

@@ -12,6 +12,7 @@ import { measuredRgbNk } from '../../math/optical-constants.js';
 import { generateProfile, reflectedAngleDensity, reflectedAngles, seededRandom } from '../../math/microsurface.js';
 import { smithG1Beckmann } from '../../math/visibility.js';
 import { describeInterface, drawInterface } from './interface-view.js';
+import { DEG } from '../../math/angles.js';
 
 export const schema = {
   material: {
@@ -33,7 +34,6 @@ const ABOUT =
   'three.js’s standard material): rougher is blurrier.';
 
 const TERMS_USED = ['fresnelDielectric', 'fresnelConductor', 'smithG1Beckmann'];
-const DEG = Math.PI / 180;
 const PROFILE = 60000;
 const RAYS = 30000;
 const SPHERE_ROUGHNESS = [0.05, 0.2, 0.4, 0.7];

@@ -4,8 +4,9 @@ import { createWidgetShell } from '../../core/framework/widget-shell.js';
 import { createPlot } from '../../core/ui/plot.js';
 import { createSphereGrid } from '../../core/ui/sphere-grid.js';
 import { seriesStyle } from '../../core/ui/palettes.js';
-import { lightDirFromAngles } from '../../core/ui/light-control.js';
+import { lightDirFromAngles } from '../../math/angles.js';
 import { VISIBILITY_TERMS, brdfAngles } from '../../math/brdf.js';
+import { DEG } from '../../math/angles.js';
 
 export const TERMS = {
   implicit: { name: 'Implicit (V = 1)', define: 'VIS_IMPLICIT' },
@@ -54,7 +55,6 @@ const ABOUT =
   'exactly. On the spheres (GGX D, F = 1) the differences show at the silhouettes, where the ' +
   'angles are grazing.';
 
-const DEG = Math.PI / 180;
 const ANGLES = Float64Array.from({ length: 357 }, (_, i) => i * 0.25); // 0..89°
 
 function directions(state, deg) {
