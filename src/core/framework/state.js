@@ -6,9 +6,12 @@
 // numbers are plain decimals (no hex, no Infinity), and a value echoed in a notice is cut short.
 //
 // Field kinds: { type: 'number', min, max, step, default, label, unit }
-//              { type: 'enum', options: { value: label }, default, label }
+//              { type: 'enum', options: { value: label }, aliases?: { old: value }, default, label }
 //              { type: 'bool', default, label }
-//              { type: 'set', options: { value: label }, default: [values], label }  (URL: comma list)
+//              { type: 'set', options: { value: label }, aliases?: { old: value }, default: [values], label }
+//                (URL: comma list)
+// An alias is an old spelling of an option: it is read as its option, silently, so an old link keeps
+// working; the state (and so every URL written from it) holds the option's own key.
 //              { type: 'color', default: '#rrggbb', label }  (sRGB hex; the URL may drop the '#')
 //              { type: 'samples', length, min, max, default: [], label }  (URL: comma list of `length` plain
 //                decimals in min…max, or none; a list of any other length or with any bad item is refused whole)
@@ -36,6 +39,13 @@ const fmt = showValue;
 
 /** True when `value` names an own option of `options` (a plain object of value → label). */
 export const isOption = (options, value) => typeof value === 'string' && Object.hasOwn(options, value);
+
+/** The option an enum or set field's `value` names: the value itself, or the option its alias stands for. */
+export function optionKey(f, value) {
+  if (isOption(f.options, value)) return value;
+  const key = f.aliases && isOption(f.aliases, value) ? f.aliases[value] : undefined;
+  return isOption(f.options, key) ? key : undefined;
+}
 
 // A decimal number as a URL carries it: 12, -0.5, .5, 1e-3. Not hex, binary, Infinity or other digits.
 const DECIMAL = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;
@@ -73,7 +83,8 @@ function coerceField(key, f, raw, fallback) {
     }
     case 'enum': {
       const v = typeof raw === 'number' ? String(raw) : raw; // an option like '64' may arrive as 64
-      if (isOption(f.options, v)) return { value: v };
+      const key = optionKey(f, v);
+      if (key !== undefined) return { value: key };
       return bad(`${fmt(raw)} is not one of ${Object.keys(f.options).join(', ')}`);
     }
     case 'bool': {
@@ -89,8 +100,9 @@ function coerceField(key, f, raw, fallback) {
           ? raw.split(',').filter(Boolean)
           : null;
       if (!items) return bad(`${fmt(raw)} is not a list`);
-      const known = [...new Set(items.filter((v) => isOption(f.options, v)))];
-      const unknown = [...new Set(items.filter((v) => !isOption(f.options, v)))];
+      const keys = items.map((v) => optionKey(f, v));
+      const known = [...new Set(keys.filter((k) => k !== undefined))];
+      const unknown = [...new Set(items.filter((v, i) => keys[i] === undefined))];
       if (!unknown.length) return { value: known };
       const more = unknown.length > 4 ? ` and ${unknown.length - 4} more` : '';
       const named = unknown.slice(0, 4).map(fmt).join(', ') + more;
