@@ -98,11 +98,12 @@ const TERMS = { F: 'schlick', D: 'ggx', V: 'smithGGXCorrelated', diffuse: 'lambe
 const METHODS = { env: 'split-sum', area: 'representative', samples: 1 };
 const fmt = (x, digits = 3) => (Number.isFinite(x) ? x.toPrecision(digits) : '—');
 
-export function createLightingModels(container, initialState = {}, { onStateChange } = {}) {
+export function createLightingModels(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'lighting-models',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });

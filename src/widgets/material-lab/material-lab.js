@@ -288,11 +288,12 @@ function methodText(st, lights) {
   return parts.join(' + ') || 'no light on';
 }
 
-export function createMaterialLab(container, initialState = {}, { onStateChange } = {}) {
+export function createMaterialLab(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'material-lab',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });
