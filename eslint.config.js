@@ -34,7 +34,10 @@ export default [
         'error',
         {
           paths: ['three', 'lil-gui', 'uplot', 'katex'].map((name) => ({ name, message: 'src/math is pure math.' })),
-          ...forbid(APP.filter((r) => r !== 'math'), 'src/math imports nothing of the app.'),
+          ...forbid(
+            APP.filter((r) => r !== 'math'),
+            'src/math imports nothing of the app.',
+          ),
         },
       ],
     },

@@ -61,7 +61,8 @@ async function setUp(step, i) {
  * until garbage collection, and a long tour would run into the browser's limit on live contexts.
  */
 function release(instance) {
-  const contexts = [...stage.querySelectorAll('.viewport canvas')].map((c) => c.getContext('webgl2')); // the existing ones
+  // getContext returns the context a canvas already has
+  const contexts = [...stage.querySelectorAll('.viewport canvas')].map((c) => c.getContext('webgl2'));
   instance.dispose();
   for (const gl of contexts) gl?.getExtension('WEBGL_lose_context')?.loseContext();
 }
@@ -140,7 +141,8 @@ const typingIn = (el) =>
   (el.isContentEditable || el.matches('input, select, textarea, [role=slider], [role=spinbutton]'));
 window.addEventListener('keydown', (e) => {
   if (e.defaultPrevented || e.altKey || e.ctrlKey || e.metaKey || typingIn(e.target)) return;
-  if (e.key === ' ' && e.target instanceof Element && e.target.closest('button, a, summary, [role=button]')) return; // Space presses it
+  const pressable = e.target instanceof Element && e.target.closest('button, a, summary, [role=button]');
+  if (e.key === ' ' && pressable) return; // Space presses it
   const to = NEXT.has(e.key)
     ? index + 1
     : PREVIOUS.has(e.key)
@@ -178,7 +180,8 @@ async function toggleFullscreen() {
     await root.requestFullscreen();
   } catch {
     notices.show(
-      'The browser did not allow full screen here (a frame or a setting may forbid it). Use the browser’s own full-screen key instead, usually F11.',
+      'The browser did not allow full screen here (a frame or a setting may forbid it). Use the browser’s own ' +
+        'full-screen key instead, usually F11.',
     );
   }
 }
