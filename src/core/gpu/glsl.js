@@ -10,6 +10,15 @@ const DEFINED = /^(!?)\s*defined\s*\(\s*(\w+)\s*\)\s*$/;
 const DEFINE = /^\s*#\s*define\s+(\w+)/;
 const UNDEF = /^\s*#\s*undef\s+(\w+)/;
 const INCLUDE = /^\s*#\s*include\s+"([\w.-]+)"\s*$/;
+const ERROR = /^\s*#\s*error\b\s*"?([^"]*)"?\s*$/;
+const IDENTIFIER = /\b[A-Za-z_]\w*\b/g;
+
+/** The identifiers a line reads: its tokens outside comments, less the name a #define line defines. */
+const readsOf = (line) =>
+  line
+    .replace(/\/\/.*$/, '')
+    .replace(DEFINE, '')
+    .match(IDENTIFIER) ?? [];
 
 /** @param {string} kind @param {string} expr @param {{ has(name: string): boolean }} defined */
 function condition(kind, expr, defined) {
@@ -75,17 +84,22 @@ export function resolveConditionals(source, defines) {
 /**
  * Resolves conditionals and includes of `source` against `chunks` (name -> text), each chunk once.
  * Returns the program text, prefixed with the defines that have values the code may read.
+ * Refuses what it does not know: a define that no directive or token of the program's chunks reads (a misspelt
+ * or stale switch would otherwise fall back silently), and an active #error (a term chain without a match).
  */
 export function assembleGlsl(source, { defines = {}, chunks = SHADER_CHUNKS } = {}) {
   const defined = new Set(Object.keys(defines));
+  const read = new Set();
   const included = new Set();
   const out = [];
   const walk = (text) => {
     const conditionals = conditionalStack(defined);
     for (const line of text.split('\n')) {
+      for (const token of readsOf(line)) read.add(token);
       if (conditionals.step(line) || !conditionals.active()) continue;
       const include = INCLUDE.exec(line);
       if (!include) {
+        if (ERROR.test(line)) throw new Error(`glsl: #error ${ERROR.exec(line)[1]}`);
         if (DEFINE.test(line)) defined.add(DEFINE.exec(line)[1]);
         if (UNDEF.test(line)) defined.delete(UNDEF.exec(line)[1]);
         out.push(line);
@@ -100,6 +114,8 @@ export function assembleGlsl(source, { defines = {}, chunks = SHADER_CHUNKS } = 
     conditionals.end();
   };
   walk(source);
+  const unread = Object.keys(defines).filter((name) => !read.has(name));
+  if (unread.length) throw new Error(`glsl: define ${unread.join(', ')} is read by no chunk of this program`);
   const header = Object.entries(defines)
     .map(([k, v]) => `#define ${k}${v === true || v === '' ? '' : ` ${v}`}`)
     .join('\n');
