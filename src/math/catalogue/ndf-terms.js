@@ -70,7 +70,7 @@ export const NDF_FAMILY = {
           max: 1e30,
           unit: '',
           label: 'Exponent p',
-          clamped: true,
+          // not `clamped`: the GLSL clamps at 1e30, the JS at the largest double, so they part past 1e30
           delicate: [1, 10, 100, 1e3, 1e4, 1e6, 2e6, 2e8, 1e12],
         },
       },
