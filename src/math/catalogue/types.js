@@ -1,3 +1,4 @@
+// @ts-check
 // The shapes of the catalogue of terms (checked by TypeScript's checkJs). Types only: nothing runs here.
 
 /**
