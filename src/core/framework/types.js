@@ -10,7 +10,6 @@
  * @property {number} max
  * @property {number} [step]
  * @property {number} default
- * @property {string} [unit]  shown after the label
  */
 
 /**
@@ -63,6 +62,7 @@
  * @property {string} [label]  the control's name and the name in notices (else the key)
  * @property {string} [group]  the control goes in a folder of this name
  * @property {string} [hint]  the control's tooltip
+ * @property {string} [unit]  shown after the label (a number's unit)
  */
 
 /** @typedef {NumberField | EnumField | SetField | BoolField | ColorField | SamplesField | TextField} FieldKind */
