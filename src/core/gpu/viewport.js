@@ -10,6 +10,7 @@ import { createRenderLoop } from './render-loop.js';
 import { createBudgetedContext } from './gl-context.js';
 import { showBlockingMessage } from '../framework/notice.js';
 import { registerRedraw } from '../framework/snapshot.js';
+import { describeCanvas } from '../framework/describe.js';
 
 /** In place of the view: why there is none. Returns null, the viewport that could not be made. */
 function noWebGl2(holder, canvas) {
@@ -29,7 +30,6 @@ export function createViewport(container, { draw, onResize, onContextLost, label
   const canvas = document.createElement('canvas');
   canvas.tabIndex = 0;
   canvas.setAttribute('role', 'img');
-  if (label) canvas.setAttribute('aria-label', label);
   holder.append(canvas);
   container.append(holder);
 
@@ -68,6 +68,7 @@ export function createViewport(container, { draw, onResize, onContextLost, label
     },
   );
   if (!context) return noWebGl2(holder, canvas);
+  if (label) describeCanvas(canvas, label); // the first words; a widget may describe the view better later
   const renderer = new THREE.WebGLRenderer({ canvas, context: context.gl, antialias: true });
   renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
   loop = createRenderLoop(
