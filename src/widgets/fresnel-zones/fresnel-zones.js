@@ -13,13 +13,7 @@ import { attachViewTools } from './view-tools.js';
 export { schema };
 
 export function create(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, {
-    name: 'fresnel-zones',
-    schema,
-    initialState,
-    about: ABOUT,
-    terms: TERMS_USED,
-  });
+  const shell = createWidgetShell(container, { ...widget, about: ABOUT, initialState });
   const getState = () => shell.state;
   const column = document.createElement('div');
   column.className = 'view-column';

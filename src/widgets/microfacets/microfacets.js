@@ -26,13 +26,7 @@ function figuresAt(state, surface, twice) {
 }
 
 export function create(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, {
-    name: 'microfacets',
-    schema,
-    initialState,
-    about: ABOUT,
-    terms: TERMS_USED,
-  });
+  const shell = createWidgetShell(container, { ...widget, about: ABOUT, initialState });
   const canvas = document.createElement('canvas');
   canvas.className = 'microsurface';
   const legend = document.createElement('p');
