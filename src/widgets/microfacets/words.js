@@ -1,5 +1,5 @@
-// microfacets, in words: the about text, the legend of the cut's colours, the table under it and the picture
-// described for screen readers.
+// microfacets, in words: the about text, the legend of the cut's colours, and the picture described for screen
+// readers.
 import { schema } from './schema.js';
 
 export const TITLE = 'Microsurface';
@@ -20,22 +20,8 @@ export const LEGEND_HTML = [
   key('#0072b2', '▭', 'masked (hollow)'),
 ].join(' &nbsp; ');
 
-const share = (g1, digits) => `${((1 - g1) * 100).toFixed(digits)}%`;
-
-/**
- * The table at the light's angle: shadowed share ray-traced (`measured` G1) and by Smith (`smith`), and the
- * rays drawn that bounce twice.
- */
-export function statsHtml(state, { measured, smith, twice }) {
-  const row = (label, value) => `<tr><td>${label}</td><td>${value}</td></tr>`;
-  return (
-    `<table class="data-table compact"><caption>At the light angle ${Math.abs(state.lightTheta)}°</caption><tbody>` +
-    row('shadowed share of facets facing the light, ray-traced', share(measured, 2)) +
-    row('the same, predicted by Smith (1 − G1)', share(smith, 2)) +
-    row('rays drawn that bounce twice', `${twice} of ${state.rays}`) +
-    '</tbody></table>'
-  );
-}
+/** The shadowed share, 1 − G1, as a percentage. */
+export const shadowedShare = (g1, digits) => `${((1 - g1) * 100).toFixed(digits)}%`;
 
 /** The picture in words; `hDeg` is the half vector's angle from the mean normal. */
 export function describeCut(state, { measured, smith, twice, hDeg }) {
@@ -44,7 +30,7 @@ export function describeCut(state, { measured, smith, twice, hDeg }) {
     `Magnified cross-section of a rough surface, ${schema.kind.options[s.kind]}, α ${s.alpha}: ` +
     `${s.rays} rays from the light at ${s.lightTheta}°, eye at ${s.viewTheta}°, so the half vector h is ` +
     `${hDeg.toFixed(1)}° from the mean normal; facets along h are marked. Shadowed share of the facets facing ` +
-    `the light: ${share(measured, 1)} ray-traced, ${share(smith, 1)} by Smith. ` +
+    `the light: ${shadowedShare(measured, 1)} ray-traced, ${shadowedShare(smith, 1)} by Smith. ` +
     `${twice} of ${s.rays} rays hit the surface a second time${s.bounces ? ' (drawn in red)' : ''}.`
   );
 }
