@@ -3,6 +3,7 @@
 import { ZONE_PALETTES, hexToRgb } from '../../core/ui/palettes.js';
 import { lightDirFromAngles } from '../../math/angles.js';
 import { microfacetBRDFAt, punctualRadiance } from '../../math/brdf.js';
+import { termDefines } from '../../math/catalogue/index.js';
 import { srgbToLinear } from '../../math/color.js';
 import { fresnelConductor, fresnelDielectric, fresnelSchlick } from '../../math/fresnel.js';
 import { fresnelParams } from '../../math/materials.js';
@@ -11,6 +12,8 @@ import { visibilitySmithGGXCorrelated } from '../../math/visibility.js';
 import { fresnelZone, sphereZoneFractions } from '../../math/zones.js';
 
 export const AVERAGE_LIGHTS = 64; // light directions, uniform over the sphere (Fibonacci lattice)
+/** The rest of the BRDF the weighted mode weighs the zones by, as the catalogue names its terms. */
+export const WEIGHT_TERMS = { D: 'ggx', V: 'smithGGXCorrelated' };
 
 export const zonesByLh = (state) => state.mode.startsWith('zones-lh');
 export const isWeighted = (state) => state.mode === 'zones-lh-weighted';
@@ -31,7 +34,7 @@ export function sphereLights(n) {
 export function programDefines(state, stats) {
   const d = {};
   if (zonesByLh(state)) d.ZONE_BY_LH = true;
-  if (isWeighted(state)) d.WEIGHTED = true;
+  if (isWeighted(state)) Object.assign(d, { WEIGHTED: true }, termDefines(WEIGHT_TERMS));
   if (stats) d.STATS_PASS = true;
   else if (state.mode === 'fresnel-nv') {
     d.SHOW_FRESNEL = true;
@@ -79,7 +82,7 @@ export function probeTerms(state, a) {
   const p = fresnelParams(state.material, state.conductor);
   const exact = p.eta.map((eta, i) => (p.metal ? fresnelConductor(a.nv, eta, p.k[i]) : fresnelDielectric(a.nv, eta)));
   const schlick = p.f0.map((f0) => fresnelSchlick(f0, a.nv));
-  const brdf = microfacetBRDFAt(a, { F: 'one', D: 'ggx', V: 'smithGGXCorrelated', alpha: state.alpha });
+  const brdf = microfacetBRDFAt(a, { F: 'one', ...WEIGHT_TERMS, alpha: state.alpha });
   return {
     metal: p.metal,
     exact,
