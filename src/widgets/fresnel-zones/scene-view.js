@@ -82,7 +82,7 @@ export function createZonesScene(getState) {
       mesh.geometry.dispose();
       mesh.geometry = createShapeGeometry(name);
     },
-    /** Puts the state into the uniforms; `lightFrom([theta, phi])` then moves only the light. */
+    /** Puts the state into the uniforms; `lightFrom(direction)` then moves only the light (a unit vector). */
     applyState: () => setUniforms(uniforms, uniformValues(getState())),
     lightFrom: (direction) => uniforms.uLightDir.value.set(...direction),
     render(renderer) {
