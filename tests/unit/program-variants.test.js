@@ -98,7 +98,10 @@ describe('every variant of every program assembles, and declares only the unifor
     const plain = {
       'env-copy.frag.glsl': [{}],
       'env-prefilter.frag.glsl': [termDefines({ D: 'ggx' }), termDefines({ D: 'beckmann' })],
-      'fresnel-zones.frag.glsl': [{}, { ZONE_BY_LH: true, WEIGHTED: true }],
+      'fresnel-zones.frag.glsl': [
+        {},
+        { ZONE_BY_LH: true, WEIGHTED: true, ...termDefines({ D: 'ggx', V: 'smithGGXCorrelated' }) },
+      ],
       'lab-error.frag.glsl': [{}],
       'lab-view.frag.glsl': [{}],
       'measured-sphere.frag.glsl': [{}],
