@@ -1,5 +1,6 @@
 // The measured-BRDF widget's DOM pieces that are not plots: the drop zone with its file picker, and the fit
 // table with its progress bar and "load this fit" buttons.
+import { onFileDrop } from '../../core/ui/file-drop.js';
 import { FIT_MODELS } from '../../measured/fit.js';
 import { describeShape } from './model.js';
 
@@ -17,21 +18,13 @@ export function createDropZone(container, onFile) {
   source.className = 'measured-source';
   zone.append(text, source);
   container.append(zone);
-  const take = (file) => file && onFile(file);
-  input.addEventListener('change', () => take(input.files[0]));
-  zone.addEventListener('dragover', (e) => {
-    e.preventDefault();
-    zone.classList.add('dragging');
-  });
-  zone.addEventListener('dragleave', () => zone.classList.remove('dragging'));
-  zone.addEventListener('drop', (e) => {
-    e.preventDefault();
-    zone.classList.remove('dragging');
-    take(e.dataTransfer.files[0]);
-  });
+  const stopTaking = onFileDrop(zone, onFile, { input });
   return {
     setSource: (words) => (source.textContent = words),
-    dispose: () => zone.remove(),
+    dispose() {
+      stopTaking();
+      zone.remove();
+    },
   };
 }
 
