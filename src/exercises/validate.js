@@ -22,7 +22,10 @@ const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v)
 const sameValue = (a, b) =>
   JSON.stringify(Array.isArray(a) ? [...a].sort() : a) === JSON.stringify(Array.isArray(b) ? [...b].sort() : b);
 
-/** Why `value` does not fit state field `f` (of a kind in src/core/framework/state.js), or null. Strict types. */
+/**
+ * Why `value` does not fit state field `f` (src/core/framework/state.js kinds), or null. Strict: no strings for
+ * numbers.
+ */
 export function fieldProblem(f, value) {
   switch (f.type) {
     case 'number':
