@@ -7,8 +7,8 @@ import { NDF_TERMS, VISIBILITY_TERMS, brdfAngles, microfacetBRDF, microfacetFact
 import { ndfParamsMatchingGGX } from '../../math/ndf-width.js';
 import { directionFromCos, reflectanceImportanceGGX } from '../../math/integrate.js';
 import { directionsFromHalfDiff } from '../../math/half-diff.js';
-import { NDFS } from '../ndf-explorer/ndf-explorer.js';
-import { TERMS } from '../visibility-explorer/visibility-explorer.js';
+import { NDFS } from '../ndf-explorer/schema.js';
+import { TERMS } from '../visibility-explorer/schema.js';
 import { createPolarPlot } from './polar-plot.js';
 import { createLobeView } from './lobe-view.js';
 import { createHalfDiffImage } from './half-diff-image.js';

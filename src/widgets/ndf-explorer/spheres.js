@@ -1,0 +1,38 @@
+// The NDF explorer's spheres: one per chosen NDF at the matched width, F = 1 and V = 1 so that only D differs,
+// under one small light; the probe reads D and the radiance there.
+import { createSphereGrid } from '../../core/ui/sphere-grid.js';
+import { lightDirFromAngles } from '../../math/angles.js';
+import { NDF_TERMS, microfacetBRDFAt, punctualRadiance } from '../../math/brdf.js';
+import { NDFS } from './schema.js';
+
+function cell(c, state) {
+  const radiance = (a) => punctualRadiance(microfacetBRDFAt(a, { F: 'one', D: c.key, V: 'implicit', ...c.p }), a.nl, 1);
+  return {
+    label: c.label.split(' (')[0],
+    defines: { [NDFS[c.key].define]: true, VIS_IMPLICIT: true, F_ONE: true },
+    uniforms: {
+      uLightDir: lightDirFromAngles(state.lightTheta, 135),
+      uExposure: state.exposure,
+      uAlpha: c.p.alpha ?? 0.3,
+      uExponent: c.p.exponent ?? 1,
+      uA1: c.p.a1 ?? 1,
+      uA2: c.p.a2 ?? 1,
+      uSgdP: c.p.p ?? 0,
+    },
+    probe: (a) => [
+      ['D(n·h)', `${NDF_TERMS[c.key](a.nh, c.p).toPrecision(4)} /sr`],
+      ['radiance π·D/4·(n·l)', radiance(a).toPrecision(4)],
+    ],
+  };
+}
+
+export function createNdfSpheres(container) {
+  const grid = createSphereGrid(container, { label: 'NDF highlights on spheres' });
+  return {
+    draw: (curves, state) => grid.setCells(curves.map((c) => cell(c, state))),
+    get canvas() {
+      return grid.canvas;
+    },
+    dispose: () => grid.dispose(),
+  };
+}
