@@ -1,6 +1,6 @@
-// The data behind the diffuse explorer's plots, from src/math only (no DOM): each diffuse model as a function
-// of the cosines and the azimuth, the brightness profile across a sphere, the radiance as the light sweeps
-// past a fixed view, and the light a surface returns (specular plus diffuse) against the view angle.
+// The diffuse explorer's model, pure functions of src/math (no DOM): each diffuse model as a function of the
+// cosines and the azimuth, the brightness profile across a sphere, the radiance as the light sweeps past a fixed
+// view, and the light a surface returns (specular plus diffuse) against the view angle.
 import {
   diffuseAshikhminShirley,
   diffuseFresnelWeighted,
@@ -11,6 +11,7 @@ import {
 import { fresnelSchlick } from '../../math/fresnel.js';
 import { punctualRadiance } from '../../math/brdf.js';
 import { DEG } from '../../math/angles.js';
+import { SERIES_COLORS } from '../../core/ui/palettes.js';
 
 /**
  * Every model: its name, the shader switch that picks it, whether it depends on the azimuth between l and v,
@@ -50,6 +51,9 @@ export const MODELS = {
     f: (nl, nv, cp, p) => diffuseOrenNayarQualitative(nl, nv, cp, p.sigma, p.cdiff),
   },
 };
+
+/** A model's colour in every plot and table. */
+export const modelColor = (key) => SERIES_COLORS[Object.keys(MODELS).indexOf(key) % SERIES_COLORS.length];
 
 const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 
