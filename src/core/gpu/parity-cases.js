@@ -2,6 +2,7 @@
 // includes the stress inputs (cos = 0, 1e-7, 1 and just above 1, eta near 1, total internal reflection,
 // large k, alpha down to 0, sRGB values outside [0, 1]).
 import * as M from '../../math/index.js';
+import { termDefines } from '../../math/catalogue/index.js';
 import { merlCoordinates } from '../../measured/merl.js';
 import { buildAlbedoTableGGX, albedoLossTableGGX } from '../../math/albedo-table.js';
 
@@ -155,6 +156,7 @@ export const PARITY_CASES = [
     // 3e-4 rad of n in float32) the relative error reached 2.7e-4 at alpha = 0.01.
     name: 'microfacetBRDF (GGX, Smith corr., Schlick)',
     chunk: 'brdf.glsl',
+    defines: termDefines({ F: 'schlick', D: 'ggx', V: 'smithGGXCorrelated' }),
     glsl: 'microfacetBRDF(a.xyz, b.xyz, a.w, 0.04)',
     outputs: 1,
     js: (lx, ly, lz, alpha, vx, vy, vz) =>

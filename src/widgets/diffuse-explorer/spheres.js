@@ -10,7 +10,7 @@ function cell(key, state, l) {
   const { short, define, f } = MODELS[key];
   return {
     label: short,
-    defines: { DIFFUSE_ONLY: true, ...(define ? { [define]: true } : {}) },
+    defines: { SPECULAR_OFF: true, [define]: true },
     uniforms: { uLightDir: l, uExposure: state.exposure, uDiffuse: state.cdiff, uF0: state.f0, uSigma: p.sigma },
     probe: (a, n) => {
       const value = f(a.nl, a.nv, cosPhiDiff(n, l, VIEW), p);
