@@ -26,6 +26,7 @@ export const COMPENSATION_FAMILY = {
       glsl: null,
       chunk: null,
       define: null, // single scattering is the lobe without a compensation
+      args: [],
       params: {},
     },
     kullaConty: {
@@ -38,6 +39,7 @@ export const COMPENSATION_FAMILY = {
       glsl: 'multipleScatteringKullaConty',
       chunk: 'multiple-scattering.glsl',
       define: 'COMPENSATION_KULLA_CONTY',
+      args: ['nl', 'nv', 'alpha'],
       params: { alpha, f0 },
     },
     turquin: {
@@ -50,7 +52,8 @@ export const COMPENSATION_FAMILY = {
       glsl: 'energyCompensationTurquin',
       chunk: 'multiple-scattering.glsl',
       define: 'COMPENSATION_TURQUIN',
-      params: { alpha, f0 },
+      args: ['f0', 'E'],
+      params: { alpha, f0, E: { min: 0, max: 1, unit: '', label: 'Directional albedo E(n·v)' } },
     },
   },
 };

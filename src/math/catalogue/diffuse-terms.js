@@ -8,9 +8,9 @@ import {
   diffuseOrenNayarQualitative,
 } from '../diffuse.js';
 
-const cdiff = { min: 0, max: 1, unit: '', label: 'Diffuse colour c_diff' };
-const f0 = { min: 0, max: 1, unit: '', label: 'Reflectance at normal incidence F0' };
-const sigma = { min: 0, max: Math.PI / 2, unit: 'rad', label: 'Roughness σ' };
+const cdiff = { min: 0, max: 1, unit: '', label: 'Diffuse colour c_diff', clamped: true };
+const f0 = { min: 0, max: 1, unit: '', label: 'Reflectance at normal incidence F0', delicate: [0.04, 0.5] };
+const sigma = { min: 0, max: Math.PI / 2, unit: 'rad', label: 'Roughness σ', delicate: [0.1, 0.3, 0.6, 1] };
 const above = (nl, nv) => nl > 0 && nv > 0;
 
 /** @type {import('./types.js').TermFamily} */
@@ -33,6 +33,7 @@ export const DIFFUSE_FAMILY = {
       glsl: 'diffuseLambert',
       chunk: 'diffuse.glsl',
       define: 'DIFFUSE_LAMBERT',
+      args: ['cdiff'],
       params: { cdiff },
     },
     fresnelWeighted: {
@@ -45,6 +46,7 @@ export const DIFFUSE_FAMILY = {
       glsl: 'diffuseFresnelWeighted',
       chunk: 'diffuse.glsl',
       define: 'DIFFUSE_FRESNEL_WEIGHTED',
+      args: ['nl', 'nv', 'f0', 'cdiff'],
       params: { cdiff, f0 },
     },
     ashikhminShirley: {
@@ -57,6 +59,7 @@ export const DIFFUSE_FAMILY = {
       glsl: 'diffuseAshikhminShirley',
       chunk: 'diffuse.glsl',
       define: 'DIFFUSE_ASHIKHMIN_SHIRLEY',
+      args: ['nl', 'nv', 'f0', 'cdiff'],
       params: { cdiff, f0 },
     },
     orenNayar: {
@@ -69,6 +72,7 @@ export const DIFFUSE_FAMILY = {
       glsl: 'diffuseOrenNayar',
       chunk: 'diffuse.glsl',
       define: 'DIFFUSE_OREN_NAYAR',
+      args: ['nl', 'nv', 'cosPhi', 'sigma', 'cdiff'],
       params: { cdiff, sigma },
     },
     orenNayarQualitative: {
@@ -81,6 +85,7 @@ export const DIFFUSE_FAMILY = {
       glsl: 'diffuseOrenNayarQualitative',
       chunk: 'diffuse.glsl',
       define: 'DIFFUSE_OREN_NAYAR_QUALITATIVE',
+      args: ['nl', 'nv', 'cosPhi', 'sigma', 'cdiff'],
       params: { cdiff, sigma },
     },
   },

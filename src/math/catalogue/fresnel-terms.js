@@ -1,7 +1,13 @@
 // The Fresnel terms F(l·h) of the microfacet BRDF. Parameters: f0 (Schlick), eta (and k) for the exact forms.
 import { fresnelConductor, fresnelDielectric, fresnelSchlick } from '../fresnel.js';
 
-const f0 = { min: 0, max: 1, unit: '', label: 'Reflectance at normal incidence F0' };
+const f0 = {
+  min: 0,
+  max: 1,
+  unit: '',
+  label: 'Reflectance at normal incidence F0',
+  delicate: [0.02, 0.04, 0.17, 0.5, 0.95],
+};
 
 /** @type {import('./types.js').TermFamily} */
 export const FRESNEL_FAMILY = {
@@ -24,6 +30,7 @@ export const FRESNEL_FAMILY = {
       chunk: null,
       define: 'F_ONE',
       glslCall: 'vec3(1.0)',
+      args: [],
       params: {},
     },
     schlick: {
@@ -37,6 +44,7 @@ export const FRESNEL_FAMILY = {
       chunk: 'fresnel.glsl',
       define: 'F_SCHLICK',
       glslCall: 'fresnelSchlick(f0, lh)',
+      args: ['f0', 'cos'],
       params: { f0 },
     },
     dielectric: {
@@ -49,7 +57,17 @@ export const FRESNEL_FAMILY = {
       glsl: 'fresnelDielectric',
       chunk: 'fresnel.glsl',
       define: null, // no dispatch offers it yet
-      params: { eta: { min: 1e-3, max: 100, unit: '', label: 'Relative index of refraction η' } },
+      args: ['cos', 'eta'],
+      params: {
+        eta: {
+          min: 1e-3,
+          max: 100,
+          unit: '',
+          label: 'Relative index of refraction η',
+          // no interface (η = 1, approached from both sides), total internal reflection, water, glass, diamond
+          delicate: [0.5, 1 / 1.5, 0.9, 1 - 1e-3, 1 - 1e-6, 1, 1 + 1e-6, 1 + 1e-3, 1.1, 1.33, 1.5, 2.42, 4],
+        },
+      },
     },
     conductor: {
       key: 'conductor',
@@ -61,9 +79,16 @@ export const FRESNEL_FAMILY = {
       glsl: 'fresnelConductor',
       chunk: 'fresnel.glsl',
       define: null, // no dispatch offers it yet
+      args: ['cos', 'eta', 'k'],
       params: {
-        eta: { min: 0.03, max: 100, unit: '', label: 'Relative index of refraction η' },
-        k: { min: 0, max: 10, unit: '', label: 'Extinction coefficient k' },
+        eta: {
+          min: 0.03,
+          max: 100,
+          unit: '',
+          label: 'Relative index of refraction η',
+          delicate: [0.2, 0.5, 1, 1 + 1e-6, 1.5, 3, 10],
+        },
+        k: { min: 0, max: 10, unit: '', label: 'Extinction coefficient k', delicate: [1e-3, 0.5, 1, 2.5, 5] },
       },
     },
   },

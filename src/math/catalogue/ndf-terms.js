@@ -3,7 +3,14 @@
 import { ndfABC, ndfBeckmannFromSin2, ndfBlinnPhongFromSin2, ndfGGXFromSin2, ndfSGD } from '../ndf.js';
 
 const sin2 = (c) => (1 - c) * (1 + c);
-const alpha = { min: 1e-4, max: 1, unit: '', label: 'Roughness α' };
+const alpha = {
+  min: 1e-4,
+  max: 1,
+  unit: '',
+  label: 'Roughness α',
+  clamped: true,
+  delicate: [1e-5, 1e-3, 0.01, 0.1, 0.3, 0.5],
+};
 
 /** @type {import('./types.js').TermFamily} */
 export const NDF_FAMILY = {
@@ -17,7 +24,7 @@ export const NDF_FAMILY = {
   terms: {
     ggx: {
       key: 'ggx',
-      label: 'GGX (Trowbridge–Reitz)',
+      label: 'GGX',
       short: 'GGX',
       cite: 'Trowbridge & Reitz 1975; Walter et al. 2007',
       js: ndfGGXFromSin2,
@@ -26,6 +33,7 @@ export const NDF_FAMILY = {
       chunk: 'ndf.glsl',
       define: 'NDF_GGX',
       glslCall: 'ndfGGXFromSin2(nh, sin2h, alpha)',
+      args: ['cos', 'sin2', 'alpha'],
       params: { alpha },
     },
     beckmann: {
@@ -39,6 +47,7 @@ export const NDF_FAMILY = {
       chunk: 'ndf.glsl',
       define: 'NDF_BECKMANN',
       glslCall: 'ndfBeckmannFromSin2(nh, sin2h, alpha)',
+      args: ['cos', 'sin2', 'alpha'],
       params: { alpha },
     },
     blinnPhong: {
@@ -53,7 +62,18 @@ export const NDF_FAMILY = {
       define: 'NDF_BLINN_PHONG',
       glslCall: 'ndfBlinnPhongFromSin2(nh, sin2h, uExponent)',
       uniforms: { uExponent: 'float' },
-      params: { exponent: { min: 0, max: 1e30, unit: '', label: 'Exponent p' } }, // 1e30: ndf.glsl's clamp
+      args: ['cos', 'sin2', 'exponent'],
+      // 1e30: ndf.glsl's clamp
+      params: {
+        exponent: {
+          min: 0,
+          max: 1e30,
+          unit: '',
+          label: 'Exponent p',
+          clamped: true,
+          delicate: [1, 10, 100, 1e3, 1e4, 1e6, 2e6, 2e8, 1e12],
+        },
+      },
     },
     abc: {
       key: 'abc',
@@ -67,9 +87,10 @@ export const NDF_FAMILY = {
       define: 'NDF_ABC',
       glslCall: 'ndfABC(nh, uA1, uA2)',
       uniforms: { uA1: 'float', uA2: 'float' },
+      args: ['cos', 'a1', 'a2'],
       params: {
-        a1: { min: 0.01, max: 1e4, unit: '', label: 'ABC sharpness a1' },
-        a2: { min: 0.05, max: 20, unit: '', label: 'ABC shape a2' },
+        a1: { min: 0.01, max: 1e4, unit: '', label: 'ABC sharpness a1', clamped: true },
+        a2: { min: 0.05, max: 20, unit: '', label: 'ABC shape a2', clamped: true, delicate: [0.5, 1, 1.5, 2, 3, 10] },
       },
     },
     sgd: {
@@ -84,9 +105,10 @@ export const NDF_FAMILY = {
       define: 'NDF_SGD',
       glslCall: 'ndfSGD(nh, alpha, uSgdP)',
       uniforms: { uSgdP: 'float' },
+      args: ['cos', 'alpha', 'p'],
       params: {
-        alpha: { min: 0.01, max: 2, unit: '', label: 'SGD width α' },
-        p: { min: 0, max: 1.9, unit: '', label: 'SGD shape p' },
+        alpha: { min: 0.01, max: 2, unit: '', label: 'SGD width α', clamped: true, delicate: [0.05, 0.2, 0.5, 1] },
+        p: { min: 0, max: 1.9, unit: '', label: 'SGD shape p', clamped: true, delicate: [0.3, 0.64, 1, 1.5] },
       },
     },
   },

@@ -7,6 +7,9 @@
  * @property {number} max
  * @property {string} unit '' for a pure number, 'rad' for an angle
  * @property {string} label
+ * @property {boolean} [clamped] the functions clamp the value to [min, max] (stress inputs go beyond it)
+ * @property {number[]} [delicate] the values inside the range where the functions are delicate, swept by the
+ *   stress tests (without them, the range's decades or quarters)
  */
 
 /**
@@ -27,7 +30,9 @@
  * @property {string | null} [glslCall] the dispatch's expression for it, over the dispatch's arguments
  * @property {Record<string, string>} [uniforms] the uniforms that expression reads (name → GLSL type), declared
  *   by the dispatch under the term's define only
- * @property {Record<string, TermParam>} params
+ * @property {string[]} args the arguments of js and of the GLSL function, in order: an angle ('cos', 'sin2', 'nl',
+ *   'nv', 'nh', 'lh', 'cosPhi') or a key of params
+ * @property {Record<string, TermParam>} params for an NDF the first is its width (ndf-width.js matches it)
  */
 
 /**

@@ -10,7 +10,14 @@ import {
   visibilitySmithGGXSeparable,
 } from '../visibility.js';
 
-const alpha = { min: 1e-4, max: 1, unit: '', label: 'Roughness α' };
+const alpha = {
+  min: 1e-4,
+  max: 1,
+  unit: '',
+  label: 'Roughness α',
+  clamped: true,
+  delicate: [1e-5, 1e-3, 0.01, 0.1, 0.3, 0.5],
+};
 
 /**
  * A term of roughness alpha whose functions take (nl, nv, alpha) alike (names spelled out: a bundle may
@@ -28,6 +35,7 @@ const smithLike = ({ key, label, short, cite, define }, js, glsl) => ({
   chunk: 'visibility.glsl',
   define,
   glslCall: `${glsl}(nl, nv, alpha)`,
+  args: ['nl', 'nv', 'alpha'],
   params: { alpha },
 });
 
@@ -52,6 +60,7 @@ export const VISIBILITY_FAMILY = {
       chunk: 'visibility.glsl',
       define: 'VIS_IMPLICIT',
       glslCall: 'visibilityImplicit(nl, nv)',
+      args: ['nl', 'nv'],
       params: {},
     },
     cookTorrance: {
@@ -65,6 +74,7 @@ export const VISIBILITY_FAMILY = {
       chunk: 'visibility.glsl',
       define: 'VIS_COOK_TORRANCE',
       glslCall: 'visibilityCookTorrance(nl, nv, nh, lh)',
+      args: ['nl', 'nv', 'nh', 'lh'],
       params: {},
     },
     kelemen: {
@@ -79,6 +89,7 @@ export const VISIBILITY_FAMILY = {
       chunk: 'visibility.glsl',
       define: 'VIS_KELEMEN',
       glslCall: 'aboveHorizon(nl, nv) ? visibilityKelemen(lh) : 0.0',
+      args: ['lh'],
       params: {},
     },
     smithGGXSeparable: smithLike(
