@@ -6,8 +6,7 @@ import { ndfParamsMatchingGGX } from '../../math/ndf-width.js';
 import { directionFromCos, reflectanceImportanceGGX } from '../../math/integrate.js';
 import { directionsFromHalfDiff } from '../../math/half-diff.js';
 import { DEG } from '../../math/angles.js';
-import { NDFS } from '../ndf-explorer/schema.js';
-import { TERMS } from '../visibility-explorer/schema.js';
+import { termEntry, termLabel } from '../../math/catalogue/index.js';
 import { WALK_ANGLES, hasMultipleLobe, kullaContyLobe, walkMultiplePart } from './multiple-lobe.js';
 
 /** The light at θl on the left of n, the view at θv (+: the mirror side), in the plane of incidence (x, z). */
@@ -27,7 +26,7 @@ export function brdfSpec(state, which) {
     f0: state.f0,
     ...ndfParamsMatchingGGX(D, alpha),
     samplingAlpha: alpha,
-    label: `${which}: ${NDFS[D].name.split(' (')[0]} + ${TERMS[V].name}`,
+    label: `${which}: ${termEntry('ndf', D).short} + ${termLabel('visibility', V)}`,
   };
 }
 

@@ -1,18 +1,16 @@
 // The BRDF lobe's state: the light and view in the plane of incidence, BRDF A's terms and roughness, the factors
 // switched on, the overlays (intensity, multiple scattering, BRDF B) and the φd of the (θh, θd) images.
-import { NDF_TERMS, VISIBILITY_TERMS } from '../../math/brdf.js';
-import { NDFS } from '../ndf-explorer/schema.js';
-import { TERMS } from '../visibility-explorer/schema.js';
+import { termOptions } from '../../math/catalogue/index.js';
 
-const ndfOptions = Object.fromEntries(Object.keys(NDF_TERMS).map((k) => [k, NDFS[k].name]));
-const visOptions = Object.fromEntries(Object.keys(VISIBILITY_TERMS).map((k) => [k, TERMS[k].name]));
+const ndfOptions = termOptions('ndf');
+const visOptions = termOptions('visibility');
 
 export const schema = {
   lightTheta: { type: 'number', min: 0, max: 89, step: 1, default: 45, label: 'Light θl', unit: '°' },
   viewTheta: { type: 'number', min: -89, max: 89, step: 1, default: 45, label: 'View θv (+: mirror side)', unit: '°' },
   D: { type: 'enum', options: ndfOptions, default: 'ggx', label: 'A: D' },
   V: { type: 'enum', options: visOptions, default: 'smithGGXCorrelated', label: 'A: V' },
-  F: { type: 'enum', options: { schlick: 'Schlick', one: 'F = 1' }, default: 'schlick', label: 'F' },
+  F: { type: 'enum', options: termOptions('fresnel', ['schlick', 'one']), default: 'schlick', label: 'F' },
   alpha: { type: 'number', min: 0.02, max: 1, step: 0.01, default: 0.3, label: 'A: roughness α (GGX)' },
   f0: { type: 'number', min: 0, max: 1, step: 0.01, default: 0.04, label: 'F0' },
   useF: { type: 'bool', default: true, label: 'Factor F' },

@@ -2,10 +2,11 @@
 // as the light sweeps past a fixed view, and the light sent back by specular plus diffuse against the view angle.
 import { sigmaText } from '../../core/ui/sigma-range.js';
 import { createPlot } from '../../core/ui/plot.js';
-import { MODELS, PROFILE_XS, SWEEP_XS, TRADE_XS, modelColor } from './model.js';
+import { termLabel } from '../../math/catalogue/index.js';
+import { PROFILE_XS, SWEEP_XS, TRADE_XS, modelColor } from './model.js';
 
 const degValues = (u, ticks) => ticks.map((t) => `${t}°`);
-const seriesOf = (state) => state.models.map((k) => ({ label: MODELS[k].name, stroke: modelColor(k) }));
+const seriesOf = (state) => state.models.map((k) => ({ label: termLabel('diffuse', k), stroke: modelColor(k) }));
 
 const profileSpec = (state, profile) => ({
   title: `Brightness across the sphere, through the side the light is on (${sigmaText(state.sigma)})`,

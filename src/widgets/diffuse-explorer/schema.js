@@ -1,13 +1,13 @@
 // The diffuse explorer's state: which models are drawn, their parameters (σ, c_diff, the specular F0 of the
 // trade-off), the light of the spheres and the profile, the view of the sweep plot, and the spheres' exposure.
 import { SIGMA_HINT } from '../../core/ui/sigma-range.js';
-import { MODELS } from './model.js';
+import { termOptions } from '../../math/catalogue/index.js';
 
 export const schema = {
   models: {
     type: 'set',
-    options: Object.fromEntries(Object.keys(MODELS).map((k) => [k, MODELS[k].name])),
-    default: Object.keys(MODELS),
+    options: termOptions('diffuse'),
+    default: Object.keys(termOptions('diffuse')),
     label: 'Diffuse models',
   },
   sigma: {

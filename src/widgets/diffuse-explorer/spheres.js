@@ -1,19 +1,19 @@
 // The diffuse explorer's spheres: one per chosen model with the diffuse term only, under the light of the pad;
 // the probe reads f, f against Lambert and the radiance there.
 import { createSphereGrid } from '../../core/ui/sphere-grid.js';
-import { MODELS, cosPhiDiff, paramsOf, radianceAt } from './model.js';
+import { termDefines, termEntry } from '../../math/catalogue/index.js';
+import { cosPhiDiff, diffuseAt, paramsOf, radianceAt } from './model.js';
 
 const VIEW = [0, 0, 1];
 
 function cell(key, state, l) {
   const p = paramsOf(state);
-  const { short, define, f } = MODELS[key];
   return {
-    label: short,
-    defines: { SPECULAR_OFF: true, [define]: true },
+    label: termEntry('diffuse', key).short,
+    defines: { SPECULAR_OFF: true, ...termDefines({ diffuse: key }) },
     uniforms: { uLightDir: l, uExposure: state.exposure, uDiffuse: state.cdiff, uF0: state.f0, uSigma: p.sigma },
     probe: (a, n) => {
-      const value = f(a.nl, a.nv, cosPhiDiff(n, l, VIEW), p);
+      const value = diffuseAt(key, a.nl, a.nv, cosPhiDiff(n, l, VIEW), p);
       return [
         ['f (1/sr)', value.toFixed(5)],
         ['f / Lambert', state.cdiff > 0 ? (value / (state.cdiff / Math.PI)).toFixed(4) : '—'],

@@ -1,5 +1,6 @@
 // The diffuse explorer's table: how flat the disc looks, from the profile at the centre and near the rim.
-import { MODELS, PROFILE_XS, modelColor } from './model.js';
+import { termLabel } from '../../math/catalogue/index.js';
+import { PROFILE_XS, modelColor } from './model.js';
 
 /** Where the flatness table reads the profile: 90% of the way to the rim, on the light's side. */
 const RIM = 0.9;
@@ -11,7 +12,7 @@ const CAPTION =
 function row(key, values) {
   const [c, r] = [values[CENTRE_AT], values[RIM_AT]];
   return (
-    `<tr><td><span class="swatch" style="background:${modelColor(key)}"></span> ${MODELS[key].name}</td>` +
+    `<tr><td><span class="swatch" style="background:${modelColor(key)}"></span> ${termLabel('diffuse', key)}</td>` +
     `<td>${c.toFixed(4)}</td><td>${r.toFixed(4)}</td><td>${c > 1e-9 ? (r / c).toFixed(3) : '—'}</td></tr>`
   );
 }

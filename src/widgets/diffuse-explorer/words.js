@@ -1,6 +1,6 @@
 // The diffuse explorer's words: what it shows, the functions it names, and its spheres described for screen readers.
 import { sigmaText } from '../../core/ui/sigma-range.js';
-import { MODELS } from './model.js';
+import { termLabel } from '../../math/catalogue/index.js';
 
 export const TITLE = 'Diffuse explorer';
 
@@ -31,4 +31,4 @@ export const TERMS_USED = [
 /** The spheres in words: the parameters, the light and the models shown. */
 export const describeSpheres = (state) =>
   `Spheres with a diffuse term only (c_diff ${state.cdiff}, F0 ${state.f0}, ${sigmaText(state.sigma)}), light ` +
-  `${state.lightTheta}° from the view: ${state.models.map((k) => MODELS[k].name).join(', ')}.`;
+  `${state.lightTheta}° from the view: ${state.models.map((k) => termLabel('diffuse', k)).join(', ')}.`;

@@ -4,6 +4,7 @@
 // E(n·v) from the split-sum table (the same float64 quadrature, bilinear on the GPU). A compensation switch puts
 // the lost energy back (Kulla & Conty 2017, Turquin 2019), and a coloured metal's albedo is set beside the walk.
 import { createWidgetShell } from '../../core/framework/widget-shell.js';
+import { termLabel } from '../../math/catalogue/index.js';
 import { schema } from './schema.js';
 import { albedoSweep } from './model.js';
 import { createAlbedoPlots } from './plots.js';
@@ -22,7 +23,7 @@ export function createEnergy(container, initialState = {}, { onStateChange } = {
   const plots = createAlbedoPlots(plotHolder, sweep);
   const spheres = createFurnaceSpheres(shell.view);
   const table = createAlbedoTable(shell.view);
-  const compensationLabel = () => schema.compensation.options[shell.state.compensation];
+  const compensationLabel = () => termLabel('compensation', shell.state.compensation);
   const metalNow = () => metalView.update(shell.state.metal, shell.state.metalAlpha);
   const describe = (metal) => {
     const compensated = shell.state.compensation === 'none' ? null : compensationLabel();

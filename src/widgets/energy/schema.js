@@ -1,5 +1,6 @@
 // The white furnace's state: the roughness sweep, the energy compensation, and the coloured metal shown with it.
 import { METALS } from '../../math/materials.js';
+import { termOptions } from '../../math/catalogue/index.js';
 
 export const schema = {
   alphas: {
@@ -11,7 +12,7 @@ export const schema = {
   },
   compensation: {
     type: 'enum',
-    options: { none: 'None', kullaConty: 'Kulla–Conty 2017', turquin: 'Turquin 2019' },
+    options: termOptions('compensation'),
     default: 'none',
     label: 'Energy compensation',
   },

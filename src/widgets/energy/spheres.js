@@ -6,13 +6,14 @@ import { createDfgTexture } from '../../lab/environment-maps.js';
 import { createAlbedoTableTexture, albedoTableOnce } from '../../core/gpu/albedo-table-texture.js';
 import { albedoGGX } from '../../math/integrate.js';
 import { specularAlbedoFromTable } from '../../math/albedo-table.js';
+import { termDefines } from '../../math/catalogue/index.js';
 
-// the shader variant per compensation
-const FURNACE_DEFINES = {
-  none: { FURNACE: true },
-  kullaConty: { FURNACE: true, FURNACE_KULLA_CONTY: true, ALBEDO_TABLE_GGX: true },
-  turquin: { FURNACE: true, FURNACE_TURQUIN: true, ALBEDO_TABLE_GGX: true },
-};
+/** The furnace's shader variant: a compensation's own switch and, with one, the albedo-loss table it reads. */
+const furnaceDefines = (compensation) => ({
+  FURNACE: true,
+  ...termDefines({ compensation }),
+  ...(compensation === 'none' ? {} : { ALBEDO_TABLE_GGX: true }),
+});
 
 /** The probe's rows at a sphere point: E(n·v), the energy lost and, compensated, the albedo with it put back. */
 function probeRows(a, alpha, compensation, compensationLabel) {
@@ -37,7 +38,7 @@ export function createFurnaceSpheres(container) {
       grid.setCells(
         sweep.map((d) => ({
           label: `α = ${d.alpha}`,
-          defines: FURNACE_DEFINES[compensation],
+          defines: furnaceDefines(compensation),
           uniforms: { uAlpha: d.alpha, uDfg: dfg, uAlbedoTableGGX: lossTable },
           probe: (a) => probeRows(a, d.alpha, compensation, compensationLabel),
         })),

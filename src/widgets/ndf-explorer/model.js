@@ -6,7 +6,8 @@ import { ndfProjectedIntegral } from '../../math/integrate.js';
 import { DEG } from '../../math/angles.js';
 import { seriesStyle } from '../../core/ui/palettes.js';
 import { THETA_H_DEG } from '../measured-brdf/model.js';
-import { NDFS } from './schema.js';
+import { termLabel } from '../../math/catalogue/index.js';
+import { NDF_KEYS } from './schema.js';
 
 /** θh in degrees: every 0.25° and the θh nodes of a MERL table (where a measured slice has its values), in order. */
 export const ANGLES = Float64Array.from(
@@ -42,8 +43,8 @@ export function ndfCurves(state) {
     return {
       key,
       p,
-      label: NDFS[key].name,
-      ...seriesStyle(Object.keys(NDFS).indexOf(key)),
+      label: termLabel('ndf', key),
+      ...seriesStyle(NDF_KEYS.indexOf(key)),
       values: ANGLES.map((deg) => D(Math.cos(deg * DEG))),
       integral: ndfProjectedIntegral(D),
     };

@@ -1,14 +1,9 @@
 // The NDF explorer's state: the matched half width, the shapes of ABC and SGD, which NDFs are drawn, the
 // spheres' light and exposure, and the measured slice the measured-BRDF widget hands over.
+import { termOptions } from '../../math/catalogue/index.js';
 
-/** The talk's five NDFs: their labels and the shader switch that picks each on the spheres. */
-export const NDFS = {
-  blinnPhong: { name: 'Blinn-Phong', define: 'NDF_BLINN_PHONG' },
-  beckmann: { name: 'Beckmann', define: 'NDF_BECKMANN' },
-  ggx: { name: 'GGX (Trowbridge-Reitz)', define: 'NDF_GGX' },
-  abc: { name: 'ABC', define: 'NDF_ABC' },
-  sgd: { name: 'Shifted gamma (SGD)', define: 'NDF_SGD' },
-};
+/** The talk's five NDFs (catalogue keys), in the order the talk shows them: menu, legend and colour order. */
+export const NDF_KEYS = ['blinnPhong', 'beckmann', 'ggx', 'abc', 'sgd'];
 
 export const schema = {
   hwhm: { type: 'number', min: 1, max: 40, step: 0.5, default: 8, label: 'Matched half width', unit: '°' },
@@ -16,8 +11,8 @@ export const schema = {
   sgdP: { type: 'number', min: 0, max: 1.9, step: 0.01, default: 0.64, label: 'SGD shape p' },
   ndfs: {
     type: 'set',
-    options: Object.fromEntries(Object.entries(NDFS).map(([k, v]) => [k, v.name])),
-    default: Object.keys(NDFS),
+    options: termOptions('ndf', NDF_KEYS),
+    default: NDF_KEYS,
     label: 'Distributions',
   },
   lightTheta: { type: 'number', min: 0, max: 80, step: 1, default: 35, label: 'Light from view', unit: '°' },

@@ -3,13 +3,14 @@
 import { createSphereGrid } from '../../core/ui/sphere-grid.js';
 import { lightDirFromAngles } from '../../math/angles.js';
 import { NDF_TERMS, microfacetBRDFAt, punctualRadiance } from '../../math/brdf.js';
-import { NDFS } from './schema.js';
+import { termDefines, termEntry } from '../../math/catalogue/index.js';
 
 function cell(c, state) {
-  const radiance = (a) => punctualRadiance(microfacetBRDFAt(a, { F: 'one', D: c.key, V: 'implicit', ...c.p }), a.nl, 1);
+  const terms = { F: 'one', D: c.key, V: 'implicit' }; // only D differs
+  const radiance = (a) => punctualRadiance(microfacetBRDFAt(a, { ...terms, ...c.p }), a.nl, 1);
   return {
-    label: c.label.split(' (')[0],
-    defines: { [NDFS[c.key].define]: true, VIS_IMPLICIT: true, F_ONE: true },
+    label: termEntry('ndf', c.key).short,
+    defines: termDefines(terms),
     uniforms: {
       uLightDir: lightDirFromAngles(state.lightTheta, 135),
       uExposure: state.exposure,

@@ -3,7 +3,8 @@
 import { VISIBILITY_TERMS, brdfAngles } from '../../math/brdf.js';
 import { DEG } from '../../math/angles.js';
 import { seriesStyle } from '../../core/ui/palettes.js';
-import { TERMS } from './schema.js';
+import { termLabel } from '../../math/catalogue/index.js';
+import { schema } from './schema.js';
 
 /** The term every other is measured against. */
 export const REFERENCE = 'smithGGXCorrelated';
@@ -37,8 +38,8 @@ export function visibilityCurves(state) {
     const within = error.filter((e, i) => e !== null && ANGLES[i] <= 80);
     return {
       key,
-      label: TERMS[key].name,
-      ...seriesStyle(Object.keys(TERMS).indexOf(key)),
+      label: termLabel('visibility', key),
+      ...seriesStyle(Object.keys(schema.terms.options).indexOf(key)),
       G,
       error,
       worst: Math.max(...within.map(Math.abs)),

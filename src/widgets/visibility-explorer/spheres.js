@@ -4,14 +4,13 @@ import { createSphereGrid } from '../../core/ui/sphere-grid.js';
 import { lightDirFromAngles } from '../../math/angles.js';
 import { VISIBILITY_TERMS } from '../../math/brdf.js';
 import { REFERENCE } from './model.js';
-import { TERMS } from './schema.js';
-import { sphereLabel } from './words.js';
+import { termDefines, termEntry } from '../../math/catalogue/index.js';
 
 function cell(c, state) {
   const params = { alpha: state.alpha };
   return {
-    label: sphereLabel(c.label),
-    defines: { [TERMS[c.key].define]: true, NDF_GGX: true, F_ONE: true },
+    label: termEntry('visibility', c.key).short,
+    defines: termDefines({ F: 'one', D: 'ggx', V: c.key }),
     uniforms: { uLightDir: lightDirFromAngles(state.lightTheta, 135), uExposure: state.exposure, uAlpha: state.alpha },
     probe: (a) => {
       const V = VISIBILITY_TERMS[c.key](a, params);

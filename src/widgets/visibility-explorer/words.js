@@ -30,10 +30,6 @@ export const angleAxisLabel = (state) =>
     ? 'Angle of l and of v from n (degrees)'
     : `Light angle θl, view fixed at ${state.viewTheta}° (degrees)`;
 
-/** A term's label short enough for a sphere. */
-export const sphereLabel = (label) =>
-  label.split(' (')[0].replace(', height-correlated', ' corr.').replace(', separable', ' sep.');
-
 /** The spheres in words: the light, and each term's largest difference from height-correlated Smith. */
 export function describeSpheres(curves, state) {
   const where = state.config === 'mirror' ? 'l and v mirrored' : `view at ${state.viewTheta}°`;
