@@ -6,7 +6,8 @@ import { cosPhiDiff, diffuseAt, paramsOf, radianceAt } from './model.js';
 
 const VIEW = [0, 0, 1];
 
-function cell(key, state, l) {
+/** The sphere of the diffuse model `key` lit from l: { label, defines, uniforms, probe } for the sphere grid. */
+export function sphereCell(key, state, l) {
   const p = paramsOf(state);
   return {
     label: termEntry('diffuse', key).short,
@@ -27,7 +28,7 @@ export function createDiffuseSpheres(container) {
   const grid = createSphereGrid(container, { label: 'Diffuse models on spheres' });
   return {
     /** One sphere per chosen model, lit from l. */
-    draw: (state, l) => grid.setCells(state.models.map((k) => cell(k, state, l))),
+    draw: (state, l) => grid.setCells(state.models.map((k) => sphereCell(k, state, l))),
     get canvas() {
       return grid.canvas;
     },

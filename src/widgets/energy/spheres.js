@@ -9,7 +9,7 @@ import { specularAlbedoFromTable } from '../../math/albedo-table.js';
 import { termDefines } from '../../math/catalogue/index.js';
 
 /** The furnace's shader variant: a compensation's own switch and, with one, the albedo-loss table it reads. */
-const furnaceDefines = (compensation) => ({
+export const furnaceDefines = (compensation) => ({
   FURNACE: true,
   ...termDefines({ compensation }),
   ...(compensation === 'none' ? {} : { ALBEDO_TABLE_GGX: true }),

@@ -5,7 +5,8 @@ import { lightDirFromAngles } from '../../math/angles.js';
 import { NDF_TERMS, microfacetBRDFAt, punctualRadiance } from '../../math/brdf.js';
 import { termDefines, termEntry } from '../../math/catalogue/index.js';
 
-function cell(c, state) {
+/** The sphere of one NDF curve (model.js's ndfCurves): { label, defines, uniforms, probe } for the sphere grid. */
+export function sphereCell(c, state) {
   const terms = { F: 'one', D: c.key, V: 'implicit' }; // only D differs
   const radiance = (a) => punctualRadiance(microfacetBRDFAt(a, { ...terms, ...c.p }), a.nl, 1);
   return {
@@ -30,7 +31,7 @@ function cell(c, state) {
 export function createNdfSpheres(container) {
   const grid = createSphereGrid(container, { label: 'NDF highlights on spheres' });
   return {
-    draw: (curves, state) => grid.setCells(curves.map((c) => cell(c, state))),
+    draw: (curves, state) => grid.setCells(curves.map((c) => sphereCell(c, state))),
     get canvas() {
       return grid.canvas;
     },

@@ -6,7 +6,8 @@ import { VISIBILITY_TERMS } from '../../math/brdf.js';
 import { REFERENCE } from './model.js';
 import { termDefines, termEntry } from '../../math/catalogue/index.js';
 
-function cell(c, state) {
+/** The sphere of one term's curve (model.js's visibilityCurves): { label, defines, uniforms, probe }. */
+export function sphereCell(c, state) {
   const params = { alpha: state.alpha };
   return {
     label: termEntry('visibility', c.key).short,
@@ -26,7 +27,7 @@ function cell(c, state) {
 export function createVisibilitySpheres(container) {
   const grid = createSphereGrid(container, { label: 'Visibility terms on spheres' });
   return {
-    draw: (curves, state) => grid.setCells(curves.map((c) => cell(c, state))),
+    draw: (curves, state) => grid.setCells(curves.map((c) => sphereCell(c, state))),
     get canvas() {
       return grid.canvas;
     },
