@@ -36,7 +36,8 @@ export function sceneDefines(scene, reference) {
 }
 
 function measuredDefines({ lights, methods }, reference) {
-  const d = { MEASURED: 1 };
+  // the table is the whole BRDF; the model's terms still compile (GGX's sampling, with the fit's uAlpha)
+  const d = { MEASURED: 1, ...termDefines({ F: 'schlick', D: 'ggx', V: 'smithGGXCorrelated' }) };
   if (lights.punctual) d.LIGHT_PUNCTUAL = 1;
   if (lights.sphere) d.LIGHT_SPHERE = 1;
   if (reference) {
