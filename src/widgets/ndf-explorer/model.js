@@ -19,24 +19,12 @@ const NODE_AT = new Map(Array.from(THETA_H_DEG, (deg, i) => [deg, i]));
 export const measuredOnAngles = (slice) =>
   Array.from(ANGLES, (deg) => (NODE_AT.has(deg) && slice[NODE_AT.get(deg)] > 0 ? slice[NODE_AT.get(deg)] : null));
 
-/** The matched parameters of each NDF as the { alpha, exponent, a1, a2, p } object NDF_TERMS read. */
-export function matchedParameters(state) {
-  const m = matchNdfWidths(state.hwhm, { abcA2: state.abcA2, sgdP: state.sgdP });
-  return {
-    blinnPhong: { exponent: m.blinnPhong.exponent },
-    beckmann: { alpha: m.beckmann.alpha },
-    ggx: { alpha: m.ggx.alpha },
-    abc: { a1: m.abc.a1, a2: m.abc.a2 },
-    sgd: { alpha: m.sgd.alpha, p: m.sgd.p },
-  };
-}
-
 /**
- * One curve per chosen NDF: { key, p (its parameters), label, stroke, dash, values (D over ANGLES, 1/sr),
- * integral (∫ D (n·m) dω, 1 for a density) }.
+ * One curve per chosen NDF: { key, p (its parameters at the matched width, as NDF_TERMS read them), label,
+ * stroke, dash, values (D over ANGLES, 1/sr), integral (∫ D (n·m) dω, 1 for a density) }.
  */
 export function ndfCurves(state) {
-  const params = matchedParameters(state);
+  const params = matchNdfWidths(state.hwhm, { abcA2: state.abcA2, sgdP: state.sgdP });
   return state.ndfs.map((key) => {
     const p = params[key];
     const D = (c) => NDF_TERMS[key](c, p);
