@@ -28,8 +28,8 @@ function sphereVariants() {
     ...diffuse.map((d) => ({ SPECULAR_OFF: true, ...d })),
     ...diffuse.map((d) => ({ ...termDefines({ F: 'schlick', D: 'ggx', V: 'smithGGXCorrelated' }), ...d })),
     { FURNACE: true },
-    { FURNACE: true, FURNACE_KULLA_CONTY: true, ALBEDO_TABLE_GGX: true },
-    { FURNACE: true, FURNACE_TURQUIN: true, ALBEDO_TABLE_GGX: true },
+    { FURNACE: true, COMPENSATION_KULLA_CONTY: true, ALBEDO_TABLE_GGX: true },
+    { FURNACE: true, COMPENSATION_TURQUIN: true, ALBEDO_TABLE_GGX: true },
   ];
 }
 
