@@ -1,12 +1,12 @@
 // A sphere shaded by one BRDF under one punctual light (the talk's L = pi f c_light (n·l)), or, with FURNACE, in a
 // uniform white environment with F = 1: the directional albedo E(n·v), scale + bias of the split-sum table uDfg
-// (GGX, height-correlated Smith); with FURNACE_KULLA_CONTY or FURNACE_TURQUIN, that albedo with the energy
-// compensation (multiple-scattering.glsl).
+// (GGX, height-correlated Smith); with COMPENSATION_KULLA_CONTY or COMPENSATION_TURQUIN, that albedo with the
+// energy compensation (multiple-scattering.glsl).
 // Under the light the BRDF has two layers: the specular lobe of brdf.glsl (its term switches NDF_*, VIS_*, F_*
 // pick D, V and F), off with SPECULAR_OFF; and the diffuse term of diffuse-term.glsl, there when a DIFFUSE_* term
 // switch is given and not DIFFUSE_OFF. Only what is on compiles.
 #include "color.glsl"
-#if defined(FURNACE_KULLA_CONTY) || defined(FURNACE_TURQUIN)
+#if defined(COMPENSATION_KULLA_CONTY) || defined(COMPENSATION_TURQUIN)
 #include "multiple-scattering.glsl"
 #elif defined(FURNACE)
 #include "integrate.glsl"
@@ -27,7 +27,7 @@ uniform float uLightIntensity;
 uniform float uExposure;
 uniform float uAlpha;
 uniform float uF0;
-#if defined(FURNACE) && !defined(FURNACE_KULLA_CONTY) && !defined(FURNACE_TURQUIN)
+#if defined(FURNACE) && !defined(COMPENSATION_KULLA_CONTY) && !defined(COMPENSATION_TURQUIN)
 uniform sampler2D uDfg;
 #endif
 #ifdef DIFFUSE_LAYER
@@ -40,9 +40,9 @@ void main() {
   vec3 n = normalize(vNormal);
   vec3 v = isOrthographic ? vec3(0.0, 0.0, 1.0) : normalize(-vViewPosition);
   float nv = dot(n, v);
-#if defined(FURNACE_KULLA_CONTY)
+#if defined(COMPENSATION_KULLA_CONTY)
   float radiance = specularAlbedoKullaConty(nv, uAlpha, 1.0);
-#elif defined(FURNACE_TURQUIN)
+#elif defined(COMPENSATION_TURQUIN)
   float radiance = specularAlbedoTurquin(nv, uAlpha, 1.0);
 #elif defined(FURNACE)
   vec2 ab = texture(uDfg, dfgTableUv(nv, uAlpha)).rg;

@@ -2,7 +2,7 @@
 #include "fresnel.glsl"
 
 // cos of the azimuth between l and v about n = z; 1 where either lies along n (no term depends on it there),
-// as cosPhiDiff of src/widgets/diffuse-explorer/diffuse-curves.js
+// as cosPhiDiff of src/widgets/diffuse-explorer/model.js
 float cosPhiDiff(vec3 l, vec3 v) {
   float d = dot(l.xy, l.xy) * dot(v.xy, v.xy);
   return d > 1e-12 ? dot(l.xy, v.xy) / sqrt(d) : 1.0;

@@ -28,8 +28,8 @@ function sphereVariants() {
     ...diffuse.map((d) => ({ SPECULAR_OFF: true, ...d })),
     ...diffuse.map((d) => ({ ...termDefines({ F: 'schlick', D: 'ggx', V: 'smithGGXCorrelated' }), ...d })),
     { FURNACE: true },
-    { FURNACE: true, FURNACE_KULLA_CONTY: true, ALBEDO_TABLE_GGX: true },
-    { FURNACE: true, FURNACE_TURQUIN: true, ALBEDO_TABLE_GGX: true },
+    { FURNACE: true, COMPENSATION_KULLA_CONTY: true, ALBEDO_TABLE_GGX: true },
+    { FURNACE: true, COMPENSATION_TURQUIN: true, ALBEDO_TABLE_GGX: true },
   ];
 }
 
@@ -98,7 +98,10 @@ describe('every variant of every program assembles, and declares only the unifor
     const plain = {
       'env-copy.frag.glsl': [{}],
       'env-prefilter.frag.glsl': [termDefines({ D: 'ggx' }), termDefines({ D: 'beckmann' })],
-      'fresnel-zones.frag.glsl': [{}, { ZONE_BY_LH: true, WEIGHTED: true }],
+      'fresnel-zones.frag.glsl': [
+        {},
+        { ZONE_BY_LH: true, WEIGHTED: true, ...termDefines({ D: 'ggx', V: 'smithGGXCorrelated' }) },
+      ],
       'lab-error.frag.glsl': [{}],
       'lab-view.frag.glsl': [{}],
       'measured-sphere.frag.glsl': [{}],
