@@ -113,7 +113,8 @@ export function compensationNote({ terms, lights, methods }) {
     lights.env && methods.env === 'split-sum' && terms.compensation === 'kullaConty'
       ? ' Under the split sum the lobe’s albedo F_ms (1 − E) multiplies the irradiance (Fdez-Agüera 2019).'
       : '';
-  return `Multiple scattering: ${name} in the reference and every method that evaluates the BRDF.${split}${env}${tables}`;
+  const where = 'in the reference and every method that evaluates the BRDF';
+  return `Multiple scattering: ${name} ${where}.${split}${env}${tables}`;
 }
 
 const PMREM_NOTE =

@@ -45,7 +45,10 @@ export function labScene(state, lights) {
   };
 }
 
-/** The sphere light: c_light is kept as the radius changes (radiance = c_light / sin²θs), so only the shape of its highlight changes. */
+/**
+ * The sphere light: c_light is kept as the radius changes (radiance = c_light / sin²θs), so only the shape of its
+ * highlight changes.
+ */
 export function sphereLight(thetaDeg, phiDeg, radiusDeg, cLight) {
   const sin = Math.sin(radiusDeg * DEG);
   return { dir: lightDirFromAngles(thetaDeg, phiDeg), sin, radiance: [1, 1, 1].map(() => cLight / (sin * sin)) };

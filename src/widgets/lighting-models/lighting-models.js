@@ -50,7 +50,8 @@ export const MODELS = [
     lights: { env: sky },
     map: 'sky',
     fails:
-      'The sun is one more bright patch of a prefiltered map: its highlight is blurred by the map’s resolution and the prefilter assumes n = v = r, wrong at grazing angles.',
+      'The sun is one more bright patch of a prefiltered map: its highlight is blurred by the map’s resolution and ' +
+      'the prefilter assumes n = v = r, wrong at grazing angles.',
   },
   {
     key: 'area',
@@ -58,7 +59,8 @@ export const MODELS = [
     lights: { env: sky, sphere: sunSphere },
     map: 'sky-no-sun',
     fails:
-      'The representative point reshapes the highlight for the sun’s size, with an energy factor that is only approximate; the sky is still prefiltered.',
+      'The representative point reshapes the highlight for the sun’s size, with an energy factor that is only ' +
+      'approximate; the sky is still prefiltered.',
   },
   {
     key: 'punctual',
@@ -97,6 +99,35 @@ const TERMS_USED = [
 const TERMS = { F: 'schlick', D: 'ggx', V: 'smithGGXCorrelated', diffuse: 'lambert', layers: 'both' };
 const METHODS = { env: 'split-sum', area: 'representative', samples: 1 };
 const fmt = (x, digits = 3) => (Number.isFinite(x) ? x.toPrecision(digits) : '—');
+
+/** The table of the models' costs and errors against the reference (`samples` of it so far). */
+function tableHtml(st, results, samples, resolution) {
+  const converging = samples < Number(st.refSamples) ? ', still converging' : '';
+  const caption =
+    'Sun enlarged to 2° (the real one is 0.27°). ' +
+    `Against the reference (${samples} of ${st.refSamples} samples per pixel${converging})`;
+  const head = ['Illumination model', `GPU time (${resolution}² px)`, 'RMS error', 'relative', 'Where it fails'];
+  const row = (r) =>
+    `<tr><th scope="row">${r.name}</th><td>${fmt(r.ms)} ms</td><td>${fmt(r.rms)}</td>` +
+    `<td>${fmt(r.relative * 100)} %</td><td>${r.fails}</td></tr>`;
+  return `<table class="data-table compact"><caption>${caption}</caption>
+      <thead><tr>${head.map((h) => `<th>${h}</th>`).join('')}</tr></thead><tbody>
+      ${results.map(row).join('')}
+      </tbody></table>`;
+}
+
+/** What the canvas shows, for a screen reader. */
+function description(st, results, samples) {
+  const material = st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material;
+  const errors =
+    samples < Number(st.refSamples)
+      ? 'The reference is still converging.'
+      : `Relative RMS errors: ${results.map((r) => `${r.name} ${fmt(r.relative * 100)} %`).join(', ')}.`;
+  return (
+    `Lighting models: a sphere (${material}, roughness α ${st.alpha}) under a sky with a sun, by the reference and ` +
+    `four illumination models. ${errors}`
+  );
+}
 
 export function createLightingModels(container, initialState = {}, { onStateChange } = {}) {
   const shell = createWidgetShell(container, {
@@ -142,14 +173,8 @@ export function createLightingModels(container, initialState = {}, { onStateChan
   };
 
   const showTable = (st) => {
-    table.innerHTML = `<table class="data-table compact"><caption>Sun enlarged to 2° (the real one is 0.27°). Against the reference (${samples} of ${st.refSamples} samples per pixel${samples < Number(st.refSamples) ? ', still converging' : ''})</caption>
-      <thead><tr><th>Illumination model</th><th>GPU time (${view.resolution}² px)</th><th>RMS error</th><th>relative</th><th>Where it fails</th></tr></thead><tbody>
-      ${results.map((r) => `<tr><th scope="row">${r.name}</th><td>${fmt(r.ms)} ms</td><td>${fmt(r.rms)}</td><td>${fmt(r.relative * 100)} %</td><td>${r.fails}</td></tr>`).join('')}
-      </tbody></table>`;
-    shell.describe(
-      `Lighting models: a sphere (${st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material}, roughness α ${st.alpha}) under a sky with a sun, by the reference and four illumination models. ${samples < Number(st.refSamples) ? 'The reference is still converging.' : `Relative RMS errors: ${results.map((r) => `${r.name} ${fmt(r.relative * 100)} %`).join(', ')}.`}`,
-      view.canvas,
-    );
+    table.innerHTML = tableHtml(st, results, samples, view.resolution);
+    shell.describe(description(st, results, samples), view.canvas);
   };
 
   const onReset = () => ([approxKey, refKey] = ['', '']);
