@@ -3,13 +3,14 @@
 // height-correlated Smith's), plus the chosen diffuse term (DIFFUSE_*). SPECULAR_OFF / DIFFUSE_OFF show one layer
 // alone. With MEASURED the BRDF is a measured table (measured.glsl, uMeasured), whole: its specular and diffuse are
 // not apart, so specularBRDF is the table and diffuseBRDF 0; uAlpha is then the GGX fit's, for sampling only.
-#include "brdf.glsl"
-#include "diffuse.glsl"
-#if defined(COMPENSATION_KULLA_CONTY) || defined(COMPENSATION_TURQUIN)
-#include "multiple-scattering.glsl"
-#endif
 #ifdef MEASURED
 #include "measured.glsl"
+#else
+#include "brdf.glsl"
+#include "diffuse.glsl"
+#endif
+#if defined(COMPENSATION_KULLA_CONTY) || defined(COMPENSATION_TURQUIN)
+#include "multiple-scattering.glsl"
 #endif
 
 uniform vec3 uF0;
@@ -43,7 +44,7 @@ vec3 fresnelBounces() { return fresnelMultipleScatteringKullaConty(fresnelAverag
 vec3 specularBRDF(vec3 l, vec3 v) {
 #ifdef MEASURED
   return measuredBRDF(vec3(0.0, 0.0, 1.0), l, v);
-#endif
+#else
   vec3 f = microfacetBRDF(l, v, uAlpha, uF0);
 #if defined(COMPENSATION_TURQUIN)
   f *= energyCompensationTurquin(F0_BOUNCES, 1.0 - albedoLossTableGGX(v.z, uAlpha).x);
@@ -51,6 +52,7 @@ vec3 specularBRDF(vec3 l, vec3 v) {
   f += multipleScatteringKullaConty(l.z, v.z, uAlpha) * fresnelBounces();
 #endif
   return specularOn * f;
+#endif
 }
 
 // cos of the azimuth between l and v about n = z; 0 where either lies along n (no term depends on it there)
@@ -64,7 +66,7 @@ float cosPhiBetween(vec3 l, vec3 v) {
 vec3 diffuseBRDF(vec3 l, vec3 v) {
 #ifdef MEASURED
   return vec3(0.0); // in the table
-#endif
+#else
   if (l.z <= 0.0 || v.z <= 0.0) return vec3(0.0);
   vec3 c = diffuseColor;
 #if defined(DIFFUSE_FRESNEL_WEIGHTED)
@@ -84,6 +86,7 @@ vec3 diffuseBRDF(vec3 l, vec3 v) {
               diffuseOrenNayarQualitative(l.z, v.z, cp, uSigma, c.b));
 #else
   return vec3(diffuseLambert(c.r), diffuseLambert(c.g), diffuseLambert(c.b));
+#endif
 #endif
 }
 

@@ -22,6 +22,7 @@ import { transmittance, waterAbsorptionRgb } from '../math/media.js';
 import { FRESNEL_ZONE_BOUNDS_DEG, fresnelZone } from '../math/zones.js';
 import { displayRms, highlightArea, peakOf, sphereRadiance } from './sphere-image.js';
 import { DEG } from '../math/angles.js';
+import { termOptions } from '../math/catalogue/index.js';
 
 /** A number for feedback: 3 significant digits, no exponent for everyday sizes. */
 export const fmt = (x, digits = 3) => {
@@ -33,23 +34,9 @@ export const fmt = (x, digits = 3) => {
 const pct = (x) => `${fmt(x * 100)}%`;
 const times = (r) => `${fmt(r, 2)}×`;
 
-export const NDF_NAMES = {
-  ggx: 'GGX',
-  beckmann: 'Beckmann',
-  blinnPhong: 'Blinn-Phong',
-  abc: 'ABC',
-  sgd: 'Shifted gamma (SGD)',
-};
-export const VISIBILITY_NAMES = {
-  implicit: 'Implicit',
-  cookTorrance: 'Cook-Torrance',
-  kelemen: 'Kelemen',
-  smithGGXSeparable: 'Smith GGX, separable',
-  smithGGXCorrelated: 'Smith GGX, height-correlated',
-  smithGGXCorrelatedFast: 'Hammon 2017',
-  schlickGGX: 'Schlick-GGX',
-  smithBeckmannSeparable: 'Smith Beckmann, separable',
-};
+/** The terms' one labels (src/math/catalogue), as graders' choices and in their feedback. */
+export const NDF_NAMES = termOptions('ndf');
+export const VISIBILITY_NAMES = termOptions('visibility');
 const CHANNELS = { r: 'red (650 nm)', g: 'green (550 nm)', b: 'blue (450 nm)' };
 const ZONES = { green: 'green (θ < 45°)', yellow: 'yellow (45°–75°)', red: 'red (θ > 75°)' };
 

@@ -1,19 +1,12 @@
 // The #defines of one material-lab program (lab-shade.frag.glsl): only the terms, lights and methods in use are
 // compiled. Pure: loads in Node, so the uniform and variant tests can list every program the lab makes.
+import { termDefines } from '../math/catalogue/index.js';
 
 const DIFFUSE_DEFINES = {
   'fresnel-weighted': 'DIFFUSE_FRESNEL_WEIGHTED',
   'ashikhmin-shirley': 'DIFFUSE_ASHIKHMIN_SHIRLEY',
   'oren-nayar': 'DIFFUSE_OREN_NAYAR',
   'oren-nayar-qualitative': 'DIFFUSE_OREN_NAYAR_QUALITATIVE',
-};
-const NDF_DEFINES = { beckmann: 'NDF_BECKMANN' };
-const VIS_DEFINES = {
-  implicit: 'VIS_IMPLICIT',
-  cookTorrance: 'VIS_COOK_TORRANCE',
-  kelemen: 'VIS_KELEMEN',
-  smithGGXSeparable: 'VIS_SMITH_GGX_SEPARABLE',
-  schlickGGX: 'VIS_SCHLICK_GGX',
 };
 const COMPENSATION_DEFINES = { kullaConty: 'COMPENSATION_KULLA_CONTY', turquin: 'COMPENSATION_TURQUIN' };
 const ENV_DEFINES = { mirror: 'ENV_MIRROR', importance: 'ENV_IMPORTANCE', 'split-sum': 'ENV_SPLIT_SUM' };
@@ -29,15 +22,19 @@ export function sceneDefines(scene, reference) {
   return scene.measured ? measuredDefines(scene, reference) : modelDefines(scene, reference);
 }
 
+// a measured table is sampled by the lobe of its GGX fit (ndf-sampling.glsl)
+const sampledByGgx = { NDF_GGX: 1 };
+
 function measuredDefines({ lights, methods }, reference) {
   const d = { MEASURED: 1 };
   if (lights.punctual) d.LIGHT_PUNCTUAL = 1;
   if (lights.sphere) d.LIGHT_SPHERE = 1;
   if (reference) {
-    return Object.assign(d, { REFERENCE: 1 }, lights.env && { LIGHT_ENV: 1 }, lights.ambient && { LIGHT_AMBIENT: 1 });
+    const surround = Object.assign({}, lights.env && { LIGHT_ENV: 1 }, lights.ambient && { LIGHT_AMBIENT: 1 });
+    return Object.assign(d, { REFERENCE: 1 }, sampledByGgx, surround);
   }
   if (lights.env) d.LIGHT_ENV = 1; // the map behind the sphere
-  if (lights.env && methods.env === 'importance') d.ENV_IMPORTANCE = 1;
+  if (lights.env && methods.env === 'importance') Object.assign(d, { ENV_IMPORTANCE: 1 }, sampledByGgx);
   if (lights.sphere && methods.area === 'centre') d.AREA_CENTRE = 1;
   return d;
 }
@@ -46,9 +43,7 @@ function modelDefines(scene, reference) {
   const d = {};
   const flag = (name) => name && (d[name] = 1);
   flag(DIFFUSE_DEFINES[scene.terms.diffuse]);
-  flag(NDF_DEFINES[scene.terms.D]);
-  flag(VIS_DEFINES[scene.terms.V]);
-  if (scene.terms.F === 'one') flag('F_ONE');
+  Object.keys(termDefines({ F: scene.terms.F, D: scene.terms.D, V: scene.terms.V })).forEach(flag);
   if (scene.terms.compensation && scene.terms.compensation !== 'none') {
     flag(COMPENSATION_DEFINES[scene.terms.compensation]);
     flag('ALBEDO_TABLE_GGX');

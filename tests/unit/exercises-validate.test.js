@@ -127,7 +127,7 @@ describe('validator messages', () => {
     const twins = await errorsOf({ ...ndf, state: { hwhm: 5 }, params: { ...ndf.params, hwhm: 5 }, tolerance: 1.3 });
     expect(twins).toHaveLength(2); // each of the pair accepts the other
     expect(twins[0]).toMatch(
-      /^params: at a half width of 5° Blinn-Phong is within 1\.1\d*× of Beckmann, inside the tolerance 1\.3: two answers would be right$/,
+      /^params: at a half width of 5° Blinn–Phong is within 1\.1\d*× of Beckmann, inside the tolerance 1\.3: two answers would be right$/,
     );
     const schlick = JSON.parse(readFileSync(join(DIR, 'schlick-worst.json'), 'utf8'));
     expect(await errorsOf({ ...schlick, locked: ['materials'] })).toEqual([

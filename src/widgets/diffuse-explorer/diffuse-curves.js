@@ -20,32 +20,32 @@ export const MODELS = {
   lambert: {
     name: 'Lambert',
     short: 'Lambert',
-    define: null,
+    define: 'DIFFUSE_LAMBERT',
     f: (nl, nv, cp, p) => (nl > 0 && nv > 0 ? diffuseLambert(p.cdiff) : 0),
   },
   fresnelWeighted: {
     name: 'Fresnel-weighted Lambert',
     short: 'Fresnel-weighted',
-    define: 'DIFFUSE_MODEL_FRESNEL_WEIGHTED',
+    define: 'DIFFUSE_FRESNEL_WEIGHTED',
     f: (nl, nv, cp, p) => diffuseFresnelWeighted(nl, nv, p.f0, p.cdiff),
   },
   ashikhminShirley: {
     name: 'Ashikhmin–Shirley',
     short: 'Ashikhmin–Shirley',
-    define: 'DIFFUSE_MODEL_ASHIKHMIN_SHIRLEY',
+    define: 'DIFFUSE_ASHIKHMIN_SHIRLEY',
     f: (nl, nv, cp, p) => diffuseAshikhminShirley(nl, nv, p.f0, p.cdiff),
   },
   orenNayar: {
     name: 'Oren–Nayar (full)',
     short: 'Oren–Nayar',
-    define: 'DIFFUSE_MODEL_OREN_NAYAR',
+    define: 'DIFFUSE_OREN_NAYAR',
     azimuthal: true,
     f: (nl, nv, cp, p) => diffuseOrenNayar(nl, nv, cp, p.sigma, p.cdiff),
   },
   orenNayarQualitative: {
     name: 'Oren–Nayar (qualitative)',
     short: 'O–N qualitative',
-    define: 'DIFFUSE_MODEL_OREN_NAYAR_QUALITATIVE',
+    define: 'DIFFUSE_OREN_NAYAR_QUALITATIVE',
     azimuthal: true,
     f: (nl, nv, cp, p) => diffuseOrenNayarQualitative(nl, nv, cp, p.sigma, p.cdiff),
   },
@@ -55,7 +55,7 @@ const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 
 /**
  * cos of the azimuth between l and v about the normal n: the angle between their projections on the tangent
- * plane. 1 where either lies along n (no model depends on it there), as in shaders/diffuse-sphere.glsl.
+ * plane. 1 where either lies along n (no model depends on it there), as in shaders/diffuse.glsl.
  */
 export function cosPhiDiff(n, l, v) {
   const lt = l.map((x, i) => x - dot(n, l) * n[i]);

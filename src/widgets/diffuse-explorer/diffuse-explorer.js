@@ -177,7 +177,7 @@ export function createDiffuseExplorer(container, initialState = {}, { onStateCha
     spheres.setCells(
       s.models.map((k) => ({
         label: MODELS[k].short,
-        defines: { DIFFUSE_ONLY: true, ...(MODELS[k].define ? { [MODELS[k].define]: true } : {}) },
+        defines: { SPECULAR_OFF: true, [MODELS[k].define]: true },
         uniforms: { uLightDir: l, uExposure: s.exposure, uDiffuse: s.cdiff, uF0: s.f0, uSigma: p.sigma },
         probe: (a, n) => {
           const f = MODELS[k].f(a.nl, a.nv, cosPhiDiff(n, l, [0, 0, 1]), p);

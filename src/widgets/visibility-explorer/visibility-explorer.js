@@ -14,9 +14,9 @@ export const TERMS = {
   kelemen: { name: 'Kelemen 1/(l·h)²', define: 'VIS_KELEMEN' },
   smithGGXSeparable: { name: 'Smith GGX, separable', define: 'VIS_SMITH_GGX_SEPARABLE' },
   smithGGXCorrelated: { name: 'Smith GGX, height-correlated', define: 'VIS_SMITH_GGX_CORRELATED' },
-  smithGGXCorrelatedFast: { name: 'Hammon 2017 approx.', define: 'VIS_SMITH_GGX_FAST' },
+  smithGGXCorrelatedFast: { name: 'Hammon 2017 approx.', define: 'VIS_SMITH_GGX_CORRELATED_FAST' },
   schlickGGX: { name: 'Schlick-GGX (k = α/2)', define: 'VIS_SCHLICK_GGX' },
-  smithBeckmannSeparable: { name: 'Smith Beckmann, separable', define: 'VIS_SMITH_BECKMANN' },
+  smithBeckmannSeparable: { name: 'Smith Beckmann, separable', define: 'VIS_SMITH_BECKMANN_SEPARABLE' },
 };
 const REFERENCE = 'smithGGXCorrelated';
 
