@@ -242,6 +242,7 @@ async function openExercise(exercise, { focus = false } = {}) {
   }
   const mine = current;
   const widget = await mountWidget(slot, exercise.widget, {
+    widgets: WIDGETS,
     prefix: 'exercise',
     syncUrl: false,
     state: exercise.state,

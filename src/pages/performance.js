@@ -5,6 +5,7 @@ import report from '../../bench/results/latest.json';
 import { iblStaleNote } from './ibl-note.js';
 import { createPlot } from '../core/ui/plot.js';
 import { SERIES_COLORS } from '../core/ui/palettes.js';
+import { publish } from '../core/framework/debug-hooks.js';
 
 const ERROR_FLOOR = 1e-7; // the reference has error 0, which a log axis cannot show: drawn on the floor
 const root = document.getElementById('families');
@@ -179,4 +180,4 @@ extra.innerHTML =
     .join('') +
   '</tbody></table>';
 if (report.ibl) renderIbl(report.ibl);
-(globalThis.__shadingLab ??= {}).performance = report;
+publish('performance', report);

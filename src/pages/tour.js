@@ -4,6 +4,7 @@
 // state; a different one replaces it, and the old one is disposed (its WebGL context with it).
 import '../styles.css';
 import { mountWidget } from '../core/framework/widget-host.js';
+import { publish } from '../core/framework/debug-hooks.js';
 import { defaultState, showValue } from '../core/framework/state.js';
 import { createNoticeArea } from '../core/framework/notice.js';
 import { WIDGETS, isWidgetName } from '../widgets/registry.js';
@@ -16,7 +17,6 @@ const $ = (selector) => root.querySelector(selector);
 const stage = $('.tour-stage');
 const notices = createNoticeArea($('.tour-messages'));
 const [prevButton, nextButton, fullscreenButton] = ['.tour-prev', '.tour-next', '.tour-fullscreen'].map($);
-const registry = (globalThis.__shadingLab ??= { frames: 0 });
 
 renderSections();
 
@@ -27,7 +27,7 @@ let queue = Promise.resolve(); // steps are set up one after another; only the l
 function show(i) {
   index = i;
   renderText(steps[i], i);
-  registry.tour = { index: i, id: steps[i].id, ready: false };
+  publish('tour', { index: i, id: steps[i].id, ready: false });
   queue = queue
     .then(() => (i === index ? setUp(steps[i], i) : null))
     .catch((err) => notices.show(`This step could not be set up: ${err.message}`));
@@ -44,11 +44,16 @@ async function setUp(step, i) {
     stage.replaceChildren();
     mounted = {
       name: step.widget,
-      instance: await mountWidget(stage, step.widget, { prefix: 'tour', syncUrl: false, initialState: state }),
+      instance: await mountWidget(stage, step.widget, {
+        widgets: WIDGETS,
+        prefix: 'tour',
+        syncUrl: false,
+        initialState: state,
+      }),
     };
   }
   if (i === index)
-    registry.tour = { index: i, id: step.id, widget: step.widget, instance: mounted.instance, ready: true };
+    publish('tour', { index: i, id: step.id, widget: step.widget, instance: mounted.instance, ready: true });
 }
 
 /**

@@ -60,6 +60,7 @@ for (const [i, [name, caption, state]] of TILES.entries()) {
   link(
     (
       await mountWidget(slot, name, {
+        widgets: WIDGETS,
         prefix: `tile${i + 1}`,
         syncUrl: false,
         initialState: state,

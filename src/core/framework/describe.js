@@ -1,12 +1,17 @@
 // Words for what a widget draws, for people who cannot see it. Every canvas carries role="img" and an
 // aria-label that is rewritten whenever the picture changes; each widget also has one visually hidden
 // live region that reads out a short summary after the state settles (not on every step of a drag).
+import { offerSave } from './save-view.js';
 
-/** Marks `canvas` as an image and sets its text description. */
-export function describeCanvas(canvas, text) {
+/**
+ * Marks `canvas` as an image, sets its text description and offers to save it as PNG (save-view.js), unless
+ * `save` is false: a view with a PNG export of its own (a plot), or a control drawn on a canvas (a light pad).
+ */
+export function describeCanvas(canvas, text, { save = true } = {}) {
   if (!canvas) return;
   canvas.setAttribute('role', 'img');
   canvas.setAttribute('aria-label', text);
+  if (save) offerSave(canvas, text);
 }
 
 const SETTLE_MS = 500; // a slider drag announces once, when it stops

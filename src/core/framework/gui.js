@@ -10,7 +10,17 @@ const lock = (ctrl) => {
 
 const labelOf = (key, f) => (f.unit ? `${f.label ?? key} (${f.unit})` : (f.label ?? key));
 
-/** `locked`: keys shown but not editable (an exercise fixes them); their controls are disabled. */
+/**
+ * `locked`: keys shown but not editable (an exercise fixes them); their controls are disabled.
+ * @param {HTMLElement} container
+ * @param {object} spec
+ * @param {import('./types.js').Schema} spec.schema
+ * @param {import('./types.js').State} spec.state
+ * @param {(partial: Partial<import('./types.js').State>) => void} spec.onChange
+ * @param {string} [spec.title]
+ * @param {string[]} [spec.keys]
+ * @param {string[]} [spec.locked]
+ */
 export function createStateGui(
   container,
   { schema, state, onChange, title = 'Controls', keys = Object.keys(schema), locked = [] },

@@ -10,6 +10,21 @@ export function registerRedraw(canvas, redraw) {
   redraws.set(canvas, redraw);
 }
 
+const pageBackground = () => getComputedStyle(document.body).backgroundColor || '#fff';
+
+/** One canvas as a 2-D canvas of its own pixel size, on the page's background, its frame redrawn first. */
+export function stillOf(canvas) {
+  const out = document.createElement('canvas');
+  out.width = canvas.width;
+  out.height = canvas.height;
+  const ctx = out.getContext('2d');
+  ctx.fillStyle = pageBackground();
+  ctx.fillRect(0, 0, out.width, out.height);
+  redraws.get(canvas)?.();
+  ctx.drawImage(canvas, 0, 0);
+  return out;
+}
+
 /** The canvases under `root` composited into one 2-D canvas of their bounding box (CSS pixels × scale), or null. */
 export function compositeCanvases(root, scale = Math.min(globalThis.devicePixelRatio || 1, 2)) {
   const canvases = [...root.querySelectorAll('canvas')].filter((c) => c.width && c.height && c.getClientRects().length);
@@ -21,7 +36,7 @@ export function compositeCanvases(root, scale = Math.min(globalThis.devicePixelR
   out.width = Math.round((Math.max(...rects.map((r) => r.right)) - left) * scale);
   out.height = Math.round((Math.max(...rects.map((r) => r.bottom)) - top) * scale);
   const ctx = out.getContext('2d');
-  ctx.fillStyle = getComputedStyle(document.body).backgroundColor || '#fff';
+  ctx.fillStyle = pageBackground();
   ctx.fillRect(0, 0, out.width, out.height);
   canvases.forEach((canvas, i) => {
     redraws.get(canvas)?.();

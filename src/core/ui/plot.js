@@ -155,7 +155,7 @@ export function createPlot(container, spec, { onCursor } = {}) {
     };
     u = new uPlot(opts, current.data, holder);
     u.ctx.canvas.tabIndex = 0; // the arrow keys move the cursor, as the pointer does
-    describeCanvas(u.ctx.canvas, describePlot(current));
+    describeCanvas(u.ctx.canvas, describePlot(current), { save: false }); // Save PNG is in its toolbar
   };
   build();
 
@@ -213,7 +213,7 @@ export function createPlot(container, spec, { onCursor } = {}) {
         caption.textContent = next.title;
         u.setData(next.data);
         u.redraw(false, true);
-        describeCanvas(u.ctx.canvas, describePlot(next));
+        describeCanvas(u.ctx.canvas, describePlot(next), { save: false });
       } else build();
     },
     get uplot() {

@@ -110,11 +110,12 @@ function multipleWords(s, A, ms) {
   );
 }
 
-export function createBrdfLobe(container, initialState = {}, { onStateChange } = {}) {
+export function createBrdfLobe(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'brdf-lobe',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });

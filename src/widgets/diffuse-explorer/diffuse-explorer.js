@@ -77,11 +77,12 @@ const degValues = (u, ticks) => ticks.map((t) => `${t}°`);
 /** Where the flatness table reads the profile: 90% of the way to the rim, on the light's side. */
 const RIM = 0.9;
 
-export function createDiffuseExplorer(container, initialState = {}, { onStateChange } = {}) {
+export function createDiffuseExplorer(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'diffuse-explorer',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });

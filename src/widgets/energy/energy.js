@@ -81,8 +81,15 @@ const TERMS_USED = [
   'specularAlbedoTurquin',
 ];
 
-export function createEnergy(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'energy', schema, initialState, about: ABOUT, terms: TERMS_USED });
+export function createEnergy(container, initialState = {}, { onStateChange, locked } = {}) {
+  const shell = createWidgetShell(container, {
+    name: 'energy',
+    schema,
+    initialState,
+    locked,
+    about: ABOUT,
+    terms: TERMS_USED,
+  });
   const plots = document.createElement('div');
   shell.view.append(plots);
   const spheres = createSphereGrid(shell.view, { label: 'Spheres in a white furnace', background: '#ffffff' });

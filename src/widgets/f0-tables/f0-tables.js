@@ -105,11 +105,12 @@ function buildTable(caption, rows, state, { metal, onPick, onSelect }) {
 /** options.onPick(materialKey, targetWidget) -> true when the page handled it (no navigation). */
 const TERMS_USED = ['linearToSrgb', 'srgbToLinear'];
 
-export function createF0Tables(container, initialState = {}, { onStateChange, onPick } = {}) {
+export function createF0Tables(container, initialState = {}, { onStateChange, onPick, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'f0-tables',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });

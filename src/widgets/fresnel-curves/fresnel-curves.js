@@ -155,11 +155,12 @@ function renderReadout(el, { angles, curves }, index) {
 
 const TERMS_USED = ['fresnelDielectric', 'fresnelConductor', 'fresnelSchlick']; // those with a GLSL twin
 
-export function createFresnelCurves(container, initialState = {}, { onStateChange } = {}) {
+export function createFresnelCurves(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'fresnel-curves',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });

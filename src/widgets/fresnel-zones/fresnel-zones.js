@@ -103,11 +103,12 @@ const TERMS_USED = [
   'linearToSrgb',
 ];
 
-export function createFresnelZones(container, initialState = {}, { onStateChange } = {}) {
+export function createFresnelZones(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'fresnel-zones',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });

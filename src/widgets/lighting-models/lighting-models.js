@@ -129,11 +129,12 @@ function description(st, results, samples) {
   );
 }
 
-export function createLightingModels(container, initialState = {}, { onStateChange } = {}) {
+export function createLightingModels(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'lighting-models',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });

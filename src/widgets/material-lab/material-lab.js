@@ -14,11 +14,12 @@ import { ABOUT, NOTICES, TERMS_USED, captions, description, readoutHtml } from '
 
 export { schema };
 
-export function createMaterialLab(container, initialState = {}, { onStateChange } = {}) {
+export function createMaterialLab(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'material-lab',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });

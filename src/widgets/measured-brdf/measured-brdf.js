@@ -311,11 +311,12 @@ function showTable(ctx, next, result, { words, name }) {
   runFits(ctx);
 }
 
-export function createMeasuredBrdf(container, initialState = {}, { onStateChange } = {}) {
+export function createMeasuredBrdf(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'measured-brdf',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });

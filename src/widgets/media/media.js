@@ -91,8 +91,15 @@ function cellsFor(s) {
   return [{ sigmaA: m.sigmaA.map((x) => x * d), sigmaS: m.sigmaS.map((x) => x * d) }]; // per unit depth of the drawn cube
 }
 
-export function createMedia(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'media', schema, initialState, about: ABOUT, terms: TERMS_USED });
+export function createMedia(container, initialState = {}, { onStateChange, locked } = {}) {
+  const shell = createWidgetShell(container, {
+    name: 'media',
+    schema,
+    initialState,
+    locked,
+    about: ABOUT,
+    terms: TERMS_USED,
+  });
   const readout = document.createElement('p');
   readout.className = 'media-readout';
 

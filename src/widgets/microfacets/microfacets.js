@@ -45,11 +45,12 @@ const dirOf = (deg) => [Math.sin(deg * DEG), Math.cos(deg * DEG)];
 
 const TERMS_USED = ['smithG1Beckmann', 'smithG1GGX'];
 
-export function createMicrofacets(container, initialState = {}, { onStateChange } = {}) {
+export function createMicrofacets(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'microfacets',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });

@@ -116,11 +116,12 @@ function relativeLogSpec(data, slice, name) {
 
 const TERMS_USED = ['ndfBlinnPhong', 'ndfBeckmann', 'ndfGGX', 'ndfABC', 'ndfSGD', 'microfacetBRDF'];
 
-export function createNdfExplorer(container, initialState = {}, { onStateChange } = {}) {
+export function createNdfExplorer(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'ndf-explorer',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });

@@ -122,11 +122,12 @@ function rgbTableHtml(c) {
   ]);
 }
 
-export function createRadiance(container, initialState = {}, { onStateChange } = {}) {
+export function createRadiance(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'radiance',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });

@@ -68,11 +68,12 @@ function histogram(stats, maxDist) {
   return { xs, ys };
 }
 
-export function createSubsurfaceScale(container, initialState = {}, { onStateChange } = {}) {
+export function createSubsurfaceScale(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'subsurface-scale',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });

@@ -86,11 +86,12 @@ function coneSpec(s, profile) {
   };
 }
 
-export function createSurfaces(container, initialState = {}, { onStateChange } = {}) {
+export function createSurfaces(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'surfaces',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });

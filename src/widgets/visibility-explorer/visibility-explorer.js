@@ -100,11 +100,12 @@ const TERMS_USED = [
   'microfacetBRDF',
 ];
 
-export function createVisibilityExplorer(container, initialState = {}, { onStateChange } = {}) {
+export function createVisibilityExplorer(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'visibility-explorer',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });
