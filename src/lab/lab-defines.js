@@ -2,13 +2,6 @@
 // compiled. Pure: loads in Node, so the uniform and variant tests can list every program the lab makes.
 import { termDefines } from '../math/catalogue/index.js';
 
-const DIFFUSE_DEFINES = {
-  'fresnel-weighted': 'DIFFUSE_FRESNEL_WEIGHTED',
-  'ashikhmin-shirley': 'DIFFUSE_ASHIKHMIN_SHIRLEY',
-  'oren-nayar': 'DIFFUSE_OREN_NAYAR',
-  'oren-nayar-qualitative': 'DIFFUSE_OREN_NAYAR_QUALITATIVE',
-};
-const COMPENSATION_DEFINES = { kullaConty: 'COMPENSATION_KULLA_CONTY', turquin: 'COMPENSATION_TURQUIN' };
 const ENV_DEFINES = { mirror: 'ENV_MIRROR', importance: 'ENV_IMPORTANCE', 'split-sum': 'ENV_SPLIT_SUM' };
 
 /**
@@ -42,12 +35,9 @@ function measuredDefines({ lights, methods }, reference) {
 function modelDefines(scene, reference) {
   const d = {};
   const flag = (name) => name && (d[name] = 1);
-  flag(DIFFUSE_DEFINES[scene.terms.diffuse]);
-  Object.keys(termDefines({ F: scene.terms.F, D: scene.terms.D, V: scene.terms.V })).forEach(flag);
-  if (scene.terms.compensation && scene.terms.compensation !== 'none') {
-    flag(COMPENSATION_DEFINES[scene.terms.compensation]);
-    flag('ALBEDO_TABLE_GGX');
-  }
+  const { F, D, V, diffuse, compensation = 'none' } = scene.terms;
+  Object.keys(termDefines({ F, D, V, diffuse, compensation })).forEach(flag);
+  if (compensation !== 'none') flag('ALBEDO_TABLE_GGX'); // the compensations' tables
   if (scene.terms.layers === 'diffuse') flag('SPECULAR_OFF');
   if (scene.terms.layers === 'specular') flag('DIFFUSE_OFF');
   const { punctual, sphere, env, ambient } = scene.lights;

@@ -10,6 +10,7 @@ import { attachEnvironmentDrop } from './environment-drop.js';
 import { createMeasuredMaterial } from './measured-material.js';
 import { createLabFrame } from './lab-frame.js';
 import { schema } from './schema.js';
+import { createReadout } from './views.js';
 import { ABOUT, NOTICES, TERMS_USED, captions, description, readoutHtml } from './words.js';
 
 export { schema };
@@ -23,8 +24,7 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
     about: ABOUT,
     terms: TERMS_USED,
   });
-  const readout = Object.assign(document.createElement('div'), { className: 'lab-readout' });
-  readout.setAttribute('aria-live', 'polite');
+  const readout = createReadout();
   const notes = createNotesList(); // under the images: how each light's approximation treats the chosen terms
   const file = { key: '', pixels: null }; // a new key for every file taken: a second file of the same name is used too
   const measured = createMeasuredMaterial({
@@ -32,7 +32,7 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
     onError: (message) => shell.notices.show(message),
   });
   const show = (st, lights, scene, stats) => {
-    readout.innerHTML = readoutHtml(stats, lights, view.resolution);
+    readout.show(readoutHtml(stats, lights, view.resolution));
     const table = st.brdfSource === 'measured' ? measured.current : null;
     shell.describe(description(st, lights, stats, table?.name), view.canvas);
     notes.show(scene);
@@ -45,7 +45,7 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
   };
   const view = createLabView(shell.view, { label: 'Material lab', resolution: 192, frame: lab.frame, onReset });
   view.setAspect(3);
-  shell.view.append(readout, notes.element);
+  shell.view.append(readout.element, notes.element);
 
   const onChanged = (changed) => {
     if (changed.includes('brdfSource') && shell.state.brdfSource === 'measured' && !measured.current) {

@@ -4,6 +4,7 @@
 import { ENVIRONMENTS } from '../../lab/environments.js';
 import { MATERIAL_FIELDS } from '../../lab/lab-scene.js';
 import { LAB_TERMS } from '../../lab/lab-approximations.js';
+import { TERM_ALIASES } from '../../math/catalogue/index.js';
 import { SIGMA_HINT } from '../../core/ui/sigma-range.js';
 
 export const ENV_METHODS = {
@@ -35,7 +36,7 @@ export const schema = {
   compensation: {
     group: 'BRDF terms',
     type: 'enum',
-    options: { none: 'None', kullaConty: 'Kulla–Conty 2017', turquin: 'Turquin 2019' },
+    options: LAB_TERMS.compensation,
     default: 'none',
     label: 'Multiple scattering',
   },
@@ -43,6 +44,7 @@ export const schema = {
     group: 'BRDF terms',
     type: 'enum',
     options: LAB_TERMS.diffuse,
+    aliases: TERM_ALIASES.diffuse, // the spellings of old links: 'oren-nayar', …
     default: 'lambert',
     label: 'Diffuse term',
   },
