@@ -33,7 +33,7 @@ export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
   const programs = createProgramCache((defines) => fullscreenMaterial('lab-shade.frag.glsl', { uniforms, defines }));
   const pass = createFullscreenPass();
   const pmrem = createPmremOverlay();
-  const reference = createReference(renderer, { res, uniforms, pass });
+  const reference = createReference(renderer, { res, uniforms, programs, pass });
   const errors = createErrorSum(renderer, { res, pass });
   const sync = createSync(renderer);
 
@@ -64,7 +64,7 @@ export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
     /** Adds one batch of REFERENCE_BATCH samples per pixel and light to the reference's running mean. */
     accumulate(scene) {
       setSceneUniforms(uniforms, scene, { reference: true, dfg });
-      reference.add(programs.get(sceneDefines(scene, true)));
+      reference.add(sceneDefines(scene, true));
     },
     /** RMS error of the approximation against the reference over the sphere, absolute and relative. */
     error: (slot = 0) => errors.measure(approxTargets[slot].texture, reference.texture),
@@ -82,7 +82,7 @@ export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
 }
 
 /** The reference: batches of Monte Carlo samples averaged into one of two float targets (ping-pong). */
-function createReference(renderer, { res, uniforms, pass }) {
+function createReference(renderer, { res, uniforms, programs, pass }) {
   const ping = [floatTarget(res, res), floatTarget(res, res)];
   let batches = 0;
   let current = 0;
@@ -97,13 +97,13 @@ function createReference(renderer, { res, uniforms, pass }) {
       return batches;
     },
     reset: () => (batches = 0),
-    /** One batch by `program` (its uniforms set for the scene), averaged in. */
-    add(program) {
+    /** One batch by the program of `defines` (its uniforms set for the scene), averaged in. */
+    add(defines) {
       uniforms.uSamples.value = REFERENCE_BATCH;
       uniforms.uJitter.value.set(Math.random(), Math.random());
       uniforms.uPrevious.value = ping[current].texture;
       uniforms.uWeight.value = 1 / (batches + 1);
-      pass.render(renderer, program, ping[1 - current]);
+      pass.render(renderer, programs.get(defines), ping[1 - current]);
       current = 1 - current;
       batches++;
     },
