@@ -9,6 +9,7 @@ import { createNotesList } from '../../lab/lab-approximations.js';
 import { attachEnvironmentDrop } from './environment-drop.js';
 import { createMeasuredMaterial } from './measured-material.js';
 import { createLabFrame } from './lab-frame.js';
+import { missingFile } from './model.js';
 import { schema } from './schema.js';
 import { createReadout } from './views.js';
 import { ABOUT, NOTICES, TERMS_USED, captions, description, readoutHtml } from './words.js';
@@ -48,17 +49,12 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
   shell.view.append(readout.element, notes.element);
 
   const onChanged = (changed) => {
-    if (changed.includes('brdfSource') && shell.state.brdfSource === 'measured' && !measured.current) {
-      shell.notices.show(NOTICES.noMeasured);
-      update({ brdfSource: 'model' });
-      return;
-    }
-    if (changed.includes('environment') && shell.state.environment === 'file' && !file.pixels) {
-      shell.notices.show(NOTICES.noFile);
-      update({ environment: 'studio' });
-      return;
-    }
-    view.setDisplay({ exposure: shell.state.exposure, errorScale: shell.state.errorScale });
+    const has = { measured: Boolean(measured.current), file: Boolean(file.pixels) };
+    const missing = missingFile(changed, shell.state, has);
+    if (missing) {
+      shell.notices.show(NOTICES[missing.notice]);
+      update(missing.instead);
+    } else view.setDisplay({ exposure: shell.state.exposure, errorScale: shell.state.errorScale });
   };
   const update = shell.connect({ title: 'Material lab', onChanged, onStateChange });
   onChanged(['environment', 'brdfSource']);

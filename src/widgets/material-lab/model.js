@@ -45,3 +45,17 @@ export function sceneOf(state, table, envKey) {
     },
   };
 }
+
+/**
+ * A change of `state` (the keys `changed`) that asks for a file not dropped yet (`has`: { measured, file }): the
+ * notice to show (a key of words.js's NOTICES) and the state to keep `instead`; or null.
+ */
+export function missingFile(changed, state, has) {
+  if (changed.includes('brdfSource') && state.brdfSource === 'measured' && !has.measured) {
+    return { notice: 'noMeasured', instead: { brdfSource: 'model' } };
+  }
+  if (changed.includes('environment') && state.environment === 'file' && !has.file) {
+    return { notice: 'noFile', instead: { environment: 'studio' } };
+  }
+  return null;
+}
