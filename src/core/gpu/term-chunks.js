@@ -1,3 +1,4 @@
+// @ts-check
 // The GLSL dispatch of each term family, generated from the catalogue (src/math/catalogue): one chunk per family
 // ('ndf-term.glsl', 'visibility-term.glsl', 'fresnel-term.glsl') that defines the family's dispatch function
 // (ndfTerm, visibilityTerm, fresnelTerm) as an explicit chain over the terms' defines, each branch including the

@@ -1,3 +1,4 @@
+// @ts-check
 // The multiple-scattering compensations (multiple-scattering.js says what each does and cites it). They are not
 // factors of f at one (l, v) as the other families' terms are: Kulla–Conty adds a lobe with its own Fresnel
 // factor, Turquin scales the whole single-scattering lobe by a factor of its albedo E(n·v). So js and evaluate

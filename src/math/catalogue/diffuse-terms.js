@@ -1,3 +1,4 @@
+// @ts-check
 // The diffuse terms, in 1/sr. evaluate(nl, nv, cosPhi, p): cosPhi is the cosine of the azimuth between l and v,
 // p = { cdiff, f0, sigma }; every term is 0 at and below the horizon. GLSL: diffuseTerm of diffuse-term.glsl.
 import {
@@ -11,6 +12,7 @@ import {
 const cdiff = { min: 0, max: 1, unit: '', label: 'Diffuse colour c_diff', clamped: true };
 const f0 = { min: 0, max: 1, unit: '', label: 'Reflectance at normal incidence F0', delicate: [0.04, 0.5] };
 const sigma = { min: 0, max: Math.PI / 2, unit: 'rad', label: 'Roughness σ', delicate: [0.1, 0.3, 0.6, 1] };
+/** @param {number} nl @param {number} nv */
 const above = (nl, nv) => nl > 0 && nv > 0;
 
 /** @type {import('./types.js').TermFamily} */

@@ -1,3 +1,4 @@
+// @ts-check
 // The Fresnel terms F(l·h) of the microfacet BRDF. Parameters: f0 (Schlick), eta (and k) for the exact forms.
 import { fresnelConductor, fresnelDielectric, fresnelSchlick } from '../fresnel.js';
 

@@ -1,8 +1,10 @@
+// @ts-check
 // Stress inputs of a term, from its entry: each parameter's range (its ends, beyond both where the functions
 // clamp) and between them its delicate values, or without those the decades or quarters of the range; the angles
 // from the caller, who knows which values stress its arithmetic (float32 on the GPU, float64 in `npm run stress`).
 
 /** lo, 10 lo, 100 lo, … below hi, each rounded to 12 digits (1e-4 · 10 is not 1e-3 in binary). */
+/** @param {number} lo @param {number} hi */
 const decades = (lo, hi) => {
   const out = [];
   for (let i = 0; lo * 10 ** i < hi; i++) out.push(Number((lo * 10 ** i).toPrecision(12)));
@@ -34,7 +36,7 @@ export function paramStress({ min, max, clamped = false, delicate = [] }) {
  * @returns {number[][]}
  */
 export function termInputs(entry, angleValues) {
-  const paired = (i) => entry.args[i] === 'cos' && entry.args[i + 1] === 'sin2';
+  const paired = (/** @type {number} */ i) => entry.args[i] === 'cos' && entry.args[i + 1] === 'sin2';
   const kinds = entry.args.filter((arg, i) => arg !== 'sin2' || !paired(i - 1));
   const dims = kinds.length;
   const axes = kinds.map((arg) => {

@@ -1,3 +1,4 @@
+// @ts-check
 // One catalogue of the BRDF's terms, by family: each term's key (its one spelling in state and URLs), its one
 // label, its source, its float64 function, its GLSL function and the #define that selects it. Menus, URL enums,
 // shader variants, graders, parity rows, stress domains and bench families derive from it; adding a term is its
@@ -50,7 +51,8 @@ export const TERM_ALIASES = {
 export function termEntry(family, key) {
   const terms = CATALOGUE[family]?.terms;
   if (!terms) throw new Error(`catalogue: no family '${family}'`);
-  const entry = terms[key] ?? terms[TERM_ALIASES[family]?.[key]];
+  const alias = TERM_ALIASES[family]?.[key];
+  const entry = terms[key] ?? (alias ? terms[alias] : undefined);
   if (!entry) throw new Error(`catalogue: no ${family} term '${key}'`);
   return entry;
 }

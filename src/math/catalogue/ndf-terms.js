@@ -1,7 +1,9 @@
+// @ts-check
 // The normal distributions D(n·h) of the microfacet BRDF. evaluate(c, p, s2): s2 = sin²θh when known from the
 // half vector itself (h.x² + h.y², precise near n), else taken from c. The ranges are the ones ndf.js clamps to.
 import { ndfABC, ndfBeckmannFromSin2, ndfBlinnPhongFromSin2, ndfGGXFromSin2, ndfSGD } from '../ndf.js';
 
+/** @param {number} c */
 const sin2 = (c) => (1 - c) * (1 + c);
 const alpha = {
   min: 1e-4,

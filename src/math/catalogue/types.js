@@ -1,3 +1,4 @@
+// @ts-check
 // The shapes of the catalogue of terms (checked by TypeScript's checkJs). Types only: nothing runs here.
 
 /**
@@ -12,6 +13,8 @@
  *   stress tests (without them, the range's decades or quarters)
  */
 
+/** @typedef {(...args: any[]) => number} TermFunction */
+
 /**
  * One term of a family: the one spelling (state, URL), the one label, its source, its float64 function and its
  * GLSL twin, and the #define that selects it in the family's GLSL dispatch.
@@ -20,9 +23,9 @@
  * @property {string} label the one label the whole app uses
  * @property {string} short for legends
  * @property {string} cite 'Author(s) Year'
- * @property {Function | null} js the float64 function of src/math, with its own signature (null: the term is the
- *   absence of a factor, e.g. F = 1, or, for a compensation, not a pointwise function)
- * @property {Function | null} evaluate the family's calling convention (see TermFamily); null for compensations
+ * @property {TermFunction | null} js the float64 function of src/math, with its own signature (null: the term is
+ *   the absence of a factor, e.g. F = 1, or, for a compensation, not a pointwise function)
+ * @property {TermFunction | null} evaluate the family's calling convention (see TermFamily); null for compensations
  * @property {string | null} glsl the GLSL function's name (the same as js's), null when there is none
  * @property {string | null} chunk the shaders/ file that defines it
  * @property {string | null} define the #define that picks it in the family's dispatch, `<PREFIX>_<KEY>`; null

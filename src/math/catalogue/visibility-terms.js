@@ -1,3 +1,4 @@
+// @ts-check
 // The visibility terms V = G / ((n·l)(n·v)) of the microfacet BRDF. evaluate(a, p): a = { nl, nv, nh, lh }.
 import {
   visibilityCookTorrance,
@@ -22,6 +23,9 @@ const alpha = {
 /**
  * A term of roughness alpha whose functions take (nl, nv, alpha) alike (names spelled out: a bundle may
  * rename functions).
+ * @param {{ key: string, label: string, short: string, cite: string, define: string }} names
+ * @param {(nl: number, nv: number, alpha: number) => number} js
+ * @param {string} glsl
  * @returns {import('./types.js').TermEntry}
  */
 const smithLike = ({ key, label, short, cite, define }, js, glsl) => ({
