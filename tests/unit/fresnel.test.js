@@ -152,10 +152,10 @@ describe('Schlick', () => {
       expect(at, name).toBeGreaterThan(70);
       expect(at, name).toBeLessThan(88);
     }
-    // the talk's non-metals (as docs/math-api.md states): from 83.8° (water) to 85.4° (Glass (High) / Ruby)
+    // the talk's non-metals (as README states): from 83.8° (water) to 85.4° (Glass (High) / Ruby)
     const nonMetal = Object.fromEntries(peaks.filter((p) => !p.metal).map((p) => [p.name, p.at]));
-    expect(Math.abs(nonMetal.Water - 83.78)).toBeLessThan(0.06); // docs/math-api.md: 83.8°
-    expect(Math.abs(nonMetal['Glass (High) / Ruby'] - 85.44)).toBeLessThan(0.06); // docs/math-api.md: 85.4°
+    expect(Math.abs(nonMetal.Water - 83.78)).toBeLessThan(0.06); // README: 83.8°
+    expect(Math.abs(nonMetal['Glass (High) / Ruby'] - 85.44)).toBeLessThan(0.06); // README: 85.4°
     expect(Math.min(...Object.values(nonMetal))).toBe(nonMetal.Water);
     expect(Math.max(...Object.values(nonMetal))).toBe(nonMetal['Glass (High) / Ruby']);
     // Metals where Schlick is noticeably off (> 0.02) peak around 81.8°.
