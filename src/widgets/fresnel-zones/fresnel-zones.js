@@ -41,9 +41,8 @@ export function create(container, initialState = {}, { onStateChange, locked } =
   const viewport = createViewport(column, { draw, onResize, label: 'Fresnel zones view' });
   if (viewport) {
     stats = createZoneStats(viewport.renderer, view);
-    const redraw = () => draw(viewport.renderer);
     const getZoneShares = () => stats.measured.zoneShares;
-    tools = attachViewTools(viewport, column, { getState, update: (p) => update(p), view, redraw, getZoneShares });
+    tools = attachViewTools(viewport, column, { getState, update: (p) => update(p), view, getZoneShares });
   }
   column.append(legend.element);
   if (!viewport) showMeasured();
