@@ -1,5 +1,5 @@
 // node bench/multiple-scattering.js: the multiple-scattering bench family's errors against the random walk,
-// broken down by F0 (max |error| and RMS of the albedo for each compensation), for the notes and the README.
+// broken down by F0 (max |error| and RMS of the albedo for each compensation), for the notes and docs/performance.md.
 import { MULTIPLE_SCATTERING_FAMILY as family } from './multiple-scattering-family.js';
 
 const f0Label = (f0, channel) => (channel < 3 ? String(f0) : `gold ${'RGB'[channel - 3]} (${f0})`);

@@ -1,5 +1,6 @@
-// Said under the image-based lighting figures (performance page and README) while they predate the split sum's
-// current DFG tables: the float64 quadrature, one table per (D, V) pair (issue 11), in place of a 32² Monte Carlo one.
+// Said under the image-based lighting figures (performance page and docs/performance.md) while they predate the
+// split sum's current DFG tables: the float64 quadrature, one table per (D, V) pair (issue 11), in place of a 32²
+// Monte Carlo one.
 export const DFG_QUADRATURE_SINCE = '2026-11-30';
 
 /** The sentence for IBL rows measured on `date` (ISO), or '' once they were measured with the current tables. */

@@ -1,5 +1,5 @@
 // The postMessage protocol of embed.html: a parent page reads and sets the state of the widget in its
-// iframe, and hears when the widget is ready and when the user changes it (README, "Embedding").
+// iframe, and hears when the widget is ready and when the user changes it (docs/embedding.md).
 //
 //   parent → widget   { type: 'shading-lab:get', id? }
 //                     { type: 'shading-lab:set', state: { key: value, ... }, id? }

@@ -7,7 +7,7 @@ import { rgbToHex } from '../../core/ui/palettes.js';
 import { albedoTableOnce } from '../../core/gpu/albedo-table-texture.js';
 import { linearToSrgb } from '../../math/color.js';
 import { materialByKey } from '../../math/materials.js';
-import { termLabel } from '../../math/catalogue/index.js';
+import { termEntry, termLabel } from '../../math/catalogue/index.js';
 import { COMPENSATIONS, WALK_DEGREES, WALK_PATHS, albedoCurves, saturation } from './compensation.js';
 
 const CHANNELS = [
@@ -49,7 +49,7 @@ function plotSpec({ metal, alpha, curves, walk }) {
   const data = [DEGREES];
   for (const key of COMPENSATIONS) {
     CHANNELS.forEach(([ch, stroke], c) => {
-      series.push({ label: `${ch}, ${termLabel('compensation', key)}`, stroke, dash: DASHES[key] });
+      series.push({ label: `${ch}, ${termEntry('compensation', key).short}`, stroke, dash: DASHES[key] });
       data.push(curves[key].map((rgb) => rgb[c]));
     });
   }
