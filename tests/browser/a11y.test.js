@@ -48,7 +48,8 @@ const readWords = (page) =>
   }));
 
 const openWidget = async (query) => {
-  const page = await open(browser, `embed.html?w=${query}`, { width: 1280, height: 2600 }); // tall: every view in sight draws
+  // tall: every view in sight draws
+  const page = await open(browser, `embed.html?w=${query}`, { width: 1280, height: 2600 });
   await widget(page, query.split('&')[0]);
   return page;
 };
@@ -154,7 +155,8 @@ describe('interactive canvases answer the keyboard', () => {
       );
     let probe = await rows();
     expect(probe.sphere).toBe('Blinn-Phong');
-    expect(Number.parseFloat(probe['n·v'])).toBeCloseTo(Math.sqrt(1 - 0.3 ** 2), 3); // at x = 0.3 on the unit sphere, seen head-on
+    // at x = 0.3 on the unit sphere, seen head-on
+    expect(Number.parseFloat(probe['n·v'])).toBeCloseTo(Math.sqrt(1 - 0.3 ** 2), 3);
     expect(await page.$eval('.probe-marker', (m) => m.hidden)).toBe(false);
     for (let i = 0; i < 10; i++) await page.keyboard.press('ArrowRight');
     probe = await rows();

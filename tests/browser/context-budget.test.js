@@ -123,7 +123,8 @@ async function expectDrawn(page, handle, what) {
   for (let i = 0; i < 120 && !(await fresh()); i++) await sleep(250);
   const why = await handle.evaluate(
     (c) =>
-      `lost ${c.__gl.isContextLost()}, draws ${c.__draws}, message “${c.parentElement.querySelector('.blocking-message')?.textContent ?? ''}”`,
+      `lost ${c.__gl.isContextLost()}, draws ${c.__draws}, ` +
+      `message “${c.parentElement.querySelector('.blocking-message')?.textContent ?? ''}”`,
   );
   expect(await fresh(), `${what}: live and drawn (${why})`).toBe(true);
   const colors = await distinctColors(page, await handle.screenshot({ encoding: 'base64' }));
@@ -139,50 +140,54 @@ describe('twenty 3-D widgets on one page (wall.html)', () => {
     browser = await launchBrowser();
   });
 
-  it('draws every widget when it is in view, never holds more contexts than the budget, and loses none unplanned', async () => {
-    const page = await openCounted('wall.html');
-    await page.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 20, {
-      timeout: 120_000,
-      polling: 500,
-    });
-    const limit = await page.evaluate(() => window.__shadingLabGl.limit);
-    expect(limit).toBeLessThan(16);
-    expect(await page.$$eval('.wall-tile .viewport > canvas', (c) => c.length)).toBe(20);
+  it(
+    'draws every widget when it is in view, ' + 'never holds more contexts than the budget, and loses none unplanned',
+    async () => {
+      const page = await openCounted('wall.html');
+      await page.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 20, {
+        timeout: 120_000,
+        polling: 500,
+      });
+      const limit = await page.evaluate(() => window.__shadingLabGl.limit);
+      expect(limit).toBeLessThan(16);
+      expect(await page.$$eval('.wall-tile .viewport > canvas', (c) => c.length)).toBe(20);
 
-    const drawn = new Set();
-    const height = await page.evaluate(() => document.body.scrollHeight);
-    for (let y = 0; y < height; y += 450) {
-      // less than a screen minus a view: each view is once wholly in sight
-      await page.evaluate((top) => window.scrollTo(0, top), y);
-      await settle(page, 300);
-      for (const { index, handle } of await viewsInSight(page, '.wall-tile')) {
-        if (drawn.has(index)) continue;
-        await expectDrawn(page, handle, `tile ${index + 1} at scroll ${y}`);
-        drawn.add(index);
+      const drawn = new Set();
+      const height = await page.evaluate(() => document.body.scrollHeight);
+      for (let y = 0; y < height; y += 450) {
+        // less than a screen minus a view: each view is once wholly in sight
+        await page.evaluate((top) => window.scrollTo(0, top), y);
+        await settle(page, 300);
+        for (const { index, handle } of await viewsInSight(page, '.wall-tile')) {
+          if (drawn.has(index)) continue;
+          await expectDrawn(page, handle, `tile ${index + 1} at scroll ${y}`);
+          drawn.add(index);
+        }
+        expect(
+          await page.$$eval('.wall-tile .blocking-message', (m) => m.length),
+          `paused or lost views at scroll ${y}`,
+        ).toBe(0);
       }
-      expect(
-        await page.$$eval('.wall-tile .blocking-message', (m) => m.length),
-        `paused or lost views at scroll ${y}`,
-      ).toBe(0);
-    }
-    expect([...drawn].sort((a, b) => a - b)).toEqual([...Array(20).keys()]);
+      expect([...drawn].sort((a, b) => a - b)).toEqual([...Array(20).keys()]);
 
-    // back to the top: the first tiles gave their contexts up on the way down and draw again
-    await page.evaluate(() => window.scrollTo(0, 0));
-    await settle(page, 300);
-    const top = await viewsInSight(page, '.wall-tile');
-    expect(top.length).toBeGreaterThan(0);
-    for (const { index, handle } of top) await expectDrawn(page, handle, `tile ${index + 1} back at the top`);
+      // back to the top: the first tiles gave their contexts up on the way down and draw again
+      await page.evaluate(() => window.scrollTo(0, 0));
+      await settle(page, 300);
+      const top = await viewsInSight(page, '.wall-tile');
+      expect(top.length).toBeGreaterThan(0);
+      for (const { index, handle } of top) await expectDrawn(page, handle, `tile ${index + 1} back at the top`);
 
-    const gl = await page.evaluate(() => window.__gl);
-    expect(gl.lost).toBeGreaterThan(0); // the budget really was used: contexts were given up...
-    expect(gl.restored).toBeGreaterThan(0); // ...and taken back
-    expect(gl.most).toBeLessThanOrEqual(limit);
-    expect(await page.evaluate(() => window.__shadingLabGl.peak)).toBeLessThanOrEqual(limit);
-    expect(page.glWarnings).toEqual([]);
-    expect(page.errors).toEqual([]);
-    await page.close();
-  }, 240_000);
+      const gl = await page.evaluate(() => window.__gl);
+      expect(gl.lost).toBeGreaterThan(0); // the budget really was used: contexts were given up...
+      expect(gl.restored).toBeGreaterThan(0); // ...and taken back
+      expect(gl.most).toBeLessThanOrEqual(limit);
+      expect(await page.evaluate(() => window.__shadingLabGl.peak)).toBeLessThanOrEqual(limit);
+      expect(page.glWarnings).toEqual([]);
+      expect(page.errors).toEqual([]);
+      await page.close();
+    },
+    240_000,
+  );
 });
 
 describe('embeds in same-origin frames share one context budget', () => {

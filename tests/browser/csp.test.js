@@ -72,60 +72,69 @@ async function openUnderPolicy(path) {
 }
 
 describe('Content-Security-Policy', () => {
-  it('every built page carries the policy in a <meta> before its first script: scripts from the app only, no eval', async () => {
-    expect(BUILT.length).toBeGreaterThanOrEqual(17);
-    const page = await browser.newPage();
-    for (const file of BUILT) {
-      await page.goto(new URL(file, baseUrl()).href, { waitUntil: 'domcontentloaded' });
-      const { policy, beforeScripts } = await page.evaluate(() => {
-        const meta = document.querySelector('meta[http-equiv="Content-Security-Policy"]');
-        const first = document.querySelector('script');
-        return {
-          policy: meta?.content,
-          beforeScripts: Boolean(
-            meta && first && meta.compareDocumentPosition(first) & Node.DOCUMENT_POSITION_FOLLOWING,
-          ),
-        };
-      });
-      expect(policy, file).toMatch(/(^|; )script-src 'self'(;|$)/);
-      expect(policy, file).toMatch(/(^|; )worker-src 'self'(;|$)/); // explicit, should script-src ever loosen
-      expect(policy, file).toMatch(/(^|; )default-src 'self'(;|$)/);
-      expect(policy, file).toMatch(/(^|; )object-src 'none'(;|$)/);
-      expect(policy, file).not.toMatch(/unsafe-eval|script-src[^;]*unsafe-inline|\*/);
-      expect(beforeScripts, file).toBe(true);
-      // only the exercises page fetches from other hosts (?src=); the rest only from their own origin
-      expect(policy.match(/connect-src [^;]*/)[0], file).toBe(
-        file === 'exercises.html' ? "connect-src 'self' https: data:" : "connect-src 'self'",
-      );
-    }
-    await page.close();
-  });
+  it(
+    'every built page carries the policy in a <meta> before its first script: ' + 'scripts from the app only, no eval',
+    async () => {
+      expect(BUILT.length).toBeGreaterThanOrEqual(17);
+      const page = await browser.newPage();
+      for (const file of BUILT) {
+        await page.goto(new URL(file, baseUrl()).href, { waitUntil: 'domcontentloaded' });
+        const { policy, beforeScripts } = await page.evaluate(() => {
+          const meta = document.querySelector('meta[http-equiv="Content-Security-Policy"]');
+          const first = document.querySelector('script');
+          return {
+            policy: meta?.content,
+            beforeScripts: Boolean(
+              meta && first && meta.compareDocumentPosition(first) & Node.DOCUMENT_POSITION_FOLLOWING,
+            ),
+          };
+        });
+        expect(policy, file).toMatch(/(^|; )script-src 'self'(;|$)/);
+        expect(policy, file).toMatch(/(^|; )worker-src 'self'(;|$)/); // explicit, should script-src ever loosen
+        expect(policy, file).toMatch(/(^|; )default-src 'self'(;|$)/);
+        expect(policy, file).toMatch(/(^|; )object-src 'none'(;|$)/);
+        expect(policy, file).not.toMatch(/unsafe-eval|script-src[^;]*unsafe-inline|\*/);
+        expect(beforeScripts, file).toBe(true);
+        // only the exercises page fetches from other hosts (?src=); the rest only from their own origin
+        expect(policy.match(/connect-src [^;]*/)[0], file).toBe(
+          file === 'exercises.html' ? "connect-src 'self' https: data:" : "connect-src 'self'",
+        );
+      }
+      await page.close();
+    },
+  );
 
-  it('the browser enforces it: an injected inline script, an inline handler, a string timer (eval) and a javascript: link do not run', async () => {
-    const page = await openUnderPolicy('embed.html?w=fresnel-zones');
-    // (eval called here directly would pass: DevTools runs this function outside the page's policy)
-    const ran = await page.evaluate(async () => {
-      const ran = [];
-      window.__ran = (what) => ran.push(what);
-      document.body.append(Object.assign(document.createElement('script'), { textContent: 'window.__ran("script")' }));
-      const img = document.createElement('img');
-      img.setAttribute('onerror', 'window.__ran("handler")');
-      img.src = 'data:,not-an-image';
-      document.body.append(img);
-      setTimeout('window.__ran("timer")', 0);
-      const link = Object.assign(document.createElement('a'), { href: 'javascript:window.__ran("link")' });
-      document.body.append(link);
-      link.click();
-      await new Promise((r) => setTimeout(r, 400));
-      return ran;
-    });
-    expect(ran).toEqual([]);
-    const violations = (await page.evaluate(() => window.__csp ?? [])).join('\n');
-    expect(violations).toMatch(/script-src-elem: inline/); // the script, and the javascript: link
-    expect(violations).toMatch(/script-src-attr: inline/);
-    expect(violations).toMatch(/script-src: eval/);
-    await page.close();
-  });
+  it(
+    'the browser enforces it: an injected inline script, an inline handler, ' +
+      'a string timer (eval) and a javascript: link do not run',
+    async () => {
+      const page = await openUnderPolicy('embed.html?w=fresnel-zones');
+      // (eval called here directly would pass: DevTools runs this function outside the page's policy)
+      const ran = await page.evaluate(async () => {
+        const ran = [];
+        window.__ran = (what) => ran.push(what);
+        document.body.append(
+          Object.assign(document.createElement('script'), { textContent: 'window.__ran("script")' }),
+        );
+        const img = document.createElement('img');
+        img.setAttribute('onerror', 'window.__ran("handler")');
+        img.src = 'data:,not-an-image';
+        document.body.append(img);
+        setTimeout('window.__ran("timer")', 0);
+        const link = Object.assign(document.createElement('a'), { href: 'javascript:window.__ran("link")' });
+        document.body.append(link);
+        link.click();
+        await new Promise((r) => setTimeout(r, 400));
+        return ran;
+      });
+      expect(ran).toEqual([]);
+      const violations = (await page.evaluate(() => window.__csp ?? [])).join('\n');
+      expect(violations).toMatch(/script-src-elem: inline/); // the script, and the javascript: link
+      expect(violations).toMatch(/script-src-attr: inline/);
+      expect(violations).toMatch(/script-src: eval/);
+      await page.close();
+    },
+  );
 
   for (const path of PAGES) {
     it(`${path.replace(/src=.*/, 'src=data:…')} runs under the policy: no violation, no console error`, async () => {

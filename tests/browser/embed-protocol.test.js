@@ -46,60 +46,63 @@ const waitForMessage = (page, test) =>
 const widgetState = (frame) => frame.evaluate(() => Object.values(globalThis.__shadingLab.widgets)[0].getState());
 
 describe('postMessage protocol of embed.html', () => {
-  it('announces itself, answers get, applies a set through validation, reports bad values, and follows the user', async () => {
-    const page = await open(browser, 'index.html');
-    const frame = await embedIn(page, new URL('embed.html?w=fresnel-zones', baseUrl()).href);
-    const own = originOf(baseUrl());
+  it(
+    'announces itself, answers get, applies a set through validation, ' + 'reports bad values, and follows the user',
+    async () => {
+      const page = await open(browser, 'index.html');
+      const frame = await embedIn(page, new URL('embed.html?w=fresnel-zones', baseUrl()).href);
+      const own = originOf(baseUrl());
 
-    const ready = await waitForMessage(page, (d) => d.type === 'shading-lab:ready');
-    expect(ready.widget).toBe('fresnel-zones');
-    expect(ready.state).toEqual(await widgetState(frame));
-    expect(ready.query).toBe('');
-    expect((await inbox(page)).every((m) => m.origin === own)).toBe(true);
+      const ready = await waitForMessage(page, (d) => d.type === 'shading-lab:ready');
+      expect(ready.widget).toBe('fresnel-zones');
+      expect(ready.state).toEqual(await widgetState(frame));
+      expect(ready.query).toBe('');
+      expect((await inbox(page)).every((m) => m.origin === own)).toBe(true);
 
-    await post(page, { type: 'shading-lab:get', id: 'g1' }, own);
-    const got = await waitForMessage(page, (d) => d.type === 'shading-lab:state' && d.id === 'g1');
-    expect(got.state).toEqual(ready.state);
+      await post(page, { type: 'shading-lab:get', id: 'g1' }, own);
+      const got = await waitForMessage(page, (d) => d.type === 'shading-lab:state' && d.id === 'g1');
+      expect(got.state).toEqual(ready.state);
 
-    // good values are applied, a number out of range is clamped, a bad enum keeps the last good value
-    await post(
-      page,
-      {
-        type: 'shading-lab:set',
-        id: 's1',
-        state: { mode: 'zones-lh', alpha: 0.5, lightTheta: 400, shape: 'banana', colour: 'red' },
-      },
-      own,
-    );
-    const reply = await waitForMessage(page, (d) => d.type === 'shading-lab:state' && d.id === 's1');
-    const error = await waitForMessage(page, (d) => d.type === 'shading-lab:error' && d.id === 's1');
-    expect(reply.state).toMatchObject({ mode: 'zones-lh', alpha: 0.5, lightTheta: 180, shape: 'sphere' });
-    expect(reply.state).not.toHaveProperty('colour');
-    expect(reply.query).toBe(new URLSearchParams({ mode: 'zones-lh', alpha: '0.5', lightTheta: '180' }).toString());
-    expect(error.errors.join(' ')).toMatch(/400 is outside 0…180; clamped to 180/);
-    expect(error.errors.join(' ')).toMatch(/"banana" is not one of/);
-    expect(error.errors.join(' ')).toMatch(/“colour” is not a setting/);
-    expect(await widgetState(frame)).toEqual(reply.state);
-    // reported on the page too, and the iframe's own URL carries the new state
-    const noticeText = await frame.$eval('body', (b) =>
-      [...b.querySelectorAll('.notice')].map((n) => n.textContent).join(' '),
-    );
-    expect(noticeText).toMatch(/banana/);
-    expect(noticeText).toMatch(/colour/);
-    await sleep(300);
-    expect(new URL(frame.url()).searchParams.get('mode')).toBe('zones-lh');
-    // a change the parent made is not echoed back as a user change
-    expect((await inbox(page)).some((m) => m.data.type === 'shading-lab:changed')).toBe(false);
+      // good values are applied, a number out of range is clamped, a bad enum keeps the last good value
+      await post(
+        page,
+        {
+          type: 'shading-lab:set',
+          id: 's1',
+          state: { mode: 'zones-lh', alpha: 0.5, lightTheta: 400, shape: 'banana', colour: 'red' },
+        },
+        own,
+      );
+      const reply = await waitForMessage(page, (d) => d.type === 'shading-lab:state' && d.id === 's1');
+      const error = await waitForMessage(page, (d) => d.type === 'shading-lab:error' && d.id === 's1');
+      expect(reply.state).toMatchObject({ mode: 'zones-lh', alpha: 0.5, lightTheta: 180, shape: 'sphere' });
+      expect(reply.state).not.toHaveProperty('colour');
+      expect(reply.query).toBe(new URLSearchParams({ mode: 'zones-lh', alpha: '0.5', lightTheta: '180' }).toString());
+      expect(error.errors.join(' ')).toMatch(/400 is outside 0…180; clamped to 180/);
+      expect(error.errors.join(' ')).toMatch(/"banana" is not one of/);
+      expect(error.errors.join(' ')).toMatch(/“colour” is not a setting/);
+      expect(await widgetState(frame)).toEqual(reply.state);
+      // reported on the page too, and the iframe's own URL carries the new state
+      const noticeText = await frame.$eval('body', (b) =>
+        [...b.querySelectorAll('.notice')].map((n) => n.textContent).join(' '),
+      );
+      expect(noticeText).toMatch(/banana/);
+      expect(noticeText).toMatch(/colour/);
+      await sleep(300);
+      expect(new URL(frame.url()).searchParams.get('mode')).toBe('zones-lh');
+      // a change the parent made is not echoed back as a user change
+      expect((await inbox(page)).some((m) => m.data.type === 'shading-lab:changed')).toBe(false);
 
-    // the user edits the widget: one debounced `changed`, with the new state
-    await setControl(frame, 'Mode', 'Zones of n·v');
-    const changed = await waitForMessage(page, (d) => d.type === 'shading-lab:changed');
-    expect(changed.state.mode).toBe('zones-nv');
-    expect(changed.state).toEqual(await widgetState(frame));
-    expect(changed.query).toContain('mode=zones-nv');
-    expect(page.errors).toEqual([]);
-    await page.close();
-  });
+      // the user edits the widget: one debounced `changed`, with the new state
+      await setControl(frame, 'Mode', 'Zones of n·v');
+      const changed = await waitForMessage(page, (d) => d.type === 'shading-lab:changed');
+      expect(changed.state.mode).toBe('zones-nv');
+      expect(changed.state).toEqual(await widgetState(frame));
+      expect(changed.query).toContain('mode=zones-nv');
+      expect(page.errors).toEqual([]);
+      await page.close();
+    },
+  );
 
   it('ignores messages of the wrong shape without a reply, a change or an error', async () => {
     const page = await open(browser, 'index.html');
@@ -156,7 +159,8 @@ describe('postMessage protocol of embed.html', () => {
     expect((await widgetState(allowed)).mode).toBe('zones-lh');
     expect((await inbox(page)).every((m) => m.origin === widgetOrigin)).toBe(true);
     await sleep(300);
-    expect(new URL(allowed.url()).searchParams.get('origins')).toBe(parentOrigin); // kept when the state is written back
+    // kept when the state is written back
+    expect(new URL(allowed.url()).searchParams.get('origins')).toBe(parentOrigin);
     expect(page.errors).toEqual([]);
     await page.close();
   });

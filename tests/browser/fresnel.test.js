@@ -52,43 +52,57 @@ describe('fresnel-zones', () => {
     const shares = await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].getZoneShares());
     const analytic = sphereZoneFractions();
     console.log(
-      `zone shares GPU ${shares.map((s) => (s * 100).toFixed(2)).join(' / ')} % vs analytic ${analytic.map((s) => (s * 100).toFixed(2)).join(' / ')} %`,
+      `zone shares GPU ${shares.map((s) => (s * 100).toFixed(2)).join(' / ')} % vs analytic ` +
+        `${analytic.map((s) => (s * 100).toFixed(2)).join(' / ')} %`,
     );
     shares.forEach((s, i) => expect(Math.abs(s - analytic[i])).toBeLessThan(0.003));
     await page.close();
   });
 
-  it('on an orthographic sphere, the weighted shares match a float64 quadrature over the same 64 lights (α 0.1: 4.0% red, α 0.3: 1.4%)', async () => {
-    for (const [alpha, red] of [
-      [0.1, 0.0405],
-      [0.3, 0.0136],
-    ]) {
-      const expected = weightedSphereShares(alpha);
-      expect(expected[2]).toBeCloseTo(red, 3); // the figures fresnel.html quotes
-      const page = await open(browser, `embed.html?w=fresnel-zones&mode=zones-lh-weighted&shape=sphere&alpha=${alpha}`);
+  it(
+    'on an orthographic sphere, the weighted shares match a float64 quadrature over the ' +
+      'same 64 lights (α 0.1: 4.0% red, α 0.3: 1.4%)',
+    async () => {
+      for (const [alpha, red] of [
+        [0.1, 0.0405],
+        [0.3, 0.0136],
+      ]) {
+        const expected = weightedSphereShares(alpha);
+        expect(expected[2]).toBeCloseTo(red, 3); // the figures fresnel.html quotes
+        const page = await open(
+          browser,
+          `embed.html?w=fresnel-zones&mode=zones-lh-weighted&shape=sphere&alpha=${alpha}`,
+        );
+        await widget(page, 'fresnel-zones');
+        const avg = await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].getAverageShares());
+        console.log(
+          `weighted shares, sphere, α ${alpha}: GPU ${avg.map((x) => (x * 100).toFixed(2))} %, ` +
+            `quadrature ${expected.map((x) => (x * 100).toFixed(2))} %`,
+        );
+        // a 128² image of the sphere
+        avg.forEach((x, i) => expect(Math.abs(x - expected[i]), `zone ${i}`).toBeLessThan(0.003));
+        await page.close();
+      }
+    },
+  );
+
+  it(
+    'bears out the talk: weighted by the BRDF, over all light directions, ' + 'green predominates and red is rare',
+    async () => {
+      const page = await open(browser, 'embed.html?w=fresnel-zones&mode=zones-lh-weighted&shape=torusknot');
       await widget(page, 'fresnel-zones');
       const avg = await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].getAverageShares());
       console.log(
-        `weighted shares, sphere, α ${alpha}: GPU ${avg.map((x) => (x * 100).toFixed(2))} %, quadrature ${expected.map((x) => (x * 100).toFixed(2))} %`,
+        `weighted l·h zone shares over 64 lights (torus knot, alpha 0.3): ` +
+          `${avg.map((s) => (s * 100).toFixed(1)).join(' / ')} %`,
       );
-      avg.forEach((x, i) => expect(Math.abs(x - expected[i]), `zone ${i}`).toBeLessThan(0.003)); // a 128² image of the sphere
+      expect(avg[0]).toBeGreaterThan(0.5);
+      expect(avg[2]).toBeLessThan(0.05);
+      expect(avg.reduce((a, b) => a + b)).toBeCloseTo(1, 6);
+      expect(page.errors).toEqual([]);
       await page.close();
-    }
-  });
-
-  it('bears out the talk: weighted by the BRDF, over all light directions, green predominates and red is rare', async () => {
-    const page = await open(browser, 'embed.html?w=fresnel-zones&mode=zones-lh-weighted&shape=torusknot');
-    await widget(page, 'fresnel-zones');
-    const avg = await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].getAverageShares());
-    console.log(
-      `weighted l·h zone shares over 64 lights (torus knot, alpha 0.3): ${avg.map((s) => (s * 100).toFixed(1)).join(' / ')} %`,
-    );
-    expect(avg[0]).toBeGreaterThan(0.5);
-    expect(avg[2]).toBeLessThan(0.05);
-    expect(avg.reduce((a, b) => a + b)).toBeCloseTo(1, 6);
-    expect(page.errors).toEqual([]);
-    await page.close();
-  });
+    },
+  );
 
   it('compiles only the terms a mode uses, and reuses a variant when it comes back', async () => {
     const page = await open(browser, 'embed.html?w=fresnel-zones&mode=zones-nv');
@@ -168,7 +182,9 @@ describe('fresnel-curves and f0-tables', () => {
     });
     const lines = csv.trim().split('\n');
     expect(lines[0]).toBe(
-      '"Angle of incidence θ (degrees)","Gold R exact","Gold R Schlick","Gold G exact","Gold G Schlick","Gold B exact","Gold B Schlick","Silver R exact","Silver R Schlick","Silver G exact","Silver G Schlick","Silver B exact","Silver B Schlick"',
+      '"Angle of incidence θ (degrees)","Gold R exact","Gold R Schlick","Gold G exact","Gold G ' +
+        'Schlick","Gold B exact","Gold B Schlick","Silver R exact","Silver R Schlick","Silver G ' +
+        'exact","Silver G Schlick","Silver B exact","Silver B Schlick"',
     );
     expect(lines).toHaveLength(362); // 0°..90° in 0.25° steps, plus the header
     expect(Number(lines[1].split(',')[1])).toBeCloseTo(0.999, 3); // gold R at 0°: the talk's 1.00, clamped

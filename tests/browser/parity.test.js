@@ -18,7 +18,8 @@ describe('GLSL vs JS parity', () => {
     const results = await page.evaluate(() => globalThis.__shadingLab.parity);
     for (const r of results)
       console.log(
-        `parity ${r.name.padEnd(30)} n=${String(r.count).padStart(5)} maxAbs=${r.maxAbs.toExponential(2)} maxRel=${r.maxRel.toExponential(2)} invalid=${r.invalid}`,
+        `parity ${r.name.padEnd(30)} n=${String(r.count).padStart(5)} maxAbs=${r.maxAbs.toExponential(2)} ` +
+          `maxRel=${r.maxRel.toExponential(2)} invalid=${r.invalid}`,
       );
     for (const r of results) {
       expect(r.invalid, r.name).toBe(0);
