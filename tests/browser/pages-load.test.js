@@ -1,7 +1,9 @@
-// Pages load cleanly: each page and chapter opens with no console error, no page error and no failed request,
-// its widgets mounted and its views drawn; the landing page links every live page.
+// Pages load cleanly: every built page opens under the Content-Security-Policy with no violation, no console
+// error, no page error and no failed request; each chapter with its widgets mounted and its views drawn; the
+// landing page links every live page.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { distinctColors, launchBrowser, open, settle, shot, widget } from './helpers.js';
+import { POLICY_PAGES, openUnderPolicy } from './under-policy.js';
 
 let browser;
 beforeAll(async () => {
@@ -89,6 +91,20 @@ describe('chapter pages load cleanly', () => {
         expect(await distinctColors(page, png)).toBeGreaterThan(8);
       }
       expect(page.errors).toEqual([]);
+      await page.close();
+    });
+  }
+});
+
+describe('Content-Security-Policy', () => {
+  for (const path of POLICY_PAGES) {
+    it(`${path.replace(/src=.*/, 'src=data:…')} runs under the policy: no violation, no console error`, async () => {
+      const page = await openUnderPolicy(browser, path);
+      expect(await page.evaluate(() => window.__csp ?? [])).toEqual([]);
+      expect(page.errors).toEqual([]);
+      if (path.startsWith('exercises.html?src=')) {
+        expect(await page.$eval('#exercise h2', (h) => h.textContent)).toBe('A set from a data: URL');
+      }
       await page.close();
     });
   }
