@@ -67,7 +67,11 @@ describe('every widget describes its canvases and is usable by keyboard', () => 
       expect(before.live.length).toBeGreaterThan(30);
 
       await page.evaluate((n, change) => globalThis.__shadingLab.widgets[n].update(change), name, CHANGES[name]);
-      await settle(page, 1000); // the live region speaks once changes settle
+      // the live region speaks once changes settle (500 ms after the last, describe.js): wait for it, then a frame
+      await page
+        .waitForFunction((text) => document.querySelector('.widget-live')?.textContent !== text, {}, before.live)
+        .catch(() => {}); // words that never change fail below, with the words in the message
+      await settle(page, 0);
       const after = await readWords(page);
       expect(after.canvases.length).toBe(before.canvases.length);
       after.canvases.forEach((c, i) => {
