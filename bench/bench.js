@@ -198,16 +198,20 @@ if (only === 'measured') {
 const pad = (s, n) => String(s).padEnd(n);
 const g = report.gpuSetup;
 console.log(
-  `Machine: ${report.machine.cpu} (${report.machine.cores} cores), Node ${report.machine.node}, ${report.machine.chromium}, GPU: ${report.machine.gpuRenderer}`,
+  `Machine: ${report.machine.cpu} (${report.machine.cores} cores), Node ${report.machine.node}, ` +
+    `${report.machine.chromium}, GPU: ${report.machine.gpuRenderer}`,
 );
 console.log(
-  `GPU pass: ${g.size}² pixels × ${g.loops} evaluations, median of ${g.frames} drained frames; the empty pass (x·y) takes ${g.baselineMsPerFrame.toFixed(2)} ms of each.`,
+  `GPU pass: ${g.size}² pixels × ${g.loops} evaluations, median of ${g.frames} drained frames; the empty pass ` +
+    `(x·y) takes ${g.baselineMsPerFrame.toFixed(2)} ms of each.`,
 );
 const fixed = (x, digits) => (x === null ? '—' : x.toFixed(digits)); // null: a reference not timed
 for (const f of report.families.filter((g) => !familyKey || g.key === familyKey)) {
   console.log(`\n${f.title} — ${f.errorOf} over ${f.domain}${f.referenceNote ? ` (${f.referenceNote})` : ''}`);
   console.log(
-    `  ${pad('variant', 42)}${pad('measured against', 52)}${pad('max |Δ|', 11)}${pad('RMS', 11)}${pad('CPU ns/eval', 13)}${pad('GPU ms/frame', 14)}GPU relative`,
+    '  ' +
+      [pad('variant', 42), pad('measured against', 52), pad('max |Δ|', 11), pad('RMS', 11)].join('') +
+      [pad('CPU ns/eval', 13), pad('GPU ms/frame', 14), 'GPU relative'].join(''),
   );
   for (const v of f.variants) {
     const d = v.error ?? v.difference;
@@ -216,7 +220,12 @@ for (const f of report.families.filter((g) => !familyKey || g.key === familyKey)
         ? 'reference'
         : `${v.kind === 'difference' ? 'differs from' : 'error vs'} ${v.againstLabel}`;
     console.log(
-      `  ${pad(v.label, 42)}${pad(what, 52)}${pad(d.maxAbs.toExponential(2), 11)}${pad(d.rms.toExponential(2), 11)}${pad(fixed(v.cpuNsPerEval, 2), 13)}${pad(fixed(v.gpuMsPerFrame, 2), 14)}${fixed(v.gpuRelative, 2)}${v.gpuRelative === null ? '' : '×'}`,
+      '  ' +
+        [pad(v.label, 42), pad(what, 52), pad(d.maxAbs.toExponential(2), 11), pad(d.rms.toExponential(2), 11)].join(
+          '',
+        ) +
+        [pad(fixed(v.cpuNsPerEval, 2), 13), pad(fixed(v.gpuMsPerFrame, 2), 14), fixed(v.gpuRelative, 2)].join('') +
+        (v.gpuRelative === null ? '' : '×'),
     );
   }
 }
@@ -232,16 +241,20 @@ if (only === 'families') {
 const { versusThree: vt, ibl, pages } = report;
 console.log(`\nSphere at ${vt.size}² with GGX + height-correlated Smith + Schlick + Lambert + one punctual light:`);
 console.log(
-  `  ours ${vt.oursMsPerFrame.toFixed(2)} ms/frame, three.js MeshStandardMaterial ${vt.threeMsPerFrame.toFixed(2)} ms/frame: ratio ${vt.ratio.toFixed(2)}`,
+  `  ours ${vt.oursMsPerFrame.toFixed(2)} ms/frame, three.js MeshStandardMaterial ` +
+    `${vt.threeMsPerFrame.toFixed(2)} ms/frame: ratio ${vt.ratio.toFixed(2)}`,
 );
 console.log(
-  `\nImage-based lighting against the Monte Carlo reference (${ibl.setup.referenceSamples} samples/pixel), ${ibl.setup.resolution}² pixels, median of ${ibl.setup.timingRuns} runs:`,
+  `\nImage-based lighting against the Monte Carlo reference (${ibl.setup.referenceSamples} samples/pixel), ` +
+    `${ibl.setup.resolution}² pixels, median of ${ibl.setup.timingRuns} runs:`,
 );
 console.log(`  ${pad('environment, material', 30)}${pad('method', 22)}${pad('GPU ms', 10)}${pad('RMS', 11)}relative`);
 for (const r of ibl.rows) {
   const method = r.samples ? `importance, N = ${r.samples}` : r.method;
   console.log(
-    `  ${pad(`${r.environment}, ${r.material} α ${r.alpha}`, 30)}${pad(method, 22)}${pad(r.ms.toFixed(2), 10)}${pad(r.rms.toExponential(2), 11)}${(r.relative * 100).toFixed(2)} %`,
+    '  ' +
+      [pad(`${r.environment}, ${r.material} α ${r.alpha}`, 30), pad(method, 22), pad(r.ms.toFixed(2), 10)].join('') +
+      `${pad(r.rms.toExponential(2), 11)}${(r.relative * 100).toFixed(2)} %`,
   );
 }
 console.log(
@@ -249,7 +262,9 @@ console.log(
 );
 for (const p of pages)
   console.log(
-    `  ${pad(p.page, 30)}${pad(p.jsKB.toFixed(0), 30)}${pad(p.jsFiles, 7)}${pad(p.loadMs.toFixed(0), 11)}${p.firstFrameMs === null ? '—' : p.firstFrameMs.toFixed(0)}`,
+    '  ' +
+      [pad(p.page, 30), pad(p.jsKB.toFixed(0), 30), pad(p.jsFiles, 7), pad(p.loadMs.toFixed(0), 11)].join('') +
+      (p.firstFrameMs === null ? '—' : p.firstFrameMs.toFixed(0)),
   );
 printMeasured(report.measured);
 console.log(`\nWrote ${out}`);

@@ -11,16 +11,78 @@
 import * as M from '../src/math/index.js';
 import { MULTIPLE_SCATTERING_FAMILY } from './multiple-scattering-family.js';
 import { DEG } from '../src/math/angles.js';
+import { CATALOGUE } from '../src/math/catalogue/index.js';
 
 const range = (n, lo, hi) => Array.from({ length: n }, (_, i) => lo + ((hi - lo) * i) / (n - 1));
 const COS = range(1001, 0, 1);
 
-/** G = V (n·l)(n·v) of a visibility term V(n·l, n·v, α), over the visibility family's inputs. */
-const asG = (V) => (nl, nv, nh, lh, a) => V(nl, nv, a) * nl * nv;
-
 const measuredChannels = M.METALS.flatMap((m) =>
   M.measuredRgbNk(m.key).map(([n, k], ch) => ({ n, k, f0: M.f0FromIor(n, k), label: `${m.key} ${'RGB'[ch]}` })),
 );
+
+// The visibility and NDF families have one variant per catalogue term. What each is in the comparison (its key in
+// the tables, kind, target, model, and the GLSL expression the GPU bench times) is said here for the terms it
+// concerns; a term not named is another model, measured as its difference from the reference, with its own
+// function on the GPU (angles x, y; its parameters from BENCH_GLSL or mid-range).
+const BENCH_GLSL = {
+  visibility: { alpha: '0.3' },
+  ndf: { alpha: '0.05 + 0.5 * y', exponent: '10.0 + 100.0 * y', a1: '1.0 + 100.0 * y', a2: '2.5', p: '0.64' },
+};
+const glslFloat = (x) => (Number.isInteger(x) ? x.toFixed(1) : String(x));
+const BENCH_ANGLE = {
+  cos: 'x',
+  sin2: '(1.0 - x) * (1.0 + x)',
+  nl: 'x',
+  nv: 'y',
+  nh: '0.5 + 0.5 * x',
+  lh: '0.5 + 0.5 * y',
+};
+const VISIBILITY_ROLES = {
+  smithGGXCorrelated: { key: 'correlated', kind: 'reference' },
+  smithGGXSeparable: { key: 'separable', model: 'smith-ggx-separable' },
+  smithGGXCorrelatedFast: { key: 'hammon', kind: 'approximation', against: 'correlated' },
+  schlickGGX: { key: 'schlick-ggx', kind: 'approximation', against: 'separable', model: 'smith-ggx-separable' },
+};
+// the visibility inputs are [nl, nv, nh, lh, alpha], compared in G = V (n·l)(n·v)
+const visibilityOf = (term) => (nl, nv, nh, lh, alpha) => term.evaluate({ nl, nv, nh, lh }, { alpha }) * nl * nv;
+const NDF_ROLES = {
+  beckmann: { kind: 'reference' },
+  blinnPhong: {
+    key: 'blinn-phong',
+    label: 'Blinn–Phong (Walter’s exponent)',
+    kind: 'approximation',
+    against: 'beckmann',
+    model: 'beckmann',
+    params: (m) => ({ exponent: M.blinnPhongExponentFromBeckmannAlpha(m.beckmann.alpha) }),
+  },
+};
+// the NDF inputs are [cos θh, the matched parameters of every NDF, Beckmann's peak], compared in D / D_Beckmann(0)
+const ndfOf = (term, params) => (c, m, peak) => term.evaluate(c, params ? params(m) : m[term.key]) / peak;
+const FAMILY_OF = { visibility: visibilityOf, ndf: ndfOf };
+const MODEL_OF = { smithGGXCorrelated: 'smith-ggx-correlated', smithGGXCorrelatedFast: 'smith-ggx-correlated' };
+const kebab = (key) => key.replace(/[A-Z]+/g, (m) => `-${m.toLowerCase()}`);
+
+/** One variant per term of a catalogue family, the reference first. */
+function termVariants(family, roles) {
+  const variants = Object.values(CATALOGUE[family].terms).map((term) => {
+    const role = roles[term.key] ?? {};
+    const model = role.model ?? MODEL_OF[term.key] ?? kebab(term.key);
+    const reference = Object.keys(roles).find((k) => roles[k].kind === 'reference');
+    const { params } = term;
+    const glslOf = (arg) =>
+      BENCH_ANGLE[arg] ?? BENCH_GLSL[family][arg] ?? glslFloat((params[arg].min + params[arg].max) / 2);
+    return {
+      key: role.key ?? kebab(term.key),
+      label: role.label ?? term.label,
+      kind: role.kind ?? 'difference',
+      ...(role.kind === 'reference' ? {} : { against: role.against ?? roles[reference].key ?? kebab(reference) }),
+      model,
+      js: FAMILY_OF[family](term, role.params),
+      glsl: role.glsl ?? `${term.glsl}(${term.args.map(glslOf).join(', ')})`,
+    };
+  });
+  return [...variants.filter((v) => v.kind === 'reference'), ...variants.filter((v) => v.kind !== 'reference')];
+}
 
 export const FAMILIES = [
   {
@@ -123,7 +185,8 @@ export const FAMILIES = [
     key: 'visibility',
     title: 'Visibility: approximations of Smith GGX, and other models’ difference from it',
     domain:
-      'l and v in one plane on opposite sides of n, θl, θv in [0°, 89°] (1° steps) × α in {0.05, 0.1, 0.3, 0.5, 0.8, 1}; compared in G = V (n·l)(n·v)',
+      'l and v in one plane on opposite sides of n, θl, θv in [0°, 89°] (1° steps) × ' +
+      'α in {0.05, 0.1, 0.3, 0.5, 0.8, 1}; compared in G = V (n·l)(n·v)',
     errorOf: 'G',
     // Schlick-GGX is Karis 2013's fit to Smith GGX's G1, used as the separable product G1(l) G1(v): it is
     // scored against the separable form it approximates, which is itself a different model (uncorrelated
@@ -138,70 +201,7 @@ export const FAMILIES = [
         }),
       ),
     ),
-    variants: [
-      {
-        key: 'correlated',
-        label: 'Height-correlated Smith (Heitz 2014)',
-        kind: 'reference',
-        model: 'smith-ggx-correlated',
-        js: asG(M.visibilitySmithGGXCorrelated),
-        glsl: 'visibilitySmithGGXCorrelated(x, y, 0.3)',
-      },
-      {
-        key: 'separable',
-        label: 'Separable Smith',
-        kind: 'difference',
-        against: 'correlated',
-        model: 'smith-ggx-separable',
-        js: asG(M.visibilitySmithGGXSeparable),
-        glsl: 'visibilitySmithGGXSeparable(x, y, 0.3)',
-      },
-      {
-        key: 'hammon',
-        label: 'Hammon 2017',
-        kind: 'approximation',
-        against: 'correlated',
-        model: 'smith-ggx-correlated',
-        js: asG(M.visibilitySmithGGXCorrelatedFast),
-        glsl: 'visibilitySmithGGXCorrelatedFast(x, y, 0.3)',
-      },
-      {
-        key: 'schlick-ggx',
-        label: 'Schlick-GGX (k = α/2, Karis 2013)',
-        kind: 'approximation',
-        against: 'separable',
-        model: 'smith-ggx-separable',
-        js: asG(M.visibilitySchlickGGX),
-        glsl: 'visibilitySchlickGGX(x, y, 0.3)',
-      },
-      {
-        key: 'cook-torrance',
-        label: 'Cook-Torrance',
-        kind: 'difference',
-        against: 'correlated',
-        model: 'cook-torrance',
-        js: (nl, nv, nh, lh) => M.visibilityCookTorrance(nl, nv, nh, lh) * nl * nv,
-        glsl: 'visibilityCookTorrance(x, y, 0.5 + 0.5 * x, 0.5 + 0.5 * y)',
-      },
-      {
-        key: 'kelemen',
-        label: 'Kelemen',
-        kind: 'difference',
-        against: 'correlated',
-        model: 'kelemen',
-        js: (nl, nv, nh, lh) => (nl > 0 && nv > 0 ? M.visibilityKelemen(lh) * nl * nv : 0),
-        glsl: 'visibilityKelemen(0.5 + 0.5 * y)',
-      },
-      {
-        key: 'implicit',
-        label: 'Implicit (V = 1)',
-        kind: 'difference',
-        against: 'correlated',
-        model: 'implicit',
-        js: (nl, nv) => M.visibilityImplicit(nl, nv) * nl * nv,
-        glsl: 'visibilityImplicit(x, y)',
-      },
-    ],
+    variants: termVariants('visibility', VISIBILITY_ROLES),
   },
   {
     key: 'ndf',
@@ -213,58 +213,14 @@ export const FAMILIES = [
       const peak = M.ndfBeckmann(1, m.beckmann.alpha);
       return range(360, 0, 89.75).map((deg) => [Math.cos(deg * DEG), m, peak]);
     }),
-    variants: [
-      {
-        key: 'beckmann',
-        label: 'Beckmann',
-        kind: 'reference',
-        model: 'beckmann',
-        js: (c, m, peak) => M.ndfBeckmann(c, m.beckmann.alpha) / peak,
-        glsl: 'ndfBeckmann(x, 0.05 + 0.5 * y)',
-      },
-      {
-        key: 'blinn-phong',
-        label: 'Blinn-Phong (Walter’s exponent)',
-        kind: 'approximation',
-        against: 'beckmann',
-        model: 'beckmann',
-        js: (c, m, peak) => M.ndfBlinnPhong(c, M.blinnPhongExponentFromBeckmannAlpha(m.beckmann.alpha)) / peak,
-        glsl: 'ndfBlinnPhong(x, 10.0 + 100.0 * y)',
-      },
-      {
-        key: 'ggx',
-        label: 'GGX',
-        kind: 'difference',
-        against: 'beckmann',
-        model: 'ggx',
-        js: (c, m, peak) => M.ndfGGX(c, m.ggx.alpha) / peak,
-        glsl: 'ndfGGX(x, 0.05 + 0.5 * y)',
-      },
-      {
-        key: 'abc',
-        label: 'ABC',
-        kind: 'difference',
-        against: 'beckmann',
-        model: 'abc',
-        js: (c, m, peak) => M.ndfABC(c, m.abc.a1, m.abc.a2) / peak,
-        glsl: 'ndfABC(x, 1.0 + 100.0 * y, 2.5)',
-      },
-      {
-        key: 'sgd',
-        label: 'Shifted gamma',
-        kind: 'difference',
-        against: 'beckmann',
-        model: 'sgd',
-        js: (c, m, peak) => M.ndfSGD(c, m.sgd.alpha, m.sgd.p) / peak,
-        glsl: 'ndfSGD(x, 0.05 + 0.5 * y, 0.64)',
-      },
-    ],
+    variants: termVariants('ndf', NDF_ROLES),
   },
   {
     key: 'oren-nayar',
     title: 'Oren–Nayar: the qualitative form approximating the full model, and Lambert’s difference from it',
     domain:
-      'θl, θv in [0°, 85°] (5° steps) × cos φ in {−1, −0.5, 0, 0.5, 1} × σ in {0.1, 0.3, 0.6, 1} (radians), c_diff = 0.8; compared in f (1/sr)',
+      'θl, θv in [0°, 85°] (5° steps) × cos φ in {−1, −0.5, 0, 0.5, 1} × σ in {0.1, 0.3, 0.6, 1} (radians), ' +
+      'c_diff = 0.8; compared in f (1/sr)',
     errorOf: 'f',
     inputs: range(18, 0, 85).flatMap((tl) =>
       range(18, 0, 85).flatMap((tv) =>

@@ -34,7 +34,10 @@ void main() {
   }
   fragColor = vec4(acc);
 }`;
-  return `#version 300 es\nprecision highp float;\nprecision highp int;\n${assembleGlsl(body, { defines: setup.defines ?? {} })}`;
+  return (
+    `#version 300 es\nprecision highp float;\nprecision highp ` +
+    `int;\n${assembleGlsl(body, { defines: setup.defines ?? {} })}`
+  );
 }
 
 function program(expr, setup) {

@@ -22,7 +22,8 @@ export async function measureIbl({ quick }) {
       const page = await openPage(
         browser,
         server.url,
-        `embed.html?w=material-lab&material=${c.material}&alpha=${c.alpha}&environment=${c.environment}&refSamples=${refSamples}`,
+        `embed.html?w=material-lab&material=${c.material}&alpha=${c.alpha}` +
+          `&environment=${c.environment}&refSamples=${refSamples}`,
         { width: 1100, height: 700 },
       );
       await page.waitForFunction(

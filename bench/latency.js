@@ -107,7 +107,8 @@ try {
     rows.push(await measure(browser, server.url, name));
     const r = rows.at(-1);
     console.log(
-      `${r.widget.padEnd(22)}${r.key.padEnd(14)}median ${r.medianMs.toFixed(1).padStart(7)} ms   worst ${r.worstMs.toFixed(1).padStart(7)} ms${r.progressive ? '   (progressive)' : ''}`,
+      `${r.widget.padEnd(22)}${r.key.padEnd(14)}median ${r.medianMs.toFixed(1).padStart(7)} ms   worst ` +
+        `${r.worstMs.toFixed(1).padStart(7)} ms${r.progressive ? '   (progressive)' : ''}`,
     );
   }
 } finally {

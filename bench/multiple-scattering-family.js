@@ -45,7 +45,8 @@ export const MULTIPLE_SCATTERING_FAMILY = {
   errorOf: 'Directional albedo (GGX, height-correlated Smith, Schlick F at every bounce)',
   inputs: MUS.flatMap((mu) => ALPHAS.flatMap((alpha) => CHANNELS.map((f0, channel) => [mu, alpha, f0, channel]))),
   referenceNote: () =>
-    `${walkSamples / 1000}k paths per (μ, α); the walk's largest standard error is ${walkStandardError().toExponential(1)}`,
+    `${walkSamples / 1000}k paths per (μ, α); the walk's largest standard error is ` +
+    `${walkStandardError().toExponential(1)}`,
   /** --quick (the test suite): 2000 paths per (μ, α) instead of 200k. */
   configure({ quick }) {
     walkSamples = quick ? 2000 : WALK_SAMPLES;

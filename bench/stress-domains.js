@@ -1,5 +1,7 @@
 // What `npm run stress` feeds every exported function of src/math, and the range each result must lie in.
 // Every export is listed: a new function without an entry fails the stress test until it is classified.
+import { CATALOGUE } from '../src/math/catalogue/index.js';
+import { paramStress } from '../src/math/catalogue/grids.js';
 
 const COS = [-1, -0.5, 0, 1e-7, 1e-4, 0.5, 1 - 1e-7, 1, 1 + 1e-7, 1.5];
 const ALPHA = [0, 1e-5, 1e-4, 1e-2, 0.3, 1, 2];
@@ -29,17 +31,8 @@ const DIRS = [
 ];
 const PAIRS = DIRS.flatMap((l) => [...DIRS.map((v) => [l, v]), [l, l.map((x) => -x)]]);
 
-const D_KINDS = ['ggx', 'beckmann', 'blinnPhong', 'abc', 'sgd'];
-const V_KINDS = [
-  'implicit',
-  'cookTorrance',
-  'kelemen',
-  'smithGGXSeparable',
-  'smithGGXCorrelated',
-  'smithGGXCorrelatedFast',
-  'schlickGGX',
-  'smithBeckmannSeparable',
-];
+const D_KINDS = Object.keys(CATALOGUE.ndf.terms);
+const V_KINDS = Object.keys(CATALOGUE.visibility.terms);
 const BRDF_PARAMS = D_KINDS.flatMap((D) =>
   V_KINDS.flatMap((V) =>
     [0, 1e-4, 0.3, 1].map((alpha) => ({ F: 'schlick', D, V, alpha, f0: 0.04, exponent: 1e4, a1: 1e4, a2: 3, p: 1.9 })),
@@ -56,17 +49,48 @@ const SPLIT_SUM_TERMS = [
 const NON_NEGATIVE = [0, Infinity];
 const FINITE = [-Infinity, Infinity]; // only NaN and ±Inf are failures
 
+const TERM_ANGLES = {
+  cos: COS,
+  sin2: [0, 1e-12, 0.5, 1],
+  nl: COS,
+  nv: COS,
+  nh: COS,
+  lh: COS,
+  cosPhi: [-1.5, -1, 0, 1, 1.5],
+};
+const TERM_RANGE = { fresnel: ZERO_TO_ONE, ndf: NON_NEGATIVE, visibility: NON_NEGATIVE, diffuse: NON_NEGATIVE };
+
 /**
- * name -> { args: [list per argument] } | { tuples: [argument lists] } | { pairs: [[l, v]], params } with
- * range [lo, hi]; pick: the result fields to check; allowInfinity: Inf is a documented result (meanFreePath in
- * a vacuum). Functions in `skipped` say why they are not swept.
+ * The function of every catalogue term (fn, by its name), its angles over the lists above and its parameters over
+ * their stress values (src/math/catalogue/grids.js). An entry below with the same name replaces it where the
+ * function takes values past the catalogue's stress (float64 extremes: Blinn–Phong's p up to Infinity, …).
+ */
+const termDomains = () =>
+  Object.fromEntries(
+    Object.values(CATALOGUE).flatMap((family) =>
+      Object.values(family.terms)
+        .filter((term) => term.js)
+        .map((term) => [
+          term.glsl,
+          {
+            fn: term.js,
+            args: term.args.map((arg) => (arg in term.params ? paramStress(term.params[arg]) : TERM_ANGLES[arg])),
+            range: TERM_RANGE[family.family],
+          },
+        ]),
+    ),
+  );
+
+/**
+ * name -> { fn?: the function if not M[name], args: [list per argument] } | { tuples: [argument lists] } |
+ * { pairs: [[l, v]], params } with range [lo, hi]; pick: the result fields to check; allowInfinity: Inf is a
+ * documented result (meanFreePath in a vacuum). Functions in `skipped` say why they are not swept.
  */
 export const STRESS_DOMAINS = {
+  ...termDomains(),
   srgbToLinear: { args: [SRGB], range: ZERO_TO_ONE },
   linearToSrgb: { args: [SRGB], range: ZERO_TO_ONE },
-  fresnelSchlick: { args: [F0, COS], range: ZERO_TO_ONE },
   fresnelSchlickSG: { args: [F0, COS], range: ZERO_TO_ONE },
-  fresnelDielectric: { args: [COS, ETA], range: ZERO_TO_ONE },
   fresnelConductor: { args: [COS, ETA, K], range: ZERO_TO_ONE },
   f0FromIor: { args: [ETA, K], range: ZERO_TO_ONE },
   iorFromF0: { args: [[-1, 0, 0.04, 0.999, 1, 2]], range: [1, Infinity] },
@@ -84,9 +108,7 @@ export const STRESS_DOMAINS = {
   clampAbc: { args: [ABC, ABC], range: [0.01, 1e4] },
   clampSgd: { args: [ALPHA, SGD_P], range: [0, 2] },
   ndfGGX: { args: [COS, ALPHA], range: NON_NEGATIVE },
-  ndfGGXFromSin2: { args: [COS, [0, 1e-12, 0.5, 1], ALPHA], range: NON_NEGATIVE },
   ndfBeckmann: { args: [COS, ALPHA], range: NON_NEGATIVE },
-  ndfBeckmannFromSin2: { args: [COS, [0, 1e-12, 0.5, 1], ALPHA], range: NON_NEGATIVE },
   ndfBlinnPhong: { args: [COS, EXPONENT], range: NON_NEGATIVE },
   ndfBlinnPhongFromSin2: { args: [COS, [0, 1e-300, 1e-12, 0.5, 1], EXPONENT], range: NON_NEGATIVE },
   ndfABC: { args: [COS, ABC, ABC], range: NON_NEGATIVE },
@@ -111,17 +133,9 @@ export const STRESS_DOMAINS = {
   matchNdfWidths: { args: [[1, 10, 40]], range: NON_NEGATIVE },
   erf: { args: [[-30, -2.5, -1e-9, 0, 1e-9, 2.5, 30]], range: [-1, 1] },
   erfc: { args: [[0, 1e-9, 2.4999, 2.5, 10, 30]], range: [0, 2] },
-  visibilityImplicit: { args: [COS, COS], range: ZERO_TO_ONE },
-  visibilityCookTorrance: { args: [COS, COS, COS, COS], range: NON_NEGATIVE },
-  visibilityKelemen: { args: [COS], range: NON_NEGATIVE },
   smithG1GGX: { args: [COS, ALPHA], range: ZERO_TO_ONE },
   smithG1Beckmann: { args: [COS, ALPHA], range: ZERO_TO_ONE },
   smithG1BeckmannWalter: { args: [COS, ALPHA], range: ZERO_TO_ONE },
-  visibilitySmithGGXSeparable: { args: [COS, COS, ALPHA], range: NON_NEGATIVE },
-  visibilitySmithGGXCorrelated: { args: [COS, COS, ALPHA], range: NON_NEGATIVE },
-  visibilitySmithGGXCorrelatedFast: { args: [COS, COS, ALPHA], range: NON_NEGATIVE },
-  visibilitySchlickGGX: { args: [COS, COS, ALPHA], range: NON_NEGATIVE },
-  visibilitySmithBeckmannSeparable: { args: [COS, COS, ALPHA], range: NON_NEGATIVE },
   halfVector: { pairs: PAIRS, range: [-1, 1], nullable: true },
   brdfAngles: { pairs: PAIRS, range: [-1, 1] },
   halfDiffAngles: { pairs: PAIRS.filter(([l, v]) => l.some((x, i) => x !== -v[i])), range: [0, Math.PI] },

@@ -35,7 +35,7 @@ export function sweepJs({ limit = Infinity } = {}) {
     let outside = 0;
     let worst = null;
     for (const args of inputs) {
-      const result = M[name](...args);
+      const result = (spec.fn ?? M[name])(...args);
       const out = spec.pick ? spec.pick.map((k) => result[k]) : result;
       if (result === null && spec.nullable) continue;
       for (const x of numbersIn(out)) {

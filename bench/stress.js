@@ -8,7 +8,8 @@ const pad = (s, n) => String(s).padEnd(n);
 console.log(`${pad('JS function', 44)}${pad('inputs', 8)}${pad('range', 18)}NaN  Inf  outside`);
 for (const r of rows)
   console.log(
-    `${pad(r.name, 44)}${pad(r.inputs, 8)}${pad(`[${r.range.join(', ')}]`, 18)}${pad(r.nan, 5)}${pad(r.inf, 5)}${r.outside}${r.worst ? `   e.g. ${JSON.stringify(r.worst)}` : ''}`,
+    [pad(r.name, 44), pad(r.inputs, 8), pad(`[${r.range.join(', ')}]`, 18), pad(r.nan, 5), pad(r.inf, 5)].join('') +
+      `${r.outside}${r.worst ? `   e.g. ${JSON.stringify(r.worst)}` : ''}`,
   );
 const jsBad = rows.reduce((s, r) => s + r.nan + r.inf + r.outside, 0);
 if (unclassified.length)
@@ -28,6 +29,7 @@ console.log(`\n${pad('GLSL function', 46)}${pad('inputs', 8)}NaN/Inf/outside`);
 for (const r of gl) console.log(`${pad(r.name, 46)}${pad(r.count, 8)}${r.invalid}`);
 const glBad = gl.reduce((s, r) => s + r.invalid, 0);
 console.log(
-  `\nJS: ${rows.length} functions, ${rows.reduce((s, r) => s + r.inputs, 0)} evaluations, ${jsBad} bad. GLSL: ${gl.length} functions, ${gl.reduce((s, r) => s + r.count, 0)} inputs, ${glBad} bad.`,
+  `\nJS: ${rows.length} functions, ${rows.reduce((s, r) => s + r.inputs, 0)} evaluations, ${jsBad} bad. GLSL: ` +
+    `${gl.length} functions, ${gl.reduce((s, r) => s + r.count, 0)} inputs, ${glBad} bad.`,
 );
 process.exit(jsBad + glBad + unclassified.length ? 1 : 0);

@@ -4,6 +4,9 @@
 import * as THREE from 'three';
 import { assembleGlsl } from '../src/core/gpu/glsl.js';
 import { SHADER_CHUNKS } from '../src/core/gpu/shader-chunks.js';
+import { termDefines } from '../src/math/catalogue/index.js';
+
+const MESH_STANDARD_TERMS = termDefines({ F: 'schlick', D: 'ggx', V: 'smithGGXCorrelated', diffuse: 'lambert' });
 
 export function compareWithMeshStandard({ size = 512, frames = 9 } = {}) {
   const canvas = document.createElement('canvas');
@@ -26,13 +29,10 @@ export function compareWithMeshStandard({ size = 512, frames = 9 } = {}) {
       uAlpha: { value: alpha },
       uF0: { value: 0.04 },
       uDiffuse: { value: 0.5 },
-      uExponent: { value: 1 },
-      uA1: { value: 1 },
-      uA2: { value: 1 },
-      uSgdP: { value: 0 },
+      uSigma: { value: 0 },
     },
     vertexShader: SHADER_CHUNKS['surface.vert.glsl'],
-    fragmentShader: assembleGlsl(SHADER_CHUNKS['brdf-sphere.frag.glsl'], { defines: { DIFFUSE_LAMBERT: true } }),
+    fragmentShader: assembleGlsl(SHADER_CHUNKS['brdf-sphere.frag.glsl'], { defines: MESH_STANDARD_TERMS }),
   });
   // three's roughness r gives alpha = r²; F0 = 0.04 for metalness 0
   const theirs = new THREE.MeshStandardMaterial({

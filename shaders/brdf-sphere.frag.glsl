@@ -1,16 +1,23 @@
-// A sphere shaded by one microfacet BRDF under one punctual light (the talk's L = pi f c_light (n·l)),
-// (with DIFFUSE_LAMBERT plus a Lambert term), or, with FURNACE, in a uniform white environment with F = 1: the
-// directional albedo E(n·v), scale + bias of the split-sum table uDfg (GGX, height-correlated Smith); with
-// FURNACE_KULLA_CONTY or FURNACE_TURQUIN, that albedo with the energy compensation (multiple-scattering.glsl).
-// The term switches of brdf.glsl pick D (NDF_*), V (VIS_*) and F (F_ONE or Schlick); only those compile.
-// With DIFFUSE_ONLY the sphere has a diffuse term alone, picked by DIFFUSE_MODEL_* (Lambert without one).
+// A sphere shaded by one BRDF under one punctual light (the talk's L = pi f c_light (n·l)), or, with FURNACE, in a
+// uniform white environment with F = 1: the directional albedo E(n·v), scale + bias of the split-sum table uDfg
+// (GGX, height-correlated Smith); with COMPENSATION_KULLA_CONTY or COMPENSATION_TURQUIN, that albedo with the
+// energy compensation (multiple-scattering.glsl).
+// Under the light the BRDF has two layers: the specular lobe of brdf.glsl (its term switches NDF_*, VIS_*, F_*
+// pick D, V and F), off with SPECULAR_OFF; and the diffuse term of diffuse-term.glsl, there when a DIFFUSE_* term
+// switch is given and not DIFFUSE_OFF. Only what is on compiles.
 #include "color.glsl"
-#if defined(FURNACE_KULLA_CONTY) || defined(FURNACE_TURQUIN)
+#if defined(COMPENSATION_KULLA_CONTY) || defined(COMPENSATION_TURQUIN)
 #include "multiple-scattering.glsl"
 #elif defined(FURNACE)
 #include "integrate.glsl"
-#elif !defined(DIFFUSE_ONLY)
+#else
+#ifndef SPECULAR_OFF
 #include "brdf.glsl"
+#endif
+#include "diffuse-term.glsl"
+#if !defined(DIFFUSE_TERM_NONE) && !defined(DIFFUSE_OFF)
+#define DIFFUSE_LAYER
+#endif
 #endif
 
 in vec3 vNormal;
@@ -20,26 +27,22 @@ uniform float uLightIntensity;
 uniform float uExposure;
 uniform float uAlpha;
 uniform float uF0;
-#if defined(FURNACE) && !defined(FURNACE_KULLA_CONTY) && !defined(FURNACE_TURQUIN)
+#if defined(FURNACE) && !defined(COMPENSATION_KULLA_CONTY) && !defined(COMPENSATION_TURQUIN)
 uniform sampler2D uDfg;
 #endif
+#ifdef DIFFUSE_LAYER
+uniform float uDiffuse;
+uniform float uSigma;
+#endif
 out vec4 fragColor;
-
-// either switch brings the diffuse term in (included once)
-#ifdef DIFFUSE_LAMBERT
-#include "diffuse-sphere.glsl"
-#endif
-#ifdef DIFFUSE_ONLY
-#include "diffuse-sphere.glsl"
-#endif
 
 void main() {
   vec3 n = normalize(vNormal);
   vec3 v = isOrthographic ? vec3(0.0, 0.0, 1.0) : normalize(-vViewPosition);
   float nv = dot(n, v);
-#if defined(FURNACE_KULLA_CONTY)
+#if defined(COMPENSATION_KULLA_CONTY)
   float radiance = specularAlbedoKullaConty(nv, uAlpha, 1.0);
-#elif defined(FURNACE_TURQUIN)
+#elif defined(COMPENSATION_TURQUIN)
   float radiance = specularAlbedoTurquin(nv, uAlpha, 1.0);
 #elif defined(FURNACE)
   vec2 ab = texture(uDfg, dfgTableUv(nv, uAlpha)).rg;
@@ -49,13 +52,13 @@ void main() {
   vec3 t = normalize(abs(n.z) < 0.999 ? cross(vec3(0.0, 0.0, 1.0), n) : cross(vec3(1.0, 0.0, 0.0), n));
   mat3 toLocal = transpose(mat3(t, cross(n, t), n));
   vec3 l = toLocal * normalize(uLightDir);
-#ifdef DIFFUSE_ONLY
-  float f = diffuseTerm(l, toLocal * v);
-#else
-  float f = microfacetBRDF(l, toLocal * v, uAlpha, uF0);
-#ifdef DIFFUSE_LAMBERT
-  f += diffuseTerm(l, toLocal * v);
+  vec3 vLocal = toLocal * v;
+  float f = 0.0;
+#ifndef SPECULAR_OFF
+  f += microfacetBRDF(l, vLocal, uAlpha, uF0);
 #endif
+#ifdef DIFFUSE_LAYER
+  f += diffuseTerm(l, vLocal, vec3(uDiffuse), vec3(uF0), uSigma).x;
 #endif
   float radiance = PI * f * uLightIntensity * max(l.z, 0.0);
 #endif

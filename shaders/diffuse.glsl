@@ -1,6 +1,13 @@
 // Diffuse terms, mirrors src/math/diffuse.js (see there for the forms and sources).
 #include "fresnel.glsl"
 
+// cos of the azimuth between l and v about n = z; 1 where either lies along n (no term depends on it there),
+// as cosPhiDiff of src/widgets/diffuse-explorer/model.js
+float cosPhiDiff(vec3 l, vec3 v) {
+  float d = dot(l.xy, l.xy) * dot(v.xy, v.xy);
+  return d > 1e-12 ? dot(l.xy, v.xy) / sqrt(d) : 1.0;
+}
+
 float diffuseLambert(float cdiff) { return saturate(cdiff) / PI; }
 
 float diffuseFresnelWeighted(float nl, float nv, float f0, float cdiff) {

@@ -1,7 +1,8 @@
 // The Fresnel-zones demo. Switches (one program per combination, only the used code is compiled):
 //   SHOW_FRESNEL   draw the material's Fresnel reflectance of n·v instead of zone colours
 //   ZONE_BY_LH     zones of l·h instead of n·v
-//   WEIGHTED       weight each zone by the rest of the specular BRDF (GGX D, height-correlated Smith V)
+//   WEIGHTED       weight each zone by the rest of the specular BRDF, D·V, with the terms' own switches
+//                  NDF_* and VIS_* (the catalogue's; the widget passes GGX and height-correlated Smith)
 //   METAL / FRESNEL_SCHLICK   which Fresnel the material uses
 //   STATS_PASS     write one-hot zone coverage (times the weight) for the GPU sum instead of a colour
 #include "zones.glsl"
@@ -10,7 +11,8 @@
 #include "fresnel.glsl"
 #endif
 #ifdef WEIGHTED
-#include "visibility.glsl"
+#include "ndf-term.glsl"
+#include "visibility-term.glsl"
 #endif
 
 in vec3 vNormal;
@@ -52,7 +54,9 @@ void main() {
   float weight = 1.0;
 #ifdef WEIGHTED
   float nl = dot(n, l);
-  weight = PI * ndfGGX(dot(n, h), uAlpha) * visibilitySmithGGXCorrelated(nl, nv, uAlpha) / 4.0 * max(nl, 0.0);
+  float nh = dot(n, h);
+  float d = ndfTerm(nh, sin2FromCos(min(nh, 1.0)), uAlpha); // sin²θh from n·h as ndfGGX has it (no local frame)
+  weight = PI * d * visibilityTerm(nl, nv, nh, dot(l, h), uAlpha) / 4.0 * max(nl, 0.0);
 #endif
 #ifdef STATS_PASS
   fragColor = vec4(zone == 0 ? weight : 0.0, zone == 1 ? weight : 0.0, zone == 2 ? weight : 0.0, 1.0);

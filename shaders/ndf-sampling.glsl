@@ -1,14 +1,16 @@
 // Microfacet normals for the lab's sampling (importance sampling, its reference, the split sum's prefilter),
-// drawn from the chosen NDF (brdf.glsl's switch: Beckmann with NDF_BECKMANN, else GGX), and the density
+// drawn from the chosen NDF (NDF_GGX or NDF_BECKMANN: the two with a sampling routine), and the density
 // D(m)(n·m) they are drawn with.
-#include "brdf.glsl"
+#include "ndf-term.glsl"
 #include "integrate.glsl"
 
 vec3 sampleLobeNormal(vec2 u, float alpha) {
-#ifdef NDF_BECKMANN
+#if defined(NDF_BECKMANN)
   return sampleBeckmannNormal(u, alpha);
-#else
+#elif defined(NDF_GGX)
   return sampleGGXNormal(u, alpha);
+#else
+#error "ndf-sampling.glsl: only NDF_GGX and NDF_BECKMANN are sampled"
 #endif
 }
 

@@ -6,7 +6,8 @@
 //             { kind: 'number', label, unit }: typed into a box; { kind: 'choice', choices(params) }: picked.
 //   widget    the widget it reads (null: any widget, or none); reads: state keys the student sets (left free);
 //             given: state keys that pose the question (must be locked); requires: locked values it assumes.
-//   params    a state-style schema (src/core/framework/state.js) for the file's "params"; `required: true` has no default.
+//   params    a state-style schema (src/core/framework/state.js) for the file's "params"; `required: true` has no
+//             default.
 //   tolerance what the file's "tolerance" (a positive number) means.
 //   grade({ state, answer, params, tolerance, hidden }) → { ok, summary, details: [text] }
 //   hide(params, random) → the secret part of the question, drawn when the exercise opens (optional).
@@ -22,6 +23,7 @@ import { transmittance, waterAbsorptionRgb } from '../math/media.js';
 import { FRESNEL_ZONE_BOUNDS_DEG, fresnelZone } from '../math/zones.js';
 import { displayRms, highlightArea, peakOf, sphereRadiance } from './sphere-image.js';
 import { DEG } from '../math/angles.js';
+import { termOptions } from '../math/catalogue/index.js';
 
 /** A number for feedback: 3 significant digits, no exponent for everyday sizes. */
 export const fmt = (x, digits = 3) => {
@@ -33,23 +35,9 @@ export const fmt = (x, digits = 3) => {
 const pct = (x) => `${fmt(x * 100)}%`;
 const times = (r) => `${fmt(r, 2)}×`;
 
-export const NDF_NAMES = {
-  ggx: 'GGX',
-  beckmann: 'Beckmann',
-  blinnPhong: 'Blinn-Phong',
-  abc: 'ABC',
-  sgd: 'Shifted gamma (SGD)',
-};
-export const VISIBILITY_NAMES = {
-  implicit: 'Implicit',
-  cookTorrance: 'Cook-Torrance',
-  kelemen: 'Kelemen',
-  smithGGXSeparable: 'Smith GGX, separable',
-  smithGGXCorrelated: 'Smith GGX, height-correlated',
-  smithGGXCorrelatedFast: 'Hammon 2017',
-  schlickGGX: 'Schlick-GGX',
-  smithBeckmannSeparable: 'Smith Beckmann, separable',
-};
+/** The terms' one labels (src/math/catalogue), as graders' choices and in their feedback. */
+export const NDF_NAMES = termOptions('ndf');
+export const VISIBILITY_NAMES = termOptions('visibility');
 const CHANNELS = { r: 'red (650 nm)', g: 'green (550 nm)', b: 'blue (450 nm)' };
 const ZONES = { green: 'green (θ < 45°)', yellow: 'yellow (45°–75°)', red: 'red (θ > 75°)' };
 
@@ -129,7 +117,8 @@ export const GRADERS = {
   'transmittance-depth': {
     title: 'Water depth for a transmittance',
     summary:
-      'The depth of clear water (Hale & Querry) at which one RGB channel keeps `threshold` of its light: d = −ln(threshold) / σa.',
+      'The depth of clear water (Hale & Querry) at which one RGB channel keeps `threshold` of its light: d = ' +
+      '−ln(threshold) / σa.',
     answer: { kind: 'number', label: 'Depth', unit: 'm' },
     widget: null,
     params: {
@@ -145,7 +134,9 @@ export const GRADERS = {
       if (Math.abs(answer - target) <= tolerance) {
         return {
           ok: true,
-          summary: `Right: at ${fmt(answer)} m water keeps ${pct(left)} of the ${name} light; the threshold is ${pct(params.threshold)} (within ±${fmt(tolerance)} m).`,
+          summary:
+            `Right: at ${fmt(answer)} m water keeps ${pct(left)} of the ${name} light; the threshold is ` +
+            `${pct(params.threshold)} (within ±${fmt(tolerance)} m).`,
           details: [],
         };
       }
@@ -153,7 +144,8 @@ export const GRADERS = {
         ok: false,
         summary: `${offBy(answer, target, ' m')}; needs to be within ±${fmt(tolerance)} m.`,
         details: [
-          `At ${fmt(answer)} m, ${pct(left)} of the ${name} light is left; the exercise asks where ${pct(params.threshold)} is left.`,
+          `At ${fmt(answer)} m, ${pct(left)} of the ${name} light is left; the exercise asks where ` +
+            `${pct(params.threshold)} is left.`,
           answer < target ? 'Go deeper.' : 'The light was already below the threshold at a shallower depth.',
         ],
       };
@@ -183,7 +175,9 @@ export const GRADERS = {
       const wantUp = params.target > R;
       return {
         ok: false,
-        summary: `${where}: ${fmt(Math.abs(R - params.target) * 100)} points ${R < params.target ? 'below' : 'above'} the target ${pct(params.target)} (needs ± ${pct(tolerance)}).`,
+        summary:
+          `${where}: ${fmt(Math.abs(R - params.target) * 100)} points ` +
+          `${R < params.target ? 'below' : 'above'} the target ${pct(params.target)} (needs ± ${pct(tolerance)}).`,
         details: [`${wantUp === rising ? 'Raise' : 'Lower'} the angle of incidence.`],
       };
     },
@@ -192,7 +186,8 @@ export const GRADERS = {
   'sphere-match': {
     title: 'Match a sphere',
     summary:
-      'Match the target sphere (GGX, height-correlated Smith, Schlick F with F0 and α) by the RMS difference of the two pictures on a size × size grid.',
+      'Match the target sphere (GGX, height-correlated Smith, Schlick F with F0 and α) by the RMS difference of ' +
+      'the two pictures on a size × size grid.',
     answer: { kind: 'state' },
     widget: 'brdf-lobe',
     reads: ['f0', 'alpha'],
@@ -248,7 +243,9 @@ export const GRADERS = {
         };
       return {
         ok: false,
-        summary: `${where}: ${fmt(Math.abs(G1 - params.target))} ${G1 > params.target ? 'above' : 'below'} the target ${fmt(params.target)} (needs ± ${fmt(tolerance)}).`,
+        summary:
+          `${where}: ${fmt(Math.abs(G1 - params.target))} ${G1 > params.target ? 'above' : 'below'} the ` +
+          `target ${fmt(params.target)} (needs ± ${fmt(tolerance)}).`,
         details: [
           G1 > params.target
             ? 'Too little is masked: view the surface at a more grazing angle.'
@@ -275,7 +272,9 @@ export const GRADERS = {
       if (Math.abs(answer - loss) <= tolerance)
         return {
           ok: true,
-          summary: `Right: the white furnace loses ${fmt(loss)}% at α = ${params.alpha}, θ = ${params.thetaDeg}° (within ±${fmt(tolerance)} points).`,
+          summary:
+            `Right: the white furnace loses ${fmt(loss)}% at α = ${params.alpha}, θ = ` +
+            `${params.thetaDeg}° (within ±${fmt(tolerance)} points).`,
           details: [],
         };
       return {
@@ -283,7 +282,8 @@ export const GRADERS = {
         summary: `${offBy(answer, loss, '%')}; needs to be within ±${fmt(tolerance)} points.`,
         details: [
           answer < loss
-            ? 'More light is lost than that: rough surfaces send much of it into second bounces that single scattering ignores.'
+            ? 'More light is lost than that: rough surfaces send much of it into second bounces that single ' +
+              'scattering ignores.'
             : 'Less is lost than that: read the albedo E at the angle, the loss is 1 − E.',
         ],
       };
@@ -293,8 +293,10 @@ export const GRADERS = {
   'multiple-scattering-gain': {
     title: 'Energy that multiple bounces give back',
     summary:
-      'The percentage points of albedo a GGX metal (height-correlated Smith, Schlick’s F of F0 at every bounce) gains ' +
-      'from light that bounces more than once: 100 (A − A₁), A the albedo and A₁ its first bounce, by the random walk on the ' +
+      'The percentage points of albedo a GGX metal (height-correlated Smith, Schlick’s F of F0 at every bounce) ' +
+      'gains ' +
+      'from light that bounces more than once: 100 (A − A₁), A the albedo and A₁ its first bounce, by the ' +
+      'random walk on the ' +
       'Smith microsurface (Heitz et al. 2016; 100 000 seeded paths, standard error about 0.1 point).',
     answer: { kind: 'number', label: 'Energy given back', unit: 'percentage points' },
     widget: null,
@@ -307,7 +309,9 @@ export const GRADERS = {
     grade({ answer, params, tolerance }) {
       const walk = randomWalkAlbedoGGX(Math.cos(params.thetaDeg * DEG), params.alpha, params.f0, 100_000, 1);
       const gain = 100 * (walk.albedo - walk.single);
-      const where = `at α = ${params.alpha}, F0 = ${params.f0}, θ = ${params.thetaDeg}° one bounce reflects ${fmt(100 * walk.single)}% and all bounces ${fmt(100 * walk.albedo)}%`;
+      const where =
+        `at α = ${params.alpha}, F0 = ${params.f0}, θ = ${params.thetaDeg}° one bounce reflects ` +
+        `${fmt(100 * walk.single)}% and all bounces ${fmt(100 * walk.albedo)}%`;
       if (Math.abs(answer - gain) <= tolerance)
         return {
           ok: true,
@@ -319,8 +323,10 @@ export const GRADERS = {
         summary: `${offBy(answer, gain, ' points')}; needs to be within ±${fmt(tolerance)} points.`,
         details: [
           answer < gain
-            ? 'More comes back than that: a metal reflects most of what reaches a second facet, so most of what single scattering loses returns.'
-            : 'Less comes back than that: only what single scattering loses (1 − E with F = 1) can return, and each bounce keeps only F of it.',
+            ? 'More comes back than that: a metal reflects most of what reaches a second facet, so most of what ' +
+              'single scattering loses returns.'
+            : 'Less comes back than that: only what single scattering loses (1 − E with F = 1) can return, and ' +
+              'each bounce keeps only F of it.',
         ],
       };
     },
@@ -329,7 +335,8 @@ export const GRADERS = {
   'light-zone': {
     title: 'Place the light for a Fresnel zone',
     summary:
-      'Move the light so that l·h falls in `zone` (orthographic view: l·h = cos(θ/2) everywhere, θ the light’s angle from the view).',
+      'Move the light so that l·h falls in `zone` (orthographic view: l·h = cos(θ/2) everywhere, θ the light’s ' +
+      'angle from the view).',
     answer: { kind: 'state' },
     widget: 'fresnel-zones',
     reads: ['lightTheta'],
@@ -342,14 +349,19 @@ export const GRADERS = {
       const want = Object.keys(ZONES).indexOf(params.zone);
       const [lo, hi] = [[0, ...FRESNEL_ZONE_BOUNDS_DEG][want], [...FRESNEL_ZONE_BOUNDS_DEG, 90][want]];
       const clears = thetaD >= lo + (lo > 0 ? tolerance : 0) && thetaD <= hi - (hi < 90 ? tolerance : 0);
-      const where = `The light is ${state.lightTheta}° from the view, so θd = ${fmt(thetaD)}° and l·h = ${fmt(Math.cos(thetaD * DEG))}: the object is ${got}`;
+      const where =
+        `The light is ${state.lightTheta}° from the view, so θd = ${fmt(thetaD)}° and l·h = ` +
+        `${fmt(Math.cos(thetaD * DEG))}: the object is ${got}`;
       if (got === params.zone && clears) return { ok: true, summary: `Right: ${where}.`, details: [] };
       const gap = thetaD < lo + tolerance ? lo + tolerance - thetaD : thetaD - (hi - tolerance);
       return {
         ok: false,
-        summary: `${where}; the exercise wants it ${ZONES[params.zone]}, with θd at least ${fmt(tolerance)}° inside the zone.`,
+        summary:
+          `${where}; the exercise wants it ${ZONES[params.zone]}, with θd at least ${fmt(tolerance)}° ` +
+          `inside the zone.`,
         details: [
-          `Move the light about ${fmt(2 * gap, 2)}° ${thetaD < lo + tolerance ? 'further from' : 'closer to'} the view (θd changes half as fast as the light).`,
+          `Move the light about ${fmt(2 * gap, 2)}° ${thetaD < lo + tolerance ? 'further from' : 'closer to'} ` +
+            `the view (θd changes half as fast as the light).`,
         ],
       };
     },
@@ -358,7 +370,8 @@ export const GRADERS = {
   'schlick-worst-angle': {
     title: 'Where Schlick is worst',
     summary:
-      'The angle of incidence at which Schlick’s approximation is furthest from exact Fresnel, for the widget’s custom IOR (0.01° scan).',
+      'The angle of incidence at which Schlick’s approximation is furthest from exact Fresnel, for the widget’s ' +
+      'custom IOR (0.01° scan).',
     answer: { kind: 'number', label: 'Angle', unit: '°' },
     widget: 'fresnel-curves',
     given: ['ior'],
@@ -372,14 +385,17 @@ export const GRADERS = {
       if (Math.abs(answer - worst.deg) <= tolerance)
         return {
           ok: true,
-          summary: `Right: Schlick is worst at ${fmt(worst.deg)}°, off by ${fmt(worst.error)} (within ±${fmt(tolerance)}°).`,
+          summary:
+            `Right: Schlick is worst at ${fmt(worst.deg)}°, off by ${fmt(worst.error)} (within ` +
+            `±${fmt(tolerance)}°).`,
           details: [],
         };
       return {
         ok: false,
         summary: `${offBy(answer, worst.deg, '°')}; needs to be within ±${fmt(tolerance)}°.`,
         details: [
-          `At ${fmt(answer)}° Schlick is off by ${fmt(there)}; at its worst it is off by ${fmt(worst.error)}, ${times(worst.error / Math.max(there, 1e-12))} as much.`,
+          `At ${fmt(answer)}° Schlick is off by ${fmt(there)}; at its worst it is off by ${fmt(worst.error)}, ` +
+            `${times(worst.error / Math.max(there, 1e-12))} as much.`,
         ],
       };
     },
@@ -388,7 +404,9 @@ export const GRADERS = {
   'ndf-profile': {
     title: 'Which NDF made the highlight',
     summary:
-      'The page shows a highlight made by a hidden NDF (`hidden`, or a random one) at half width `hwhm`; a choice is right when its profile D(θh)/D(0) at that width matches the highlight’s wherever the highlight is at least `floor` of its peak.',
+      'The page shows a highlight made by a hidden NDF (`hidden`, or a random one) at half width `hwhm`; a ' +
+      'choice is right when its profile D(θh)/D(0) at that width matches the highlight’s wherever the highlight ' +
+      'is at least `floor` of its peak.',
     answer: { kind: 'choice', choices: () => NDF_NAMES },
     widget: null,
     params: {
@@ -426,7 +444,9 @@ export const GRADERS = {
     grade({ answer, params, tolerance, hidden }) {
       const profiles = ndfProfiles(params.hwhm, params);
       const mine = profileFactor(profiles[answer], profiles[hidden], params.floor);
-      const verdict = `${NDF_NAMES[answer]}’s profile is within a factor ${fmt(mine.factor, 3)} of the highlight’s wherever the highlight is above ${pct(params.floor)} of its peak`;
+      const verdict =
+        `${NDF_NAMES[answer]}’s profile is within a factor ${fmt(mine.factor, 3)} of the ` +
+        `highlight’s wherever the highlight is above ${pct(params.floor)} of its peak`;
       if (mine.factor <= tolerance)
         return { ok: true, summary: `Right: ${verdict} (${fmt(tolerance, 3)} allowed).`, details: [] };
       const side =
@@ -435,7 +455,9 @@ export const GRADERS = {
           : 'darker';
       return {
         ok: false,
-        summary: `${NDF_NAMES[answer]}’s profile is ${times(mine.factor)} ${side} than the highlight’s at θh = ${fmt(mine.deg)}°; a match needs ≤ ${fmt(tolerance, 3)}×.`,
+        summary:
+          `${NDF_NAMES[answer]}’s profile is ${times(mine.factor)} ${side} than the highlight’s at θh = ` +
+          `${fmt(mine.deg)}°; a match needs ≤ ${fmt(tolerance, 3)}×.`,
         details: [
           side === 'brighter'
             ? 'The highlight’s tail falls off faster than your choice’s.'
@@ -462,7 +484,9 @@ export const GRADERS = {
       const num = visibilityAtMirror(params.numerator, params.thetaDeg, state.alpha);
       const den = visibilityAtMirror(params.denominator, params.thetaDeg, state.alpha);
       const ratio = num / den;
-      const what = `${VISIBILITY_NAMES[params.numerator]} / ${VISIBILITY_NAMES[params.denominator]} at ${params.thetaDeg}°, α = ${state.alpha}`;
+      const what =
+        `${VISIBILITY_NAMES[params.numerator]} / ${VISIBILITY_NAMES[params.denominator]} at ` +
+        `${params.thetaDeg}°, α = ${state.alpha}`;
       if (Math.abs(answer - ratio) <= tolerance)
         return { ok: true, summary: `Right: ${what} is ${fmt(ratio)} (within ±${fmt(tolerance)}).`, details: [] };
       return {
@@ -476,7 +500,8 @@ export const GRADERS = {
   'lambert-radiance': {
     title: 'Brightness of a Lambertian surface',
     summary:
-      'Radiance of a Lambertian surface (albedo cdiff) under a punctual light c_light at `thetaDeg` from the normal: Lo = π (cdiff/π) c_light cos θ.',
+      'Radiance of a Lambertian surface (albedo cdiff) under a punctual light c_light at `thetaDeg` from the ' +
+      'normal: Lo = π (cdiff/π) c_light cos θ.',
     answer: { kind: 'number', label: 'Radiance Lo', unit: '' },
     widget: null,
     params: {

@@ -22,7 +22,10 @@ const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v)
 const sameValue = (a, b) =>
   JSON.stringify(Array.isArray(a) ? [...a].sort() : a) === JSON.stringify(Array.isArray(b) ? [...b].sort() : b);
 
-/** Why `value` does not fit state field `f` (src/core/framework/state.js kinds), or null. Strict: no strings for numbers. */
+/**
+ * Why `value` does not fit state field `f` (src/core/framework/state.js kinds), or null. Strict: no strings for
+ * numbers.
+ */
 export function fieldProblem(f, value) {
   switch (f.type) {
     case 'number':
@@ -57,38 +60,36 @@ function requiredText(raw, key, errors) {
   if (typeof raw[key] !== 'string' || !raw[key].trim()) errors.push(`${key}: missing (a non-empty string)`);
 }
 
-/**
- * raw: the parsed file. schemaOf(name): the widget's state schema (async; the page loads the widget module).
- * Returns { exercise (normalised: params with defaults, locked and state filled in), errors }.
- */
-export async function validateExercise(raw, { schemaOf }) {
-  if (!isObject(raw)) return { exercise: null, errors: ['the exercise is not a JSON object'] };
-  const errors = [];
+/** The fields that stand alone: unknown keys, id, chapter, title, prompt and tolerance. */
+function headerProblems(raw, errors) {
   for (const key of Object.keys(raw))
     if (!FIELDS.includes(key)) errors.push(`${key}: unknown field (fields: ${FIELDS.join(', ')})`);
-
-  if (typeof raw.id !== 'string' || !/^[a-z0-9][a-z0-9-]*$/.test(raw.id))
-    errors.push(
-      `id: ${raw.id === undefined ? 'missing' : `${show(raw.id)} is not`} a name of lower-case letters, digits and dashes`,
-    );
+  if (typeof raw.id !== 'string' || !/^[a-z0-9][a-z0-9-]*$/.test(raw.id)) {
+    const what = raw.id === undefined ? 'missing' : `${show(raw.id)} is not`;
+    errors.push(`id: ${what} a name of lower-case letters, digits and dashes`);
+  }
   const chapters = CHAPTERS.map((c) => c.key);
-  if (!chapters.includes(raw.chapter))
-    errors.push(
-      `chapter: ${raw.chapter === undefined ? 'missing' : `${show(raw.chapter)} is not a chapter`} (chapters: ${chapters.join(', ')})`,
-    );
+  if (!chapters.includes(raw.chapter)) {
+    const what = raw.chapter === undefined ? 'missing' : `${show(raw.chapter)} is not a chapter`;
+    errors.push(`chapter: ${what} (chapters: ${chapters.join(', ')})`);
+  }
   requiredText(raw, 'title', errors);
   requiredText(raw, 'prompt', errors);
   if (raw.tolerance === undefined) errors.push('tolerance: missing (a positive number)');
   else if (typeof raw.tolerance !== 'number' || !(raw.tolerance > 0) || !Number.isFinite(raw.tolerance))
     errors.push(`tolerance: ${show(raw.tolerance)} is not a positive number`);
+}
 
-  const grader = isGraderName(raw.grader) ? GRADERS[raw.grader] : null;
-  if (!grader)
-    errors.push(
-      `grader: ${raw.grader === undefined ? 'missing' : `unknown grader ${show(raw.grader)}`} (graders: ${Object.keys(GRADERS).join(', ')})`,
-    );
+/** The grader named, or null (with the problem in `errors`). */
+function graderOf(raw, errors) {
+  if (isGraderName(raw.grader)) return GRADERS[raw.grader];
+  const what = raw.grader === undefined ? 'missing' : `unknown grader ${show(raw.grader)}`;
+  errors.push(`grader: ${what} (graders: ${Object.keys(GRADERS).join(', ')})`);
+  return null;
+}
 
-  // the widget and its state
+/** The widget's state schema (null without a widget or for an unknown one), its state and its locked keys. */
+async function widgetProblems(raw, grader, errors, schemaOf) {
   let schema = null;
   if (raw.widget !== undefined && raw.widget !== null) {
     schema = typeof raw.widget === 'string' ? await schemaOf(raw.widget) : null;
@@ -117,23 +118,39 @@ export async function validateExercise(raw, { schemaOf }) {
     for (const key of locked)
       if (!Object.hasOwn(schema, key)) errors.push(`locked: "${key}" is not a state key of widget "${raw.widget}"`);
   } else if (locked.length && raw.widget == null) errors.push('locked: given without a widget');
+  return { schema, widgetFits, state, locked };
+}
 
-  // what the grader needs of the state
-  if (grader && widgetFits && schema && isObject(state) && Array.isArray(locked)) {
-    const full = { ...defaultState(schema), ...state };
-    for (const key of grader.reads ?? [])
-      if (locked.includes(key))
-        errors.push(`locked: "${key}" is what the student sets for grader "${raw.grader}"; it must stay free`);
-    for (const key of grader.given ?? [])
-      if (!locked.includes(key))
-        errors.push(`locked: must include "${key}" (grader "${raw.grader}" takes the question from it)`);
-    for (const [key, value] of Object.entries(grader.requires ?? {})) {
-      if (!sameValue(full[key], value))
-        errors.push(`state.${key}: grader "${raw.grader}" needs ${show(value)}, got ${show(full[key])}`);
-      else if (!locked.includes(key))
-        errors.push(`locked: must include "${key}" (grader "${raw.grader}" assumes ${key} = ${show(value)})`);
-    }
+/** What the grader needs of the state: what the student sets stays free, what it assumes is fixed. */
+function graderNeedsProblems(raw, grader, { schema, state, locked }, errors) {
+  const full = { ...defaultState(schema), ...state };
+  for (const key of grader.reads ?? [])
+    if (locked.includes(key))
+      errors.push(`locked: "${key}" is what the student sets for grader "${raw.grader}"; it must stay free`);
+  for (const key of grader.given ?? [])
+    if (!locked.includes(key))
+      errors.push(`locked: must include "${key}" (grader "${raw.grader}" takes the question from it)`);
+  for (const [key, value] of Object.entries(grader.requires ?? {})) {
+    if (!sameValue(full[key], value))
+      errors.push(`state.${key}: grader "${raw.grader}" needs ${show(value)}, got ${show(full[key])}`);
+    else if (!locked.includes(key))
+      errors.push(`locked: must include "${key}" (grader "${raw.grader}" assumes ${key} = ${show(value)})`);
   }
+}
+
+/**
+ * raw: the parsed file. schemaOf(name): the widget's state schema (async; the page loads the widget module).
+ * Returns { exercise (normalised: params with defaults, locked and state filled in), errors }.
+ */
+export async function validateExercise(raw, { schemaOf }) {
+  if (!isObject(raw)) return { exercise: null, errors: ['the exercise is not a JSON object'] };
+  const errors = [];
+  headerProblems(raw, errors);
+  const grader = graderOf(raw, errors);
+  const widget = await widgetProblems(raw, grader, errors, schemaOf);
+  const { schema, widgetFits, state, locked } = widget;
+  if (grader && widgetFits && schema && isObject(state) && Array.isArray(locked))
+    graderNeedsProblems(raw, grader, widget, errors);
 
   const params = grader ? graderParams(raw, grader, errors) : {};
 
@@ -143,21 +160,9 @@ export async function validateExercise(raw, { schemaOf }) {
   }
 
   if (errors.length) return { exercise: null, errors };
-  return {
-    exercise: {
-      id: raw.id,
-      chapter: raw.chapter,
-      title: raw.title,
-      prompt: raw.prompt,
-      widget: raw.widget ?? null,
-      state,
-      locked,
-      grader: raw.grader,
-      params,
-      tolerance: raw.tolerance,
-    },
-    errors,
-  };
+  const { id, chapter, title, prompt, tolerance } = raw;
+  const exercise = { id, chapter, title, prompt, widget: raw.widget ?? null, state, locked, grader: raw.grader };
+  return { exercise: { ...exercise, params, tolerance }, errors };
 }
 
 /** The grader's params from raw.params, with its defaults filled in; each problem goes to `errors`. */

@@ -16,7 +16,7 @@ export const ENV_SIZE = [256, 128]; // coarse enough that the reference converge
 export const PREFILTER_SIZE = [128, 64];
 export const PREFILTER_LEVELS = 8; // layer k at perceptual roughness k/8, alpha = (k/8)²; level 0 is the map itself
 const IRRADIANCE_SIZE = [32, 16];
-const PREFILTER_DEFINES = { ggx: {}, beckmann: { NDF_BECKMANN: 1 } };
+const PREFILTER_DEFINES = { ggx: { NDF_GGX: 1 }, beckmann: { NDF_BECKMANN: 1 } };
 
 export { dfgTableData }; // decoded in dfg-table.js (plain JS, no GPU)
 

@@ -11,6 +11,7 @@ import { createGpuSum, floatTarget } from '../core/gpu/gpu-sum.js';
 import { createAlbedoTableTexture } from '../core/gpu/albedo-table-texture.js';
 import { PREFILTER_LEVELS } from './environment-maps.js';
 import { approximationInputs } from './lab-approximations.js';
+import { termDefines } from '../math/catalogue/index.js';
 
 export const EXTENT = 1.1; // the view's half width: the unit sphere fills 1/1.1 of it
 export const REFERENCE_BATCH = 8; // samples per pixel and light in one reference batch
@@ -20,14 +21,6 @@ const DIFFUSE_DEFINES = {
   'ashikhmin-shirley': 'DIFFUSE_ASHIKHMIN_SHIRLEY',
   'oren-nayar': 'DIFFUSE_OREN_NAYAR',
   'oren-nayar-qualitative': 'DIFFUSE_OREN_NAYAR_QUALITATIVE',
-};
-const NDF_DEFINES = { beckmann: 'NDF_BECKMANN' };
-const VIS_DEFINES = {
-  implicit: 'VIS_IMPLICIT',
-  cookTorrance: 'VIS_COOK_TORRANCE',
-  kelemen: 'VIS_KELEMEN',
-  smithGGXSeparable: 'VIS_SMITH_GGX_SEPARABLE',
-  schlickGGX: 'VIS_SCHLICK_GGX',
 };
 const COMPENSATION_DEFINES = { kullaConty: 'COMPENSATION_KULLA_CONTY', turquin: 'COMPENSATION_TURQUIN' };
 const ENV_DEFINES = { mirror: 'ENV_MIRROR', importance: 'ENV_IMPORTANCE', 'split-sum': 'ENV_SPLIT_SUM' };
@@ -43,7 +36,8 @@ export function sceneDefines(scene, reference) {
 }
 
 function measuredDefines({ lights, methods }, reference) {
-  const d = { MEASURED: 1 };
+  // the table is the whole BRDF; the model's terms still compile (GGX's sampling, with the fit's uAlpha)
+  const d = { MEASURED: 1, ...termDefines({ F: 'schlick', D: 'ggx', V: 'smithGGXCorrelated' }) };
   if (lights.punctual) d.LIGHT_PUNCTUAL = 1;
   if (lights.sphere) d.LIGHT_SPHERE = 1;
   if (reference) {
@@ -59,9 +53,7 @@ function modelDefines(scene, reference) {
   const d = {};
   const flag = (name) => name && (d[name] = 1);
   flag(DIFFUSE_DEFINES[scene.terms.diffuse]);
-  flag(NDF_DEFINES[scene.terms.D]);
-  flag(VIS_DEFINES[scene.terms.V]);
-  if (scene.terms.F === 'one') flag('F_ONE');
+  Object.keys(termDefines({ F: scene.terms.F, D: scene.terms.D, V: scene.terms.V })).forEach(flag);
   if (scene.terms.compensation && scene.terms.compensation !== 'none') {
     flag(COMPENSATION_DEFINES[scene.terms.compensation]);
     flag('ALBEDO_TABLE_GGX');

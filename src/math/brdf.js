@@ -1,52 +1,23 @@
 // The microfacet BRDF f(l, v) = F(l·h) D(n·h) V(l, v) / 4 assembled from named terms, and the punctual
 // light equation. Vectors are arrays [x, y, z] in the local frame, n = (0, 0, 1), pointing away from the
 // surface. f is 0 when l or v is at or below the horizon, and when l = -v leaves no half vector.
-import { fresnelConductor, fresnelDielectric, fresnelSchlick } from './fresnel.js';
-import { ndfABC, ndfBeckmannFromSin2, ndfBlinnPhongFromSin2, ndfGGXFromSin2, ndfSGD } from './ndf.js';
-import {
-  visibilityCookTorrance,
-  visibilityImplicit,
-  visibilityKelemen,
-  visibilitySchlickGGX,
-  visibilitySmithBeckmannSeparable,
-  visibilitySmithGGXCorrelated,
-  visibilitySmithGGXCorrelatedFast,
-  visibilitySmithGGXSeparable,
-} from './visibility.js';
+import { CATALOGUE } from './catalogue/index.js';
+
+/** A family's terms as { key: evaluate } (see src/math/catalogue/types.js for each family's arguments). */
+const evaluators = (family) =>
+  Object.fromEntries(Object.values(CATALOGUE[family].terms).map((term) => [term.key, term.evaluate]));
 
 /** Each F term of cos = l·h and the material params { f0, eta, k }. */
-export const FRESNEL_TERMS = {
-  one: () => 1,
-  schlick: (c, p) => fresnelSchlick(p.f0, c),
-  dielectric: (c, p) => fresnelDielectric(c, p.eta),
-  conductor: (c, p) => fresnelConductor(c, p.eta, p.k),
-};
-
-const sin2 = (c) => (1 - c) * (1 + c);
+export const FRESNEL_TERMS = evaluators('fresnel');
 
 /**
  * Each D term of n·h and the distribution params { alpha, exponent, a1, a2, p }; s2 = sin²θh when known
  * from the half vector itself (h.x² + h.y², precise near n), else from c.
  */
-export const NDF_TERMS = {
-  ggx: (c, p, s2 = sin2(c)) => ndfGGXFromSin2(c, s2, p.alpha),
-  beckmann: (c, p, s2 = sin2(c)) => ndfBeckmannFromSin2(c, s2, p.alpha),
-  blinnPhong: (c, p, s2 = sin2(c)) => ndfBlinnPhongFromSin2(c, s2, p.exponent),
-  abc: (c, p) => ndfABC(c, p.a1, p.a2),
-  sgd: (c, p) => ndfSGD(c, p.alpha, p.p),
-};
+export const NDF_TERMS = evaluators('ndf');
 
 /** Each V term of the cosines { nl, nv, nh, lh } and { alpha }. */
-export const VISIBILITY_TERMS = {
-  implicit: (a) => visibilityImplicit(a.nl, a.nv),
-  cookTorrance: (a) => visibilityCookTorrance(a.nl, a.nv, a.nh, a.lh),
-  kelemen: (a) => (a.nl > 0 && a.nv > 0 ? visibilityKelemen(a.lh) : 0),
-  smithGGXSeparable: (a, p) => visibilitySmithGGXSeparable(a.nl, a.nv, p.alpha),
-  smithGGXCorrelated: (a, p) => visibilitySmithGGXCorrelated(a.nl, a.nv, p.alpha),
-  smithGGXCorrelatedFast: (a, p) => visibilitySmithGGXCorrelatedFast(a.nl, a.nv, p.alpha),
-  schlickGGX: (a, p) => visibilitySchlickGGX(a.nl, a.nv, p.alpha),
-  smithBeckmannSeparable: (a, p) => visibilitySmithBeckmannSeparable(a.nl, a.nv, p.alpha),
-};
+export const VISIBILITY_TERMS = evaluators('visibility');
 
 /** Half vector of l and v, or null when l = -v. */
 export function halfVector(l, v) {

@@ -41,7 +41,8 @@ export function diffuseAshikhminShirley(nl, nv, f0, cdiff) {
  * With alpha = max(theta_l, theta_v), beta = min(...):
  *   C1 = 1 - 0.5 s²/(s² + 0.33),  C2 = 0.45 s²/(s² + 0.09) (sin a, or sin a - (2b/pi)³ when cos phi < 0),
  *   C3 = 0.125 s²/(s² + 0.09) (4ab/pi²)²,
- *   f = c/pi (C1 + cos phi C2 tan b + (1 - |cos phi|) C3 tan((a + b)/2)) + 0.17 c²/pi s²/(s² + 0.13) (1 - cos phi (2b/pi)²).
+ *   f = c/pi (C1 + cos phi C2 tan b + (1 - |cos phi|) C3 tan((a + b)/2))
+ *     + 0.17 c²/pi s²/(s² + 0.13) (1 - cos phi (2b/pi)²).
  * sigma = 0 gives Lambert.
  */
 export function diffuseOrenNayar(nl, nv, cosPhiDiff, sigma, cdiff) {

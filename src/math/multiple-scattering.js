@@ -65,13 +65,6 @@ export function energyCompensationTurquin(f0, E) {
   return 1 + (f0 * (1 - e)) / e;
 }
 
-/** The compensations, as one list: key, label and source. 'none' is the single-scattering model alone. */
-export const COMPENSATIONS = [
-  { key: 'none', label: 'None (single scattering)', cite: 'Walter et al. 2007; Heitz 2014' },
-  { key: 'kullaConty', label: 'Kulla–Conty', cite: 'Kulla & Conty 2017' },
-  { key: 'turquin', label: 'Turquin', cite: 'Turquin 2019' },
-];
-
 /**
  * Directional albedo ∫ f (n·l) dω of GGX with Schlick's Fresnel at f0 (one channel), with a compensation:
  * single scattering is F0·scale + bias of the split sum; Kulla–Conty adds its lobe's integral 1 - E(mu)

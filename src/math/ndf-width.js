@@ -3,6 +3,7 @@
 // for by bisection so that all five share one HWHM; the shape parameters (ABC's a2, SGD's p) stay as chosen.
 import { ndfABC, ndfBeckmann, ndfGGX, ndfSGD } from './ndf.js';
 import { DEG } from './angles.js';
+import { NDF_FAMILY } from './catalogue/ndf-terms.js';
 
 /** HWHM in degrees of D(cos), a function decreasing in theta_h. */
 export function ndfHalfWidthDeg(D) {
@@ -29,9 +30,23 @@ function solveLog(width, target, lo, hi) {
   return Math.exp((a + b) / 2);
 }
 
+const MATCHED_HERE = { ggx: 1, beckmann: 1, blinnPhong: 1, abc: 1, sgd: 1 };
+
+/**
+ * Any other NDF of the catalogue: its width parameter (its first) solved for, the others at mid-range. The search
+ * runs over the parameter's range on a log scale (from 1e-6 when the range starts at 0).
+ */
+function matchWidthParam(term, hwhmDeg) {
+  const [[name, range], ...others] = Object.entries(term.params);
+  const fixed = Object.fromEntries(others.map(([key, p]) => [key, (p.min + p.max) / 2]));
+  const width = (x) => ndfHalfWidthDeg((c) => term.evaluate(c, { ...fixed, [name]: x }));
+  return { ...fixed, [name]: solveLog(width, hwhmDeg, Math.max(range.min, 1e-6), range.max) };
+}
+
 /**
  * Parameters that give every NDF the half width `hwhmDeg` (1°–40°):
- * { ggx: { alpha }, beckmann: { alpha }, blinnPhong: { exponent }, abc: { a1, a2 }, sgd: { alpha, p } }.
+ * { ggx: { alpha }, beckmann: { alpha }, blinnPhong: { exponent }, abc: { a1, a2 }, sgd: { alpha, p } }, and
+ * for every other NDF of the catalogue its parameters by matchWidthParam.
  */
 export function matchNdfWidths(hwhmDeg, { abcA2 = 2.5, sgdP = 0.64 } = {}) {
   const w = (D) => ndfHalfWidthDeg(D);
@@ -41,6 +56,11 @@ export function matchNdfWidths(hwhmDeg, { abcA2 = 2.5, sgdP = 0.64 } = {}) {
     blinnPhong: { exponent: Math.log(0.5) / Math.log(Math.cos(hwhmDeg * DEG)) }, // closed form: cos^p = 1/2
     abc: { a1: solveLog((a1) => w((c) => ndfABC(c, a1, abcA2)), hwhmDeg, 0.01, 1e4), a2: abcA2 },
     sgd: { alpha: solveLog((a) => w((c) => ndfSGD(c, a, sgdP)), hwhmDeg, 0.01, 2), p: sgdP },
+    ...Object.fromEntries(
+      Object.values(NDF_FAMILY.terms)
+        .filter((term) => !(term.key in MATCHED_HERE))
+        .map((term) => [term.key, matchWidthParam(term, hwhmDeg)]),
+    ),
   };
 }
 
@@ -55,5 +75,12 @@ export function ndfParamsMatchingGGX(kind, alpha, shapes) {
     shapes,
   );
   // NDFs without an alpha keep GGX's, which the visibility terms read
-  return { alpha: m[kind].alpha ?? alpha, exponent: m.blinnPhong.exponent, a1: m.abc.a1, a2: m.abc.a2, p: m.sgd.p };
+  return {
+    alpha: m[kind].alpha ?? alpha,
+    exponent: m.blinnPhong.exponent,
+    a1: m.abc.a1,
+    a2: m.abc.a2,
+    p: m.sgd.p,
+    ...m[kind],
+  };
 }

@@ -12,6 +12,7 @@ import { createProgress } from '../exercises/progress.js';
 import { parseNumberAnswer } from '../exercises/answer.js';
 import { createPreview } from '../exercises/previews.js';
 import { hashId } from '../core/framework/url-hash.js';
+import { onFileDrop } from '../core/ui/file-drop.js';
 
 const registry = (globalThis.__shadingLab ??= { frames: 0 });
 const listEl = document.getElementById('exercise-list');
@@ -183,7 +184,8 @@ async function openExercise(exercise, { focus = false } = {}) {
   const grader = GRADERS[exercise.grader];
   const hidden = grader.hide?.(exercise.params);
   current = { exercise, widget: null, preview: null, hidden };
-  registry.exercise = { id: exercise.id, hidden, ready: false }; // for tests: what a hidden question drew, and when it is up
+  // for tests: what a hidden question drew, and when it is up
+  registry.exercise = { id: exercise.id, hidden, ready: false };
   const heading = el('h2', { tabIndex: -1, textContent: exercise.title });
   const chapter = CHAPTERS.find((c) => c.key === exercise.chapter);
   const meta = el('p', { className: 'exercise-meta' });
@@ -277,20 +279,7 @@ window.addEventListener('hashchange', route);
 
 // A lecturer's own file, chosen or dropped: it replaces the list shown.
 const readFile = async (file) => useSet(await readExerciseFile(file, { schemaOf }));
-document
-  .getElementById('exercise-file')
-  .addEventListener('change', (e) => e.target.files[0] && readFile(e.target.files[0]));
-const drop = document.getElementById('exercise-drop');
-drop.addEventListener('dragover', (e) => {
-  e.preventDefault();
-  drop.classList.add('dragging');
-});
-drop.addEventListener('dragleave', () => drop.classList.remove('dragging'));
-drop.addEventListener('drop', (e) => {
-  e.preventDefault();
-  drop.classList.remove('dragging');
-  if (e.dataTransfer.files[0]) readFile(e.dataTransfer.files[0]);
-});
+onFileDrop(document.getElementById('exercise-drop'), readFile, { input: document.getElementById('exercise-file') });
 
 const src = new URLSearchParams(location.search).get('src');
 useSet(await loadExerciseSet(src || 'exercises/index.json', { schemaOf }));

@@ -30,11 +30,13 @@ if (!gl || !gl.getExtension('EXT_color_buffer_float')) {
   summary.id = 'parity-summary';
   summary.textContent = failed.length
     ? `${failed.length} of ${results.length} functions differ from the reference beyond tolerance.`
-    : `All ${results.length} functions match the float64 reference within |g − j| ≤ ${TOLERANCE.atol} + ${TOLERANCE.rtol}·|j| (or the looser tolerance shown in their row), with no NaN, Inf or out-of-range value.`;
+    : `All ${results.length} functions match the float64 reference within |g − j| ≤ ${TOLERANCE.atol} + ` +
+      `${TOLERANCE.rtol}·|j| (or the looser tolerance shown in their row), with no NaN, Inf or out-of-range value.`;
   const table = document.createElement('table');
   table.className = 'data-table';
   table.innerHTML =
-    '<thead><tr><th>Function</th><th>Inputs</th><th>Max abs error</th><th>Max rel error</th><th>Worst input (float32)</th><th>GPU / JS there</th><th>Beyond tol.</th><th>NaN/Inf/out of range</th></tr></thead>';
+    '<thead><tr><th>Function</th><th>Inputs</th><th>Max abs error</th><th>Max rel error</th><th>Worst input ' +
+    '(float32)</th><th>GPU / JS there</th><th>Beyond tol.</th><th>NaN/Inf/out of range</th></tr></thead>';
   const body = table.createTBody();
   const anchored = new Set();
   for (const r of results) {

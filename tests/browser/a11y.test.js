@@ -158,7 +158,7 @@ describe('interactive canvases answer the keyboard', () => {
         Object.fromEntries(trs.map((tr) => [tr.cells[0].textContent, tr.cells[1].textContent])),
       );
     let probe = await rows();
-    expect(probe.sphere).toBe('Blinn-Phong');
+    expect(probe.sphere).toBe('Blinn–Phong');
     // at x = 0.3 on the unit sphere, seen head-on
     expect(Number.parseFloat(probe['n·v'])).toBeCloseTo(Math.sqrt(1 - 0.3 ** 2), 3);
     expect(await page.$eval('.probe-marker', (m) => m.hidden)).toBe(false);

@@ -127,7 +127,7 @@ describe('exercises', () => {
     const NAMES = {
       ggx: 'GGX',
       beckmann: 'Beckmann',
-      blinnPhong: 'Blinn-Phong',
+      blinnPhong: 'Blinn–Phong',
       abc: 'ABC',
       sgd: 'Shifted gamma (SGD)',
     };

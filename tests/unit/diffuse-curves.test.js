@@ -10,7 +10,7 @@ import {
   lightSweep,
   profile,
   tradeOff,
-} from '../../src/widgets/diffuse-explorer/diffuse-curves.js';
+} from '../../src/widgets/diffuse-explorer/model.js';
 import { diffuseOrenNayar } from '../../src/math/diffuse.js';
 import { fresnelSchlick } from '../../src/math/fresnel.js';
 import { hemisphereIntegral } from '../../src/math/integrate.js';

@@ -234,7 +234,7 @@ describe('ndf-profile', () => {
         if (beck(c) >= 0.01) factor = Math.max(factor, c ** n / beck(c), beck(c) / c ** n);
       }
       expect(factor).toBeCloseTo(1.1, 2);
-      expect(check(5, 1.3).join('\n')).toMatch(/Blinn-Phong is within 1\.1\d*× of Beckmann/);
+      expect(check(5, 1.3).join('\n')).toMatch(/Blinn–Phong is within 1\.1\d*× of Beckmann/);
       expect(check(10, 1.2)).toEqual([]); // the shipped exercise: every pair at least 1.45× apart
       expect(check(10, 1.5).length).toBeGreaterThan(0);
     },

@@ -131,7 +131,7 @@ describe('validator messages', () => {
     expect(twins).toHaveLength(2); // each of the pair accepts the other
     expect(twins[0]).toMatch(
       new RegExp(
-        '^params: at a half width of 5° Blinn-Phong is within 1\\.1\\d*× of Beckmann, ' +
+        '^params: at a half width of 5° Blinn–Phong is within 1\\.1\\d*× of Beckmann, ' +
           'inside the tolerance 1\\.3: two answers would be right$',
       ),
     );

@@ -23,7 +23,9 @@ describe('GLSL assembly', () => {
   it('includes each chunk once and leaves a switched-off term out of the program', () => {
     const frag = SHADER_CHUNKS['fresnel-zones.frag.glsl'];
     const plain = assembleGlsl(frag, { defines: {} });
-    const weighted = assembleGlsl(frag, { defines: { ZONE_BY_LH: true, WEIGHTED: true } });
+    const weighted = assembleGlsl(frag, {
+      defines: { ZONE_BY_LH: true, WEIGHTED: true, NDF_GGX: true, VIS_SMITH_GGX_CORRELATED: true },
+    });
     expect(plain).not.toMatch(/ndfGGX|visibilitySmith|fresnelConductor/);
     expect(weighted).toMatch(/float ndfGGX/);
     expect(weighted.match(/float saturate\(float x\)/g)).toHaveLength(1);

@@ -2,7 +2,7 @@
 // reproduce the talk's F0 and are not the measured constants), and Oren–Nayar's σ past 45° marked as extrapolated
 // (the share of a Gaussian of tilts beyond 90°, from erfc, is what the 45° rule rests on).
 import { describe, expect, it } from 'vitest';
-import { curveSpecs } from '../../src/widgets/fresnel-curves/curve-data.js';
+import { curveSpecs } from '../../src/widgets/fresnel-curves/model.js';
 import { f0FromIor } from '../../src/math/fresnel.js';
 import { materialByKey, measuredSource } from '../../src/math/materials.js';
 import { erfc } from '../../src/math/special.js';

@@ -7,7 +7,7 @@ import { describe, expect, it } from 'vitest';
 import { transmittance } from '../../src/math/media.js';
 import { microfacetBRDF } from '../../src/math/brdf.js';
 import { TOUR_STEPS } from '../../src/tour/steps.js';
-import { MEDIA } from '../../src/widgets/media/media.js';
+import { MEDIA } from '../../src/widgets/media/schema.js';
 import { schema as LOBE } from '../../src/widgets/brdf-lobe/brdf-lobe.js';
 import { weightedSphereShares } from './zone-shares.js';
 import { DEG } from '../../src/math/angles.js';

@@ -1,78 +1,123 @@
 // Assembles GLSL programs from the plain chunks in shaders/.
 // `#include "name.glsl"` pulls a chunk in once; conditional blocks on `#define` switches are resolved here,
 // in JS, so a program's source holds only the code its variant uses (a switched-off term is not in it).
+// One pass in program order, as the C preprocessor reads it: a `#define NAME` met in active code counts for the
+// conditionals after it, in that chunk and in the chunks included later.
 import { SHADER_CHUNKS } from './shader-chunks.js';
 
 const DIRECTIVE = /^\s*#\s*(ifdef|ifndef|if|elif|else|endif)\b\s*(.*)$/;
 const DEFINED = /^(!?)\s*defined\s*\(\s*(\w+)\s*\)\s*$/;
+const DEFINE = /^\s*#\s*define\s+(\w+)/;
+const UNDEF = /^\s*#\s*undef\s+(\w+)/;
+const INCLUDE = /^\s*#\s*include\s+"([\w.-]+)"\s*$/;
+const ERROR = /^\s*#\s*error\b\s*"?([^"]*)"?\s*$/;
+const IDENTIFIER = /\b[A-Za-z_]\w*\b/g;
 
-function condition(kind, expr, defines) {
-  if (kind === 'ifdef') return expr.trim() in defines;
-  if (kind === 'ifndef') return !(expr.trim() in defines);
+/** The identifiers a line reads: its tokens outside comments, less the name a #define line defines. */
+const readsOf = (line) =>
+  line
+    .replace(/\/\/.*$/, '')
+    .replace(DEFINE, '')
+    .match(IDENTIFIER) ?? [];
+
+/** @param {string} kind @param {string} expr @param {{ has(name: string): boolean }} defined */
+function condition(kind, expr, defined) {
+  if (kind === 'ifdef') return defined.has(expr.trim());
+  if (kind === 'ifndef') return !defined.has(expr.trim());
   // defined(A) || defined(B) && !defined(C): && binds tighter, as in C
   return expr.split('||').some((any) =>
     any.split('&&').every((term) => {
       const m = DEFINED.exec(term.trim());
       if (!m)
         throw new Error(`glsl: only 'defined(NAME)' conditions (with ||, &&) are supported, got '#${kind} ${expr}'`);
-      return m[2] in defines !== (m[1] === '!');
+      return defined.has(m[2]) !== (m[1] === '!');
     }),
   );
 }
 
-/** Removes the inactive branches of #ifdef/#ifndef/#if defined()/#elif defined()/#else/#endif blocks (|| and && allowed). */
-export function resolveConditionals(source, defines) {
-  const out = [];
-  const stack = []; // { active, taken, parentActive }
+/**
+ * The #if/#elif/#else/#endif stack of one text: `step(line)` returns true when the line was a conditional
+ * directive (consumed), and `active()` says whether the lines now are in the program.
+ */
+function conditionalStack(defined) {
+  const stack = []; // { active, taken }
   const active = () => stack.every((s) => s.active);
-  for (const line of source.split('\n')) {
+  const step = (line) => {
     const m = DIRECTIVE.exec(line);
-    if (!m) {
-      if (active()) out.push(line);
-      continue;
-    }
+    if (!m) return false;
     const [, kind, expr] = m;
     if (kind === 'ifdef' || kind === 'ifndef' || kind === 'if') {
-      const on = condition(kind, expr, defines);
-      stack.push({ active: on, taken: on });
-    } else {
-      const top = stack[stack.length - 1];
-      if (!top) throw new Error(`glsl: #${kind} without #if`);
-      if (kind === 'endif') stack.pop();
-      else if (kind === 'else') [top.active, top.taken] = [!top.taken, true];
-      else {
-        const on = !top.taken && condition('if', expr, defines);
-        [top.active, top.taken] = [on, top.taken || on];
-      }
+      // a block inside an inactive one is never taken (its condition is not even read)
+      const on = active() && condition(kind, expr, defined);
+      stack.push({ active: on, taken: on || !active() });
+      return true;
     }
-  }
-  if (stack.length) throw new Error('glsl: unterminated #if block');
-  return out.join('\n');
+    const top = stack[stack.length - 1];
+    if (!top) throw new Error(`glsl: #${kind} without #if`);
+    if (kind === 'endif') stack.pop();
+    else if (kind === 'else') [top.active, top.taken] = [!top.taken, true];
+    else {
+      const on = !top.taken && condition('if', expr, defined);
+      [top.active, top.taken] = [on, top.taken || on];
+    }
+    return true;
+  };
+  const end = () => {
+    if (stack.length) throw new Error('glsl: unterminated #if block');
+  };
+  return { step, active, end };
 }
 
-const INCLUDE = /^\s*#\s*include\s+"([\w.-]+)"\s*$/;
+/**
+ * Removes the inactive branches of #ifdef/#ifndef/#if defined()/#elif defined()/#else/#endif blocks (|| and &&
+ * allowed).
+ */
+export function resolveConditionals(source, defines) {
+  const defined = new Set(Object.keys(defines));
+  const conditionals = conditionalStack(defined);
+  const out = [];
+  for (const line of source.split('\n')) if (!conditionals.step(line) && conditionals.active()) out.push(line);
+  conditionals.end();
+  return out.join('\n');
+}
 
 /**
  * Resolves conditionals and includes of `source` against `chunks` (name -> text), each chunk once.
  * Returns the program text, prefixed with the defines that have values the code may read.
+ * Refuses what it does not know: a define that no directive or token of the program's chunks reads (a misspelt
+ * or stale switch would otherwise fall back silently), and an active #error (a term chain without a match).
  */
 export function assembleGlsl(source, { defines = {}, chunks = SHADER_CHUNKS } = {}) {
+  const defined = new Set(Object.keys(defines));
+  const read = new Set();
   const included = new Set();
-  const expand = (text) =>
-    resolveConditionals(text, defines)
-      .split('\n')
-      .map((line) => {
-        const m = INCLUDE.exec(line);
-        if (!m) return line;
-        const name = m[1];
-        if (included.has(name)) return '';
-        if (!(name in chunks)) throw new Error(`glsl: unknown chunk "${name}"`);
-        included.add(name);
-        return expand(chunks[name]);
-      })
-      .join('\n');
+  const out = [];
+  const walk = (text) => {
+    const conditionals = conditionalStack(defined);
+    for (const line of text.split('\n')) {
+      for (const token of readsOf(line)) read.add(token);
+      if (conditionals.step(line) || !conditionals.active()) continue;
+      const include = INCLUDE.exec(line);
+      if (!include) {
+        if (ERROR.test(line)) throw new Error(`glsl: #error ${ERROR.exec(line)[1]}`);
+        if (DEFINE.test(line)) defined.add(DEFINE.exec(line)[1]);
+        if (UNDEF.test(line)) defined.delete(UNDEF.exec(line)[1]);
+        out.push(line);
+        continue;
+      }
+      const name = include[1];
+      if (included.has(name)) continue;
+      if (!(name in chunks)) throw new Error(`glsl: unknown chunk "${name}"`);
+      included.add(name);
+      walk(chunks[name]);
+    }
+    conditionals.end();
+  };
+  walk(source);
+  const unread = Object.keys(defines).filter((name) => !read.has(name));
+  if (unread.length) throw new Error(`glsl: define ${unread.join(', ')} is read by no chunk of this program`);
   const header = Object.entries(defines)
     .map(([k, v]) => `#define ${k}${v === true || v === '' ? '' : ` ${v}`}`)
     .join('\n');
-  return `${header}\n${expand(source)}`;
+  return `${header}\n${out.join('\n')}`;
 }

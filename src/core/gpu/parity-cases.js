@@ -2,6 +2,8 @@
 // includes the stress inputs (cos = 0, 1e-7, 1 and just above 1, eta near 1, total internal reflection,
 // large k, alpha down to 0, sRGB values outside [0, 1]).
 import * as M from '../../math/index.js';
+import { CATALOGUE, termDefines } from '../../math/catalogue/index.js';
+import { termInputs } from '../../math/catalogue/grids.js';
 import { merlCoordinates } from '../../measured/merl.js';
 import { buildAlbedoTableGGX, albedoLossTableGGX } from '../../math/albedo-table.js';
 
@@ -74,6 +76,47 @@ const spherical = (theta, phi) =>
 
 const cartesian = (...lists) => lists.reduce((acc, list) => acc.flatMap((a) => list.map((x) => [...a, x])), [[]]);
 
+// Each term of the catalogue with a JS and a GLSL function is one row, named by its GLSL function: its
+// parameters swept over their stress values (src/math/catalogue/grids.js), its angles over these.
+const THETA_SIN2 = [0, 1e-9, 1e-6, 1e-4, 0.01, 0.3, 1, 1.5, Math.PI / 2]; // half vectors: (cos θ, sin²θ)
+const termAngles = (kind, dims) => {
+  if (kind === 'theta') return THETA_SIN2;
+  if (kind === 'cosPhi') return [-1, -0.5, 0, 0.5, 1];
+  return dims > 3 ? GRIDS.cosCoarse : GRIDS.cos;
+};
+const SLOTS = ['a.x', 'a.y', 'a.z', 'a.w', 'b.x', 'b.y', 'b.z', 'b.w'];
+const FAMILY_RANGE = { fresnel: [0, 1], ndf: [0, Infinity], visibility: [0, Infinity], diffuse: [0, Infinity] };
+/** Tighter bounds some terms keep (a diffuse albedo at most c, the implicit V at most 1). */
+const TERM_RANGE = {
+  visibilityImplicit: [0, 1],
+  diffuseLambert: [0, 1 / Math.PI],
+  diffuseFresnelWeighted: [0, 1 / Math.PI],
+  diffuseAshikhminShirley: [0, 28 / (23 * Math.PI)],
+};
+/**
+ * The full Oren–Nayar needs the angles themselves, (4ab/pi²)², times tan up to 1e7 at cos = 1e-7: there the
+ * GPU's acos (a polynomial, ~1e-5 relative) sets the accuracy, not the formula.
+ */
+const TERM_TOLERANCE = { diffuseOrenNayar: { atol: 1e-5, rtol: 5e-4 } };
+
+/** The parity rows of the catalogue's terms. */
+export function termParityCases(catalogue) {
+  return Object.values(catalogue).flatMap((family) =>
+    Object.values(family.terms)
+      .filter((term) => term.js && term.glsl)
+      .map((term) => ({
+        name: term.glsl,
+        chunk: term.chunk,
+        glsl: `${term.glsl}(${term.args.map((_, i) => SLOTS[i]).join(', ')})`,
+        outputs: 1,
+        js: term.js,
+        range: TERM_RANGE[term.glsl] ?? FAMILY_RANGE[family.family],
+        args: termInputs(term, termAngles),
+        ...(TERM_TOLERANCE[term.glsl] ? { tolerance: TERM_TOLERANCE[term.glsl] } : {}),
+      })),
+  );
+}
+
 /** { name, chunk, glsl (expression over a.xyzw), outputs, js(...args) -> number | number[], range, args } */
 export const PARITY_CASES = [
   {
@@ -95,15 +138,6 @@ export const PARITY_CASES = [
     args: cartesian(GRIDS.srgb),
   },
   {
-    name: 'fresnelSchlick',
-    chunk: 'fresnel.glsl',
-    glsl: 'fresnelSchlick(a.x, a.y)',
-    outputs: 1,
-    js: M.fresnelSchlick,
-    range: [0, 1],
-    args: cartesian(GRIDS.f0, GRIDS.cos),
-  },
-  {
     name: 'fresnelSchlickSG',
     chunk: 'fresnel.glsl',
     glsl: 'fresnelSchlickSG(a.x, a.y)',
@@ -122,24 +156,6 @@ export const PARITY_CASES = [
     args: cartesian(GRIDS.f0, GRIDS.cos),
   },
   {
-    name: 'fresnelDielectric',
-    chunk: 'fresnel.glsl',
-    glsl: 'fresnelDielectric(a.x, a.y)',
-    outputs: 1,
-    js: M.fresnelDielectric,
-    range: [0, 1],
-    args: cartesian(GRIDS.cos, GRIDS.eta),
-  },
-  {
-    name: 'fresnelConductor',
-    chunk: 'fresnel.glsl',
-    glsl: 'fresnelConductor(a.x, a.y, a.z)',
-    outputs: 1,
-    js: M.fresnelConductor,
-    range: [0, 1],
-    args: cartesian(GRIDS.cos, GRIDS.etaConductor, GRIDS.k),
-  },
-  {
     name: 'fresnelConductor (vec3)',
     chunk: 'fresnel.glsl',
     glsl: 'fresnelConductor(a.x, vec3(a.y, 1.0, 0.5), vec3(a.z, 2.0, 3.0))',
@@ -155,6 +171,7 @@ export const PARITY_CASES = [
     // 3e-4 rad of n in float32) the relative error reached 2.7e-4 at alpha = 0.01.
     name: 'microfacetBRDF (GGX, Smith corr., Schlick)',
     chunk: 'brdf.glsl',
+    defines: termDefines({ F: 'schlick', D: 'ggx', V: 'smithGGXCorrelated' }),
     glsl: 'microfacetBRDF(a.xyz, b.xyz, a.w, 0.04)',
     outputs: 1,
     js: (lx, ly, lz, alpha, vx, vy, vz) =>
@@ -372,8 +389,8 @@ export const PARITY_CASES = [
   {
     // the MERL table coordinates of (l, v): node units (θh sqrt-spaced 0-90, θd 0-90, φd 0-180). l at azimuth 0.3,
     // v at 0.6, 1, 2, 2.8 and π + 0.1 (nearly opposite, h near n), never in one plane with l and n:
-    // there φd sits on its wrap at 0 / 180, where either side is right. A sphere's texture lookup filters over 1/256 of a texel,
-    // so 2e-3 of a node is far below what shows.
+    // there φd sits on its wrap at 0 / 180, where either side is right. A sphere's texture lookup filters over
+    // 1/256 of a texel, so 2e-3 of a node is far below what shows.
     name: 'merlCoordinates',
     chunk: 'measured.glsl',
     glsl: 'merlCoordinates(vec3(0.0, 0.0, 1.0), a.xyz, b.xyz)',
@@ -388,45 +405,6 @@ export const PARITY_CASES = [
       ([tl, tv, pv]) => [...spherical(tl, 0.3), 0, ...spherical(tv, pv), 0],
     ),
   },
-  {
-    name: 'diffuseLambert',
-    chunk: 'diffuse.glsl',
-    glsl: 'diffuseLambert(a.x)',
-    outputs: 1,
-    js: M.diffuseLambert,
-    range: [0, 1 / Math.PI],
-    args: cartesian(GRIDS.srgb),
-  },
-  {
-    name: 'diffuseFresnelWeighted',
-    chunk: 'diffuse.glsl',
-    glsl: 'diffuseFresnelWeighted(a.x, a.y, a.z, a.w)',
-    outputs: 1,
-    js: M.diffuseFresnelWeighted,
-    range: [0, 1 / Math.PI],
-    args: cartesian(GRIDS.cosCoarse, GRIDS.cosCoarse, [0, 0.04, 1], [0, 0.5, 1]),
-  },
-  {
-    name: 'diffuseAshikhminShirley',
-    chunk: 'diffuse.glsl',
-    glsl: 'diffuseAshikhminShirley(a.x, a.y, a.z, a.w)',
-    outputs: 1,
-    js: M.diffuseAshikhminShirley,
-    range: [0, 28 / (23 * Math.PI)],
-    args: cartesian(GRIDS.cosCoarse, GRIDS.cosCoarse, [0, 0.04, 1], [0, 0.5, 1]),
-  },
-  ...['diffuseOrenNayar', 'diffuseOrenNayarQualitative'].map((name) => ({
-    name,
-    chunk: 'diffuse.glsl',
-    glsl: `${name}(a.x, a.y, a.z, a.w, 0.8)`,
-    outputs: 1,
-    js: (nl, nv, cp, sigma) => M[name](nl, nv, cp, sigma, Math.fround(0.8)),
-    range: [0, Infinity],
-    args: cartesian(GRIDS.cosCoarse, GRIDS.cosCoarse, [-1, -0.5, 0, 0.5, 1], [0, 0.1, 0.3, 0.6, 1]),
-    // the full model needs the angles themselves, (4ab/pi²)², times tan up to 1e7 at cos = 1e-7: there the
-    // GPU's acos (a polynomial, ~1e-5 relative) sets the accuracy, not the formula
-    ...(name === 'diffuseOrenNayar' ? { tolerance: { atol: 1e-5, rtol: 5e-4 } } : {}),
-  })),
   {
     name: 'transmittance',
     chunk: 'media.glsl',
@@ -473,37 +451,6 @@ export const PARITY_CASES = [
     args: cartesian(GRIDS.cos, GRIDS.exponent),
   },
   {
-    name: 'ndfBlinnPhongFromSin2',
-    chunk: 'ndf.glsl',
-    glsl: 'ndfBlinnPhongFromSin2(a.x, a.y, a.z)',
-    outputs: 1,
-    js: M.ndfBlinnPhongFromSin2,
-    range: [0, Infinity],
-    args: cartesian([0, 1e-9, 1e-6, 1e-4, 0.01, 0.3, 1, 1.5, Math.PI / 2], GRIDS.exponent).map(([t, p]) => [
-      Math.cos(t),
-      Math.sin(t) ** 2,
-      p,
-    ]),
-  },
-  {
-    name: 'ndfABC',
-    chunk: 'ndf.glsl',
-    glsl: 'ndfABC(a.x, a.y, a.z)',
-    outputs: 1,
-    js: M.ndfABC,
-    range: [0, Infinity],
-    args: cartesian(GRIDS.cos, GRIDS.abcA1, GRIDS.abcA2),
-  },
-  {
-    name: 'ndfSGD',
-    chunk: 'ndf.glsl',
-    glsl: 'ndfSGD(a.x, a.y, a.z)',
-    outputs: 1,
-    js: M.ndfSGD,
-    range: [0, Infinity],
-    args: cartesian(GRIDS.cos, GRIDS.sgdAlpha, GRIDS.sgdP),
-  },
-  {
     name: 'smithG1GGX',
     chunk: 'visibility.glsl',
     glsl: 'smithG1GGX(a.x, a.y)',
@@ -530,54 +477,5 @@ export const PARITY_CASES = [
     range: [0, 1],
     args: cartesian(GRIDS.cos, GRIDS.alpha),
   },
-  {
-    name: 'visibilityImplicit',
-    chunk: 'visibility.glsl',
-    glsl: 'visibilityImplicit(a.x, a.y)',
-    outputs: 1,
-    js: M.visibilityImplicit,
-    range: [0, 1],
-    args: cartesian(GRIDS.cos, GRIDS.cos),
-  },
-  {
-    name: 'visibilityKelemen',
-    chunk: 'visibility.glsl',
-    glsl: 'visibilityKelemen(a.x)',
-    outputs: 1,
-    js: M.visibilityKelemen,
-    range: [0, Infinity],
-    args: cartesian(GRIDS.cos),
-  },
-  {
-    name: 'visibilityCookTorrance',
-    chunk: 'visibility.glsl',
-    glsl: 'visibilityCookTorrance(a.x, a.y, a.z, a.w)',
-    outputs: 1,
-    js: M.visibilityCookTorrance,
-    range: [0, Infinity],
-    args: cartesian(GRIDS.cosCoarse, GRIDS.cosCoarse, GRIDS.cosCoarse, GRIDS.cosCoarse),
-  },
-  ...[
-    'visibilitySmithGGXSeparable',
-    'visibilitySmithGGXCorrelatedFast',
-    'visibilitySchlickGGX',
-    'visibilitySmithBeckmannSeparable',
-  ].map((name) => ({
-    name,
-    chunk: 'visibility.glsl',
-    glsl: `${name}(a.x, a.y, a.z)`,
-    outputs: 1,
-    js: M[name],
-    range: [0, Infinity],
-    args: cartesian(GRIDS.cosCoarse, GRIDS.cosCoarse, GRIDS.alpha),
-  })),
-  {
-    name: 'visibilitySmithGGXCorrelated',
-    chunk: 'visibility.glsl',
-    glsl: 'visibilitySmithGGXCorrelated(a.x, a.y, a.z)',
-    outputs: 1,
-    js: M.visibilitySmithGGXCorrelated,
-    range: [0, Infinity],
-    args: cartesian(GRIDS.cos, GRIDS.cos, GRIDS.alpha),
-  },
+  ...termParityCases(CATALOGUE),
 ];

@@ -6,8 +6,10 @@ import * as THREE from 'three';
 import { createViewport } from '../gpu/viewport.js';
 import { assembleGlsl } from '../gpu/glsl.js';
 import { SHADER_CHUNKS } from '../gpu/shader-chunks.js';
+import { createProgramCache } from '../gpu/program-cache.js';
 import { angleText, probeAngles, showProbeRows } from './probe.js';
 
+/** Every uniform a cell's program may read, with its value when the cell gives none (brdf-sphere.frag.glsl). */
 const UNIFORM_DEFAULTS = {
   uLightDir: [0, 0, 1],
   uLightIntensity: 1,
@@ -26,68 +28,57 @@ const UNIFORM_DEFAULTS = {
 
 const HALF_SIZE = 1.08; // the orthographic camera's half extent: the unit sphere fills 1/1.08 of a cell
 
-export function createSphereGrid(container, { label = 'Spheres', aspectPerCell = 1, background = '#16181d' } = {}) {
-  let cells = [];
-  const geometry = new THREE.SphereGeometry(1, 128, 64);
-  const materials = new Map();
-  const materialFor = (defines) => {
-    const key = JSON.stringify(defines);
-    if (!materials.has(key)) {
-      const uniforms = Object.fromEntries(
-        Object.entries(UNIFORM_DEFAULTS).map(([k, v]) => [
-          k,
-          { value: Array.isArray(v) ? new THREE.Vector3(...v) : v },
-        ]),
-      );
-      materials.set(
-        key,
-        new THREE.ShaderMaterial({
-          glslVersion: THREE.GLSL3,
-          uniforms,
-          vertexShader: SHADER_CHUNKS['surface.vert.glsl'],
-          fragmentShader: assembleGlsl(SHADER_CHUNKS['brdf-sphere.frag.glsl'], { defines }),
-        }),
-      );
+/** The names of the uniforms the sphere grid feeds brdf-sphere.frag.glsl (the program-variants test checks them). */
+export const SPHERE_UNIFORMS = Object.keys(UNIFORM_DEFAULTS);
+
+/** The program of one set of #define switches, its uniforms set to the defaults. */
+const sphereMaterial = (defines) =>
+  new THREE.ShaderMaterial({
+    glslVersion: THREE.GLSL3,
+    uniforms: Object.fromEntries(
+      Object.entries(UNIFORM_DEFAULTS).map(([k, v]) => [k, { value: Array.isArray(v) ? new THREE.Vector3(...v) : v }]),
+    ),
+    vertexShader: SHADER_CHUNKS['surface.vert.glsl'],
+    fragmentShader: assembleGlsl(SHADER_CHUNKS['brdf-sphere.frag.glsl'], { defines }),
+  });
+
+/** Draws each cell in its own square viewport, side by side across the canvas, with its program and uniforms. */
+function drawCells(renderer, cells, programs, view) {
+  const size = renderer.getSize(new THREE.Vector2());
+  const w = size.x / Math.max(cells.length, 1);
+  renderer.setScissorTest(true);
+  cells.forEach((cell, i) => {
+    const material = programs.get(cell.defines);
+    for (const [k, v] of Object.entries({ ...UNIFORM_DEFAULTS, ...cell.uniforms })) {
+      if (Array.isArray(v)) material.uniforms[k].value.set(...v);
+      else material.uniforms[k].value = v;
     }
-    return materials.get(key);
-  };
+    view.mesh.material = material;
+    const [x0, x1] = [Math.round(i * w), Math.round((i + 1) * w)]; // whole pixels: no seams between cells
+    const side = Math.min(x1 - x0, size.y);
+    renderer.setViewport(x0 + (x1 - x0 - side) / 2, (size.y - side) / 2, side, side);
+    renderer.setScissor(x0, 0, x1 - x0, size.y);
+    renderer.render(view.scene, view.camera);
+  });
+  renderer.setScissorTest(false);
+}
+
+/** The unit sphere, alone in a scene under an orthographic camera that frames it in a cell. */
+function sphereView(background) {
+  const geometry = new THREE.SphereGeometry(1, 128, 64);
   const mesh = new THREE.Mesh(geometry);
   const scene = new THREE.Scene().add(mesh);
   scene.background = new THREE.Color(background);
   const camera = new THREE.OrthographicCamera(-HALF_SIZE, HALF_SIZE, HALF_SIZE, -HALF_SIZE, 0.1, 10);
   camera.position.z = 5;
+  return { mesh, scene, camera, dispose: () => geometry.dispose() };
+}
 
-  const labels = document.createElement('div');
-  labels.className = 'sphere-labels';
-
-  const drawSize = new THREE.Vector2();
-  const draw = (renderer) => {
-    const size = renderer.getSize(drawSize);
-    const n = Math.max(cells.length, 1);
-    const w = size.x / n;
-    renderer.setScissorTest(true);
-    cells.forEach((cell, i) => {
-      const material = materialFor(cell.defines);
-      for (const [k, v] of Object.entries({ ...UNIFORM_DEFAULTS, ...cell.uniforms })) {
-        if (Array.isArray(v)) material.uniforms[k].value.set(...v);
-        else material.uniforms[k].value = v;
-      }
-      mesh.material = material;
-      const [x0, x1] = [Math.round(i * w), Math.round((i + 1) * w)]; // whole pixels: no seams between cells
-      const side = Math.min(x1 - x0, size.y);
-      renderer.setViewport(x0 + (x1 - x0 - side) / 2, (size.y - side) / 2, side, side);
-      renderer.setScissor(x0, 0, x1 - x0, size.y);
-      renderer.render(scene, camera);
-    });
-    renderer.setScissorTest(false);
-  };
-
-  const viewport = createViewport(container, { draw, label });
-  if (viewport) {
-    viewport.holder.classList.add('sphere-grid');
-    viewport.holder.classList.toggle('light-background', new THREE.Color(background).getHSL({}).l > 0.6);
-    viewport.holder.append(labels);
-  }
+/**
+ * Hovering a sphere, or the arrow keys on the focused canvas, probes it: the angles there and the rows of its
+ * cell's probe(angles, n). Returns the panel's dispose.
+ */
+function attachProbe(container, viewport, cellsNow) {
   const probePanel = document.createElement('div');
   probePanel.className = 'probe';
   const idle =
@@ -102,12 +93,12 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
   /** Cell i's layout in CSS pixels: its width, the side of its sphere's square, the canvas height. */
   const layout = () => {
     const rect = viewport.canvas.getBoundingClientRect();
-    const w = rect.width / Math.max(cells.length, 1);
+    const w = rect.width / Math.max(cellsNow().length, 1);
     return { rect, w, side: Math.min(w, rect.height) };
   };
   /** Shows the probe at (x, y) on sphere i (sphere coordinates, x² + y² < 1). */
   const probeAt = (i, x, y) => {
-    const cell = cells[i];
+    const cell = cellsNow()[i];
     if (!cell || x * x + y * y >= 1) {
       probePanel.textContent = idle;
       return;
@@ -139,15 +130,15 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
   const onKey = (e) => {
     const d = e.shiftKey ? 0.02 : 0.1;
     const move = { ArrowLeft: [-d, 0], ArrowRight: [d, 0], ArrowUp: [0, d], ArrowDown: [0, -d] }[e.key];
-    if (!move || !cells.length) return;
+    if (!move || !cellsNow().length) return;
     e.preventDefault();
     let { i, x, y } = keyProbe;
     [x, y] = [x + move[0], y + move[1]];
-    if (x * x + y * y >= 1 && move[0] && cells[i + Math.sign(move[0])])
+    if (x * x + y * y >= 1 && move[0] && cellsNow()[i + Math.sign(move[0])])
       [i, x] = [i + Math.sign(move[0]), -Math.sign(move[0]) * 0.9];
     const r = Math.hypot(x, y);
     if (r > 0.98) [x, y] = [(x / r) * 0.98, (y / r) * 0.98];
-    keyProbe = { i: Math.min(i, cells.length - 1), x, y };
+    keyProbe = { i: Math.min(i, cellsNow().length - 1), x, y };
     const { rect, w, side } = layout();
     marker.style.left = `${keyProbe.i * w + w / 2 + (x / HALF_SIZE) * (side / 2)}px`;
     marker.style.top = `${rect.height / 2 - (y / HALF_SIZE) * (side / 2)}px`;
@@ -158,6 +149,22 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
   viewport?.canvas.addEventListener('pointerleave', () => (probePanel.textContent = idle));
   viewport?.canvas.addEventListener('keydown', onKey);
   viewport?.canvas.addEventListener('blur', () => (marker.hidden = true));
+  return () => probePanel.remove();
+}
+
+export function createSphereGrid(container, { label = 'Spheres', aspectPerCell = 1, background = '#16181d' } = {}) {
+  let cells = [];
+  const programs = createProgramCache(sphereMaterial);
+  const view = sphereView(background);
+  const labels = document.createElement('div');
+  labels.className = 'sphere-labels';
+  const viewport = createViewport(container, { draw: (renderer) => drawCells(renderer, cells, programs, view), label });
+  if (viewport) {
+    viewport.holder.classList.add('sphere-grid');
+    viewport.holder.classList.toggle('light-background', new THREE.Color(background).getHSL({}).l > 0.6);
+    viewport.holder.append(labels);
+  }
+  const removeProbe = attachProbe(container, viewport, () => cells);
   const setAspect = () =>
     viewport && (viewport.holder.style.aspectRatio = `${Math.max(cells.length, 1) * aspectPerCell} / 1`);
 
@@ -175,12 +182,12 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
       return viewport?.canvas;
     },
     get variants() {
-      return materials.size;
+      return programs.size;
     },
     dispose() {
-      probePanel.remove();
-      materials.forEach((m) => m.dispose());
-      geometry.dispose();
+      removeProbe();
+      programs.dispose();
+      view.dispose();
       viewport?.dispose();
     },
   };

@@ -63,9 +63,11 @@ export function createHalfDiffImage(container, title) {
       ctx.rotate(-Math.PI / 2);
       ctx.fillText('θd (l from h)', 0, 0);
       ctx.restore();
+      const top = `${max.toPrecision(3)}${sharedMax ? '' : ' per steradian (99th percentile)'}`;
       describeCanvas(
         canvas,
-        `${title}: ${description}; viridis colours on a log scale, brightest (yellow) at ${max.toPrecision(3)}${sharedMax ? '' : ' per steradian (99th percentile)'}, darkest ${DECADES} decades below.`,
+        `${title}: ${description}; viridis colours on a log scale, brightest (yellow) at ${top}, darkest ` +
+          `${DECADES} decades below.`,
       );
       return max;
     },

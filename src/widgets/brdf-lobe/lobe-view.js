@@ -1,6 +1,6 @@
 // The BRDF as a 3-D lobe over a surface patch: for the current light, each direction v is pushed out by
-// f(l, v) (scaled to the largest value); A is solid orange, B a green wireframe, as in the polar plot. Drag to orbit. n, l, v, h and the mirror
-// direction are drawn as arrows.
+// f(l, v) (scaled to the largest value); A is solid orange, B a green wireframe, as in the polar plot. Drag to
+// orbit. n, l, v, h and the mirror direction are drawn as arrows.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { createViewport } from '../../core/gpu/viewport.js';
@@ -34,8 +34,10 @@ function gridIndex() {
   return idx;
 }
 
-export function createLobeView(container) {
-  const dirs = hemisphereDirections();
+const ARROW_COLORS = { n: '#333333', l: '#e6a700', v: '#0072b2', h: '#cc79a7', mirror: '#888888' };
+
+/** The scene: lights, the surface patch, lobe A (solid) and B (wireframe) over `dirs`, and the arrows. */
+function createLobeScene(dirs) {
   const makeGeometry = () => {
     const g = new THREE.BufferGeometry();
     g.setAttribute('position', new THREE.Float32BufferAttribute(new Float32Array(dirs.length * 3), 3));
@@ -65,20 +67,49 @@ export function createLobeView(container) {
   );
   local.add(patch, lobeA, lobeB);
   const arrows = {};
-  for (const [key, color] of Object.entries({
-    n: '#333333',
-    l: '#e6a700',
-    v: '#0072b2',
-    h: '#cc79a7',
-    mirror: '#888888',
-  })) {
+  for (const [key, color] of Object.entries(ARROW_COLORS)) {
     arrows[key] = new THREE.ArrowHelper(new THREE.Vector3(0, 0, 1), new THREE.Vector3(), 1.3, color, 0.1, 0.06);
     local.add(arrows[key]);
   }
+  return { scene, patch, lobeA, lobeB, arrows };
+}
 
+/** The keyboard orbits as a drag does: ←/→ around the normal, ↑/↓ up and down (Shift: finer). */
+function keyOrbit(camera, controls) {
+  const spherical = new THREE.Spherical();
+  const offset = new THREE.Vector3();
+  return (e) => {
+    const step = (e.shiftKey ? 2 : 10) * (Math.PI / 180);
+    const turn = { ArrowLeft: [-step, 0], ArrowRight: [step, 0], ArrowUp: [0, -step], ArrowDown: [0, step] }[e.key];
+    if (!turn) return;
+    e.preventDefault();
+    spherical.setFromVector3(offset.copy(camera.position).sub(controls.target));
+    spherical.theta += turn[0];
+    spherical.phi = Math.min(Math.max(spherical.phi + turn[1], 0.05), Math.PI - 0.05);
+    camera.position.copy(controls.target).add(offset.setFromSpherical(spherical));
+    controls.update();
+  };
+}
+
+/** Pushes each vertex of `mesh` out along its direction by f(direction) / max. */
+function fillLobe(mesh, dirs, f, max) {
+  const pos = mesh.geometry.attributes.position;
+  dirs.forEach((d, i) => {
+    const r = f(d) / max;
+    pos.setXYZ(i, d[0] * r, d[1] * r, d[2] * r);
+  });
+  pos.needsUpdate = true;
+  mesh.geometry.computeVertexNormals();
+  mesh.geometry.computeBoundingSphere();
+}
+
+export function createLobeView(container) {
+  const dirs = hemisphereDirections();
+  const { scene, patch, lobeA, lobeB, arrows } = createLobeScene(dirs);
   const camera = new THREE.PerspectiveCamera(35, 1, 0.1, 50);
   camera.position.set(2.6, 2.2, 3.2);
   let controls = null;
+  let orbitByKey = null;
   const viewport = createViewport(container, {
     draw: (renderer) => renderer.render(scene, camera),
     onResize: (w, h) => {
@@ -92,45 +123,23 @@ export function createLobeView(container) {
     controls.target.set(0, 0.35, 0);
     controls.update();
     controls.addEventListener('change', viewport.invalidate);
+    orbitByKey = keyOrbit(camera, controls);
     viewport.canvas.addEventListener('keydown', orbitByKey);
   }
-
-  // the keyboard orbits as a drag does: ←/→ around the normal, ↑/↓ up and down (Shift: finer)
-  const spherical = new THREE.Spherical();
-  const offset = new THREE.Vector3();
-  function orbitByKey(e) {
-    const step = (e.shiftKey ? 2 : 10) * (Math.PI / 180);
-    const turn = { ArrowLeft: [-step, 0], ArrowRight: [step, 0], ArrowUp: [0, -step], ArrowDown: [0, step] }[e.key];
-    if (!turn) return;
-    e.preventDefault();
-    spherical.setFromVector3(offset.copy(camera.position).sub(controls.target));
-    spherical.theta += turn[0];
-    spherical.phi = Math.min(Math.max(spherical.phi + turn[1], 0.05), Math.PI - 0.05);
-    camera.position.copy(controls.target).add(offset.setFromSpherical(spherical));
-    controls.update();
-  }
-
-  const fill = (mesh, f, max) => {
-    const pos = mesh.geometry.attributes.position;
-    dirs.forEach((d, i) => {
-      const r = f(d) / max;
-      pos.setXYZ(i, d[0] * r, d[1] * r, d[2] * r);
-    });
-    pos.needsUpdate = true;
-    mesh.geometry.computeVertexNormals();
-    mesh.geometry.computeBoundingSphere();
-  };
 
   return {
     /** The view directions the lobes are evaluated at (local frame), for a caller that scales to their maximum. */
     directions: dirs,
     canvas: viewport?.canvas ?? null,
-    /** fA(v), fB(v) | null: the lobes for the current light; dirs: { n, l, v, h, mirror } as arrays (h may be null); the view in words. */
+    /**
+     * fA(v), fB(v) | null: the lobes for the current light; directions: { n, l, v, h, mirror } as arrays (h may
+     * be null); description: the view in words.
+     */
     update({ fA, fB, max, directions, description }) {
       describeCanvas(viewport?.canvas, description);
-      fill(lobeA, fA, max);
+      fillLobe(lobeA, dirs, fA, max);
       lobeB.visible = Boolean(fB);
-      if (fB) fill(lobeB, fB, max);
+      if (fB) fillLobe(lobeB, dirs, fB, max);
       for (const [key, d] of Object.entries(directions)) {
         arrows[key].visible = Boolean(d);
         if (d) arrows[key].setDirection(new THREE.Vector3(...d).normalize());

@@ -16,6 +16,160 @@ const COLORS = {
   ms: '#56b4e9',
 };
 
+/** The dial's size and centre on the canvas, in CSS pixels. */
+function geometryOf(canvas) {
+  const w = canvas.clientWidth;
+  const h = canvas.clientHeight;
+  const R = Math.min(w / 2, h) * 0.86;
+  return { w, h, R, cx: w / 2, cy: h * 0.92 };
+}
+// angle theta from n, positive towards +x (the view side), negative towards the light side
+const toXY = (g, theta, r) => [g.cx + r * g.R * Math.sin(theta * DEG), g.cy - r * g.R * Math.cos(theta * DEG)];
+
+/** Radius rings labelled in 1/sr, angle spokes every 30° and the surface line. */
+function drawGrid(ctx, g, max) {
+  ctx.strokeStyle = COLORS.grid;
+  ctx.fillStyle = '#666';
+  for (const r of [0.25, 0.5, 0.75, 1]) {
+    ctx.beginPath();
+    ctx.arc(g.cx, g.cy, r * g.R, Math.PI, 2 * Math.PI);
+    ctx.stroke();
+    ctx.fillText(`${(r * max).toPrecision(2)}`, g.cx + 3, g.cy - r * g.R + 11);
+  }
+  for (let a = -90; a <= 90; a += 30) {
+    const [x, y] = toXY(g, a, 1.04);
+    ctx.beginPath();
+    ctx.moveTo(g.cx, g.cy);
+    ctx.lineTo(...toXY(g, a, 1));
+    ctx.stroke();
+    ctx.textAlign = 'center';
+    ctx.fillText(`${Math.abs(a)}°`, x, y);
+  }
+  ctx.strokeStyle = '#333';
+  ctx.beginPath();
+  ctx.moveTo(g.cx - g.R * 1.05, g.cy);
+  ctx.lineTo(g.cx + g.R * 1.05, g.cy);
+  ctx.stroke();
+  ctx.textAlign = 'left';
+  ctx.fillText('surface', g.cx - g.R * 1.05, g.cy + 12);
+}
+
+/** The lobes: A filled, B dashed, the multiple-scattering lobe dotted. */
+function drawLobes(ctx, g, spec) {
+  for (const [lobe, color, fill, dash] of [
+    [spec.lobeA, COLORS.a, true, []],
+    [spec.lobeB, COLORS.b, false, [6, 4]],
+    [spec.lobeMS, COLORS.ms, false, [2, 3]],
+  ]) {
+    if (!lobe) continue;
+    ctx.beginPath();
+    lobe.forEach(([theta, value], i) => {
+      const [x, y] = toXY(g, theta, value / spec.max);
+      if (i) ctx.lineTo(x, y);
+      else ctx.moveTo(x, y);
+    });
+    ctx.closePath();
+    ctx.strokeStyle = color;
+    ctx.lineWidth = 2;
+    ctx.setLineDash(dash);
+    ctx.stroke();
+    if (fill) {
+      ctx.fillStyle = `${color}33`;
+      ctx.fill();
+    }
+  }
+  ctx.setLineDash([]);
+}
+
+/** The random walk's values, with bars of ± 2 standard errors along the radius. */
+function drawWalkPoints(ctx, g, spec) {
+  for (const [theta, value, error] of spec.points ?? []) {
+    ctx.strokeStyle = ctx.fillStyle = COLORS.ms;
+    ctx.lineWidth = 1.5;
+    ctx.beginPath();
+    ctx.moveTo(...toXY(g, theta, Math.max(value - 2 * error, 0) / spec.max));
+    ctx.lineTo(...toXY(g, theta, (value + 2 * error) / spec.max));
+    ctx.stroke();
+    ctx.beginPath();
+    ctx.arc(...toXY(g, theta, value / spec.max), 3.5, 0, 2 * Math.PI);
+    ctx.fill();
+  }
+}
+
+/** One direction from the centre to the dial, with a dot (big for the handles l and v) and its name. */
+function drawArrow(ctx, g, theta, color, label, dash = []) {
+  const [x, y] = toXY(g, theta, 1);
+  ctx.strokeStyle = color;
+  ctx.fillStyle = color;
+  ctx.lineWidth = 2;
+  ctx.setLineDash(dash);
+  ctx.beginPath();
+  ctx.moveTo(g.cx, g.cy);
+  ctx.lineTo(x, y);
+  ctx.stroke();
+  ctx.setLineDash([]);
+  ctx.beginPath();
+  ctx.arc(x, y, label === 'l' || label === 'v' ? 7 : 3, 0, 2 * Math.PI);
+  ctx.fill();
+  ctx.font = 'bold 13px system-ui, sans-serif';
+  ctx.fillText(label, x + 9, label === 'mirror' ? y + 16 : y - 6);
+  ctx.font = '11px system-ui, sans-serif';
+}
+
+function drawDirections(ctx, g, spec) {
+  drawArrow(ctx, g, 0, '#333', 'n');
+  drawArrow(ctx, g, spec.lightTheta, COLORS.mirror, 'mirror', [4, 4]);
+  if (spec.halfTheta !== null) drawArrow(ctx, g, spec.halfTheta, COLORS.half, 'h');
+  drawArrow(ctx, g, -spec.lightTheta, COLORS.light, 'l');
+  drawArrow(ctx, g, spec.viewTheta, COLORS.view, 'v');
+}
+
+/**
+ * The handles: a drag moves the one nearest the pointer, the arrow keys move l (↑/↓) and v (←/→) by 5° (Shift:
+ * 1°). `shown()` is the last spec drawn (null before the first); `onDrag(partialState)`.
+ */
+function attachHandles(canvas, shown, onDrag) {
+  let dragging = null;
+  const angleAt = (e) => {
+    const rect = canvas.getBoundingClientRect();
+    const g = geometryOf(canvas);
+    const dx = e.clientX - rect.left - g.cx;
+    const dy = g.cy - (e.clientY - rect.top);
+    return Math.max(-89, Math.min(89, Math.atan2(dx, Math.max(dy, 0)) / DEG));
+  };
+  const move = (e) => {
+    if (!dragging) return;
+    const a = Math.round(angleAt(e));
+    onDrag(dragging === 'light' ? { lightTheta: Math.max(0, -a) } : { viewTheta: a });
+  };
+  const down = (e) => {
+    const last = shown();
+    if (!last) return;
+    const a = angleAt(e);
+    dragging = Math.abs(a + last.lightTheta) < Math.abs(a - last.viewTheta) ? 'light' : 'view';
+    canvas.setPointerCapture(e.pointerId);
+    move(e);
+  };
+  const key = (e) => {
+    const last = shown();
+    if (!last) return;
+    const step = e.shiftKey ? 1 : 5;
+    const moves = {
+      ArrowUp: { lightTheta: last.lightTheta - step },
+      ArrowDown: { lightTheta: last.lightTheta + step },
+      ArrowLeft: { viewTheta: last.viewTheta - step },
+      ArrowRight: { viewTheta: last.viewTheta + step },
+    };
+    if (!moves[e.key]) return;
+    e.preventDefault();
+    onDrag(moves[e.key]);
+  };
+  canvas.addEventListener('pointerdown', down);
+  canvas.addEventListener('pointermove', move);
+  canvas.addEventListener('pointerup', () => (dragging = null));
+  canvas.addEventListener('keydown', key);
+}
+
 export function createPolarPlot(container, { onDrag }) {
   const figure = document.createElement('figure');
   figure.className = 'polar-plot';
@@ -28,148 +182,19 @@ export function createPolarPlot(container, { onDrag }) {
   container.append(figure);
   let last = null;
 
-  const geometry = () => {
-    const w = canvas.clientWidth;
-    const h = canvas.clientHeight;
-    const R = Math.min(w / 2, h) * 0.86;
-    return { w, h, R, cx: w / 2, cy: h * 0.92 };
-  };
-  // angle theta from n, positive towards +x (the view side), negative towards the light side
-  const toXY = (g, theta, r) => [g.cx + r * g.R * Math.sin(theta * DEG), g.cy - r * g.R * Math.cos(theta * DEG)];
-
+  /** spec: { lobeA, lobeB, lobeMS, points, max, lightTheta, viewTheta, halfTheta } (lobes [θ, value], θ in °). */
   function draw(spec) {
     last = spec;
     const { ctx } = sizeCanvas2d(canvas);
-    const g = geometry();
+    const g = geometryOf(canvas);
     ctx.clearRect(0, 0, g.w, g.h);
     ctx.font = '11px system-ui, sans-serif';
-    // grid: radius rings and angle spokes
-    ctx.strokeStyle = COLORS.grid;
-    ctx.fillStyle = '#666';
-    for (const r of [0.25, 0.5, 0.75, 1]) {
-      ctx.beginPath();
-      ctx.arc(g.cx, g.cy, r * g.R, Math.PI, 2 * Math.PI);
-      ctx.stroke();
-      ctx.fillText(`${(r * spec.max).toPrecision(2)}`, g.cx + 3, g.cy - r * g.R + 11);
-    }
-    for (let a = -90; a <= 90; a += 30) {
-      const [x, y] = toXY(g, a, 1.04);
-      ctx.beginPath();
-      ctx.moveTo(g.cx, g.cy);
-      ctx.lineTo(...toXY(g, a, 1));
-      ctx.stroke();
-      ctx.textAlign = 'center';
-      ctx.fillText(`${Math.abs(a)}°`, x, y);
-    }
-    ctx.strokeStyle = '#333';
-    ctx.beginPath();
-    ctx.moveTo(g.cx - g.R * 1.05, g.cy);
-    ctx.lineTo(g.cx + g.R * 1.05, g.cy);
-    ctx.stroke();
-    ctx.textAlign = 'left';
-    ctx.fillText('surface', g.cx - g.R * 1.05, g.cy + 12);
-    // lobes: A filled, B dashed, the multiple-scattering lobe dotted
-    for (const [lobe, color, fill, dash] of [
-      [spec.lobeA, COLORS.a, true, []],
-      [spec.lobeB, COLORS.b, false, [6, 4]],
-      [spec.lobeMS, COLORS.ms, false, [2, 3]],
-    ]) {
-      if (!lobe) continue;
-      ctx.beginPath();
-      lobe.forEach(([theta, value], i) => {
-        const [x, y] = toXY(g, theta, value / spec.max);
-        if (i) ctx.lineTo(x, y);
-        else ctx.moveTo(x, y);
-      });
-      ctx.closePath();
-      ctx.strokeStyle = color;
-      ctx.lineWidth = 2;
-      ctx.setLineDash(dash);
-      ctx.stroke();
-      if (fill) {
-        ctx.fillStyle = `${color}33`;
-        ctx.fill();
-      }
-    }
-    ctx.setLineDash([]);
-    // the random walk's values, with bars of ± 2 standard errors along the radius
-    for (const [theta, value, error] of spec.points ?? []) {
-      ctx.strokeStyle = ctx.fillStyle = COLORS.ms;
-      ctx.lineWidth = 1.5;
-      ctx.beginPath();
-      ctx.moveTo(...toXY(g, theta, Math.max(value - 2 * error, 0) / spec.max));
-      ctx.lineTo(...toXY(g, theta, (value + 2 * error) / spec.max));
-      ctx.stroke();
-      ctx.beginPath();
-      ctx.arc(...toXY(g, theta, value / spec.max), 3.5, 0, 2 * Math.PI);
-      ctx.fill();
-    }
-    // directions
-    const arrow = (theta, color, label, dash = []) => {
-      const [x, y] = toXY(g, theta, 1);
-      ctx.strokeStyle = color;
-      ctx.fillStyle = color;
-      ctx.lineWidth = 2;
-      ctx.setLineDash(dash);
-      ctx.beginPath();
-      ctx.moveTo(g.cx, g.cy);
-      ctx.lineTo(x, y);
-      ctx.stroke();
-      ctx.setLineDash([]);
-      ctx.beginPath();
-      ctx.arc(x, y, label === 'l' || label === 'v' ? 7 : 3, 0, 2 * Math.PI);
-      ctx.fill();
-      ctx.font = 'bold 13px system-ui, sans-serif';
-      ctx.fillText(label, x + 9, label === 'mirror' ? y + 16 : y - 6);
-      ctx.font = '11px system-ui, sans-serif';
-    };
-    arrow(0, '#333', 'n');
-    arrow(spec.lightTheta, COLORS.mirror, 'mirror', [4, 4]);
-    if (spec.halfTheta !== null) arrow(spec.halfTheta, COLORS.half, 'h');
-    arrow(-spec.lightTheta, COLORS.light, 'l');
-    arrow(spec.viewTheta, COLORS.view, 'v');
+    drawGrid(ctx, g, spec.max);
+    drawLobes(ctx, g, spec);
+    drawWalkPoints(ctx, g, spec);
+    drawDirections(ctx, g, spec);
   }
-
-  // dragging: the handle nearest the pointer follows it
-  let dragging = null;
-  const angleAt = (e) => {
-    const rect = canvas.getBoundingClientRect();
-    const g = geometry();
-    const dx = e.clientX - rect.left - g.cx;
-    const dy = g.cy - (e.clientY - rect.top);
-    return Math.max(-89, Math.min(89, Math.atan2(dx, Math.max(dy, 0)) / DEG));
-  };
-  const down = (e) => {
-    if (!last) return;
-    const a = angleAt(e);
-    dragging = Math.abs(a + last.lightTheta) < Math.abs(a - last.viewTheta) ? 'light' : 'view';
-    canvas.setPointerCapture(e.pointerId);
-    move(e);
-  };
-  const move = (e) => {
-    if (!dragging) return;
-    const a = Math.round(angleAt(e));
-    onDrag(dragging === 'light' ? { lightTheta: Math.max(0, -a) } : { viewTheta: a });
-  };
-  const up = () => {
-    dragging = null;
-  };
-  canvas.addEventListener('pointerdown', down);
-  canvas.addEventListener('pointermove', move);
-  canvas.addEventListener('pointerup', up);
-  canvas.addEventListener('keydown', (e) => {
-    if (!last) return;
-    const step = e.shiftKey ? 1 : 5;
-    const moves = {
-      ArrowUp: { lightTheta: last.lightTheta - step },
-      ArrowDown: { lightTheta: last.lightTheta + step },
-      ArrowLeft: { viewTheta: last.viewTheta - step },
-      ArrowRight: { viewTheta: last.viewTheta + step },
-    };
-    if (!moves[e.key]) return;
-    e.preventDefault();
-    onDrag(moves[e.key]);
-  });
+  attachHandles(canvas, () => last, onDrag);
   const resize = new ResizeObserver(() => last && draw(last));
   resize.observe(canvas);
 

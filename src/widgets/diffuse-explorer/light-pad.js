@@ -20,10 +20,13 @@ export function createLightPad(container, { get, set, label }) {
   const draw = () => {
     control.draw();
     const { lightTheta, lightPhi } = get();
-    caption.textContent = `Light θ ${lightTheta}°, φ ${lightPhi}°: drag, or focus and use the arrow keys (centre = behind the viewer, ring = 90°).`;
+    caption.textContent =
+      `Light θ ${lightTheta}°, φ ${lightPhi}°: drag, or focus and use the arrow keys ` +
+      '(centre = behind the viewer, ring = 90°).';
     describeCanvas(
       canvas,
-      `${label}: the light is ${lightTheta}° from the viewing direction, at ${lightPhi}° around it. Arrow keys move it 5° at a time.`,
+      `${label}: the light is ${lightTheta}° from the viewing direction, at ${lightPhi}° around it. ` +
+        'Arrow keys move it 5° at a time.',
     );
   };
   const resize = new ResizeObserver(draw);

@@ -4,16 +4,20 @@
 import { specularAlbedoFromTable } from '../../math/albedo-table.js';
 import { randomWalkAlbedoGGX } from '../../math/random-walk.js';
 import { DEG } from '../../math/angles.js';
+import { termOptions } from '../../math/catalogue/index.js';
+
+/** The catalogue's compensations, none (single scattering) first. */
+export const COMPENSATIONS = Object.keys(termOptions('compensation'));
 
 /** View angles (degrees) where the walk runs, and its paths per angle (standard error ≈ 1e-3). */
 export const WALK_DEGREES = [0, 15, 30, 45, 60, 70, 80, 85];
 export const WALK_PATHS = 20_000;
 
-/** { none, kullaConty, turquin }: per view angle (degrees), the [r, g, b] albedo from the table. */
+/** Per compensation ({ none, kullaConty, turquin }), per view angle (degrees), the [r, g, b] albedo from the table. */
 export function albedoCurves(table, alpha, f0rgb, degrees) {
   const at = (deg, f0, compensation) => specularAlbedoFromTable(table, Math.cos(deg * DEG), alpha, f0, compensation);
   const curve = (compensation) => degrees.map((deg) => f0rgb.map((f0) => at(deg, f0, compensation)));
-  return { none: curve('none'), kullaConty: curve('kullaConty'), turquin: curve('turquin') };
+  return Object.fromEntries(COMPENSATIONS.map((compensation) => [compensation, curve(compensation)]));
 }
 
 /** The walk at WALK_DEGREES: [{ deg, albedo: [r, g, b], error: [r, g, b] }], seeded per angle. */

@@ -7,18 +7,16 @@ import { rgbToHex } from '../../core/ui/palettes.js';
 import { albedoTableOnce } from '../../core/gpu/albedo-table-texture.js';
 import { linearToSrgb } from '../../math/color.js';
 import { materialByKey } from '../../math/materials.js';
-import { WALK_DEGREES, WALK_PATHS, albedoCurves, saturation } from './compensation.js';
+import { termLabel } from '../../math/catalogue/index.js';
+import { COMPENSATIONS, WALK_DEGREES, WALK_PATHS, albedoCurves, saturation } from './compensation.js';
 
 const CHANNELS = [
   ['R', '#c0392b'],
   ['G', '#27ae60'],
   ['B', '#2c6fbb'],
 ];
-const MODELS = [
-  ['none', 'single scattering', [2, 4]],
-  ['kullaConty', 'Kulla–Conty', undefined],
-  ['turquin', 'Turquin', [9, 4]],
-];
+/** Each compensation's line pattern (solid where none is given). */
+const DASHES = { none: [2, 4], turquin: [9, 4] };
 const DEGREES = [...new Set([...Array.from({ length: 45 }, (_, i) => 2 * i), ...WALK_DEGREES])].sort((a, b) => a - b);
 
 /**
@@ -49,9 +47,9 @@ function createWalkCache(onResult) {
 function plotSpec({ metal, alpha, curves, walk }) {
   const series = [];
   const data = [DEGREES];
-  for (const [key, name, dash] of MODELS) {
+  for (const key of COMPENSATIONS) {
     CHANNELS.forEach(([ch, stroke], c) => {
-      series.push({ label: `${ch}, ${name}`, stroke, dash });
+      series.push({ label: `${ch}, ${termLabel('compensation', key)}`, stroke, dash: DASHES[key] });
       data.push(curves[key].map((rgb) => rgb[c]));
     });
   }
@@ -75,7 +73,7 @@ function plotSpec({ metal, alpha, curves, walk }) {
 
 function swatchTable({ metal, alpha, curves, walk }) {
   const walkRow = [`random walk (${WALK_PATHS / 1000}k paths${walk ? '' : ', running'})`, walk?.[0].albedo];
-  const rows = [...MODELS.map(([key, name]) => [name, curves[key][0]]), walkRow];
+  const rows = [...COMPENSATIONS.map((key) => [termLabel('compensation', key), curves[key][0]]), walkRow];
   const swatch = (rgb) => `<span class="swatch" style="background:${rgbToHex(rgb.map(linearToSrgb))}"></span>`;
   const row = ([name, rgb]) =>
     rgb

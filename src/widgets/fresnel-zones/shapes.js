@@ -1,8 +1,6 @@
-// The shapes the 3-D Fresnel views show, each scaled to fit the unit sphere and centred.
+// The shapes the 3-D Fresnel views show (named in schema.js), each scaled to fit the unit sphere and centred.
 import * as THREE from 'three';
 import { TeapotGeometry } from 'three/addons/geometries/TeapotGeometry.js';
-
-export const SHAPES = { sphere: 'Sphere', torusknot: 'Torus knot', teapot: 'Teapot' };
 
 const make = {
   sphere: () => new THREE.SphereGeometry(1, 192, 96),

@@ -3,6 +3,19 @@
 import { FIT_MODELS } from '../../measured/fit.js';
 import { EXAMPLES } from './model.js';
 
+export const TERMS_USED = [
+  'fresnelSchlick',
+  'ndfGGX',
+  'ndfBeckmann',
+  'ndfBlinnPhong',
+  'ndfABC',
+  'ndfSGD',
+  'visibilitySmithGGXCorrelated',
+  'visibilitySmithBeckmannSeparable',
+  'visibilityCookTorrance',
+  'merlCoordinates',
+];
+
 export const schema = {
   example: {
     type: 'enum',

@@ -6,7 +6,7 @@ import { seededRandom } from '../../math/microsurface.js';
 import { sizeCanvas2d } from '../../core/ui/canvas2d.js';
 import { DEG } from '../../math/angles.js';
 
-/** spec: { theta (deg), F (reflected share), etaRefr (real index for Snell), metal, depthNm (metals), name } */
+/** spec: model.js's interfaceSpec: { theta (deg), F, etaRefr (real index for Snell), metal, depthNm, name } */
 export function drawInterface(canvas, spec) {
   const { ctx, w, h } = sizeCanvas2d(canvas);
   const y0 = h * 0.45;
@@ -72,18 +72,11 @@ export function drawInterface(canvas, spec) {
       if (walk.exit === 'back') ray(cx + walk.x * scale, y0, cx + walk.x * scale, y0 - 14, 2, '#0072b2');
     }
     ctx.fillStyle = '#222';
+    const refracted = `refracted ${((1 - spec.F) * 100).toFixed(1)}%`;
     ctx.fillText(
-      `refracted ${((1 - spec.F) * 100).toFixed(1)}%: scattered inside; where paths reach the surface again, light leaves (diffuse)`,
+      `${refracted}: scattered inside; where paths reach the surface again, light leaves (diffuse)`,
       12,
       h - 12,
     );
   }
-}
-
-/** The cross-section in words. */
-export function describeInterface(spec) {
-  const rest = spec.metal
-    ? `absorbed by the metal within about ${spec.depthNm.toFixed(0)} nm`
-    : 'refracted and scattered inside; some of it comes back out as diffuse light';
-  return `Optically flat ${spec.name} in cross-section: light at ${spec.theta.toFixed(0)}° incidence, ${(spec.F * 100).toFixed(1)}% reflected; the other ${((1 - spec.F) * 100).toFixed(1)}% is ${rest}.`;
 }

@@ -1,7 +1,9 @@
-// The curves the fresnel-curves widget plots: for each chosen material, exact Fresnel and Schlick's
-// approximation against the angle of incidence, one curve per RGB channel for metals.
+// fresnel-curves, its model as pure functions: for each chosen material, exact Fresnel and Schlick's
+// approximation against the angle of incidence (one curve per RGB channel for metals), and the zones behind.
+import { SERIES_COLORS, ZONE_PALETTES, withAlpha } from '../../core/ui/palettes.js';
 import { fresnelConductor, fresnelDielectric, fresnelSchlick, f0FromIor } from '../../math/fresnel.js';
 import { channelIor, isMetal, materialByKey } from '../../math/materials.js';
+import { FRESNEL_ZONE_BOUNDS_DEG } from '../../math/zones.js';
 
 export const ANGLE_STEP_DEG = 0.25;
 export const CHANNELS = ['R', 'G', 'B'];
@@ -49,3 +51,35 @@ export function evaluateCurve(spec, angles) {
   });
   return { f0, exact, schlick, error, maxError: maxAbs, maxErrorAt: maxAt };
 }
+
+/** The talk's three zones as bands behind the curves, in the state's palette (none when they are off). */
+function zoneBands(state) {
+  if (!state.zones) return [];
+  const zoneColors = ZONE_PALETTES[state.palette].colors;
+  const [z1, z2] = FRESNEL_ZONE_BOUNDS_DEG;
+  return [
+    { from: 0, to: z1, color: withAlpha(zoneColors[0], 0.16), label: 'barely changes' },
+    { from: z1, to: z2, color: withAlpha(zoneColors[1], 0.22), label: 'changes somewhat' },
+    { from: z2, to: 90, color: withAlpha(zoneColors[2], 0.16), label: '→ 1' },
+  ];
+}
+
+/**
+ * Everything the plots and the readout show for a state: the angle grid, the curves (each with its spec,
+ * label, colour, one per material, and evaluateCurve's values) and the zone bands.
+ */
+export function buildSeries(state) {
+  const angles = angleGrid();
+  const specs = curveSpecs(state);
+  const materialOrder = [...new Set(specs.map((s) => s.key))];
+  const curves = specs.map((spec) => {
+    const label = spec.metal ? `${spec.name} ${CHANNELS[spec.channel]}` : spec.name;
+    const stroke = SERIES_COLORS[materialOrder.indexOf(spec.key) % SERIES_COLORS.length];
+    return { spec, label, stroke, ...evaluateCurve(spec, angles) };
+  });
+  return { angles, curves, bands: zoneBands(state) };
+}
+
+/** The curve where Schlick is furthest off (null when there is none). */
+export const worstCurve = (curves) =>
+  curves.reduce((a, c) => (!a || Math.abs(c.maxError) > Math.abs(a.maxError) ? c : a), null);

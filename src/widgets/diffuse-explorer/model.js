@@ -1,61 +1,28 @@
-// The data behind the diffuse explorer's plots, from src/math only (no DOM): each diffuse model as a function
-// of the cosines and the azimuth, the brightness profile across a sphere, the radiance as the light sweeps
-// past a fixed view, and the light a surface returns (specular plus diffuse) against the view angle.
-import {
-  diffuseAshikhminShirley,
-  diffuseFresnelWeighted,
-  diffuseLambert,
-  diffuseOrenNayar,
-  diffuseOrenNayarQualitative,
-} from '../../math/diffuse.js';
+// The diffuse explorer's model, pure functions (no DOM) of the catalogue's diffuse terms: each model's f of the
+// cosines and the azimuth, the brightness profile across a sphere, the radiance as the light sweeps past a fixed
+// view, and the light a surface returns (specular plus diffuse) against the view angle.
+import { termEntry } from '../../math/catalogue/index.js';
 import { fresnelSchlick } from '../../math/fresnel.js';
 import { punctualRadiance } from '../../math/brdf.js';
 import { DEG } from '../../math/angles.js';
+import { SERIES_COLORS } from '../../core/ui/palettes.js';
+import { schema } from './schema.js';
 
-/**
- * Every model: its name, the shader switch that picks it, whether it depends on the azimuth between l and v,
- * and f(nl, nv, cosPhi, { cdiff, f0, sigma }) in 1/sr.
- */
-export const MODELS = {
-  lambert: {
-    name: 'Lambert',
-    short: 'Lambert',
-    define: null,
-    f: (nl, nv, cp, p) => (nl > 0 && nv > 0 ? diffuseLambert(p.cdiff) : 0),
-  },
-  fresnelWeighted: {
-    name: 'Fresnel-weighted Lambert',
-    short: 'Fresnel-weighted',
-    define: 'DIFFUSE_MODEL_FRESNEL_WEIGHTED',
-    f: (nl, nv, cp, p) => diffuseFresnelWeighted(nl, nv, p.f0, p.cdiff),
-  },
-  ashikhminShirley: {
-    name: 'Ashikhmin–Shirley',
-    short: 'Ashikhmin–Shirley',
-    define: 'DIFFUSE_MODEL_ASHIKHMIN_SHIRLEY',
-    f: (nl, nv, cp, p) => diffuseAshikhminShirley(nl, nv, p.f0, p.cdiff),
-  },
-  orenNayar: {
-    name: 'Oren–Nayar (full)',
-    short: 'Oren–Nayar',
-    define: 'DIFFUSE_MODEL_OREN_NAYAR',
-    azimuthal: true,
-    f: (nl, nv, cp, p) => diffuseOrenNayar(nl, nv, cp, p.sigma, p.cdiff),
-  },
-  orenNayarQualitative: {
-    name: 'Oren–Nayar (qualitative)',
-    short: 'O–N qualitative',
-    define: 'DIFFUSE_MODEL_OREN_NAYAR_QUALITATIVE',
-    azimuthal: true,
-    f: (nl, nv, cp, p) => diffuseOrenNayarQualitative(nl, nv, cp, p.sigma, p.cdiff),
-  },
-};
+/** f(nl, nv, cosPhi, { cdiff, f0, sigma }) of the diffuse model `key`, in 1/sr, as the catalogue evaluates it. */
+export const diffuseAt = (key, nl, nv, cosPhi, params) => termEntry('diffuse', key).evaluate(nl, nv, cosPhi, params);
+
+/** The models whose f reads no azimuth: their albedo is an integral over n·l alone (any other takes both). */
+const AZIMUTH_FREE = new Set(['lambert', 'fresnelWeighted', 'ashikhminShirley']);
+
+/** A model's colour in every plot and table, by its place in the menu. */
+export const modelColor = (key) =>
+  SERIES_COLORS[Object.keys(schema.models.options).indexOf(key) % SERIES_COLORS.length];
 
 const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 
 /**
  * cos of the azimuth between l and v about the normal n: the angle between their projections on the tangent
- * plane. 1 where either lies along n (no model depends on it there), as in shaders/diffuse-sphere.glsl.
+ * plane. 1 where either lies along n (no model depends on it there), as in shaders/diffuse.glsl.
  */
 export function cosPhiDiff(n, l, v) {
   const lt = l.map((x, i) => x - dot(n, l) * n[i]);
@@ -68,7 +35,7 @@ export function cosPhiDiff(n, l, v) {
 export function radianceAt(model, n, l, v, params) {
   const nl = dot(n, l);
   const nv = dot(n, v);
-  return punctualRadiance(MODELS[model].f(nl, nv, cosPhiDiff(n, l, v), params), nl, 1);
+  return punctualRadiance(diffuseAt(model, nl, nv, cosPhiDiff(n, l, v), params), nl, 1);
 }
 
 /** The shading parameters of a state: c_diff, specular F0, sigma in radians. */
@@ -110,12 +77,12 @@ export const TRADE_XS = Float64Array.from({ length: 90 }, (_, i) => i + 0.5);
  * only, so phi runs over [0, pi] and counts twice; models without an azimuth need mu alone.
  */
 export function diffuseAlbedo(model, nv, params, n = 32) {
-  const { f, azimuthal } = MODELS[model];
+  const f = (mu, cosPhi) => diffuseAt(model, mu, nv, cosPhi, params);
   let sum = 0;
   for (let i = 0; i < n; i++) {
     const mu = (i + 0.5) / n;
-    if (!azimuthal) sum += f(mu, nv, 1, params) * mu * n;
-    else for (let j = 0; j < n; j++) sum += f(mu, nv, Math.cos((Math.PI * (j + 0.5)) / n), params) * mu;
+    if (AZIMUTH_FREE.has(model)) sum += f(mu, 1) * mu * n;
+    else for (let j = 0; j < n; j++) sum += f(mu, Math.cos((Math.PI * (j + 0.5)) / n)) * mu;
   }
   return (2 * Math.PI * sum) / (n * n);
 }

@@ -1,39 +1,7 @@
-// The measured-BRDF widget's DOM pieces that are not plots: the drop zone with its file picker, and the fit
-// table with its progress bar and "load this fit" buttons.
+// The measured-BRDF widget's fit table: a progress bar, one row per model with its shape, f0, c_diff and error,
+// and "load this fit" buttons.
 import { FIT_MODELS } from '../../measured/fit.js';
 import { describeShape } from './model.js';
-
-/** A drop zone and a file picker; onFile(file) for either. */
-export function createDropZone(container, onFile) {
-  const zone = document.createElement('div');
-  zone.className = 'measured-drop';
-  zone.tabIndex = 0;
-  const input = Object.assign(document.createElement('input'), { type: 'file', className: 'measured-file' });
-  input.setAttribute('aria-label', 'Choose a MERL BRDF file');
-  const text = document.createElement('p');
-  text.innerHTML = 'Drop a MERL <code>.binary</code> file here (90 × 90 × 180, 35 MB), or choose one: ';
-  text.append(input);
-  const source = document.createElement('p');
-  source.className = 'measured-source';
-  zone.append(text, source);
-  container.append(zone);
-  const take = (file) => file && onFile(file);
-  input.addEventListener('change', () => take(input.files[0]));
-  zone.addEventListener('dragover', (e) => {
-    e.preventDefault();
-    zone.classList.add('dragging');
-  });
-  zone.addEventListener('dragleave', () => zone.classList.remove('dragging'));
-  zone.addEventListener('drop', (e) => {
-    e.preventDefault();
-    zone.classList.remove('dragging');
-    take(e.dataTransfer.files[0]);
-  });
-  return {
-    setSource: (words) => (source.textContent = words),
-    dispose: () => zone.remove(),
-  };
-}
 
 /** Three channels as text; one number when they agree to the digits shown (a grey material). */
 const rgb = (x) => {

@@ -1,0 +1,155 @@
+// @ts-check
+// The visibility terms V = G / ((n·l)(n·v)) of the microfacet BRDF. evaluate(a, p): a = { nl, nv, nh, lh }.
+import {
+  visibilityCookTorrance,
+  visibilityImplicit,
+  visibilityKelemen,
+  visibilitySchlickGGX,
+  visibilitySmithBeckmannSeparable,
+  visibilitySmithGGXCorrelated,
+  visibilitySmithGGXCorrelatedFast,
+  visibilitySmithGGXSeparable,
+} from '../visibility.js';
+
+const alpha = {
+  min: 1e-4,
+  max: 1,
+  unit: '',
+  label: 'Roughness α',
+  clamped: true,
+  delicate: [1e-5, 1e-3, 0.01, 0.1, 0.3, 0.5],
+};
+
+/**
+ * A term of roughness alpha whose functions take (nl, nv, alpha) alike (names spelled out: a bundle may
+ * rename functions).
+ * @param {{ key: string, label: string, short: string, cite: string, define: string }} names
+ * @param {(nl: number, nv: number, alpha: number) => number} js
+ * @param {string} glsl
+ * @returns {import('./types.js').TermEntry}
+ */
+const smithLike = ({ key, label, short, cite, define }, js, glsl) => ({
+  key,
+  label,
+  short,
+  cite,
+  js,
+  evaluate: (a, p) => js(a.nl, a.nv, p.alpha),
+  glsl,
+  chunk: 'visibility.glsl',
+  define,
+  glslCall: `${glsl}(nl, nv, alpha)`,
+  args: ['nl', 'nv', 'alpha'],
+  params: { alpha },
+});
+
+/** @type {import('./types.js').TermFamily} */
+export const VISIBILITY_FAMILY = {
+  family: 'visibility',
+  label: 'Visibility V',
+  choice: 'V',
+  definePrefix: 'VIS',
+  glslDispatch: 'visibilityTerm',
+  glslSignature: 'float visibilityTerm(float nl, float nv, float nh, float lh, float alpha)',
+  defaultKey: 'smithGGXCorrelated',
+  terms: {
+    implicit: {
+      key: 'implicit',
+      label: 'Implicit (V = 1)',
+      short: 'Implicit',
+      cite: 'Hoffman 2013',
+      js: visibilityImplicit,
+      evaluate: (a) => visibilityImplicit(a.nl, a.nv),
+      glsl: 'visibilityImplicit',
+      chunk: 'visibility.glsl',
+      define: 'VIS_IMPLICIT',
+      glslCall: 'visibilityImplicit(nl, nv)',
+      args: ['nl', 'nv'],
+      params: {},
+    },
+    cookTorrance: {
+      key: 'cookTorrance',
+      label: 'Cook–Torrance',
+      short: 'Cook–Torrance',
+      cite: 'Cook & Torrance 1982',
+      js: visibilityCookTorrance,
+      evaluate: (a) => visibilityCookTorrance(a.nl, a.nv, a.nh, a.lh),
+      glsl: 'visibilityCookTorrance',
+      chunk: 'visibility.glsl',
+      define: 'VIS_COOK_TORRANCE',
+      glslCall: 'visibilityCookTorrance(nl, nv, nh, lh)',
+      args: ['nl', 'nv', 'nh', 'lh'],
+      params: {},
+    },
+    kelemen: {
+      key: 'kelemen',
+      label: 'Kelemen 1/(l·h)²',
+      short: 'Kelemen',
+      cite: 'Kelemen & Szirmay-Kalos 2001',
+      js: visibilityKelemen,
+      // its function takes l·h alone; like every V it is 0 at and below the horizon
+      evaluate: (a) => (a.nl > 0 && a.nv > 0 ? visibilityKelemen(a.lh) : 0),
+      glsl: 'visibilityKelemen',
+      chunk: 'visibility.glsl',
+      define: 'VIS_KELEMEN',
+      glslCall: 'aboveHorizon(nl, nv) ? visibilityKelemen(lh) : 0.0',
+      args: ['lh'],
+      params: {},
+    },
+    smithGGXSeparable: smithLike(
+      {
+        key: 'smithGGXSeparable',
+        label: 'Smith GGX, separable',
+        short: 'Smith GGX sep.',
+        cite: 'Smith 1967; Walter et al. 2007',
+        define: 'VIS_SMITH_GGX_SEPARABLE',
+      },
+      visibilitySmithGGXSeparable,
+      'visibilitySmithGGXSeparable',
+    ),
+    smithGGXCorrelated: smithLike(
+      {
+        key: 'smithGGXCorrelated',
+        label: 'Smith GGX, height-correlated',
+        short: 'Smith GGX corr.',
+        cite: 'Heitz 2014',
+        define: 'VIS_SMITH_GGX_CORRELATED',
+      },
+      visibilitySmithGGXCorrelated,
+      'visibilitySmithGGXCorrelated',
+    ),
+    smithGGXCorrelatedFast: smithLike(
+      {
+        key: 'smithGGXCorrelatedFast',
+        label: 'Hammon 2017 approx.',
+        short: 'Hammon',
+        cite: 'Hammon 2017',
+        define: 'VIS_SMITH_GGX_CORRELATED_FAST',
+      },
+      visibilitySmithGGXCorrelatedFast,
+      'visibilitySmithGGXCorrelatedFast',
+    ),
+    schlickGGX: smithLike(
+      {
+        key: 'schlickGGX',
+        label: 'Schlick–GGX (k = α/2)',
+        short: 'Schlick–GGX',
+        cite: 'Schlick 1994; Karis 2013',
+        define: 'VIS_SCHLICK_GGX',
+      },
+      visibilitySchlickGGX,
+      'visibilitySchlickGGX',
+    ),
+    smithBeckmannSeparable: smithLike(
+      {
+        key: 'smithBeckmannSeparable',
+        label: 'Smith Beckmann, separable',
+        short: 'Smith Beckmann sep.',
+        cite: 'Smith 1967; Walter et al. 2007',
+        define: 'VIS_SMITH_BECKMANN_SEPARABLE',
+      },
+      visibilitySmithBeckmannSeparable,
+      'visibilitySmithBeckmannSeparable',
+    ),
+  },
+};

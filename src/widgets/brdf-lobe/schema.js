@@ -1,0 +1,27 @@
+// The BRDF lobe's state: the light and view in the plane of incidence, BRDF A's terms and roughness, the factors
+// switched on, the overlays (intensity, multiple scattering, BRDF B) and the φd of the (θh, θd) images.
+import { termOptions } from '../../math/catalogue/index.js';
+
+const ndfOptions = termOptions('ndf');
+const visOptions = termOptions('visibility');
+
+export const schema = {
+  lightTheta: { type: 'number', min: 0, max: 89, step: 1, default: 45, label: 'Light θl', unit: '°' },
+  viewTheta: { type: 'number', min: -89, max: 89, step: 1, default: 45, label: 'View θv (+: mirror side)', unit: '°' },
+  D: { type: 'enum', options: ndfOptions, default: 'ggx', label: 'A: D' },
+  V: { type: 'enum', options: visOptions, default: 'smithGGXCorrelated', label: 'A: V' },
+  F: { type: 'enum', options: termOptions('fresnel', ['schlick', 'one']), default: 'schlick', label: 'F' },
+  alpha: { type: 'number', min: 0.02, max: 1, step: 0.01, default: 0.3, label: 'A: roughness α (GGX)' },
+  f0: { type: 'number', min: 0, max: 1, step: 0.01, default: 0.04, label: 'F0' },
+  useF: { type: 'bool', default: true, label: 'Factor F' },
+  useD: { type: 'bool', default: true, label: 'Factor D' },
+  useG: { type: 'bool', default: true, label: 'Factor G' },
+  useDenominator: { type: 'bool', default: true, label: '÷ 4(n·l)(n·v)' },
+  cosine: { type: 'bool', default: false, label: 'Lobe × n·v (intensity)' },
+  multiple: { type: 'bool', default: false, label: 'Multiple scattering (A, GGX)' },
+  compare: { type: 'bool', default: false, label: 'Overlay BRDF B' },
+  D2: { type: 'enum', options: ndfOptions, default: 'beckmann', label: 'B: D' },
+  V2: { type: 'enum', options: visOptions, default: 'smithBeckmannSeparable', label: 'B: V' },
+  alpha2: { type: 'number', min: 0.02, max: 1, step: 0.01, default: 0.3, label: 'B: roughness α (GGX)' },
+  phiD: { type: 'number', min: 0, max: 180, step: 1, default: 90, label: 'Image φd', unit: '°' },
+};

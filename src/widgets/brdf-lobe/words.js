@@ -1,0 +1,79 @@
+// The BRDF lobe's words: what it shows, the functions it names, and its pictures described for screen readers.
+import { lobePeak } from './model.js';
+
+export const TITLE = 'BRDF lobe';
+
+export const ABOUT =
+  'Drag l or v on the polar plot (or focus it and use the arrow keys). The lobe is f(l, v) for every view ' +
+  'direction: turn off D and the highlight’s shape is gone; turn off the denominator and the lobe stops ' +
+  'growing at grazing angles (that denominator, with F, is why at moderate roughness f itself is largest ' +
+  'towards the horizon, while at α = 0.1 it peaks near the mirror direction); turn off G and nothing dims at ' +
+  'the horizon. × n·v multiplies the lobe by the cosine of the view, showing how much light leaves towards ' +
+  'each direction; the reflectance equation’s cosine is another one, n·l, of the incoming light. Roughness is ' +
+  'GGX’s α; other NDFs take the parameters that give them the same half width. The image over (θh, θd) shows ' +
+  'the same BRDF in the angles it really depends on; the albedo plot integrates it over all light directions. ' +
+  'Multiple scattering adds, dotted, the light that bounces between microfacets before it leaves (Kulla & ' +
+  'Conty 2017), nearly diffuse in shape, with dots from the random walk on the microsurface (Heitz et al. ' +
+  '2016) that it approximates.';
+
+/** The functions behind the pictures, linked to their rows on the parity page. */
+export const TERMS_USED = [
+  'microfacetBRDF',
+  'fresnelSchlick',
+  'ndfGGX',
+  'ndfBeckmann',
+  'ndfBlinnPhong',
+  'ndfABC',
+  'ndfSGD',
+  'visibilitySmithGGXCorrelated',
+  'multipleScatteringKullaConty',
+  'fresnelMultipleScatteringKullaConty',
+];
+
+/** The multiple-scattering lobe in words (empty when it is off). */
+function multipleWords(state, ms) {
+  if (!state.multiple) return '';
+  if (!ms.lobe) return ' Multiple scattering is shown for GGX with height-correlated Smith only: choose those for A.';
+  const at = (theta) => ms.lobe[Math.round((theta + 89) * 2)][1];
+  const walk = ms.points.find((p) => p[0] === 5);
+  return (
+    ` Dotted: the multiple-scattering lobe of Kulla & Conty (${at(0).toPrecision(3)} /sr at 0°, ` +
+    `${at(60).toPrecision(3)} at 60°), with dots from the random walk ` +
+    `(${walk[1].toPrecision(3)} ± ${walk[2].toPrecision(1)} at 5°).`
+  );
+}
+
+/** The polar plot in words: what is drawn, with which factors off, where each lobe peaks. */
+export function describePolar(state, scene) {
+  const { A, B, lobeA, lobeB, ms } = scene;
+  const off = ['F', 'D', 'G'].filter((k) => !state[`use${k}`]).concat(state.useDenominator ? [] : ['the denominator']);
+  const what =
+    `${state.cosine ? 'f(l, v) × n·v' : 'f(l, v)'} for ${A.label}${B ? ` and, dashed, ${B.label}` : ''}` +
+    `${off.length ? ` with ${off.join(', ')} switched off` : ''}`;
+  const peaks = [
+    [A, lobeA],
+    [B, lobeB],
+  ]
+    .filter(([p]) => p)
+    .map(([p, lobe]) => {
+      const [theta, value] = lobePeak(lobe);
+      return `${p.label.slice(0, 1)} peaks at ${theta.toFixed(1)}° (${value.toPrecision(3)} /sr)`;
+    });
+  return (
+    `Polar plot in the plane of incidence: ${what}. Light ${state.lightTheta}° from n on the left, view at ` +
+    `${state.viewTheta}°, mirror direction at ${state.lightTheta}°. ${peaks.join('; ')}.${multipleWords(state, ms)}`
+  );
+}
+
+/** The 3-D lobe in words. */
+export function describeLobe3d(state, scene) {
+  const { A, B, max } = scene;
+  return (
+    `3-D lobe of ${A.label}${B ? ` (solid) and ${B.label} (wireframe)` : ''} over the hemisphere, light ` +
+    `${state.lightTheta}° from n; each direction's distance from the centre is ${state.cosine ? 'f × n·v' : 'f'}, ` +
+    `scaled to ${max.toPrecision(3)}. Arrows: n, l, v, h and the mirror direction.`
+  );
+}
+
+/** A (θh, θd) image's BRDF in words. */
+export const describeImage = (state, p, alpha) => `${p.label}, α ${alpha}, F0 ${state.f0}, at φd ${state.phiD}°`;

@@ -1,0 +1,56 @@
+// The white furnace's spheres: one per roughness in a uniform white environment, each pixel E(n·v) from the
+// split-sum table (GGX, height-correlated Smith, F = 1), or, compensated, the albedo with the lost energy put back
+// (from the albedo-loss table, made when a compensation is first chosen). The probe reads E and the loss there.
+import { createSphereGrid } from '../../core/ui/sphere-grid.js';
+import { createDfgTexture } from '../../lab/environment-maps.js';
+import { createAlbedoTableTexture, albedoTableOnce } from '../../core/gpu/albedo-table-texture.js';
+import { albedoGGX } from '../../math/integrate.js';
+import { specularAlbedoFromTable } from '../../math/albedo-table.js';
+import { termDefines } from '../../math/catalogue/index.js';
+
+/** The furnace's shader variant: a compensation's own switch and, with one, the albedo-loss table it reads. */
+export const furnaceDefines = (compensation) => ({
+  FURNACE: true,
+  ...termDefines({ compensation }),
+  ...(compensation === 'none' ? {} : { ALBEDO_TABLE_GGX: true }),
+});
+
+/** The probe's rows at a sphere point: E(n·v), the energy lost and, compensated, the albedo with it put back. */
+function probeRows(a, alpha, compensation, compensationLabel) {
+  const e = albedoGGX(a.nv, alpha);
+  const rows = [
+    ['E(n·v), F = 1', e.toFixed(4)],
+    ['energy lost', `${((1 - e) * 100).toFixed(1)}%`],
+  ];
+  if (compensation === 'none') return rows;
+  const compensated = specularAlbedoFromTable(albedoTableOnce(), a.nv, alpha, 1, compensation);
+  return [...rows, [`with ${compensationLabel}`, compensated.toFixed(4)]];
+}
+
+export function createFurnaceSpheres(container) {
+  const grid = createSphereGrid(container, { label: 'Spheres in a white furnace', background: '#ffffff' });
+  const dfg = createDfgTexture(); // GGX, height-correlated Smith: scale + bias is E
+  let lossTable = null;
+  return {
+    /** One sphere per α of the sweep, with `compensation` (a key) whose label the probe shows. */
+    draw(sweep, compensation, compensationLabel) {
+      if (compensation !== 'none') lossTable ??= createAlbedoTableTexture();
+      grid.setCells(
+        sweep.map((d) => ({
+          label: `α = ${d.alpha}`,
+          defines: furnaceDefines(compensation),
+          uniforms: { uAlpha: d.alpha, uDfg: dfg, uAlbedoTableGGX: lossTable },
+          probe: (a) => probeRows(a, d.alpha, compensation, compensationLabel),
+        })),
+      );
+    },
+    get canvas() {
+      return grid.canvas;
+    },
+    dispose() {
+      grid.dispose();
+      dfg.dispose();
+      lossTable?.dispose();
+    },
+  };
+}

@@ -1,0 +1,58 @@
+// fresnel-zones, in words: the about text, the legend's lines and the picture described for screen readers.
+import { ZONE_LABELS, paletteColourNames } from '../../core/ui/palettes.js';
+import { fresnelParams, materialByKey } from '../../math/materials.js';
+import { MODES, SHAPES } from './schema.js';
+import { AVERAGE_LIGHTS, isWeighted, zonesByLh } from './model.js';
+
+export const TITLE = 'Fresnel zones';
+
+export const ABOUT =
+  'Drag on the picture (or focus it and use the arrow keys) to move the light; the ring marks light at 90° ' +
+  'from the view. Start with the glass Fresnel of n·v: dark centre, bright rim. Then compare the zones of n·v ' +
+  'with the zones of l·h: by l·h the whole object can turn yellow or red, yet once weighted by the rest of the ' +
+  'BRDF the light that actually reaches the eye is mostly green. Hover the surface to probe it.';
+
+const pct = (x) => `${(x * 100).toFixed(1)}%`;
+/** A zone's short name: 'barely changes', … */
+export const zoneName = (i) => ZONE_LABELS[i].split(' (')[0];
+const zoneList = (shares) => shares.map((z, i) => `${zoneName(i)} ${pct(z)}`).join(', ');
+const shareOf = (state) => (isWeighted(state) ? 'reflected light' : 'covered pixels');
+const angleName = (state) => (zonesByLh(state) ? 'l·h' : 'n·v');
+
+/** The legend's heading: what is shared out, by which angle, and whether the figures in brackets are exact. */
+export const legendHead = (state, analytic) =>
+  `Zones of ${angleName(state)} — share of ${shareOf(state)}${analytic ? ' (analytic for this sphere)' : ''}`;
+
+/** One zone's measured share, and its exact share in brackets where known. */
+export const shareText = (share, exact) => `${pct(share)}${exact === undefined ? '' : ` (${pct(exact)})`}`;
+
+export const averageText = (state, averageShares) =>
+  `Averaged over ${AVERAGE_LIGHTS} light directions all around the object (GGX α ${state.alpha}): ` +
+  `${zoneList(averageShares)}.`;
+
+function pictureText(state) {
+  if (state.mode === 'fresnel-nv') {
+    const f0 = fresnelParams(state.material, state.conductor).f0;
+    return (
+      `${state.fresnel} Fresnel reflectance of n·v: ${f0.map(pct).join(' / ')} where the surface faces the ` +
+      'viewer, rising to 100% at the silhouette'
+    );
+  }
+  const alpha = isWeighted(state) ? ` (GGX α ${state.alpha})` : '';
+  return `${MODES[state.mode]}${alpha}, zones coloured ${paletteColourNames(state.palette)}`;
+}
+
+/** The picture in words: the shape, what colours it, where the light is, and the measured zone shares. */
+export function describeView(state, { zoneShares, averageShares }) {
+  const light = `${state.lightTheta.toFixed(0)}° from the view direction, ${state.lightPhi.toFixed(0)}° around it`;
+  const behind = state.lightTheta > 90 ? ' (behind the object)' : '';
+  const average =
+    averageShares && isWeighted(state)
+      ? ` Averaged over ${AVERAGE_LIGHTS} light directions: ${zoneList(averageShares)}.`
+      : '';
+  return (
+    `${SHAPES[state.shape]} (${state.camera}), ${materialByKey(state.material).name}: ${pictureText(state)}. ` +
+    `Light ${light}${behind}. ` +
+    `Share of ${shareOf(state)} by zone of ${angleName(state)}: ${zoneList(zoneShares)}.${average}`
+  );
+}

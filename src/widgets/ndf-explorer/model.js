@@ -1,0 +1,40 @@
+// The NDF explorer's numbers, from src/math only: each chosen NDF at the matched width, sampled over θh, its
+// normalisation integral, and a measured slice placed on the same angles.
+import { NDF_TERMS } from '../../math/brdf.js';
+import { matchNdfWidths } from '../../math/ndf-width.js';
+import { ndfProjectedIntegral } from '../../math/integrate.js';
+import { DEG } from '../../math/angles.js';
+import { seriesStyle } from '../../core/ui/palettes.js';
+import { THETA_H_DEG } from '../measured-brdf/model.js';
+import { termLabel } from '../../math/catalogue/index.js';
+import { NDF_KEYS } from './schema.js';
+
+/** θh in degrees: every 0.25° and the θh nodes of a MERL table (where a measured slice has its values), in order. */
+export const ANGLES = Float64Array.from(
+  new Set([...Array.from({ length: 361 }, (_, i) => i * 0.25), ...THETA_H_DEG]),
+).sort();
+const NODE_AT = new Map(Array.from(THETA_H_DEG, (deg, i) => [deg, i]));
+
+/** The measured slice on ANGLES: its value at each node, null between nodes and where it is 0 (missing). */
+export const measuredOnAngles = (slice) =>
+  Array.from(ANGLES, (deg) => (NODE_AT.has(deg) && slice[NODE_AT.get(deg)] > 0 ? slice[NODE_AT.get(deg)] : null));
+
+/**
+ * One curve per chosen NDF: { key, p (its parameters at the matched width, as NDF_TERMS read them), label,
+ * stroke, dash, values (D over ANGLES, 1/sr), integral (∫ D (n·m) dω, 1 for a density) }.
+ */
+export function ndfCurves(state) {
+  const params = matchNdfWidths(state.hwhm, { abcA2: state.abcA2, sgdP: state.sgdP });
+  return state.ndfs.map((key) => {
+    const p = params[key];
+    const D = (c) => NDF_TERMS[key](c, p);
+    return {
+      key,
+      p,
+      label: termLabel('ndf', key),
+      ...seriesStyle(NDF_KEYS.indexOf(key)),
+      values: ANGLES.map((deg) => D(Math.cos(deg * DEG))),
+      integral: ndfProjectedIntegral(D),
+    };
+  });
+}

@@ -1,0 +1,48 @@
+// The visibility explorer's numbers, from src/math only: G = V·(n·l)(n·v) of each chosen term as the light
+// sweeps, its difference from height-correlated Smith, and the largest difference up to 80°.
+import { VISIBILITY_TERMS, brdfAngles } from '../../math/brdf.js';
+import { DEG } from '../../math/angles.js';
+import { seriesStyle } from '../../core/ui/palettes.js';
+import { termLabel } from '../../math/catalogue/index.js';
+import { schema } from './schema.js';
+
+/** The term every other is measured against. */
+export const REFERENCE = 'smithGGXCorrelated';
+
+export const ANGLES = Float64Array.from({ length: 357 }, (_, i) => i * 0.25); // 0..89°
+
+/** l and v at angle `deg` (degrees): mirrored about n, or l sweeping past a view fixed at viewTheta. */
+function directions(state, deg) {
+  const t = deg * DEG;
+  if (state.config === 'mirror') return { l: [Math.sin(t), 0, Math.cos(t)], v: [-Math.sin(t), 0, Math.cos(t)] };
+  const tv = state.viewTheta * DEG;
+  return { l: [Math.sin(t), 0, Math.cos(t)], v: [-Math.sin(tv), 0, Math.cos(tv)] };
+}
+
+/**
+ * One curve per chosen term: { key, label, stroke, dash, G (over ANGLES), error (% from the reference, null
+ * where it is 0), worst (largest |error| up to 80°) }.
+ */
+export function visibilityCurves(state) {
+  const params = { alpha: state.alpha };
+  const evalTerm = (key) =>
+    ANGLES.map((deg) => {
+      const { l, v } = directions(state, deg);
+      const a = brdfAngles(l, v);
+      return VISIBILITY_TERMS[key](a, params) * a.nl * a.nv;
+    });
+  const reference = evalTerm(REFERENCE);
+  return state.terms.map((key) => {
+    const G = evalTerm(key);
+    const error = G.map((g, i) => (reference[i] > 1e-9 ? (100 * (g - reference[i])) / reference[i] : null));
+    const within = error.filter((e, i) => e !== null && ANGLES[i] <= 80);
+    return {
+      key,
+      label: termLabel('visibility', key),
+      ...seriesStyle(Object.keys(schema.terms.options).indexOf(key)),
+      G,
+      error,
+      worst: Math.max(...within.map(Math.abs)),
+    };
+  });
+}

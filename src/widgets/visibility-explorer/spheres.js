@@ -1,0 +1,36 @@
+// The visibility explorer's spheres: one per chosen term, with GGX D and F = 1, under one small light; the
+// probe reads V, G and V against height-correlated Smith there.
+import { createSphereGrid } from '../../core/ui/sphere-grid.js';
+import { lightDirFromAngles } from '../../math/angles.js';
+import { VISIBILITY_TERMS } from '../../math/brdf.js';
+import { REFERENCE } from './model.js';
+import { termDefines, termEntry } from '../../math/catalogue/index.js';
+
+/** The sphere of one term's curve (model.js's visibilityCurves): { label, defines, uniforms, probe }. */
+export function sphereCell(c, state) {
+  const params = { alpha: state.alpha };
+  return {
+    label: termEntry('visibility', c.key).short,
+    defines: termDefines({ F: 'one', D: 'ggx', V: c.key }),
+    uniforms: { uLightDir: lightDirFromAngles(state.lightTheta, 135), uExposure: state.exposure, uAlpha: state.alpha },
+    probe: (a) => {
+      const V = VISIBILITY_TERMS[c.key](a, params);
+      return [
+        ['V', V.toPrecision(4)],
+        ['G = V (n·l)(n·v)', (V * Math.max(a.nl, 0) * Math.max(a.nv, 0)).toFixed(4)],
+        ['V / V Smith corr.', (V / VISIBILITY_TERMS[REFERENCE](a, params)).toFixed(4)],
+      ];
+    },
+  };
+}
+
+export function createVisibilitySpheres(container) {
+  const grid = createSphereGrid(container, { label: 'Visibility terms on spheres' });
+  return {
+    draw: (curves, state) => grid.setCells(curves.map((c) => sphereCell(c, state))),
+    get canvas() {
+      return grid.canvas;
+    },
+    dispose: () => grid.dispose(),
+  };
+}
