@@ -1,6 +1,6 @@
 // ESLint (flat config): the recommended rules, the house's line and function lengths, and the boundaries
 // between rooms (DESIGN.md, "Layout"): src/math imports nothing of the app; the shared core imports no widget,
-// page or lab; a widget imports no page.
+// page or lab; a widget imports no page; only debug-hooks.js touches the test hooks (globalThis.__shadingLab).
 import js from '@eslint/js';
 import globals from 'globals';
 
@@ -34,7 +34,10 @@ export default [
         'error',
         {
           paths: ['three', 'lil-gui', 'uplot', 'katex'].map((name) => ({ name, message: 'src/math is pure math.' })),
-          ...forbid(APP.filter((r) => r !== 'math'), 'src/math imports nothing of the app.'),
+          ...forbid(
+            APP.filter((r) => r !== 'math'),
+            'src/math imports nothing of the app.',
+          ),
         },
       ],
     },
@@ -49,6 +52,18 @@ export default [
     files: ['src/core/framework/**/*.js'],
     rules: {
       'no-restricted-imports': ['error', forbid(['widgets', 'pages', 'lab'], 'The framework imports no widget.')],
+    },
+  },
+  {
+    // the test hooks have one owner; the rest of the app calls its functions
+    files: ['src/**/*.js'],
+    ignores: ['src/core/framework/debug-hooks.js'],
+    rules: {
+      'no-restricted-properties': [
+        'error',
+        { object: 'globalThis', property: '__shadingLab', message: 'Use src/core/framework/debug-hooks.js.' },
+        { object: 'window', property: '__shadingLab', message: 'Use src/core/framework/debug-hooks.js.' },
+      ],
     },
   },
   {

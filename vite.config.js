@@ -50,8 +50,10 @@ function pageChrome() {
           : '';
         const subtitle = crumb
           ? ''
-          : '<span class="subtitle">an interactive companion to <em>Background: Physics and Math of Shading</em> (Naty Hoffman, SIGGRAPH 2013)</span>';
-        return `<body${a}${b}>\n    <header class="site-header"><a class="brand" href="./">Shading Lab</a>${nav}${subtitle}</header>`;
+          : '<span class="subtitle">an interactive companion to <em>Background: Physics and Math of Shading</em> ' +
+            '(Naty Hoffman, SIGGRAPH 2013)</span>';
+        const brand = '<a class="brand" href="./">Shading Lab</a>';
+        return `<body${a}${b}>\n    <header class="site-header">${brand}${nav}${subtitle}</header>`;
       });
     },
   };
@@ -100,7 +102,7 @@ function cspMeta() {
   };
 }
 
-/** Every page loads src/core/framework/offline.js, which registers the service worker (before Vite bundles the page). */
+/** Every page loads src/core/framework/offline.js, which registers the service worker (before Vite bundles it). */
 function offlineScript() {
   const tag = '    <script type="module" src="/src/core/framework/offline.js"></script>\n  </body>';
   return {

@@ -1,4 +1,4 @@
-// Rewrites the measured part of README.md's "Performance and accuracy" section from bench/results/latest.json
+// Rewrites the measured part of docs/performance.md from bench/results/latest.json
 // (npm run bench:readme), between the markers <!-- bench:begin --> and <!-- bench:end -->.
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
@@ -90,12 +90,12 @@ lines.push(
   ),
 );
 
-const path = join(ROOT, 'README.md');
+const path = join(ROOT, 'docs/performance.md');
 const readme = readFileSync(path, 'utf8');
 const [begin, end] = ['<!-- bench:begin -->', '<!-- bench:end -->'];
-if (!readme.includes(begin) || !readme.includes(end)) throw new Error(`README.md has no ${begin} … ${end} block`);
+if (!readme.includes(begin) || !readme.includes(end)) throw new Error(`${path} has no ${begin} … ${end} block`);
 writeFileSync(
   path,
   `${readme.slice(0, readme.indexOf(begin) + begin.length)}\n${lines.join('\n')}\n${readme.slice(readme.indexOf(end))}`,
 );
-console.log('README.md: measured tables rewritten from bench/results/latest.json');
+console.log('docs/performance.md: measured tables rewritten from bench/results/latest.json');

@@ -1,6 +1,7 @@
 // Hostile values for the fuzz tests (unit and browser): what a crafted link or a hostile parent page may send,
 // a seeded generator of partial states from them, and the rules a widget's state must keep whatever came in.
-// The rules are written here from the README's description of the state, not from src/core/framework/state.js.
+// The rules are written here from docs/security.md's description of the state, not from
+// src/core/framework/state.js.
 
 /** A small seeded generator (mulberry32): the same seed gives the same inputs on every run. */
 export function seededRandom(seed) {
@@ -98,7 +99,7 @@ export function hostilePartial(schema, random, typed) {
 
 const DECIMAL = /^\s*[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?\s*$/i;
 
-/** True when `raw` is a value the README says a field takes as it is (no notice): the independent statement. */
+/** True when `raw` is a value docs/security.md says a field takes as it is (no notice): the independent statement. */
 export function isClean(f, raw) {
   const own = (v) => typeof v === 'string' && Object.prototype.hasOwnProperty.call(f.options, v);
   switch (f.type) {
@@ -117,7 +118,7 @@ export function isClean(f, raw) {
     case 'color':
       return typeof raw === 'string' && /^#?[0-9a-f]{6}$/i.test(raw.trim());
     case 'samples': {
-      // README: a comma list of exactly `length` plain decimals within the range, or the empty list
+      // docs/security.md: a comma list of exactly `length` plain decimals within the range, or the empty list
       const items = typeof raw === 'string' ? (raw === '' ? [] : raw.split(',')) : Array.isArray(raw) ? raw : null;
       const inRange = (v) => {
         const x = typeof v === 'number' ? v : typeof v === 'string' && DECIMAL.test(v) ? Number(v) : NaN;
@@ -125,7 +126,7 @@ export function isClean(f, raw) {
       };
       return items !== null && (items.length === 0 || items.length === f.length) && items.every(inRange);
     }
-    case 'text': // README: at most maxLength letters, digits, spaces and . _ - ( ) + ,
+    case 'text': // docs/security.md: at most maxLength letters, digits, spaces and . _ - ( ) + ,
       return typeof raw === 'string' && raw.length <= f.maxLength && /^[\p{L}\p{N} ._()+,-]*$/u.test(raw);
     default:
       return false;

@@ -1,7 +1,7 @@
 // Checks an exercise file (parsed JSON) against the format in docs/exercises.md. Never throws: returns
 // { exercise, errors }, each error naming the field and what is wrong, so a lecturer can fix the file.
 import { CHAPTERS } from '../pages/chapters.js';
-import { coerceState, defaultState, isOption, showValue } from '../core/framework/state.js';
+import { coerceState, defaultState, optionKey, showValue } from '../core/framework/state.js';
 import { GRADERS, isGraderName } from './graders.js';
 
 export const FIELDS = [
@@ -32,12 +32,13 @@ export function fieldProblem(f, value) {
       if (typeof value !== 'number' || !Number.isFinite(value)) return `${show(value)} is not a number`;
       return value < f.min || value > f.max ? `${value} is outside ${f.min}…${f.max}` : null;
     case 'enum':
-      return isOption(f.options, value) ? null : `${show(value)} is not one of ${Object.keys(f.options).join(', ')}`;
+      if (optionKey(f, value) !== undefined) return null;
+      return `${show(value)} is not one of ${Object.keys(f.options).join(', ')}`;
     case 'bool':
       return typeof value === 'boolean' ? null : `${show(value)} is not true or false`;
     case 'set': {
       if (!Array.isArray(value)) return `${show(value)} is not a list`;
-      const unknown = value.filter((v) => !isOption(f.options, v));
+      const unknown = value.filter((v) => optionKey(f, v) === undefined);
       return unknown.length ? `${unknown.map(show).join(', ')} not among ${Object.keys(f.options).join(', ')}` : null;
     }
     case 'color':

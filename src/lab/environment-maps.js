@@ -5,14 +5,16 @@
 // precomputed), which does not depend on the environment.
 import * as THREE from 'three';
 import { RoomEnvironment } from 'three/examples/jsm/environments/RoomEnvironment.js';
-import { assembleGlsl } from '../core/gpu/glsl.js';
-import { SHADER_CHUNKS } from '../core/gpu/shader-chunks.js';
+import { createFullscreenPass } from '../core/gpu/fullscreen-pass.js';
+import { createProgramCache } from '../core/gpu/program-cache.js';
 import { DFG_TABLE_SIZE } from '../math/integrate.js';
 import { dfgTableData } from './dfg-table.js';
 import { buildEnvSampling } from './env-sampling.js';
 import { irradianceMap } from './env-irradiance.js';
+import { fullscreenMaterial } from './fullscreen-material.js';
 
-export const ENV_SIZE = [256, 128]; // coarse enough that the reference converges on small bright lights, fine enough for a mirror
+// coarse enough that the reference converges on small bright lights, fine enough for a mirror
+export const ENV_SIZE = [256, 128];
 export const PREFILTER_SIZE = [128, 64];
 export const PREFILTER_LEVELS = 8; // layer k at perceptual roughness k/8, alpha = (k/8)²; level 0 is the map itself
 const IRRADIANCE_SIZE = [32, 16];
@@ -52,64 +54,19 @@ const halfTarget = (w, h, options = {}) =>
     ...options,
   });
 
+/**
+ * The maps of one environment (see the top of this file), on `renderer`; load(source) replaces the environment,
+ * dispose() frees everything.
+ */
 export function createEnvironmentMaps(renderer) {
-  const env = halfTarget(...ENV_SIZE, { minFilter: THREE.LinearMipmapLinearFilter, generateMipmaps: true });
-  const weighted = halfTarget(...ENV_SIZE, { minFilter: THREE.LinearMipmapLinearFilter, generateMipmaps: true }); // for the prefilter
-
-  const quad = new THREE.Mesh(new THREE.PlaneGeometry(2, 2));
-  quad.frustumCulled = false;
-  const scene = new THREE.Scene().add(quad);
-  const camera = new THREE.Camera();
-  const pass = (fragment, defines, uniforms) =>
-    new THREE.ShaderMaterial({
-      glslVersion: THREE.GLSL3,
-      uniforms,
-      vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
-      fragmentShader: assembleGlsl(SHADER_CHUNKS[fragment], { defines }),
-      depthTest: false,
-      depthWrite: false,
-    });
-  const copyFlat = pass(
-    'env-copy.frag.glsl',
-    {},
-    { uSource: { value: null }, uSize: { value: new THREE.Vector2(...ENV_SIZE) } },
-  );
-  const copyWeighted = pass(
-    'env-copy.frag.glsl',
-    { WEIGHTED: 1 },
-    { uSource: { value: env.texture }, uSize: { value: new THREE.Vector2(...ENV_SIZE) } },
-  );
-  const copyCube = pass(
-    'env-copy.frag.glsl',
-    { CUBE_SOURCE: 1 },
-    { uSource: { value: null }, uSize: { value: new THREE.Vector2(...ENV_SIZE) } },
-  );
-  const filterUniforms = () => ({
-    uEnv: { value: weighted.texture },
-    uEnvSize: { value: new THREE.Vector2(...ENV_SIZE) },
-    uSize: { value: new THREE.Vector2() },
-    uAlpha: { value: 0 },
-    uSamples: { value: 64 },
-  });
-  const run = (material, target, layer = 0) => {
-    quad.material = material;
-    renderer.setRenderTarget(target, layer);
-    renderer.render(scene, camera);
-  };
-  const prefilterPass = (defines) => pass('env-prefilter.frag.glsl', defines, filterUniforms());
-  const prefiltered = createPrefilterCache(renderer, run, prefilterPass);
-
+  const mipmapped = { minFilter: THREE.LinearMipmapLinearFilter, generateMipmaps: true };
+  const env = halfTarget(...ENV_SIZE, mipmapped);
+  const weighted = halfTarget(...ENV_SIZE, mipmapped); // for the prefilter
+  const pass = createFullscreenPass();
+  const copies = createEnvCopies(renderer, pass, env, weighted);
+  const prefiltered = createPrefilterCache(renderer, pass, weighted);
   const readback = createEnvReadback(renderer, env);
-  let pmremGenerator = null;
-  let pmrem = null;
-
-  const roomCube = () => {
-    const cubeTarget = new THREE.WebGLCubeRenderTarget(256, { type: THREE.HalfFloatType });
-    const room = new RoomEnvironment();
-    new THREE.CubeCamera(0.1, 100, cubeTarget).update(renderer, room);
-    room.dispose();
-    return cubeTarget;
-  };
+  const pmrem = createPmremOf(renderer, env);
 
   return {
     env: env.texture,
@@ -119,49 +76,101 @@ export function createEnvironmentMaps(renderer) {
     sampling: readback.sampling,
     /** Replaces the environment: 'studio', or pixels { data, width, height } (sky, furnace, a user's file). */
     load(source) {
-      const previous = renderer.getRenderTarget();
+      copies.load(source);
+      prefiltered.stale();
+      readback.update();
+      pmrem.stale();
+    },
+    /** three.js's PMREM of the current environment, made when first asked for. */
+    pmrem: pmrem.get,
+    dispose() {
+      [env, weighted, readback, copies, pass, prefiltered, pmrem].forEach((x) => x.dispose());
+    },
+  };
+}
+
+/**
+ * Writes an environment into `env` (from pixels, or from three.js's room for 'studio') and its solid-angle
+ * weighted copy into `weighted` (env-copy.frag.glsl).
+ */
+function createEnvCopies(renderer, pass, env, weighted) {
+  const copy = (defines, source = null) =>
+    fullscreenMaterial('env-copy.frag.glsl', {
+      defines,
+      uniforms: { uSource: { value: source }, uSize: { value: new THREE.Vector2(...ENV_SIZE) } },
+    });
+  const copyFlat = copy({});
+  const copyWeighted = copy({ WEIGHTED: 1 }, env.texture);
+  const copyCube = copy({ CUBE_SOURCE: 1 });
+  return {
+    load(source) {
       if (source === 'studio') {
-        const cube = roomCube();
+        const cube = roomCube(renderer);
         copyCube.uniforms.uSource.value = cube.texture;
-        run(copyCube, env);
+        pass.render(renderer, copyCube, env);
         cube.dispose();
       } else {
         const texture = halfTexture(source);
         copyFlat.uniforms.uSource.value = texture;
-        run(copyFlat, env);
+        pass.render(renderer, copyFlat, env);
         texture.dispose();
       }
-      run(copyWeighted, weighted);
-      prefiltered.stale();
-      readback.update();
-      renderer.setRenderTarget(previous);
+      pass.render(renderer, copyWeighted, weighted);
+    },
+    dispose: () => [copyFlat, copyCube, copyWeighted].forEach((x) => x.dispose()),
+  };
+}
+
+/** three.js's RoomEnvironment as a cube map (the studio). */
+function roomCube(renderer) {
+  const cubeTarget = new THREE.WebGLCubeRenderTarget(256, { type: THREE.HalfFloatType });
+  const room = new RoomEnvironment();
+  new THREE.CubeCamera(0.1, 100, cubeTarget).update(renderer, room);
+  room.dispose();
+  return cubeTarget;
+}
+
+/** three.js's PMREM of the map `env` (get()), made when first asked for after each change (stale()). */
+function createPmremOf(renderer, env) {
+  let generator = null;
+  let pmrem = null;
+  return {
+    get() {
+      generator ??= new THREE.PMREMGenerator(renderer);
+      env.texture.mapping = THREE.EquirectangularReflectionMapping;
+      pmrem ??= generator.fromEquirectangular(env.texture);
+      return pmrem.texture;
+    },
+    stale() {
       pmrem?.dispose();
       pmrem = null;
     },
-    /** three.js's PMREM of the current environment, made when first asked for. */
-    pmrem() {
-      pmremGenerator ??= new THREE.PMREMGenerator(renderer);
-      env.texture.mapping = THREE.EquirectangularReflectionMapping;
-      pmrem ??= pmremGenerator.fromEquirectangular(env.texture);
-      return pmrem.texture;
-    },
     dispose() {
-      [env, weighted].forEach((x) => x.dispose());
-      readback.dispose();
-      [copyFlat, copyCube, copyWeighted, quad.geometry].forEach((x) => x.dispose());
-      prefiltered.dispose();
       pmrem?.dispose();
-      pmremGenerator?.dispose();
+      generator?.dispose();
     },
   };
 }
 
 /**
  * The map's prefiltered layers for the split sum, one set per NDF ('ggx' | 'beckmann'), each made when first asked
- * for and remade after the map changes (stale()). `makeFilter(defines)` gives the prefilter pass for an NDF.
+ * for and remade after the map changes (stale()): the solid-angle weighted map `weighted` filtered with the NDF's
+ * lobe (env-prefilter.frag.glsl), layer k - 1 at alpha = (k / PREFILTER_LEVELS)².
  */
-function createPrefilterCache(renderer, run, makeFilter) {
-  const byNdf = new Map(); // ndf -> { target, filter, fresh }
+function createPrefilterCache(renderer, pass, weighted) {
+  const filters = createProgramCache((defines) =>
+    fullscreenMaterial('env-prefilter.frag.glsl', {
+      defines,
+      uniforms: {
+        uEnv: { value: weighted.texture },
+        uEnvSize: { value: new THREE.Vector2(...ENV_SIZE) },
+        uSize: { value: new THREE.Vector2(...PREFILTER_SIZE) },
+        uAlpha: { value: 0 },
+        uSamples: { value: 64 },
+      },
+    }),
+  );
+  const byNdf = new Map(); // ndf -> { target, fresh }
   const entryOf = (ndf) => {
     if (!byNdf.has(ndf)) {
       const target = new THREE.WebGLArrayRenderTarget(...PREFILTER_SIZE, PREFILTER_LEVELS, {
@@ -171,9 +180,7 @@ function createPrefilterCache(renderer, run, makeFilter) {
         minFilter: THREE.LinearFilter,
         wrapS: THREE.RepeatWrapping,
       });
-      const filter = makeFilter(PREFILTER_DEFINES[ndf]);
-      filter.uniforms.uSize.value.set(...PREFILTER_SIZE);
-      byNdf.set(ndf, { target, filter, fresh: false });
+      byNdf.set(ndf, { target, fresh: false });
     }
     return byNdf.get(ndf);
   };
@@ -181,20 +188,32 @@ function createPrefilterCache(renderer, run, makeFilter) {
     get(ndf) {
       const entry = entryOf(ndf);
       if (!entry.fresh) {
-        const previous = renderer.getRenderTarget();
+        const filter = filters.get(PREFILTER_DEFINES[ndf]);
         for (let k = 1; k <= PREFILTER_LEVELS; k++) {
-          entry.filter.uniforms.uAlpha.value = (k / PREFILTER_LEVELS) ** 2;
-          run(entry.filter, entry.target, k - 1);
+          filter.uniforms.uAlpha.value = (k / PREFILTER_LEVELS) ** 2;
+          pass.render(intoLayer(renderer, k - 1), filter, entry.target);
         }
-        renderer.setRenderTarget(previous);
         entry.fresh = true;
       }
       return entry.target.texture;
     },
     stale: () => byNdf.forEach((entry) => (entry.fresh = false)),
-    dispose: () => byNdf.forEach(({ target, filter }) => [target, filter].forEach((x) => x.dispose())),
+    dispose() {
+      byNdf.forEach(({ target }) => target.dispose());
+      filters.dispose();
+    },
   };
 }
+
+/**
+ * `renderer` as the full-screen pass uses it, with an array target's `layer` as the one drawn into (the pass sets
+ * targets without a layer, which is layer 0).
+ */
+const intoLayer = (renderer, layer) => ({
+  getRenderTarget: () => renderer.getRenderTarget(),
+  setRenderTarget: (target) => renderer.setRenderTarget(target, target?.isWebGLArrayRenderTarget ? layer : 0),
+  render: (scene, camera) => renderer.render(scene, camera),
+});
 
 /** From the map `env` as it is on the GPU (update() reads it back): its irradiance, and tables to sample it by
  * brightness. */

@@ -3,26 +3,31 @@
 // no form for a term, what stands in for it. The sentences the lab shows under its images come from here, so
 // the error image is read as the method's error and not as a difference between two models.
 import { SIGMA_MODELLED_DEG, sigmaExtrapolated, sigmaText } from '../core/ui/sigma-range.js';
+import { termEntry, termOptions } from '../math/catalogue/index.js';
 
-/** The terms the lab offers, with the words the page uses for them. */
+/**
+ * The terms the lab offers, by family, with the catalogue's labels: the ones its approximations have tables for
+ * (GGX and Beckmann: their DFG tables and prefilters) and that its program draws.
+ */
 export const LAB_TERMS = {
-  fresnel: { schlick: 'Schlick', one: 'F = 1' },
-  ndf: { ggx: 'GGX', beckmann: 'Beckmann' },
-  visibility: {
-    smithGGXCorrelated: 'Smith GGX height-correlated',
-    smithGGXSeparable: 'Smith GGX separable',
-    schlickGGX: 'Schlick-GGX',
-    kelemen: 'Kelemen',
-    cookTorrance: 'Cook-Torrance',
-    implicit: 'Implicit',
-  },
-  diffuse: {
-    lambert: 'Lambert',
-    'fresnel-weighted': 'Fresnel-weighted Lambert',
-    'ashikhmin-shirley': 'Ashikhmin-Shirley',
-    'oren-nayar': 'Oren-Nayar',
-    'oren-nayar-qualitative': 'Oren-Nayar (qualitative)',
-  },
+  fresnel: termOptions('fresnel', ['schlick', 'one']),
+  ndf: termOptions('ndf', ['ggx', 'beckmann']),
+  visibility: termOptions('visibility', [
+    'smithGGXCorrelated',
+    'smithGGXSeparable',
+    'schlickGGX',
+    'kelemen',
+    'cookTorrance',
+    'implicit',
+  ]),
+  diffuse: termOptions('diffuse', [
+    'lambert',
+    'fresnelWeighted',
+    'ashikhminShirley',
+    'orenNayar',
+    'orenNayarQualitative',
+  ]),
+  compensation: termOptions('compensation', ['none', 'kullaConty', 'turquin']),
 };
 
 const has = (terms) => ({ specular: terms.layers !== 'diffuse', diffuse: terms.layers !== 'specular' });
@@ -91,8 +96,9 @@ export function diffuseUnderSurround({ terms, lights, methods }) {
   if (lights.ambient) byIrradiance.push('ambient light');
   if (!byIrradiance.length) return null;
   const where = byIrradiance.join(' and ');
-  if (terms.diffuse === 'lambert') return `Diffuse under ${where}: irradiance × c_diff/π, Lambert’s exact answer.`;
-  const name = LAB_TERMS.diffuse[terms.diffuse];
+  const diffuse = termEntry('diffuse', terms.diffuse); // an old spelling of the key read as the key
+  if (diffuse.key === 'lambert') return `Diffuse under ${where}: irradiance × c_diff/π, Lambert’s exact answer.`;
+  const name = diffuse.label;
   const none = byIrradiance.length > 1 ? 'neither has a form' : 'it has no form';
   return (
     `Diffuse under ${where}: ${none} for ${name}, so ${name} is approximated by Lambert ` +
@@ -113,7 +119,8 @@ export function compensationNote({ terms, lights, methods }) {
     lights.env && methods.env === 'split-sum' && terms.compensation === 'kullaConty'
       ? ' Under the split sum the lobe’s albedo F_ms (1 − E) multiplies the irradiance (Fdez-Agüera 2019).'
       : '';
-  return `Multiple scattering: ${name} in the reference and every method that evaluates the BRDF.${split}${env}${tables}`;
+  const where = 'in the reference and every method that evaluates the BRDF';
+  return `Multiple scattering: ${name} ${where}.${split}${env}${tables}`;
 }
 
 const PMREM_NOTE =
@@ -163,7 +170,8 @@ export function approximationNotes(scene) {
   if (surround) notes.push(surround);
   if (scene.lights.env && scene.methods.env === 'pmrem') notes.push(PMREM_NOTE);
   const sigmaDeg = Math.round(((scene.material?.sigma ?? 0) * 180) / Math.PI);
-  if (diffuse && scene.terms.diffuse.startsWith('oren-nayar') && sigmaExtrapolated(sigmaDeg)) {
+  const orenNayar = termEntry('diffuse', scene.terms.diffuse).key.startsWith('orenNayar');
+  if (diffuse && orenNayar && sigmaExtrapolated(sigmaDeg)) {
     notes.push(
       `Oren-Nayar at ${sigmaText(sigmaDeg)}: past ${SIGMA_MODELLED_DEG}° a Gaussian of facet tilts puts ` +
         'over 4.6% of them beyond 90°, which no V-groove can have (the diffuse chapter).',

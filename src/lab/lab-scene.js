@@ -1,3 +1,4 @@
+// @ts-check
 // From a lab widget's state to the renderer's scene: the material (from the talk's F0 tables or custom), the
 // terms, the lights that are on (directions in view space: z towards the viewer, y up) and the methods.
 import { METALS, NON_METALS, materialByKey, isMetal } from '../math/materials.js';
@@ -5,6 +6,54 @@ import { srgbToLinear } from '../math/color.js';
 import { lightDirFromAngles } from '../math/angles.js';
 import { hexToRgb } from '../core/ui/palettes.js';
 import { DEG } from '../math/angles.js';
+
+/**
+ * @typedef {object} LabMaterialState  the material fields (MATERIAL_FIELDS) of a lab widget's state
+ * @property {string} material  'custom' or a key of the talk's F0 tables
+ * @property {number} f0  the custom F0
+ * @property {string} diffuse  the custom diffuse colour, sRGB '#rrggbb'
+ * @property {number} alpha  roughness α
+ * @property {number} [sigma]  Oren–Nayar σ in degrees, where the widget has it
+ */
+
+/**
+ * @typedef {LabMaterialState & {
+ *   fresnel: string, ndf: string, visibility: string, diffuseModel: string, layers: string,
+ *   compensation?: string, envMethod: string, areaMethod: string, samples: number
+ * }} LabState  what labScene reads of the material lab's state (catalogue keys for the terms)
+ */
+
+/**
+ * @typedef {object} LabMaterial
+ * @property {number[]} f0  linear RGB
+ * @property {number[]} diffuse  linear RGB; black for a metal
+ * @property {number} alpha
+ * @property {number} sigma  Oren–Nayar σ in radians
+ */
+
+/**
+ * @typedef {object} SphereLight
+ * @property {number[]} dir  unit direction to its centre, view space
+ * @property {number} sin  sine of its angular radius
+ * @property {number[]} radiance  RGB
+ */
+
+/**
+ * @typedef {object} LabLights  the lights that are on (null: off); directions in view space
+ * @property {{ dir: number[], cLight: number[] } | null} punctual
+ * @property {SphereLight | null} sphere
+ * @property {{ intensity: number, map: string } | null} env  the environment's key and its scale
+ * @property {number[] | null} ambient  uniform radiance, RGB
+ */
+
+/**
+ * @typedef {object} LabScene  what the lab renderer draws
+ * @property {LabMaterial} material
+ * @property {{ F: string, D: string, V: string, diffuse: string, layers: string, compensation: string }} terms
+ * @property {LabLights} lights
+ * @property {{ env: string, area: string, samples: number }} methods
+ * @property {string} [measured]  the measured table's name, when a MERL file stands in for the model
+ */
 
 export const MATERIAL_OPTIONS = {
   custom: 'Custom (F0 and diffuse below)',
@@ -21,7 +70,11 @@ export const MATERIAL_FIELDS = {
   alpha: { type: 'number', min: 0, max: 1, step: 0.005, default: 0.25, label: 'Roughness α' },
 };
 
-/** F0 and diffuse colour (linear) of the chosen material: metals have no diffuse term (the talk). */
+/**
+ * F0 and diffuse colour (linear) of the chosen material: metals have no diffuse term (the talk).
+ * @param {LabMaterialState} state
+ * @returns {LabMaterial}
+ */
 export function materialOf(state) {
   const table = state.material !== 'custom' ? materialByKey(state.material) : null;
   const f0 = table ? table.linear : [state.f0, state.f0, state.f0];
@@ -29,6 +82,11 @@ export function materialOf(state) {
   return { f0, diffuse, alpha: state.alpha, sigma: (state.sigma ?? 0) * DEG };
 }
 
+/**
+ * @param {LabState} state
+ * @param {LabLights} lights
+ * @returns {LabScene}
+ */
 export function labScene(state, lights) {
   return {
     material: materialOf(state),
@@ -45,7 +103,15 @@ export function labScene(state, lights) {
   };
 }
 
-/** The sphere light: c_light is kept as the radius changes (radiance = c_light / sin²θs), so only the shape of its highlight changes. */
+/**
+ * The sphere light: c_light is kept as the radius changes (radiance = c_light / sin²θs), so only the shape of its
+ * highlight changes.
+ * @param {number} thetaDeg
+ * @param {number} phiDeg
+ * @param {number} radiusDeg  its angular radius
+ * @param {number} cLight
+ * @returns {SphereLight}
+ */
 export function sphereLight(thetaDeg, phiDeg, radiusDeg, cLight) {
   const sin = Math.sin(radiusDeg * DEG);
   return { dir: lightDirFromAngles(thetaDeg, phiDeg), sin, radiance: [1, 1, 1].map(() => cLight / (sin * sin)) };

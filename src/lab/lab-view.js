@@ -4,15 +4,15 @@
 // back.
 import * as THREE from 'three';
 import { createViewport } from '../core/gpu/viewport.js';
-import { assembleGlsl } from '../core/gpu/glsl.js';
-import { SHADER_CHUNKS } from '../core/gpu/shader-chunks.js';
+import { createFullscreenPass } from '../core/gpu/fullscreen-pass.js';
 import { createDfgTexture, createEnvironmentMaps } from './environment-maps.js';
+import { fullscreenMaterial } from './fullscreen-material.js';
 import { createLabRenderer } from './lab-renderer.js';
 import { FURNACE, skyPixels } from './environments.js';
 
 const viewMaterial = (defines) =>
-  new THREE.ShaderMaterial({
-    glslVersion: THREE.GLSL3,
+  fullscreenMaterial('lab-view.frag.glsl', {
+    defines,
     uniforms: {
       uImage: { value: null },
       uOther: { value: null },
@@ -20,10 +20,6 @@ const viewMaterial = (defines) =>
       uExposure: { value: 1 },
       uErrorScale: { value: 0.1 },
     },
-    vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
-    fragmentShader: assembleGlsl(SHADER_CHUNKS['lab-view.frag.glsl'], { defines }),
-    depthTest: false,
-    depthWrite: false,
   });
 
 const BUILT_IN = {
@@ -44,41 +40,16 @@ export function createLabView(container, { label, resolution, slots = 1, frame, 
   captions.className = 'lab-captions';
   let lab = null;
   const resources = createLabResources();
-  const tone = viewMaterial({});
-  const error = viewMaterial({ ERROR_VIEW: 1 });
-  const quad = new THREE.Mesh(new THREE.PlaneGeometry(2, 2));
-  quad.frustumCulled = false;
-  const scene = new THREE.Scene().add(quad);
-  const camera = new THREE.Camera();
-  const size = new THREE.Vector2();
+  const panels = createPanels();
   let again = false;
-  let settings = { exposure: 1, errorScale: 0.1 };
 
   const draw = (renderer) => {
     lab ??= createLabRenderer(renderer, { dfg: resources.dfg, resolution, slots });
     again = false;
-    const panels = frame({ lab, environment: resources.environment(renderer), again: () => (again = true) });
-    const pr = renderer.getPixelRatio();
-    renderer.getSize(size);
-    const w = size.x / panels.length;
-    renderer.setScissorTest(true);
-    panels.forEach((panel, i) => {
-      const side = Math.min(w, size.y);
-      const rect = [i * w + (w - side) / 2, (size.y - side) / 2, side, side];
-      const m = panel.image === 'error' ? error : tone;
-      m.uniforms.uImage.value = panel.image === 'reference' ? lab.reference : lab.approx(panel.slot ?? 0);
-      m.uniforms.uOther.value = lab.reference;
-      m.uniforms.uRect.value.set(...rect.map((x) => x * pr));
-      m.uniforms.uExposure.value = settings.exposure;
-      m.uniforms.uErrorScale.value = settings.errorScale;
-      quad.material = m;
-      renderer.setViewport(...rect);
-      renderer.setScissor(...rect);
-      renderer.render(scene, camera);
-    });
-    renderer.setScissorTest(false);
+    const shown = frame({ lab, environment: resources.environment(renderer), again: () => (again = true) });
+    panels.draw(renderer, lab, shown);
     captions.replaceChildren(
-      ...panels.map((p) => Object.assign(document.createElement('span'), { textContent: p.caption })),
+      ...shown.map((p) => Object.assign(document.createElement('span'), { textContent: p.caption })),
     );
     if (again) viewport.invalidate();
   };
@@ -105,7 +76,7 @@ export function createLabView(container, { label, resolution, slots = 1, frame, 
     },
     resolution,
     setDisplay(next) {
-      settings = { ...settings, ...next };
+      panels.setDisplay(next);
       viewport?.invalidate();
     },
     setAspect(panels) {
@@ -113,10 +84,50 @@ export function createLabView(container, { label, resolution, slots = 1, frame, 
     },
     invalidate: () => viewport?.invalidate(),
     dispose() {
-      [tone, error, quad.geometry].forEach((x) => x.dispose());
+      panels.dispose();
       resources.dispose();
       lab?.dispose();
       viewport?.dispose();
+    },
+  };
+}
+
+/**
+ * The row of panels on the canvas: draw(renderer, lab, panels) shows each image of `lab` in its square, with the
+ * exposure (or on the error scale) of setDisplay({ exposure, errorScale }).
+ */
+function createPanels() {
+  const tone = viewMaterial({});
+  const error = viewMaterial({ ERROR_VIEW: 1 });
+  const pass = createFullscreenPass();
+  const size = new THREE.Vector2();
+  let settings = { exposure: 1, errorScale: 0.1 };
+  return {
+    draw(renderer, lab, panels) {
+      const pr = renderer.getPixelRatio();
+      renderer.getSize(size);
+      const w = size.x / panels.length;
+      renderer.setScissorTest(true);
+      panels.forEach((panel, i) => {
+        const side = Math.min(w, size.y);
+        const rect = [i * w + (w - side) / 2, (size.y - side) / 2, side, side];
+        const m = panel.image === 'error' ? error : tone;
+        m.uniforms.uImage.value = panel.image === 'reference' ? lab.reference : lab.approx(panel.slot ?? 0);
+        m.uniforms.uOther.value = lab.reference;
+        m.uniforms.uRect.value.set(...rect.map((x) => x * pr));
+        m.uniforms.uExposure.value = settings.exposure;
+        m.uniforms.uErrorScale.value = settings.errorScale;
+        renderer.setViewport(...rect);
+        renderer.setScissor(...rect);
+        pass.render(renderer, m, null);
+      });
+      renderer.setScissorTest(false);
+    },
+    setDisplay(next) {
+      settings = { ...settings, ...next };
+    },
+    dispose() {
+      [tone, error, pass].forEach((x) => x.dispose());
     },
   };
 }

@@ -18,7 +18,7 @@ if (isWidgetName(name)) {
   const { origins, notices: originProblems } = parseAllowedOrigins(params.get('origins'), location.origin);
   if (originProblems.length) notices.show(originProblems);
   let link = null;
-  const instance = await mountWidget(root, name, { onStateChange: () => link?.userChanged() });
+  const instance = await mountWidget(root, name, { widgets: WIDGETS, onStateChange: () => link?.userChanged() });
   if (window.parent !== window) {
     const { widget } = await WIDGETS[name].load();
     const capture = () => snapshotWidget(root.querySelector('.widget'));

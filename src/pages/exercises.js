@@ -13,8 +13,8 @@ import { parseNumberAnswer } from '../exercises/answer.js';
 import { createPreview } from '../exercises/previews.js';
 import { hashId } from '../core/framework/url-hash.js';
 import { onFileDrop } from '../core/ui/file-drop.js';
+import { publish, unregisterWidget } from '../core/framework/debug-hooks.js';
 
-const registry = (globalThis.__shadingLab ??= { frames: 0 });
 const listEl = document.getElementById('exercise-list');
 const articleEl = document.getElementById('exercise');
 const problemsEl = document.getElementById('exercise-problems');
@@ -175,7 +175,7 @@ function showFeedback(box, result) {
 function closeCurrent() {
   current?.widget?.dispose();
   current?.preview?.dispose?.();
-  delete registry.widgets?.exercise;
+  unregisterWidget('exercise');
   current = null;
 }
 
@@ -185,7 +185,7 @@ async function openExercise(exercise, { focus = false } = {}) {
   const hidden = grader.hide?.(exercise.params);
   current = { exercise, widget: null, preview: null, hidden };
   // for tests: what a hidden question drew, and when it is up
-  registry.exercise = { id: exercise.id, hidden, ready: false };
+  publish('exercise', { id: exercise.id, hidden, ready: false });
   const heading = el('h2', { tabIndex: -1, textContent: exercise.title });
   const chapter = CHAPTERS.find((c) => c.key === exercise.chapter);
   const meta = el('p', { className: 'exercise-meta' });
@@ -229,7 +229,7 @@ async function openExercise(exercise, { focus = false } = {}) {
   if (focus) heading.focus(); // a chosen exercise takes the focus; the first one shown on load does not
   current.preview = createPreview(pictures, exercise, hidden);
   if (!exercise.widget) {
-    registry.exercise.ready = true;
+    publish('exercise', { id: exercise.id, hidden, ready: true });
     return;
   }
   if (exercise.locked.length) {
@@ -244,6 +244,7 @@ async function openExercise(exercise, { focus = false } = {}) {
   }
   const mine = current;
   const widget = await mountWidget(slot, exercise.widget, {
+    widgets: WIDGETS,
     prefix: 'exercise',
     syncUrl: false,
     state: exercise.state,
@@ -253,7 +254,7 @@ async function openExercise(exercise, { focus = false } = {}) {
   if (current !== mine) return widget.dispose(); // another exercise was opened meanwhile
   current.widget = widget;
   current.preview?.update(widget.getState());
-  registry.exercise.ready = true;
+  publish('exercise', { id: exercise.id, hidden, ready: true });
 }
 
 function route(event) {

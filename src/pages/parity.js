@@ -4,6 +4,7 @@ import * as THREE from 'three';
 import { PARITY_CASES, TOLERANCE } from '../core/gpu/parity-cases.js';
 import { runParity } from '../core/gpu/parity.js';
 import { showBlockingMessage } from '../core/framework/notice.js';
+import { publish } from '../core/framework/debug-hooks.js';
 
 const out = document.getElementById('parity');
 const canvas = document.createElement('canvas');
@@ -23,7 +24,7 @@ if (!gl || !gl.getExtension('EXT_color_buffer_float')) {
     only ? PARITY_CASES.filter((c) => only.some((o) => c.name.startsWith(o))) : PARITY_CASES,
   );
   renderer.dispose();
-  (globalThis.__shadingLab ??= {}).parity = results;
+  publish('parity', results);
   const failed = results.filter((r) => !r.pass);
   const summary = document.createElement('p');
   summary.className = `parity-summary ${failed.length ? 'fail' : 'pass'}`;

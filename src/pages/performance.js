@@ -5,16 +5,20 @@ import report from '../../bench/results/latest.json';
 import { iblStaleNote } from './ibl-note.js';
 import { createPlot } from '../core/ui/plot.js';
 import { SERIES_COLORS } from '../core/ui/palettes.js';
+import { publish } from '../core/framework/debug-hooks.js';
 
 const ERROR_FLOOR = 1e-7; // the reference has error 0, which a log axis cannot show: drawn on the floor
 const root = document.getElementById('families');
 const costSelect = document.getElementById('cost');
 document.getElementById('machine').textContent =
-  `Measured ${report.date.slice(0, 10)} on ${report.machine.cpu} (${report.machine.cores} cores), Node ${report.machine.node}, ` +
-  `${report.machine.chromium}, GPU: ${report.machine.gpuRenderer}. GPU pass: ${report.gpuSetup.size}² pixels × ${report.gpuSetup.loops} ` +
-  `evaluations per pixel, median of ${report.gpuSetup.frames} drained frames; the empty pass takes ${report.gpuSetup.baselineMsPerFrame?.toFixed(2) ?? '?'} ms of each.` +
+  `Measured ${report.date.slice(0, 10)} on ${report.machine.cpu} (${report.machine.cores} cores), ` +
+  `Node ${report.machine.node}, ${report.machine.chromium}, GPU: ${report.machine.gpuRenderer}. ` +
+  `GPU pass: ${report.gpuSetup.size}² pixels × ${report.gpuSetup.loops} evaluations per pixel, median of ` +
+  `${report.gpuSetup.frames} drained frames; the empty pass takes ` +
+  `${report.gpuSetup.baselineMsPerFrame?.toFixed(2) ?? '?'} ms of each.` +
   (report.familiesMeasured
-    ? ` The term families' ${report.familiesMeasured.timedCpu ? 'errors and CPU costs' : 'errors'} were measured again on ` +
+    ? ` The term families' ${report.familiesMeasured.timedCpu ? 'errors and CPU costs' : 'errors'} were ` +
+      'measured again on ' +
       `${report.familiesMeasured.date.slice(0, 10)} (npm run bench -- --only families); their ` +
       `${report.familiesMeasured.timedCpu ? 'GPU columns are' : 'costs are'} from the full run.`
     : '');
@@ -65,14 +69,21 @@ function errorChart(section, f, all) {
 }
 
 const cost = (x, digits) => (x === null ? '— (run offline)' : x.toFixed(digits));
+/** A table row of `cells` (HTML), each in a <td>, or in a <th> for a head row. */
+const row = (cells, tag = 'td') => `<tr>${cells.map((c) => `<${tag}>${c}</${tag}>`).join('')}</tr>`;
 
 function rowsOf(f, variants) {
   return variants
-    .map(
-      (v) =>
-        `<tr><td><span class="swatch" style="background:${colourOf(f, v)}"></span> ${v.label}</td>` +
-        `<td>${againstText(v)}</td><td>${maxText(v)}</td><td>${measureOf(v).rms.toExponential(2)}</td>` +
-        `<td>${cost(v.cpuNsPerEval, 1)}</td><td>${cost(v.gpuMsPerFrame, 2)}</td><td>${cost(v.gpuRelative, 2)}${v.gpuRelative === null ? '' : '×'}</td></tr>`,
+    .map((v) =>
+      row([
+        `<span class="swatch" style="background:${colourOf(f, v)}"></span> ${v.label}`,
+        againstText(v),
+        maxText(v),
+        measureOf(v).rms.toExponential(2),
+        cost(v.cpuNsPerEval, 1),
+        cost(v.gpuMsPerFrame, 2),
+        `${cost(v.gpuRelative, 2)}${v.gpuRelative === null ? '' : '×'}`,
+      ]),
     )
     .join('');
 }
@@ -113,8 +124,9 @@ function renderIbl(ibl) {
   const section = document.createElement('section');
   section.innerHTML =
     '<h2>Image-based lighting against the reference</h2>' +
-    `<p class="domain">The material lab's environment methods on a ${ibl.setup.resolution}² sphere, each against the lab's converged ` +
-    `Monte Carlo reference (${ibl.setup.referenceSamples} samples per pixel): relative RMS error over the sphere against the GPU time ` +
+    `<p class="domain">The material lab's environment methods on a ${ibl.setup.resolution}² sphere, each ` +
+    `against the lab's converged Monte Carlo reference (${ibl.setup.referenceSamples} samples per pixel): ` +
+    'relative RMS error over the sphere against the GPU time ' +
     `of the method's pass (median of ${ibl.setup.timingRuns}). Importance sampling is one curve, N = 4 to 256 ` +
     'samples.' +
     `${iblStaleNote(report.date) ? ` ${iblStaleNote(report.date).replace(/`/g, '')}` : ''}</p>`;
@@ -151,12 +163,16 @@ function renderIbl(ibl) {
   const table = document.createElement('table');
   table.className = 'data-table compact';
   table.innerHTML =
-    '<thead><tr><th>Environment, material</th><th>Method</th><th>GPU ms</th><th>RMS error</th><th>relative</th></tr></thead><tbody>' +
+    `<thead>${row(['Environment, material', 'Method', 'GPU ms', 'RMS error', 'relative'], 'th')}</thead><tbody>` +
     ibl.rows
-      .map(
-        (r) =>
-          `<tr><td>${r.environment}, ${r.material} α ${r.alpha}</td><td>${r.samples ? `importance, N = ${r.samples}` : r.method}</td>` +
-          `<td>${r.ms.toFixed(2)}</td><td>${r.rms.toExponential(2)}</td><td>${(r.relative * 100).toFixed(2)} %</td></tr>`,
+      .map((r) =>
+        row([
+          `${r.environment}, ${r.material} α ${r.alpha}`,
+          r.samples ? `importance, N = ${r.samples}` : r.method,
+          r.ms.toFixed(2),
+          r.rms.toExponential(2),
+          `${(r.relative * 100).toFixed(2)} %`,
+        ]),
       )
       .join('') +
     '</tbody>';
@@ -167,16 +183,24 @@ function renderIbl(ibl) {
 const vt = report.versusThree;
 const extra = document.getElementById('pages');
 extra.innerHTML =
-  `<h2>Against three.js</h2><p>A sphere at ${vt.size}² pixels with the terms of MeshStandardMaterial (GGX, height-correlated Smith, ` +
-  `Schlick with F0 = 0.04, Lambert, one punctual light): this app's shader takes <strong>${vt.oursMsPerFrame.toFixed(2)} ms</strong> a frame, ` +
-  `MeshStandardMaterial <strong>${vt.threeMsPerFrame.toFixed(2)} ms</strong>: a ratio of <strong>${vt.ratio.toFixed(2)}</strong>.</p>` +
-  '<h2>What each page loads</h2><table class="data-table compact"><thead><tr><th>Page</th><th>JavaScript (KiB, uncompressed)</th><th>files</th><th>load (ms)</th><th>first 3-D frame (ms)</th></tr></thead><tbody>' +
+  `<h2>Against three.js</h2><p>A sphere at ${vt.size}² pixels with the terms of MeshStandardMaterial (GGX, ` +
+  "height-correlated Smith, Schlick with F0 = 0.04, Lambert, one punctual light): this app's shader takes " +
+  `<strong>${vt.oursMsPerFrame.toFixed(2)} ms</strong> a frame, MeshStandardMaterial ` +
+  `<strong>${vt.threeMsPerFrame.toFixed(2)} ms</strong>: a ratio of <strong>${vt.ratio.toFixed(2)}</strong>.</p>` +
+  '<h2>What each page loads</h2><table class="data-table compact"><thead>' +
+  row(['Page', 'JavaScript (KiB, uncompressed)', 'files', 'load (ms)', 'first 3-D frame (ms)'], 'th') +
+  '</thead><tbody>' +
   report.pages
-    .map(
-      (p) =>
-        `<tr><td>${p.page}</td><td>${p.jsKB.toFixed(0)}</td><td>${p.jsFiles}</td><td>${p.loadMs.toFixed(0)}</td><td>${p.firstFrameMs === null ? '—' : p.firstFrameMs.toFixed(0)}</td></tr>`,
+    .map((p) =>
+      row([
+        p.page,
+        p.jsKB.toFixed(0),
+        p.jsFiles,
+        p.loadMs.toFixed(0),
+        p.firstFrameMs === null ? '—' : p.firstFrameMs.toFixed(0),
+      ]),
     )
     .join('') +
   '</tbody></table>';
 if (report.ibl) renderIbl(report.ibl);
-(globalThis.__shadingLab ??= {}).performance = report;
+publish('performance', report);

@@ -4,6 +4,7 @@
 // state; a different one replaces it, and the old one is disposed (its WebGL context with it).
 import '../styles.css';
 import { mountWidget } from '../core/framework/widget-host.js';
+import { publish } from '../core/framework/debug-hooks.js';
 import { defaultState, showValue } from '../core/framework/state.js';
 import { createNoticeArea } from '../core/framework/notice.js';
 import { WIDGETS, isWidgetName } from '../widgets/registry.js';
@@ -16,7 +17,6 @@ const $ = (selector) => root.querySelector(selector);
 const stage = $('.tour-stage');
 const notices = createNoticeArea($('.tour-messages'));
 const [prevButton, nextButton, fullscreenButton] = ['.tour-prev', '.tour-next', '.tour-fullscreen'].map($);
-const registry = (globalThis.__shadingLab ??= { frames: 0 });
 
 renderSections();
 
@@ -27,7 +27,7 @@ let queue = Promise.resolve(); // steps are set up one after another; only the l
 function show(i) {
   index = i;
   renderText(steps[i], i);
-  registry.tour = { index: i, id: steps[i].id, ready: false };
+  publish('tour', { index: i, id: steps[i].id, ready: false });
   queue = queue
     .then(() => (i === index ? setUp(steps[i], i) : null))
     .catch((err) => notices.show(`This step could not be set up: ${err.message}`));
@@ -44,11 +44,16 @@ async function setUp(step, i) {
     stage.replaceChildren();
     mounted = {
       name: step.widget,
-      instance: await mountWidget(stage, step.widget, { prefix: 'tour', syncUrl: false, initialState: state }),
+      instance: await mountWidget(stage, step.widget, {
+        widgets: WIDGETS,
+        prefix: 'tour',
+        syncUrl: false,
+        initialState: state,
+      }),
     };
   }
   if (i === index)
-    registry.tour = { index: i, id: step.id, widget: step.widget, instance: mounted.instance, ready: true };
+    publish('tour', { index: i, id: step.id, widget: step.widget, instance: mounted.instance, ready: true });
 }
 
 /**
@@ -56,7 +61,8 @@ async function setUp(step, i) {
  * until garbage collection, and a long tour would run into the browser's limit on live contexts.
  */
 function release(instance) {
-  const contexts = [...stage.querySelectorAll('.viewport canvas')].map((c) => c.getContext('webgl2')); // the existing ones
+  // getContext returns the context a canvas already has
+  const contexts = [...stage.querySelectorAll('.viewport canvas')].map((c) => c.getContext('webgl2'));
   instance.dispose();
   for (const gl of contexts) gl?.getExtension('WEBGL_lose_context')?.loseContext();
 }
@@ -135,7 +141,8 @@ const typingIn = (el) =>
   (el.isContentEditable || el.matches('input, select, textarea, [role=slider], [role=spinbutton]'));
 window.addEventListener('keydown', (e) => {
   if (e.defaultPrevented || e.altKey || e.ctrlKey || e.metaKey || typingIn(e.target)) return;
-  if (e.key === ' ' && e.target instanceof Element && e.target.closest('button, a, summary, [role=button]')) return; // Space presses it
+  const pressable = e.target instanceof Element && e.target.closest('button, a, summary, [role=button]');
+  if (e.key === ' ' && pressable) return; // Space presses it
   const to = NEXT.has(e.key)
     ? index + 1
     : PREVIOUS.has(e.key)
@@ -173,7 +180,8 @@ async function toggleFullscreen() {
     await root.requestFullscreen();
   } catch {
     notices.show(
-      'The browser did not allow full screen here (a frame or a setting may forbid it). Use the browser’s own full-screen key instead, usually F11.',
+      'The browser did not allow full screen here (a frame or a setting may forbid it). Use the browser’s own ' +
+        'full-screen key instead, usually F11.',
     );
   }
 }

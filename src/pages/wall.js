@@ -37,7 +37,9 @@ const TILES = [
 const status = document.getElementById('wall-status');
 const showStatus = () => {
   const s = glBudgetStatus();
-  status.textContent = `Live WebGL contexts: ${s.held} of a budget of ${s.limit} for ${s.views} 3-D views (most at once so far: ${s.peak}).`;
+  status.textContent =
+    `Live WebGL contexts: ${s.held} of a budget of ${s.limit} for ${s.views} 3-D views ` +
+    `(most at once so far: ${s.peak}).`;
 };
 // contexts are given up and taken back as the page scrolls; these events do not bubble, so listen in capture
 document.addEventListener('webglcontextlost', showStatus, true);
@@ -60,6 +62,7 @@ for (const [i, [name, caption, state]] of TILES.entries()) {
   link(
     (
       await mountWidget(slot, name, {
+        widgets: WIDGETS,
         prefix: `tile${i + 1}`,
         syncUrl: false,
         initialState: state,

@@ -1,4 +1,5 @@
 // Every widget by name, loaded only when opened (each is its own chunk).
+/** @type {import('../core/framework/types.js').WidgetRegistry} */
 export const WIDGETS = {
   'fresnel-curves': {
     title: 'Fresnel curves',
@@ -18,13 +19,15 @@ export const WIDGETS = {
   media: {
     title: 'Light in media',
     summary:
-      'Absorption by Beer–Lambert over millimetres to 100 m, scattering from cloudy to opaque, the talk’s grid of glasses.',
+      'Absorption by Beer–Lambert over millimetres to 100 m, scattering from cloudy to opaque, the talk’s grid ' +
+      'of glasses.',
     load: () => import('./media/media.js'),
   },
   surfaces: {
     title: 'Surfaces',
     summary:
-      'A flat interface (reflection, refraction, metals vs non-metals), a rough one’s reflection cone, blurrier reflections.',
+      'A flat interface (reflection, refraction, metals vs non-metals), a rough one’s reflection cone, ' +
+      'blurrier reflections.',
     load: () => import('./surfaces/surfaces.js'),
   },
   'subsurface-scale': {
@@ -49,7 +52,8 @@ export const WIDGETS = {
   'measured-brdf': {
     title: 'Measured BRDF',
     summary:
-      'Drop a MERL file (or keep a synthetic one): its lobe, spheres and NDF slice beside the five models fitted to it.',
+      'Drop a MERL file (or keep a synthetic one): its lobe, spheres and NDF slice beside the five models ' +
+      'fitted to it.',
     load: () => import('./measured-brdf/measured-brdf.js'),
   },
   'ndf-explorer': {
@@ -75,19 +79,22 @@ export const WIDGETS = {
   'diffuse-explorer': {
     title: 'Diffuse explorer',
     summary:
-      'Lambert, the diffuse–specular trade-off and Oren–Nayar on spheres and against angle; the rough “full moon” flattening.',
+      'Lambert, the diffuse–specular trade-off and Oren–Nayar on spheres and against angle; the rough “full ' +
+      'moon” flattening.',
     load: () => import('./diffuse-explorer/diffuse-explorer.js'),
   },
   'material-lab': {
     title: 'Material lab',
     summary:
-      'A material under punctual, sphere, environment and ambient light: each approximation beside a converging Monte Carlo reference, with its error and cost.',
+      'A material under punctual, sphere, environment and ambient light: each approximation beside a ' +
+      'converging Monte Carlo reference, with its error and cost.',
     load: () => import('./material-lab/material-lab.js'),
   },
   'lighting-models': {
     title: 'Lighting models',
     summary:
-      'One material under a sky with a sun: general lighting, image-based, area, punctual and ambient light, each with its cost and error.',
+      'One material under a sky with a sun: general lighting, image-based, area, punctual and ambient light, ' +
+      'each with its cost and error.',
     load: () => import('./lighting-models/lighting-models.js'),
   },
 };

@@ -1,7 +1,7 @@
 // Runs parseEnvironmentFile over the cases it is sent, in a worker thread, so that a loader stuck in a loop
 // fails the test by its time limit instead of hanging the run. Posts [{ name, ok, width, height, mean, error }].
 import { parentPort, workerData } from 'node:worker_threads';
-import { parseEnvironmentFile } from '../../src/lab/environments.js';
+import { parseEnvironmentFile } from '../../src/lab/environment-files.js';
 
 const results = workerData.map(({ name, bytes }) => {
   try {

@@ -82,7 +82,7 @@ describe('material lab approximations', () => {
   it('name the table and the Fresnel form they use: A + B for F = 1, F0·A + B for Schlick', () => {
     const one = approximationNotes(scene({ F: 'one', D: 'beckmann', V: 'cookTorrance' }, { env, ambient: [1, 1, 1] }));
     expect(one[0]).toContain('prefiltered with the Beckmann lobe');
-    expect(one[0]).toContain('DFG table of Beckmann with Cook-Torrance (A + B, as F = 1)');
+    expect(one[0]).toContain('DFG table of Beckmann with Cook–Torrance (A + B, as F = 1)');
     expect(one[1]).toContain('(A + B, as F = 1)');
     expect(approximationNotes(scene({}, { env }, { env: 'mirror' }))[0]).toContain('Schlick’s F at n·v');
     expect(approximationNotes(scene({ F: 'one' }, { env }, { env: 'mirror' }))[0]).toContain('Mirror: F = 1');

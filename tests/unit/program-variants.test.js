@@ -7,7 +7,7 @@ import { SHADER_CHUNKS } from '../../src/core/gpu/shader-chunks.js';
 import { PARITY_CASES } from '../../src/core/gpu/parity-cases.js';
 import { SPHERE_UNIFORMS } from '../../src/core/ui/sphere-grid.js';
 import { CATALOGUE, termDefines } from '../../src/math/catalogue/index.js';
-import { sceneDefines } from '../../src/lab/lab-renderer.js';
+import { sceneDefines } from '../../src/lab/lab-defines.js';
 import { LAB_TERMS } from '../../src/lab/lab-approximations.js';
 
 const keys = (family) => Object.keys(CATALOGUE[family].terms);

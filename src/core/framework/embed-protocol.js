@@ -6,7 +6,8 @@
 //                     { type: 'shading-lab:snapshot', id? }
 //   widget → parent   { type: 'shading-lab:ready', widget, state, query }        once mounted
 //                     { type: 'shading-lab:state', id, widget, state, query }    reply to get and to set
-//                     { type: 'shading-lab:error', id, widget, errors, state }   set had bad values (kept the good state)
+//                     { type: 'shading-lab:error', id, widget, errors, state }   set had bad values (kept the good
+//                                                                                state)
 //                     { type: 'shading-lab:changed', widget, state, query }      the user changed it (debounced)
 //                     { type: 'shading-lab:snapshot', id, widget, state, query, image }  reply: a PNG data URL
 //

@@ -1,28 +1,46 @@
+// @ts-check
 // Builds a lil-gui panel from a state schema. The panel edits a private copy of the state and reports
 // each change as a partial state; sync() refreshes it when the state changes from elsewhere.
 import GUI from 'lil-gui';
 
+/** @typedef {import('./types.js').Field} Field */
+
+/** @param {import('lil-gui').Controller} ctrl */
 const lock = (ctrl) => {
   ctrl.disable();
   ctrl.domElement.classList.add('locked');
   ctrl.domElement.title = 'Fixed by the exercise';
 };
 
+/** @type {(key: string, f: Field) => string} */
 const labelOf = (key, f) => (f.unit ? `${f.label ?? key} (${f.unit})` : (f.label ?? key));
 
-/** `locked`: keys shown but not editable (an exercise fixes them); their controls are disabled. */
+/**
+ * `locked`: keys shown but not editable (an exercise fixes them); their controls are disabled.
+ * @param {HTMLElement} container
+ * @param {object} spec
+ * @param {import('./types.js').Schema} spec.schema
+ * @param {import('./types.js').State} spec.state
+ * @param {(partial: Partial<import('./types.js').State>) => void} spec.onChange
+ * @param {string} [spec.title]
+ * @param {string[]} [spec.keys]
+ * @param {string[]} [spec.locked]
+ */
 export function createStateGui(
   container,
   { schema, state, onChange, title = 'Controls', keys = Object.keys(schema), locked = [] },
 ) {
   const gui = new GUI({ container, title, autoPlace: false });
   const model = { ...state };
+  /** @type {Record<string, Record<string, boolean>>} */
   const setModels = {}; // set fields: one boolean per option
+  /** @type {Map<string, GUI>} */
   const groups = new Map(); // a field's `group` puts it in a folder of that name (long panels stay readable)
+  /** @type {(f: Field) => GUI} */
   const parentOf = (f) => {
     if (!f.group) return gui;
     if (!groups.has(f.group)) groups.set(f.group, gui.addFolder(f.group));
-    return groups.get(f.group);
+    return /** @type {GUI} */ (groups.get(f.group));
   };
 
   for (const key of keys) {
@@ -31,9 +49,11 @@ export function createStateGui(
     const parent = parentOf(f);
     if (f.type === 'set') {
       const folder = parent.addFolder(labelOf(key, f));
+      /** @type {Record<string, boolean>} */
       const flags = (setModels[key] = {});
+      const chosen = /** @type {string[]} */ (model[key]);
       for (const [value, label] of Object.entries(f.options)) {
-        flags[value] = model[key].includes(value);
+        flags[value] = chosen.includes(value);
         const ctrl = folder
           .add(flags, value)
           .name(label)
@@ -52,17 +72,19 @@ export function createStateGui(
           : f.type === 'color'
             ? parent.addColor(model, key)
             : parent.add(model, key);
-    ctrl.name(labelOf(key, f)).onChange((v) => onChange({ [key]: v }));
+    ctrl.name(labelOf(key, f)).onChange((/** @type {import('./types.js').StateValue} */ v) => onChange({ [key]: v }));
     if (f.hint) ctrl.domElement.title = f.hint;
     if (locked.includes(key)) lock(ctrl);
   }
 
   return {
     gui,
+    /** @param {import('./types.js').State} next */
     sync(next) {
       Object.assign(model, next);
       for (const [key, flags] of Object.entries(setModels)) {
-        for (const v of Object.keys(flags)) flags[v] = next[key].includes(v);
+        const chosen = /** @type {string[]} */ (next[key]);
+        for (const v of Object.keys(flags)) flags[v] = chosen.includes(v);
       }
       gui.controllersRecursive().forEach((c) => c.updateDisplay());
     },

@@ -1,3 +1,4 @@
+// @ts-check
 // A widget's state is a plain object described by a schema. Values come in from the URL (strings),
 // from the GUI, from code and from postMessage; all go through coerceState, which never throws:
 // unknown keys are ignored, bad values fall back (to the current or default value) and are reported,
@@ -5,15 +6,21 @@
 // an enum or list value must be an OWN option (`__proto__`, `constructor`, `toString` are `in` every object),
 // numbers are plain decimals (no hex, no Infinity), and a value echoed in a notice is cut short.
 //
-// Field kinds: { type: 'number', min, max, step, default, label, unit }
-//              { type: 'enum', options: { value: label }, default, label }
-//              { type: 'bool', default, label }
-//              { type: 'set', options: { value: label }, default: [values], label }  (URL: comma list)
-//              { type: 'color', default: '#rrggbb', label }  (sRGB hex; the URL may drop the '#')
-//              { type: 'samples', length, min, max, default: [], label }  (URL: comma list of `length` plain
-//                decimals in min…max, or none; a list of any other length or with any bad item is refused whole)
-//              { type: 'text', maxLength, default: '', label }  (letters, digits, spaces and . _ - ( ) + , only)
+// The kinds of field (number, enum, set, bool, color, samples, text) are the Field typedefs of types.js.
+// An enum or set field's `aliases` are old spellings of its options: each is read as its option, silently, so
+// an old link keeps working; the state (and so every URL written from it) holds the option's own key.
 
+/** @typedef {import('./types.js').Schema} Schema */
+/** @typedef {import('./types.js').Field} Field */
+/** @typedef {import('./types.js').State} State */
+/** @typedef {import('./types.js').StateValue} StateValue */
+/** @typedef {{ value: any, notice?: string }} Coerced  the value taken (or kept), and why, when not as given */
+
+/**
+ * Every field at its default (lists copied).
+ * @param {Schema} schema
+ * @returns {State}
+ */
 export function defaultState(schema) {
   return Object.fromEntries(
     Object.entries(schema).map(([k, f]) => [k, Array.isArray(f.default) ? [...f.default] : f.default]),
@@ -22,7 +29,10 @@ export function defaultState(schema) {
 
 const MAX_SHOWN = 60; // characters of a bad value repeated in a notice
 
-/** A value as a notice quotes it: strings in quotes, anything long cut short. */
+/**
+ * A value as a notice quotes it: strings in quotes, anything long cut short.
+ * @param {unknown} v
+ */
 export function showValue(v) {
   let text;
   try {
@@ -34,21 +44,45 @@ export function showValue(v) {
 }
 const fmt = showValue;
 
-/** True when `value` names an own option of `options` (a plain object of value → label). */
+/**
+ * True when `value` names an own option of `options` (a plain object of value → label).
+ * @type {(options: Record<string, string>, value: unknown) => value is string}
+ */
 export const isOption = (options, value) => typeof value === 'string' && Object.hasOwn(options, value);
+
+/**
+ * The option an enum or set field's `value` names: the value itself, or the option its alias stands for.
+ * @param {{ options: Record<string, string>, aliases?: Record<string, string> }} f
+ * @param {unknown} value
+ * @returns {string | undefined}
+ */
+export function optionKey(f, value) {
+  if (isOption(f.options, value)) return value;
+  const key = f.aliases && isOption(f.aliases, value) ? f.aliases[value] : undefined;
+  return isOption(f.options, key) ? key : undefined;
+}
 
 // A decimal number as a URL carries it: 12, -0.5, .5, 1e-3. Not hex, binary, Infinity or other digits.
 const DECIMAL = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;
 // What a text field may hold: a name to show (a file name), never markup, a URL scheme or control characters.
 const TEXT = /^[\p{L}\p{N} ._()+,-]*$/u;
 
-/** A number as given, or a plain-decimal string's value; NaN for anything else. */
+/**
+ * A number as given, or a plain-decimal string's value; NaN for anything else.
+ * @param {unknown} raw
+ */
 export function parseNumber(raw) {
   if (typeof raw === 'number') return raw;
   return typeof raw === 'string' && DECIMAL.test(raw.trim()) ? Number(raw.trim()) : NaN;
 }
 
-/** A list of exactly f.length plain decimals in f.min…f.max (or none at all), else refused whole. */
+/**
+ * A list of exactly f.length plain decimals in f.min…f.max (or none at all), else refused whole.
+ * @param {import('./types.js').SamplesField} f
+ * @param {unknown} raw
+ * @param {(why: string) => Coerced} bad
+ * @returns {Coerced}
+ */
 function coerceSamples(f, raw, bad) {
   const items = Array.isArray(raw) ? raw : typeof raw === 'string' ? (raw === '' ? [] : raw.split(',')) : null;
   if (!items) return bad(`${fmt(raw)} is not a list`);
@@ -59,7 +93,15 @@ function coerceSamples(f, raw, bad) {
   return { value: values.map((x) => x || 0) };
 }
 
+/**
+ * @param {string} key
+ * @param {Field} f
+ * @param {unknown} raw
+ * @param {StateValue} fallback
+ * @returns {Coerced}
+ */
 function coerceField(key, f, raw, fallback) {
+  /** @param {string} why */
   const bad = (why) => ({ value: fallback, notice: `${f.label ?? key}: ${why}; kept ${fmt(fallback)}.` });
   switch (f.type) {
     case 'number': {
@@ -73,7 +115,8 @@ function coerceField(key, f, raw, fallback) {
     }
     case 'enum': {
       const v = typeof raw === 'number' ? String(raw) : raw; // an option like '64' may arrive as 64
-      if (isOption(f.options, v)) return { value: v };
+      const key = optionKey(f, v);
+      if (key !== undefined) return { value: key };
       return bad(`${fmt(raw)} is not one of ${Object.keys(f.options).join(', ')}`);
     }
     case 'bool': {
@@ -89,8 +132,9 @@ function coerceField(key, f, raw, fallback) {
           ? raw.split(',').filter(Boolean)
           : null;
       if (!items) return bad(`${fmt(raw)} is not a list`);
-      const known = [...new Set(items.filter((v) => isOption(f.options, v)))];
-      const unknown = [...new Set(items.filter((v) => !isOption(f.options, v)))];
+      const keys = items.map((v) => optionKey(f, v));
+      const known = [...new Set(keys.filter((k) => k !== undefined))];
+      const unknown = [...new Set(items.filter((v, i) => keys[i] === undefined))];
       if (!unknown.length) return { value: known };
       const more = unknown.length > 4 ? ` and ${unknown.length - 4} more` : '';
       const named = unknown.slice(0, 4).map(fmt).join(', ') + more;
@@ -108,11 +152,17 @@ function coerceField(key, f, raw, fallback) {
         return bad(`${fmt(raw)} is not a name of at most ${f.maxLength} letters, digits, spaces or . _ - ( ) + ,`);
       return { value: raw };
     default:
-      throw new Error(`state: unknown field type ${f.type}`);
+      throw new Error(`state: unknown field type ${/** @type {{ type: string }} */ (f).type}`);
   }
 }
 
-/** Applies `input` (partial, strings or typed) on top of `base`. Returns { state, notices }. */
+/**
+ * Applies `input` (partial, strings or typed) on top of `base`.
+ * @param {Schema} schema
+ * @param {Partial<Record<string, unknown>> | null} [input]
+ * @param {State} [base]
+ * @returns {{ state: State, notices: string[] }}
+ */
 export function coerceState(schema, input, base = defaultState(schema)) {
   const state = { ...base };
   const notices = [];
@@ -125,9 +175,14 @@ export function coerceState(schema, input, base = defaultState(schema)) {
   return { state, notices };
 }
 
-const sameValue = (a, b) => (Array.isArray(a) ? a.join(',') === b.join(',') : a === b);
+/** @type {(a: StateValue, b: StateValue) => boolean} */
+const sameValue = (a, b) => (Array.isArray(a) && Array.isArray(b) ? a.join(',') === b.join(',') : a === b);
 
-/** The state as URL parameters, only the fields that differ from their default. */
+/**
+ * The state as URL parameters, only the fields that differ from their default.
+ * @param {Schema} schema
+ * @param {State} state
+ */
 export function stateToParams(schema, state) {
   const params = new URLSearchParams();
   for (const [key, f] of Object.entries(schema)) {
@@ -138,4 +193,5 @@ export function stateToParams(schema, state) {
   return params;
 }
 
+/** @type {(params: string | URLSearchParams) => Record<string, string>} */
 export const paramsToObject = (params) => Object.fromEntries(new URLSearchParams(params));

@@ -1,13 +1,21 @@
+// @ts-check
 // Mounts a widget by name and keeps its state in the page URL (optionally under a prefix, so several
-// widgets can share one page), and exposes it for tests and parent pages.
-import { WIDGETS, isWidgetName } from '../../widgets/registry.js';
+// widgets can share one page), and exposes it for tests and parent pages. The widgets come from the registry
+// the page hands in (src/widgets/registry.js): the framework itself imports no widget.
 import { stateToParams } from './state.js';
-import { createLocked } from './widget-shell.js';
+import { registerWidget } from './debug-hooks.js';
 
-const registry = (globalThis.__shadingLab ??= { frames: 0 });
-registry.widgets ??= {};
+/** @typedef {import('./types.js').WidgetRegistry} WidgetRegistry */
+/** @typedef {import('./types.js').Widget} Widget */
+/** @typedef {import('./types.js').Schema} Schema */
+/** @typedef {import('./types.js').State} State */
 
-/** The URL parameters that belong to a widget: all of them, or those under `prefix.`. */
+/**
+ * The URL parameters that belong to a widget: all of them, or those under `prefix.`.
+ * @param {string} search
+ * @param {string} [prefix]
+ * @returns {Record<string, string>}
+ */
 export function widgetParams(search, prefix) {
   const out = new Map(); // not a plain object: a parameter named __proto__ must stay a key like any other
   for (const [k, v] of new URLSearchParams(search)) {
@@ -20,6 +28,11 @@ export function widgetParams(search, prefix) {
 // Parameters of embed.html that are not widget state: the widget's name and the origins allowed to message it.
 const EMBED_PARAMS = new Set(['w', 'origins']);
 
+/**
+ * @param {Schema} schema
+ * @param {State} state
+ * @param {string} prefix
+ */
 function writeUrl(schema, state, prefix) {
   const url = new URL(location.href);
   const own = stateToParams(schema, state);
@@ -31,29 +44,44 @@ function writeUrl(schema, state, prefix) {
 }
 
 /**
+ * @typedef {object} MountOptions
+ * @property {WidgetRegistry} widgets  the widgets by name (the page passes src/widgets/registry.js's WIDGETS)
+ * @property {string} [prefix]  the widget's URL parameters are `prefix.key` (several widgets on one page); also
+ *   its key in the test hooks (else its name)
+ * @property {boolean} [syncUrl]  write the state into the URL as it changes (default true)
+ * @property {(state: State) => void} [onStateChange]  called after each change that took
+ * @property {Partial<Record<string, unknown>>} [state]  the state to start from, instead of the URL's
+ * @property {Partial<Record<string, unknown>>} [initialState]  under what the URL says
+ * @property {string[]} [locked]  keys the GUI and update() cannot change (an exercise fixes them)
+ * @property {import('./types.js').WidgetOptions} [options]  the widget's own options (f0-tables' onPick)
+ */
+
+/**
  * Creates widget `name` inside `container` with the state found in the URL.
- * options: { prefix, syncUrl = true, onStateChange, state (instead of the URL's), initialState (under what the URL
- * says), locked (keys the GUI cannot change) }
+ * @param {HTMLElement} container
+ * @param {string} name
+ * @param {MountOptions} options
+ * @returns {Promise<Widget>}
  */
 export async function mountWidget(
   container,
   name,
-  { prefix = '', syncUrl = true, onStateChange, options = {}, state, initialState = {}, locked = [] } = {},
+  { widgets, prefix = '', syncUrl = true, onStateChange, options = {}, state, initialState = {}, locked = [] },
 ) {
-  if (!isWidgetName(name)) throw new Error(`unknown widget ${name}`);
-  const { widget } = await WIDGETS[name].load();
-  let timer = 0;
-  const instance = createLocked(locked, () =>
-    widget.create(container, state ?? { ...initialState, ...widgetParams(location.search, prefix) }, {
-      ...options,
-      onStateChange(next) {
-        onStateChange?.(next);
-        if (!syncUrl) return;
-        clearTimeout(timer);
-        timer = setTimeout(() => writeUrl(widget.schema, next, prefix), 120);
-      },
-    }),
-  );
-  registry.widgets[prefix || name] = instance;
+  if (!Object.hasOwn(widgets, name)) throw new Error(`unknown widget ${name}`);
+  const { widget } = await widgets[name].load();
+  /** @type {ReturnType<typeof setTimeout> | undefined} */
+  let timer;
+  const instance = widget.create(container, state ?? { ...initialState, ...widgetParams(location.search, prefix) }, {
+    ...options,
+    locked,
+    onStateChange(next) {
+      onStateChange?.(next);
+      if (!syncUrl) return;
+      clearTimeout(timer);
+      timer = setTimeout(() => writeUrl(widget.schema, next, prefix), 120);
+    },
+  });
+  registerWidget(prefix || name, instance);
   return instance;
 }

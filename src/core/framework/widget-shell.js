@@ -1,3 +1,4 @@
+// @ts-check
 // The common frame of every widget: its root element, notice area, a view and a control column, and the
 // one state object, validated on every way in (initial state, update(), GUI).
 import { coerceState, defaultState } from './state.js';
@@ -7,22 +8,27 @@ import { createLiveRegion, describeCanvas } from './describe.js';
 import { createShareBar, shareLink } from './share.js';
 import { registerPrintable } from './print.js';
 
-// Keys the host locks for the widget being created (see createLocked): the shell reads them, so every
-// widget gets locking without code of its own.
-let lockedForNext = [];
+/**
+ * @typedef {object} ShellSpec
+ * @property {string} name  the widget's name (its class, data-widget and share links)
+ * @property {import('./types.js').Schema} schema
+ * @property {Partial<Record<string, unknown>>} [initialState]  create's second argument, as given
+ * @property {string[]} [locked]  create's `options.locked`: their controls are disabled and later updates leave
+ *   them alone
+ * @property {string} [about]  HTML of the paragraph under the widget
+ * @property {string[]} [terms]  math functions it uses, linked to the parity page
+ */
 
-/** Runs create() with `locked` keys: their controls are disabled and later updates leave them alone. */
-export function createLocked(locked, create) {
-  lockedForNext = locked;
-  try {
-    return create();
-  } finally {
-    lockedForNext = [];
-  }
-}
-
-export function createWidgetShell(container, { name, schema, initialState, about, terms = [] }) {
-  const locked = lockedForNext.filter((k) => Object.hasOwn(schema, k));
+/**
+ * The frame of a widget (the contract it fulfils: src/core/framework/types.js).
+ * @param {HTMLElement} container
+ * @param {ShellSpec} spec
+ */
+export function createWidgetShell(
+  container,
+  { name, schema, initialState, locked: lockedKeys = [], about, terms = [] },
+) {
+  const locked = lockedKeys.filter((k) => Object.hasOwn(schema, k));
   const root = document.createElement('section');
   root.className = `widget widget-${name}`;
   root.dataset.widget = name;
@@ -48,10 +54,15 @@ export function createWidgetShell(container, { name, schema, initialState, about
   const first = coerceState(schema, initialState, defaultState(schema));
   if (first.notices.length) notices.show(first.notices);
   let state = first.state;
+  /** @type {ReturnType<typeof createStateGui> | null} */
   let gui = null;
+  /** @type {(() => void) | null} */
   let unprint = null;
 
-  /** Validates `partial` against the current state; returns the keys whose value changed. */
+  /**
+   * Validates `partial` against the current state; returns the keys whose value changed.
+   * @param {Partial<Record<string, unknown>> | undefined} partial
+   */
   const apply = (partial) => {
     const free = Object.fromEntries(Object.entries(partial ?? {}).filter(([k]) => !locked.includes(k)));
     const next = coerceState(schema, free, state);
@@ -72,6 +83,8 @@ export function createWidgetShell(container, { name, schema, initialState, about
     /**
      * The widget's summary in words: read out (once it settles) by the live region, and given to `canvas`,
      * when passed, as its description. Widgets call it whenever what they show changes.
+     * @param {string} text
+     * @param {HTMLCanvasElement | null} [canvas]
      */
     describe(text, canvas) {
       describeCanvas(canvas, text);
@@ -80,12 +93,18 @@ export function createWidgetShell(container, { name, schema, initialState, about
     /**
      * Builds the control panel and returns the widget's update(partial): validate, refresh the panel, let the
      * widget react to the changed keys, tell the host. The GUI, code and the URL all come in through it.
+     * @param {object} hooks
+     * @param {string} [hooks.title]  the panel's title (also the share bar's and the print's), else the name
+     * @param {(changed: string[]) => void} hooks.onChanged  the widget redraws what depends on these keys
+     * @param {import('./types.js').WidgetOptions['onStateChange']} [hooks.onStateChange]  create's option
+     * @returns {(partial: Partial<Record<string, unknown>>) => void}
      */
     connect({ title, onChanged, onStateChange }) {
+      /** @param {Partial<Record<string, unknown>>} partial */
       const update = (partial) => {
         const changed = apply(partial);
         if (!changed.length) return;
-        gui.sync(state);
+        gui?.sync(state);
         onChanged(changed);
         onStateChange?.(state);
       };
@@ -104,7 +123,10 @@ export function createWidgetShell(container, { name, schema, initialState, about
   };
 }
 
-/** "Terms used": each math function the widget calls, linked to its GLSL-vs-JS row on the parity page. */
+/**
+ * "Terms used": each math function the widget calls, linked to its GLSL-vs-JS row on the parity page.
+ * @param {string[]} terms
+ */
 function termLinks(terms) {
   const p = document.createElement('p');
   p.className = 'widget-terms';

@@ -3,6 +3,7 @@
 import * as THREE from 'three';
 import { assembleGlsl } from './glsl.js';
 import { SHADER_CHUNKS } from './shader-chunks.js';
+import { createFullscreenPass } from './fullscreen-pass.js';
 
 export function floatTarget(width, height, depthBuffer = false) {
   return new THREE.WebGLRenderTarget(width, height, {
@@ -24,10 +25,7 @@ export function createGpuSum(renderer) {
     depthTest: false,
     depthWrite: false,
   });
-  const quad = new THREE.Mesh(new THREE.PlaneGeometry(2, 2), material);
-  quad.frustumCulled = false;
-  const scene = new THREE.Scene().add(quad);
-  const camera = new THREE.Camera();
+  const pass = createFullscreenPass();
   const targets = new Map();
   const targetOf = (w, h) => {
     const key = `${w}x${h}`;
@@ -39,7 +37,6 @@ export function createGpuSum(renderer) {
   return {
     /** Sum of all texels of `source` (a float WebGLRenderTarget) as [r, g, b, a]. */
     sum(source) {
-      const previous = renderer.getRenderTarget();
       let src = source;
       let [w, h] = [source.width, source.height];
       while (w > 1 || h > 1) {
@@ -47,18 +44,16 @@ export function createGpuSum(renderer) {
         const dst = targetOf(tw, th);
         material.uniforms.uSrc.value = src.texture;
         material.uniforms.uSrcSize.value.set(w, h);
-        renderer.setRenderTarget(dst);
-        renderer.render(scene, camera);
+        pass.render(renderer, material, dst);
         [src, w, h] = [dst, tw, th];
       }
       renderer.readRenderTargetPixels(src, 0, 0, 1, 1, out);
-      renderer.setRenderTarget(previous);
       return Array.from(out);
     },
     dispose() {
       targets.forEach((t) => t.dispose());
       material.dispose();
-      quad.geometry.dispose();
+      pass.dispose();
     },
   };
 }

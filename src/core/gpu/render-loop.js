@@ -4,7 +4,7 @@
 // ready() is false while the view cannot draw (its WebGL context is given up); the frame stays pending
 // until invalidate() is called again.
 
-const frameCounter = (globalThis.__shadingLab ??= { frames: 0 });
+import { countFrame } from '../framework/debug-hooks.js';
 
 export function createRenderLoop(element, draw, ready = () => true) {
   let dirty = false;
@@ -16,7 +16,7 @@ export function createRenderLoop(element, draw, ready = () => true) {
     scheduled = 0;
     if (!dirty || !canDraw()) return;
     dirty = false;
-    frameCounter.frames++;
+    countFrame();
     draw();
   };
   const schedule = () => {

@@ -10,6 +10,19 @@ import { createRenderLoop } from './render-loop.js';
 import { createBudgetedContext } from './gl-context.js';
 import { showBlockingMessage } from '../framework/notice.js';
 import { registerRedraw } from '../framework/snapshot.js';
+import { describeCanvas } from '../framework/describe.js';
+
+/** In place of the view: why there is none. Returns null, the viewport that could not be made. */
+function noWebGl2(holder, canvas) {
+  canvas.remove();
+  showBlockingMessage(
+    holder,
+    'This view needs WebGL2.',
+    'Your browser or device did not provide a WebGL2 context. Try a current Chrome, Firefox or Safari, or ' +
+      'enable hardware acceleration. The rest of the page still works.',
+  );
+  return null;
+}
 
 export function createViewport(container, { draw, onResize, onContextLost, label }) {
   const holder = document.createElement('div');
@@ -17,7 +30,6 @@ export function createViewport(container, { draw, onResize, onContextLost, label
   const canvas = document.createElement('canvas');
   canvas.tabIndex = 0;
   canvas.setAttribute('role', 'img');
-  if (label) canvas.setAttribute('aria-label', label);
   holder.append(canvas);
   container.append(holder);
 
@@ -55,15 +67,8 @@ export function createViewport(container, { draw, onResize, onContextLost, label
       },
     },
   );
-  if (!context) {
-    canvas.remove();
-    showBlockingMessage(
-      holder,
-      'This view needs WebGL2.',
-      'Your browser or device did not provide a WebGL2 context. Try a current Chrome, Firefox or Safari, or enable hardware acceleration. The rest of the page still works.',
-    );
-    return null;
-  }
+  if (!context) return noWebGl2(holder, canvas);
+  if (label) describeCanvas(canvas, label); // the first words; a widget may describe the view better later
   const renderer = new THREE.WebGLRenderer({ canvas, context: context.gl, antialias: true });
   renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
   loop = createRenderLoop(

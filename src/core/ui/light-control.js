@@ -7,7 +7,8 @@ import { DEG } from '../../math/angles.js';
 /** Radius, in CSS pixels, of the ring that stands for theta = 90°. */
 const ringRadius = (w, h) => 0.42 * Math.min(w, h);
 
-export function attachLightControl(canvas, overlayParent, { get, set }) {
+/** The light's marker over the canvas: the 90° ring, the ray from the centre and the sun, with its label. */
+function createOverlay(canvas, overlayParent, get) {
   const svg = document.createElementNS('http://www.w3.org/2000/svg', 'svg');
   svg.classList.add('light-overlay');
   svg.setAttribute('aria-hidden', 'true');
@@ -40,6 +41,23 @@ export function attachLightControl(canvas, overlayParent, { get, set }) {
     label.setAttribute('y', y < 24 ? y + 22 : y - 10);
     label.textContent = `light θ ${lightTheta.toFixed(0)}°`;
   };
+  return { draw, remove: () => svg.remove() };
+}
+
+/** The light moved by an arrow key (Shift: 1° instead of 5°), or null for any other key. */
+function keyMove(e, { lightTheta, lightPhi }) {
+  const step = e.shiftKey ? 1 : 5;
+  const moves = {
+    ArrowUp: { lightTheta: lightTheta - step },
+    ArrowDown: { lightTheta: lightTheta + step },
+    ArrowLeft: { lightPhi: ((lightPhi + step + 540) % 360) - 180 },
+    ArrowRight: { lightPhi: ((lightPhi - step + 540) % 360) - 180 },
+  };
+  return Object.hasOwn(moves, e.key) ? moves[e.key] : null;
+}
+
+export function attachLightControl(canvas, overlayParent, { get, set }) {
+  const overlay = createOverlay(canvas, overlayParent, get);
 
   const fromPointer = (e) => {
     const rect = canvas.getBoundingClientRect();
@@ -52,48 +70,37 @@ export function attachLightControl(canvas, overlayParent, { get, set }) {
   };
 
   let dragging = false;
-  const down = (e) => {
-    if (e.button !== 0) return;
-    dragging = true;
-    canvas.setPointerCapture(e.pointerId);
-    fromPointer(e);
-  };
-  const move = (e) => dragging && fromPointer(e);
   const up = (e) => {
     dragging = false;
     if (canvas.hasPointerCapture(e.pointerId)) canvas.releasePointerCapture(e.pointerId);
   };
-  const key = (e) => {
-    const { lightTheta, lightPhi } = get();
-    const step = e.shiftKey ? 1 : 5;
-    const moves = {
-      ArrowUp: { lightTheta: lightTheta - step },
-      ArrowDown: { lightTheta: lightTheta + step },
-      ArrowLeft: { lightPhi: ((lightPhi + step + 540) % 360) - 180 },
-      ArrowRight: { lightPhi: ((lightPhi - step + 540) % 360) - 180 },
-    };
-    if (!moves[e.key]) return;
-    e.preventDefault();
-    set(moves[e.key]);
+  const listeners = {
+    pointerdown(e) {
+      if (e.button !== 0) return;
+      dragging = true;
+      canvas.setPointerCapture(e.pointerId);
+      fromPointer(e);
+    },
+    pointermove: (e) => dragging && fromPointer(e),
+    pointerup: up,
+    pointercancel: up,
+    keydown(e) {
+      const move = keyMove(e, get());
+      if (!move) return;
+      e.preventDefault();
+      set(move);
+    },
   };
-  canvas.addEventListener('pointerdown', down);
-  canvas.addEventListener('pointermove', move);
-  canvas.addEventListener('pointerup', up);
-  canvas.addEventListener('pointercancel', up);
-  canvas.addEventListener('keydown', key);
+  for (const [type, listener] of Object.entries(listeners)) canvas.addEventListener(type, listener);
 
   return {
-    draw,
+    draw: overlay.draw,
     get dragging() {
       return dragging;
     },
     dispose() {
-      canvas.removeEventListener('pointerdown', down);
-      canvas.removeEventListener('pointermove', move);
-      canvas.removeEventListener('pointerup', up);
-      canvas.removeEventListener('pointercancel', up);
-      canvas.removeEventListener('keydown', key);
-      svg.remove();
+      for (const [type, listener] of Object.entries(listeners)) canvas.removeEventListener(type, listener);
+      overlay.remove();
     },
   };
 }

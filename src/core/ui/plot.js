@@ -67,13 +67,12 @@ export function describePlot(spec) {
     if (!at.length) return `${s.label}: no values`;
     const top = at.reduce((a, i) => (ys[i] > ys[a] ? i : a), at[0]);
     const [first, last] = [at[0], at[at.length - 1]];
-    return (
-      `${s.label}${s.dash ? ' (dashed)' : ''}: ${spokenNumber(ys[first])} at ${spokenNumber(xs[first])}, ` +
-      `${spokenNumber(ys[last])} at ${spokenNumber(xs[last])}, largest ${spokenNumber(ys[top])} at ${spokenNumber(xs[top])}`
-    );
+    const point = (i) => `${spokenNumber(ys[i])} at ${spokenNumber(xs[i])}`;
+    return `${s.label}${s.dash ? ' (dashed)' : ''}: ${point(first)}, ${point(last)}, largest ${point(top)}`;
   });
-  const across = `${spec.xLabel} from ${spokenNumber(spec.x.min)} to ${spokenNumber(spec.x.max)}${spec.x.log ? ' (log scale)' : ''}`;
-  return `Plot: ${spec.title}. Across: ${across}; up: ${spec.yLabel}${spec.y?.log ? ' (log scale)' : ''}. ${series.join('; ')}.`;
+  const log = (scale) => (scale?.log ? ' (log scale)' : '');
+  const across = `${spec.xLabel} from ${spokenNumber(spec.x.min)} to ${spokenNumber(spec.x.max)}${log(spec.x)}`;
+  return `Plot: ${spec.title}. Across: ${across}; up: ${spec.yLabel}${log(spec.y)}. ${series.join('; ')}.`;
 }
 
 const axis = (label, extra = {}) => ({
@@ -85,9 +84,78 @@ const axis = (label, extra = {}) => ({
   ...extra,
 });
 
+/** uPlot's scales, axes and series for `spec` (see createPlot). */
+function plotOptions(spec) {
+  return {
+    scales: {
+      x: spec.x.log
+        ? { time: false, distr: 3, log: 10, range: [spec.x.min, spec.x.max] }
+        : { time: false, range: [spec.x.min, spec.x.max] },
+      y: spec.y?.log
+        ? { distr: 3, log: 10, range: [spec.y.min, spec.y.max] }
+        : spec.y
+          ? { range: [spec.y.min, spec.y.max] }
+          : { auto: true },
+    },
+    // on log axes uPlot hands null for the ticks it leaves unlabelled for room
+    axes: [
+      axis(spec.xLabel, spec.x.log ? { splits: decades, values: spec.xValues } : { values: spec.xValues }),
+      axis(
+        spec.yLabel,
+        spec.y?.log
+          ? {
+              splits: decades,
+              values: (u, ticks) => ticks.map((t) => (t == null ? '' : `1e${Math.round(Math.log10(t))}`)),
+              size: 56,
+            }
+          : {},
+      ),
+    ],
+    series: [
+      { label: spec.xLabel, value: (_, v) => (v == null ? '—' : v.toFixed(1)) },
+      ...spec.series.map((s) => ({
+        label: s.label,
+        stroke: s.stroke,
+        width: s.width ?? 2,
+        dash: s.dash,
+        points: { show: Boolean(s.points), size: 7, fill: s.stroke },
+        spanGaps: Boolean(s.spanGaps), // a curve over x values other series own
+        value: (_, v) => (v == null ? '—' : v.toFixed(4)),
+      })),
+    ],
+  };
+}
+
 /**
- * spec: { title, xLabel, yLabel, x: { min, max, log }, y: { min, max, log } | null (auto), series: [{ label, stroke, dash, width, points, spanGaps }],
- *         data: [xs, ...ys], bands: [...], annotations: [...], filename, legend = true }
+ * The keyboard moves a plot's cursor as the pointer does: ←/→ one sample (Shift: ten), Home/End, Escape hides
+ * it; readouts follow as on hover. getPlot(): the uPlot shown; getSpec(): its spec.
+ */
+function attachKeyboardCursor(holder, getPlot, getSpec) {
+  let cursorIndex = null;
+  holder.addEventListener('keydown', (e) => {
+    const u = getPlot();
+    const xs = getSpec().data[0];
+    const n = xs.length;
+    const step = e.shiftKey ? 10 : 1;
+    const next = { ArrowLeft: (cursorIndex ?? n) - step, ArrowRight: (cursorIndex ?? -1) + step, Home: 0, End: n - 1 }[
+      e.key
+    ];
+    if (e.key === 'Escape') {
+      cursorIndex = null;
+      u.setCursor({ left: -10, top: -10 });
+      return;
+    }
+    if (next === undefined) return;
+    e.preventDefault();
+    cursorIndex = Math.min(Math.max(next, 0), n - 1);
+    u.setCursor({ left: u.valToPos(xs[cursorIndex], 'x'), top: u.over.clientHeight / 2 });
+  });
+}
+
+/**
+ * spec: { title, xLabel, yLabel, x: { min, max, log }, y: { min, max, log } | null (auto),
+ *         series: [{ label, stroke, dash, width, points, spanGaps }], data: [xs, ...ys], bands: [...],
+ *         annotations: [...], filename, legend = true }
  * options.onCursor(index | null): the data index under the pointer, for a readout of the page's own.
  * Returns { setData(spec), dispose() }; setData rebuilds when the series change.
  */
@@ -109,45 +177,7 @@ export function createPlot(container, spec, { onCursor } = {}) {
     caption.textContent = current.title;
     const opts = {
       ...size(),
-      scales: {
-        x: current.x.log
-          ? { time: false, distr: 3, log: 10, range: [current.x.min, current.x.max] }
-          : { time: false, range: [current.x.min, current.x.max] },
-        y: current.y?.log
-          ? { distr: 3, log: 10, range: [current.y.min, current.y.max] }
-          : current.y
-            ? { range: [current.y.min, current.y.max] }
-            : { auto: true },
-      },
-      // on log axes uPlot hands null for the ticks it leaves unlabelled for room
-      axes: [
-        axis(
-          current.xLabel,
-          current.x.log ? { splits: decades, values: current.xValues } : { values: current.xValues },
-        ),
-        axis(
-          current.yLabel,
-          current.y?.log
-            ? {
-                splits: decades,
-                values: (u, ticks) => ticks.map((t) => (t == null ? '' : `1e${Math.round(Math.log10(t))}`)),
-                size: 56,
-              }
-            : {},
-        ),
-      ],
-      series: [
-        { label: current.xLabel, value: (_, v) => (v == null ? '—' : v.toFixed(1)) },
-        ...current.series.map((s) => ({
-          label: s.label,
-          stroke: s.stroke,
-          width: s.width ?? 2,
-          dash: s.dash,
-          points: { show: Boolean(s.points), size: 7, fill: s.stroke },
-          spanGaps: Boolean(s.spanGaps), // a curve over x values other series own
-          value: (_, v) => (v == null ? '—' : v.toFixed(4)),
-        })),
-      ],
+      ...plotOptions(current),
       legend: { show: current.legend ?? true, live: true },
       cursor: { drag: { x: false, y: false } },
       hooks: { setCursor: [(p) => onCursor?.(p.cursor.idx ?? null)] },
@@ -155,28 +185,15 @@ export function createPlot(container, spec, { onCursor } = {}) {
     };
     u = new uPlot(opts, current.data, holder);
     u.ctx.canvas.tabIndex = 0; // the arrow keys move the cursor, as the pointer does
-    describeCanvas(u.ctx.canvas, describePlot(current));
+    describeCanvas(u.ctx.canvas, describePlot(current), { save: false }); // Save PNG is in its toolbar
   };
   build();
 
-  // keyboard cursor: ←/→ one sample (Shift: ten), Home/End, Escape hides it; readouts follow as on hover
-  let cursorIndex = null;
-  holder.addEventListener('keydown', (e) => {
-    const n = current.data[0].length;
-    const step = e.shiftKey ? 10 : 1;
-    const next = { ArrowLeft: (cursorIndex ?? n) - step, ArrowRight: (cursorIndex ?? -1) + step, Home: 0, End: n - 1 }[
-      e.key
-    ];
-    if (e.key === 'Escape') {
-      cursorIndex = null;
-      u.setCursor({ left: -10, top: -10 });
-      return;
-    }
-    if (next === undefined) return;
-    e.preventDefault();
-    cursorIndex = Math.min(Math.max(next, 0), n - 1);
-    u.setCursor({ left: u.valToPos(current.data[0][cursorIndex], 'x'), top: u.over.clientHeight / 2 });
-  });
+  attachKeyboardCursor(
+    holder,
+    () => u,
+    () => current,
+  );
 
   const resize = new ResizeObserver(() => u?.setSize(size()));
   resize.observe(holder);
@@ -213,7 +230,7 @@ export function createPlot(container, spec, { onCursor } = {}) {
         caption.textContent = next.title;
         u.setData(next.data);
         u.redraw(false, true);
-        describeCanvas(u.ctx.canvas, describePlot(next));
+        describeCanvas(u.ctx.canvas, describePlot(next), { save: false });
       } else build();
     },
     get uplot() {

@@ -19,11 +19,12 @@ const ALBEDO_KEYS = ['D', 'V', 'F', 'alpha', 'f0', 'compare', 'D2', 'V2', 'alpha
 
 const row = (parent, className) => parent.appendChild(Object.assign(document.createElement('div'), { className }));
 
-export function createBrdfLobe(container, initialState = {}, { onStateChange } = {}) {
+export function createBrdfLobe(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'brdf-lobe',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });

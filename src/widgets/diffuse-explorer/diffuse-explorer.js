@@ -17,11 +17,12 @@ export { schema };
 const LIGHT_KEYS = ['lightTheta', 'lightPhi'];
 const MODEL_KEYS = ['models', 'sigma', 'cdiff', 'f0'];
 
-export function createDiffuseExplorer(container, initialState = {}, { onStateChange } = {}) {
+export function createDiffuseExplorer(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'diffuse-explorer',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });

@@ -27,6 +27,7 @@ export function createLightPad(container, { get, set, label }) {
       canvas,
       `${label}: the light is ${lightTheta}° from the viewing direction, at ${lightPhi}° around it. ` +
         'Arrow keys move it 5° at a time.',
+      { save: false }, // a control, not a picture
     );
   };
   const resize = new ResizeObserver(draw);

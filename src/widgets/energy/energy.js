@@ -15,8 +15,15 @@ import { ABOUT, TERMS_USED, TITLE, describeFurnace } from './words.js';
 
 export { schema };
 
-export function createEnergy(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'energy', schema, initialState, about: ABOUT, terms: TERMS_USED });
+export function createEnergy(container, initialState = {}, { onStateChange, locked } = {}) {
+  const shell = createWidgetShell(container, {
+    name: 'energy',
+    schema,
+    initialState,
+    locked,
+    about: ABOUT,
+    terms: TERMS_USED,
+  });
   const plotHolder = document.createElement('div');
   shell.view.append(plotHolder);
   let sweep = albedoSweep(shell.state);

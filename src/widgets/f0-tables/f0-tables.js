@@ -10,8 +10,8 @@ import { buildTable } from './table-view.js';
 export { schema };
 
 /** options.onPick(materialKey, targetWidget) -> true when the page handled it (no navigation). */
-export function create(container, initialState = {}, { onStateChange, onPick } = {}) {
-  const shell = createWidgetShell(container, { ...widget, about: ABOUT, initialState });
+export function create(container, initialState = {}, { onStateChange, onPick, locked } = {}) {
+  const shell = createWidgetShell(container, { ...widget, about: ABOUT, initialState, locked });
   const holder = document.createElement('div');
   holder.className = 'f0-tables';
   shell.view.append(holder);

@@ -10,8 +10,8 @@ import { renderReadout } from './readout.js';
 
 export { schema };
 
-export function create(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { ...widget, about: ABOUT, initialState });
+export function create(container, initialState = {}, { onStateChange, locked } = {}) {
+  const shell = createWidgetShell(container, { ...widget, about: ABOUT, initialState, locked });
   const plots = document.createElement('div');
   plots.className = 'plots';
   const summary = document.createElement('div');

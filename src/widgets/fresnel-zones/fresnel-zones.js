@@ -12,8 +12,8 @@ import { attachViewTools } from './view-tools.js';
 
 export { schema };
 
-export function create(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { ...widget, about: ABOUT, initialState });
+export function create(container, initialState = {}, { onStateChange, locked } = {}) {
+  const shell = createWidgetShell(container, { ...widget, about: ABOUT, initialState, locked });
   const getState = () => shell.state;
   const column = document.createElement('div');
   column.className = 'view-column';
@@ -41,9 +41,8 @@ export function create(container, initialState = {}, { onStateChange } = {}) {
   const viewport = createViewport(column, { draw, onResize, label: 'Fresnel zones view' });
   if (viewport) {
     stats = createZoneStats(viewport.renderer, view);
-    const redraw = () => draw(viewport.renderer);
     const getZoneShares = () => stats.measured.zoneShares;
-    tools = attachViewTools(viewport, column, { getState, update: (p) => update(p), view, redraw, getZoneShares });
+    tools = attachViewTools(viewport, column, { getState, update: (p) => update(p), view, getZoneShares });
   }
   column.append(legend.element);
   if (!viewport) showMeasured();

@@ -4,105 +4,20 @@
 // point) and ambient light (one constant for everything), each with its GPU time and its error.
 import { createWidgetShell } from '../../core/framework/widget-shell.js';
 import { REFERENCE_BATCH } from '../../lab/lab-renderer.js';
-import { MATERIAL_FIELDS, materialOf } from '../../lab/lab-scene.js';
+import { materialOf } from '../../lab/lab-scene.js';
 import { createLabView } from '../../lab/lab-view.js';
-import { SUN, skyPixels } from '../../lab/environments.js';
-import { sphereLightCLight } from '../../math/lighting.js';
+import { METHODS, MODELS, TERMS, sky, sunSphere } from './model.js';
+import { schema } from './schema.js';
+import { ABOUT, TERMS_USED, description, tableHtml } from './words.js';
 
-export const schema = {
-  ...MATERIAL_FIELDS,
-  // a dark, fairly smooth dielectric by default: the sun's highlight is where the models differ most
-  diffuse: { ...MATERIAL_FIELDS.diffuse, default: '#2f4f7f' },
-  alpha: { ...MATERIAL_FIELDS.alpha, default: 0.1 },
-  show: { type: 'enum', options: { images: 'Images', errors: 'Error images' }, default: 'images', label: 'Show' },
-  refSamples: {
-    type: 'enum',
-    options: { 128: '128', 512: '512', 2048: '2048' },
-    default: '512',
-    label: 'Reference samples / pixel',
-  },
-  exposure: { type: 'number', min: 0.1, max: 8, step: 0.05, default: 0.8, label: 'Exposure' },
-  errorScale: { type: 'number', min: 0.005, max: 1, step: 0.005, default: 0.1, label: 'Error image: full scale' },
-};
+export { MODELS, schema };
 
-const sunCLight = SUN.radiance.map((L) => sphereLightCLight(L, SUN.sin));
-
-/** The mean radiance of the sky, sun included, over the whole sphere: the one number ambient light keeps. */
-function skyMean() {
-  const { data, width, height } = skyPixels(256, 128, true);
-  const sum = [0, 0, 0];
-  let weight = 0;
-  for (let j = 0; j < height; j++) {
-    const w = Math.cos(((j + 0.5) / height - 0.5) * Math.PI);
-    for (let i = 0; i < width; i++) for (let c = 0; c < 3; c++) sum[c] += data[(j * width + i) * 4 + c] * w;
-    weight += w * width;
-  }
-  return sum.map((x) => x / weight);
-}
-
-const sky = { intensity: 1 };
-const sunSphere = { dir: SUN.dir, sin: SUN.sin, radiance: SUN.radiance };
-// each model: its lights, which map its sky is (with the sun painted in, or without), and where it fails
-export const MODELS = [
-  {
-    key: 'ibl',
-    name: 'Image-based',
-    lights: { env: sky },
-    map: 'sky',
-    fails:
-      'The sun is one more bright patch of a prefiltered map: its highlight is blurred by the map’s resolution and the prefilter assumes n = v = r, wrong at grazing angles.',
-  },
-  {
-    key: 'area',
-    name: 'Area light + IBL sky',
-    lights: { env: sky, sphere: sunSphere },
-    map: 'sky-no-sun',
-    fails:
-      'The representative point reshapes the highlight for the sun’s size, with an energy factor that is only approximate; the sky is still prefiltered.',
-  },
-  {
-    key: 'punctual',
-    name: 'Punctual light + IBL sky',
-    lights: { env: sky, punctual: { dir: SUN.dir, cLight: sunCLight } },
-    map: 'sky-no-sun',
-    fails: 'The sun has no size: on smooth surfaces its highlight is a needle far too bright and far too small.',
-  },
-  {
-    key: 'ambient',
-    name: 'Ambient only',
-    lights: { ambient: skyMean() },
-    map: 'furnace',
-    fails: 'No direction at all: no shading from the sun, no sky-to-ground gradient, no reflections.',
-  },
-];
-
-const ABOUT =
-  'The same sphere under the same sky, lit five ways. The first image solves the reflectance equation over all ' +
-  'incoming light (the sky and the sun’s disc) by Monte Carlo: the general illumination model, what a path ' +
-  'tracer would converge to. The others are what real-time renderers do instead: prefilter the whole sky into an ' +
-  'environment map (image-based lighting), or keep the sun apart as an area light or as a punctual light and ' +
-  'prefilter only the sky, or replace everything by one ambient colour. The table gives what each costs on this ' +
-  'GPU and how far it lands from the reference. Try a smooth metal (gold, α 0.05) and a rough dielectric. The ' +
-  'sun is enlarged: a disc of 2° radius, 7.5 times the real sun’s 0.27° (56 times its solid angle), so that the ' +
-  '256 × 128 map (1.4° texels) resolves it. A real-sized sun would make the punctual light nearly exact except on ' +
-  'near-mirrors, and the map would smear it over a whole texel.';
-
-const TERMS_USED = [
-  'dfgTableUv',
-  'sphereLightRepresentativeDir',
-  'sphereLightNormalization',
-  'sphereLightCLight',
-  'sampleCone',
-];
-const TERMS = { F: 'schlick', D: 'ggx', V: 'smithGGXCorrelated', diffuse: 'lambert', layers: 'both' };
-const METHODS = { env: 'split-sum', area: 'representative', samples: 1 };
-const fmt = (x, digits = 3) => (Number.isFinite(x) ? x.toPrecision(digits) : '—');
-
-export function createLightingModels(container, initialState = {}, { onStateChange } = {}) {
+export function createLightingModels(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'lighting-models',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });
@@ -142,14 +57,8 @@ export function createLightingModels(container, initialState = {}, { onStateChan
   };
 
   const showTable = (st) => {
-    table.innerHTML = `<table class="data-table compact"><caption>Sun enlarged to 2° (the real one is 0.27°). Against the reference (${samples} of ${st.refSamples} samples per pixel${samples < Number(st.refSamples) ? ', still converging' : ''})</caption>
-      <thead><tr><th>Illumination model</th><th>GPU time (${view.resolution}² px)</th><th>RMS error</th><th>relative</th><th>Where it fails</th></tr></thead><tbody>
-      ${results.map((r) => `<tr><th scope="row">${r.name}</th><td>${fmt(r.ms)} ms</td><td>${fmt(r.rms)}</td><td>${fmt(r.relative * 100)} %</td><td>${r.fails}</td></tr>`).join('')}
-      </tbody></table>`;
-    shell.describe(
-      `Lighting models: a sphere (${st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material}, roughness α ${st.alpha}) under a sky with a sun, by the reference and four illumination models. ${samples < Number(st.refSamples) ? 'The reference is still converging.' : `Relative RMS errors: ${results.map((r) => `${r.name} ${fmt(r.relative * 100)} %`).join(', ')}.`}`,
-      view.canvas,
-    );
+    table.innerHTML = tableHtml(st, results, samples, view.resolution);
+    shell.describe(description(st, results, samples), view.canvas);
   };
 
   const onReset = () => ([approxKey, refKey] = ['', '']);

@@ -13,11 +13,12 @@ import { loadFitInto } from './hand-off.js';
 
 export { schema };
 
-export function create(container, initialState = {}, { onStateChange } = {}) {
+export function create(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'measured-brdf',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });

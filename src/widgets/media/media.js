@@ -10,8 +10,15 @@ import { createTransmittancePlot } from './transmittance-plot.js';
 
 export { schema };
 
-export function create(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { name: 'media', schema, initialState, about: ABOUT, terms: TERMS_USED });
+export function create(container, initialState = {}, { onStateChange, locked } = {}) {
+  const shell = createWidgetShell(container, {
+    name: 'media',
+    schema,
+    initialState,
+    locked,
+    about: ABOUT,
+    terms: TERMS_USED,
+  });
   const glasses = createGlassesView(shell.view, () => shell.state);
   const readout = Object.assign(document.createElement('p'), { className: 'media-readout' });
   shell.view.append(readout);

@@ -26,8 +26,8 @@ function figuresAt(state, surface, twice) {
   };
 }
 
-export function create(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { ...widget, about: ABOUT, initialState });
+export function create(container, initialState = {}, { onStateChange, locked } = {}) {
+  const shell = createWidgetShell(container, { ...widget, about: ABOUT, initialState, locked });
   const canvas = document.createElement('canvas');
   canvas.className = 'microsurface';
   const legend = document.createElement('p');

@@ -13,11 +13,12 @@ export { schema };
 const CURVE_KEYS = ['hwhm', 'abcA2', 'sgdP', 'ndfs'];
 const LOG_KEYS = [...CURVE_KEYS, 'measured', 'measuredName'];
 
-export function createNdfExplorer(container, initialState = {}, { onStateChange } = {}) {
+export function createNdfExplorer(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'ndf-explorer',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });

@@ -12,8 +12,8 @@ import { lampPlotSpec, spectrumPlotSpec } from './plots.js';
 
 export { schema };
 
-export function create(container, initialState = {}, { onStateChange } = {}) {
-  const shell = createWidgetShell(container, { ...widget, about: ABOUT, initialState });
+export function create(container, initialState = {}, { onStateChange, locked } = {}) {
+  const shell = createWidgetShell(container, { ...widget, about: ABOUT, initialState, locked });
   const canvas = document.createElement('canvas');
   canvas.className = 'radiance-lamp';
   const lampTable = document.createElement('div');

@@ -11,11 +11,12 @@ import { createExitPlot } from './exit-plot.js';
 export { schema };
 const STATISTICS_KEYS = ['sigmaS', 'sigmaA', 'seed', 'pixel'];
 
-export function create(container, initialState = {}, { onStateChange } = {}) {
+export function create(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'subsurface-scale',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });

@@ -11,11 +11,12 @@ import { createSpheresView } from './spheres-view.js';
 
 export { schema };
 
-export function create(container, initialState = {}, { onStateChange } = {}) {
+export function create(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'surfaces',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });

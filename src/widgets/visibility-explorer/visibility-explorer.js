@@ -12,11 +12,12 @@ export { schema };
 
 const CURVE_KEYS = ['alpha', 'config', 'viewTheta', 'terms'];
 
-export function createVisibilityExplorer(container, initialState = {}, { onStateChange } = {}) {
+export function createVisibilityExplorer(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {
     name: 'visibility-explorer',
     schema,
     initialState,
+    locked,
     about: ABOUT,
     terms: TERMS_USED,
   });

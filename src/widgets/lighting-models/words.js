@@ -1,0 +1,63 @@
+// The lighting-models widget's words: what it is about, where each model fails, the table and the description.
+
+export const ABOUT =
+  'The same sphere under the same sky, lit five ways. The first image solves the reflectance equation over all ' +
+  'incoming light (the sky and the sun’s disc) by Monte Carlo: the general illumination model, what a path ' +
+  'tracer would converge to. The others are what real-time renderers do instead: prefilter the whole sky into an ' +
+  'environment map (image-based lighting), or keep the sun apart as an area light or as a punctual light and ' +
+  'prefilter only the sky, or replace everything by one ambient colour. The table gives what each costs on this ' +
+  'GPU and how far it lands from the reference. Try a smooth metal (gold, α 0.05) and a rough dielectric. The ' +
+  'sun is enlarged: a disc of 2° radius, 7.5 times the real sun’s 0.27° (56 times its solid angle), so that the ' +
+  '256 × 128 map (1.4° texels) resolves it. A real-sized sun would make the punctual light nearly exact except on ' +
+  'near-mirrors, and the map would smear it over a whole texel.';
+
+export const TERMS_USED = [
+  'dfgTableUv',
+  'sphereLightRepresentativeDir',
+  'sphereLightNormalization',
+  'sphereLightCLight',
+  'sampleCone',
+];
+
+/** Where each model fails, by its key (model.js's MODELS). */
+export const FAILS = {
+  ibl:
+    'The sun is one more bright patch of a prefiltered map: its highlight is blurred by the map’s resolution and ' +
+    'the prefilter assumes n = v = r, wrong at grazing angles.',
+  area:
+    'The representative point reshapes the highlight for the sun’s size, with an energy factor that is only ' +
+    'approximate; the sky is still prefiltered.',
+  punctual: 'The sun has no size: on smooth surfaces its highlight is a needle far too bright and far too small.',
+  ambient: 'No direction at all: no shading from the sun, no sky-to-ground gradient, no reflections.',
+};
+
+const fmt = (x, digits = 3) => (Number.isFinite(x) ? x.toPrecision(digits) : '—');
+
+/** The table of the models' costs and errors against the reference (`samples` of it so far). */
+export function tableHtml(st, results, samples, resolution) {
+  const converging = samples < Number(st.refSamples) ? ', still converging' : '';
+  const caption =
+    'Sun enlarged to 2° (the real one is 0.27°). ' +
+    `Against the reference (${samples} of ${st.refSamples} samples per pixel${converging})`;
+  const head = ['Illumination model', `GPU time (${resolution}² px)`, 'RMS error', 'relative', 'Where it fails'];
+  const row = (r) =>
+    `<tr><th scope="row">${r.name}</th><td>${fmt(r.ms)} ms</td><td>${fmt(r.rms)}</td>` +
+    `<td>${fmt(r.relative * 100)} %</td><td>${r.fails}</td></tr>`;
+  return `<table class="data-table compact"><caption>${caption}</caption>
+      <thead><tr>${head.map((h) => `<th>${h}</th>`).join('')}</tr></thead><tbody>
+      ${results.map(row).join('')}
+      </tbody></table>`;
+}
+
+/** What the canvas shows, for a screen reader. */
+export function description(st, results, samples) {
+  const material = st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material;
+  const errors =
+    samples < Number(st.refSamples)
+      ? 'The reference is still converging.'
+      : `Relative RMS errors: ${results.map((r) => `${r.name} ${fmt(r.relative * 100)} %`).join(', ')}.`;
+  return (
+    `Lighting models: a sphere (${material}, roughness α ${st.alpha}) under a sky with a sun, by the reference and ` +
+    `four illumination models. ${errors}`
+  );
+}

@@ -1,0 +1,58 @@
+// The material lab's frame (createLabView's `frame`): the scene of the state, the approximation rendered again when
+// it changed (its GPU time the median of `timingRuns` renders), the reference restarted when it changed and given
+// one more batch until it has the samples asked for, and the error between them.
+import { REFERENCE_BATCH } from '../../lab/lab-renderer.js';
+import { sceneOf } from './model.js';
+
+/**
+ * `state()` the widget's state, `measured()` the measured table in use or null, `file()` the dropped environment
+ * ({ key, pixels }), `show(state, lights)` shows what the frame measured. frame(...) is the view's frame; stats the
+ * last frame's; reset() renders everything again; remeasure(runs) times the approximation again, the median of
+ * `runs` renders.
+ */
+export function createLabFrame({ state, measured, file, show }) {
+  let approxKey = '';
+  let refKey = '';
+  let stats = null;
+  let ms = null;
+  let timingRuns = 1; // renders of the approximation whose median is its cost (the bench asks for more)
+
+  const frame = ({ lab, environment, again }) => {
+    const st = state();
+    const table = st.brdfSource === 'measured' ? measured() : null;
+    const fromFile = st.env && st.environment === 'file';
+    const envKey = st.env ? (fromFile ? file().key : st.environment) : 'none';
+    const { scene, lights, keys } = sceneOf(st, table, envKey);
+    scene.table = table?.texture;
+    scene.maps = environment(st.env ? st.environment : 'furnace', fromFile ? file().pixels : null);
+    if (keys.approx !== approxKey) {
+      const times = Array.from({ length: timingRuns }, () => lab.renderApprox(scene)).sort((a, b) => a - b);
+      ms = times[Math.floor(times.length / 2)];
+      approxKey = keys.approx;
+    }
+    if (keys.reference !== refKey) {
+      lab.resetReference();
+      refKey = keys.reference;
+    }
+    const target = Number(st.refSamples);
+    if (lab.batches < target / REFERENCE_BATCH) {
+      lab.accumulate(scene);
+      again();
+    }
+    stats = { ...lab.error(), ms, timingRuns, samples: lab.batches * REFERENCE_BATCH, target };
+    Object.assign(stats, { samplesN: st.samples, method: st.envMethod });
+    return show(st, lights, scene, stats);
+  };
+
+  return {
+    frame,
+    get stats() {
+      return stats;
+    },
+    reset: () => ([approxKey, refKey] = ['', '']),
+    remeasure(runs) {
+      timingRuns = runs;
+      approxKey = '';
+    },
+  };
+}

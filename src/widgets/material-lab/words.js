@@ -1,0 +1,90 @@
+// The material lab's words: what the widget is about, the terms it uses, and the captions and descriptions of
+// what it shows.
+import { ENVIRONMENTS } from '../../lab/environments.js';
+import { MERL_TEXTURE_BYTES } from '../measured-brdf/texture-size.js';
+
+export const ABOUT =
+  'A shading model becomes a picture only with an illumination model. The left sphere is rendered the way a ' +
+  'real-time renderer would (the method chosen for each light); the middle one solves the reflectance equation ' +
+  'by Monte Carlo, adding samples until it converges; the right image is their difference. The punctual light ' +
+  'is exact in both (it is a single direction: L = π f c_light (n·l)). The sphere light, the environment and ' +
+  'ambient light are integrals that the approximations shortcut: a representative point, a prefiltered map with ' +
+  'a DFG table (the split sum), a few importance samples, or the mirror direction alone. Each one uses the F, D ' +
+  'and V chosen above where it has a form for them (a DFG table and a prefiltered map made for the chosen D and ' +
+  'V; F = 1 gives A + B); the lines under the images say what stands in where it has none. Multiple scattering ' +
+  'puts back the light the microfacet model drops (Kulla & Conty 2017, or Turquin 2019), in both images, so the ' +
+  'error image shows what each method does with it. Drop an .hdr or .exr panorama on the widget to light it with ' +
+  'your own environment, or a MERL .binary file (Matusik et al. 2003) to render a measured BRDF: its table is ' +
+  `a 3-D texture of ${(MERL_TEXTURE_BYTES / 1e6).toFixed(2)} MB on the GPU, and only the reference and importance ` +
+  'sampling have a form for it.';
+
+export const TERMS_USED = [
+  'microfacetBRDF',
+  'dfgTableUv',
+  'sampleGGXNormal',
+  'sampleBeckmannNormal',
+  'sampleCosine',
+  'sampleCone',
+  'sphereLightRepresentativeDir',
+  'sphereLightNormalization',
+  'equirectUv',
+  'diffuseOrenNayar',
+];
+
+const fmt = (x, digits = 4) => (x === null || x === undefined ? '—' : x.toPrecision(digits));
+
+/** The lights on and the method each is shaded by, in words (the approximation's caption). */
+export function methodText(st, lights) {
+  const parts = [];
+  if (lights.punctual) parts.push('punctual (exact)');
+  if (lights.sphere) {
+    parts.push(`sphere light by ${st.areaMethod === 'centre' ? 'its centre' : 'representative point'}`);
+  }
+  if (lights.env) {
+    const samples = st.envMethod === 'importance' ? `${st.samples} importance samples` : st.envMethod;
+    parts.push(`${ENVIRONMENTS[st.environment].split(' (')[0].toLowerCase()} by ${samples}`);
+  }
+  if (lights.ambient) parts.push('ambient');
+  return parts.join(' + ') || 'no light on';
+}
+
+/** The captions over the three images. */
+export const captions = (st, lights, stats) => [
+  { image: 'approx', caption: `Approximation: ${methodText(st, lights)}` },
+  { image: 'reference', caption: `Reference: Monte Carlo, ${stats.samples} of ${stats.target} samples / pixel` },
+  { image: 'error', caption: `Error |approx − reference|, 0 to ${st.errorScale}` },
+];
+
+/** The readout under the images: the approximation's GPU time and its error (stats), or why there is none. */
+export function readoutHtml(stats, lights, resolution) {
+  if (!Object.values(lights).some(Boolean)) {
+    return '<p class="lab-empty">Every light is off: switch one on in the controls.</p>';
+  }
+  const converging = stats.samples < stats.target ? ' — reference still converging' : '';
+  const time = `${fmt(stats.ms, 3)} ms for ${resolution}² pixels`;
+  const error = `${fmt(stats.rms)} (radiance), ${fmt(stats.relative * 100, 3)} % of the reference’s RMS${converging}`;
+  return `<table class="data-table compact"><tbody>
+        <tr><th scope="row">GPU time of the approximation</th><td>${time}</td></tr>
+        <tr><th scope="row">RMS error against the reference</th><td>${error}</td></tr>
+        </tbody></table>`;
+}
+
+/** What the canvas shows, for a screen reader: the material (or the measured table's `name`), the lights, the error. */
+export function description(st, lights, stats, measuredName) {
+  const errorWords =
+    stats.samples < stats.target
+      ? 'The reference is still converging.'
+      : `RMS error ${fmt(stats.rms, 3)}, ${fmt(stats.relative * 100, 3)} % relative; ${fmt(stats.ms, 3)} ms.`;
+  const model = st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material;
+  const what = measuredName ? `the measured BRDF ${measuredName}` : `${model}, roughness α ${st.alpha}`;
+  return (
+    `Material lab. A sphere (${what}) lit by ${methodText(st, lights)}; beside it the Monte Carlo reference ` +
+    `(${stats.target} samples per pixel) and the error image. ${errorWords}`
+  );
+}
+
+export const NOTICES = {
+  noMeasured: 'No MERL file has been dropped yet: drop a .binary file on the widget. Kept the model.',
+  noFile: 'No environment file has been dropped yet: drop an .hdr or .exr panorama on the widget. Kept the studio.',
+  dropText: 'Load an .hdr / .exr environment or a MERL .binary BRDF…',
+};

@@ -1,0 +1,68 @@
+// Every program the material lab can make assembles (no #error of a term chain, no define that no chunk reads),
+// and every uniform it declares is one the lab renderer feeds (createLabUniforms).
+import { describe, expect, it } from 'vitest';
+import { assembleGlsl } from '../../src/core/gpu/glsl.js';
+import { SHADER_CHUNKS } from '../../src/core/gpu/shader-chunks.js';
+import { sceneDefines } from '../../src/lab/lab-defines.js';
+import { createLabUniforms } from '../../src/lab/lab-uniforms.js';
+import { CATALOGUE } from '../../src/math/catalogue/index.js';
+import { LAB_TERMS } from '../../src/lab/lab-approximations.js';
+
+const LIGHTS = ['punctual', 'sphere', 'env', 'ambient'];
+const subsets = (keys) => Array.from({ length: 2 ** keys.length }, (_, m) => keys.filter((_, i) => m & (1 << i)));
+const lightsOf = (on) => Object.fromEntries(LIGHTS.map((k) => [k, on.includes(k) ? {} : null]));
+
+/** Every scene of the lab's menus: each term once against the defaults, each light set with each method. */
+function* scenes() {
+  const terms = { F: 'schlick', D: 'ggx', V: 'smithGGXCorrelated', diffuse: 'lambert', layers: 'both' };
+  const slots = { F: 'fresnel', D: 'ndf', V: 'visibility', diffuse: 'diffuse' };
+  const termSets = [{ ...terms, compensation: 'none' }];
+  for (const [slot, family] of Object.entries(slots)) {
+    for (const key of Object.keys(LAB_TERMS[family])) termSets.push({ ...terms, [slot]: key, compensation: 'none' });
+  }
+  for (const compensation of ['kullaConty', 'turquin']) termSets.push({ ...terms, compensation });
+  for (const layers of ['specular', 'diffuse']) termSets.push({ ...terms, layers, compensation: 'none' });
+  for (const on of subsets(LIGHTS)) {
+    for (const env of ['split-sum', 'importance', 'mirror', 'pmrem']) {
+      for (const area of ['representative', 'centre']) {
+        const methods = { env, area, samples: 4 };
+        for (const t of termSets) yield { terms: t, lights: lightsOf(on), methods };
+        yield { terms: termSets[0], lights: lightsOf(on), methods, measured: 'a MERL table' };
+      }
+    }
+  }
+}
+
+const UNIFORM = /^\s*uniform\s+(?:highp\s+|mediump\s+|lowp\s+)?\w+\s+(\w+)/gm;
+
+describe('material lab programs', () => {
+  it('the lab offers only terms of the catalogue', () => {
+    for (const family of ['fresnel', 'ndf', 'visibility', 'diffuse']) {
+      for (const key of Object.keys(LAB_TERMS[family])) expect(CATALOGUE[family].terms[key]?.key).toBe(key);
+    }
+  });
+  it('every variant assembles and declares only uniforms that createLabUniforms feeds', () => {
+    const fed = new Set(Object.keys(createLabUniforms(8)));
+    const seen = new Map();
+    for (const scene of scenes()) {
+      for (const reference of [false, true]) {
+        const defines = sceneDefines(scene, reference);
+        const key = JSON.stringify(Object.keys(defines).sort());
+        if (seen.has(key)) continue;
+        let text;
+        try {
+          text = assembleGlsl(SHADER_CHUNKS['lab-shade.frag.glsl'], { defines });
+        } catch (e) {
+          throw new Error(`${key}: ${e.message}`, { cause: e });
+        }
+        const declared = [...text.matchAll(UNIFORM)].map((m) => m[1]);
+        expect(
+          declared.filter((u) => !fed.has(u)),
+          key,
+        ).toEqual([]);
+        seen.set(key, declared);
+      }
+    }
+    expect(seen.size).toBeGreaterThan(100);
+  }, 60_000);
+});
