@@ -48,7 +48,8 @@ const readWords = (page) =>
   }));
 
 const openWidget = async (query) => {
-  const page = await open(browser, `embed.html?w=${query}`, { width: 1280, height: 2600 }); // tall: every view in sight draws
+  // tall: every view in sight draws
+  const page = await open(browser, `embed.html?w=${query}`, { width: 1280, height: 2600 });
   await widget(page, query.split('&')[0]);
   return page;
 };
@@ -66,7 +67,11 @@ describe('every widget describes its canvases and is usable by keyboard', () => 
       expect(before.live.length).toBeGreaterThan(30);
 
       await page.evaluate((n, change) => globalThis.__shadingLab.widgets[n].update(change), name, CHANGES[name]);
-      await settle(page, 1000); // the live region speaks once changes settle
+      // the live region speaks once changes settle (500 ms after the last, describe.js): wait for it, then a frame
+      await page
+        .waitForFunction((text) => document.querySelector('.widget-live')?.textContent !== text, {}, before.live)
+        .catch(() => {}); // words that never change fail below, with the words in the message
+      await settle(page, 0);
       const after = await readWords(page);
       expect(after.canvases.length).toBe(before.canvases.length);
       after.canvases.forEach((c, i) => {
@@ -154,7 +159,8 @@ describe('interactive canvases answer the keyboard', () => {
       );
     let probe = await rows();
     expect(probe.sphere).toBe('Blinn–Phong');
-    expect(Number.parseFloat(probe['n·v'])).toBeCloseTo(Math.sqrt(1 - 0.3 ** 2), 3); // at x = 0.3 on the unit sphere, seen head-on
+    // at x = 0.3 on the unit sphere, seen head-on
+    expect(Number.parseFloat(probe['n·v'])).toBeCloseTo(Math.sqrt(1 - 0.3 ** 2), 3);
     expect(await page.$eval('.probe-marker', (m) => m.hidden)).toBe(false);
     for (let i = 0; i < 10; i++) await page.keyboard.press('ArrowRight');
     probe = await rows();

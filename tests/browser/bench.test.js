@@ -81,6 +81,7 @@ describe('npm run bench', () => {
       cwd: ROOT,
       encoding: 'utf8',
       timeout: 300_000,
+      env: { ...process.env, BUILT_APP: join(ROOT, 'dist') }, // global-setup.js built it for this run
     });
     expect(log).toMatch(/Fresnel, dielectrics/);
     const report = JSON.parse(readFileSync(out, 'utf8'));

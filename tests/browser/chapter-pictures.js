@@ -57,7 +57,8 @@ for (const [key, [path, selector = '.widget-view canvas', fit = 'cover']] of Obj
   );
   writeFileSync(join(out, `${key}.webp`), Buffer.from(webp, 'base64'));
   console.log(
-    `${key}.webp ${Math.round((webp.length * 0.75) / 1024)} KiB${page.errors.length ? `  errors: ${page.errors.join(' | ')}` : ''}`,
+    `${key}.webp ${Math.round((webp.length * 0.75) / 1024)} ` +
+      `KiB${page.errors.length ? `  errors: ${page.errors.join(' | ')}` : ''}`,
   );
   await page.close();
 }

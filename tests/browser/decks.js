@@ -8,7 +8,9 @@ import { ROOT } from './harness.js';
 const TYPES = { '.html': 'text/html', '.js': 'text/javascript', '.mjs': 'text/javascript', '.css': 'text/css' };
 const SERVED = ['/examples/', '/node_modules/reveal.js/dist/', '/dist/'];
 
-/** The lecturer's host: the repo's examples, reveal.js and the built modules, on `localhost` (the app is on 127.0.0.1). */
+/**
+ * The lecturer's host: the repo's examples, reveal.js and the built modules, on `localhost` (the app is on 127.0.0.1).
+ */
 export function serveDecks(pages) {
   const server = createServer((req, res) => {
     const path = decodeURIComponent(new URL(req.url, 'http://x').pathname);
@@ -35,7 +37,10 @@ export function serveDecks(pages) {
 export function longDeck(n) {
   const slides = Array.from({ length: n }, (_, i) => {
     const frag = i % 3 === 0 ? '<p class="fragment" data-shading-lab-set="mode=zones-nv">zones of n·v</p>' : '';
-    return `<section data-shading-lab="fresnel-zones?mode=zones-lh&amp;lightTheta=${40 + 3 * i}"><h3>Slide ${i + 1}</h3>${frag}</section>`;
+    return (
+      `<section data-shading-lab="fresnel-zones?mode=zones-lh&amp;lightTheta=${40 + 3 * i}"><h3>Slide ` +
+      `${i + 1}</h3>${frag}</section>`
+    );
   });
   return `<!doctype html><html><head><meta charset="utf-8"><title>Long deck</title>
 <link rel="stylesheet" href="/node_modules/reveal.js/dist/reveal.css"></head>

@@ -24,7 +24,8 @@ afterAll(async () => {
 
 /** The sphere canvas's red channel (the spheres are grey) as { width, height, at(x, y) }. */
 async function readSpheres(page) {
-  await page.addStyleTag({ content: '.sphere-labels { display: none; }' }); // a screenshot includes the labels drawn over the spheres
+  // a screenshot includes the labels drawn over the spheres
+  await page.addStyleTag({ content: '.sphere-labels { display: none; }' });
   const png = await shot(page, '.sphere-grid canvas');
   const { width, height, red } = await withPixels(page, png, (image) => ({
     width: image.width,
@@ -137,7 +138,8 @@ describe('diffuse-explorer spheres, read back from the canvas', () => {
         }
       }
       console.log(
-        `sigma = 0, ${model}: ${img.width}×${img.height} pixels (${lit} lit), worst |difference from Lambert| = ${worst}/255`,
+        `sigma = 0, ${model}: ${img.width}×${img.height} pixels (${lit} lit), ` +
+          `worst |difference from Lambert| = ${worst}/255`,
       );
       expect(lit).toBeGreaterThan(10_000);
       expect(worst).toBeLessThanOrEqual(1);
@@ -171,7 +173,8 @@ describe('diffuse-explorer spheres, read back from the canvas', () => {
     const [sigma, c] = [60, 0.8];
     const page = await open(
       browser,
-      `embed.html?w=diffuse-explorer&models=lambert,orenNayar,orenNayarQualitative&sigma=${sigma}&lightTheta=0&cdiff=${c}`,
+      'embed.html?w=diffuse-explorer&models=lambert,orenNayar,orenNayarQualitative' +
+        `&sigma=${sigma}&lightTheta=0&cdiff=${c}`,
       W,
     );
     await widget(page, 'diffuse-explorer');
@@ -196,7 +199,9 @@ describe('diffuse-explorer spheres, read back from the canvas', () => {
     const [rl, ro, rq] = [ratio(lam), ratio(on), ratio(onq)];
     const expected = (f) => (f([0.85, 0, Math.sqrt(1 - 0.85 ** 2)]) * Math.sqrt(1 - 0.85 ** 2)) / f([0, 0, 1]);
     console.log(
-      `rim/centre at 0.85 R, sigma ${sigma}°: Lambert ${rl.toFixed(3)}, Oren–Nayar ${ro.toFixed(3)} (JS ${expected(models[0][1]).toFixed(3)}), qualitative ${rq.toFixed(3)} (JS ${expected(models[1][1]).toFixed(3)})`,
+      `rim/centre at 0.85 R, sigma ${sigma}°: Lambert ${rl.toFixed(3)}, ` +
+        `Oren–Nayar ${ro.toFixed(3)} (JS ${expected(models[0][1]).toFixed(3)}), ` +
+        `qualitative ${rq.toFixed(3)} (JS ${expected(models[1][1]).toFixed(3)})`,
     );
     expect(rl).toBeCloseTo(Math.sqrt(1 - 0.85 ** 2), 1);
     expect(ro).toBeGreaterThan(rl + 0.3);
@@ -250,27 +255,30 @@ describe('diffuse-explorer plots and state', () => {
     await page.close();
   });
 
-  it('round-trips through the URL under its prefix; bad values give notices; the light pad takes the keyboard', async () => {
-    const page = await open(
-      browser,
-      'diffuse.html?diffuse.sigma=55&diffuse.models=lambert,orenNayar&diffuse.cdiff=banana',
-    );
-    await widget(page, 'diffuse');
-    const state = await getState(page, 'diffuse');
-    expect([state.sigma, state.models, state.cdiff]).toEqual([55, ['lambert', 'orenNayar'], 0.8]);
-    expect(await page.$eval('.notice', (el) => el.textContent)).toMatch(/banana/);
-    await setControl(page, 'Light from view (°)', 20);
-    await page.focus('.light-pad canvas');
-    await page.keyboard.press('ArrowDown');
-    await settle(page, 300);
-    expect((await getState(page, 'diffuse')).lightTheta).toBe(25);
-    const url = page.url();
-    expect(url).toMatch(/diffuse\.lightTheta=25/);
-    const again = await open(browser, url.slice(url.indexOf('diffuse.html')));
-    await widget(again, 'diffuse');
-    expect(await getState(again, 'diffuse')).toEqual(await getState(page, 'diffuse'));
-    expect(again.errors).toEqual([]);
-    expect(page.errors).toEqual([]);
-    await Promise.all([page.close(), again.close()]);
-  });
+  it(
+    'round-trips through the URL under its prefix; bad values give notices; ' + 'the light pad takes the keyboard',
+    async () => {
+      const page = await open(
+        browser,
+        'diffuse.html?diffuse.sigma=55&diffuse.models=lambert,orenNayar&diffuse.cdiff=banana',
+      );
+      await widget(page, 'diffuse');
+      const state = await getState(page, 'diffuse');
+      expect([state.sigma, state.models, state.cdiff]).toEqual([55, ['lambert', 'orenNayar'], 0.8]);
+      expect(await page.$eval('.notice', (el) => el.textContent)).toMatch(/banana/);
+      await setControl(page, 'Light from view (°)', 20);
+      await page.focus('.light-pad canvas');
+      await page.keyboard.press('ArrowDown');
+      await settle(page, 300);
+      expect((await getState(page, 'diffuse')).lightTheta).toBe(25);
+      const url = page.url();
+      expect(url).toMatch(/diffuse\.lightTheta=25/);
+      const again = await open(browser, url.slice(url.indexOf('diffuse.html')));
+      await widget(again, 'diffuse');
+      expect(await getState(again, 'diffuse')).toEqual(await getState(page, 'diffuse'));
+      expect(again.errors).toEqual([]);
+      expect(page.errors).toEqual([]);
+      await Promise.all([page.close(), again.close()]);
+    },
+  );
 });

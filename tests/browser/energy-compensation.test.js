@@ -38,79 +38,96 @@ function darkestPerSphere(page, png, cells) {
 
 describe('energy: compensated furnace spheres', () => {
   for (const compensation of ['kullaConty', 'turquin', 'none']) {
-    it(`${compensation}: ${compensation === 'none' ? 'the rough sphere stays grey' : 'every sphere reads back as the white background'}`, async () => {
-      const page = await open(browser, `embed.html?w=energy&alphas=${ALPHAS.join(',')}&compensation=${compensation}`, {
-        width: 1200,
-        height: 900,
-      });
-      await widget(page, 'energy');
-      await settle(page, 1500);
-      expect((await page.evaluate(() => globalThis.__shadingLab.widgets['energy'].getAlbedos())).length).toBe(
-        ALPHAS.length,
-      );
-      const darkest = await darkestPerSphere(page, await shot(page, '.sphere-grid canvas'), ALPHAS.length);
-      console.log(
-        `furnace, ${compensation}: darkest 8-bit value inside the spheres α ${ALPHAS.join(', ')}: ${darkest.join(', ')}`,
-      );
-      if (compensation === 'none')
-        expect(darkest[2]).toBeLessThan(200); // E(1) = 1 − ln 2 at α = 1: sRGB 150
-      else for (const d of darkest) expect(d).toBeGreaterThanOrEqual(254);
-      expect(page.errors).toEqual([]);
-      await page.close();
-    });
+    it(
+      `${compensation}: ` +
+        (compensation === 'none' ? 'the rough sphere stays grey' : 'every sphere reads back as the white background'),
+      async () => {
+        const page = await open(
+          browser,
+          `embed.html?w=energy&alphas=${ALPHAS.join(',')}&compensation=${compensation}`,
+          {
+            width: 1200,
+            height: 900,
+          },
+        );
+        await widget(page, 'energy');
+        await settle(page, 1500);
+        expect((await page.evaluate(() => globalThis.__shadingLab.widgets['energy'].getAlbedos())).length).toBe(
+          ALPHAS.length,
+        );
+        const darkest = await darkestPerSphere(page, await shot(page, '.sphere-grid canvas'), ALPHAS.length);
+        console.log(
+          `furnace, ${compensation}: darkest 8-bit value inside the spheres α ` +
+            `${ALPHAS.join(', ')}: ${darkest.join(', ')}`,
+        );
+        if (compensation === 'none')
+          expect(darkest[2]).toBeLessThan(200); // E(1) = 1 − ln 2 at α = 1: sRGB 150
+        else for (const d of darkest) expect(d).toBeGreaterThanOrEqual(254);
+        expect(page.errors).toEqual([]);
+        await page.close();
+      },
+    );
   }
 });
 
 describe("energy: the coloured metal's random walk", () => {
-  it("runs in a worker: α changes leave no main-thread task near the old 1.1 s walk, and the newest α's points (walkPoints) are shown", async () => {
-    const { walkPoints } = await import('../../src/widgets/energy/compensation.js');
-    const { materialByKey } = await import('../../src/math/materials.js');
-    const page = await open(browser, 'embed.html?w=energy&alphas=0.5', { width: 1200, height: 900 });
-    await widget(page, 'energy');
-    const walkShown = () =>
-      page.waitForFunction(
-        () => document.querySelector('.data-table caption') && !document.querySelector('.walk-pending'),
-        { timeout: 60_000 },
-      );
-    await walkShown();
-    await settle(page, 800);
-    await page.evaluate(() => {
-      window.__longTasks = [];
-      new PerformanceObserver((list) => window.__longTasks.push(...list.getEntries().map((e) => e.duration))).observe({
-        type: 'longtask',
+  it(
+    'runs in a worker: α changes leave no main-thread task near the old 1.1 s walk, ' +
+      "and the newest α's points (walkPoints) are shown",
+    async () => {
+      const { walkPoints } = await import('../../src/widgets/energy/compensation.js');
+      const { materialByKey } = await import('../../src/math/materials.js');
+      const page = await open(browser, 'embed.html?w=energy&alphas=0.5', { width: 1200, height: 900 });
+      await widget(page, 'energy');
+      const walkShown = () =>
+        page.waitForFunction(
+          () => document.querySelector('.data-table caption') && !document.querySelector('.walk-pending'),
+          { timeout: 60_000 },
+        );
+      await walkShown();
+      await settle(page, 800);
+      await page.evaluate(() => {
+        window.__longTasks = [];
+        new PerformanceObserver((list) => window.__longTasks.push(...list.getEntries().map((e) => e.duration))).observe(
+          {
+            type: 'longtask',
+          },
+        );
       });
-    });
-    for (const alpha of [0.3, 0.55, 0.05, 1]) {
-      await page.evaluate((a) => globalThis.__shadingLab.widgets['energy'].update({ metalAlpha: a }), alpha);
-      await new Promise((r) => setTimeout(r, 150)); // a slider drag: the next α before the last walk is done
-    }
-    await walkShown();
-    await settle(page, 500);
-    const longest = await page.evaluate(() => Math.max(0, ...window.__longTasks));
-    console.log(
-      `energy: longest main-thread task over 4 α changes: ${longest.toFixed(0)} ms (the walk on the main thread took ~1100 ms)`,
-    );
-    // the real property: the walk runs in a worker; the bound is generous (other engineers share the 2 cores)
-    expect(
-      page
-        .workers()
-        .map((w) => w.url())
-        .some((u) => /walk-worker/.test(u)),
-    ).toBe(true);
-    expect(longest).toBeLessThan(700);
-    const { caption, head } = await page.evaluate(() => {
-      const t = [...document.querySelectorAll('.data-table')].find((x) =>
-        x.caption?.textContent.includes('seen head-on'),
+      for (const alpha of [0.3, 0.55, 0.05, 1]) {
+        await page.evaluate((a) => globalThis.__shadingLab.widgets['energy'].update({ metalAlpha: a }), alpha);
+        await new Promise((r) => setTimeout(r, 150)); // a slider drag: the next α before the last walk is done
+      }
+      await walkShown();
+      await settle(page, 500);
+      const longest = await page.evaluate(() => Math.max(0, ...window.__longTasks));
+      console.log(
+        `energy: longest main-thread task over 4 α changes: ` +
+          `${longest.toFixed(0)} ms (the walk on the main thread took ~1100 ms)`,
       );
-      const walkRow = [...t.querySelectorAll('tbody tr')].at(-1);
-      return { caption: t.caption.textContent, head: walkRow.cells[2].textContent };
-    });
-    expect(caption).toMatch(/at α = 1,/);
-    const expected = walkPoints(1, materialByKey('gold').linear)[0]
-      .albedo.map((x) => x.toFixed(3))
-      .join(', ');
-    expect(head).toBe(expected); // the newest α's walk, not a stale one drawn over it
-    expect(page.errors).toEqual([]);
-    await page.close();
-  }, 180_000);
+      // the real property: the walk runs in a worker; the bound is generous (other engineers share the 2 cores)
+      expect(
+        page
+          .workers()
+          .map((w) => w.url())
+          .some((u) => /walk-worker/.test(u)),
+      ).toBe(true);
+      expect(longest).toBeLessThan(700);
+      const { caption, head } = await page.evaluate(() => {
+        const t = [...document.querySelectorAll('.data-table')].find((x) =>
+          x.caption?.textContent.includes('seen head-on'),
+        );
+        const walkRow = [...t.querySelectorAll('tbody tr')].at(-1);
+        return { caption: t.caption.textContent, head: walkRow.cells[2].textContent };
+      });
+      expect(caption).toMatch(/at α = 1,/);
+      const expected = walkPoints(1, materialByKey('gold').linear)[0]
+        .albedo.map((x) => x.toFixed(3))
+        .join(', ');
+      expect(head).toBe(expected); // the newest α's walk, not a stale one drawn over it
+      expect(page.errors).toEqual([]);
+      await page.close();
+    },
+    180_000,
+  );
 });

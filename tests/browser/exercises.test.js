@@ -69,7 +69,8 @@ describe('exercises', () => {
     expect((await getState(page, 'exercise')).view).toBe('one');
 
     await choose(page, 'lake-mirror', { keyboard: true });
-    expect(await page.evaluate(() => document.activeElement.textContent)).toBe('When does a lake become a mirror?'); // the heading takes the focus
+    // the heading takes the focus
+    expect(await page.evaluate(() => document.activeElement.textContent)).toBe('When does a lake become a mirror?');
     r = await check(page);
     expect(r.ok).toBe(false);
     expect(r.text).toContain('points below the target 25%');

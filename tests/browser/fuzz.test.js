@@ -82,7 +82,8 @@ async function postAll(messages, last) {
   // a string expression: DevTools runs it as it is, so the reviver's source goes in without eval in the page
   await parent.evaluate(`(() => {
     const win = document.getElementById('embedded').contentWindow;
-    for (const text of ${JSON.stringify(messages.map(encodeNumbers))}) win.postMessage(JSON.parse(text, ${reviveNumbers}), ${JSON.stringify(widgetOrigin())});
+    for (const text of ${JSON.stringify(messages.map(encodeNumbers))})
+      win.postMessage(JSON.parse(text, ${reviveNumbers}), ${JSON.stringify(widgetOrigin())});
     win.postMessage({ type: 'shading-lab:get', id: ${JSON.stringify(last)} }, ${JSON.stringify(widgetOrigin())});
   })()`);
   await parent.waitForFunction(
@@ -157,82 +158,96 @@ describe('fuzz: every widget by URL and by postMessage from another origin', () 
   const prototypeBefore = prototypeNames();
 
   for (const name of Object.keys(WIDGETS)) {
-    it(`${name}: refuses every hostile value with a notice or an error reply, keeps its last good state and drawing`, async () => {
-      const schema = schemas[name];
-      const random = seededRandom(SEED + name.length * 101 + name.charCodeAt(0));
-      const labelOf = (k) => schema[k].label ?? k;
-      // by URL: every field refused, each named in a notice; the state is the defaults
-      const query = hostileQuery(schema, random);
-      const frame = await embed(
-        new URL(`embed.html?w=${name}&origins=${encodeURIComponent(new URL(otherOrigin()).origin)}&${query}`, baseUrl())
-          .href,
-      );
-      counts.widgets++;
-      counts.inputs += [...query.keys()].length;
-      const notices = await noticeText(frame);
-      for (const key of Object.keys(schema))
-        expect(notices, `URL ${key}=${query.get(key).slice(0, 40)}`).toContain(`${labelOf(key)}:`);
-      counts.refusals += Object.keys(schema).length;
-      expect(await frameState(frame)).toEqual(defaultState(schema));
+    it(
+      `${name}: refuses every hostile value with a notice or an error reply, ` +
+        `keeps its last good state and drawing`,
+      async () => {
+        const schema = schemas[name];
+        const random = seededRandom(SEED + name.length * 101 + name.charCodeAt(0));
+        const labelOf = (k) => schema[k].label ?? k;
+        // by URL: every field refused, each named in a notice; the state is the defaults
+        const query = hostileQuery(schema, random);
+        const frame = await embed(
+          new URL(
+            `embed.html?w=${name}&origins=${encodeURIComponent(new URL(otherOrigin()).origin)}&${query}`,
+            baseUrl(),
+          ).href,
+        );
+        counts.widgets++;
+        counts.inputs += [...query.keys()].length;
+        const notices = await noticeText(frame);
+        for (const key of Object.keys(schema))
+          expect(notices, `URL ${key}=${query.get(key).slice(0, 40)}`).toContain(`${labelOf(key)}:`);
+        counts.refusals += Object.keys(schema).length;
+        expect(await frameState(frame)).toEqual(defaultState(schema));
 
-      // odd but valid values are taken without a fault; then a good state, and a picture of it
-      const odd = oddButValid(schema).map((state, i) => ({ type: 'shading-lab:set', id: `odd${i}`, state }));
-      // a good state that converges soon: the fewest samples a progressive widget offers
-      const fewest = Object.fromEntries(
-        ['refSamples', 'samples']
-          .filter((k) => schema[k]?.type === 'enum')
-          .map((k) => [k, Object.keys(schema[k].options)[0]]),
-      );
-      const good = { ...goodPartial(schema), ...fewest };
-      const replies = await postAll([...odd, { type: 'shading-lab:set', id: 'good', state: good }], 'after-good');
-      counts.inputs += odd.length;
-      expect(
-        replies.filter((d) => d.type === 'shading-lab:error'),
-        'odd but valid values',
-      ).toEqual([]);
-      const goodState = await frameState(frame);
-      expect(goodState).toMatchObject(good);
-      await settled(frame);
-      const before = await frameShot();
+        // odd but valid values are taken without a fault; then a good state, and a picture of it
+        const odd = oddButValid(schema).map((state, i) => ({ type: 'shading-lab:set', id: `odd${i}`, state }));
+        // a good state that converges soon: the fewest samples a progressive widget offers
+        const fewest = Object.fromEntries(
+          ['refSamples', 'samples']
+            .filter((k) => schema[k]?.type === 'enum')
+            .map((k) => [k, Object.keys(schema[k].options)[0]]),
+        );
+        const good = { ...goodPartial(schema), ...fewest };
+        const replies = await postAll([...odd, { type: 'shading-lab:set', id: 'good', state: good }], 'after-good');
+        counts.inputs += odd.length;
+        expect(
+          replies.filter((d) => d.type === 'shading-lab:error'),
+          'odd but valid values',
+        ).toEqual([]);
+        const goodState = await frameState(frame);
+        expect(goodState).toMatchObject(good);
+        await settled(frame);
+        const before = await frameShot();
 
-      // hostile `set`s (refused values only) and malformed messages: an error reply for each set, naming each
-      // field and unknown key; no reply to the malformed ones
-      const sets = Array.from({ length: SETS_PER_WIDGET }, (_, i) => ({
-        type: 'shading-lab:set',
-        id: `h${i}`,
-        state: refusedPartial(schema, random, i % 2 === 0),
-      }));
-      sets.push({ type: 'shading-lab:set', id: 'proto', state: JSON.parse(`{"__proto__": ${JSON.stringify(good)}}`) }); // an own key, as JSON makes it
-      const inbox = await postAll([...sets, ...malformed(good)], 'after-hostile');
-      counts.inputs += sets.length + malformed(good).length;
-      for (const { id, state } of sets) {
-        const error = inbox.find((d) => d.type === 'shading-lab:error' && d.id === id);
-        expect(error, `no error reply to ${encodeNumbers(state).slice(0, 200)}`).toBeTruthy();
-        for (const key of Object.keys(state)) {
-          expect(error.errors.join('\n'), `${id}: ${key}`).toContain(
-            Object.hasOwn(schema, key) ? `${labelOf(key)}:` : `“${key}” is not a setting`,
-          );
+        // hostile `set`s (refused values only) and malformed messages: an error reply for each set, naming each
+        // field and unknown key; no reply to the malformed ones
+        const sets = Array.from({ length: SETS_PER_WIDGET }, (_, i) => ({
+          type: 'shading-lab:set',
+          id: `h${i}`,
+          state: refusedPartial(schema, random, i % 2 === 0),
+        }));
+        // an own key, as JSON makes it
+        sets.push({
+          type: 'shading-lab:set',
+          id: 'proto',
+          state: JSON.parse(`{"__proto__": ${JSON.stringify(good)}}`),
+        });
+        const inbox = await postAll([...sets, ...malformed(good)], 'after-hostile');
+        counts.inputs += sets.length + malformed(good).length;
+        for (const { id, state } of sets) {
+          const error = inbox.find((d) => d.type === 'shading-lab:error' && d.id === id);
+          expect(error, `no error reply to ${encodeNumbers(state).slice(0, 200)}`).toBeTruthy();
+          for (const key of Object.keys(state)) {
+            expect(error.errors.join('\n'), `${id}: ${key}`).toContain(
+              Object.hasOwn(schema, key) ? `${labelOf(key)}:` : `“${key}” is not a setting`,
+            );
+          }
+          counts.refusals += error.errors.length;
         }
-        counts.refusals += error.errors.length;
-      }
-      const answered = new Set(inbox.filter((d) => d.type === 'shading-lab:state').map((d) => d.id));
-      expect(answered).toEqual(new Set([...sets.map((s) => s.id), 'after-hostile']));
+        const answered = new Set(inbox.filter((d) => d.type === 'shading-lab:state').map((d) => d.id));
+        expect(answered).toEqual(new Set([...sets.map((s) => s.id), 'after-hostile']));
 
-      // the state is the last good one, every value one the field may hold; nothing injected; prototypes clean
-      const final = await frameState(frame);
-      expect(stateProblems(schema, final)).toEqual([]);
-      expect(final).toEqual(goodState);
-      expect(await injected(frame)).toEqual({ elements: 0, pwned: null, title: false });
-      expect(await frame.evaluate(() => Object.getOwnPropertyNames(Object.prototype).sort().join(','))).toBe(
-        prototypeBefore,
-      );
-      expect(await frame.evaluate(() => ({}).pwned ?? null)).toBe(null);
-      expect(await frame.$$eval('.blocking-message', (m) => m.length)).toBe(0);
-      await settled(frame);
-      expect(await pixelChange(before, await frameShot()), 'the picture after the hostile messages').toBeLessThan(0.01);
-      expect(dialogs).toEqual([]);
-      expect(parent.errors).toEqual([]);
-    }, 180_000);
+        // the state is the last good one, every value one the field may hold; nothing injected; prototypes clean
+        const final = await frameState(frame);
+        expect(stateProblems(schema, final)).toEqual([]);
+        expect(final).toEqual(goodState);
+        expect(await injected(frame)).toEqual({ elements: 0, pwned: null, title: false });
+        expect(await frame.evaluate(() => Object.getOwnPropertyNames(Object.prototype).sort().join(','))).toBe(
+          prototypeBefore,
+        );
+        expect(await frame.evaluate(() => ({}).pwned ?? null)).toBe(null);
+        expect(await frame.$$eval('.blocking-message', (m) => m.length)).toBe(0);
+        await settled(frame);
+        expect(await pixelChange(before, await frameShot()), 'the picture after the hostile messages').toBeLessThan(
+          0.01,
+        );
+        expect(dialogs).toEqual([]);
+        expect(parent.errors).toEqual([]);
+      },
+      180_000,
+    );
   }
 });
 
@@ -255,172 +270,191 @@ const int32 = (...v) => [...new Uint8Array(new Int32Array(v).buffer)];
 const PNG_MAGIC = [0x89, 0x50, 0x4e, 0x47, 0x0d, 0x0a, 0x1a, 0x0a];
 
 describe('fuzz: files dropped and fetched', () => {
-  it('the material lab refuses empty, truncated, wrong-magic and gigapixel .hdr / .exr files by name, keeping its environment', async () => {
-    const page = await open(browser, 'embed.html?w=material-lab&environment=sky&refSamples=128');
-    await page.waitForFunction(() => globalThis.__shadingLab?.widgets?.['material-lab'], { timeout: 45_000 });
-    const hdrHead = (w, h) => text(`#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y ${h} +X ${w}\n`);
-    const files = {
-      'empty.hdr': [],
-      'empty.exr': [],
-      'magic.hdr': PNG_MAGIC,
-      'magic.exr': PNG_MAGIC,
-      'cut.hdr': [...hdrHead(8, 4), ...Array(40).fill(128)],
-      'cut.exr': [0x76, 0x2f, 0x31, 0x01, 2, 0],
-      'giga.hdr': [...hdrHead(200000, 100000), 128, 128, 128, 128],
-      'giga.exr': [...int32(20000630, 2), ...text('dataWindow\0box2i\0'), ...int32(16, 0, 0, 199999, 99999), 0],
-      'over-64-MB.hdr': { size: 64 * 2 ** 20 + 1 },
-    };
-    for (const [name, bytes] of Object.entries(files)) {
-      await dropFile(page, '.widget-material-lab', name, bytes);
-      await page.waitForFunction(
-        (n) => [...document.querySelectorAll('.notice')].some((x) => x.textContent.includes(`“${n}”`)),
-        { timeout: 20_000 },
-        name,
+  it(
+    'the material lab refuses empty, truncated, ' +
+      'wrong-magic and gigapixel .hdr / .exr files by name, keeping its environment',
+    async () => {
+      const page = await open(browser, 'embed.html?w=material-lab&environment=sky&refSamples=128');
+      await page.waitForFunction(() => globalThis.__shadingLab?.widgets?.['material-lab'], { timeout: 45_000 });
+      const hdrHead = (w, h) => text(`#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y ${h} +X ${w}\n`);
+      const files = {
+        'empty.hdr': [],
+        'empty.exr': [],
+        'magic.hdr': PNG_MAGIC,
+        'magic.exr': PNG_MAGIC,
+        'cut.hdr': [...hdrHead(8, 4), ...Array(40).fill(128)],
+        'cut.exr': [0x76, 0x2f, 0x31, 0x01, 2, 0],
+        'giga.hdr': [...hdrHead(200000, 100000), 128, 128, 128, 128],
+        'giga.exr': [...int32(20000630, 2), ...text('dataWindow\0box2i\0'), ...int32(16, 0, 0, 199999, 99999), 0],
+        'over-64-MB.hdr': { size: 64 * 2 ** 20 + 1 },
+      };
+      for (const [name, bytes] of Object.entries(files)) {
+        await dropFile(page, '.widget-material-lab', name, bytes);
+        await page.waitForFunction(
+          (n) => [...document.querySelectorAll('.notice')].some((x) => x.textContent.includes(`“${n}”`)),
+          { timeout: 20_000 },
+          name,
+        );
+        counts.inputs++;
+        counts.refusals++;
+      }
+      const notices = await page.$$eval('.notice', (n) => n.map((x) => x.textContent).join('\n'));
+      expect(notices).toMatch(/“giga\.hdr” claims to be 200000×100000; the limit is 8192×4096/);
+      expect(notices).toMatch(/“giga\.exr” claims to be 200000×100000/);
+      expect(notices).toMatch(/“cut\.exr” could not be read as EXR: its header ends early/);
+      expect(notices).toMatch(/“over-64-MB\.hdr” is 67,108,865 bytes; the limit is 67,108,864 bytes \(64 MB\)/);
+      expect(await page.evaluate(() => globalThis.__shadingLab.widgets['material-lab'].getState().environment)).toBe(
+        'sky',
       );
-      counts.inputs++;
-      counts.refusals++;
-    }
-    const notices = await page.$$eval('.notice', (n) => n.map((x) => x.textContent).join('\n'));
-    expect(notices).toMatch(/“giga\.hdr” claims to be 200000×100000; the limit is 8192×4096/);
-    expect(notices).toMatch(/“giga\.exr” claims to be 200000×100000/);
-    expect(notices).toMatch(/“cut\.exr” could not be read as EXR: its header ends early/);
-    expect(notices).toMatch(/“over-64-MB\.hdr” is 67,108,865 bytes; the limit is 67,108,864 bytes \(64 MB\)/);
-    expect(await page.evaluate(() => globalThis.__shadingLab.widgets['material-lab'].getState().environment)).toBe(
-      'sky',
-    );
-    expect(page.errors).toEqual([]);
-    await page.close();
-  }, 120_000);
+      expect(page.errors).toEqual([]);
+      await page.close();
+    },
+    120_000,
+  );
 
-  it('measured-brdf refuses empty, short-header, 2 GB-claiming, wrong-dimension and oversized .binary files by name, keeping the last table', async () => {
-    const page = await open(browser, 'embed.html?w=measured-brdf');
-    await page.waitForFunction(() => document.querySelector('.measured-source')?.textContent, { timeout: 60_000 });
-    const source = await page.$eval('.measured-source', (el) => el.textContent);
-    const protoNames = () => page.evaluate(() => Object.getOwnPropertyNames(Object.prototype).sort().join(','));
-    const prototypeBefore = await protoNames();
-    const files = {
-      'empty.binary': [],
-      'short.binary': [1, 2, 3],
-      'huge-claim.binary': [...int32(90, 90, 10980), ...Array(4096).fill(0)],
-      'dims.binary': [...int32(1, 2, 3), ...Array(4096).fill(0)],
-      'over.binary': { size: 34_992_013 },
-    };
-    const faults = {
-      'empty.binary': /Empty file/,
-      'short.binary': /Truncated header/,
-      'huge-claim.binary': /claims .* GB/,
-      'dims.binary': /Wrong dimensions 1 × 2 × 3/,
-      'over.binary': /34,992,013 bytes, more than a MERL file’s 34,992,012/,
-    };
-    for (const [name, bytes] of Object.entries(files)) {
-      await dropFile(page, '.measured-drop', name, bytes);
-      await page.waitForFunction(
-        (n) => [...document.querySelectorAll('.notice')].some((x) => x.textContent.includes(`${n}:`)),
-        { timeout: 20_000 },
-        name,
+  it(
+    'measured-brdf refuses empty, short-header, 2 GB-claiming, ' +
+      'wrong-dimension and oversized .binary files by name, keeping the last table',
+    async () => {
+      const page = await open(browser, 'embed.html?w=measured-brdf');
+      await page.waitForFunction(() => document.querySelector('.measured-source')?.textContent, { timeout: 60_000 });
+      const source = await page.$eval('.measured-source', (el) => el.textContent);
+      const protoNames = () => page.evaluate(() => Object.getOwnPropertyNames(Object.prototype).sort().join(','));
+      const prototypeBefore = await protoNames();
+      const files = {
+        'empty.binary': [],
+        'short.binary': [1, 2, 3],
+        'huge-claim.binary': [...int32(90, 90, 10980), ...Array(4096).fill(0)],
+        'dims.binary': [...int32(1, 2, 3), ...Array(4096).fill(0)],
+        'over.binary': { size: 34_992_013 },
+      };
+      const faults = {
+        'empty.binary': /Empty file/,
+        'short.binary': /Truncated header/,
+        'huge-claim.binary': /claims .* GB/,
+        'dims.binary': /Wrong dimensions 1 × 2 × 3/,
+        'over.binary': /34,992,013 bytes, more than a MERL file’s 34,992,012/,
+      };
+      for (const [name, bytes] of Object.entries(files)) {
+        await dropFile(page, '.measured-drop', name, bytes);
+        await page.waitForFunction(
+          (n) => [...document.querySelectorAll('.notice')].some((x) => x.textContent.includes(`${n}:`)),
+          { timeout: 20_000 },
+          name,
+        );
+        const notice = await page.$$eval(
+          '.notice',
+          (n, name) => n.map((x) => x.textContent).find((t) => t.includes(`${name}:`)),
+          name,
+        );
+        expect(notice, name).toMatch(faults[name]);
+        counts.inputs++;
+        counts.refusals++;
+      }
+      expect(await page.$eval('.measured-source', (el) => el.textContent)).toBe(source);
+      expect(await protoNames()).toEqual(prototypeBefore);
+      expect(page.errors).toEqual([]);
+      await page.close();
+    },
+    120_000,
+  );
+
+  it(
+    'an unknown widget name and tour step of 5,000 characters are quoted ' + 'cut to 60 characters (showValue)',
+    async () => {
+      const long = 'x'.repeat(5000);
+      const embed = await open(browser, `embed.html?w=${long}`);
+      await embed.waitForSelector('.blocking-message');
+      expect(await embed.$eval('.blocking-message', (el) => el.textContent)).toContain(
+        `"${'x'.repeat(59)}… (5002 characters)`,
       );
-      const notice = await page.$$eval(
-        '.notice',
-        (n, name) => n.map((x) => x.textContent).find((t) => t.includes(`${name}:`)),
-        name,
+      expect(await embed.$eval('.blocking-message', (el) => el.textContent.length)).toBeLessThan(1000);
+      expect(embed.errors).toEqual([]);
+      await embed.close();
+      const tour = await open(browser, `tour.html#${long}`);
+      await tour.waitForFunction(
+        () => [...document.querySelectorAll('.notice')].some((x) => x.textContent.includes('There is no step')),
+        { timeout: 45_000 },
       );
-      expect(notice, name).toMatch(faults[name]);
-      counts.inputs++;
-      counts.refusals++;
-    }
-    expect(await page.$eval('.measured-source', (el) => el.textContent)).toBe(source);
-    expect(await protoNames()).toEqual(prototypeBefore);
-    expect(page.errors).toEqual([]);
-    await page.close();
-  }, 120_000);
-
-  it('an unknown widget name and tour step of 5,000 characters are quoted cut to 60 characters (showValue)', async () => {
-    const long = 'x'.repeat(5000);
-    const embed = await open(browser, `embed.html?w=${long}`);
-    await embed.waitForSelector('.blocking-message');
-    expect(await embed.$eval('.blocking-message', (el) => el.textContent)).toContain(
-      `"${'x'.repeat(59)}… (5002 characters)`,
-    );
-    expect(await embed.$eval('.blocking-message', (el) => el.textContent.length)).toBeLessThan(1000);
-    expect(embed.errors).toEqual([]);
-    await embed.close();
-    const tour = await open(browser, `tour.html#${long}`);
-    await tour.waitForFunction(
-      () => [...document.querySelectorAll('.notice')].some((x) => x.textContent.includes('There is no step')),
-      { timeout: 45_000 },
-    );
-    const notice = await tour.$$eval('.notice', (n) =>
-      n.map((x) => x.textContent).find((t) => t.includes('There is no step')),
-    );
-    expect(notice).toContain('… (5002 characters)');
-    expect(notice.length).toBeLessThan(400);
-    expect(tour.errors).toEqual([]);
-    await tour.close();
-    counts.inputs += 2;
-    counts.refusals += 2;
-  }, 120_000);
-
-  it('exercises: a set naming inherited properties and holding HTML, and empty, truncated, wrong-magic and 2 MB files', async () => {
-    const good = {
-      id: 'ok',
-      chapter: 'diffuse',
-      title: '<img src=x onerror="window.__pwned=1">',
-      prompt: '<script>window.__pwned=1</script>',
-      grader: 'lambert-radiance',
-      params: { cLight: 1, thetaDeg: 0 },
-      tolerance: 0.1,
-    };
-    const set = [
-      good,
-      ...PROTOTYPE_NAMES.map((n, i) => ({
-        ...good,
-        id: `bad-${i}`,
-        widget: n,
-        grader: n,
-        chapter: n,
-        params: { [n]: 1 },
-      })),
-    ];
-    const page = await open(
-      browser,
-      `exercises.html?src=${encodeURIComponent(`data:application/json,${JSON.stringify(set)}`)}#%E0%A4%A`,
-    );
-    await page.waitForFunction(() => globalThis.__shadingLab?.exercise?.ready, { timeout: 45_000 });
-    const problems = await page.$eval('#exercise-problems', (el) => el.textContent);
-    for (const n of PROTOTYPE_NAMES) expect(problems).toContain(`unknown grader "${n}"`);
-    expect(await page.$eval('#exercise h2', (h) => h.textContent)).toBe(good.title); // shown as text
-    counts.inputs += set.length;
-    counts.refusals += PROTOTYPE_NAMES.length;
-
-    const files = {
-      'empty.json': [],
-      'cut.json': text(JSON.stringify(good).slice(0, 40)),
-      'magic.json': PNG_MAGIC,
-      'two-MB.json': { size: 2 * 2 ** 20 },
-    };
-    for (const [name, bytes] of Object.entries(files)) {
-      await dropFile(page, '#exercise-drop', name, bytes);
-      await page.waitForFunction(
-        (n) => document.querySelector('#exercise-problems').textContent.includes(`${n}: 1 problem`),
-        { timeout: 20_000 },
-        name,
+      const notice = await tour.$$eval('.notice', (n) =>
+        n.map((x) => x.textContent).find((t) => t.includes('There is no step')),
       );
-      counts.inputs++;
-      counts.refusals++;
-    }
-    expect(await page.$eval('#exercise-problems', (el) => el.textContent)).toContain(
-      'two-MB.json is 2,097,152 bytes; the limit is 1,048,576 bytes (1 MB)',
-    );
-    expect(
-      await page.evaluate(() => ({
-        pwned: window.__pwned ?? null,
-        injected: document.querySelectorAll('img[src="x"], script:not([src])').length,
-      })),
-    ).toEqual({ pwned: null, injected: 0 });
-    expect(dialogs).toEqual([]);
-    expect(page.errors).toEqual([]);
-    await page.close();
-  }, 120_000);
+      expect(notice).toContain('… (5002 characters)');
+      expect(notice.length).toBeLessThan(400);
+      expect(tour.errors).toEqual([]);
+      await tour.close();
+      counts.inputs += 2;
+      counts.refusals += 2;
+    },
+    120_000,
+  );
+
+  it(
+    'exercises: a set naming inherited properties and holding HTML, and empty, ' +
+      'truncated, wrong-magic and 2 MB files',
+    async () => {
+      const good = {
+        id: 'ok',
+        chapter: 'diffuse',
+        title: '<img src=x onerror="window.__pwned=1">',
+        prompt: '<script>window.__pwned=1</script>',
+        grader: 'lambert-radiance',
+        params: { cLight: 1, thetaDeg: 0 },
+        tolerance: 0.1,
+      };
+      const set = [
+        good,
+        ...PROTOTYPE_NAMES.map((n, i) => ({
+          ...good,
+          id: `bad-${i}`,
+          widget: n,
+          grader: n,
+          chapter: n,
+          params: { [n]: 1 },
+        })),
+      ];
+      const page = await open(
+        browser,
+        `exercises.html?src=${encodeURIComponent(`data:application/json,${JSON.stringify(set)}`)}#%E0%A4%A`,
+      );
+      await page.waitForFunction(() => globalThis.__shadingLab?.exercise?.ready, { timeout: 45_000 });
+      const problems = await page.$eval('#exercise-problems', (el) => el.textContent);
+      for (const n of PROTOTYPE_NAMES) expect(problems).toContain(`unknown grader "${n}"`);
+      expect(await page.$eval('#exercise h2', (h) => h.textContent)).toBe(good.title); // shown as text
+      counts.inputs += set.length;
+      counts.refusals += PROTOTYPE_NAMES.length;
+
+      const files = {
+        'empty.json': [],
+        'cut.json': text(JSON.stringify(good).slice(0, 40)),
+        'magic.json': PNG_MAGIC,
+        'two-MB.json': { size: 2 * 2 ** 20 },
+      };
+      for (const [name, bytes] of Object.entries(files)) {
+        await dropFile(page, '#exercise-drop', name, bytes);
+        await page.waitForFunction(
+          (n) => document.querySelector('#exercise-problems').textContent.includes(`${n}: 1 problem`),
+          { timeout: 20_000 },
+          name,
+        );
+        counts.inputs++;
+        counts.refusals++;
+      }
+      expect(await page.$eval('#exercise-problems', (el) => el.textContent)).toContain(
+        'two-MB.json is 2,097,152 bytes; the limit is 1,048,576 bytes (1 MB)',
+      );
+      expect(
+        await page.evaluate(() => ({
+          pwned: window.__pwned ?? null,
+          injected: document.querySelectorAll('img[src="x"], script:not([src])').length,
+        })),
+      ).toEqual({ pwned: null, injected: 0 });
+      expect(dialogs).toEqual([]);
+      expect(page.errors).toEqual([]);
+      await page.close();
+    },
+    120_000,
+  );
 });
 
 describe('the three links of issue 17 that crashed a widget', () => {

@@ -32,7 +32,13 @@ export function findChrome() {
   return null;
 }
 
+/**
+ * Builds the app into `outDir`. BUILT_APP names a build made by this same run of the test suite (the browser tests'
+ * global setup): asked for that directory again (the bench's pages and IBL parts, run by bench.test.js), it is
+ * reused instead of built again, and instead of rebuilt under the server that serves it to the other tests.
+ */
 export async function buildApp(outDir = join(ROOT, 'dist')) {
+  if (process.env.BUILT_APP && resolve(process.env.BUILT_APP) === resolve(outDir)) return outDir;
   await build({ root: ROOT, logLevel: 'warn', build: { outDir, emptyOutDir: true } });
   return outDir;
 }

@@ -117,6 +117,7 @@ export function redAt(page, png, points) {
   return withPixels(
     page,
     png,
-    `(image) => ${JSON.stringify(points)}.map(([fx, fy]) => image.data[(Math.round(image.height * fy) * image.width + Math.round(image.width * fx)) * 4])`,
+    `(image) => ${JSON.stringify(points)}.map(([fx, ` +
+      `fy]) => image.data[(Math.round(image.height * fy) * image.width + Math.round(image.width * fx)) * 4])`,
   );
 }

@@ -24,7 +24,9 @@ afterAll(async () => {
 });
 
 async function furnaceLab(compensation) {
-  const query = `lab.environment=furnace&lab.layers=specular&lab.fresnel=one&lab.alpha=1&lab.compensation=${compensation}&lab.refSamples=128`;
+  const query =
+    'lab.environment=furnace&lab.layers=specular&lab.fresnel=one&lab.alpha=1' +
+    `&lab.compensation=${compensation}&lab.refSamples=128`;
   const page = await open(browser, `rendering.html?${query}`, { width: 1200, height: 900 });
   await widget(page, 'lab');
   await page.waitForFunction(
@@ -55,17 +57,20 @@ async function furnaceLab(compensation) {
 
 describe('material lab: multiple-scattering compensation in the white furnace', () => {
   for (const compensation of ['kullaConty', 'turquin']) {
-    it(`${compensation}: albedo 1 in the split sum (within 1e-2) and in the converged reference (within 3e-2)`, async () => {
-      const { page, approx, reference } = await furnaceLab(compensation);
-      console.log(
-        `lab furnace, ${compensation}: approximation ${approx.map((x) => x.toFixed(4)).join(', ')}; ` +
-          `reference ${reference.map((x) => x.toFixed(4)).join(', ')}`,
-      );
-      for (const x of approx) expect(Math.abs(x - 1)).toBeLessThan(1e-2);
-      for (const x of reference) expect(Math.abs(x - 1)).toBeLessThan(3e-2);
-      expect(page.errors).toEqual([]);
-      await page.close();
-    });
+    it(
+      `${compensation}: albedo 1 in the split sum (within 1e-2) and in the ` + `converged reference (within 3e-2)`,
+      async () => {
+        const { page, approx, reference } = await furnaceLab(compensation);
+        console.log(
+          `lab furnace, ${compensation}: approximation ${approx.map((x) => x.toFixed(4)).join(', ')}; ` +
+            `reference ${reference.map((x) => x.toFixed(4)).join(', ')}`,
+        );
+        for (const x of approx) expect(Math.abs(x - 1)).toBeLessThan(1e-2);
+        for (const x of reference) expect(Math.abs(x - 1)).toBeLessThan(3e-2);
+        expect(page.errors).toEqual([]);
+        await page.close();
+      },
+    );
   }
 
   it('none: the sphere stays below 1 (E = 1 − ln 2 = 0.307 head-on, in both images)', async () => {

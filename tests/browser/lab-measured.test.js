@@ -1,9 +1,9 @@
 // A measured BRDF in the material lab, in Chromium: a MERL file written in Node from GGX (α 0.2, f0 0.04,
 // c_diff 0.3, the measured widget's synthetic plastic) is picked in the lab; its Monte Carlo reference over the
 // tabulated BRDF (a 3-D texture) must be the picture of the same GGX material's analytic reference, in the white
-// furnace and in the studio, within the Monte Carlo noise (4 standard errors) and 1 % (the table's interpolation); importance sampling of
-// the fitted lobe must meet the same reference in the furnace, and in the studio stay as close to it as the
-// analytic material's importance sampling does; the methods without a form for a table say so.
+// furnace and in the studio, within the Monte Carlo noise (4 standard errors) and 1 % (the table's interpolation);
+// importance sampling of the fitted lobe must meet the same reference in the furnace, and in the studio stay as
+// close to it as the analytic material's importance sampling does; the methods without a form for a table say so.
 import { mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -104,33 +104,39 @@ describe('material lab: a measured BRDF (a MERL file written from GGX) against t
   }, 320_000);
 
   for (const environment of ['furnace', 'studio']) {
-    it(`${environment}: the measured reference is the analytic GGX reference within 4 standard errors of the MC noise and 1 % (the table's interpolation)`, async () => {
-      await setAndConverge({ environment });
-      const measured = await readReference();
-      const g = (p) => `${p[1].mean.toFixed(4)} ± ${p[1].se.toFixed(4)}`;
-      console.log(
-        `lab, measured vs analytic GGX, ${environment} (G): ` +
-          measured.map((m, k) => `${g(m)} / ${g(analytic[environment][k])}`).join(', '),
-      );
-      measured.forEach((rgb, k) =>
-        rgb.forEach((x, c) => {
-          const want = analytic[environment][k][c];
-          const noise = 4 * Math.hypot(x.se, want.se);
-          expect(Math.abs(x.mean - want.mean), `point ${k}, channel ${c}`).toBeLessThan(noise + 0.01 * want.mean);
-        }),
-      );
-      // importance sampling of the fitted lobe (256 + 256 samples) against the reference: one picture in the
-      // furnace; in the studio (small bright lights the lobe rarely hits) no closer than the analytic material's
-      // importance sampling gets (256 samples, the same pattern on every pixel): the method's error, not the table's
-      const stats = await lab();
-      const own = analytic[`${environment}Stats`].relative;
-      console.log(
-        `lab, ${environment}: importance vs reference, relative RMS: measured ${(100 * stats.relative).toFixed(2)} %, ` +
-          `analytic GGX ${(100 * own).toFixed(2)} %`,
-      );
-      if (environment === 'furnace') expect(stats.relative).toBeLessThan(0.01);
-      else expect(stats.relative).toBeLessThan(1.5 * own);
-    }, 600_000);
+    it(
+      `${environment}: the measured reference is the analytic GGX reference within 4 standard ` +
+        `errors of the MC noise and 1 % (the table's interpolation)`,
+      async () => {
+        await setAndConverge({ environment });
+        const measured = await readReference();
+        const g = (p) => `${p[1].mean.toFixed(4)} ± ${p[1].se.toFixed(4)}`;
+        console.log(
+          `lab, measured vs analytic GGX, ${environment} (G): ` +
+            measured.map((m, k) => `${g(m)} / ${g(analytic[environment][k])}`).join(', '),
+        );
+        measured.forEach((rgb, k) =>
+          rgb.forEach((x, c) => {
+            const want = analytic[environment][k][c];
+            const noise = 4 * Math.hypot(x.se, want.se);
+            expect(Math.abs(x.mean - want.mean), `point ${k}, channel ${c}`).toBeLessThan(noise + 0.01 * want.mean);
+          }),
+        );
+        // importance sampling of the fitted lobe (256 + 256 samples) against the reference: one picture in the
+        // furnace; in the studio (small bright lights the lobe rarely hits) no closer than the analytic material's
+        // importance sampling gets (256 samples, the same pattern on every pixel): the method's error, not the table's
+        const stats = await lab();
+        const own = analytic[`${environment}Stats`].relative;
+        console.log(
+          `lab, ${environment}: importance vs reference, relative RMS: ` +
+            `measured ${(100 * stats.relative).toFixed(2)} %, ` +
+            `analytic GGX ${(100 * own).toFixed(2)} %`,
+        );
+        if (environment === 'furnace') expect(stats.relative).toBeLessThan(0.01);
+        else expect(stats.relative).toBeLessThan(1.5 * own);
+      },
+      600_000,
+    );
   }
 
   it('the split sum says it has no form for a table; no console errors', async () => {

@@ -50,18 +50,23 @@ describe('a synthetic MERL file picked on the BRDF page', () => {
     );
   }, 180_000);
 
-  it('the five fits come back; the ABC fit has the parameters the file was written with (within 2 %) and the smallest error', async () => {
-    await waitForFits();
-    const f = await fits();
-    const ranked = Object.values(f).sort((a, b) => a.error - b.error);
-    expect(ranked[0].model).toBe('abc');
-    expect(Math.abs(f.abc.params.a1 / TRUTH.a1 - 1)).toBeLessThan(0.02);
-    expect(Math.abs(f.abc.params.a2 / TRUTH.a2 - 1)).toBeLessThan(0.02);
-    f.abc.params.f0.forEach((x, c) => expect(Math.abs(x / TRUTH.f0[c] - 1)).toBeLessThan(0.02));
-    const rows = await page.$$eval('.measured-fits tbody tr', (trs) => trs.map((tr) => tr.textContent));
-    expect(rows).toHaveLength(5);
-    expect(rows.find((r) => r.startsWith('ABC'))).toMatch(/ABC \(best\)a1 40\.0\d, a2 2\.50\d/);
-  }, 620_000);
+  it(
+    'the five fits come back; the ABC fit has the parameters the file was written ' +
+      'with (within 2 %) and the smallest error',
+    async () => {
+      await waitForFits();
+      const f = await fits();
+      const ranked = Object.values(f).sort((a, b) => a.error - b.error);
+      expect(ranked[0].model).toBe('abc');
+      expect(Math.abs(f.abc.params.a1 / TRUTH.a1 - 1)).toBeLessThan(0.02);
+      expect(Math.abs(f.abc.params.a2 / TRUTH.a2 - 1)).toBeLessThan(0.02);
+      f.abc.params.f0.forEach((x, c) => expect(Math.abs(x / TRUTH.f0[c] - 1)).toBeLessThan(0.02));
+      const rows = await page.$$eval('.measured-fits tbody tr', (trs) => trs.map((tr) => tr.textContent));
+      expect(rows).toHaveLength(5);
+      expect(rows.find((r) => r.startsWith('ABC'))).toMatch(/ABC \(best\)a1 40\.0\d, a2 2\.50\d/);
+    },
+    620_000,
+  );
 
   it('the lobe plot shows the three measured channels and the overlaid fit', async () => {
     await settle(page, 500);
@@ -92,29 +97,33 @@ describe('a synthetic MERL file picked on the BRDF page', () => {
     expect(Math.abs(shown / want - 1)).toBeLessThan(0.05);
   });
 
-  it('the spheres are drawn from the 3-D textures: copper-coloured highlight (R > G > B, as f0 0.9 / 0.6 / 0.3)', async () => {
-    await page.evaluate(() => globalThis.__shadingLab.widgets.measured.update({ exposure: 0.05 })); // no channel clips
-    await page.$eval('.measured-spheres', (e) => e.scrollIntoView());
-    await settle(page, 1500);
-    await page.addStyleTag({ content: '.measured-spheres .sphere-labels { display: none; }' });
-    const png = await shot(page, '.measured-spheres canvas');
-    const brightest = await withPixels(page, png, (image) => {
-      const best = [0, 0, 0];
-      const [cx, cy, r] = [image.width / 4, image.height / 2, 0.4 * image.height]; // inside the left (measured) disc
-      for (let y = 0; y < image.height; y++) {
-        for (let x = 0; x < image.width / 2; x++) {
-          if ((x - cx) ** 2 + (y - cy) ** 2 > r * r) continue;
-          const i = 4 * (y * image.width + x);
-          if (image.data[i] + image.data[i + 1] + image.data[i + 2] > best[0] + best[1] + best[2])
-            best.splice(0, 3, image.data[i], image.data[i + 1], image.data[i + 2]);
+  it(
+    'the spheres are drawn from the 3-D textures: ' + 'copper-coloured highlight (R > G > B, as f0 0.9 / 0.6 / 0.3)',
+    async () => {
+      // no channel clips
+      await page.evaluate(() => globalThis.__shadingLab.widgets.measured.update({ exposure: 0.05 }));
+      await page.$eval('.measured-spheres', (e) => e.scrollIntoView());
+      await settle(page, 1500);
+      await page.addStyleTag({ content: '.measured-spheres .sphere-labels { display: none; }' });
+      const png = await shot(page, '.measured-spheres canvas');
+      const brightest = await withPixels(page, png, (image) => {
+        const best = [0, 0, 0];
+        const [cx, cy, r] = [image.width / 4, image.height / 2, 0.4 * image.height]; // inside the left (measured) disc
+        for (let y = 0; y < image.height; y++) {
+          for (let x = 0; x < image.width / 2; x++) {
+            if ((x - cx) ** 2 + (y - cy) ** 2 > r * r) continue;
+            const i = 4 * (y * image.width + x);
+            if (image.data[i] + image.data[i + 1] + image.data[i + 2] > best[0] + best[1] + best[2])
+              best.splice(0, 3, image.data[i], image.data[i + 1], image.data[i + 2]);
+          }
         }
-      }
-      return best;
-    });
-    expect(brightest[0]).toBeGreaterThan(brightest[1]);
-    expect(brightest[1]).toBeGreaterThan(brightest[2]);
-    expect(brightest[0]).toBeGreaterThan(100);
-  });
+        return best;
+      });
+      expect(brightest[0]).toBeGreaterThan(brightest[1]);
+      expect(brightest[1]).toBeGreaterThan(brightest[2]);
+      expect(brightest[0]).toBeGreaterThan(100);
+    },
+  );
 
   it('"load this fit into BRDF lobe" sets brdf-lobe to ABC with Cook-Torrance V and the mean f0', async () => {
     await page.click('.measured-fits button[data-model="abc"][data-target="lobe"]');
@@ -139,28 +148,33 @@ describe('a synthetic MERL file picked on the BRDF page', () => {
     await ndf.close();
   }, 90_000);
 
-  it('ndf-explorer draws the measured θd = 0 slice / peak on its log plot: the slice computed in Node from the same file and fit', async () => {
-    const f = await fits();
-    const want = measuredNdfSlice(parseMerl(readFileSync(file).buffer).table, f.abc); // ABC: the best fit
-    const opened = browser.waitForTarget((t) => t.url().includes('ndf.html'), { timeout: 60_000 });
-    await page.click('.measured-fits button[data-model="abc"][data-target="ndf"]');
-    const ndf = await (await opened).page();
-    await ndf.waitForFunction(() => globalThis.__shadingLab?.widgets?.ndf?.getMeasuredCurve(), { timeout: 60_000 });
-    const curve = await ndf.evaluate(() => globalThis.__shadingLab.widgets.ndf.getMeasuredCurve());
-    expect(curve.label).toBe('measured: synthetic-abc.binary, θd = 0 slice / peak');
-    const drawn = new Map(curve.points);
-    let compared = 0;
-    THETA_H_DEG.forEach((deg, i) => {
-      if (!(want[i] > 1e-5)) return expect(drawn.has(deg)).toBe(false); // below the plot: not drawn
-      expect(Math.abs(drawn.get(deg) / want[i] - 1), `θh ${deg}°`).toBeLessThan(5e-3); // 3 digits in the URL
-      compared++;
-    });
-    expect(compared).toBeGreaterThan(80);
-    expect(curve.points).toHaveLength(compared); // nothing drawn between the nodes
-    const aria = await ndf.$$eval('figure.plot canvas', (c) => c[1].getAttribute('aria-label'));
-    expect(aria).toMatch(/D\(θh\) \/ D\(0\), log scale.*measured: synthetic-abc\.binary.*ABC \(dashed\): /);
-    await ndf.close();
-  }, 90_000);
+  it(
+    'ndf-explorer draws the measured θd = 0 slice / peak on its log plot: ' +
+      'the slice computed in Node from the same file and fit',
+    async () => {
+      const f = await fits();
+      const want = measuredNdfSlice(parseMerl(readFileSync(file).buffer).table, f.abc); // ABC: the best fit
+      const opened = browser.waitForTarget((t) => t.url().includes('ndf.html'), { timeout: 60_000 });
+      await page.click('.measured-fits button[data-model="abc"][data-target="ndf"]');
+      const ndf = await (await opened).page();
+      await ndf.waitForFunction(() => globalThis.__shadingLab?.widgets?.ndf?.getMeasuredCurve(), { timeout: 60_000 });
+      const curve = await ndf.evaluate(() => globalThis.__shadingLab.widgets.ndf.getMeasuredCurve());
+      expect(curve.label).toBe('measured: synthetic-abc.binary, θd = 0 slice / peak');
+      const drawn = new Map(curve.points);
+      let compared = 0;
+      THETA_H_DEG.forEach((deg, i) => {
+        if (!(want[i] > 1e-5)) return expect(drawn.has(deg)).toBe(false); // below the plot: not drawn
+        expect(Math.abs(drawn.get(deg) / want[i] - 1), `θh ${deg}°`).toBeLessThan(5e-3); // 3 digits in the URL
+        compared++;
+      });
+      expect(compared).toBeGreaterThan(80);
+      expect(curve.points).toHaveLength(compared); // nothing drawn between the nodes
+      const aria = await ndf.$$eval('figure.plot canvas', (c) => c[1].getAttribute('aria-label'));
+      expect(aria).toMatch(/D\(θh\) \/ D\(0\), log scale.*measured: synthetic-abc\.binary.*ABC \(dashed\): /);
+      await ndf.close();
+    },
+    90_000,
+  );
 
   it('a bad file dropped on the zone is refused with its message, and the ABC table stays', async () => {
     await page.evaluate(() => {

@@ -35,23 +35,27 @@ async function glassColour(page) {
 }
 
 describe('media', () => {
-  it('keeps water clear over 5 cm and takes the red out over 20 m, as Beer-Lambert with Hale & Querry predicts', async () => {
-    const page = await open(browser, 'media.html?media.distance=-1.3');
-    await widget(page, 'media');
-    const shallow = await glassColour(page);
-    await setControl(page, 'Depth, log₁₀ metres', 1.3);
-    const deep = await glassColour(page);
-    const T = waterAbsorptionRgb().map((s) => transmittance(s, 20));
-    console.log(
-      `water: 5 cm glass RGB ${shallow.map((x) => x.toFixed(3))}, 20 m ${deep.map((x) => x.toFixed(3))}; predicted ratios R/B ${(T[0] / T[2]).toFixed(4)}, G/B ${(T[1] / T[2]).toFixed(3)}`,
-    );
-    expect(shallow[0] / shallow[2]).toBeGreaterThan(0.97);
-    expect(deep[0] / deep[2]).toBeLessThan(0.02); // predicted 0.0035: the red is gone
-    expect(Math.abs(deep[1] / deep[2] - T[1] / T[2])).toBeLessThan(0.03);
-    expect(page.url()).toMatch(/media\.distance=1\.3/);
-    expect(page.errors).toEqual([]);
-    await page.close();
-  });
+  it(
+    'keeps water clear over 5 cm and takes the red out over 20 m, ' + 'as Beer-Lambert with Hale & Querry predicts',
+    async () => {
+      const page = await open(browser, 'media.html?media.distance=-1.3');
+      await widget(page, 'media');
+      const shallow = await glassColour(page);
+      await setControl(page, 'Depth, log₁₀ metres', 1.3);
+      const deep = await glassColour(page);
+      const T = waterAbsorptionRgb().map((s) => transmittance(s, 20));
+      console.log(
+        `water: 5 cm glass RGB ${shallow.map((x) => x.toFixed(3))}, 20 m ${deep.map((x) => x.toFixed(3))}; ` +
+          `predicted ratios R/B ${(T[0] / T[2]).toFixed(4)}, G/B ${(T[1] / T[2]).toFixed(3)}`,
+      );
+      expect(shallow[0] / shallow[2]).toBeGreaterThan(0.97);
+      expect(deep[0] / deep[2]).toBeLessThan(0.02); // predicted 0.0035: the red is gone
+      expect(Math.abs(deep[1] / deep[2] - T[1] / T[2])).toBeLessThan(0.03);
+      expect(page.url()).toMatch(/media\.distance=1\.3/);
+      expect(page.errors).toEqual([]);
+      await page.close();
+    },
+  );
 
   it('renders the grid and milk progressively, then stops drawing', async () => {
     const page = await open(browser, 'embed.html?w=media&view=grid&samples=16');

@@ -149,32 +149,36 @@ describe('offline, after one visit', () => {
     await page.close();
   }, 300_000);
 
-  it('a new deploy is fetched into the cache and announced; after Reload the new version runs, offline too', async () => {
-    // the deploy: a changed page, and the service worker's manifest with that page's new revision
-    const marker = '<meta name="shading-lab-build" content="next" />';
-    writeFileSync(
-      join(dir, 'index.html'),
-      readFileSync(join(dir, 'index.html'), 'utf8').replace('</head>', `${marker}</head>`),
-    );
-    const sw = readFileSync(join(dir, 'sw.js'), 'utf8');
-    const next = sw.replace(/(url"?:\s*"index\.html",\s*"?revision"?:\s*")[0-9a-f]+"/, '$1next"');
-    expect(next).not.toBe(sw);
-    writeFileSync(join(dir, 'sw.js'), next);
+  it(
+    'a new deploy is fetched into the cache and announced; ' + 'after Reload the new version runs, offline too',
+    async () => {
+      // the deploy: a changed page, and the service worker's manifest with that page's new revision
+      const marker = '<meta name="shading-lab-build" content="next" />';
+      writeFileSync(
+        join(dir, 'index.html'),
+        readFileSync(join(dir, 'index.html'), 'utf8').replace('</head>', `${marker}</head>`),
+      );
+      const sw = readFileSync(join(dir, 'sw.js'), 'utf8');
+      const next = sw.replace(/(url"?:\s*"index\.html",\s*"?revision"?:\s*")[0-9a-f]+"/, '$1next"');
+      expect(next).not.toBe(sw);
+      writeFileSync(join(dir, 'sw.js'), next);
 
-    const page = await visit('index.html');
-    expect(await page.$('meta[name="shading-lab-build"]')).toBeNull(); // the cached version still runs
-    const reload = await page.waitForFunction(
-      () => [...document.querySelectorAll('.offline-status button')].find((b) => b.textContent.includes('Reload')),
-      { timeout: 60_000 },
-    );
-    expect(await page.$eval('.offline-status', (s) => s.textContent)).toMatch(/new version/);
-    await Promise.all([page.waitForNavigation({ waitUntil: 'load' }), reload.click()]);
-    expect(await page.$('meta[name="shading-lab-build"]')).not.toBeNull();
-    await goOffline(page);
-    await page.reload({ waitUntil: 'load' });
-    expect(await page.$('meta[name="shading-lab-build"]')).not.toBeNull();
-    expect(page.errors).toEqual([]);
-    site.state.online = true;
-    await page.close();
-  }, 120_000);
+      const page = await visit('index.html');
+      expect(await page.$('meta[name="shading-lab-build"]')).toBeNull(); // the cached version still runs
+      const reload = await page.waitForFunction(
+        () => [...document.querySelectorAll('.offline-status button')].find((b) => b.textContent.includes('Reload')),
+        { timeout: 60_000 },
+      );
+      expect(await page.$eval('.offline-status', (s) => s.textContent)).toMatch(/new version/);
+      await Promise.all([page.waitForNavigation({ waitUntil: 'load' }), reload.click()]);
+      expect(await page.$('meta[name="shading-lab-build"]')).not.toBeNull();
+      await goOffline(page);
+      await page.reload({ waitUntil: 'load' });
+      expect(await page.$('meta[name="shading-lab-build"]')).not.toBeNull();
+      expect(page.errors).toEqual([]);
+      site.state.online = true;
+      await page.close();
+    },
+    120_000,
+  );
 });

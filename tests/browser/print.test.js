@@ -44,53 +44,59 @@ const zoneShares = (page, png) =>
   );
 
 describe('a printed chapter page', () => {
-  it('shows each widget as a still of its state (zone shares of n·v on the orthographic sphere: sin²45°, sin²75° − sin²45°, cos²75°) with its link and QR code, no controls', async () => {
-    const page = await open(browser, 'fresnel.html?zones.mode=zones-nv', { width: 1100, height: 900 });
-    await widget(page, 'zones');
-    await page.$eval('.widget-fresnel-zones', (el) => el.scrollIntoView());
-    await settle(page, 800);
-    const pdf = await page.pdf({ format: 'A4', printBackground: true });
-    writeFileSync(join(dir, 'page.pdf'), pdf);
+  it(
+    'shows each widget as a still of its state (zone shares of n·v on the orthographic sphere: sin²45°, ' +
+      'sin²75° − sin²45°, cos²75°) with its link and QR code, no controls',
+    async () => {
+      const page = await open(browser, 'fresnel.html?zones.mode=zones-nv', { width: 1100, height: 900 });
+      await widget(page, 'zones');
+      await page.$eval('.widget-fresnel-zones', (el) => el.scrollIntoView());
+      await settle(page, 800);
+      const pdf = await page.pdf({ format: 'A4', printBackground: true });
+      writeFileSync(join(dir, 'page.pdf'), pdf);
 
-    const widgets = await page.$$eval('.widget', (ws) => ws.map((w) => w.dataset.widget));
-    const stills = await page.$$eval('.widget > .print-still', (fs) =>
-      fs.map((f) => ({ img: f.querySelector('img')?.src ?? null, link: f.querySelector('a').href })),
-    );
-    expect(stills.length).toBe(widgets.length);
-    const zones = stills[widgets.indexOf('fresnel-zones')];
-    expect(new URL(zones.link).searchParams.get('mode')).toBe('zones-nv');
-    const shares = await zoneShares(page, zones.img.split(',')[1]);
-    sphereZoneFractions().forEach((f, i) => expect(shares[i]).toBeCloseTo(f, 1)); // ±0.05: the silhouette's edge pixels
+      const widgets = await page.$$eval('.widget', (ws) => ws.map((w) => w.dataset.widget));
+      const stills = await page.$$eval('.widget > .print-still', (fs) =>
+        fs.map((f) => ({ img: f.querySelector('img')?.src ?? null, link: f.querySelector('a').href })),
+      );
+      expect(stills.length).toBe(widgets.length);
+      const zones = stills[widgets.indexOf('fresnel-zones')];
+      expect(new URL(zones.link).searchParams.get('mode')).toBe('zones-nv');
+      const shares = await zoneShares(page, zones.img.split(',')[1]);
+      // ±0.05: the silhouette's edge pixels
+      sphereZoneFractions().forEach((f, i) => expect(shares[i]).toBeCloseTo(f, 1));
 
-    // each QR code decodes (jsQR, an independent decoder) to its link
-    const qrs = await page.$$eval('.print-still .print-qr', (cs) =>
-      cs.map((c) => {
-        const image = c.getContext('2d').getImageData(0, 0, c.width, c.height);
-        return { width: c.width, height: c.height, data: Array.from(image.data) };
-      }),
-    );
-    expect(qrs.map((q) => jsQR(Uint8ClampedArray.from(q.data), q.width, q.height)?.data)).toEqual(
-      stills.map((s) => s.link),
-    );
+      // each QR code decodes (jsQR, an independent decoder) to its link
+      const qrs = await page.$$eval('.print-still .print-qr', (cs) =>
+        cs.map((c) => {
+          const image = c.getContext('2d').getImageData(0, 0, c.width, c.height);
+          return { width: c.width, height: c.height, data: Array.from(image.data) };
+        }),
+      );
+      expect(qrs.map((q) => jsQR(Uint8ClampedArray.from(q.data), q.width, q.height)?.data)).toEqual(
+        stills.map((s) => s.link),
+      );
 
-    // in print media: the stills show, the controls, share buttons and live views do not
-    await page.emulateMediaType('print');
-    const shown = (sel) => page.$$eval(sel, (els) => els.some((e) => e.getClientRects().length > 0)); // laid out at all
-    expect(await shown('.print-still')).toBe(true);
-    for (const sel of ['.widget-controls', '.lil-gui', '.share-button', '.viewport', '.toolbar'])
-      expect(await shown(sel), sel).toBe(false);
+      // in print media: the stills show, the controls, share buttons and live views do not
+      await page.emulateMediaType('print');
+      // laid out at all
+      const shown = (sel) => page.$$eval(sel, (els) => els.some((e) => e.getClientRects().length > 0));
+      expect(await shown('.print-still')).toBe(true);
+      for (const sel of ['.widget-controls', '.lil-gui', '.share-button', '.viewport', '.toolbar'])
+        expect(await shown(sel), sel).toBe(false);
 
-    // the PDF, rendered: somewhere on its pages are the still's zone colours
-    execFileSync('pdftoppm', ['-r', '40', '-png', join(dir, 'page.pdf'), join(dir, 'p')]);
-    const pngs = readdirSync(dir)
-      .filter((f) => f.endsWith('.png'))
-      .sort();
-    expect(pngs.length).toBeGreaterThan(1);
-    const printed = [];
-    for (const f of pngs) printed.push(await zoneShares(page, readFileSync(join(dir, f)).toString('base64')));
-    const withZones = printed.filter((s) => s.every((x) => x > 0.02));
-    expect(withZones.length).toBeGreaterThanOrEqual(1);
-    expect(page.errors).toEqual([]);
-    await page.close();
-  });
+      // the PDF, rendered: somewhere on its pages are the still's zone colours
+      execFileSync('pdftoppm', ['-r', '40', '-png', join(dir, 'page.pdf'), join(dir, 'p')]);
+      const pngs = readdirSync(dir)
+        .filter((f) => f.endsWith('.png'))
+        .sort();
+      expect(pngs.length).toBeGreaterThan(1);
+      const printed = [];
+      for (const f of pngs) printed.push(await zoneShares(page, readFileSync(join(dir, f)).toString('base64')));
+      const withZones = printed.filter((s) => s.every((x) => x > 0.02));
+      expect(withZones.length).toBeGreaterThanOrEqual(1);
+      expect(page.errors).toEqual([]);
+      await page.close();
+    },
+  );
 });

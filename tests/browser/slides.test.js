@@ -145,57 +145,62 @@ describe('<shading-lab-widget> on another origin', () => {
     const code = readFileSync(join(ROOT, 'dist/shading-lab-widget.js'));
     const gzip = gzipSync(code, { level: 9 }).length;
     console.log(
-      `dist/shading-lab-widget.js: ${code.length} B, ${gzip} B gzip; dist/shading-lab-reveal.js: ${gzipSync(readFileSync(join(ROOT, 'dist/shading-lab-reveal.js')), { level: 9 }).length} B gzip`,
+      `dist/shading-lab-widget.js: ${code.length} B, ${gzip} B gzip; dist/shading-lab-reveal.js: ` +
+        `${gzipSync(readFileSync(join(ROOT, 'dist/shading-lab-reveal.js')), { level: 9 }).length} B gzip`,
     );
     expect(gzip).toBeLessThan(10 * 1024);
     expect(code.toString()).not.toMatch(/\bimport\b|WebGLRenderer|THREE/);
   });
 
-  it('makes the iframe with this origin allowed, fires ready and change, exposes state, applies set() through validation', async () => {
-    const page = await openDeck(`/examples/element/index.html?lab=${lab()}`);
-    await page.waitForFunction(() => document.getElementById('zones').ready, { timeout: 30_000 });
-    const src = await page.$eval('#zones iframe', (f) => f.src);
-    expect(new URL(src).searchParams.get('origins')).toBe(decks.url);
-    expect(new URL(src).searchParams.get('mode')).toBe('zones-lh');
-    expect(await page.$eval('#now', (o) => o.value)).toBe('mode=zones-lh'); // the ready event's query
-    expect(await page.$eval('#zones', (z) => z.state.mode)).toBe('zones-lh');
+  it(
+    'makes the iframe with this origin allowed, fires ready and change, ' +
+      'exposes state, applies set() through validation',
+    async () => {
+      const page = await openDeck(`/examples/element/index.html?lab=${lab()}`);
+      await page.waitForFunction(() => document.getElementById('zones').ready, { timeout: 30_000 });
+      const src = await page.$eval('#zones iframe', (f) => f.src);
+      expect(new URL(src).searchParams.get('origins')).toBe(decks.url);
+      expect(new URL(src).searchParams.get('mode')).toBe('zones-lh');
+      expect(await page.$eval('#now', (o) => o.value)).toBe('mode=zones-lh'); // the ready event's query
+      expect(await page.$eval('#zones', (z) => z.state.mode)).toBe('zones-lh');
 
-    // the page's button calls set(); the state and the widget inside the frame follow
-    await page.click('#weighted');
-    await page.waitForFunction(() => document.getElementById('now').value === 'mode=zones-lh-weighted', {
-      timeout: 15_000,
-    });
-    expect((await frameState(page, '#zones')).mode).toBe('zones-lh-weighted');
+      // the page's button calls set(); the state and the widget inside the frame follow
+      await page.click('#weighted');
+      await page.waitForFunction(() => document.getElementById('now').value === 'mode=zones-lh-weighted', {
+        timeout: 15_000,
+      });
+      expect((await frameState(page, '#zones')).mode).toBe('zones-lh-weighted');
 
-    // a bad value keeps the last good one and comes back in errors; a number out of range is clamped
-    const reply = await page.$eval('#zones', (z) => z.set('lightTheta=400&shape=banana'));
-    expect(reply.state).toMatchObject({ lightTheta: 180, shape: 'sphere', mode: 'zones-lh-weighted' });
-    expect(reply.errors.join(' ')).toMatch(/clamped to 180.*|banana/);
+      // a bad value keeps the last good one and comes back in errors; a number out of range is clamped
+      const reply = await page.$eval('#zones', (z) => z.set('lightTheta=400&shape=banana'));
+      expect(reply.state).toMatchObject({ lightTheta: 180, shape: 'sphere', mode: 'zones-lh-weighted' });
+      expect(reply.errors.join(' ')).toMatch(/clamped to 180.*|banana/);
 
-    // the user moves the widget: a change event with the new state
-    const handle = await page.$('#zones iframe');
-    const frame = await handle.contentFrame();
-    const changed = page.evaluate(
-      () =>
-        new Promise((ok) =>
-          document.getElementById('zones').addEventListener('change', (e) => ok(e.detail), { once: true }),
-        ),
-    );
-    await frame.evaluate(() => Object.values(globalThis.__shadingLab.widgets)[0].update({ mode: 'zones-nv' }));
-    expect((await changed).state.mode).toBe('zones-nv');
-    expect(await page.$eval('#zones', (z) => z.query)).toContain('mode=zones-nv');
+      // the user moves the widget: a change event with the new state
+      const handle = await page.$('#zones iframe');
+      const frame = await handle.contentFrame();
+      const changed = page.evaluate(
+        () =>
+          new Promise((ok) =>
+            document.getElementById('zones').addEventListener('change', (e) => ok(e.detail), { once: true }),
+          ),
+      );
+      await frame.evaluate(() => Object.values(globalThis.__shadingLab.widgets)[0].update({ mode: 'zones-nv' }));
+      expect((await changed).state.mode).toBe('zones-nv');
+      expect(await page.$eval('#zones', (z) => z.query)).toContain('mode=zones-nv');
 
-    // a snapshot is the picture the browser shows in the frame's canvas (the compositor's screenshot of it)
-    await settle(page, 500);
-    const image = await page.$eval('#zones', (z) => z.snapshot());
-    expect(image).toMatch(/^data:image\/png;base64,/);
-    const onScreen = await (await frame.$('canvas')).screenshot({ encoding: 'base64' });
-    expect(await coverage(page, onScreen)).toBeGreaterThan(0.2);
-    expect(await meanDifference(page, image.split(',')[1], onScreen)).toBeLessThan(6);
-    expect(page.errors).toEqual([]);
-    expect(page.warnings).toEqual([]);
-    await page.close();
-  });
+      // a snapshot is the picture the browser shows in the frame's canvas (the compositor's screenshot of it)
+      await settle(page, 500);
+      const image = await page.$eval('#zones', (z) => z.snapshot());
+      expect(image).toMatch(/^data:image\/png;base64,/);
+      const onScreen = await (await frame.$('canvas')).screenshot({ encoding: 'base64' });
+      expect(await coverage(page, onScreen)).toBeGreaterThan(0.2);
+      expect(await meanDifference(page, image.split(',')[1], onScreen)).toBeLessThan(6);
+      expect(page.errors).toEqual([]);
+      expect(page.warnings).toEqual([]);
+      await page.close();
+    },
+  );
 });
 
 describe('reveal.js plugin (reveal.js 6 from node_modules, the app on another origin)', () => {
@@ -272,7 +277,8 @@ describe('reveal.js plugin (reveal.js 6 from node_modules, the app on another or
       'fresnel-zones: mode=zones-lh-weighted&shape=torusknot&lightTheta=120',
       'ndf-explorer: ',
     ]);
-    for (const s of stills) expect(await coverage(page, s.src.split(',')[1]), s.alt).toBeGreaterThan(0.05); // plots are thin lines on white
+    // plots are thin lines on white
+    for (const s of stills) expect(await coverage(page, s.src.split(',')[1]), s.alt).toBeGreaterThan(0.05);
     expect(new Set(stills.map((s) => s.src)).size).toBe(stills.length); // each state its own picture
     const inside = await page.$$eval('.pdf-page img', (imgs) =>
       imgs.map((img) => {

@@ -11,27 +11,30 @@ afterAll(async () => {
 });
 
 describe('subsurface-scale', () => {
-  it('says diffuse is enough for a large shading sample and subsurface scattering is needed for a small one', async () => {
-    const page = await open(browser, 'surfaces.html');
-    await widget(page, 'sss');
-    const verdict = () => page.$eval('.verdict', (el) => el.textContent);
-    expect(await verdict()).toMatch(/diffuse term is enough/);
-    const before = await shot(page, 'canvas.subsurface');
-    await setControl(page, 'Shading sample radius (mm)', 0.2);
-    expect(await verdict()).toMatch(/subsurface scattering is needed/);
-    expect(await shot(page, 'canvas.subsurface')).not.toBe(before);
-    const stats = await page.evaluate(() => globalThis.__shadingLab.widgets.sss.getStatistics());
-    expect(stats.insideShare).toBeLessThan(0.9);
-    expect(stats.reflectance).toBeGreaterThan(0.3);
-    expect(stats.reflectance).toBeLessThan(1);
-    const url = page.url();
-    expect(url).toMatch(/sss\.pixel=0\.2/);
-    const again = await open(browser, url.slice(url.indexOf('surfaces.html')));
-    await widget(again, 'sss');
-    expect(await getState(again, 'sss')).toEqual(await getState(page, 'sss'));
-    expect([...page.errors, ...again.errors]).toEqual([]);
-    await Promise.all([page.close(), again.close()]);
-  });
+  it(
+    'says diffuse is enough for a large shading sample and subsurface ' + 'scattering is needed for a small one',
+    async () => {
+      const page = await open(browser, 'surfaces.html');
+      await widget(page, 'sss');
+      const verdict = () => page.$eval('.verdict', (el) => el.textContent);
+      expect(await verdict()).toMatch(/diffuse term is enough/);
+      const before = await shot(page, 'canvas.subsurface');
+      await setControl(page, 'Shading sample radius (mm)', 0.2);
+      expect(await verdict()).toMatch(/subsurface scattering is needed/);
+      expect(await shot(page, 'canvas.subsurface')).not.toBe(before);
+      const stats = await page.evaluate(() => globalThis.__shadingLab.widgets.sss.getStatistics());
+      expect(stats.insideShare).toBeLessThan(0.9);
+      expect(stats.reflectance).toBeGreaterThan(0.3);
+      expect(stats.reflectance).toBeLessThan(1);
+      const url = page.url();
+      expect(url).toMatch(/sss\.pixel=0\.2/);
+      const again = await open(browser, url.slice(url.indexOf('surfaces.html')));
+      await widget(again, 'sss');
+      expect(await getState(again, 'sss')).toEqual(await getState(page, 'sss'));
+      expect([...page.errors, ...again.errors]).toEqual([]);
+      await Promise.all([page.close(), again.close()]);
+    },
+  );
 
   it('more absorption means less light comes back out, and closer to where it went in', async () => {
     const page = await open(browser, 'embed.html?w=subsurface-scale&sigmaA=0');
@@ -41,7 +44,8 @@ describe('subsurface-scale', () => {
     await settle(page, 300);
     const dark = await page.evaluate(() => globalThis.__shadingLab.widgets['subsurface-scale'].getStatistics());
     console.log(
-      `subsurface: σa 0 → reflectance ${clear.reflectance.toFixed(3)}, mean exit ${clear.mean.toFixed(3)} mm; σa 1/mm → ${dark.reflectance.toFixed(3)}, ${dark.mean.toFixed(3)} mm`,
+      `subsurface: σa 0 → reflectance ${clear.reflectance.toFixed(3)}, ` +
+        `mean exit ${clear.mean.toFixed(3)} mm; σa 1/mm → ${dark.reflectance.toFixed(3)}, ${dark.mean.toFixed(3)} mm`,
     );
     expect(clear.reflectance).toBeGreaterThan(0.95); // nothing absorbs: (nearly) all of it comes back
     expect(dark.reflectance).toBeLessThan(clear.reflectance / 2);

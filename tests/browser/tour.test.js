@@ -1,7 +1,7 @@
 // The guided tour in a real Chromium: the whole tour walked by keyboard (however many steps it has), step
 // URLs, history, keys that belong to a focused control, widget reuse and WebGL contexts given back.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { baseUrl, distinctColors, getState, launchBrowser, settle, shot } from './helpers.js';
+import { baseUrl, distinctColors, getState, launchBrowser, settle } from './helpers.js';
 import { openPage } from './harness.js';
 import { tourPlan } from '../../src/tour/steps.js';
 import { isWidgetName } from '../../src/widgets/registry.js';
@@ -145,7 +145,8 @@ describe('guided tour', () => {
       mounted: document.querySelectorAll('.tour-stage .viewport canvas').length,
     }));
     console.log(
-      `tour: ${steps.length} steps walked, ${reused} reused their widget; WebGL contexts created ${contexts.created}, live ${contexts.live}`,
+      `tour: ${steps.length} steps walked, ${reused} reused their widget; ` +
+        `WebGL contexts created ${contexts.created}, live ${contexts.live}`,
     );
     expect(contexts.created).toBeGreaterThan(contexts.mounted);
     expect(contexts.leaked).toBe(0);

@@ -43,34 +43,43 @@ describe('the albedo table the GPU reads (bilinear in cbrt(mu), cbrt(alpha))', {
     }
   });
 
-  it('interpolates E to 1.3e-3 for mu, alpha >= 0.01, 8.5e-4 for >= 0.02, 5e-4 for >= 0.05 (independent quadrature)', () => {
-    const worst = [0.01, 0.02, 0.05].map((lo) => worstError(lo));
-    console.log(
-      `albedo table, worst |error| of 1 - E for mu, alpha >= 0.01, 0.02, 0.05: ${worst.map((e) => e.toExponential(2)).join(', ')}`,
-    );
-    expect(worst[0]).toBeLessThan(1.3e-3);
-    expect(worst[1]).toBeLessThan(8.5e-4);
-    expect(worst[2]).toBeLessThan(5e-4);
-  });
+  it(
+    'interpolates E to 1.3e-3 for mu, alpha >= 0.01, 8.5e-4 for >= 0.02, ' +
+      '5e-4 for >= 0.05 (independent quadrature)',
+    () => {
+      const worst = [0.01, 0.02, 0.05].map((lo) => worstError(lo));
+      console.log(
+        `albedo table, worst |error| of 1 - E for mu, alpha >= 0.01, 0.02, 0.05: ` +
+          `${worst.map((e) => e.toExponential(2)).join(', ')}`,
+      );
+      expect(worst[0]).toBeLessThan(1.3e-3);
+      expect(worst[1]).toBeLessThan(8.5e-4);
+      expect(worst[2]).toBeLessThan(5e-4);
+    },
+  );
 
-  it('gives, at its nodes, the float64 albedo with each compensation (compensatedAlbedoGGX, adaptive split sum) to 4e-4', () => {
-    const shipped = buildAlbedoTableGGX(9); // nodes at mu, alpha = (i/8)³
-    for (const [i, j] of [
-      [2, 2],
-      [3, 6],
-      [8, 4],
-      [5, 8],
-    ]) {
-      // [2, 2]: mu = alpha = 0.016
-      const [mu, alpha] = [(i / 8) ** 3, (j / 8) ** 3];
-      for (const f0 of [0.04, 0.71, 1]) {
-        for (const c of ['none', 'kullaConty', 'turquin']) {
-          // the table's 12-node split sum is within 3.5e-4 of the adaptive one (largest at grazing, small alpha)
-          expect(
-            Math.abs(specularAlbedoFromTable(shipped, mu, alpha, f0, c) - compensatedAlbedoGGX(mu, alpha, f0, c)),
-          ).toBeLessThan(4e-4);
+  it(
+    'gives, at its nodes, the float64 albedo with each compensation ' +
+      '(compensatedAlbedoGGX, adaptive split sum) to 4e-4',
+    () => {
+      const shipped = buildAlbedoTableGGX(9); // nodes at mu, alpha = (i/8)³
+      for (const [i, j] of [
+        [2, 2],
+        [3, 6],
+        [8, 4],
+        [5, 8],
+      ]) {
+        // [2, 2]: mu = alpha = 0.016
+        const [mu, alpha] = [(i / 8) ** 3, (j / 8) ** 3];
+        for (const f0 of [0.04, 0.71, 1]) {
+          for (const c of ['none', 'kullaConty', 'turquin']) {
+            // the table's 12-node split sum is within 3.5e-4 of the adaptive one (largest at grazing, small alpha)
+            expect(
+              Math.abs(specularAlbedoFromTable(shipped, mu, alpha, f0, c) - compensatedAlbedoGGX(mu, alpha, f0, c)),
+            ).toBeLessThan(4e-4);
+          }
         }
       }
-    }
-  });
+    },
+  );
 });

@@ -39,7 +39,8 @@ describe('microfacet BRDF', () => {
       [dir(0.3, 0), dir(1.1, 2)],
       [dir(1.4, 1), dir(0.2, -1)],
     ]) {
-      const { h, ...cosines } = brdfAngles(l, v);
+      const cosines = brdfAngles(l, v);
+      delete cosines.h; // from the cosines alone
       expect(microfacetBRDFAt(cosines, base)).toBeCloseTo(microfacetBRDF(l, v, base), 9);
     }
   });

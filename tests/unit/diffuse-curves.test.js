@@ -75,13 +75,16 @@ describe('plot data', () => {
     const rim = PROFILE_XS.findIndex((x) => Math.abs(x - 0.9) < 1e-9);
     expect(on[rim] / on[centre]).toBeGreaterThan(lambert[rim] / lambert[centre] + 0.3);
   });
-  it('light sweep: Lambert is c cos(theta_l); Oren–Nayar sends more back towards the light than to the mirror side', () => {
-    const [lambert, , , on] = lightSweep(state());
-    SWEEP_XS.forEach((deg, i) => expect(lambert[i]).toBeCloseTo(0.8 * Math.max(Math.cos(deg * DEG), 0), 12));
-    const retro = SWEEP_XS.indexOf(45);
-    const mirror = SWEEP_XS.indexOf(-45);
-    expect(on[retro]).toBeGreaterThan(1.3 * on[mirror]);
-  });
+  it(
+    'light sweep: Lambert is c cos(theta_l); ' + 'Oren–Nayar sends more back towards the light than to the mirror side',
+    () => {
+      const [lambert, , , on] = lightSweep(state());
+      SWEEP_XS.forEach((deg, i) => expect(lambert[i]).toBeCloseTo(0.8 * Math.max(Math.cos(deg * DEG), 0), 12));
+      const retro = SWEEP_XS.indexOf(45);
+      const mirror = SWEEP_XS.indexOf(-45);
+      expect(on[retro]).toBeGreaterThan(1.3 * on[mirror]);
+    },
+  );
   it('trade-off: Lambert under a specular term makes energy at grazing; the weighted forms do not', () => {
     const { specular, totals } = tradeOff(state({ cdiff: 1 }));
     TRADE_XS.forEach((deg, i) => expect(specular[i]).toBeCloseTo(fresnelSchlick(0.04, Math.cos(deg * DEG)), 14));

@@ -48,20 +48,24 @@ describe('diffuse terms', () => {
       const fw = albedo((c) => diffuseFresnelWeighted(c, nv, 0.04, 1));
       const as = albedo((c) => diffuseAshikhminShirley(c, nv, 0.04, 1));
       expect(fw).toBeLessThanOrEqual(1);
-      expect(as).toBeLessThanOrEqual(1 - 0.04); // Ashikhmin-Shirley: at most c_diff (1 - f0), so diffuse + specular <= 1
+      // Ashikhmin-Shirley: at most c_diff (1 - f0), so diffuse + specular <= 1
+      expect(as).toBeLessThanOrEqual(1 - 0.04);
     }
     expect(diffuseFresnelWeighted(1e-9, 0.5, 0.04, 1)).toBeLessThan(1e-6);
   });
-  it('Fresnel-weighted Lambert is unnormalised: head-on albedo (1 − F0)² (20/21) c_diff = 0.878 c_diff at F0 0.04', () => {
-    // closed form: (1 − F(1)) · 2∫(1 − F(c)) c dc with Schlick F, 2∫(1 − c)⁵ c dc = 1/21; against quadrature
-    const f0 = 0.04;
-    const closed = (1 - f0) ** 2 * (20 / 21);
-    expect(closed).toBeCloseTo(0.878, 3);
-    expect(albedo((c) => diffuseFresnelWeighted(c, 1, f0, 1))).toBeCloseTo(closed, 6);
-    // Shirley et al. 1997 scale the same shape by 21/20 and one (1 − F0): head-on they return (1 − F0) c_diff
-    const shirley = albedo((c) => (diffuseFresnelWeighted(c, 1, f0, 1) * (21 / 20)) / (1 - f0));
-    expect(shirley).toBeCloseTo(1 - f0, 6);
-  });
+  it(
+    'Fresnel-weighted Lambert is unnormalised: ' + 'head-on albedo (1 − F0)² (20/21) c_diff = 0.878 c_diff at F0 0.04',
+    () => {
+      // closed form: (1 − F(1)) · 2∫(1 − F(c)) c dc with Schlick F, 2∫(1 − c)⁵ c dc = 1/21; against quadrature
+      const f0 = 0.04;
+      const closed = (1 - f0) ** 2 * (20 / 21);
+      expect(closed).toBeCloseTo(0.878, 3);
+      expect(albedo((c) => diffuseFresnelWeighted(c, 1, f0, 1))).toBeCloseTo(closed, 6);
+      // Shirley et al. 1997 scale the same shape by 21/20 and one (1 − F0): head-on they return (1 − F0) c_diff
+      const shirley = albedo((c) => (diffuseFresnelWeighted(c, 1, f0, 1) * (21 / 20)) / (1 - f0));
+      expect(shirley).toBeCloseTo(1 - f0, 6);
+    },
+  );
   it('the qualitative Oren-Nayar stays close to the full model without its inter-reflection term', () => {
     // the full model adds L2 (light bounced between V-grooves) and C3; for moderate sigma and angles
     // the two agree within 15%

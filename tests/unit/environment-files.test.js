@@ -48,15 +48,18 @@ function parseAll(cases, ms = 20_000) {
 }
 
 describe('environment files from a user', () => {
-  it('a good 8×4 .hdr and .exr read back as the 0.5 their writers put in (three’s EXRExporter; RGBE 128/255)', async () => {
-    const [h, e] = await parseAll([
-      { name: 'good.hdr', bytes: hdr(W, H) },
-      { name: 'good.exr', bytes: await goodExr() },
-    ]);
-    expect(h).toMatchObject({ ok: true, width: W, height: H });
-    expect(h.mean).toBeCloseTo(128 / 255, 6);
-    expect(e).toMatchObject({ ok: true, width: W, height: H, mean: 0.5 });
-  });
+  it(
+    'a good 8×4 .hdr and .exr read back as the 0.5 their writers put in ' + '(three’s EXRExporter; RGBE 128/255)',
+    async () => {
+      const [h, e] = await parseAll([
+        { name: 'good.hdr', bytes: hdr(W, H) },
+        { name: 'good.exr', bytes: await goodExr() },
+      ]);
+      expect(h).toMatchObject({ ok: true, width: W, height: H });
+      expect(h.mean).toBeCloseTo(128 / 255, 6);
+      expect(e).toMatchObject({ ok: true, width: W, height: H, mean: 0.5 });
+    },
+  );
 
   it(
     'every truncation of a good file, empty and wrong-magic files: read whole or refused in words, none hangs',
@@ -83,14 +86,17 @@ describe('environment files from a user', () => {
     },
   );
 
-  it('a header that claims 200000×100000 pixels (80 GB as float RGBA) is refused from the header, before decoding', async () => {
-    const started = performance.now();
-    const results = await parseAll([
-      { name: 'huge.hdr', bytes: hdr(200000, 100000, 4) },
-      { name: 'huge.exr', bytes: cat(exrHeader(200000, 100000), new Uint8Array(64)) },
-      { name: 'wide.hdr', bytes: hdr(16000, 8000, 4) }, // 2 GB: under the loader's own limits, over ours
-    ]);
-    for (const r of results) expect(r.error, r.name).toMatch(/claims to be \d+×\d+; the limit is 8192×4096/);
-    expect(performance.now() - started).toBeLessThan(10_000); // generous: the point is no allocation of gigabytes
-  });
+  it(
+    'a header that claims 200000×100000 pixels (80 GB as float RGBA) is ' + 'refused from the header, before decoding',
+    async () => {
+      const started = performance.now();
+      const results = await parseAll([
+        { name: 'huge.hdr', bytes: hdr(200000, 100000, 4) },
+        { name: 'huge.exr', bytes: cat(exrHeader(200000, 100000), new Uint8Array(64)) },
+        { name: 'wide.hdr', bytes: hdr(16000, 8000, 4) }, // 2 GB: under the loader's own limits, over ours
+      ]);
+      for (const r of results) expect(r.error, r.name).toMatch(/claims to be \d+×\d+; the limit is 8192×4096/);
+      expect(performance.now() - started).toBeLessThan(10_000); // generous: the point is no allocation of gigabytes
+    },
+  );
 });

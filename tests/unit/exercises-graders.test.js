@@ -26,7 +26,8 @@ describe('transmittance-depth', () => {
     const r = grade('transmittance-depth', { answer: 10, params, tolerance: 1.5 });
     expect(r.ok).toBe(false);
     expect(r.summary).toBe(
-      `10 m is too low by ${(depth - 10).toFixed(2)} m (−${((1 - 10 / depth) * 100).toFixed(1)}%); needs to be within ±1.5 m.`,
+      `10 m is too low by ${(depth - 10).toFixed(2)} m ` +
+        `(−${((1 - 10 / depth) * 100).toFixed(1)}%); needs to be within ±1.5 m.`,
     );
     expect(r.details[0]).toContain(
       `${Number((100 * Math.exp((-10 * Math.log(100)) / depth)).toPrecision(3))}% of the red (650 nm) light is left`,
@@ -130,22 +131,27 @@ describe('albedo-loss', () => {
 });
 
 describe('multiple-scattering-gain', () => {
-  it('grades against the random walk, whose gain with F0 = 1 is the furnace loss 1 − E (independent quadrature: ln 2 at α = 1)', () => {
-    // F = 1: every path leaves with weight 1, so all bounces give 100% and the gain is what one bounce loses
-    const ok = grade('multiple-scattering-gain', {
-      answer: 100 * Math.LN2,
-      params: { alpha: 1, f0: 1, thetaDeg: 0 },
-      tolerance: 0.5,
-    });
-    expect(ok.ok).toBe(true);
-    const low = grade('multiple-scattering-gain', {
-      answer: 5,
-      params: { alpha: 0.75, f0: 0.71, thetaDeg: 0 },
-      tolerance: 3,
-    });
-    expect(low.ok).toBe(false);
-    expect(low.details[0]).toMatch(/^More comes back/);
-  }, 30_000);
+  it(
+    'grades against the random walk, ' +
+      'whose gain with F0 = 1 is the furnace loss 1 − E (independent quadrature: ln 2 at α = 1)',
+    () => {
+      // F = 1: every path leaves with weight 1, so all bounces give 100% and the gain is what one bounce loses
+      const ok = grade('multiple-scattering-gain', {
+        answer: 100 * Math.LN2,
+        params: { alpha: 1, f0: 1, thetaDeg: 0 },
+        tolerance: 0.5,
+      });
+      expect(ok.ok).toBe(true);
+      const low = grade('multiple-scattering-gain', {
+        answer: 5,
+        params: { alpha: 0.75, f0: 0.71, thetaDeg: 0 },
+        tolerance: 3,
+      });
+      expect(low.ok).toBe(false);
+      expect(low.details[0]).toMatch(/^More comes back/);
+    },
+    30_000,
+  );
 });
 
 describe('light-zone', () => {
@@ -214,22 +220,25 @@ describe('ndf-profile', () => {
     );
     expect(wrong.details).toEqual(['The highlight’s tail falls off faster than your choice’s.']);
   });
-  it('is well posed only when no two NDFs are within the tolerance: Beckmann and Blinn-Phong are 1.10× apart at 5°', () => {
-    const check = (hwhm, tolerance) => GRADERS['ndf-profile'].check({ ...params, hidden: 'random', hwhm }, tolerance);
-    // the closed forms give the pair's factor independently of the grader's profiles
-    const m = matchNdfWidths(5);
-    const n = m.blinnPhong.exponent; // the exponent that gives Blinn-Phong the same half width
-    const beck = (c) => Math.exp(-(1 - c * c) / (c * c) / m.beckmann.alpha ** 2) / c ** 4;
-    let factor = 1;
-    for (let i = 0; i < 360; i++) {
-      const c = Math.cos(i * 0.25 * DEG);
-      if (beck(c) >= 0.01) factor = Math.max(factor, c ** n / beck(c), beck(c) / c ** n);
-    }
-    expect(factor).toBeCloseTo(1.1, 2);
-    expect(check(5, 1.3).join('\n')).toMatch(/Blinn–Phong is within 1\.1\d*× of Beckmann/);
-    expect(check(10, 1.2)).toEqual([]); // the shipped exercise: every pair at least 1.45× apart
-    expect(check(10, 1.5).length).toBeGreaterThan(0);
-  });
+  it(
+    'is well posed only when no two NDFs are within the tolerance: ' + 'Beckmann and Blinn-Phong are 1.10× apart at 5°',
+    () => {
+      const check = (hwhm, tolerance) => GRADERS['ndf-profile'].check({ ...params, hidden: 'random', hwhm }, tolerance);
+      // the closed forms give the pair's factor independently of the grader's profiles
+      const m = matchNdfWidths(5);
+      const n = m.blinnPhong.exponent; // the exponent that gives Blinn-Phong the same half width
+      const beck = (c) => Math.exp(-(1 - c * c) / (c * c) / m.beckmann.alpha ** 2) / c ** 4;
+      let factor = 1;
+      for (let i = 0; i < 360; i++) {
+        const c = Math.cos(i * 0.25 * DEG);
+        if (beck(c) >= 0.01) factor = Math.max(factor, c ** n / beck(c), beck(c) / c ** n);
+      }
+      expect(factor).toBeCloseTo(1.1, 2);
+      expect(check(5, 1.3).join('\n')).toMatch(/Blinn–Phong is within 1\.1\d*× of Beckmann/);
+      expect(check(10, 1.2)).toEqual([]); // the shipped exercise: every pair at least 1.45× apart
+      expect(check(10, 1.5).length).toBeGreaterThan(0);
+    },
+  );
   it('draws a random hidden NDF from the five', () => {
     expect(GRADERS['ndf-profile'].hide({ hidden: 'random' }, () => 0.99)).toBe('sgd');
     expect(GRADERS['ndf-profile'].hide({ hidden: 'ggx' }, () => 0.99)).toBe('ggx');

@@ -67,7 +67,9 @@ describe('validator messages', () => {
       'unknown grader',
       { grader: 'guess' },
       [
-        'grader: unknown grader "guess" (graders: transmittance-depth, fresnel-reflectance-angle, sphere-match, smith-g1, albedo-loss, multiple-scattering-gain, light-zone, schlick-worst-angle, ndf-profile, visibility-ratio, lambert-radiance)',
+        'grader: unknown grader "guess" (graders: transmittance-depth, fresnel-reflectance-angle, ' +
+          'sphere-match, smith-g1, albedo-loss, multiple-scattering-gain, light-zone, ' +
+          'schlick-worst-angle, ndf-profile, visibility-ratio, lambert-radiance)',
       ],
     ],
     [
@@ -80,7 +82,8 @@ describe('validator messages', () => {
       'unknown chapter',
       { chapter: 'optics' },
       [
-        'chapter: "optics" is not a chapter (chapters: media, surfaces, brdf, microfacets, fresnel, ndf, visibility, diffuse, rendering, performance)',
+        'chapter: "optics" is not a chapter (chapters: media, surfaces, brdf, microfacets, ' +
+          'fresnel, ndf, visibility, diffuse, rendering, performance)',
       ],
     ],
     ['bad id', { id: 'Red Depth' }, ['id: "Red Depth" is not a name of lower-case letters, digits and dashes']],
@@ -127,7 +130,10 @@ describe('validator messages', () => {
     const twins = await errorsOf({ ...ndf, state: { hwhm: 5 }, params: { ...ndf.params, hwhm: 5 }, tolerance: 1.3 });
     expect(twins).toHaveLength(2); // each of the pair accepts the other
     expect(twins[0]).toMatch(
-      /^params: at a half width of 5° Blinn–Phong is within 1\.1\d*× of Beckmann, inside the tolerance 1\.3: two answers would be right$/,
+      new RegExp(
+        '^params: at a half width of 5° Blinn–Phong is within 1\\.1\\d*× of Beckmann, ' +
+          'inside the tolerance 1\\.3: two answers would be right$',
+      ),
     );
     const schlick = JSON.parse(readFileSync(join(DIR, 'schlick-worst.json'), 'utf8'));
     expect(await errorsOf({ ...schlick, locked: ['materials'] })).toEqual([

@@ -23,35 +23,39 @@ const file = (name) => JSON.parse(readFileSync(join(DIR, name), 'utf8'));
 const errorsOf = async (raw) => (await validateExercise(raw, { schemaOf })).errors;
 
 describe('an exercise file that names inherited properties', () => {
-  it('is refused wherever it selects something: widget, grader, chapter, state key and value, params, locked', async () => {
-    const before = prototypeNames();
-    for (const name of PROTOTYPE_NAMES) {
-      const good = file('water-red-depth.json');
-      const variants = [
-        { widget: name },
-        { grader: name },
-        { chapter: name },
-        { state: { ...good.state, medium: name } },
-        { params: { channel: name } },
-        { locked: [name] },
-        { state: JSON.parse(`{"${name}": 1}`) },
-        { params: JSON.parse(`{"${name}": 1}`) },
-      ];
-      for (const change of variants) {
-        const errors = await errorsOf({ ...good, ...change });
-        expect(errors.length, `${name}: ${JSON.stringify(change)}`).toBeGreaterThan(0);
-        expect(errors.join(' ')).toContain(name);
+  it(
+    'is refused wherever it selects something: widget, grader, chapter, ' + 'state key and value, params, locked',
+    async () => {
+      const before = prototypeNames();
+      for (const name of PROTOTYPE_NAMES) {
+        const good = file('water-red-depth.json');
+        const variants = [
+          { widget: name },
+          { grader: name },
+          { chapter: name },
+          { state: { ...good.state, medium: name } },
+          { params: { channel: name } },
+          { locked: [name] },
+          { state: JSON.parse(`{"${name}": 1}`) },
+          { params: JSON.parse(`{"${name}": 1}`) },
+        ];
+        for (const change of variants) {
+          const errors = await errorsOf({ ...good, ...change });
+          expect(errors.length, `${name}: ${JSON.stringify(change)}`).toBeGreaterThan(0);
+          expect(errors.join(' ')).toContain(name);
+        }
       }
-    }
-    expect(prototypeNames()).toBe(before);
-  });
+      expect(prototypeNames()).toBe(before);
+    },
+  );
 
   it('a list item that is not a string is refused even when it would print as an option ([["water"]])', async () => {
     const worst = file('schlick-worst.json');
     expect(worst.widget).toBe('fresnel-curves');
     const errors = await errorsOf({ ...worst, state: { ...worst.state, materials: [['water']] } });
     expect(errors).toEqual([
-      'state.materials: ["water"] not among gold, silver, copper, iron, aluminum, water, glass-low, plastic-high, glass-high, diamond, custom',
+      'state.materials: ["water"] not among gold, silver, copper, iron, aluminum, water, ' +
+        'glass-low, plastic-high, glass-high, diamond, custom',
     ]);
   });
 

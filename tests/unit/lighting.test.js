@@ -45,17 +45,20 @@ describe('samplers', () => {
   it('cosine sampling has pdf (n·l)/π: the mean of π·1/(n·l)·(n·l)² is ∫ (n·l)² dω = 2π/3', () => {
     expect(mean(sampleCosine, (l) => Math.PI * l[2])).toBeCloseTo((2 * Math.PI) / 3, 3);
   });
-  it('cone sampling is uniform in solid angle: directions stay in the cone and the mean cosine is (1 + cosMax)/2', () => {
-    const cosMax = Math.cos(0.3);
-    expect(
-      mean(
-        (u1, u2) => sampleCone(u1, u2, cosMax),
-        (l) => l[2],
-      ),
-    ).toBeCloseTo((1 + cosMax) / 2, 6);
-    expect(sampleCone(1, 0.3, cosMax)[2]).toBeCloseTo(cosMax, 12);
-    expect(Math.hypot(...sampleCone(0.4, 0.3, cosMax))).toBeCloseTo(1, 12);
-  });
+  it(
+    'cone sampling is uniform in solid angle: ' + 'directions stay in the cone and the mean cosine is (1 + cosMax)/2',
+    () => {
+      const cosMax = Math.cos(0.3);
+      expect(
+        mean(
+          (u1, u2) => sampleCone(u1, u2, cosMax),
+          (l) => l[2],
+        ),
+      ).toBeCloseTo((1 + cosMax) / 2, 6);
+      expect(sampleCone(1, 0.3, cosMax)[2]).toBeCloseTo(cosMax, 12);
+      expect(Math.hypot(...sampleCone(0.4, 0.3, cosMax))).toBeCloseTo(1, 12);
+    },
+  );
 });
 
 describe('sphere light', () => {

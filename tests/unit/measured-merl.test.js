@@ -135,24 +135,27 @@ describe('writeMerl → parseMerl round trip (truth: the analytic model at each 
     });
   }
 
-  it('between nodes: the interpolated lookup is within 5 % of GGX at the median, and closer than the nearest node', () => {
-    const f = modelBRDF('ggx', GGX);
-    const r = rng(11);
-    const errors = { lookup: [], lookupNearest: [] };
-    for (let n = 0; n < 2000; n++) {
-      const [th, td, pd] = [
-        ((r() * 88) / 180) * Math.PI * (r() < 0.5 ? 0.1 : 1),
-        ((r() * 80) / 180) * Math.PI,
-        r() * Math.PI,
-      ];
-      const { l, v } = directionsFromHalfDiff(th, td, pd);
-      if (!(l[2] > 0.05 && v[2] > 0.05)) continue;
-      for (const key of Object.keys(errors)) errors[key].push(relative(ggx[key](l, v)[1], f(l, v)[1]));
-    }
-    const median = (x) => x.sort((a, b) => a - b)[Math.floor(x.length / 2)];
-    expect(median(errors.lookup)).toBeLessThan(0.05);
-    expect(median(errors.lookup)).toBeLessThan(median(errors.lookupNearest));
-  });
+  it(
+    'between nodes: the interpolated lookup is within 5 % of GGX at the ' + 'median, and closer than the nearest node',
+    () => {
+      const f = modelBRDF('ggx', GGX);
+      const r = rng(11);
+      const errors = { lookup: [], lookupNearest: [] };
+      for (let n = 0; n < 2000; n++) {
+        const [th, td, pd] = [
+          ((r() * 88) / 180) * Math.PI * (r() < 0.5 ? 0.1 : 1),
+          ((r() * 80) / 180) * Math.PI,
+          r() * Math.PI,
+        ];
+        const { l, v } = directionsFromHalfDiff(th, td, pd);
+        if (!(l[2] > 0.05 && v[2] > 0.05)) continue;
+        for (const key of Object.keys(errors)) errors[key].push(relative(ggx[key](l, v)[1], f(l, v)[1]));
+      }
+      const median = (x) => x.sort((a, b) => a - b)[Math.floor(x.length / 2)];
+      expect(median(errors.lookup)).toBeLessThan(0.05);
+      expect(median(errors.lookup)).toBeLessThan(median(errors.lookupNearest));
+    },
+  );
 
   it('below the horizon every lookup is 0', () => {
     expect(ggx.lookup([0, 0.6, -0.8], [0, 0, 1])).toEqual([0, 0, 0]);

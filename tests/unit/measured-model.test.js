@@ -61,30 +61,34 @@ describe('the measured-BRDF widget model', () => {
     expect(state.f0).toBeCloseTo(0.6, 12);
   });
 
-  it('ndf-explorer gets the fit’s half width (bisection on D), the fitted ABC and SGD shapes, and the measured slice', () => {
-    const fits = {
-      abc: asFit('abc'),
-      sgd: { model: 'sgd', params: { alpha: 0.1, p: 1.2, f0: [0, 0, 0], cdiff: [0, 0, 0] }, error: 1 },
-    };
-    const measured = parseMerl(writeMerl(modelBRDF('abc', fits.abc.params)));
-    const state = ndfStateForFit(fits.abc, fits, measured, 'my <b>copper</b>.binary');
-    expect(state.hwhm).toBeCloseTo(
-      ndfHalfWidthDeg((c) => ndfABC(c, 40, 2.5)),
-      9,
-    );
-    expect(state).toMatchObject({ abcA2: 2.5, sgdP: 1.2, measuredName: 'my bcopperb.binary' });
-    // the slice of the best fit (ABC, the truth) is ABC's D/D(0) (closed form) to the 3 digits the URL carries
-    expect(state.measured).toHaveLength(90);
-    state.measured.forEach((x, i) => {
-      const want = ndfABC(Math.cos(THETA_H_DEG[i] * DEG), 40, 2.5) / ndfABC(1, 40, 2.5);
-      if (THETA_H_DEG[i] < 89) expect(Math.abs(x - want)).toBeLessThanOrEqual(want > 1e-5 ? 5e-3 * want : 1e-5);
-    });
-    // and ndf-explorer's state takes it as it is (no notice)
-    const { state: taken, notices } = coerceState(
-      ndfSchema,
-      Object.fromEntries(Object.entries(state).map(([k, v]) => [k, String(v)])),
-    ); // as the URL carries it
-    expect(notices).toEqual([]);
-    expect(taken.measured).toEqual(state.measured);
-  });
+  it(
+    'ndf-explorer gets the fit’s half width (bisection on D), ' +
+      'the fitted ABC and SGD shapes, and the measured slice',
+    () => {
+      const fits = {
+        abc: asFit('abc'),
+        sgd: { model: 'sgd', params: { alpha: 0.1, p: 1.2, f0: [0, 0, 0], cdiff: [0, 0, 0] }, error: 1 },
+      };
+      const measured = parseMerl(writeMerl(modelBRDF('abc', fits.abc.params)));
+      const state = ndfStateForFit(fits.abc, fits, measured, 'my <b>copper</b>.binary');
+      expect(state.hwhm).toBeCloseTo(
+        ndfHalfWidthDeg((c) => ndfABC(c, 40, 2.5)),
+        9,
+      );
+      expect(state).toMatchObject({ abcA2: 2.5, sgdP: 1.2, measuredName: 'my bcopperb.binary' });
+      // the slice of the best fit (ABC, the truth) is ABC's D/D(0) (closed form) to the 3 digits the URL carries
+      expect(state.measured).toHaveLength(90);
+      state.measured.forEach((x, i) => {
+        const want = ndfABC(Math.cos(THETA_H_DEG[i] * DEG), 40, 2.5) / ndfABC(1, 40, 2.5);
+        if (THETA_H_DEG[i] < 89) expect(Math.abs(x - want)).toBeLessThanOrEqual(want > 1e-5 ? 5e-3 * want : 1e-5);
+      });
+      // and ndf-explorer's state takes it as it is (no notice)
+      const { state: taken, notices } = coerceState(
+        ndfSchema,
+        Object.fromEntries(Object.entries(state).map(([k, v]) => [k, String(v)])),
+      ); // as the URL carries it
+      expect(notices).toEqual([]);
+      expect(taken.measured).toEqual(state.measured);
+    },
+  );
 });

@@ -34,19 +34,22 @@ describe('Beer-Lambert', () => {
 });
 
 describe('random walk in a 2-D slab', () => {
-  it('spends, on average, pi d / 2 inside a slab of thickness d whatever the scattering (Blanco & Fournier 2003)', () => {
-    // the mean path length of light entering a non-absorbing body evenly and from all directions is
-    // pi A / P in 2-D (4V/S in 3-D), independent of the scattering coefficient; a slab gives pi d / 2
-    const d = 1;
-    for (const sigmaS of [0.5, 2, 8]) {
-      const rand = seededRandom(42);
-      let sum = 0;
-      const n = 40000;
-      for (let i = 0; i < n; i++)
-        sum += randomWalk2D({ sigmaS, thickness: d, entryAngle: lambertianEntryAngle2D(rand), rand }).path;
-      expect(Math.abs(sum / n / ((Math.PI * d) / 2) - 1)).toBeLessThan(0.015);
-    }
-  });
+  it(
+    'spends, on average, pi d / 2 inside a slab of thickness d whatever the ' + 'scattering (Blanco & Fournier 2003)',
+    () => {
+      // the mean path length of light entering a non-absorbing body evenly and from all directions is
+      // pi A / P in 2-D (4V/S in 3-D), independent of the scattering coefficient; a slab gives pi d / 2
+      const d = 1;
+      for (const sigmaS of [0.5, 2, 8]) {
+        const rand = seededRandom(42);
+        let sum = 0;
+        const n = 40000;
+        for (let i = 0; i < n; i++)
+          sum += randomWalk2D({ sigmaS, thickness: d, entryAngle: lambertianEntryAngle2D(rand), rand }).path;
+        expect(Math.abs(sum / n / ((Math.PI * d) / 2) - 1)).toBeLessThan(0.015);
+      }
+    },
+  );
   it('without scattering, transmits the cosine-weighted exp(-sigma d / cos) (closed-form quadrature)', () => {
     // sigmaS tiny: the walk is a straight line; compare its absorbed weight with the integral
     const sigmaA = 0.7;

@@ -22,9 +22,13 @@ describe('brdf-lobe: the multiple-scattering lobe', () => {
     expect(hasMultipleLobe({ D: 'beckmann', V: 'smithGGXCorrelated' })).toBe(false);
   });
 
-  it("the walk's multiply scattered part at alpha = 1, F = 1 lies near the Kulla–Conty lobe (within 25 %: a model, not the walk)", () => {
-    const w = walkMultiplePart(l, v, 1, 1, 3);
-    expect(w.value).toBeGreaterThan(0);
-    expect(Math.abs(w.value / kullaContyLobe(l, v, 1, 1) - 1)).toBeLessThan(0.25);
-  });
+  it(
+    "the walk's multiply scattered part at alpha = 1, " +
+      'F = 1 lies near the Kulla–Conty lobe (within 25 %: a model, not the walk)',
+    () => {
+      const w = walkMultiplePart(l, v, 1, 1, 3);
+      expect(w.value).toBeGreaterThan(0);
+      expect(Math.abs(w.value / kullaContyLobe(l, v, 1, 1) - 1)).toBeLessThan(0.25);
+    },
+  );
 });

@@ -32,13 +32,16 @@ describe('random walk on the Smith microsurface (Heitz et al. 2016)', { timeout:
     }
   });
 
-  it('its first bounce is the single-scattering albedo E(mu) (independent quadrature), within 4 standard errors', () => {
-    for (const [mu, alpha] of GRID) {
-      const r = randomWalkAlbedoGGX(mu, alpha, 1, 40000, 5);
-      const E = albedoGGXQuadrature(mu, alpha);
-      expect(Math.abs(r.single - E)).toBeLessThanOrEqual(SIGMAS * r.singleStandardError + 1e-9);
-    }
-  });
+  it(
+    'its first bounce is the single-scattering albedo E(mu) (independent ' + 'quadrature), within 4 standard errors',
+    () => {
+      for (const [mu, alpha] of GRID) {
+        const r = randomWalkAlbedoGGX(mu, alpha, 1, 40000, 5);
+        const E = albedoGGXQuadrature(mu, alpha);
+        expect(Math.abs(r.single - E)).toBeLessThanOrEqual(SIGMAS * r.singleStandardError + 1e-9);
+      }
+    },
+  );
 
   it('its BRDF by next-event estimation: first bounce = D V / 4 (F = 1) within 4 standard errors', () => {
     const l = [0.6, 0, 0.8];

@@ -1,0 +1,82 @@
+// Embedding, the gallery of embeds (gallery.html): a card and a snippet for every widget, previews loaded when
+// scrolled to, a snippet that follows the preview's state.
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { WIDGETS } from '../../src/widgets/registry.js';
+import { baseUrl, launchBrowser, open, setControl, settle } from './helpers.js';
+
+let browser;
+beforeAll(async () => {
+  browser = await launchBrowser();
+});
+afterAll(async () => {
+  await browser?.close();
+});
+
+/** The src of the iframe in a card's snippet, as an HTML parser reads it. */
+const snippetSrc = (page, name) =>
+  page.$eval(`#${name}-snippet`, (t) =>
+    new DOMParser().parseFromString(t.value, 'text/html').querySelector('iframe')?.getAttribute('src'),
+  );
+
+describe('gallery.html', () => {
+  it(
+    'has a card with an embed snippet for every registered widget, ' + 'and loads previews only when scrolled to',
+    async () => {
+      const page = await open(browser, 'gallery.html');
+      await settle(page, 500);
+      for (const name of Object.keys(WIDGETS)) {
+        expect(await snippetSrc(page, name)).toBe(new URL(`embed.html?w=${name}`, baseUrl()).href);
+        expect(await page.$eval(`[data-widget="${name}"] h2`, (h) => h.textContent)).toBe(WIDGETS[name].title);
+      }
+      const loaded = await page.$$eval('.gallery-preview iframe', (fs) =>
+        fs.map((f) => new URL(f.src).searchParams.get('w')),
+      );
+      expect(loaded.length).toBeGreaterThan(0);
+      expect(loaded).not.toContain('energy'); // the last card, far below
+      expect(page.errors).toEqual([]);
+      await page.close();
+    },
+  );
+
+  it(
+    'a snippet follows the state the user leaves the preview in, ' +
+      'and opens in that state; Copy works from the keyboard',
+    async () => {
+      const page = await open(browser, 'gallery.html');
+      await page.$eval('[data-widget="fresnel-zones"]', (el) => el.scrollIntoView());
+      const handle = await page.waitForSelector('[data-widget="fresnel-zones"] iframe');
+      const frame = await handle.contentFrame();
+      await frame.waitForFunction(() => globalThis.__shadingLab?.widgets?.['fresnel-zones'], { timeout: 30_000 });
+      await settle(frame, 400);
+      await setControl(frame, 'Shape', 'Torus knot');
+      await setControl(frame, 'Mode', 'Zones of l·h');
+      await page.waitForFunction(
+        () => document.getElementById('fresnel-zones-snippet').value.includes('mode=zones-lh'),
+        {
+          timeout: 10_000,
+        },
+      );
+      const src = await snippetSrc(page, 'fresnel-zones');
+      expect(new URL(src).searchParams.get('mode')).toBe('zones-lh');
+      expect(new URL(src).searchParams.get('shape')).toBe('torusknot');
+      expect(new URL(src).origin).toBe(new URL(baseUrl()).origin); // absolute, from the page's location
+
+      const copy = await page.$('[data-widget="fresnel-zones"] .gallery-copy button');
+      await copy.focus();
+      await page.keyboard.press('Enter');
+      await page.waitForFunction(
+        () => document.querySelector('[data-widget="fresnel-zones"] .gallery-status').textContent !== '',
+        { timeout: 5000 },
+      );
+
+      const opened = await open(browser, src);
+      await opened.waitForFunction(() => globalThis.__shadingLab?.widgets?.['fresnel-zones'], { timeout: 30_000 });
+      const state = await opened.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].getState());
+      expect(state).toMatchObject({ mode: 'zones-lh', shape: 'torusknot' });
+      expect(page.errors).toEqual([]);
+      expect(opened.errors).toEqual([]);
+      await opened.close();
+      await page.close();
+    },
+  );
+});

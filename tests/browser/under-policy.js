@@ -1,0 +1,64 @@
+// Pages opened under the app's Content-Security-Policy with every violation recorded: the built pages, and what
+// each page does on load to wait for. Used by csp.test.js and pages-load.test.js.
+import { readdirSync } from 'node:fs';
+import { join } from 'node:path';
+import { baseUrl, settle } from './helpers.js';
+import { ROOT, openPage } from './harness.js';
+
+/** Every violation in the page and its same-origin frames, in window.top.__csp (installed before any script). */
+function recordViolations() {
+  document.addEventListener('securitypolicyviolation', (e) => {
+    (window.top.__csp ??= []).push(
+      `${e.violatedDirective}: ${e.blockedURI || e.sample || '(inline)'} in ${location.pathname}`,
+    );
+  });
+}
+
+export const BUILT = readdirSync(join(ROOT, 'dist'))
+  .filter((f) => f.endsWith('.html'))
+  .sort();
+// when each page has finished what it does on load (its widgets mounted, its data drawn); run in the page
+const READY = {
+  'embed.html?w=fresnel-zones': () => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 1,
+  'exercises.html': () => globalThis.__shadingLab?.exercise?.ready,
+  'tour.html': () => globalThis.__shadingLab?.tour?.ready,
+  'parity.html': () => globalThis.__shadingLab?.parity,
+  'performance.html': () => globalThis.__shadingLab?.performance,
+  'wall.html': () => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length > 0,
+};
+const chapterReady = () =>
+  document.querySelectorAll('[data-slot]').length === Object.keys(globalThis.__shadingLab?.widgets ?? {}).length;
+const ONE_EXERCISE = [
+  {
+    id: 'csp-check',
+    chapter: 'media',
+    title: 'A set from a data: URL',
+    prompt: 'Fetched under connect-src.',
+    widget: 'media',
+    state: { medium: 'water', view: 'one' },
+    locked: ['medium', 'view'],
+    grader: 'transmittance-depth',
+    params: { channel: 'r' },
+    tolerance: 1,
+  },
+];
+
+/** The pages to run: every built HTML file, the embed with a widget, exercises with ?src=. */
+export const POLICY_PAGES = [
+  ...BUILT.filter((f) => f !== 'embed.html'),
+  'embed.html?w=fresnel-zones',
+  `exercises.html?src=${encodeURIComponent(`data:application/json,${JSON.stringify(ONE_EXERCISE)}`)}`,
+];
+
+/** Opens `path` with its violations recorded (window.__csp) and waits until it has done what it does on load. */
+export async function openUnderPolicy(browser, path) {
+  const page = await openPage(browser, baseUrl(), path, {
+    width: 1100,
+    height: 800,
+    beforeLoad: (p) => p.evaluateOnNewDocument(recordViolations),
+  });
+  const ready = READY[path.startsWith('embed.html') ? path : path.split('?')[0]] ?? chapterReady;
+  if (ready) await page.waitForFunction(ready, { timeout: 60_000 });
+  await settle(page, 800);
+  return page;
+}
