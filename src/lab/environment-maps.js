@@ -191,7 +191,7 @@ function createPrefilterCache(renderer, pass, weighted) {
         const filter = filters.get(PREFILTER_DEFINES[ndf]);
         for (let k = 1; k <= PREFILTER_LEVELS; k++) {
           filter.uniforms.uAlpha.value = (k / PREFILTER_LEVELS) ** 2;
-          pass.render(intoLayer(renderer, k - 1), filter, entry.target);
+          pass.render(renderer, filter, entry.target, k - 1);
         }
         entry.fresh = true;
       }
@@ -204,16 +204,6 @@ function createPrefilterCache(renderer, pass, weighted) {
     },
   };
 }
-
-/**
- * `renderer` as the full-screen pass uses it, with an array target's `layer` as the one drawn into (the pass sets
- * targets without a layer, which is layer 0).
- */
-const intoLayer = (renderer, layer) => ({
-  getRenderTarget: () => renderer.getRenderTarget(),
-  setRenderTarget: (target) => renderer.setRenderTarget(target, target?.isWebGLArrayRenderTarget ? layer : 0),
-  render: (scene, camera) => renderer.render(scene, camera),
-});
 
 /** From the map `env` as it is on the GPU (update() reads it back): its irradiance, and tables to sample it by
  * brightness. */

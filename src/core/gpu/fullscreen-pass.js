@@ -3,8 +3,9 @@
 import * as THREE from 'three';
 
 /**
- * `render(renderer, material, target = null)` draws `material` over the whole `target` (the canvas when null)
- * and puts the renderer's previous target back; `dispose()` frees the quad (materials stay their owner's).
+ * `render(renderer, material, target = null, layer = 0)` draws `material` over the whole `target` (the canvas
+ * when null; of an array target, its `layer`) and puts the renderer's previous target back; `dispose()` frees the
+ * quad (materials stay their owner's).
  */
 export function createFullscreenPass() {
   const quad = new THREE.Mesh(new THREE.PlaneGeometry(2, 2));
@@ -12,10 +13,10 @@ export function createFullscreenPass() {
   const scene = new THREE.Scene().add(quad);
   const camera = new THREE.Camera();
   return {
-    render(renderer, material, target = null) {
+    render(renderer, material, target = null, layer = 0) {
       const previous = renderer.getRenderTarget();
       quad.material = material;
-      renderer.setRenderTarget(target);
+      renderer.setRenderTarget(target, layer);
       renderer.render(scene, camera);
       renderer.setRenderTarget(previous);
     },

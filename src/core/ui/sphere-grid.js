@@ -8,6 +8,7 @@ import { assembleGlsl } from '../gpu/glsl.js';
 import { SHADER_CHUNKS } from '../gpu/shader-chunks.js';
 import { createProgramCache } from '../gpu/program-cache.js';
 import { angleText, probeAngles, showProbeRows } from './probe.js';
+import { drawSideBySide } from './side-by-side.js';
 
 /** Every uniform a cell's program may read, with its value when the cell gives none (brdf-sphere.frag.glsl). */
 const UNIFORM_DEFAULTS = {
@@ -44,23 +45,16 @@ const sphereMaterial = (defines) =>
 
 /** Draws each cell in its own square viewport, side by side across the canvas, with its program and uniforms. */
 function drawCells(renderer, cells, programs, view) {
-  const size = renderer.getSize(new THREE.Vector2());
-  const w = size.x / Math.max(cells.length, 1);
-  renderer.setScissorTest(true);
-  cells.forEach((cell, i) => {
+  drawSideBySide(renderer, cells.length, (i) => {
+    const cell = cells[i];
     const material = programs.get(cell.defines);
     for (const [k, v] of Object.entries({ ...UNIFORM_DEFAULTS, ...cell.uniforms })) {
       if (Array.isArray(v)) material.uniforms[k].value.set(...v);
       else material.uniforms[k].value = v;
     }
     view.mesh.material = material;
-    const [x0, x1] = [Math.round(i * w), Math.round((i + 1) * w)]; // whole pixels: no seams between cells
-    const side = Math.min(x1 - x0, size.y);
-    renderer.setViewport(x0 + (x1 - x0 - side) / 2, (size.y - side) / 2, side, side);
-    renderer.setScissor(x0, 0, x1 - x0, size.y);
     renderer.render(view.scene, view.camera);
   });
-  renderer.setScissorTest(false);
 }
 
 /** The unit sphere, alone in a scene under an orthographic camera that frames it in a cell. */

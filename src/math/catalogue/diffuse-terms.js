@@ -8,6 +8,7 @@ import {
   diffuseOrenNayar,
   diffuseOrenNayarQualitative,
 } from '../diffuse.js';
+import { terms } from './term.js';
 
 const cdiff = { min: 0, max: 1, unit: '', label: 'Diffuse colour c_diff', clamped: true };
 const f0 = { min: 0, max: 1, unit: '', label: 'Reflectance at normal incidence F0', delicate: [0.04, 0.5] };
@@ -15,80 +16,65 @@ const sigma = { min: 0, max: Math.PI / 2, unit: 'rad', label: 'Roughness σ', de
 /** @param {number} nl @param {number} nv */
 const above = (nl, nv) => nl > 0 && nv > 0;
 
+const DIFFUSE = { definePrefix: 'DIFFUSE', chunk: 'diffuse.glsl' };
+
 /** @type {import('./types.js').TermFamily} */
 export const DIFFUSE_FAMILY = {
   family: 'diffuse',
   label: 'Diffuse',
   choice: 'diffuse',
-  definePrefix: 'DIFFUSE',
+  definePrefix: DIFFUSE.definePrefix,
   glslDispatch: 'diffuseTerm',
   defaultKey: 'lambert',
-  terms: {
+  terms: terms(DIFFUSE, {
     lambert: {
-      key: 'lambert',
       label: 'Lambert',
-      short: 'Lambert',
       cite: 'Lambert 1760',
       js: diffuseLambert,
       // its function takes no angles (the reflectance equation's n·l clamps it); as a BRDF it is 0 below
       evaluate: (nl, nv, cosPhi, p) => (above(nl, nv) ? diffuseLambert(p.cdiff) : 0),
       glsl: 'diffuseLambert',
-      chunk: 'diffuse.glsl',
-      define: 'DIFFUSE_LAMBERT',
       args: ['cdiff'],
       params: { cdiff },
     },
     fresnelWeighted: {
-      key: 'fresnelWeighted',
       label: 'Fresnel-weighted Lambert',
       short: 'Fresnel-weighted',
       cite: 'Hoffman 2013',
       js: diffuseFresnelWeighted,
       evaluate: (nl, nv, cosPhi, p) => diffuseFresnelWeighted(nl, nv, p.f0, p.cdiff),
       glsl: 'diffuseFresnelWeighted',
-      chunk: 'diffuse.glsl',
-      define: 'DIFFUSE_FRESNEL_WEIGHTED',
       args: ['nl', 'nv', 'f0', 'cdiff'],
       params: { cdiff, f0 },
     },
     ashikhminShirley: {
-      key: 'ashikhminShirley',
       label: 'Ashikhmin–Shirley',
-      short: 'Ashikhmin–Shirley',
       cite: 'Ashikhmin & Shirley 2000',
       js: diffuseAshikhminShirley,
       evaluate: (nl, nv, cosPhi, p) => diffuseAshikhminShirley(nl, nv, p.f0, p.cdiff),
       glsl: 'diffuseAshikhminShirley',
-      chunk: 'diffuse.glsl',
-      define: 'DIFFUSE_ASHIKHMIN_SHIRLEY',
       args: ['nl', 'nv', 'f0', 'cdiff'],
       params: { cdiff, f0 },
     },
     orenNayar: {
-      key: 'orenNayar',
       label: 'Oren–Nayar (full)',
       short: 'Oren–Nayar',
       cite: 'Oren & Nayar 1994',
       js: diffuseOrenNayar,
       evaluate: (nl, nv, cosPhi, p) => diffuseOrenNayar(nl, nv, cosPhi, p.sigma, p.cdiff),
       glsl: 'diffuseOrenNayar',
-      chunk: 'diffuse.glsl',
-      define: 'DIFFUSE_OREN_NAYAR',
       args: ['nl', 'nv', 'cosPhi', 'sigma', 'cdiff'],
       params: { cdiff, sigma },
     },
     orenNayarQualitative: {
-      key: 'orenNayarQualitative',
       label: 'Oren–Nayar (qualitative)',
       short: 'O–N qualitative',
       cite: 'Oren & Nayar 1994',
       js: diffuseOrenNayarQualitative,
       evaluate: (nl, nv, cosPhi, p) => diffuseOrenNayarQualitative(nl, nv, cosPhi, p.sigma, p.cdiff),
       glsl: 'diffuseOrenNayarQualitative',
-      chunk: 'diffuse.glsl',
-      define: 'DIFFUSE_OREN_NAYAR_QUALITATIVE',
       args: ['nl', 'nv', 'cosPhi', 'sigma', 'cdiff'],
       params: { cdiff, sigma },
     },
-  },
+  }),
 };

@@ -2,6 +2,7 @@
 // The normal distributions D(n·h) of the microfacet BRDF. evaluate(c, p, s2): s2 = sin²θh when known from the
 // half vector itself (h.x² + h.y², precise near n), else taken from c. The ranges are the ones ndf.js clamps to.
 import { ndfABC, ndfBeckmannFromSin2, ndfBlinnPhongFromSin2, ndfGGXFromSin2, ndfSGD } from '../ndf.js';
+import { terms } from './term.js';
 
 /** @param {number} c */
 const sin2 = (c) => (1 - c) * (1 + c);
@@ -14,54 +15,44 @@ const alpha = {
   delicate: [1e-5, 1e-3, 0.01, 0.1, 0.3, 0.5],
 };
 
+const NDF = { definePrefix: 'NDF', chunk: 'ndf.glsl' };
+
 /** @type {import('./types.js').TermFamily} */
 export const NDF_FAMILY = {
   family: 'ndf',
   label: 'Normal distribution D',
   choice: 'D',
-  definePrefix: 'NDF',
+  definePrefix: NDF.definePrefix,
   glslDispatch: 'ndfTerm',
   glslSignature: 'float ndfTerm(float nh, float sin2h, float alpha)',
   defaultKey: 'ggx',
-  terms: {
+  terms: terms(NDF, {
     ggx: {
-      key: 'ggx',
       label: 'GGX',
-      short: 'GGX',
       cite: 'Trowbridge & Reitz 1975; Walter et al. 2007',
       js: ndfGGXFromSin2,
       evaluate: (c, p, s2 = sin2(c)) => ndfGGXFromSin2(c, s2, p.alpha),
       glsl: 'ndfGGXFromSin2',
-      chunk: 'ndf.glsl',
-      define: 'NDF_GGX',
       glslCall: 'ndfGGXFromSin2(nh, sin2h, alpha)',
       args: ['cos', 'sin2', 'alpha'],
       params: { alpha },
     },
     beckmann: {
-      key: 'beckmann',
       label: 'Beckmann',
-      short: 'Beckmann',
       cite: 'Beckmann & Spizzichino 1963',
       js: ndfBeckmannFromSin2,
       evaluate: (c, p, s2 = sin2(c)) => ndfBeckmannFromSin2(c, s2, p.alpha),
       glsl: 'ndfBeckmannFromSin2',
-      chunk: 'ndf.glsl',
-      define: 'NDF_BECKMANN',
       glslCall: 'ndfBeckmannFromSin2(nh, sin2h, alpha)',
       args: ['cos', 'sin2', 'alpha'],
       params: { alpha },
     },
     blinnPhong: {
-      key: 'blinnPhong',
       label: 'Blinn–Phong',
-      short: 'Blinn–Phong',
       cite: 'Blinn 1977',
       js: ndfBlinnPhongFromSin2,
       evaluate: (c, p, s2 = sin2(c)) => ndfBlinnPhongFromSin2(c, s2, p.exponent),
       glsl: 'ndfBlinnPhongFromSin2',
-      chunk: 'ndf.glsl',
-      define: 'NDF_BLINN_PHONG',
       glslCall: 'ndfBlinnPhongFromSin2(nh, sin2h, uExponent)',
       uniforms: { uExponent: 'float' },
       args: ['cos', 'sin2', 'exponent'],
@@ -78,15 +69,11 @@ export const NDF_FAMILY = {
       },
     },
     abc: {
-      key: 'abc',
       label: 'ABC',
-      short: 'ABC',
       cite: 'Low et al. 2012',
       js: ndfABC,
       evaluate: (c, p) => ndfABC(c, p.a1, p.a2),
       glsl: 'ndfABC',
-      chunk: 'ndf.glsl',
-      define: 'NDF_ABC',
       glslCall: 'ndfABC(nh, uA1, uA2)',
       uniforms: { uA1: 'float', uA2: 'float' },
       args: ['cos', 'a1', 'a2'],
@@ -96,15 +83,12 @@ export const NDF_FAMILY = {
       },
     },
     sgd: {
-      key: 'sgd',
       label: 'Shifted gamma (SGD)',
       short: 'SGD',
       cite: 'Bagher et al. 2012',
       js: ndfSGD,
       evaluate: (c, p) => ndfSGD(c, p.alpha, p.p),
       glsl: 'ndfSGD',
-      chunk: 'ndf.glsl',
-      define: 'NDF_SGD',
       glslCall: 'ndfSGD(nh, alpha, uSgdP)',
       uniforms: { uSgdP: 'float' },
       args: ['cos', 'alpha', 'p'],
@@ -113,5 +97,5 @@ export const NDF_FAMILY = {
         p: { min: 0, max: 1.9, unit: '', label: 'SGD shape p', clamped: true, delicate: [0.3, 0.64, 1, 1.5] },
       },
     },
-  },
+  }),
 };

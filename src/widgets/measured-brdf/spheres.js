@@ -2,6 +2,7 @@
 // the same way, each a 3-D texture (90 θh × 90 θd × 180 φd texels, RGBA half floats) read by measured.glsl.
 import * as THREE from 'three';
 import { createViewport } from '../../core/gpu/viewport.js';
+import { drawSideBySide } from '../../core/ui/side-by-side.js';
 import { assembleGlsl } from '../../core/gpu/glsl.js';
 import { SHADER_CHUNKS } from '../../core/gpu/shader-chunks.js';
 import { MERL_DIMS } from '../../measured/merl.js';
@@ -40,26 +41,16 @@ export function createMeasuredSpheres(container, { label }) {
   const names = document.createElement('div');
   names.className = 'sphere-labels';
 
-  const size = new THREE.Vector2();
-  const draw = (renderer) => {
-    renderer.getSize(size);
-    const w = size.x / 2;
-    renderer.setScissorTest(true);
-    slots.forEach((slot, i) => {
-      const [x0, x1] = [Math.round(i * w), Math.round((i + 1) * w)];
-      const side = Math.min(x1 - x0, size.y);
-      renderer.setViewport(x0 + (x1 - x0 - side) / 2, (size.y - side) / 2, side, side);
-      renderer.setScissor(x0, 0, x1 - x0, size.y);
-      if (slot) {
-        material.uniforms.uMeasured.value = slot.texture;
+  const draw = (renderer) =>
+    drawSideBySide(renderer, slots.length, (i) => {
+      if (slots[i]) {
+        material.uniforms.uMeasured.value = slots[i].texture;
         renderer.render(scene, camera);
       } else {
         renderer.setClearColor('#16181d');
         renderer.clear();
       }
     });
-    renderer.setScissorTest(false);
-  };
   const viewport = createViewport(container, {
     draw,
     label,

@@ -1,6 +1,6 @@
 // ndf-explorer: the talk's five normal distribution functions at one matched width, on linear and log
 // axes, their normalisation integrals measured live, and their highlights side by side on spheres.
-import { createWidgetShell } from '../../core/framework/widget-shell.js';
+import { createCurveExplorer } from '../../core/ui/curve-explorer.js';
 import { schema } from './schema.js';
 import { ndfCurves } from './model.js';
 import { createNdfPlots } from './plots.js';
@@ -14,49 +14,28 @@ const CURVE_KEYS = ['hwhm', 'abcA2', 'sgdP', 'ndfs'];
 const LOG_KEYS = [...CURVE_KEYS, 'measured', 'measuredName'];
 
 export function createNdfExplorer(container, initialState = {}, { onStateChange, locked } = {}) {
-  const shell = createWidgetShell(container, {
-    name: 'ndf-explorer',
-    schema,
-    initialState,
-    locked,
-    about: ABOUT,
-    terms: TERMS_USED,
+  const explorer = createCurveExplorer(container, {
+    shell: { name: 'ndf-explorer', schema, initialState, locked, about: ABOUT, terms: TERMS_USED },
+    title: TITLE,
+    onStateChange,
+    curveKeys: CURVE_KEYS,
+    curvesOf: ndfCurves,
+    views: { plots: createNdfPlots, spheres: createNdfSpheres, table: createNdfTable },
+    drawCurves: (plots, curves) => plots.drawLinear(curves),
+    afterChange(plots, changed, curves, state) {
+      if (changed.some((k) => LOG_KEYS.includes(k))) plots.drawLog(curves, state);
+    },
+    describeSpheres,
   });
-  const plotHolder = document.createElement('div');
-  shell.view.append(plotHolder);
-  let curves = ndfCurves(shell.state);
-  const plots = createNdfPlots(plotHolder, curves, shell.state);
-  const spheres = createNdfSpheres(shell.view);
-  const table = createNdfTable(shell.view);
-
-  const drawSpheres = () => {
-    spheres.draw(curves, shell.state);
-    shell.describe(describeSpheres(curves, shell.state), spheres.canvas);
-  };
-  const onChanged = (changed) => {
-    if (changed.some((k) => CURVE_KEYS.includes(k))) {
-      curves = ndfCurves(shell.state);
-      plots.drawLinear(curves);
-      table.draw(curves);
-    }
-    if (changed.some((k) => LOG_KEYS.includes(k))) plots.drawLog(curves, shell.state);
-    drawSpheres();
-  };
-  table.draw(curves);
-  drawSpheres();
-  const update = shell.connect({ title: TITLE, onChanged, onStateChange });
+  const { shell, plots } = explorer;
 
   return {
-    update,
+    update: explorer.update,
     getState: () => shell.state,
-    getIntegrals: () => Object.fromEntries(curves.map((c) => [c.key, c.integral])),
+    getIntegrals: () => Object.fromEntries(explorer.curves().map((c) => [c.key, c.integral])),
     /** The log plot's measured curve as uPlot holds it: its label and the (θh, value) points drawn. */
     getMeasuredCurve: () => (shell.state.measured.length ? plots.measuredCurve() : null),
-    dispose() {
-      plots.dispose();
-      spheres.dispose();
-      shell.dispose();
-    },
+    dispose: explorer.dispose,
   };
 }
 

@@ -3,23 +3,9 @@
 import * as THREE from 'three';
 import { RoomEnvironment } from 'three/addons/environments/RoomEnvironment.js';
 import { createViewport } from '../../core/gpu/viewport.js';
+import { drawSideBySide } from '../../core/ui/side-by-side.js';
 
 const SPHERE_ROUGHNESS = [0.05, 0.2, 0.4, 0.7];
-
-/** Draws each material on the sphere in its own square, side by side. */
-function drawSideBySide(renderer, { scene, camera, mesh, materials, size }) {
-  const w = size.x / materials.length;
-  renderer.setScissorTest(true);
-  materials.forEach((m, i) => {
-    mesh.material = m;
-    const [x0, x1] = [Math.round(i * w), Math.round((i + 1) * w)];
-    const side = Math.min(x1 - x0, size.y);
-    renderer.setViewport(x0 + (x1 - x0 - side) / 2, (size.y - side) / 2, side, side);
-    renderer.setScissor(x0, 0, x1 - x0, size.y);
-    renderer.render(scene, camera);
-  });
-  renderer.setScissorTest(false);
-}
 
 const roughnessLabels = () => {
   const labels = Object.assign(document.createElement('div'), { className: 'sphere-labels' });
@@ -40,7 +26,6 @@ export function createSpheresView(container) {
   const mesh = new THREE.Mesh(geometry);
   scene.add(mesh);
   let pmrem = null;
-  const drawSize = new THREE.Vector2();
   const viewport = createViewport(container, {
     label: `Four metal spheres reflecting a room, roughness ${SPHERE_ROUGHNESS.join(', ')}`,
     onContextLost() {
@@ -55,7 +40,10 @@ export function createSpheresView(container) {
         scene.environment = pmrem.texture;
         scene.background = new THREE.Color('#2a2d33');
       }
-      drawSideBySide(renderer, { scene, camera, mesh, materials, size: renderer.getSize(drawSize) });
+      drawSideBySide(renderer, materials.length, (i) => {
+        mesh.material = materials[i];
+        renderer.render(scene, camera);
+      });
     },
   });
   if (viewport) {

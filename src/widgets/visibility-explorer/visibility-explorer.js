@@ -1,6 +1,6 @@
 // visibility-explorer: every geometry/visibility term of the talk against angle at one roughness, how far
 // each is from height-correlated Smith, and what that does to a sphere's edges.
-import { createWidgetShell } from '../../core/framework/widget-shell.js';
+import { createCurveExplorer } from '../../core/ui/curve-explorer.js';
 import { schema } from './schema.js';
 import { visibilityCurves } from './model.js';
 import { createVisibilityPlots } from './plots.js';
@@ -13,46 +13,22 @@ export { schema };
 const CURVE_KEYS = ['alpha', 'config', 'viewTheta', 'terms'];
 
 export function createVisibilityExplorer(container, initialState = {}, { onStateChange, locked } = {}) {
-  const shell = createWidgetShell(container, {
-    name: 'visibility-explorer',
-    schema,
-    initialState,
-    locked,
-    about: ABOUT,
-    terms: TERMS_USED,
+  const explorer = createCurveExplorer(container, {
+    shell: { name: 'visibility-explorer', schema, initialState, locked, about: ABOUT, terms: TERMS_USED },
+    title: TITLE,
+    onStateChange,
+    curveKeys: CURVE_KEYS,
+    curvesOf: visibilityCurves,
+    views: { plots: createVisibilityPlots, spheres: createVisibilitySpheres, table: createVisibilityTable },
+    drawCurves: (plots, curves, state) => plots.draw(curves, state),
+    describeSpheres,
   });
-  const plotHolder = document.createElement('div');
-  shell.view.append(plotHolder);
-  let curves = visibilityCurves(shell.state);
-  const plots = createVisibilityPlots(plotHolder, curves, shell.state);
-  const spheres = createVisibilitySpheres(shell.view);
-  const table = createVisibilityTable(shell.view);
-
-  const drawSpheres = () => {
-    spheres.draw(curves, shell.state);
-    shell.describe(describeSpheres(curves, shell.state), spheres.canvas);
-  };
-  const onChanged = (changed) => {
-    if (changed.some((k) => CURVE_KEYS.includes(k))) {
-      curves = visibilityCurves(shell.state);
-      plots.draw(curves, shell.state);
-      table.draw(curves);
-    }
-    drawSpheres();
-  };
-  table.draw(curves);
-  drawSpheres();
-  const update = shell.connect({ title: TITLE, onChanged, onStateChange });
 
   return {
-    update,
-    getState: () => shell.state,
-    getWorstErrors: () => Object.fromEntries(curves.map((c) => [c.key, c.worst])),
-    dispose() {
-      plots.dispose();
-      spheres.dispose();
-      shell.dispose();
-    },
+    update: explorer.update,
+    getState: () => explorer.shell.state,
+    getWorstErrors: () => Object.fromEntries(explorer.curves().map((c) => [c.key, c.worst])),
+    dispose: explorer.dispose,
   };
 }
 
