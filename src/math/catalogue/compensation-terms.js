@@ -20,7 +20,7 @@ export const COMPENSATION_FAMILY = {
     none: {
       key: 'none',
       label: 'None (single scattering)',
-      short: 'None',
+      short: 'single scattering',
       cite: 'Walter et al. 2007; Heitz 2014',
       js: null,
       evaluate: null,

@@ -7,7 +7,7 @@ import { rgbToHex } from '../../core/ui/palettes.js';
 import { albedoTableOnce } from '../../core/gpu/albedo-table-texture.js';
 import { linearToSrgb } from '../../math/color.js';
 import { materialByKey } from '../../math/materials.js';
-import { termEntry, termLabel } from '../../math/catalogue/index.js';
+import { termEntry } from '../../math/catalogue/index.js';
 import { COMPENSATIONS, WALK_DEGREES, WALK_PATHS, albedoCurves, saturation } from './compensation.js';
 
 const CHANNELS = [
@@ -73,7 +73,7 @@ function plotSpec({ metal, alpha, curves, walk }) {
 
 function swatchTable({ metal, alpha, curves, walk }) {
   const walkRow = [`random walk (${WALK_PATHS / 1000}k paths${walk ? '' : ', running'})`, walk?.[0].albedo];
-  const rows = [...COMPENSATIONS.map((key) => [termLabel('compensation', key), curves[key][0]]), walkRow];
+  const rows = [...COMPENSATIONS.map((key) => [termEntry('compensation', key).short, curves[key][0]]), walkRow];
   const swatch = (rgb) => `<span class="swatch" style="background:${rgbToHex(rgb.map(linearToSrgb))}"></span>`;
   const row = ([name, rgb]) =>
     rgb
