@@ -22,7 +22,8 @@ float ashikhminShirleyFactor(float c) {
 }
 float diffuseAshikhminShirley(float nl, float nv, float f0, float cdiff) {
   if (!(nl > 0.0 && nv > 0.0)) return 0.0;
-  return 28.0 / (23.0 * PI) * saturate(cdiff) * (1.0 - saturate(f0)) * ashikhminShirleyFactor(nl) * ashikhminShirleyFactor(nv);
+  return 28.0 / (23.0 * PI) * saturate(cdiff) * (1.0 - saturate(f0)) * ashikhminShirleyFactor(nl) *
+         ashikhminShirleyFactor(nv);
 }
 
 float diffuseOrenNayar(float nl, float nv, float cosPhiDiff, float sigma, float cdiff) {

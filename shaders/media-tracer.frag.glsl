@@ -69,7 +69,8 @@ void main() {
       if (t >= tExit) {
         logPdf -= ss * tExit;
         pathLength += tExit;
-        vec3 mis = 3.0 / vec3(dot(exp(logPdf - logPdf.r), vec3(1.0)), dot(exp(logPdf - logPdf.g), vec3(1.0)), dot(exp(logPdf - logPdf.b), vec3(1.0)));
+        vec3 mis = 3.0 / vec3(dot(exp(logPdf - logPdf.r), vec3(1.0)), dot(exp(logPdf - logPdf.g), vec3(1.0)),
+                              dot(exp(logPdf - logPdf.b), vec3(1.0)));
         radiance = roulette * mis * transmittance(sa, pathLength) * environment(o + d * tExit, d);
         break;
       }

@@ -11,7 +11,9 @@ float ndfGGXFromSin2(float cosThetaM, float sin2ThetaM, float alpha) {
   float t = a / d;
   return t * t / PI;
 }
-float ndfGGX(float cosThetaM, float alpha) { return ndfGGXFromSin2(cosThetaM, sin2FromCos(min(cosThetaM, 1.0)), alpha); }
+float ndfGGX(float cosThetaM, float alpha) {
+  return ndfGGXFromSin2(cosThetaM, sin2FromCos(min(cosThetaM, 1.0)), alpha);
+}
 
 float log1pSmall(float x) {
   return abs(x) < 1e-2 ? x * (1.0 - x * (0.5 - x * (1.0 / 3.0 - x / 4.0))) : log(1.0 + x);
@@ -42,7 +44,9 @@ float ndfBeckmannFromSin2(float cosThetaM, float sin2ThetaM, float alpha) {
   if (e > 80.0) return 0.0;
   return exp(-e) / (PI * a2 * c2 * c2);
 }
-float ndfBeckmann(float cosThetaM, float alpha) { return ndfBeckmannFromSin2(cosThetaM, sin2FromCos(min(cosThetaM, 1.0)), alpha); }
+float ndfBeckmann(float cosThetaM, float alpha) {
+  return ndfBeckmannFromSin2(cosThetaM, sin2FromCos(min(cosThetaM, 1.0)), alpha);
+}
 
 float expm1OverX(float x) {
   return abs(x) < 1e-2 ? 1.0 + x / 2.0 + x * x / 6.0 + x * x * x / 24.0 : (exp(x) - 1.0) / x;

@@ -33,7 +33,8 @@ describe('<shading-lab-widget> iframe URL', () => {
       'https://lab.example.org/course/deck.html',
     );
     expect(same.href).toBe('https://lab.example.org/course/embed.html?w=ndf-explorer');
-    expect(frameUrl('https://lab.example.org/embed.html', 'media', '', 'null').searchParams.has('origins')).toBe(false); // a file:// page
+    // a file:// page
+    expect(frameUrl('https://lab.example.org/embed.html', 'media', '', 'null').searchParams.has('origins')).toBe(false);
   });
 });
 
