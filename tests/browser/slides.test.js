@@ -3,7 +3,7 @@
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { gzipSync } from 'node:zlib';
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { afterAll, beforeAll, describe, expect, it, onTestFinished } from 'vitest';
 import { ROOT, openPage, settle } from './harness.js';
 import { longDeck, serveDecks } from './decks.js';
 import { baseUrl, launchBrowser, withPixels } from './helpers.js';
@@ -240,8 +240,12 @@ describe('reveal.js plugin (reveal.js 6 from node_modules, the app on another or
     await page.close();
   }, 180_000);
 
-  it('a 40-slide deck: at most three live widgets, each current one draws, no context lost', async () => {
+  // retried: a call into a cross-origin frame that reveal has just removed sometimes never answers (seen in a few
+  // full runs, under load or beside another file); each read is bounded, but a stuck slide can use up an attempt
+  const retried = { timeout: 150_000, retry: 2 };
+  it('a 40-slide deck: at most three live widgets, each current one draws, no context lost', retried, async () => {
     const page = await openDeck(`/long-deck.html?lab=${lab()}`);
+    onTestFinished(() => page.close().catch(() => {})); // an attempt that timed out leaves no live deck behind
     await page.waitForFunction(() => document.querySelector('.reveal.ready'), { timeout: 30_000 });
     let most = 0;
     for (let i = 0; i < 40; i++) {
@@ -259,8 +263,7 @@ describe('reveal.js plugin (reveal.js 6 from node_modules, the app on another or
     expect(await waitForPicture(page)).toBeGreaterThan(0.2);
     expect(page.errors).toEqual([]);
     expect(page.warnings).toEqual([]);
-    await page.close();
-  }, 240_000);
+  });
 
   it('print view (?print-pdf): each widget is a still image in the state of its printed page', async () => {
     const page = await openDeck(`/examples/deck/index.html?print-pdf&lab=${lab()}`);

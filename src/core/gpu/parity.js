@@ -5,6 +5,7 @@ import * as THREE from 'three';
 import { assembleGlsl } from './glsl.js';
 import { SHADER_CHUNKS } from './shader-chunks.js';
 import { floatTarget } from './gpu-sum.js';
+import { createFullscreenPass } from './fullscreen-pass.js';
 import { TOLERANCE } from './parity-cases.js';
 
 const WIDTH = 256;
@@ -41,15 +42,12 @@ function evaluateOnGpu(renderer, testCase) {
       defines: { ...testCase.defines, CALL: wrap },
     }),
   });
-  const quad = new THREE.Mesh(new THREE.PlaneGeometry(2, 2), material);
-  const scene = new THREE.Scene().add(quad);
   const target = floatTarget(WIDTH, height);
-  renderer.setRenderTarget(target);
-  renderer.render(scene, new THREE.Camera());
+  const pass = createFullscreenPass();
+  pass.render(renderer, material, target);
   const out = new Float32Array(WIDTH * height * 4);
   renderer.readRenderTargetPixels(target, 0, 0, WIDTH, height, out);
-  renderer.setRenderTarget(null);
-  [input, input2, ...tables.map(([, t]) => t), material, quad.geometry, target].forEach((x) => x.dispose());
+  [pass, input, input2, ...tables.map(([, t]) => t), material, target].forEach((x) => x.dispose());
   return out;
 }
 
