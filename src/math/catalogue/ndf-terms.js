@@ -2,18 +2,10 @@
 // The normal distributions D(n·h) of the microfacet BRDF. evaluate(c, p, s2): s2 = sin²θh when known from the
 // half vector itself (h.x² + h.y², precise near n), else taken from c. The ranges are the ones ndf.js clamps to.
 import { ndfABC, ndfBeckmannFromSin2, ndfBlinnPhongFromSin2, ndfGGXFromSin2, ndfSGD } from '../ndf.js';
-import { terms } from './term.js';
+import { ALPHA as alpha, terms } from './term.js';
 
 /** @param {number} c */
 const sin2 = (c) => (1 - c) * (1 + c);
-const alpha = {
-  min: 1e-4,
-  max: 1,
-  unit: '',
-  label: 'Roughness α',
-  clamped: true,
-  delicate: [1e-5, 1e-3, 0.01, 0.1, 0.3, 0.5],
-};
 
 const NDF = { definePrefix: 'NDF', chunk: 'ndf.glsl' };
 

@@ -11,6 +11,16 @@
  *   Partial<Pick<TermEntry, 'short' | 'chunk' | 'define'>>} OwnTerm
  */
 
+/** The microfacet roughness α every D and V term reads: its range, and the delicate values the stress grids sweep. */
+export const ALPHA = {
+  min: 1e-4,
+  max: 1,
+  unit: '',
+  label: 'Roughness α',
+  clamped: true,
+  delicate: [1e-5, 1e-3, 0.01, 0.1, 0.3, 0.5],
+};
+
 /**
  * A camelCase key in SCREAMING_SNAKE, as defines spell it: 'blinnPhong' → 'BLINN_PHONG', an acronym one word
  * ('smithGGXSeparable' → 'SMITH_GGX_SEPARABLE').

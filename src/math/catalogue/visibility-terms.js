@@ -10,15 +10,7 @@ import {
   visibilitySmithGGXCorrelatedFast,
   visibilitySmithGGXSeparable,
 } from '../visibility.js';
-
-const alpha = {
-  min: 1e-4,
-  max: 1,
-  unit: '',
-  label: 'Roughness α',
-  clamped: true,
-  delicate: [1e-5, 1e-3, 0.01, 0.1, 0.3, 0.5],
-};
+import { ALPHA as alpha } from './term.js';
 
 /**
  * A term of roughness alpha whose functions take (nl, nv, alpha) alike (names spelled out: a bundle may
