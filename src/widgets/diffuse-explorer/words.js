@@ -35,7 +35,7 @@ export const describeSpheres = (state) =>
   `Spheres with a diffuse term only (c_diff ${state.cdiff}, F0 ${state.f0}, ${sigmaText(state.sigma)}), light ` +
   `${state.lightTheta}° from the view: ${state.models.map((k) => termLabel('diffuse', k)).join(', ')}.`;
 
-const C = '\\sym{cdiff}{c_{\\text{diff}}}';
+const C = '\\sym{cdiff}{\\mathbf{c}_{\\text{diff}}}';
 const HALF5 = (x) => `\\left(1 - \\left(1 - \\tfrac{\\mathbf{n}\\cdot\\mathbf{${x}}}{2}\\right)^5\\right)`;
 const ON_A = (s2) => 1 - (0.5 * s2) / (s2 + 0.33);
 const ON_B = (s2) => (0.45 * s2) / (s2 + 0.09);

@@ -49,7 +49,7 @@ export function describeFurnace(sweep, compensation, metal) {
 
 const E_OF = 'E(\\mu_o) = \\int_\\Omega f(\\mathbf{l},\\mathbf{v})\\nl \\,d\\omega_l';
 const COMPENSATION_TEX = {
-  none: 'f = f_{\\text{ss}}',
+  none: 'f = f_{\\text{ss}}\\quad \\text{(single scattering only)}',
   kullaConty:
     'f = f_{\\text{ss}} + f_{\\text{ms}},\\ f_{\\text{ms}} =' +
     ' \\frac{(1 - E(\\mu_o))(1 - E(\\mu_i))}{\\pi(1 - E_{\\text{avg}})}',
