@@ -1,6 +1,7 @@
-// Typeset formulas in Chromium: the visibility chapter's formulas become MathML that the browser lays out.
+// Typeset formulas in Chromium: every chapter's formulas become MathML that the browser lays out, and a widget's
+// live formula shows the model's numbers (recomputed here from the closed form) and lights up with its controls.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { launchBrowser, open, settle } from './helpers.js';
+import { launchBrowser, open, setControl, settle, widget } from './helpers.js';
 
 let browser;
 beforeAll(async () => {
@@ -10,15 +11,34 @@ afterAll(async () => {
   await browser?.close();
 });
 
+/** Waits until every data-tex element and every live formula of the page is MathML. */
+const typeset = (page) =>
+  page.waitForFunction(
+    () =>
+      [...document.querySelectorAll('[data-tex], .widget-formula')].every((el) => el.querySelector('math')) &&
+      document.querySelectorAll('.widget-formula').length === document.querySelectorAll('[data-widget]').length,
+    { timeout: 60_000 },
+  );
+
+/** What the page's formulas came out as: counts, layout sizes, and any formula KaTeX refused. */
+const formulaReport = (page) =>
+  page.evaluate(() => {
+    const all = [...document.querySelectorAll('[data-tex], .widget-formula')];
+    return {
+      count: all.length,
+      refused: all.filter((el) => el.title.startsWith('Formula not typeset')).map((el) => el.dataset.tex),
+      unlaid: all
+        .map((el) => el.querySelector('math'))
+        .filter((m) => m.closest('[hidden]') === null && m.getBoundingClientRect().width < 4).length,
+    };
+  });
+
 describe('formulas', () => {
   it('visibility.html: the talk’s f = F G D / (4 (n·l)(n·v)) and V = G / ((n·l)(n·v)) as laid-out MathML', async () => {
     const page = await open(browser, 'visibility.html');
-    await page.waitForFunction(
-      () => document.querySelectorAll('.formula math').length === document.querySelectorAll('.formula').length,
-      { timeout: 30_000 },
-    );
+    await typeset(page);
     await settle(page, 300);
-    const first = await page.$eval('.formula math', (m) => {
+    const first = await page.$eval('p.formula math', (m) => {
       const fracs = [...m.querySelectorAll('mfrac')];
       const text = (el) => el.textContent.replace(/\s+/g, '');
       return {
@@ -36,7 +56,74 @@ describe('formulas', () => {
       ['F(𝐥,𝐡)V(𝐥,𝐯)D(𝐡)', '4'],
       ['G(𝐥,𝐯,𝐡)', '(𝐧⋅𝐥)(𝐧⋅𝐯)'],
     ]);
-    expect(await page.$eval('.formula', (p) => p.title)).toMatch(/^f\(l, v\) = F\(l, h\)/); // the plain form stays
+    expect(await page.$eval('p.formula', (p) => p.title)).toMatch(/^f\(l, v\) = F\(l, h\)/); // the plain form stays
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  const CHAPTERS = ['fresnel', 'media', 'microfacets', 'ndf', 'brdf', 'diffuse', 'rendering'];
+  it.each(CHAPTERS)('%s.html: every formula and every widget’s live formula is laid-out MathML', async (name) => {
+    const page = await open(browser, `${name}.html`);
+    await typeset(page);
+    await settle(page, 300);
+    const report = await formulaReport(page);
+    expect(report.count).toBeGreaterThan(1);
+    expect(report.refused).toEqual([]);
+    expect(report.unlaid).toBe(0);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('fresnel-curves: F0 = ((n − 1)/(n + 1))² follows the IOR control, and its symbol lights up with it', async () => {
+    const page = await open(browser, 'embed.html?w=fresnel-curves&materials=custom');
+    await widget(page, 'fresnel-curves');
+    await typeset(page);
+    const formulaText = () => page.$eval('.widget-formula math', (m) => m.textContent);
+    for (const n of [2, 1.33]) {
+      await setControl(page, 'Custom IOR', n);
+      const f0 = ((n - 1) / (n + 1)) ** 2; // the closed form, here
+      await page.waitForFunction(
+        (x) => document.querySelector('.widget-formula math')?.textContent.includes(x),
+        {
+          timeout: 10_000,
+        },
+        f0.toFixed(3),
+      );
+      expect(await formulaText()).toContain((1 - f0).toFixed(3)); // Schlick's 1 − F0
+    }
+
+    const lit = () =>
+      page.evaluate(() => ({
+        symbols: [...document.querySelectorAll('.widget-formula [data-symbol="ior"]')].map((s) =>
+          s.classList.contains('is-lit'),
+        ),
+        control: [...document.querySelectorAll('.lil-controller.is-lit')].map(
+          (c) => c.querySelector('.lil-name').textContent,
+        ),
+      }));
+    const iorInput = await page.evaluateHandle(() =>
+      [...document.querySelectorAll('.lil-controller')]
+        .find((c) => c.querySelector('.lil-name').textContent === 'Custom IOR')
+        .querySelector('input'),
+    );
+    // focusing the control lights its symbol (both occurrences of n), leaving it puts it out
+    await iorInput.focus();
+    expect(await lit()).toEqual({ symbols: [true, true], control: ['Custom IOR'] });
+    await page.evaluate(() => document.activeElement.blur());
+    expect(await lit()).toEqual({ symbols: [false, false], control: [] });
+    // hovering the symbol lights its control, and back
+    const symbol = await page.$('.widget-formula [data-symbol="ior"]');
+    await symbol.hover();
+    expect((await lit()).control).toEqual(['Custom IOR']);
+    await page.mouse.move(1, 1);
+    expect((await lit()).control).toEqual([]);
+    // the symbol is in the tab order; Enter on it goes to its control
+    expect(await symbol.evaluate((s) => (s.focus(), document.activeElement === s && s.tabIndex))).toBe(0);
+    expect((await lit()).control).toEqual(['Custom IOR']);
+    await page.keyboard.press('Enter');
+    expect(await page.evaluate(() => document.activeElement.closest('.lil-controller')?.textContent)).toMatch(
+      /^Custom IOR/,
+    );
     expect(page.errors).toEqual([]);
     await page.close();
   });

@@ -1,31 +1,149 @@
-// The formulas on the pages: every data-tex in every HTML page parses with KaTeX, and comes out as MathML.
+// The formulas: every data-tex of every HTML page parses with KaTeX as MathML, and every widget's live formula
+// (declared in its words.js) parses for each of its choices, names only its own state keys as symbols, and
+// shows the model's numbers, recomputed here from the closed forms.
 import { readFileSync, readdirSync } from 'node:fs';
 import { join } from 'node:path';
 import katex from 'katex';
 import { describe, expect, it } from 'vitest';
+import { FORMULA_MACROS, TALK_MACROS, declaredFormula } from '../../src/core/framework/formula-registry.js';
+import { coerceState, defaultState } from '../../src/core/framework/state.js';
+import { WIDGETS } from '../../src/widgets/registry.js';
 
 const ROOT = join(import.meta.dirname, '../..');
 const decode = (s) =>
   s.replaceAll('&quot;', '"').replaceAll('&lt;', '<').replaceAll('&gt;', '>').replaceAll('&amp;', '&');
-const formulas = readdirSync(ROOT)
-  .filter((f) => f.endsWith('.html'))
-  .flatMap((page) =>
-    [...readFileSync(join(ROOT, page), 'utf8').matchAll(/data-tex="([^"]*)"/g)].map((m) => ({
-      page,
-      tex: decode(m[1]),
-    })),
-  );
+const PAGES = readdirSync(ROOT).filter((f) => f.endsWith('.html'));
+const formulas = PAGES.flatMap((page) =>
+  [...readFileSync(join(ROOT, page), 'utf8').matchAll(/data-tex="([^"]*)"/g)].map((m) => ({
+    page,
+    tex: decode(m[1]),
+  })),
+);
+const mathml = (tex, macros = TALK_MACROS, trust = false) =>
+  katex.renderToString(tex, { output: 'mathml', displayMode: true, throwOnError: true, macros: { ...macros }, trust });
 
-describe('formulas', () => {
-  it('there are some', () => expect(formulas.length).toBeGreaterThan(0));
+describe('formulas on the pages', () => {
+  // the chapters whose prose has formulas (exercises and performance are typeset by their owners)
+  const CHAPTERS = ['fresnel', 'media', 'microfacets', 'ndf', 'visibility', 'brdf', 'diffuse', 'rendering'];
+  it.each(CHAPTERS)('%s.html has typeset formulas', (name) => {
+    expect(formulas.filter((f) => f.page === `${name}.html`).length).toBeGreaterThan(0);
+  });
 
   for (const { page, tex } of formulas) {
     it(`${page}: ${tex.slice(0, 60)}…`, () => {
-      const html = katex.renderToString(tex, { output: 'mathml', displayMode: true, throwOnError: true });
+      const html = mathml(tex);
       expect(html).toMatch(
         /^<span class="katex"><math xmlns="http:\/\/www.w3.org\/1998\/Math\/MathML" display="block">/,
       );
-      expect(html).not.toMatch(/katex-error|style=/); // MathML only: nothing a strict style policy would block
+      expect(html).not.toMatch(/katex-error|\sstyle=/); // MathML only: nothing a strict style policy would block
     });
   }
+});
+
+/** Each widget's states to try: the default, and every option of each enum and set field on its own. */
+function statesOf(schema) {
+  const base = defaultState(schema);
+  const variants = Object.entries(schema).flatMap(([key, f]) => {
+    if (f.type === 'enum') return Object.keys(f.options).map((v) => ({ [key]: v }));
+    if (f.type === 'set') return [[], ...Object.keys(f.options).map((v) => [v])].map((v) => ({ [key]: v }));
+    if (f.type === 'bool') return [{ [key]: !f.default }];
+    if (f.type === 'number') return [{ [key]: f.min }, { [key]: f.max }];
+    return [];
+  });
+  return [base, ...variants.map((v) => coerceState(schema, v, base).state)];
+}
+
+const loaded = Object.fromEntries(
+  await Promise.all(Object.entries(WIDGETS).map(async ([name, w]) => [name, (await w.load()).widget])),
+);
+const texOf = (name, partial = {}) => {
+  const { schema } = loaded[name];
+  return declaredFormula(name)(coerceState(schema, partial, defaultState(schema)).state);
+};
+
+describe('live formulas', () => {
+  it.each(Object.keys(WIDGETS))('%s: typesets in every choice, its symbols all state keys', (name) => {
+    const texOf = declaredFormula(name);
+    expect(texOf).toBeTypeOf('function');
+    const { schema } = loaded[name];
+    for (const state of statesOf(schema)) {
+      const tex = texOf(state);
+      const html = mathml(tex, FORMULA_MACROS, (c) => c.command === '\\href' && c.url.startsWith('#sym:'));
+      expect(html).not.toMatch(/katex-error|\sstyle=/);
+      const keys = [...html.matchAll(/href="#sym:([^"]*)"/g)].map((m) => m[1]);
+      expect(keys.filter((k) => !Object.hasOwn(schema, k))).toEqual([]);
+    }
+  });
+
+  // the numbers shown, against closed forms computed here
+  const shows = (tex, x, digits = 3) => expect(tex).toContain(x.toFixed(digits));
+
+  it('fresnel-curves: F0 = ((n − 1)/(n + 1))² of the custom n, and Schlick’s 1 − F0', () => {
+    const tex = texOf('fresnel-curves', { materials: ['custom'], ior: 1.7 });
+    const f0 = ((1.7 - 1) / (1.7 + 1)) ** 2;
+    shows(tex, f0);
+    shows(tex, 1 - f0);
+    expect(tex).toContain('\\sym{ior}{1.70}');
+  });
+
+  it('brdf-lobe: f = F G D / (4 (n·l)(n·v)) with GGX, height-correlated Smith and Schlick, in closed form', () => {
+    const [a, f0, tl, tv] = [0.4, 0.04, 30, 50];
+    const tex = texOf('brdf-lobe', { alpha: a, f0, lightTheta: tl, viewTheta: tv });
+    const DEG = Math.PI / 180;
+    const l = [-Math.sin(tl * DEG), 0, Math.cos(tl * DEG)];
+    const v = [Math.sin(tv * DEG), 0, Math.cos(tv * DEG)];
+    const h = l.map((x, i) => x + v[i]);
+    const len = Math.hypot(...h);
+    const [nl, nv, nh] = [l[2], v[2], h[2] / len];
+    const lh = (l[0] * h[0] + l[2] * h[2]) / len;
+    const F = f0 + (1 - f0) * (1 - lh) ** 5;
+    const D = a ** 2 / (Math.PI * (nh ** 2 * (a ** 2 - 1) + 1) ** 2);
+    const V = 2 / (nv * Math.sqrt(nl ** 2 + a ** 2 * (1 - nl ** 2)) + nl * Math.sqrt(nv ** 2 + a ** 2 * (1 - nv ** 2)));
+    shows(tex, F);
+    shows(tex, D);
+    shows(tex, V * nl * nv); // G
+    shows(tex, (F * D * V) / 4); // f, 1/sr
+  });
+
+  it('ndf-explorer: GGX’s α and Beckmann’s α where D falls to half its peak at the matched half width', () => {
+    const t = (10 * Math.PI) / 180;
+    // D_tr(t)/D_tr(0) = 1/2 and D_b(t)/D_b(0) = 1/2, solved by bisection here
+    const bisect = (g) => {
+      let [lo, hi] = [1e-3, 1];
+      for (let i = 0; i < 60; i++) [lo, hi] = g((lo + hi) / 2) > 0.5 ? [lo, (lo + hi) / 2] : [(lo + hi) / 2, hi];
+      return (lo + hi) / 2;
+    };
+    const c = Math.cos(t);
+    const ggx = bisect((a) => (a * a) ** 2 / (a * a * c * c + 1 - c * c) ** 2); // D(t)/D(0), rising in α
+    const beckmann = bisect((a) => Math.exp(-(1 - c * c) / (c * c * a * a)) / c ** 4);
+    shows(texOf('ndf-explorer', { hwhm: 10, ndfs: ['ggx'] }), ggx);
+    shows(texOf('ndf-explorer', { hwhm: 10, ndfs: ['beckmann'] }), beckmann);
+  });
+
+  it('media: Beer–Lambert T = exp(−σt d) for clean water at 10 m', async () => {
+    const { MEDIA } = await import('../../src/widgets/media/schema.js');
+    const tex = texOf('media', { medium: 'water', distance: 1 });
+    const T = MEDIA.water.sigmaA.map((s, i) => Math.exp(-(s + MEDIA.water.sigmaS[i]) * 10));
+    for (const x of T) shows(tex, x);
+  });
+
+  it('diffuse-explorer: Lambert’s c_diff/π, and Oren–Nayar’s A and B from σ in radians', () => {
+    shows(texOf('diffuse-explorer', { models: ['lambert'], cdiff: 0.6 }), 0.6 / Math.PI);
+    const s2 = ((30 * Math.PI) / 180) ** 2;
+    const tex = texOf('diffuse-explorer', { models: ['orenNayarQualitative'], sigma: 30 });
+    shows(tex, 1 - (0.5 * s2) / (s2 + 0.33));
+    shows(tex, (0.45 * s2) / (s2 + 0.09));
+  });
+
+  it('subsurface-scale: mean free path 1/(σs + σa) and albedo σs/(σs + σa)', () => {
+    const tex = texOf('subsurface-scale', { sigmaS: 4, sigmaA: 1 });
+    expect(tex).toContain('\\ell = \\frac{1}{\\sigma_t} = 0.2\\');
+    shows(tex, 0.8);
+  });
+
+  it('radiance: the solid angle 2π(1 − cos θs) of a lamp of radius r at distance d', () => {
+    const tex = texOf('radiance', { lampRadius: 0.1, distance: 0.5 });
+    const omega = 2 * Math.PI * (1 - Math.sqrt(1 - 0.2 ** 2));
+    expect(tex).toContain(String(Number(omega.toPrecision(3))));
+  });
 });

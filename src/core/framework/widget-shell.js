@@ -7,6 +7,8 @@ import { createStateGui } from './gui.js';
 import { createLiveRegion, describeCanvas } from './describe.js';
 import { createShareBar, shareLink } from './share.js';
 import { registerPrintable } from './print.js';
+import { declaredFormula } from './formula-registry.js';
+import { controlElements, createLiveFormula } from './live-formula.js';
 
 /**
  * @typedef {object} ShellSpec
@@ -54,6 +56,9 @@ export function createWidgetShell(
   const first = coerceState(schema, initialState, defaultState(schema));
   if (first.notices.length) notices.show(first.notices);
   let state = first.state;
+  const texOf = declaredFormula(name); // the widget's live formula, declared in its words.js
+  const formula = texOf ? createLiveFormula(body, texOf) : null;
+  formula?.show(state);
   /** @type {ReturnType<typeof createStateGui> | null} */
   let gui = null;
   /** @type {(() => void) | null} */
@@ -106,16 +111,19 @@ export function createWidgetShell(
         if (!changed.length) return;
         gui?.sync(state);
         onChanged(changed);
+        formula?.show(state);
         onStateChange?.(state);
       };
       gui = createStateGui(controls, { schema, state, onChange: update, title, locked });
+      formula?.link(controlElements(gui.gui, schema));
       const getLink = () => shareLink(name, schema, state);
-      body.after(createShareBar({ title: title ?? name, getLink }));
+      (formula?.element ?? body).after(createShareBar({ title: title ?? name, getLink }));
       unprint = registerPrintable(root, title ?? name, getLink);
       return update;
     },
     dispose() {
       unprint?.();
+      formula?.dispose();
       gui?.dispose();
       live.dispose();
       root.remove();

@@ -1,5 +1,8 @@
 // The BRDF lobe's words: what it shows, the functions it names, and its pictures described for screen readers.
-import { lobePeak } from './model.js';
+import { declareFormula, texNumber } from '../../core/framework/formula-registry.js';
+import { brdfAngles } from '../../math/brdf.js';
+import { termEntry } from '../../math/catalogue/index.js';
+import { brdfSpec, factorsAt, lightDir, lobePeak, viewDir } from './model.js';
 
 export const TITLE = 'BRDF lobe';
 
@@ -77,3 +80,43 @@ export function describeLobe3d(state, scene) {
 
 /** A (θh, θd) image's BRDF in words. */
 export const describeImage = (state, p, alpha) => `${p.label}, α ${alpha}, F0 ${state.f0}, at φd ${state.phiD}°`;
+
+let memo = { key: '', spec: null }; // BRDF A's matched parameters: a root search for an NDF other than GGX
+function specA(state) {
+  const key = `${state.D}|${state.V}|${state.F}|${state.f0}|${state.alpha}`;
+  if (memo.key !== key) memo = { key, spec: brdfSpec(state, 'A') };
+  return memo.spec;
+}
+
+/** The symbolic BRDF A with the switched-off factors left out, each tied to its switch. */
+function symbolic(state) {
+  const top = [
+    state.useF && '\\sym{useF}{F(\\mathbf{l},\\mathbf{h})}',
+    state.useG && '\\sym{useG}{G(\\mathbf{l},\\mathbf{v},\\mathbf{h})}',
+    state.useD && '\\sym{useD}{D(\\mathbf{h})}',
+  ].filter(Boolean);
+  const bottom = '\\sym{useDenominator}{4\\nl \\nv }';
+  const numerator = top.join('\\,') || '1';
+  return state.useDenominator ? `\\frac{${numerator}}{${bottom}}` : numerator;
+}
+
+/** BRDF A at the light and view of the sliders: the factors, their values and f, in 1/sr. */
+export const FORMULA = declareFormula('brdf-lobe', (state) => {
+  const p = specA(state);
+  const [l, v] = [lightDir(state.lightTheta), viewDir(state.viewTheta)];
+  const a = brdfAngles(l, v);
+  const t = factorsAt(l, v, a, p);
+  const n = (x) => texNumber(x, 3);
+  const numbers = [state.useF && n(t.F), state.useG && n(t.G), state.useD && n(t.D)].filter(Boolean);
+  const valued = `\\frac{${numbers.join('\\cdot') || '1'}}{4\\cdot ${n(a.nl)}\\cdot ${n(a.nv)}}`;
+  const values = state.useDenominator ? valued : numbers.join('\\cdot') || '1';
+  const f = `f(\\mathbf{l},\\mathbf{v}) = ${symbolic(state)} = ${values} = ${n(t.f)}\\ \\mathrm{sr}^{-1}`;
+  const D = `D = \\sym{D}{D_{\\text{${termEntry('ndf', state.D).short}}}}`;
+  const G = `G = \\sym{V}{V_{\\text{${termEntry('visibility', state.V).short}}}}\\,\\nl \\nv `;
+  const F = state.F === 'one' ? '\\sym{F}{F = 1}' : `\\sym{F}{F_{\\text{Schlick}}},\\ \\sym{f0}{F_0 = ${n(state.f0)}}`;
+  const angles =
+    `\\sym{alpha}{\\alpha = ${texNumber(state.alpha, 2)}},\\ ` +
+    `\\sym{lightTheta}{\\theta_l = ${texNumber(state.lightTheta, 1)}^\\circ},\\ ` +
+    `\\sym{viewTheta}{\\theta_v = ${texNumber(state.viewTheta, 1)}^\\circ}`;
+  return `\\begin{gathered}${f}\\\\ ${D},\\ ${G},\\ ${F},\\ ${angles}\\end{gathered}`;
+});

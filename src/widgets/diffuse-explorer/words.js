@@ -1,4 +1,6 @@
 // The diffuse explorer's words: what it shows, the functions it names, and its spheres described for screen readers.
+import { declareFormula, texNumber } from '../../core/framework/formula-registry.js';
+import { DEG } from '../../math/angles.js';
 import { sigmaText } from '../../core/ui/sigma-range.js';
 import { termLabel } from '../../math/catalogue/index.js';
 
@@ -32,3 +34,46 @@ export const TERMS_USED = [
 export const describeSpheres = (state) =>
   `Spheres with a diffuse term only (c_diff ${state.cdiff}, F0 ${state.f0}, ${sigmaText(state.sigma)}), light ` +
   `${state.lightTheta}° from the view: ${state.models.map((k) => termLabel('diffuse', k)).join(', ')}.`;
+
+const C = '\\sym{cdiff}{\\mathbf{c}_{\\text{diff}}}';
+const HALF5 = (x) => `\\left(1 - \\left(1 - \\tfrac{\\mathbf{n}\\cdot\\mathbf{${x}}}{2}\\right)^5\\right)`;
+const ON_A = (s2) => 1 - (0.5 * s2) / (s2 + 0.33);
+const ON_B = (s2) => (0.45 * s2) / (s2 + 0.09);
+
+/** Each diffuse model as src/math/diffuse.js evaluates it, its constants computed from the state. */
+const DIFFUSE_TEX = {
+  lambert: (s) =>
+    `f_{\\text{Lambert}} = \\frac{${C}}{\\pi} = \\frac{${texNumber(s.cdiff, 2)}}{\\pi} =` +
+    ` ${texNumber(s.cdiff / Math.PI)}\\ \\mathrm{sr}^{-1}`,
+  fresnelWeighted: (s) =>
+    `f = (1 - F\\nl )(1 - F\\nv )\\frac{${C}}{\\pi},\\ ` +
+    `\\sym{f0}{F_0 = ${texNumber(s.f0, 2)}},\\ \\frac{${C}}{\\pi} =` +
+    ` ${texNumber(s.cdiff / Math.PI)}\\ \\mathrm{sr}^{-1}`,
+  ashikhminShirley: (s) =>
+    `f = \\frac{28}{23\\pi}${C}(1 - \\sym{f0}{F_0})${HALF5('l')}${HALF5('v')},\\ ` +
+    `\\frac{28}{23\\pi}${C}(1 - F_0) = ${texNumber((28 / (23 * Math.PI)) * s.cdiff * (1 - s.f0))}\\ \\mathrm{sr}^{-1}`,
+  orenNayar: (s, s2) =>
+    `f = \\frac{${C}}{\\pi}\\left(C_1 + \\cos\\phi\\,C_2\\tan\\beta +` +
+    ` (1 - |\\cos\\phi|)C_3\\tan\\tfrac{\\alpha + \\beta}{2}\\right)` +
+    ` + 0.17\\frac{${C}^2}{\\pi}\\frac{\\sigma^2}{\\sigma^2 +` +
+    ` 0.13}\\left(1 - \\cos\\phi\\left(\\tfrac{2\\beta}{\\pi}\\right)^2\\right),\\ ` +
+    `C_1 = 1 - \\frac{0.5\\sigma^2}{\\sigma^2 + 0.33} = ${texNumber(ON_A(s2))}`,
+  orenNayarQualitative: (s, s2) =>
+    `f = \\frac{${C}}{\\pi}(A + B\\max(0, \\cos\\phi)\\sin\\alpha\\tan\\beta),\\ ` +
+    `A = 1 - \\frac{0.5\\sigma^2}{\\sigma^2 + 0.33} = ${texNumber(ON_A(s2))},\\ B =` +
+    ` \\frac{0.45\\sigma^2}{\\sigma^2 + 0.09} = ${texNumber(ON_B(s2))}`,
+};
+
+/** The first chosen diffuse model, with c_diff, F0 and σ (in radians, as the model reads it) substituted. */
+export const FORMULA = declareFormula('diffuse-explorer', (state) => {
+  const key = state.models[0];
+  if (!key) return '\\sym{models}{\\text{no model chosen}}';
+  const sigma = state.sigma * DEG;
+  const line = `\\sym{models}{${DIFFUSE_TEX[key](state, sigma * sigma)}}`;
+  if (!key.startsWith('orenNayar')) return `${line},\\quad ${C} = ${texNumber(state.cdiff, 2)}`;
+  const on =
+    `\\alpha = \\max(\\theta_l, \\theta_v),\\ \\beta = \\min(\\theta_l, \\theta_v),\\ ` +
+    `\\sym{sigma}{\\sigma = ${texNumber(state.sigma, 1)}^\\circ =` +
+    ` ${texNumber(sigma, 3)}\\ \\text{rad}},\\ ${C} = ${texNumber(state.cdiff, 2)}`;
+  return `\\begin{gathered}${line}\\\\ ${on}\\end{gathered}`;
+});

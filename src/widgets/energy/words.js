@@ -1,4 +1,6 @@
 // The white furnace's words: what it shows, the functions it names, and its spheres described for screen readers.
+import { declareFormula, texNumber } from '../../core/framework/formula-registry.js';
+import { albedoGGX } from '../../math/integrate.js';
 
 export const TITLE = 'White furnace';
 
@@ -44,3 +46,30 @@ export function describeFurnace(sweep, compensation, metal) {
     `random walk ${walk} (R, G, B).`
   );
 }
+
+const E_OF = 'E(\\mu_o) = \\int_\\Omega f(\\mathbf{l},\\mathbf{v})\\nl \\,d\\omega_l';
+const COMPENSATION_TEX = {
+  none: 'f = f_{\\text{ss}}\\quad \\text{(single scattering only)}',
+  kullaConty:
+    'f = f_{\\text{ss}} + f_{\\text{ms}},\\ f_{\\text{ms}} =' +
+    ' \\frac{(1 - E(\\mu_o))(1 - E(\\mu_i))}{\\pi(1 - E_{\\text{avg}})}',
+  turquin: 'f = f_{\\text{ss}}\\left(1 + F_0\\,\\frac{1 - E(\\mu_o)}{E(\\mu_o)}\\right)',
+};
+let memo = { alpha: NaN, E: 0 }; // E head-on by quadrature: once per roughness
+const headOn = (alpha) => {
+  if (memo.alpha !== alpha) memo = { alpha, E: albedoGGX(1, alpha) };
+  return memo.E;
+};
+
+/** The furnace's albedo integral, the chosen compensation, and E head-on at the metal's roughness. */
+export const FORMULA = declareFormula('energy', (state) => {
+  const compensation = `\\sym{compensation}{${COMPENSATION_TEX[state.compensation]}}`;
+  const E = headOn(state.metalAlpha);
+  const metal =
+    `E(1) = ${texNumber(E)},\\ 1 - E(1) = ${texNumber(1 - E)}\\ \\text{lost at}\\ ` +
+    `\\sym{metalAlpha}{\\alpha = ${texNumber(state.metalAlpha, 2)}}`;
+  return (
+    `\\begin{gathered}${E_OF}\\ (F = 1,\\ D_{\\text{GGX}},\\ ` +
+    `V_{\\text{Smith corr.}})\\\\ ${compensation}\\\\ ${metal}\\end{gathered}`
+  );
+});

@@ -1,6 +1,7 @@
 // f0-tables, in words: the about text, the columns, the source line and the selection described.
 import { METALS, NON_METALS, TABLE_SOURCE } from '../../math/index.js';
-import { impliedIor, materialOf } from './model.js';
+import { declareFormula, texNumber, texText } from '../../core/framework/formula-registry.js';
+import { impliedIor, materialOf, recomputedSrgb } from './model.js';
 
 export const TITLE = 'F0 tables';
 
@@ -44,3 +45,20 @@ export function describeSelected(key) {
     `sRGB ${channels(m.srgb)}${ior}.`
   );
 }
+
+const triple = (values, digits) => `(${values.map((x) => texNumber(x, digits)).join(',\\ ')})`;
+
+/** The selected row: its linear F0 through the sRGB curve (IEC 61966-2-1) and, for a non-metal, its n. */
+export const FORMULA = declareFormula('f0-tables', (state) => {
+  const { material, metal } = materialOf(state.selected);
+  const row =
+    `\\sym{selected}{${texText(material.name)}}:\\ F_0 = ${triple(material.linear, 3)}` +
+    `\\ \\mapsto\\ \\sym{recomputed}{${triple(recomputedSrgb(material), 2)}}\\ \\text{in sRGB}`;
+  const srgb = 'C_{\\text{sRGB}} = 1.055\\,C^{1/2.4} - 0.055\\quad (C > 0.0031308)';
+  if (metal) return `\\begin{gathered}${row}\\\\ ${srgb}\\end{gathered}`;
+  const f0 = texNumber(material.linear[0]);
+  const ior =
+    `n = \\frac{1 + \\sqrt{F_0}}{1 - \\sqrt{F_0}} = \\frac{1 + \\sqrt{${f0}}}{1 - \\sqrt{${f0}}} = ` +
+    texNumber(impliedIor(material), 2);
+  return `\\begin{gathered}${row}\\\\ ${srgb}\\\\ ${ior}\\end{gathered}`;
+});

@@ -1,4 +1,7 @@
 // fresnel-curves, in words: the about text, the readout's caption and the plots' summary for screen readers.
+import { declareFormula, texNumber } from '../../core/framework/formula-registry.js';
+import { f0FromIor } from '../../math/fresnel.js';
+import { fresnelParams, materialByKey } from '../../math/materials.js';
 import { worstCurve } from './model.js';
 
 export const TITLE = 'Fresnel curves';
@@ -39,3 +42,39 @@ export function describeCurves(curves) {
     : '.';
   return `Fresnel reflectance against angle of incidence for ${named}${error}`;
 }
+
+const rgb = (values) => `(${values.map((x) => texNumber(x)).join(',\\ ')})`;
+
+/** F0 of the first chosen curve: the custom n's, or the first material's (per channel for a metal). */
+function firstF0(state) {
+  if (state.materials.includes('custom')) return [f0FromIor(state.ior)];
+  return state.materials.length ? fresnelParams(state.materials[0], state.conductor).f0 : [];
+}
+
+/** F0 of the first chosen curve: from the custom n in closed form, or the material's own (per channel). */
+function f0Line(state) {
+  if (state.materials.includes('custom')) {
+    const n = texNumber(state.ior, 2);
+    const f0 = texNumber(f0FromIor(state.ior));
+    const N = `\\sym{ior}{${n}}`;
+    return `F_0 = \\left(\\frac{n-1}{n+1}\\right)^2 = \\left(\\frac{${N}-1}{${N}+1}\\right)^2 = ${f0}`;
+  }
+  const key = state.materials[0];
+  if (!key) return '';
+  const { metal, f0 } = fresnelParams(key, state.conductor);
+  const value = metal ? rgb(f0) : texNumber(f0[0]);
+  const source = metal
+    ? `\\sym{conductor}{\\text{${state.conductor === 'measured' ? 'measured' : 'fitted'} } n, k}`
+    : 'n';
+  return `F_0 = \\frac{(n-1)^2 + k^2}{(n+1)^2 + k^2} = ${value}\\ \\text{(${materialByKey(key).name}, from }${source})`;
+}
+
+/** Schlick's approximation built from the first chosen curve's F0, as the dashed curves are. */
+export const FORMULA = declareFormula('fresnel-curves', (state) => {
+  const line = f0Line(state);
+  const f0 = firstF0(state);
+  const F0 = '\\sym{materials}{F_0}';
+  const value = f0.length === 1 ? ` = ${texNumber(f0[0])} + ${texNumber(1 - f0[0])}\\,(1 - \\cos\\theta)^5` : '';
+  const schlick = `\\sym{schlick}{F_{\\text{Schlick}}}(\\theta) = ${F0} + (1 - ${F0})(1 - \\cos\\theta)^5${value}`;
+  return line ? `\\begin{gathered}${line}\\\\ ${schlick}\\end{gathered}` : schlick;
+});

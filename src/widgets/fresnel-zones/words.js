@@ -1,4 +1,5 @@
 // fresnel-zones, in words: the about text, the legend's lines and the picture described for screen readers.
+import { declareFormula, texNumber } from '../../core/framework/formula-registry.js';
 import { ZONE_LABELS, paletteColourNames } from '../../core/ui/palettes.js';
 import { fresnelParams, materialByKey } from '../../math/materials.js';
 import { MODES, SHAPES } from './schema.js';
@@ -56,3 +57,37 @@ export function describeView(state, { zoneShares, averageShares }) {
     `Share of ${shareOf(state)} by zone of ${angleName(state)}: ${zoneList(zoneShares)}.${average}`
   );
 }
+
+const deg = (x) => `${texNumber(x, 0)}^\\circ`;
+const zoneOf = (angle) =>
+  `${angle} < 45^\\circ,\\quad 45^\\circ \\le ${angle} < 75^\\circ,\\quad ${angle} \\ge 75^\\circ`;
+
+/** Fresnel of n·v as the picture shades it: exact from the material's n (and k), or Schlick from its F0. */
+function fresnelNv(state) {
+  const p = fresnelParams(state.material, state.conductor);
+  const f0 = p.metal ? `(${p.f0.map((x) => texNumber(x)).join(',\\ ')})` : texNumber(p.f0[0]);
+  const name = `\\sym{material}{\\text{${materialByKey(state.material).name}}}`;
+  const F =
+    state.fresnel === 'schlick'
+      ? '\\sym{fresnel}{F_{\\text{Schlick}}}(\\mathbf{n},\\mathbf{v}) = F_0 + (1 - F_0)(1 - \\nv )^5'
+      : '\\sym{fresnel}{F_{\\text{exact}}}(\\mathbf{n}\\cdot\\mathbf{v};\\ n, k)';
+  return `${F},\\quad F_0 = ${f0}\\ (${name})`;
+}
+
+/** The light as the sliders place it, from the view. */
+const lightAt = (state) =>
+  `\\mathbf{l}:\\ \\theta = \\sym{lightTheta}{${deg(state.lightTheta)}},\\ \\phi =` +
+  ` \\sym{lightPhi}{${deg(state.lightPhi)}}`;
+
+/** The formula behind each mode: Fresnel of n·v, the zones of an angle, or l·h zones weighted by the BRDF. */
+export const FORMULA = declareFormula('fresnel-zones', (state) => {
+  if (state.mode === 'fresnel-nv') return fresnelNv(state);
+  if (state.mode === 'zones-nv') return `\\theta = \\arccos\\nv :\\quad ${zoneOf('\\theta')}`;
+  const zones = `\\theta_d = \\arccos\\lh :\\quad ${zoneOf('\\theta_d')}`;
+  if (!isWeighted(state)) return `\\begin{gathered}${zones}\\\\ ${lightAt(state)}\\end{gathered}`;
+  const a = `\\sym{alpha}{${texNumber(state.alpha, 2)}}`;
+  const weight =
+    `\\text{weight} = \\pi\\,\\frac{D_{\\text{GGX}}(\\mathbf{h})\\,V_{\\text{Smith}}(\\mathbf{l},\\mathbf{v})}{4}` +
+    `\\,\\nl ,\\quad \\alpha = ${a}`;
+  return `\\begin{gathered}${zones}\\\\ ${weight}\\\\ ${lightAt(state)}\\end{gathered}`;
+});

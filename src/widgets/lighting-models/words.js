@@ -1,4 +1,8 @@
 // The lighting-models widget's words: what it is about, where each model fails, the table and the description.
+import { declareFormula } from '../../core/framework/formula-registry.js';
+import { materialOf } from '../../lab/lab-scene.js';
+import { PUNCTUAL, brdfTex } from '../material-lab/words.js';
+import { TERMS } from './model.js';
 
 export const ABOUT =
   'The same sphere under the same sky, lit five ways. The first image solves the reflectance equation over all ' +
@@ -61,3 +65,14 @@ export function description(st, results, samples) {
     `four illumination models. ${errors}`
   );
 }
+
+const GENERAL =
+  'L_o(\\mathbf{v}) = \\int_{\\Omega} f(\\mathbf{l},\\mathbf{v}) \\otimes L_i(\\mathbf{l})\\nl \\,d\\omega_i';
+
+/** The BRDF every image shares, the reference's integral and the punctual sun that replaces its disc. */
+export const FORMULA = declareFormula('lighting-models', (state) => {
+  const keys = { alpha: 'alpha', f0: state.material === 'custom' ? 'f0' : 'material' };
+  const f = brdfTex(TERMS, materialOf(state), keys);
+  const lines = [f, `${GENERAL}\\quad\\text{(reference)}`, `${PUNCTUAL}\\quad\\text{(the sun as a point)}`];
+  return `\\begin{gathered}${lines.join('\\\\ ')}\\end{gathered}`;
+});

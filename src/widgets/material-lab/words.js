@@ -1,6 +1,9 @@
 // The material lab's words: what the widget is about, the terms it uses, and the captions and descriptions of
 // what it shows.
+import { declareFormula, texNumber, texText } from '../../core/framework/formula-registry.js';
 import { ENVIRONMENTS } from '../../lab/environments.js';
+import { materialOf } from '../../lab/lab-scene.js';
+import { termEntry } from '../../math/catalogue/index.js';
 import { MERL_TEXTURE_BYTES } from '../measured-brdf/texture-size.js';
 
 export const ABOUT =
@@ -88,3 +91,59 @@ export const NOTICES = {
   noFile: 'No environment file has been dropped yet: drop an .hdr or .exr panorama on the widget. Kept the studio.',
   dropText: 'Load an .hdr / .exr environment or a MERL .binary BRDF…',
 };
+
+const short = (family, key) => texText(termEntry(family, key).short);
+
+/**
+ * The lab's BRDF as TeX: the diffuse and specular layers with their terms named (each tied to the control of
+ * `keys`, the state key that chooses it, when the widget has one), then α and F0 of `material` (materialOf).
+ */
+export function brdfTex(terms, material, keys = {}) {
+  const tie = (key, tex) => (keys[key] ? `\\sym{${keys[key]}}{${tex}}` : tex);
+  const F = tie('F', terms.F === 'one' ? '1' : `F_{${short('fresnel', terms.F)}}`);
+  const D = tie('D', `D_{${short('ndf', terms.D)}}`);
+  const V = tie('V', `V_{${short('visibility', terms.V)}}`);
+  const single = `\\frac{${F}\\,${V}\\,${D}}{4}`;
+  const compensated = {
+    kullaConty: `${single} + ${tie('compensation', 'f_{\\text{ms}}')}`,
+    turquin: `${tie('compensation', '\\left(1 + F_0\\frac{1 - E}{E}\\right)')}${single}`,
+  };
+  const specular = compensated[terms.compensation] ?? single;
+  const diffuse = tie('diffuse', `f_{${short('diffuse', terms.diffuse)}}`);
+  const layers = { both: `${diffuse} + ${specular}`, specular, diffuse }[terms.layers];
+  const f0 = material.f0.every((x) => x === material.f0[0])
+    ? texNumber(material.f0[0])
+    : `(${material.f0.map((x) => texNumber(x)).join(',\\ ')})`;
+  const params = `${tie('alpha', `\\alpha = ${texNumber(material.alpha, 3)}`)},\\ ${tie('f0', `F_0 = ${f0}`)}`;
+  return `${tie('layers', 'f(\\mathbf{l},\\mathbf{v})')} = ${layers},\\quad ${params}`;
+}
+
+export const PUNCTUAL =
+  'L_o = \\pi f(\\mathbf{l}_c,\\mathbf{v}) \\otimes \\mathbf{c}_{\\text{light}}(\\mathbf{n}\\cdot\\mathbf{l}_c)';
+const KEYS = {
+  F: 'fresnel',
+  D: 'ndf',
+  V: 'visibility',
+  diffuse: 'diffuseModel',
+  layers: 'layers',
+  compensation: 'compensation',
+  alpha: 'alpha',
+};
+
+/** The lab's BRDF and, with the punctual light on, the talk's punctual-light equation with its c_light. */
+export const FORMULA = declareFormula('material-lab', (state) => {
+  const terms = {
+    F: state.fresnel,
+    D: state.ndf,
+    V: state.visibility,
+    diffuse: state.diffuseModel,
+    layers: state.layers,
+    compensation: state.compensation,
+  };
+  const f = brdfTex(terms, materialOf(state), { ...KEYS, f0: state.material === 'custom' ? 'f0' : 'material' });
+  if (!state.punctual) return f;
+  const light =
+    `${PUNCTUAL},\\quad \\sym{cLight}{\\mathbf{c}_{\\text{light}} = ${texNumber(state.cLight, 2)}},\\ ` +
+    `\\sym{lightTheta}{\\theta = ${texNumber(state.lightTheta, 0)}^\\circ}`;
+  return `\\begin{gathered}${f}\\\\ ${light}\\end{gathered}`;
+});

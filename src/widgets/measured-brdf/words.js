@@ -1,5 +1,7 @@
 // The measured-BRDF widget in words: the about text, the captions of its images, the status of the fits and
 // the table, and the pictures described for screen readers.
+import { declareFormula, texNumber, texText } from '../../core/framework/formula-registry.js';
+import { termEntry } from '../../math/catalogue/index.js';
 import { FIT_MODELS } from '../../measured/fit.js';
 import { MERL_TEXTURE_BYTES } from './texture-size.js';
 import { bestFit } from './model.js';
@@ -67,3 +69,19 @@ export function tooLargeWords(file, limitBytes) {
   const [size, limit] = [file.size, limitBytes].map((n) => n.toLocaleString('en'));
   return `${file.name}: ${size} bytes, more than a MERL file’s ${limit}. The BRDF shown before is kept.`;
 }
+
+const CUBE_ROOT = (which) => `(f_{\\text{${which}}}\\cos\\theta)^{1/3}`;
+
+/** The model fitted per channel (src/measured/fit.js), with the overlaid fit's D and V, and the error it minimises. */
+export const FORMULA = declareFormula('measured-brdf', (state) => {
+  const m = FIT_MODELS[state.overlay];
+  const V = texText(termEntry('visibility', m.V).short);
+  const f =
+    `f_c(\\mathbf{l},\\mathbf{v}) = \\frac{c_{\\text{diff},c}}{\\pi} + ` +
+    `\\frac{F_{\\text{Schlick}}(F_{0,c},` +
+    ` \\mathbf{l}\\cdot\\mathbf{h})\\,V_{${V}}\\,\\sym{overlay}{D_{\\text{${m.label}}}}(\\mathbf{h})}{4}`;
+  const error =
+    `E = \\sqrt{\\frac{\\sum w\\left[${CUBE_ROOT('model')} - ${CUBE_ROOT('measured')}\\right]^2}{\\sum w}}` +
+    `,\\quad \\sym{lightTheta}{\\theta_l = ${texNumber(state.lightTheta, 0)}^\\circ}`;
+  return `\\begin{gathered}${f}\\\\ ${error}\\end{gathered}`;
+});

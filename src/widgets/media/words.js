@@ -2,7 +2,8 @@
 import { rgbToHex } from '../../core/ui/palettes.js';
 import { linearToSrgb } from '../../math/color.js';
 import { MEDIA } from './schema.js';
-import { unscattered } from './model.js';
+import { extinction, unscattered } from './model.js';
+import { declareFormula, texNumber, texSignificant } from '../../core/framework/formula-registry.js';
 
 export const TITLE = 'Media';
 
@@ -60,3 +61,21 @@ export function describeMedia(state) {
     description: `A glass of ${m.name.toLowerCase()} ${depth} deep in front of a chequered wall; ${sentence(depth)}`,
   };
 }
+
+const rgb = (values) => `(${values.map((x) => texNumber(x)).join(',\\ ')})`;
+
+/** Beer–Lambert for the chosen medium and depth, per RGB channel (the transmittance plot's curves). */
+export const FORMULA = declareFormula('media', (state) => {
+  const medium = MEDIA[state.medium];
+  const depth = 10 ** state.distance;
+  const law =
+    `T(d) = e^{-\\sigma_t d},\\quad \\sigma_t = \\sigma_a + \\sigma_s = ` +
+    `\\sym{medium}{(${extinction(medium)
+      .map((x) => texSignificant(x))
+      .join(',\\ ')})}\\ \\mathrm{m}^{-1}`;
+  const at =
+    `\\sym{distance}{d = 10^{${texNumber(state.distance, 2)}}\\ \\mathrm{m} =` +
+    ` ${texNumber(depth, 4)}\\ \\mathrm{m}}:\\quad ` +
+    `T = ${rgb(unscattered(medium, depth))}`;
+  return `\\begin{gathered}${law}\\\\ ${at}\\end{gathered}`;
+});

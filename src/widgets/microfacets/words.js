@@ -1,5 +1,8 @@
 // microfacets, in words: the about text, the legend of the cut's colours, and the picture described for screen
 // readers.
+import { declareFormula, texNumber } from '../../core/framework/formula-registry.js';
+import { DEG } from '../../math/angles.js';
+import { smithG1 } from './model.js';
 import { schema } from './schema.js';
 
 export const TITLE = 'Microsurface';
@@ -34,3 +37,26 @@ export function describeCut(state, { measured, smith, twice, hDeg }) {
     `${twice} of ${s.rays} rays hit the surface a second time${s.bounces ? ' (drawn in red)' : ''}.`
   );
 }
+
+const G1_TEX = {
+  ggx: '\\frac{2\\nx }{\\nx  + \\sqrt{\\nx ^2 + \\alpha^2(1 - \\nx ^2)}}',
+  beckmann: '\\frac{1}{1 + \\Lambda(a)},\\ a = \\frac{\\nx }{\\alpha\\sqrt{1 - \\nx ^2}}',
+};
+
+/** Smith's G1 of the chosen distribution at the light and the view, which the traced surface is set against. */
+export const FORMULA = declareFormula('microfacets', (state) => {
+  const cosL = Math.cos(state.lightTheta * DEG);
+  const cosV = Math.cos(state.viewTheta * DEG);
+  const [gl, gv] = [smithG1(state, cosL), smithG1(state, cosV)];
+  const name = state.kind === 'ggx' ? 'GGX' : 'Beckmann';
+  const g1 =
+    `\\sym{kind}{G_{1,\\text{${name}}}(\\mathbf{x})} =` +
+    ` ${G1_TEX[state.kind]},\\quad \\sym{alpha}{\\alpha = ${texNumber(state.alpha, 2)}}`;
+  const at =
+    `G_1(\\mathbf{l}) = ${texNumber(gl)}\\ (\\sym{lightTheta}{\\theta_l =` +
+    ` ${texNumber(state.lightTheta, 0)}^\\circ}),\\quad ` +
+    `G_1(\\mathbf{v}) = ${texNumber(gv)}\\ (\\sym{viewTheta}{\\theta_v =` +
+    ` ${texNumber(state.viewTheta, 0)}^\\circ}),\\quad ` +
+    `G_1(\\mathbf{l})\\,G_1(\\mathbf{v}) = ${texNumber(gl * gv)}`;
+  return `\\begin{gathered}${g1}\\\\ ${at}\\end{gathered}`;
+});

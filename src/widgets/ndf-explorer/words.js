@@ -1,4 +1,7 @@
 // The NDF explorer's words: what it shows, the functions it names, and its pictures described for screen readers.
+import { declareFormula, texNumber } from '../../core/framework/formula-registry.js';
+import { DEG } from '../../math/angles.js';
+import { matchNdfWidths } from '../../math/ndf-width.js';
 
 export const TITLE = 'NDF explorer';
 
@@ -34,3 +37,53 @@ export function describeSpheres(curves, state) {
     `V = 1, one per NDF at a half width of ${state.hwhm}°: ${each.join(', ') || 'none chosen'}.`
   );
 }
+
+const NM = '\\nm ';
+const TAN2 = `\\frac{1 - ${NM}^2}{${NM}^2}`;
+
+// GGX, Beckmann and Blinn-Phong at half width θ: D(θ) = D(0)/2 solved in closed form (the model searches)
+const matchedGGX = (t) => Math.sqrt(Math.sin(t) ** 2 / (Math.SQRT2 - Math.cos(t) ** 2));
+const matchedBeckmann = (t) => Math.tan(t) / Math.sqrt(Math.LN2 - 4 * Math.log(Math.cos(t)));
+const matchedPhong = (t) => Math.log(0.5) / Math.log(Math.cos(t));
+
+let memo = { key: '', params: null }; // ABC's and SGD's widths have no closed form: one search per setting
+function searched(state) {
+  const key = `${state.hwhm}|${state.abcA2}|${state.sgdP}`;
+  if (memo.key !== key) memo = { key, params: matchNdfWidths(state.hwhm, state) };
+  return memo.params;
+}
+
+/** NDF `key` as the talk writes it, and its parameters at the state's matched width (half width t, radians). */
+const NDF_TEX = {
+  ggx: (s, t) => [
+    `D_{tr}(\\mathbf{m}) = \\frac{\\alpha_{tr}^2}{\\pi(${NM}^2(\\alpha_{tr}^2 - 1) + 1)^2}`,
+    `\\alpha_{tr} = ${texNumber(matchedGGX(t))}`,
+  ],
+  beckmann: (s, t) => [
+    `D_b(\\mathbf{m}) = \\frac{1}{\\pi\\alpha_b^2 ${NM}^4}\\,e^{-${TAN2}\\,/\\,\\alpha_b^2}`,
+    `\\alpha_b = ${texNumber(matchedBeckmann(t))}`,
+  ],
+  blinnPhong: (s, t) => [
+    `D_p(\\mathbf{m}) = \\frac{\\alpha_p + 2}{2\\pi}${NM}^{\\alpha_p}`,
+    `\\alpha_p = ${texNumber(matchedPhong(t), 1)}`,
+  ],
+  abc: (s) => [
+    `D_{abc}(\\mathbf{m}) = \\frac{1}{N}\\,\\frac{1}{(1 + \\alpha_{abc1}(1 - ${NM}))^{\\alpha_{abc2}}}`,
+    `\\alpha_{abc1} = ${texNumber(searched(s).abc.a1, 2)},\\ \\sym{abcA2}{\\alpha_{abc2} = ${texNumber(s.abcA2, 2)}}` +
+      ',\\ N\\text{: normalisation}',
+  ],
+  sgd: (s) => [
+    `D_{sgd}(\\mathbf{m}) = \\frac{p_{22}\\left[${TAN2}\\right]}{\\pi ${NM}^4}`,
+    `\\alpha = ${texNumber(searched(s).sgd.alpha)},\\ \\sym{sgdP}{p = ${texNumber(s.sgdP, 2)}}`,
+  ],
+};
+
+/** The first chosen NDF, with the parameters that give it the matched half width. */
+export const FORMULA = declareFormula('ndf-explorer', (state) => {
+  const key = state.ndfs[0];
+  if (!key) return '\\sym{ndfs}{\\text{no distribution chosen}}';
+  const [D, params] = NDF_TEX[key](state, state.hwhm * DEG);
+  const width =
+    `D(\\theta_{1/2}) = \\tfrac{1}{2}D(0),\\quad \\sym{hwhm}{\\theta_{1/2} =` + ` ${texNumber(state.hwhm, 1)}^\\circ}`;
+  return `\\begin{gathered}\\sym{ndfs}{${D}},\\quad ${params}\\\\ ${width}\\end{gathered}`;
+});

@@ -1,5 +1,6 @@
 // radiance, in words: the about text, how values are written, and the picture described for screen readers.
-import { LIGHTS, SURFACES } from './model.js';
+import { declareFormula, texNumber, texSignificant } from '../../core/framework/formula-registry.js';
+import { LIGHTS, SURFACES, colours, lampView } from './model.js';
 
 export const TITLE = 'Radiance';
 
@@ -24,3 +25,27 @@ export function describeRadiance(s, view, c) {
     `the RGB shortcut gives ${triple(c.product)}.`
   );
 }
+
+const rgb = (values) => `(${values.map((x) => texNumber(x, 3)).join(',\\ ')})`;
+let memo = { key: '', value: null }; // the colours integrate spectra: once per light and surface
+function coloursOf(state) {
+  const key = `${state.light}|${state.surface}`;
+  if (memo.key !== key) memo = { key, value: colours(state.light, state.surface) };
+  return memo.value;
+}
+
+/** The lamp's solid angle and irradiance at the slider's distance, and the RGB product against the spectrum. */
+export const FORMULA = declareFormula('radiance', (state) => {
+  const view = lampView(state);
+  const r = `\\sym{lampRadius}{${texNumber(state.lampRadius, 2)}}`;
+  const s = `\\frac{${r}}{\\sym{distance}{${texNumber(state.distance, 2)}}}`;
+  const lamp =
+    `\\sin\\theta_s = \\frac{r}{d} = ${s},\\quad \\Omega = 2\\pi(1 - \\cos\\theta_s) = ` +
+    `${texSignificant(view.solidAngle)}\\ \\mathrm{sr},\\quad E = \\pi L \\sin^2\\theta_s = ` +
+    `${texSignificant(view.irradiance)}\\,L`;
+  const c = coloursOf(state);
+  const product =
+    `\\sym{light}{${rgb(c.light)}} \\otimes \\sym{surface}{${rgb(c.surface)}} = ${rgb(c.product)}` +
+    `\\ \\text{against}\\ ${rgb(c.spectral)}\\ \\text{per wavelength}`;
+  return `\\begin{gathered}${lamp}\\\\ ${product}\\end{gathered}`;
+});

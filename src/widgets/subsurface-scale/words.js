@@ -1,4 +1,5 @@
 // subsurface-scale, in words: the about text, the verdict, the statistics table and the picture described.
+import { declareFormula, texNumber, texSignificant } from '../../core/framework/formula-registry.js';
 import { meanFreePath, scatteringAlbedo } from '../../math/media.js';
 import { MAX_EVENTS, isLocal } from './model.js';
 
@@ -48,3 +49,18 @@ export function statisticsTable(s, stats) {
     '</tbody></table>'
   );
 }
+
+/** The walk's coefficients: extinction, mean free path and single-scattering albedo, against the sample radius. */
+export const FORMULA = declareFormula('subsurface-scale', (state) => {
+  const sigmaT = state.sigmaS + state.sigmaA;
+  const s = `\\sym{sigmaS}{${texSignificant(state.sigmaS)}}`;
+  const a = `\\sym{sigmaA}{${texSignificant(state.sigmaA)}}`;
+  const t =
+    `\\sigma_t = \\sigma_s + \\sigma_a = ${s} + ${a} = ${texSignificant(sigmaT)}\\ \\mathrm{mm}^{-1},\\quad ` +
+    `\\ell = \\frac{1}{\\sigma_t} = ${texSignificant(meanFreePath(sigmaT))}\\ \\mathrm{mm}`;
+  const albedo =
+    `\\varrho = \\frac{\\sigma_s}{\\sigma_t} = ${texNumber(scatteringAlbedo(state.sigmaS, state.sigmaA))},\\quad ` +
+    `\\sym{pixel}{r_{\\text{sample}} = ${texSignificant(state.pixel)}\\ \\mathrm{mm}} = ` +
+    `${texSignificant(state.pixel * sigmaT)}\\,\\ell`;
+  return `\\begin{gathered}${t}\\\\ ${albedo}\\end{gathered}`;
+});

@@ -1,4 +1,9 @@
 // surfaces, in words: the about text and the pictures described for screen readers.
+import { declareFormula, texNumber } from '../../core/framework/formula-registry.js';
+import { DEG } from '../../math/angles.js';
+import { fresnelParams } from '../../math/materials.js';
+import { measuredRgbNk } from '../../math/optical-constants.js';
+import { interfaceSpec } from './model.js';
 
 export const TITLE = 'Surfaces';
 
@@ -25,3 +30,27 @@ export function describeInterface(spec) {
 export const describeSurfaces = (state, spec) =>
   `${describeInterface(spec)} With microgeometry of roughness α ${state.alpha}, the reflection spreads into a ` +
   'cone around the mirror direction (plot below).';
+
+/** The flat interface at the slider's angle (green, 550 nm, as the picture): Snell, exact Fresnel, metal depth. */
+export const FORMULA = declareFormula('surfaces', (state) => {
+  const spec = interfaceSpec(state);
+  const ti = `\\sym{theta}{\\theta_i = ${texNumber(state.theta, 1)}^\\circ}`;
+  const p = fresnelParams(state.material); // the green channel's n (and k), as the picture reads them
+  const n = `\\sym{material}{${texNumber(p.eta[1], 2)}}`;
+  const k = spec.metal ? `,\\ k = ${texNumber(p.k[1], 2)}` : '';
+  const F = `F(\\theta_i) = ${texNumber(spec.F)}\\ (\\text{exact, } n = ${n}${k})`;
+  const rough = `\\text{microsurface: Beckmann slopes, } \\sym{alpha}{\\alpha = ${texNumber(state.alpha, 2)}}`;
+  if (spec.metal) {
+    const k550 = texNumber(measuredRgbNk(state.material)[1][1], 2);
+    const depth =
+      `\\delta = \\frac{\\lambda}{4\\pi k_{\\text{measured}}} = \\frac{550\\ \\text{nm}}{4\\pi \\cdot ${k550}} = ` +
+      `${texNumber(spec.depthNm, 1)}\\ \\text{nm}`;
+    return `\\begin{gathered}${ti}:\\ ${F}\\\\ ${depth}\\\\ ${rough}\\end{gathered}`;
+  }
+  const st = Math.sin(state.theta * DEG) / spec.etaRefr;
+  const sinI = `\\sin ${texNumber(state.theta, 1)}^\\circ`;
+  const snell =
+    `\\sin\\theta_t = \\frac{\\sin\\theta_i}{n} = \\frac{${sinI}}{${n}} = ${texNumber(st)}` +
+    `,\\ \\theta_t = ${texNumber(Math.asin(st) / DEG, 1)}^\\circ`;
+  return `\\begin{gathered}${ti}:\\ ${F}\\\\ ${snell}\\\\ ${rough}\\end{gathered}`;
+});

@@ -1,5 +1,6 @@
 // The visibility explorer's words: what it shows, the functions it names, and its pictures described for
 // screen readers.
+import { declareFormula, texNumber } from '../../core/framework/formula-registry.js';
 
 export const TITLE = 'Visibility explorer';
 
@@ -40,3 +41,36 @@ export function describeSpheres(curves, state) {
     `Largest difference from height-correlated Smith up to 80° (${where}): ${worst}.`
   );
 }
+
+const NL = '\\nl ';
+const NV = '\\nv ';
+const root = (c, a2) => `\\sqrt{${c}^2 + ${a2}(1 - ${c}^2)}`;
+const g1 = (c, a2) => `\\frac{2${c}}{${c} + ${root(c, a2)}}`;
+
+/** Each visibility term as it is evaluated (src/math/visibility.js), with α² (or k) substituted. */
+const V_TEX = {
+  implicit: () => 'V = 1,\\quad G_{\\text{implicit}} = \\nl \\nv ',
+  cookTorrance: () =>
+    `G_{\\text{ct}} = \\min\\left(1, \\frac{2\\nh ${NV}}{\\vh }, ` + `\\frac{2\\nh ${NL}}{\\vh }\\right)`,
+  kelemen: () => 'V_{\\text{Kelemen}} = \\frac{1}{\\lh ^2}',
+  smithGGXSeparable: (a2) =>
+    `G_{\\text{s}} = G_{\\text{s1}}(\\mathbf{l})G_{\\text{s1}}(\\mathbf{v}),\\ ` +
+    `G_{\\text{s1}}(\\mathbf{x}) = ${g1('\\nx ', a2)}`,
+  smithGGXCorrelated: (a2) => `V = \\frac{2}{${NV}${root(NL, a2)} + ${NL}${root(NV, a2)}}`,
+  smithGGXCorrelatedFast: (a2, a) => `V \\approx \\frac{2}{(1 - ${a})\\,2${NL}${NV} + ${a}(${NL} + ${NV})}`,
+  schlickGGX: (a2, a, k) => `V = \\frac{1}{(${NL}(1 - ${k}) + ${k})(${NV}(1 - ${k}) + ${k})},\\ k = \\alpha/2`,
+  smithBeckmannSeparable: (a2, a) =>
+    `G_{\\text{s1}}(\\mathbf{x}) = \\frac{1}{1 + \\Lambda(c)},\\ c = \\frac{\\nx }{${a}\\sqrt{1 - \\nx ^2}}` +
+    ',\\ \\Lambda(c) = \\tfrac{1}{2}\\left(\\frac{e^{-c^2}}{c\\sqrt{\\pi}} - \\operatorname{erfc} c\\right)',
+};
+
+/** V = G / ((n·l)(n·v)) and the first chosen term, with the state's α. */
+export const FORMULA = declareFormula('visibility-explorer', (state) => {
+  const key = state.terms[0];
+  const a = `\\sym{alpha}{${texNumber(state.alpha, 2)}}`;
+  const a2 = `${texNumber(state.alpha ** 2)}`;
+  const k = texNumber(state.alpha / 2);
+  const V = 'V(\\mathbf{l},\\mathbf{v}) = \\frac{G(\\mathbf{l},\\mathbf{v},\\mathbf{h})}{\\nl \\nv }';
+  const term = key ? `\\sym{terms}{${V_TEX[key](a2, a, k)}}` : '\\sym{terms}{\\text{no term chosen}}';
+  return `\\begin{gathered}${V},\\quad \\alpha = ${a},\\ \\alpha^2 = ${a2}\\\\ ${term}\\end{gathered}`;
+});
