@@ -12,7 +12,11 @@ import { schema as LOBE } from '../../src/widgets/brdf-lobe/brdf-lobe.js';
 import { weightedSphereShares } from './zone-shares.js';
 import { DEG } from '../../src/math/angles.js';
 
-const text = (file) => readFileSync(new URL(`../../${file}`, import.meta.url), 'utf8').replace(/\s+/g, ' ');
+/** A page's words as a reader sees them: tags dropped (a typeset formula reads as its plain fallback). */
+const text = (file) =>
+  readFileSync(new URL(`../../${file}`, import.meta.url), 'utf8')
+    .replace(/<[^>]+>/g, '')
+    .replace(/\s+/g, ' ');
 const stepText = (id) => TOUR_STEPS.find((s) => s.id === id);
 /** The numbers the first match of `re` captures; fails if the sentence no longer reads that way. */
 function quoted(source, re) {
