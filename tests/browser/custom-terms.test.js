@@ -104,3 +104,27 @@ describe('custom terms on the GPU', () => {
     expect(result.errors).toEqual([{ line: 3, message: expect.stringMatching(/'while'/) }]);
   });
 });
+
+describe('a lost WebGL context (watchContext)', () => {
+  it('says so, names the new code that was drawing, and brings back the program that drew before', async () => {
+    const good = { slot: 'D', code: await starter('D'), params: {} };
+    const first = await page.evaluate((p) => window.__customTerms.run(p), good);
+    expect(Math.abs(first.normalisation.worst - 1)).toBeLessThan(1e-4);
+    const suspect = { slot: 'D', code: D('  return 1.0;'), params: {} };
+    await page.evaluate((p) => window.__customTerms.run(p, { draw: false }), suspect);
+    await page.evaluate(() => window.__customTerms.lose());
+    await page.waitForFunction(() => window.__customTerms.events.some((e) => e.type === 'lost'));
+    const lost = await page.evaluate(() => window.__customTerms.events.find((e) => e.type === 'lost'));
+    expect(lost.message).toMatch(/while your new code was drawing/);
+    expect(lost.suspect).toEqual(suspect);
+    expect(await check('D', good.code)).toEqual({ errors: [{ line: 0, message: 'the WebGL context is lost' }] });
+    await page.evaluate(() => window.__customTerms.restore());
+    await page.waitForFunction(() => window.__customTerms.events.some((e) => e.type === 'restored'), {
+      timeout: 30_000,
+    });
+    const restored = await page.evaluate(() => window.__customTerms.events.find((e) => e.type === 'restored'));
+    expect(restored.program).toEqual(good);
+    expect(restored.report.normalisation).toEqual(first.normalisation); // the same program, the same GPU numbers
+    expect(page.errors).toEqual([]);
+  });
+});
