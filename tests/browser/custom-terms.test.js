@@ -10,6 +10,11 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { ROOT, launchBrowser, openPage, serveStatic } from './harness.js';
 import { CHECK_ALPHAS } from '../../src/core/custom/check-inputs.js';
 import { GRIDS } from '../../src/core/gpu/parity-cases.js';
+import { withCustomChunk } from '../../src/core/custom/assemble.js';
+import { assembleGlsl } from '../../src/core/gpu/glsl.js';
+import { SHADER_CHUNKS } from '../../src/core/gpu/shader-chunks.js';
+import { SLOTS } from '../../src/core/custom/slots.js';
+import { termDefines } from '../../src/math/catalogue/index.js';
 
 let browser;
 let server;
@@ -102,6 +107,22 @@ describe('custom terms on the GPU', () => {
   it('code that fails the static checks never reaches the GPU: a while loop is refused on its line', async () => {
     const result = await check('D', D('  float s = 0.0;\n  while (s < 1.0) { s += nh; }\n  return s;'));
     expect(result.errors).toEqual([{ line: 3, message: expect.stringMatching(/'while'/) }]);
+  });
+});
+
+describe('custom in a family’s dispatch (the sphere program of the widgets)', () => {
+  const sphere = (code) =>
+    assembleGlsl(SHADER_CHUNKS['brdf-sphere.frag.glsl'], {
+      defines: termDefines({ F: 'custom', D: 'custom', V: 'smithGGXCorrelated' }),
+      chunks: withCustomChunk(withCustomChunk(SHADER_CHUNKS, 'F', SLOTS.F.starter), 'D', code),
+    });
+  it('compiles with a custom D and a custom F; an error in the D lands on its own line', async () => {
+    const compile = (source) => page.evaluate((s) => window.__customTerms.compileCustom(s), source);
+    expect(await compile(sphere(SLOTS.D.starter))).toEqual({ ok: true, errors: [] });
+    const broken = await compile(sphere(D('  float k = 1.0;\n  return k * nh * undefinedThing;')));
+    expect(broken.ok).toBe(false);
+    expect(broken.errors[0]).toMatchObject({ line: 3, message: expect.stringMatching(/undefinedThing/) });
+    expect(page.errors).toEqual([]);
   });
 });
 
