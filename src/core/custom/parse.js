@@ -200,6 +200,140 @@ function matchesSignature(fn, slot) {
   );
 }
 
+/** @param {any} fn a function definition @returns {string} */
+const nameOf = (fn) => fn.prototype.header.name.identifier;
+
+/**
+ * The user functions with an out or inout parameter: a call of one may write a loop counter.
+ * @param {any[]} functions
+ */
+const writersOf = (functions) =>
+  new Set(
+    functions
+      .filter((f) =>
+        (f.prototype.parameters ?? []).some((/** @type {any} */ p) =>
+          (p.qualifier ?? []).some((/** @type {any} */ q) => q.token === 'out' || q.token === 'inout'),
+        ),
+      )
+      .map(nameOf),
+  );
+
+/**
+ * The slot's function: there, and with the slot's signature.
+ * @param {any[]} functions
+ * @param {import('./slots.js').Slot} slot
+ * @returns {Problem[]}
+ */
+function signatureProblems(functions, slot) {
+  const own = functions.filter((f) => nameOf(f) === slot.fn);
+  if (!own.length) return [{ line: 1, message: `${slot.fn} is missing: write ${slot.signature} { … }` }];
+  return own
+    .filter((f) => !matchesSignature(f, slot))
+    .map((f) => ({ line: lineOf(f), message: `${slot.fn} must be ${slot.signature}, not ${declarationOf(f)}` }));
+}
+
+/**
+ * The loops of one function: each refused one, the largest product of nested trip counts (its cost), and its
+ * calls of other functions with the product of the loops around each.
+ * @param {any} fn
+ * @param {Set<string>} writers
+ */
+function functionLoops(fn, writers) {
+  /** @type {Problem[]} */
+  const problems = [];
+  /** @type {{ callee: string, around: number, line: number }[]} */
+  const calls = [];
+  /** @type {number[]} trip counts of the enclosing loops */
+  const nest = [];
+  let cost = 1;
+  const product = () => nest.reduce((a, b) => a * b, 1);
+  const refuse = (/** @type {any} */ node, /** @type {string} */ message) =>
+    problems.push({ line: lineOf(node), message });
+  visit(fn.body, {
+    while_statement: { enter: (p) => refuse(p.node, `'while' loops are refused (no constant bound); ${LOOP_FORM}`) },
+    do_statement: { enter: (p) => refuse(p.node, `'do … while' loops are refused (no constant bound); ${LOOP_FORM}`) },
+    for_statement: {
+      enter: (p) => {
+        const loop = forLoop(p.node);
+        const trips = 'why' in loop ? 1 : loop.trips;
+        if ('why' in loop) refuse(p.node, loop.why);
+        else {
+          const write = counterWrite(p.node.body, loop.counter, writers);
+          if (write) problems.push({ line: write, message: `the loop counter ${loop.counter} is changed` });
+        }
+        const total = product() * trips;
+        const nested = nest.length ? ' (nested loops multiply)' : '';
+        if (total > MAX_LOOP_ITERATIONS) refuse(p.node, `${total} loop trips${nested}; at most ${MAX_LOOP_ITERATIONS}`);
+        cost = Math.max(cost, total);
+        nest.push(trips);
+      },
+      exit: () => void nest.pop(),
+    },
+    function_call: {
+      enter: (p) => {
+        const id = /** @type {any} */ (p.node.identifier);
+        const callee = id.identifier ?? id.specifier?.identifier; // a user function's name is a type_name node
+        if (typeof callee === 'string') calls.push({ callee, around: product(), line: lineOf(p.node) });
+      },
+    },
+  });
+  return { problems, cost, calls };
+}
+
+/**
+ * Loops: each function's own, and calls that run a function's loops inside other loops (GLSL has no recursion:
+ * the compiler refuses it, and a cycle here counts once).
+ * @param {any[]} functions
+ * @returns {Problem[]}
+ */
+function loopProblems(functions) {
+  const writers = writersOf(functions);
+  const loops = new Map(functions.map((f) => [nameOf(f), functionLoops(f, writers)]));
+  /** @type {Map<string, number>} */
+  const memo = new Map();
+  /** @param {string} name @returns {number} the most trips one call of the function can run */
+  const costOf = (name) => {
+    const own = loops.get(name);
+    if (!own) return 1; // a built-in
+    if (memo.has(name)) return /** @type {number} */ (memo.get(name));
+    memo.set(name, own.cost); // a cycle (refused by the compiler) stops here
+    const cost = Math.max(own.cost, ...own.calls.map((c) => c.around * costOf(c.callee)));
+    memo.set(name, cost);
+    return cost;
+  };
+  const problems = [...loops.values()].flatMap((l) => l.problems);
+  for (const { calls } of loops.values())
+    for (const { callee, around, line } of calls) {
+      const total = around * costOf(callee);
+      if (around > 1 && total > MAX_LOOP_ITERATIONS) {
+        const message = `${callee}() here runs ${total} loop trips (its loops × the loops around it)`;
+        problems.push({ line, message: `${message}; at most ${MAX_LOOP_ITERATIONS}` });
+      }
+    }
+  return problems;
+}
+
+/**
+ * Names the host program owns, where the user declares them.
+ * @param {any} ast
+ * @returns {Problem[]}
+ */
+function reservedProblems(ast) {
+  /** @type {Problem[]} */
+  const problems = [];
+  const reserved = (/** @type {any} */ node) => {
+    const name = node?.identifier;
+    if (typeof name === 'string' && RESERVED.test(name))
+      problems.push({ line: lineOf(node), message: `'${name}' is a reserved name (gl_*, u + capital, PI, …)` });
+  };
+  visit(ast, {
+    declaration: { enter: (p) => reserved(p.node.identifier) },
+    parameter_declaration: { enter: (p) => reserved(p.node.identifier) },
+    function_header: { enter: (p) => reserved(p.node.name) },
+  });
+  return problems;
+}
+
 /**
  * The problems of a parsed program: the slot's function, loops, reserved names.
  * @param {any} ast
@@ -207,57 +341,8 @@ function matchesSignature(fn, slot) {
  * @returns {Problem[]}
  */
 function checkProgram(ast, slot) {
-  /** @type {Problem[]} */
-  const problems = [];
   const functions = ast.program.filter((/** @type {any} */ s) => s.type === 'function');
-  const writers = new Set(
-    functions
-      .filter((/** @type {any} */ f) =>
-        (f.prototype.parameters ?? []).some((/** @type {any} */ p) =>
-          (p.qualifier ?? []).some((/** @type {any} */ q) => q.token === 'out' || q.token === 'inout'),
-        ),
-      )
-      .map((/** @type {any} */ f) => f.prototype.header.name.identifier),
-  );
-  const own = functions.filter((/** @type {any} */ f) => f.prototype.header.name.identifier === slot.fn);
-  if (!own.length) problems.push({ line: 1, message: `${slot.fn} is missing: write ${slot.signature} { … }` });
-  for (const fn of own.filter((/** @type {any} */ f) => !matchesSignature(f, slot)))
-    problems.push({ line: lineOf(fn), message: `${slot.fn} must be ${slot.signature}, not ${declarationOf(fn)}` });
-  /** @type {number[]} trip counts of the enclosing loops */
-  const nest = [];
-  const reserved = (/** @type {any} */ node) => {
-    const name = node?.identifier;
-    if (typeof name === 'string' && RESERVED.test(name))
-      problems.push({ line: lineOf(node), message: `'${name}' is a reserved name (gl_*, u + capital, PI, …)` });
-  };
-  const refuse = (/** @type {any} */ node, /** @type {string} */ message) =>
-    problems.push({ line: lineOf(node), message });
-  visit(ast, {
-    while_statement: { enter: (p) => refuse(p.node, `'while' loops are refused (no constant bound); ${LOOP_FORM}`) },
-    do_statement: { enter: (p) => refuse(p.node, `'do … while' loops are refused (no constant bound); ${LOOP_FORM}`) },
-    for_statement: {
-      enter: (p) => {
-        const loop = forLoop(p.node);
-        let trips = 0;
-        if ('why' in loop) refuse(p.node, loop.why);
-        else {
-          const write = counterWrite(p.node.body, loop.counter, writers);
-          if (write) refuse({ location: { start: { line: write } } }, `the loop counter ${loop.counter} is changed`);
-          const total = nest.reduce((a, b) => a * b, loop.trips);
-          const nested = nest.length ? ' (nested loops multiply)' : '';
-          if (total > MAX_LOOP_ITERATIONS)
-            refuse(p.node, `${total} loop trips${nested}; at most ${MAX_LOOP_ITERATIONS}`);
-          trips = loop.trips;
-        }
-        nest.push(trips);
-      },
-      exit: () => void nest.pop(),
-    },
-    declaration: { enter: (p) => reserved(p.node.identifier) },
-    parameter_declaration: { enter: (p) => reserved(p.node.identifier) },
-    function_header: { enter: (p) => reserved(p.node.name) },
-  });
-  return problems;
+  return [...signatureProblems(functions, slot), ...loopProblems(functions), ...reservedProblems(ast)];
 }
 
 /**
