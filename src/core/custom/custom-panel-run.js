@@ -41,7 +41,12 @@ export function createCustomRunner(getRenderer) {
   /** @type {Record<string, { id: string, lookup: any, code: string }>} */
   const last = {};
 
-  /** The code to try, in order: the given one when it may run and passes the static checks, then the last good. */
+  /**
+   * The code to try, in order: the given one when it may run and passes the static checks, then the last good.
+   * @param {string} slotKey
+   * @param {string} code
+   * @param {RunStatus} status  told when the code waits for a click or has problems
+   */
   function candidates(slotKey, code, status) {
     const slot = SLOTS[/** @type {keyof typeof SLOTS} */ (slotKey)];
     const list = [];
@@ -65,9 +70,9 @@ export function createCustomRunner(getRenderer) {
    * @returns {{ lookup: any, status: RunStatus }}
    */
   function run(slotKey, code, params, plan) {
-    /** @type {RunStatus} */
     const renderer = getRenderer();
     const lost = !renderer || renderer.getContext().isContextLost();
+    /** @type {RunStatus} */
     const status = { problems: [], pending: false, lost, ran: null };
     for (const c of candidates(slotKey, code, status)) {
       const values = sliderValues(c.declared, params);

@@ -22,7 +22,7 @@ export function createCustomArea(container, { getRenderer, getState, update, red
   let statuses = {};
 
   function load() {
-    loading ??= import('../../core/custom/custom-panel.js').then(
+    loading ??= import('../../core/ui/custom-panel.js').then(
       (m) => {
         panelModule = m;
         runner = m.createCustomRunner(getRenderer);

@@ -3,21 +3,26 @@
 // beside it, and what happened to the last edit (compile errors on the user's own lines while the last good code
 // keeps drawing; code from a link waiting for one click; a lost graphics context). Edits reach the widget after a
 // short pause in typing. A widget loads this module (and CodeMirror with it) only when a custom term is chosen.
-import { createCodeEditor } from '../ui/code-editor.js';
-import { SLOTS } from './slots.js';
-import { parseCustom } from './parse.js';
-import { runChecks } from './checks.js';
-import { trustCode } from './custom-panel-trust.js';
-import { sliderValues } from './custom-panel-run.js';
+import { createCodeEditor } from './code-editor.js';
+import { SLOTS } from '../custom/slots.js';
+import { parseCustom } from '../custom/parse.js';
+import { runChecks } from '../custom/checks.js';
+import { trustCode } from '../custom/custom-panel-trust.js';
+import { sliderValues } from '../custom/custom-panel-run.js';
 import { createSliders } from './custom-panel-sliders.js';
 import { createChecksView } from './custom-panel-checks.js';
 
-export { createCustomRunner } from './custom-panel-run.js';
+/** @typedef {import('../custom/custom-panel-run.js').RunStatus} RunStatus */
+
+export { createCustomRunner } from '../custom/custom-panel-run.js';
 
 export const EDIT_DELAY_MS = 250; // an edit reaches the widget this long after the last keystroke
 const CHECK_DELAY_MS = 400; // the checks run this long after the picture changed
 
-/** What the status line says for a run's status (see custom-panel-run.js). */
+/**
+ * What the status line says for a run's status.
+ * @param {RunStatus} status
+ */
 function statusText(status) {
   if (status.pending) return 'This code came with the link or from the page around this one. Read it, then run it.';
   if (status.lost)
@@ -32,19 +37,29 @@ function statusText(status) {
   return status.ran ? 'Running your code.' : '';
 }
 
+/**
+ * @param {string} tag
+ * @param {string} className
+ * @param {string} [text]
+ */
 function element(tag, className, text = '') {
   return Object.assign(document.createElement(tag), { className, textContent: text });
 }
 
 /** The panel's elements: a title, the code column (signature, consent, editor, status, problems) and a side column. */
+/**
+ * @param {HTMLElement} container
+ * @param {import('../custom/slots.js').Slot} slot
+ * @param {string} title
+ */
 function layout(container, slot, title) {
   const root = element('section', 'custom-panel');
   const heading = element('h3', 'custom-panel-title', title);
   const signature = element('code', 'custom-signature', slot.signature);
   const consent = element('div', 'custom-consent');
   const runButton = element('button', 'custom-run', 'Run this code');
-  runButton.type = 'button';
-  consent.append(element('p', '', statusText({ pending: true })), runButton);
+  runButton.setAttribute('type', 'button');
+  consent.append(element('p', '', statusText({ pending: true, lost: false, problems: [], ran: null })), runButton);
   const status = element('p', 'custom-status');
   status.setAttribute('role', 'status');
   const problems = element('ul', 'custom-problems');
@@ -91,6 +106,7 @@ export function createCustomPanel(container, { slotKey, code, title, getRenderer
   const sliders = createSliders(right, onParam);
   let checksKey = '';
   let checksTimer = 0;
+  /** @type {{ code: string, params: Record<string, number>, ran: string | null }} */
   let shown = { code, params: {}, ran: null };
   const checks = createChecksView(right, slot, () => scheduleChecks(true));
   runButton.addEventListener('click', () => {
@@ -117,7 +133,7 @@ export function createCustomPanel(container, { slotKey, code, title, getRenderer
     root,
     /**
      * After each draw of the widget: the state's code and slider values, and how the run went.
-     * @param {{ code: string, params: Record<string, number>, status: import('./custom-panel-run.js').RunStatus }} s
+     * @param {{ code: string, params: Record<string, number>, status: RunStatus }} s
      */
     show({ code: stateCode, params, status: run }) {
       if (stateCode !== lastSent && !pendingEdit) editor.value = lastSent = stateCode; // from a URL or a parent

@@ -2,12 +2,17 @@
 // The live checks beside the editor, in words and one plot: non-finite and negative values with the first input
 // that gives one, D's normalisation, the range of V's G, a whole BRDF's reciprocity and white-furnace albedo, and
 // the largest difference from a catalogue term the user picks, with the two curves (checks.js computes them all).
-import { createPlot } from '../ui/plot.js';
+import { createPlot } from './plot.js';
 import { termOptions } from '../../math/catalogue/index.js';
 
+/** @param {number} x */
 const num = (x) => (Number.isFinite(x) ? Number(x.toPrecision(4)).toString() : String(x));
 
 /** `n·h = 1, α = 0.0001` from an input record, with the slot's labels for its argument names. */
+/**
+ * @param {import('../custom/slots.js').Slot} slot
+ * @param {Record<string, number> | undefined} inputs
+ */
 function inputsText(slot, inputs) {
   const labels = Object.fromEntries(slot.args.map((a) => [a.name, a.label]));
   return Object.entries(inputs ?? {})
@@ -15,8 +20,14 @@ function inputsText(slot, inputs) {
     .join(', ');
 }
 
-/** Each check as [passed, text]; passed null for a figure with no pass mark (the difference from a reference). */
+/**
+ * Each check as [passed, text]; passed null for a figure with no pass mark (the difference from a reference).
+ * @param {import('../custom/slots.js').Slot} slot
+ * @param {any} r  runChecks' result
+ * @returns {[boolean | null, string][]}
+ */
 function checkLines(slot, r) {
+  /** @type {[boolean | null, string][]} */
   const lines = [];
   const nf = r.nonFinite;
   lines.push(
@@ -30,7 +41,9 @@ function checkLines(slot, r) {
   );
   if (r.normalisation) {
     const ok = Math.abs(r.normalisation.worst - 1) <= 1e-3;
-    const each = r.normalisation.byAlpha.map((x) => `α ${num(x.alpha)}: ${num(x.integral)}`).join(', ');
+    const each = r.normalisation.byAlpha
+      .map((/** @type {{ alpha: number, integral: number }} */ x) => `α ${num(x.alpha)}: ${num(x.integral)}`)
+      .join(', ');
     lines.push([ok, `∫ D(m)(n·m) dω should be 1; worst ${num(r.normalisation.worst)} (${each})`]);
   }
   if (r.gRange) {
@@ -60,6 +73,7 @@ function checkLines(slot, r) {
   return lines;
 }
 
+/** @param {any} r  runChecks' result */
 function curveSpec(r) {
   const { curve } = r;
   return {
@@ -80,7 +94,7 @@ function curveSpec(r) {
 
 /**
  * @param {HTMLElement} container
- * @param {import('./slots.js').Slot} slot
+ * @param {import('../custom/slots.js').Slot} slot
  * @param {(reference: string) => void} onReference  the user picked another catalogue term to compare with
  */
 export function createChecksView(container, slot, onReference) {
@@ -99,6 +113,7 @@ export function createChecksView(container, slot, onReference) {
   const plotHolder = document.createElement('div');
   box.append(picker, list, plotHolder);
   container.append(box);
+  /** @type {ReturnType<typeof createPlot> | null} */
   let plot = null;
 
   return {
