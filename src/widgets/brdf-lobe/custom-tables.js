@@ -4,6 +4,7 @@
 // image at its φd, an albedo quadrature). A vec3 result is read as the mean of its three channels.
 import { directionsFromHalfDiff } from '../../math/half-diff.js';
 import { DEG } from '../../math/angles.js';
+import { SLOTS } from '../../core/custom/slots.js';
 import { ALBEDO_ANGLES, lightDir } from './model.js';
 
 const ANGLE_STEPS = 1024; // D and F: θ from 0° to 90°, 0.088° apart (GGX at α = 0.02 is ~1.1° wide)
@@ -121,14 +122,21 @@ function readBrdf(values, viewCount) {
   };
 }
 
-/** The inputs and reader of a slot for the state (see PLANS). */
-export const customPlan = (slotKey, state) => PLANS[slotKey](state);
+/**
+ * The inputs and reader of a slot for the state (see PLANS), as the runner takes them: `read` is given
+ * evaluateCustom's four floats per input.
+ */
+export function customPlan(slotKey, state) {
+  const plan = PLANS[slotKey](state);
+  const count = plan.inputs.length;
+  return { ...plan, read: (out) => plan.read(channelMeans(out, SLOTS[slotKey].outputs, count)) };
+}
 
 /**
  * One number per input from evaluateCustom's four floats: .x, or the mean of .xyz. NaN, ±Inf and negative values
  * are drawn as 0 (the panel's checks count and locate them).
  */
-export function channelMeans(out, outputs, count) {
+function channelMeans(out, outputs, count) {
   const values = new Float64Array(count);
   for (let i = 0; i < count; i++) {
     const x = outputs === 1 ? out[4 * i] : (out[4 * i] + out[4 * i + 1] + out[4 * i + 2]) / 3;
