@@ -66,7 +66,7 @@ describe('brdf-lobe: a custom term read from its table', () => {
     expect(at.f).toBeCloseTo(microfacetBRDF(scene.l, scene.v, ggxA(s)), 3);
   });
 
-  it('the albedo of a Lambertian whole BRDF a/π is a at every view angle (closed form; quadrature on the table)', () => {
+  it('the albedo of a Lambertian whole BRDF a/π is a at every angle (closed form; quadrature on the table)', () => {
     const s = state({ brdf: 'custom' });
     const plan = customPlan('brdf', s);
     const brdf = plan.read(fakeGpu(plan, (lx, ly, lz, vx, vy, vz) => (lz > 0 && vz > 0 ? 0.7 / Math.PI : 0)));
@@ -82,7 +82,7 @@ describe('brdf-lobe: a custom term read from its table', () => {
     expect(Number.isFinite(scene.max)).toBe(true);
   });
 
-  it('before its code has run, a custom slot draws its starter term (the slot reference), and B never is custom', () => {
+  it('before its code has run, a custom slot draws its starter term (the slot reference); B is never custom', () => {
     const s = state({ D: 'custom', compare: true, D2: 'ggx', V2: 'smithGGXCorrelated', alpha2: 0.3 });
     const scene = lobeScene(s, {});
     expect(lobeDifference(scene.lobeA, scene.lobeB)).toBeLessThan(1e-12);
