@@ -8,7 +8,7 @@ import { SLOTS } from '../custom/slots.js';
 import { parseCustom } from '../custom/parse.js';
 import { runChecks } from '../custom/checks.js';
 import { trustCode } from '../custom/custom-panel-trust.js';
-import { sliderValues } from '../custom/custom-panel-run.js';
+import { EDIT_DELAY_MS, sliderValues } from '../custom/custom-panel-run.js';
 import { createSliders } from './custom-panel-sliders.js';
 import { createChecksView } from './custom-panel-checks.js';
 
@@ -16,7 +16,6 @@ import { createChecksView } from './custom-panel-checks.js';
 
 export { createCustomRunner } from '../custom/custom-panel-run.js';
 
-export const EDIT_DELAY_MS = 250; // an edit reaches the widget this long after the last keystroke
 const CHECK_DELAY_MS = 400; // the checks run this long after the picture changed
 
 /**
