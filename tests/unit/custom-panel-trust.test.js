@@ -13,9 +13,13 @@ describe('custom code trust', () => {
     expect(isTrusted(`${code} `, SLOTS.D.starter)).toBe(false); // one more space is other code
   });
 
-  it('hashes differ for texts one character apart (cyrb53 reference values are stable across calls)', () => {
-    const hashes = new Set(['a', 'b', 'ab', 'ba', 'return 1.0;', 'return 1.5;'].map(codeHash));
-    expect(hashes.size).toBe(6);
-    expect(codeHash('return 1.0;')).toBe(codeHash('return 1.0;'));
+  it('the hash is cyrb53 (bryc 2018; its published values for "a", "b", "revenge", "revenue")', () => {
+    const published = {
+      a: 7929297801672961,
+      b: 8684336938537663,
+      revenge: 4051478007546757,
+      revenue: 8309097637345594,
+    };
+    for (const [text, value] of Object.entries(published)) expect(parseInt(codeHash(text), 36)).toBe(value);
   });
 });
