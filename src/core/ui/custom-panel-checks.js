@@ -3,7 +3,7 @@
 // that gives one, D's normalisation, the range of V's G, a whole BRDF's reciprocity and white-furnace albedo, and
 // the largest difference from a catalogue term the user picks, with the two curves (checks.js computes them all).
 import { createPlot } from './plot.js';
-import { termOptions } from '../../math/catalogue/index.js';
+import { referenceOptions } from '../custom/references.js';
 
 /** @param {number} x */
 const num = (x) => (Number.isFinite(x) ? Number(x.toPrecision(4)).toString() : String(x));
@@ -59,7 +59,7 @@ function checkLines(slot, r) {
     lines.push([ok, `Reciprocity: largest relative |f(l, v) − f(v, l)| ${num(r.reciprocity.maxRel)}`]);
   }
   if (r.furnace) {
-    const at = typeof r.furnace.at === 'number' ? ` at θv = ${num(r.furnace.at)}°` : '';
+    const at = Number.isFinite(r.furnace.at?.thetaV) ? ` at θv = ${num(r.furnace.at.thetaV)}°` : '';
     lines.push([r.furnace.max <= 1 + 1e-3, `White furnace: largest albedo ${num(r.furnace.max)}${at} (at most 1)`]);
   }
   const ref = r.reference;
@@ -103,8 +103,7 @@ export function createChecksView(container, slot, onReference) {
   box.setAttribute('aria-label', 'Checks of your code');
   const picker = document.createElement('label');
   const select = document.createElement('select');
-  const family = slot.family ?? 'diffuse';
-  for (const [key, label] of Object.entries(termOptions(family))) select.append(new Option(label, key));
+  for (const [key, label] of Object.entries(referenceOptions(slot.key))) select.append(new Option(label, key));
   select.value = slot.reference;
   select.addEventListener('change', () => onReference(select.value));
   picker.append('Compare with ', select);
@@ -120,10 +119,11 @@ export function createChecksView(container, slot, onReference) {
     get reference() {
       return select.value;
     },
-    /** @param {any} result  runChecks' result, or a sentence in its place */
+    /** @param {any} result  runChecks' result ({ errors } when it could not compile), or a sentence in its place */
     show(result) {
-      if (typeof result === 'string') {
-        list.replaceChildren(Object.assign(document.createElement('li'), { textContent: result }));
+      if (typeof result === 'string' || result.errors) {
+        const text = typeof result === 'string' ? result : `The checks could not compile: ${result.errors[0]?.message}`;
+        list.replaceChildren(Object.assign(document.createElement('li'), { textContent: text }));
         return;
       }
       list.replaceChildren(
