@@ -49,6 +49,7 @@ export function createCodeEditor(parent, { doc = '', label, onChange }) {
         StreamLanguage.define(shader),
         syntaxHighlighting(defaultHighlightStyle),
         lintGutter(),
+        EditorView.lineWrapping, // a narrow panel (an embed, a phone) wraps long comments instead of hiding them
         keymap.of([...defaultKeymap, ...historyKeymap, indentWithTab]),
         EditorView.contentAttributes.of({ 'aria-label': label, 'aria-describedby': hint.id }),
         EditorView.updateListener.of((u) => {
