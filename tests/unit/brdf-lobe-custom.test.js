@@ -2,7 +2,7 @@
 // in place of the GPU) looked up by the model. The truth: the catalogue terms themselves and closed forms.
 import { describe, expect, it } from 'vitest';
 import { customPlan } from '../../src/widgets/brdf-lobe/custom-tables.js';
-import { brdfSpec, lobeScene, albedoCurve, factorsAt } from '../../src/widgets/brdf-lobe/model.js';
+import { brdfSpec, lobeScene, albedoCurve, factorsAt, halfDiffFunction } from '../../src/widgets/brdf-lobe/model.js';
 import { defaultState } from '../../src/core/framework/state.js';
 import { schema } from '../../src/widgets/brdf-lobe/schema.js';
 import { microfacetBRDF, brdfAngles } from '../../src/math/brdf.js';
@@ -52,6 +52,27 @@ describe('brdf-lobe: a custom term read from its table', () => {
     const F = pf.read(fakeGpu(pf, (f0, _g, _b, lh) => fresnelSchlick(f0, lh)));
     const ref = lobeScene(state({ alpha: 0.5, f0: 0.3 })).lobeA;
     expect(lobeDifference(lobeScene(s, { V, F }).lobeA, ref)).toBeLessThan(5e-3);
+  });
+
+  it("a V singular at the grazing corner (the starter at float32 cos 90°) draws the catalogue's (θh, θd) image", () => {
+    const s = state({ V: 'custom' });
+    const plan = customPlan('V', s);
+    // slots.js's starter V as the GPU runs it: no guard but n·l, n·v > 0, and cos 90° = 6e-17 > 0 in float32
+    const starter = (nl, nv, a) => {
+      const [l, v] = [Math.fround(nl), Math.fround(nv)];
+      if (!(l > 0 && v > 0)) return 0;
+      return 2 / (l * Math.sqrt(v * v + a * a * (1 - v * v)) + v * Math.sqrt(l * l + a * a * (1 - l * l)));
+    };
+    const V = plan.read(fakeGpu(plan, starter));
+    const custom = halfDiffFunction(s, brdfSpec(s, 'A', { V }));
+    const catalogue = halfDiffFunction(state({}), brdfSpec(state({}), 'A'));
+    // within 2 % of the catalogue, and within 10 % for θd ≥ 85°, where l and v may both graze (V ~ 1/(n·l + n·v))
+    for (let i = 0; i < 90; i++)
+      for (let j = 0; j < 90; j++) {
+        const [th, td] = [((i + 0.5) * Math.PI) / 180, ((j + 0.5) * Math.PI) / 180];
+        const [got, want] = [custom(th, td), catalogue(th, td)];
+        expect(Math.abs(got - want)).toBeLessThanOrEqual((j < 85 ? 0.02 : 0.1) * want + 1e-12);
+      }
   });
 
   it("a whole BRDF's table of the microfacet BRDF gives its lobe, f at (l, v) and its (θh, θd) image", () => {

@@ -23,7 +23,7 @@ const CHECK_DELAY_MS = 400; // the checks run this long after the picture change
  * @param {RunStatus} status
  */
 function statusText(status) {
-  if (status.pending) return 'This code came with the link or from the page around this one. Read it, then run it.';
+  if (status.pending) return ''; // the consent box above the editor says it
   if (status.lost)
     return (
       'The graphics context was lost: the picture keeps the last values read back; your code runs again when ' +
@@ -58,7 +58,8 @@ function layout(container, slot, title) {
   const consent = element('div', 'custom-consent');
   const runButton = element('button', 'custom-run', 'Run this code');
   runButton.setAttribute('type', 'button');
-  consent.append(element('p', '', statusText({ pending: true, lost: false, problems: [], ran: null })), runButton);
+  const why = 'This code came with the link or from the page around this one, and has not run in this browser.';
+  consent.append(element('p', '', `${why} Read it, then run it.`), runButton);
   const status = element('p', 'custom-status');
   status.setAttribute('role', 'status');
   const problems = element('ul', 'custom-problems');
@@ -115,7 +116,7 @@ export function createCustomPanel(container, { slotKey, code, title, getRenderer
 
   function scheduleChecks(force = false) {
     const { ran, params } = shown;
-    if (!ran) return checks.show('The checks run once your code (or the starter) has run.');
+    if (!ran) return checks.show('The checks run once your code runs.');
     const values = sliderValues(parseCustom(slotKey, ran).params, params);
     const key = JSON.stringify([ran, values, checks.reference]);
     if (key === checksKey && !force) return;
@@ -143,7 +144,7 @@ export function createCustomPanel(container, { slotKey, code, title, getRenderer
       status.classList.toggle('custom-status-bad', Boolean(run.problems.length || run.lost));
       editor.setDiagnostics(run.problems);
       problems.replaceChildren(...run.problems.map((p) => element('li', '', `Line ${p.line}: ${p.message}`)));
-      shown = { code: stateCode, params, ran: run.ran };
+      shown = { code: stateCode, params, ran: run.pending ? null : run.ran }; // no checks of code not shown
       scheduleChecks();
     },
     focus: () => editor.focus(),

@@ -8,15 +8,21 @@ import { SLOTS } from '../../core/custom/slots.js';
 import { ALBEDO_ANGLES, lightDir } from './model.js';
 
 const ANGLE_STEPS = 1024; // D and F: θ from 0° to 90°, 0.088° apart (GGX at α = 0.02 is ~1.1° wide)
-const V_STEPS = 128; // V: θl × θv, 0.71° apart
+const V_STEPS = 128; // V: θl × θv, from 1.4° apart at n to 0.006° at the horizon
 const VIEW_THETA = 181; // whole BRDF: θv every 0.5° and φv every 3.75°, the polar plot's and the 3-D lobe's nodes
 const VIEW_PHI = 97;
 export const IMAGE_CELLS = 90; // the (θh, θd) image's cells (half-diff-image.js)
 const ALBEDO_U = 16; // albedo quadrature: u = (n·l)² × φ, midpoints, so that E = π × the mean of f
 const ALBEDO_PHI = 32;
 
-const angleAt = (i, steps) => ((i / (steps - 1)) * Math.PI) / 2;
-const grid = (steps) => Array.from({ length: steps }, (_, i) => angleAt(i, steps));
+/** θ = (π/2)(1 − (1 − u)²) for u from 0 to 1: nodes crowding towards 90°, and back from θ to u. */
+const GRAZING_CROWDED = {
+  angle: (u) => (Math.PI / 2) * (1 - (1 - u) ** 2),
+  inverse: (theta) => 1 - Math.sqrt(Math.max(1 - theta / (Math.PI / 2), 0)),
+};
+const EVEN = { angle: (u) => (u * Math.PI) / 2 };
+/** `steps` angles from 0 to 90°, evenly spaced in u (`spacing`: even in θ unless said). */
+const grid = (steps, spacing = EVEN) => Array.from({ length: steps }, (_, i) => spacing.angle(i / (steps - 1)));
 
 /** Linear interpolation of `values` (nodes 0…steps-1 over [0, π/2]) at θ. */
 function lerp1(values, theta) {
@@ -59,12 +65,19 @@ const PLANS = {
     inputs: grid(ANGLE_STEPS).map((t) => [Math.cos(t), s.alpha]),
     read: (values) => (a) => lerp1(values, thetaH(a)),
   }),
-  V: (s) => ({
-    key: `${s.alpha}`,
-    inputs: grid(V_STEPS).flatMap((tl) => grid(V_STEPS).map((tv) => [Math.cos(tl), Math.cos(tv), s.alpha])),
-    read: (values) => (a) =>
-      lerp2(values, V_STEPS, V_STEPS, [acosClamped(a.nl), Math.PI / 2], [acosClamped(a.nv), Math.PI / 2]),
-  }),
+  V: (s) => {
+    const nodes = grid(V_STEPS, GRAZING_CROWDED);
+    const inputs = nodes.flatMap((tl) => nodes.map((tv) => [Math.cos(tl), Math.cos(tv), s.alpha]));
+    // interpolated as G = V (n·l)(n·v), bounded: V grows like 1/(n·l + n·v) towards the grazing corner (cos 90° is
+    // 6e-17 in float32, not 0, so a node there holds a huge V); the nodes crowd towards 90° (GRAZING_CROWDED),
+    // where G turns fastest
+    const read = (values) => {
+      const g = values.map((v, i) => v * inputs[i][0] * inputs[i][1]);
+      const at = (cos) => [GRAZING_CROWDED.inverse(acosClamped(cos)), 1];
+      return (a) => lerp2(g, V_STEPS, V_STEPS, at(a.nl), at(a.nv)) / (a.nl * a.nv);
+    };
+    return { key: `${s.alpha}`, inputs, read };
+  },
   F: (s) => ({
     key: `${s.f0}`,
     inputs: grid(ANGLE_STEPS).map((t) => [s.f0, s.f0, s.f0, Math.cos(t)]),
