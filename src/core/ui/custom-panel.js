@@ -59,7 +59,10 @@ function layout(container, slot, title) {
   const runButton = element('button', 'custom-run', 'Run this code');
   runButton.setAttribute('type', 'button');
   const why = 'This code came with the link or from the page around this one, and has not run in this browser.';
-  consent.append(element('p', '', `${why} Read it, then run it.`), runButton);
+  consent.append(
+    element('p', '', `${why} Read it, then run it; until then the picture keeps the code before it.`),
+    runButton,
+  );
   const status = element('p', 'custom-status');
   status.setAttribute('role', 'status');
   const problems = element('ul', 'custom-problems');
