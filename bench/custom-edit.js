@@ -5,7 +5,7 @@
 // wait before an edit reaches the widget), then the static checks, the compile, the GPU table and the redraw.
 // Run alone: `flock /tmp/browser.lock node bench/custom-edit.js` (prints and returns { medianMs, worstMs, … }).
 import { pathToFileURL } from 'node:url';
-import { EDIT_DELAY_MS } from '../src/core/custom/custom-panel-run.js';
+import { EDIT_DELAY_MS } from '../src/core/custom/custom-panel-delay.js';
 import { buildApp, launchBrowser, openPage, serveStatic, settle } from '../tests/browser/harness.js';
 
 const EDITS = 20;

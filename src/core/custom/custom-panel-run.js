@@ -8,9 +8,6 @@ import { evaluateCustom } from './gpu-eval.js';
 import { SLOTS } from './slots.js';
 import { isTrusted } from './custom-panel-trust.js';
 
-/** An edit in the panel's editor is run this long after the last keystroke (typing is not run key by key). */
-export const EDIT_DELAY_MS = 250;
-
 /**
  * Where a view needs a slot's values: `key` names what else they depend on (α, the light…), `inputs` are in the
  * slot's order (slots.js), and `read(out)` turns evaluateCustom's four floats per input into the view's lookup.

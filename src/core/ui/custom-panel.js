@@ -8,7 +8,8 @@ import { SLOTS } from '../custom/slots.js';
 import { parseCustom } from '../custom/parse.js';
 import { runChecks } from '../custom/checks.js';
 import { trustCode } from '../custom/custom-panel-trust.js';
-import { EDIT_DELAY_MS, sliderValues } from '../custom/custom-panel-run.js';
+import { sliderValues } from '../custom/custom-panel-run.js';
+import { EDIT_DELAY_MS } from '../custom/custom-panel-delay.js';
 import { createSliders } from './custom-panel-sliders.js';
 import { createChecksView } from './custom-panel-checks.js';
 
