@@ -2,7 +2,7 @@
 // 3.00 rule for #line (spec §3.4: the line after `#line L S` is line L of string S), common.glsl comes before it
 // once, and the program assembles with it like any chunk.
 import { describe, expect, it } from 'vitest';
-import { CUSTOM_CHUNK, customChunk, withCustomChunk } from '../../src/core/custom/assemble.js';
+import { customChunk, customChunkName, withCustomChunk } from '../../src/core/custom/assemble.js';
 import { SLOTS } from '../../src/core/custom/slots.js';
 import { assembleGlsl } from '../../src/core/gpu/glsl.js';
 import { SHADER_CHUNKS } from '../../src/core/gpu/shader-chunks.js';
@@ -25,7 +25,9 @@ describe('customChunk', () => {
   });
   it('assembles into a program with common.glsl once, before the user’s code', () => {
     const chunks = withCustomChunk(SHADER_CHUNKS, 'brdf', SLOTS.brdf.starter);
-    const program = assembleGlsl(`#include "common.glsl"\n#include "${CUSTOM_CHUNK}"\nvoid main() {}`, { chunks });
+    const program = assembleGlsl(`#include "common.glsl"\n#include "${customChunkName('brdf')}"\nvoid main() {}`, {
+      chunks,
+    });
     expect(program.match(/#define PI /g)).toHaveLength(1);
     expect(program.indexOf('#define PI')).toBeLessThan(program.indexOf('#line 1 1'));
     expect(program).toContain('uniform float albedo; // slider 0 1 1 "Albedo"');

@@ -64,6 +64,14 @@ describe('parseCustom: loops (at most 1024 trips, counted by hand)', () => {
       [8, 'the loop counter j is changed'],
     ]);
   });
+  it('counts a function’s loops inside the loops around its call: 32 × 32 pass, 33 × 32 refused at the call', () => {
+    const helper = 'float sum32(float x) {\n  float s = 0.0;\n  for (int k = 0; k < 32; k++) s += x;\n  return s;\n}\n';
+    const caller = (n) => D(`  float s = 0.0;\n  for (int i = 0; i < ${n}; i++) s += sum32(nh);\n  return s;`);
+    expect(parseCustom('D', helper + caller(32)).ok).toBe(true);
+    expect(parseCustom('D', helper + caller(33)).problems).toEqual([
+      { line: 8, message: 'sum32() here runs 1056 loop trips (its loops × the loops around it); at most 1024' },
+    ]);
+  });
   it(`counts nested loops together: 32 × 32 = ${MAX_LOOP_ITERATIONS} pass, 33 × 32 do not`, () => {
     const nested = (n) =>
       D(`  float s = 0.0;\n  for (int i = 0; i < ${n}; i++)\n    for (int j = 0; j < 32; j++) s += 1.0;\n  return s;`);
@@ -123,6 +131,15 @@ describe('parseCustom: slider lines', () => {
         { name: 'k', min: -0.01, max: 0.5, value: 0, label: 'Shape k (Low 2012)', line: 2 },
       ],
     });
+  });
+  it('refuses a uniform hidden after other code on a line (it would read 0 for ever)', () => {
+    const code = `float k = 1.0; uniform float gain;\n${D('  return gain * nh;')}`;
+    expect(parseCustom('D', code).problems).toEqual([
+      {
+        line: 1,
+        message: 'a uniform must be a slider line of its own: uniform float name; // slider MIN MAX DEFAULT "Label"',
+      },
+    ]);
   });
   it('refuses malformed slider lines, each on its line, with the reason', () => {
     const code = [

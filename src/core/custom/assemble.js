@@ -1,11 +1,16 @@
 // @ts-check
-// A user-written term as a GLSL chunk a program includes ('custom.glsl'): common.glsl first (PI, saturate,
+// A user-written term as a GLSL chunk a program includes ('custom-<slot>.glsl'): common.glsl first (PI, saturate,
 // sin2FromCos), then the user's code after `#line 1 1`, so the compiler's log names the user's own lines in source
 // string 1, then `#line 1 2`, so what follows in the program is never mistaken for the user's (string 2).
 // The code is the one parseCustom accepted: slider uniforms stay as the user wrote them.
 import { slotOf } from './slots.js';
 
-export const CUSTOM_CHUNK = 'custom.glsl';
+/**
+ * The chunk name of a slot's code: one per slot, so a program may hold custom terms of two slots (a custom D and a
+ * custom V). The catalogue's custom terms name the same files (src/math/catalogue/custom-terms.js).
+ * @param {string} slotKey
+ */
+export const customChunkName = (slotKey) => `custom-${slotOf(slotKey).key}.glsl`;
 /** The source string the compiler's log gives the user's lines, and the one of what follows them. */
 export const USER_SOURCE = 1;
 export const AFTER_USER_SOURCE = 2;
@@ -36,4 +41,7 @@ export function customChunk(slotKey, code) {
  * @param {string} slotKey
  * @param {string} code
  */
-export const withCustomChunk = (chunks, slotKey, code) => ({ ...chunks, [CUSTOM_CHUNK]: customChunk(slotKey, code) });
+export const withCustomChunk = (chunks, slotKey, code) => ({
+  ...chunks,
+  [customChunkName(slotKey)]: customChunk(slotKey, code),
+});

@@ -6,8 +6,17 @@ import { USER_SOURCE } from './assemble.js';
 
 /** @typedef {{ line: number, message: string }} CompileError  line 0: not in the user's code */
 
-// what three.js puts before a GLSL3 ShaderMaterial's own code, as far as the compiler's rules go
-const PREFIX = '#version 300 es\nprecision highp float;\nprecision highp int;\n';
+// what three.js puts before a GLSL3 ShaderMaterial's fragment code (WebGLProgram.js), as far as the app's programs
+// read it: the precision and the camera uniforms (brdf-sphere.frag.glsl reads isOrthographic)
+const PREFIX = [
+  '#version 300 es',
+  'precision highp float;',
+  'precision highp int;',
+  'uniform mat4 viewMatrix;',
+  'uniform vec3 cameraPosition;',
+  'uniform bool isOrthographic;',
+  '',
+].join('\n');
 // ANGLE and the drivers write 'ERROR: 1:3: message' (source string : line)
 const LOG_LINE = /^\s*(?:ERROR|error)\s*:\s*(\d+)\s*:\s*(\d+)\s*:\s*(.*)$/;
 

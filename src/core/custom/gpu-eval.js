@@ -4,7 +4,7 @@
 // (parse.js: no unbounded loop reaches the GPU) and a raw compile (compile.js: no console output) first.
 import { evaluateOnGpu, parityFragment } from '../gpu/parity.js';
 import { SHADER_CHUNKS } from '../gpu/shader-chunks.js';
-import { CUSTOM_CHUNK, withCustomChunk } from './assemble.js';
+import { customChunkName, withCustomChunk } from './assemble.js';
 import { compileCustom } from './compile.js';
 import { parseCustom } from './parse.js';
 import { slotOf } from './slots.js';
@@ -25,7 +25,7 @@ function customCase(slotKey, code, sliders, params, inputs) {
   );
   return {
     name: slot.fn,
-    chunk: CUSTOM_CHUNK,
+    chunk: customChunkName(slotKey),
     chunks: withCustomChunk(SHADER_CHUNKS, slotKey, code),
     glsl: slot.evalCall,
     outputs: slot.outputs,

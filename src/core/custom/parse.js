@@ -4,8 +4,8 @@
 // that could hang the GPU; its slider lines become parameters. Every problem names the user's own line.
 // A loop passes only in the one shape whose trip count is known before it runs:
 // `for (int i = A; i < B; i++)` (<, <=, >, >=; ++, --, += C, -= C; A, B, C integer literals), its counter never
-// assigned in the body, at most MAX_LOOP_ITERATIONS trips, nested loops counted together. `while` and `do` have no
-// such bound and are refused.
+// assigned in the body, at most MAX_LOOP_ITERATIONS trips, nested loops (and the loops of a function called inside a
+// loop) counted together. `while` and `do` have no such bound and are refused.
 import { parse } from '@shaderfrog/glsl-parser/index.js';
 import { visit } from '@shaderfrog/glsl-parser/ast/index.js';
 import { slotOf } from './slots.js';
@@ -21,6 +21,7 @@ const MAX_LABEL = 40;
 const SLIDER =
   /^\s*uniform\s+float\s+([A-Za-z_]\w*)\s*;\s*\/\/\s*slider\s+(\S+)\s+(\S+)\s+(\S+)\s+"([^"\p{Cc}]*)"\s*$/u;
 const SLIDER_FORM = 'uniform float name; // slider MIN MAX DEFAULT "Label"';
+const UNIFORM_LINE = /^\s*uniform\b/;
 const DECIMAL = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;
 /** Names the host program owns: the app's uniforms (uName), GLSL's own, and what common.glsl and the harness give. */
 const RESERVED = /^(gl_\w*|u[A-Z]\w*|PI|saturate|sin2FromCos|main|fragColor)$/;
@@ -59,7 +60,7 @@ function scanLines(lines) {
   lines.forEach((text, i) => {
     const line = i + 1;
     if (/^\s*#/.test(text)) problems.push({ line, message: 'preprocessor directives (#…) are not available here' });
-    if (!/^\s*uniform\b/.test(text)) return;
+    if (!UNIFORM_LINE.test(text)) return;
     const found = sliderOf(text, line);
     if ('problem' in found) problems.push(found.problem);
     else if (params.some((p) => p.name === found.param.name))
@@ -200,64 +201,162 @@ function matchesSignature(fn, slot) {
   );
 }
 
+/** @param {any} fn a function definition @returns {string} */
+const nameOf = (fn) => fn.prototype.header.name.identifier;
+
 /**
- * The problems of a parsed program: the slot's function, loops, reserved names.
- * @param {any} ast
- * @param {import('./slots.js').Slot} slot
- * @returns {Problem[]}
+ * The user functions with an out or inout parameter: a call of one may write a loop counter.
+ * @param {any[]} functions
  */
-function checkProgram(ast, slot) {
-  /** @type {Problem[]} */
-  const problems = [];
-  const functions = ast.program.filter((/** @type {any} */ s) => s.type === 'function');
-  const writers = new Set(
+const writersOf = (functions) =>
+  new Set(
     functions
-      .filter((/** @type {any} */ f) =>
+      .filter((f) =>
         (f.prototype.parameters ?? []).some((/** @type {any} */ p) =>
           (p.qualifier ?? []).some((/** @type {any} */ q) => q.token === 'out' || q.token === 'inout'),
         ),
       )
-      .map((/** @type {any} */ f) => f.prototype.header.name.identifier),
+      .map(nameOf),
   );
-  const own = functions.filter((/** @type {any} */ f) => f.prototype.header.name.identifier === slot.fn);
-  if (!own.length) problems.push({ line: 1, message: `${slot.fn} is missing: write ${slot.signature} { … }` });
-  for (const fn of own.filter((/** @type {any} */ f) => !matchesSignature(f, slot)))
-    problems.push({ line: lineOf(fn), message: `${slot.fn} must be ${slot.signature}, not ${declarationOf(fn)}` });
+
+/**
+ * The slot's function: there, and with the slot's signature.
+ * @param {any[]} functions
+ * @param {import('./slots.js').Slot} slot
+ * @returns {Problem[]}
+ */
+function signatureProblems(functions, slot) {
+  const own = functions.filter((f) => nameOf(f) === slot.fn);
+  if (!own.length) return [{ line: 1, message: `${slot.fn} is missing: write ${slot.signature} { … }` }];
+  return own
+    .filter((f) => !matchesSignature(f, slot))
+    .map((f) => ({ line: lineOf(f), message: `${slot.fn} must be ${slot.signature}, not ${declarationOf(f)}` }));
+}
+
+/**
+ * The loops of one function: each refused one, the largest product of nested trip counts (its cost), and its
+ * calls of other functions with the product of the loops around each.
+ * @param {any} fn
+ * @param {Set<string>} writers
+ */
+function functionLoops(fn, writers) {
+  /** @type {Problem[]} */
+  const problems = [];
+  /** @type {{ callee: string, around: number, line: number }[]} */
+  const calls = [];
   /** @type {number[]} trip counts of the enclosing loops */
   const nest = [];
-  const reserved = (/** @type {any} */ node) => {
-    const name = node?.identifier;
-    if (typeof name === 'string' && RESERVED.test(name))
-      problems.push({ line: lineOf(node), message: `'${name}' is a reserved name (gl_*, u + capital, PI, …)` });
-  };
+  let cost = 1;
+  const product = () => nest.reduce((a, b) => a * b, 1);
   const refuse = (/** @type {any} */ node, /** @type {string} */ message) =>
     problems.push({ line: lineOf(node), message });
-  visit(ast, {
+  visit(fn.body, {
     while_statement: { enter: (p) => refuse(p.node, `'while' loops are refused (no constant bound); ${LOOP_FORM}`) },
     do_statement: { enter: (p) => refuse(p.node, `'do … while' loops are refused (no constant bound); ${LOOP_FORM}`) },
     for_statement: {
       enter: (p) => {
         const loop = forLoop(p.node);
-        let trips = 0;
+        const trips = 'why' in loop ? 1 : loop.trips;
         if ('why' in loop) refuse(p.node, loop.why);
         else {
           const write = counterWrite(p.node.body, loop.counter, writers);
-          if (write) refuse({ location: { start: { line: write } } }, `the loop counter ${loop.counter} is changed`);
-          const total = nest.reduce((a, b) => a * b, loop.trips);
-          const nested = nest.length ? ' (nested loops multiply)' : '';
-          if (total > MAX_LOOP_ITERATIONS)
-            refuse(p.node, `${total} loop trips${nested}; at most ${MAX_LOOP_ITERATIONS}`);
-          trips = loop.trips;
+          if (write) problems.push({ line: write, message: `the loop counter ${loop.counter} is changed` });
         }
+        const total = product() * trips;
+        const nested = nest.length ? ' (nested loops multiply)' : '';
+        if (total > MAX_LOOP_ITERATIONS) refuse(p.node, `${total} loop trips${nested}; at most ${MAX_LOOP_ITERATIONS}`);
+        cost = Math.max(cost, total);
         nest.push(trips);
       },
       exit: () => void nest.pop(),
+    },
+    function_call: {
+      enter: (p) => {
+        const id = /** @type {any} */ (p.node.identifier);
+        const callee = id.identifier ?? id.specifier?.identifier; // a user function's name is a type_name node
+        if (typeof callee === 'string') calls.push({ callee, around: product(), line: lineOf(p.node) });
+      },
+    },
+  });
+  return { problems, cost, calls };
+}
+
+/**
+ * Loops: each function's own, and calls that run a function's loops inside other loops (GLSL has no recursion:
+ * the compiler refuses it, and a cycle here counts once).
+ * @param {any[]} functions
+ * @returns {Problem[]}
+ */
+function loopProblems(functions) {
+  const writers = writersOf(functions);
+  const loops = new Map(functions.map((f) => [nameOf(f), functionLoops(f, writers)]));
+  /** @type {Map<string, number>} */
+  const memo = new Map();
+  /** @param {string} name @returns {number} the most trips one call of the function can run */
+  const costOf = (name) => {
+    const own = loops.get(name);
+    if (!own) return 1; // a built-in
+    if (memo.has(name)) return /** @type {number} */ (memo.get(name));
+    memo.set(name, own.cost); // a cycle (refused by the compiler) stops here
+    const cost = Math.max(own.cost, ...own.calls.map((c) => c.around * costOf(c.callee)));
+    memo.set(name, cost);
+    return cost;
+  };
+  const problems = [...loops.values()].flatMap((l) => l.problems);
+  for (const { calls } of loops.values())
+    for (const { callee, around, line } of calls) {
+      const total = around * costOf(callee);
+      if (around > 1 && total > MAX_LOOP_ITERATIONS) {
+        const message = `${callee}() here runs ${total} loop trips (its loops × the loops around it)`;
+        problems.push({ line, message: `${message}; at most ${MAX_LOOP_ITERATIONS}` });
+      }
+    }
+  return problems;
+}
+
+/**
+ * Names the host program owns, where the user declares them; uniforms that are not on a slider line of their own
+ * (one hidden after other code on a line would read 0 for ever).
+ * @param {any} ast
+ * @param {Set<number>} uniformLines the lines that begin with `uniform` (scanLines judged them)
+ * @returns {Problem[]}
+ */
+function declarationProblems(ast, uniformLines) {
+  /** @type {Problem[]} */
+  const problems = [];
+  const reserved = (/** @type {any} */ node) => {
+    const name = node?.identifier;
+    if (typeof name === 'string' && RESERVED.test(name))
+      problems.push({ line: lineOf(node), message: `'${name}' is a reserved name (gl_*, u + capital, PI, …)` });
+  };
+  const isUniform = (/** @type {any} */ list) =>
+    (list.specified_type?.qualifiers ?? []).some((/** @type {any} */ q) => q.token === 'uniform');
+  visit(ast, {
+    declarator_list: {
+      enter: (p) => {
+        if (!isUniform(p.node)) return;
+        for (const d of p.node.declarations ?? [])
+          if (!uniformLines.has(lineOf(d)))
+            problems.push({ line: lineOf(d), message: `a uniform must be a slider line of its own: ${SLIDER_FORM}` });
+      },
     },
     declaration: { enter: (p) => reserved(p.node.identifier) },
     parameter_declaration: { enter: (p) => reserved(p.node.identifier) },
     function_header: { enter: (p) => reserved(p.node.name) },
   });
   return problems;
+}
+
+/**
+ * The problems of a parsed program: the slot's function, loops, reserved names, uniforms off a slider line.
+ * @param {any} ast
+ * @param {import('./slots.js').Slot} slot
+ * @param {Set<number>} uniformLines the lines that begin with `uniform`
+ * @returns {Problem[]}
+ */
+function checkProgram(ast, slot, uniformLines) {
+  const functions = ast.program.filter((/** @type {any} */ s) => s.type === 'function');
+  return [...signatureProblems(functions, slot), ...loopProblems(functions), ...declarationProblems(ast, uniformLines)];
 }
 
 /**
@@ -287,7 +386,9 @@ export function parseCustom(slotKey, code) {
     return { ok: false, params: [], problems: [{ line: 1, message }] };
   }
   const text = code.replace(/\r\n?/g, '\n');
-  const { params, problems } = scanLines(text.split('\n'));
+  const lines = text.split('\n');
+  const { params, problems } = scanLines(lines);
+  const uniformLines = new Set(lines.flatMap((line, i) => (UNIFORM_LINE.test(line) ? [i + 1] : [])));
   /** @type {any} */
   let ast = null;
   try {
@@ -296,7 +397,7 @@ export function parseCustom(slotKey, code) {
     const error = /** @type {{ message?: string, location?: { start?: { line?: number } } }} */ (e);
     problems.push({ line: error?.location?.start?.line ?? 1, message: syntaxMessage(String(error?.message ?? e)) });
   }
-  if (ast) problems.push(...checkProgram(ast, slot));
+  if (ast) problems.push(...checkProgram(ast, slot, uniformLines));
   problems.sort((a, b) => a.line - b.line);
   return { ok: problems.length === 0, params, problems };
 }

@@ -3,7 +3,9 @@
 // "Background: Physics and Math of Shading"): local frame n = (0, 0, 1), the BRDF in 1/sr, V = G / ((n·l)(n·v)),
 // so the microfacet BRDF is F·D·V / 4. Pure data: loads in Node. Each starter is a correct term (the same as the
 // reference the checks compare it with by default), written the way shaders/ writes it, float32 traps included.
-// A custom chunk has common.glsl before it (PI, saturate, sin2FromCos), so the starters use PI.
+// A custom chunk has common.glsl before it (PI, saturate, sin2FromCos), so the starters use PI. The calls of the
+// slots that stand in a family's menu are the catalogue's (src/math/catalogue/custom-terms.js).
+import { CUSTOM_TERMS } from '../../math/catalogue/index.js';
 
 /**
  * One argument of a slot's GLSL function.
@@ -89,6 +91,9 @@ vec3 customBRDF(vec3 l, vec3 v) {
 }
 `;
 
+/** The dispatch call of a family's custom term. @param {'ndf' | 'visibility' | 'fresnel'} family */
+const catalogueCall = (family) => /** @type {string} */ (CUSTOM_TERMS[family]?.glslCall);
+
 /** @type {Record<Slot['key'], Slot>} */
 export const SLOTS = {
   D: {
@@ -100,7 +105,7 @@ export const SLOTS = {
     family: 'ndf',
     reference: 'ggx',
     starter: STARTER_D,
-    call: 'customD(nh, alpha)',
+    call: catalogueCall('ndf'),
     inputs: ['nh', 'alpha'],
     evalCall: 'customD(a.x, a.y)',
     outputs: 1,
@@ -114,7 +119,7 @@ export const SLOTS = {
     family: 'visibility',
     reference: 'smithGGXCorrelated',
     starter: STARTER_V,
-    call: 'customV(nl, nv, alpha)',
+    call: catalogueCall('visibility'),
     inputs: ['nl', 'nv', 'alpha'],
     evalCall: 'customV(a.x, a.y, a.z)',
     outputs: 1,
@@ -128,7 +133,7 @@ export const SLOTS = {
     family: 'fresnel',
     reference: 'schlick',
     starter: STARTER_F,
-    call: 'customF(f0, lh)',
+    call: catalogueCall('fresnel'),
     inputs: ['f0r', 'f0g', 'f0b', 'lh'],
     evalCall: 'customF(a.xyz, a.w)',
     outputs: 3,

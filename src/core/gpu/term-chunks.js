@@ -3,7 +3,10 @@
 // ('ndf-term.glsl', 'visibility-term.glsl', 'fresnel-term.glsl') that defines the family's dispatch function
 // (ndfTerm, visibilityTerm, fresnelTerm) as an explicit chain over the terms' defines, each branch including the
 // term's chunk and declaring the uniforms its call reads, and #error when no define of the family is given.
-// A new catalogue entry with a define and a glslCall is in the chain with no other edit.
+// A new catalogue entry with a define and a glslCall is in the chain with no other edit. Last in the chain, the
+// family's user-written term (CUSTOM_TERMS): its chunk is the user's code, which a widget adds to the chunks
+// (src/core/custom/assemble.js, withCustomChunk).
+import { CUSTOM_TERMS } from '../../math/catalogue/index.js';
 
 /**
  * The dispatch chunk of one family, or null for a family without a generated dispatch.
@@ -16,7 +19,10 @@ export function termDispatchChunk(family, host = 'brdf.glsl') {
   const lines = [
     `// ${family.glslDispatch}: ${family.label}, picked by ${family.definePrefix}_* (src/math/catalogue).`,
   ];
-  const offered = Object.values(family.terms).filter((term) => term.define && term.glslCall);
+  const custom = CUSTOM_TERMS[family.family];
+  const offered = [...Object.values(family.terms), ...(custom ? [custom] : [])].filter(
+    (term) => term.define && term.glslCall,
+  );
   offered.forEach((term, i) => {
     lines.push(`${i === 0 ? '#if' : '#elif'} defined(${term.define})`);
     if (term.chunk) lines.push(`#include "${term.chunk}"`);

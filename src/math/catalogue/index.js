@@ -4,6 +4,7 @@
 // shader variants, graders, parity rows, stress domains and bench families derive from it; adding a term is its
 // JS function, its GLSL function and one entry in its family's module (tests/unit/add-a-term.test.js).
 import { COMPENSATION_FAMILY } from './compensation-terms.js';
+import { CUSTOM_KEY, CUSTOM_TERMS } from './custom-terms.js';
 import { DIFFUSE_FAMILY } from './diffuse-terms.js';
 import { FRESNEL_FAMILY } from './fresnel-terms.js';
 import { NDF_FAMILY } from './ndf-terms.js';
@@ -43,7 +44,8 @@ export const TERM_ALIASES = {
 };
 
 /**
- * The family's entry for key (an old spelling of TERM_ALIASES accepted); throws for a key it does not hold.
+ * The family's entry for key (an old spelling of TERM_ALIASES accepted; 'custom', the user-written term, in a family
+ * with a slot); throws for a key it does not hold.
  * @param {FamilyName} family
  * @param {string} key
  * @returns {TermEntry}
@@ -51,6 +53,7 @@ export const TERM_ALIASES = {
 export function termEntry(family, key) {
   const terms = CATALOGUE[family]?.terms;
   if (!terms) throw new Error(`catalogue: no family '${family}'`);
+  if (key === CUSTOM_KEY && CUSTOM_TERMS[family]) return CUSTOM_TERMS[family];
   const alias = TERM_ALIASES[family]?.[key];
   const entry = terms[key] ?? (alias ? terms[alias] : undefined);
   if (!entry) throw new Error(`catalogue: no ${family} term '${key}'`);
@@ -65,14 +68,19 @@ export function termEntry(family, key) {
 export const termLabel = (family, key) => termEntry(family, key).label;
 
 /**
- * { key: label } of a family, in menu order, or of the given keys in their order (for enum and set options).
+ * { key: label } of a family, in menu order, or of the given keys in their order (for enum and set options);
+ * `custom: true` adds the user-written term last, in a family that has one (see CUSTOM_TERMS).
  * @param {FamilyName} family
  * @param {string[]} [keys]
+ * @param {{ custom?: boolean }} [options]
  * @returns {Record<string, string>}
  */
-export function termOptions(family, keys = Object.keys(CATALOGUE[family].terms)) {
-  return Object.fromEntries(keys.map((key) => [key, termLabel(family, key)]));
+export function termOptions(family, keys = Object.keys(CATALOGUE[family].terms), { custom = false } = {}) {
+  const withCustom = custom && CUSTOM_TERMS[family] ? [...keys, CUSTOM_KEY] : keys;
+  return Object.fromEntries(withCustom.map((key) => [key, termLabel(family, key)]));
 }
+
+export { CUSTOM_KEY, CUSTOM_TERMS };
 
 /** @type {Record<string, FamilyName>} */
 const FAMILY_OF_CHOICE = Object.fromEntries(Object.values(CATALOGUE).map((f) => [f.choice, f.family]));

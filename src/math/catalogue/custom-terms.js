@@ -1,0 +1,42 @@
+// @ts-check
+// The user-written term of a family (issue 13): a menu's `custom` option. It has no float64 function (the user's
+// code only ever runs as GLSL: src/core/custom/gpu-eval.js evaluates it for curves and checks); in GLSL it is the
+// user's function in the chunk 'custom-<slot>.glsl' (src/core/custom/assemble.js writes it), picked by
+// `<PREFIX>_CUSTOM` in the family's generated dispatch (src/core/gpu/term-chunks.js). Not in a family's `terms`:
+// menus offer it only when asked (termOptions(family, keys, { custom: true })), as a widget must bring the code.
+
+export const CUSTOM_KEY = 'custom';
+
+/**
+ * @param {string} definePrefix
+ * @param {string} slot the slot's key in src/core/custom/slots.js
+ * @param {string} glsl the user's function
+ * @param {string} glslCall its call over the family dispatch's arguments
+ * @param {string[]} args
+ * @returns {import('./types.js').TermEntry}
+ */
+const custom = (definePrefix, slot, glsl, glslCall, args) => ({
+  key: CUSTOM_KEY,
+  label: 'Custom (your GLSL)',
+  short: 'Custom',
+  cite: 'your own code',
+  js: null,
+  evaluate: null,
+  glsl,
+  chunk: `custom-${slot}.glsl`,
+  define: `${definePrefix}_CUSTOM`,
+  glslCall,
+  args,
+  params: {},
+});
+
+/**
+ * The custom term of each family whose GLSL dispatch is generated (the diffuse dispatch is shaders/diffuse-term.glsl,
+ * written by hand: it has no custom branch yet).
+ * @type {Partial<Record<import('./types.js').FamilyName, import('./types.js').TermEntry>>}
+ */
+export const CUSTOM_TERMS = {
+  ndf: custom('NDF', 'D', 'customD', 'customD(nh, alpha)', ['nh', 'alpha']),
+  visibility: custom('VIS', 'V', 'customV', 'customV(nl, nv, alpha)', ['nl', 'nv', 'alpha']),
+  fresnel: custom('F', 'F', 'customF', 'customF(f0, lh)', ['f0', 'lh']),
+};
