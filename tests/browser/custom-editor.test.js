@@ -252,7 +252,7 @@ describe('custom terms in brdf-lobe: errors, safety, sharing', () => {
       window.__lose.loseContext();
     });
     await settle(page, 600);
-    expect(await panelText(page, 'D', '.custom-status')).toMatch(/graphics context was lost/);
+    expect(await panelText(page, 'D', '.custom-status')).toMatch(/WebGL context away; it comes back by itself/);
     expect(await shot(page, '.polar-plot canvas')).toBe(good);
     await page.evaluate(() => window.__lose.restoreContext());
     await settle(page, 1500);
