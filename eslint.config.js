@@ -1,6 +1,7 @@
 // ESLint (flat config): the recommended rules, the house's line and function lengths, and the boundaries
 // between rooms (DESIGN.md, "Layout"): src/math imports nothing of the app; the shared core imports no widget,
-// page or lab; a widget imports no page; only debug-hooks.js touches the test hooks (globalThis.__shadingLab).
+// page or lab; user-written terms (src/core/custom) import only the math and the GPU layer; a widget imports no
+// page; only debug-hooks.js touches the test hooks (globalThis.__shadingLab).
 import js from '@eslint/js';
 import globals from 'globals';
 
@@ -52,6 +53,19 @@ export default [
     files: ['src/core/framework/**/*.js'],
     rules: {
       'no-restricted-imports': ['error', forbid(['widgets', 'pages', 'lab'], 'The framework imports no widget.')],
+    },
+  },
+  {
+    // user-written terms (issue 13): the slots, checks and GPU evaluation know the math and the GPU layer only
+    files: ['src/core/custom/**/*.js'],
+    rules: {
+      'no-restricted-imports': [
+        'error',
+        forbid(
+          ['framework', 'ui', 'widgets', 'pages', 'lab', 'exercises', 'tour', 'embedding'],
+          'src/core/custom imports src/math and src/core/gpu only.',
+        ),
+      ],
     },
   },
   {

@@ -6,25 +6,43 @@
 // an enum or list value must be an OWN option (`__proto__`, `constructor`, `toString` are `in` every object),
 // numbers are plain decimals (no hex, no Infinity), and a value echoed in a notice is cut short.
 //
-// The kinds of field (number, enum, set, bool, color, samples, text) are the Field typedefs of types.js.
+// The kinds of field (number, enum, set, bool, color, samples, text) are the Field typedefs of types.js; a
+// user-written term adds two here: its code (`code`, carried compressed when long: src/core/custom/code-state.js)
+// and its sliders' values (`params`).
 // An enum or set field's `aliases` are old spellings of its options: each is read as its option, silently, so
 // an old link keeps working; the state (and so every URL written from it) holds the option's own key.
+
+import { decodeCode, encodeCode } from '../custom/code-state.js';
 
 /** @typedef {import('./types.js').Schema} Schema */
 /** @typedef {import('./types.js').Field} Field */
 /** @typedef {import('./types.js').State} State */
 /** @typedef {import('./types.js').StateValue} StateValue */
 /** @typedef {{ value: any, notice?: string }} Coerced  the value taken (or kept), and why, when not as given */
+/**
+ * A user-written term's GLSL (no control: the code editor edits it); the URL carries encodeCode's form.
+ * @typedef {{ type: 'code', slot: string, default: string, label?: string }} CodeField
+ */
+/**
+ * The values of a user-written term's sliders, name → finite number (no control of its own: the panel makes one
+ * per slider line); the URL carries `name:value,name:value`.
+ * @typedef {{ type: 'params', default: Record<string, number>, label?: string }} ParamsField
+ */
+/** @typedef {Field | CodeField | ParamsField} AnyField */
+
+export const MAX_PARAM_NAMES = 16;
+const PARAM_NAME = /^[A-Za-z_]\w*$/;
+
+/** A value as a new state holds it: lists and records copied. @param {any} v */
+const copyValue = (v) => (Array.isArray(v) ? [...v] : v !== null && typeof v === 'object' ? { ...v } : v);
 
 /**
- * Every field at its default (lists copied).
+ * Every field at its default (lists and records copied).
  * @param {Schema} schema
  * @returns {State}
  */
 export function defaultState(schema) {
-  return Object.fromEntries(
-    Object.entries(schema).map(([k, f]) => [k, Array.isArray(f.default) ? [...f.default] : f.default]),
-  );
+  return Object.fromEntries(Object.entries(schema).map(([k, f]) => [k, copyValue(f.default)]));
 }
 
 const MAX_SHOWN = 60; // characters of a bad value repeated in a notice
@@ -94,8 +112,47 @@ function coerceSamples(f, raw, bad) {
 }
 
 /**
+ * Slider values: a record name → number, or its URL form `name:value,…`; refused whole if any entry is bad.
+ * @param {unknown} raw
+ * @param {(why: string) => Coerced} bad
+ * @returns {Coerced}
+ */
+function coerceParams(raw, bad) {
+  let entries;
+  if (typeof raw === 'string') entries = raw === '' ? [] : raw.split(',').map((item) => item.split(':'));
+  else if (raw !== null && typeof raw === 'object' && Object.getPrototypeOf(raw) === Object.prototype)
+    entries = Object.entries(raw);
+  else return bad(`${fmt(raw)} is not a list of name:value`);
+  if (entries.length > MAX_PARAM_NAMES) return bad(`${entries.length} values; at most ${MAX_PARAM_NAMES}`);
+  /** @type {Record<string, number>} */
+  const value = {};
+  for (const entry of entries) {
+    const [name, v, ...extra] = entry;
+    const x = typeof v === 'number' || typeof v === 'string' ? parseNumber(v) : NaN;
+    if (extra.length || typeof name !== 'string' || !PARAM_NAME.test(name) || name.includes('__'))
+      return bad(`${fmt(entry.join(':'))} is not name:value with a GLSL name`);
+    if (!Number.isFinite(x)) return bad(`${name}: ${fmt(v)} is not a finite decimal`);
+    value[name] = x || 0; // `__proto__` cannot get here: GLSL reserves names with two underscores
+  }
+  return { value };
+}
+
+/**
+ * A code field's value: the code a URL or a message carried (plain or compressed), within the size limit.
+ * @param {string} label
+ * @param {unknown} raw
+ * @param {StateValue} fallback
+ * @returns {Coerced}
+ */
+function coerceCode(label, raw, fallback) {
+  const decoded = decodeCode(raw);
+  if ('code' in decoded) return { value: decoded.code };
+  return { value: fallback, notice: `${label}: ${decoded.error}; kept the code as it was.` };
+}
+
+/**
  * @param {string} key
- * @param {Field} f
+ * @param {AnyField} f
  * @param {unknown} raw
  * @param {StateValue} fallback
  * @returns {Coerced}
@@ -151,6 +208,10 @@ function coerceField(key, f, raw, fallback) {
       if (typeof raw !== 'string' || raw.length > f.maxLength || !TEXT.test(raw))
         return bad(`${fmt(raw)} is not a name of at most ${f.maxLength} letters, digits, spaces or . _ - ( ) + ,`);
       return { value: raw };
+    case 'code':
+      return coerceCode(f.label ?? key, raw, fallback);
+    case 'params':
+      return coerceParams(raw, bad);
     default:
       throw new Error(`state: unknown field type ${/** @type {{ type: string }} */ (f).type}`);
   }
@@ -175,8 +236,29 @@ export function coerceState(schema, input, base = defaultState(schema)) {
   return { state, notices };
 }
 
-/** @type {(a: StateValue, b: StateValue) => boolean} */
-const sameValue = (a, b) => (Array.isArray(a) && Array.isArray(b) ? a.join(',') === b.join(',') : a === b);
+/** A slider record in its URL form. @param {Record<string, number>} record */
+const paramsText = (record) =>
+  Object.entries(record)
+    .map(([name, v]) => `${name}:${v}`)
+    .join(',');
+
+/** @type {(a: any, b: any) => boolean} */
+const sameValue = (a, b) => {
+  if (Array.isArray(a) && Array.isArray(b)) return a.join(',') === b.join(',');
+  if (a && b && typeof a === 'object' && typeof b === 'object') return paramsText(a) === paramsText(b);
+  return a === b;
+};
+
+/**
+ * One field's value in a URL.
+ * @param {AnyField} f
+ * @param {any} v
+ */
+function paramText(f, v) {
+  if (f.type === 'code') return encodeCode(v);
+  if (f.type === 'params') return paramsText(v);
+  return Array.isArray(v) ? v.join(',') : typeof v === 'boolean' ? (v ? '1' : '0') : String(v);
+}
 
 /**
  * The state as URL parameters, only the fields that differ from their default.
@@ -188,7 +270,7 @@ export function stateToParams(schema, state) {
   for (const [key, f] of Object.entries(schema)) {
     const v = state[key];
     if (v === undefined || sameValue(v, f.default)) continue;
-    params.set(key, Array.isArray(v) ? v.join(',') : typeof v === 'boolean' ? (v ? '1' : '0') : String(v));
+    params.set(key, paramText(f, v));
   }
   return params;
 }

@@ -1,0 +1,180 @@
+// @ts-check
+// The slots a user-written term fills, each with its fixed GLSL signature in the talk's conventions (Hoffman 2013,
+// "Background: Physics and Math of Shading"): local frame n = (0, 0, 1), the BRDF in 1/sr, V = G / ((n·l)(n·v)),
+// so the microfacet BRDF is F·D·V / 4. Pure data: loads in Node. Each starter is a correct term (the same as the
+// reference the checks compare it with by default), written the way shaders/ writes it, float32 traps included.
+// A custom chunk has common.glsl before it (PI, saturate, sin2FromCos), so the starters use PI.
+
+/**
+ * One argument of a slot's GLSL function.
+ * @typedef {object} SlotArg
+ * @property {string} name as the signature spells it
+ * @property {'float' | 'vec3'} type
+ * @property {number} min the documented domain (a direction's components: -1…1)
+ * @property {number} max
+ * @property {string} unit '' for a pure number
+ * @property {string} label
+ */
+
+/**
+ * @typedef {object} Slot
+ * @property {'D' | 'V' | 'F' | 'diffuse' | 'brdf'} key
+ * @property {string} fn the GLSL function the user writes
+ * @property {string} signature its declaration
+ * @property {'float' | 'vec3'} returns
+ * @property {SlotArg[]} args
+ * @property {'ndf' | 'visibility' | 'fresnel' | 'diffuse' | null} family the catalogue family it stands beside
+ * @property {string} reference the catalogue key (of `family`, or of the diffuse family for 'brdf') the checks
+ *   compare with by default
+ * @property {string} starter GLSL text, a correct term
+ * @property {string} call the expression the widgets and the term dispatch use, over the dispatch's arguments
+ * @property {string[]} inputs what one evaluation input holds, in order (gpu-eval.js packs it into a.xyzw, b.xyzw)
+ * @property {string} evalCall the call over a and b that evaluates the slot on those inputs
+ * @property {1 | 3} outputs floats of the result (a float in .x, a vec3 in .xyz)
+ */
+
+const ALPHA_ARG = /** @type {SlotArg} */ ({ name: 'alpha', type: 'float', min: 1e-4, max: 1, unit: '', label: 'α' });
+/** @param {string} name @param {string} label @returns {SlotArg} */
+const cosArg = (name, label) => ({ name, type: 'float', min: 0, max: 1, unit: '', label });
+/** @param {string} name @param {string} label @returns {SlotArg} */
+const dirArg = (name, label) => ({ name, type: 'vec3', min: -1, max: 1, unit: '', label });
+
+const STARTER_D = `// GGX (Trowbridge & Reitz 1975; Walter et al. 2007), in 1/sr:
+// D(m) = α² / (π ((n·m)² α² + sin²θm)²), written with sin²θm = (1 - n·m)(1 + n·m):
+// 1 - (n·m)² would cancel near n·m = 1, where the peak of a small α is.
+float customD(float nh, float alpha) {
+  if (!(nh > 0.0)) return 0.0;
+  float c = min(nh, 1.0);
+  float a = clamp(alpha, 1e-4, 1.0);
+  float d = a * a * c * c + (1.0 - c) * (1.0 + c);
+  float t = a / d; // a² / d² overflows float32 sooner
+  return t * t / PI;
+}
+`;
+
+const STARTER_V = `// Height-correlated Smith for GGX (Heitz 2014), as the talk's V = G / ((n·l)(n·v)):
+// V = 2 / (n·l · Λv + n·v · Λl), Λx = sqrt(x² + α² (1 - x²)).
+float customV(float nl, float nv, float alpha) {
+  if (!(nl > 0.0 && nv > 0.0)) return 0.0;
+  float l = min(nl, 1.0);
+  float v = min(nv, 1.0);
+  float a = clamp(alpha, 1e-4, 1.0);
+  float a2 = a * a;
+  float rootV = sqrt(v * v + a2 * (1.0 - v) * (1.0 + v));
+  float rootL = sqrt(l * l + a2 * (1.0 - l) * (1.0 + l));
+  return 2.0 / (l * rootV + v * rootL);
+}
+`;
+
+const STARTER_F = `// Schlick's approximation (Schlick 1994): F = F0 + (1 - F0) (1 - l·h)^5.
+vec3 customF(vec3 f0, float lh) {
+  float m = 1.0 - clamp(lh, 0.0, 1.0);
+  float m2 = m * m;
+  return f0 + (1.0 - f0) * (m2 * m2 * m);
+}
+`;
+
+const STARTER_DIFFUSE = `// Lambert (Lambert 1760): c_diff / π, and 0 below the horizon. alpha is unused here.
+vec3 customDiffuse(vec3 cdiff, vec3 l, vec3 v, float alpha) {
+  if (!(l.z > 0.0 && v.z > 0.0)) return vec3(0.0);
+  return clamp(cdiff, 0.0, 1.0) / PI;
+}
+`;
+
+const STARTER_BRDF = `// A whole BRDF f(l, v) in 1/sr, n = (0, 0, 1): here Lambert with an albedo slider.
+uniform float albedo; // slider 0 1 1 "Albedo"
+vec3 customBRDF(vec3 l, vec3 v) {
+  if (!(l.z > 0.0 && v.z > 0.0)) return vec3(0.0);
+  return vec3(albedo / PI);
+}
+`;
+
+/** @type {Record<Slot['key'], Slot>} */
+export const SLOTS = {
+  D: {
+    key: 'D',
+    fn: 'customD',
+    signature: 'float customD(float nh, float alpha)',
+    returns: 'float',
+    args: [cosArg('nh', 'n·h'), ALPHA_ARG],
+    family: 'ndf',
+    reference: 'ggx',
+    starter: STARTER_D,
+    call: 'customD(nh, alpha)',
+    inputs: ['nh', 'alpha'],
+    evalCall: 'customD(a.x, a.y)',
+    outputs: 1,
+  },
+  V: {
+    key: 'V',
+    fn: 'customV',
+    signature: 'float customV(float nl, float nv, float alpha)',
+    returns: 'float',
+    args: [cosArg('nl', 'n·l'), cosArg('nv', 'n·v'), ALPHA_ARG],
+    family: 'visibility',
+    reference: 'smithGGXCorrelated',
+    starter: STARTER_V,
+    call: 'customV(nl, nv, alpha)',
+    inputs: ['nl', 'nv', 'alpha'],
+    evalCall: 'customV(a.x, a.y, a.z)',
+    outputs: 1,
+  },
+  F: {
+    key: 'F',
+    fn: 'customF',
+    signature: 'vec3 customF(vec3 f0, float lh)',
+    returns: 'vec3',
+    args: [{ name: 'f0', type: 'vec3', min: 0, max: 1, unit: '', label: 'F0' }, cosArg('lh', 'l·h')],
+    family: 'fresnel',
+    reference: 'schlick',
+    starter: STARTER_F,
+    call: 'customF(f0, lh)',
+    inputs: ['f0r', 'f0g', 'f0b', 'lh'],
+    evalCall: 'customF(a.xyz, a.w)',
+    outputs: 3,
+  },
+  diffuse: {
+    key: 'diffuse',
+    fn: 'customDiffuse',
+    signature: 'vec3 customDiffuse(vec3 cdiff, vec3 l, vec3 v, float alpha)',
+    returns: 'vec3',
+    args: [
+      { name: 'cdiff', type: 'vec3', min: 0, max: 1, unit: '', label: 'c_diff' },
+      dirArg('l', 'l'),
+      dirArg('v', 'v'),
+      ALPHA_ARG,
+    ],
+    family: 'diffuse',
+    reference: 'lambert',
+    starter: STARTER_DIFFUSE,
+    call: 'customDiffuse(cdiff, l, v, alpha)',
+    // a grey c_diff: eight floats are what one evaluation carries
+    inputs: ['cdiff', 'lx', 'ly', 'lz', 'vx', 'vy', 'vz', 'alpha'],
+    evalCall: 'customDiffuse(vec3(a.x), a.yzw, b.xyz, b.w)',
+    outputs: 3,
+  },
+  brdf: {
+    key: 'brdf',
+    fn: 'customBRDF',
+    signature: 'vec3 customBRDF(vec3 l, vec3 v)',
+    returns: 'vec3',
+    args: [dirArg('l', 'l'), dirArg('v', 'v')],
+    family: null,
+    reference: 'lambert',
+    starter: STARTER_BRDF,
+    call: 'customBRDF(l, v)',
+    inputs: ['lx', 'ly', 'lz', 'vx', 'vy', 'vz'],
+    evalCall: 'customBRDF(a.xyz, vec3(a.w, b.xy))',
+    outputs: 3,
+  },
+};
+
+/**
+ * The slot of a key; throws for a key that is no slot (a programmer's error: state and URLs go through the schema).
+ * @param {string} key
+ * @returns {Slot}
+ */
+export function slotOf(key) {
+  if (!Object.hasOwn(SLOTS, key)) throw new Error(`custom: no slot '${key}' (${Object.keys(SLOTS).join(', ')})`);
+  return SLOTS[/** @type {Slot['key']} */ (key)];
+}

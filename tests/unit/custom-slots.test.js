@@ -1,0 +1,30 @@
+// The slots of issue 13 (src/core/custom/slots.js) against the signatures the issue fixes, word for word, and the
+// catalogue terms they are compared with.
+import { describe, expect, it } from 'vitest';
+import { SLOTS, slotOf } from '../../src/core/custom/slots.js';
+import { CATALOGUE } from '../../src/math/catalogue/index.js';
+
+const ISSUE_13 = {
+  D: 'float customD(float nh, float alpha)',
+  V: 'float customV(float nl, float nv, float alpha)',
+  F: 'vec3 customF(vec3 f0, float lh)',
+  diffuse: 'vec3 customDiffuse(vec3 cdiff, vec3 l, vec3 v, float alpha)',
+  brdf: 'vec3 customBRDF(vec3 l, vec3 v)',
+};
+
+describe('SLOTS', () => {
+  it.each(Object.entries(ISSUE_13))('%s has the signature of issue 13, and its args say the same', (key, sig) => {
+    const slot = slotOf(key);
+    expect(slot.signature).toBe(sig);
+    expect(`${slot.returns} ${slot.fn}(${slot.args.map((a) => `${a.type} ${a.name}`).join(', ')})`).toBe(sig);
+    expect(slot.call).toBe(`${slot.fn}(${slot.args.map((a) => a.name).join(', ')})`);
+    expect(slot.outputs).toBe(slot.returns === 'vec3' ? 3 : 1);
+    expect(slot.inputs.length).toBeLessThanOrEqual(8); // what one texel pair carries
+  });
+  it('compares each with a term of the catalogue', () => {
+    for (const slot of Object.values(SLOTS))
+      expect(CATALOGUE[slot.family ?? 'diffuse'].terms).toHaveProperty(slot.reference);
+    expect(Object.keys(SLOTS)).toEqual(Object.keys(ISSUE_13));
+    expect(() => slotOf('toString')).toThrow(/no slot/);
+  });
+});
