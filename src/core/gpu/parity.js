@@ -17,9 +17,26 @@ function tableTexture({ size, data }) {
   return t;
 }
 
-function evaluateOnGpu(renderer, testCase) {
+/**
+ * The fragment shader that evaluates a case's expression once per texel: its chunk, then parity.frag.glsl with
+ * CALL, the expression padded to a vec4. `testCase.chunks` (name → text) stands in for the shader chunks: a
+ * user-written term brings its own (src/core/custom/assemble.js).
+ */
+export function parityFragment(testCase) {
+  const wrap = `vec4(${testCase.glsl}${', 0.0'.repeat(4 - testCase.outputs)})`; // pad to vec4
+  return assembleGlsl(`#include "${testCase.chunk}"\n${SHADER_CHUNKS['parity.frag.glsl']}`, {
+    defines: { ...testCase.defines, CALL: wrap },
+    chunks: testCase.chunks ?? SHADER_CHUNKS,
+  });
+}
+
+/**
+ * Evaluates a case on the GPU: one texel per tuple of `testCase.args` (up to eight floats: a.xyzw, b.xyzw), read
+ * back as 4 floats per tuple. `testCase.uniforms` (name → number) are further uniforms its code reads.
+ */
+export function evaluateOnGpu(renderer, testCase) {
   const n = testCase.args.length;
-  const height = Math.ceil(n / WIDTH);
+  const height = Math.max(1, Math.ceil(n / WIDTH));
   const texture = (first) => {
     const data = new Float32Array(WIDTH * height * 4);
     testCase.args.forEach((args, i) => args.slice(first, first + 4).forEach((x, j) => (data[i * 4 + j] = x)));
@@ -29,18 +46,17 @@ function evaluateOnGpu(renderer, testCase) {
   };
   const [input, input2] = [texture(0), texture(4)];
   const tables = Object.entries(testCase.tables ?? {}).map(([name, table]) => [name, tableTexture(table())]);
-  const wrap = `vec4(${testCase.glsl}${', 0.0'.repeat(4 - testCase.outputs)})`; // pad to vec4
+  const extra = Object.entries(testCase.uniforms ?? {}).map(([name, value]) => [name, { value }]);
   const material = new THREE.ShaderMaterial({
     glslVersion: THREE.GLSL3,
     uniforms: {
+      ...Object.fromEntries(extra),
       uArgs: { value: input },
       uArgs2: { value: input2 },
       ...Object.fromEntries(tables.map(([name, t]) => [name, { value: t }])),
     },
     vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
-    fragmentShader: assembleGlsl(`#include "${testCase.chunk}"\n${SHADER_CHUNKS['parity.frag.glsl']}`, {
-      defines: { ...testCase.defines, CALL: wrap },
-    }),
+    fragmentShader: parityFragment(testCase),
   });
   const target = floatTarget(WIDTH, height);
   const pass = createFullscreenPass();
@@ -48,7 +64,7 @@ function evaluateOnGpu(renderer, testCase) {
   const out = new Float32Array(WIDTH * height * 4);
   renderer.readRenderTargetPixels(target, 0, 0, WIDTH, height, out);
   [pass, input, input2, ...tables.map(([, t]) => t), material, target].forEach((x) => x.dispose());
-  return out;
+  return out.subarray(0, n * 4);
 }
 
 /** Compares one case; returns its summary row. */

@@ -1,0 +1,106 @@
+// The core of user-written terms on a real GPU (src/core/custom: compile, gpu-eval, checks), on a page of its own
+// (tests/browser/custom-terms.html, built here): every starter against its float64 catalogue term; the checks'
+// numbers against closed forms (a normalised GGX integrates to 1, without its 1/π to π; Lambert's albedo is its
+// c; V = 2/((n·l)(n·v)) puts G = 2 outside [0, 1]); an Inf found at its input; a compile error on the user's line.
+import { mkdtempSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { build } from 'vite';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { ROOT, launchBrowser, openPage, serveStatic } from './harness.js';
+import { CHECK_ALPHAS } from '../../src/core/custom/check-inputs.js';
+import { GRIDS } from '../../src/core/gpu/parity-cases.js';
+
+let browser;
+let server;
+let page;
+beforeAll(async () => {
+  const outDir = mkdtempSync(join(tmpdir(), 'shading-lab-custom-terms-'));
+  await build({
+    root: ROOT,
+    configFile: false,
+    base: './',
+    logLevel: 'warn',
+    build: {
+      outDir,
+      emptyOutDir: true,
+      chunkSizeWarningLimit: 4000, // three.js in one chunk: a test page, not a page of the app
+      rollupOptions: { input: join(ROOT, 'tests/browser/custom-terms.html') },
+    },
+  });
+  server = await serveStatic(outDir);
+  browser = await launchBrowser();
+  page = await openPage(browser, server.url, 'tests/browser/custom-terms.html');
+  await page.waitForFunction(() => window.__customTerms, { timeout: 30_000 });
+}, 180_000);
+afterAll(async () => {
+  await browser?.close();
+  server?.close();
+});
+
+const check = (slot, code, params = {}, options = {}) =>
+  page.evaluate((...a) => window.__customTerms.check(...a), slot, code, params, options);
+const starter = (slot) => page.evaluate((s) => window.__customTerms.SLOTS[s].starter, slot);
+const D = (body) => `float customD(float nh, float alpha) {\n${body}\n}\n`;
+
+describe('custom terms on the GPU', () => {
+  it.each(['D', 'V', 'F', 'diffuse', 'brdf'])(
+    'the %s starter matches its float64 catalogue term over the stress grid, with no NaN, Inf or negative value',
+    async (slot) => {
+      const report = await check(slot, await starter(slot));
+      console.log(
+        `custom ${slot} starter vs ${report.reference.key}: maxAbs ${report.reference.maxAbs.toExponential(2)} ` +
+          `maxRel ${report.reference.maxRel.toExponential(2)}`,
+      );
+      expect(report.nonFinite).toEqual({ count: 0, negative: 0, first: null });
+      expect(report.reference.failures, JSON.stringify(report.reference.worst)).toBe(0);
+      expect(page.errors).toEqual([]);
+    },
+  );
+  it('a custom GGX D (the starter) integrates to 1 ± 1e-4; the same without its 1/π to π', async () => {
+    const good = await check('D', await starter('D'));
+    console.log(`custom D normalisation: ${good.normalisation.byAlpha.map((r) => r.integral.toFixed(6)).join(' ')}`);
+    expect(Math.abs(good.normalisation.worst - 1)).toBeLessThan(1e-4);
+    const noPi = await check('D', (await starter('D')).replace('return t * t / PI;', 'return t * t;'));
+    expect(Math.abs(noPi.normalisation.worst / Math.PI - 1)).toBeLessThan(1e-4);
+    expect(noPi.reference.maxRel).toBeCloseTo(Math.PI - 1, 4);
+  });
+  it('a D that is Inf at n·h = 1 reports Inf there first, once per α at n·h = 1 and just above', async () => {
+    const report = await check('D', D('  return 1.0 / (1.0 - min(nh, 1.0));'));
+    expect(report.nonFinite.first).toEqual({
+      inputs: { nh: 1, alpha: Math.fround(1e-4) },
+      value: null,
+      text: 'Infinity',
+    });
+    expect(report.nonFinite.count).toBe(2 * CHECK_ALPHAS.length); // n·h = 1 and 1 + 1e-6
+    expect(report.reference.worst).toMatchObject({ inputs: { nh: 1 }, text: 'Infinity' });
+  });
+  it('V = 2/((n·l)(n·v)) puts G = 2 outside [0, 1] at every input above the horizon', async () => {
+    const code =
+      'float customV(float nl, float nv, float alpha) {\n  return nl > 0.0 && nv > 0.0 ? 2.0 / (nl * nv) : 0.0;\n}';
+    const report = await check('V', code);
+    const above = GRIDS.cosCoarse.filter((c) => c > 0).length;
+    expect(report.gRange.outside).toBe(above * above * CHECK_ALPHAS.length);
+    expect(report.gRange.max).toBeCloseTo(2, 5);
+    const good = await check('V', await starter('V'));
+    expect(good.gRange.outside).toBe(0);
+    expect(good.gRange.max).toBeLessThanOrEqual(1 + 1e-5);
+  });
+  it('a whole Lambert BRDF reads its albedo in the white furnace (0.7 by its slider) and reciprocity 0', async () => {
+    const report = await check('brdf', await starter('brdf'), { albedo: 0.7 });
+    expect(Math.abs(report.furnace.max - 0.7)).toBeLessThan(1e-5);
+    expect(report.reciprocity).toEqual({ maxRel: 0, first: null });
+    const byDefault = await check('brdf', await starter('brdf'));
+    expect(Math.abs(byDefault.furnace.max - 1)).toBeLessThan(1e-5); // the slider's default, 1
+  });
+  it('a compile error lands on the user’s line, with nothing on the console', async () => {
+    const result = await check('D', D('  float x = nh;\n  return y * x;'));
+    expect(result.errors[0].line).toBe(3);
+    expect(result.errors[0].message).toMatch(/'y'/);
+    expect(page.errors).toEqual([]);
+  });
+  it('code that fails the static checks never reaches the GPU: a while loop is refused on its line', async () => {
+    const result = await check('D', D('  float s = 0.0;\n  while (s < 1.0) { s += nh; }\n  return s;'));
+    expect(result.errors).toEqual([{ line: 3, message: expect.stringMatching(/'while'/) }]);
+  });
+});
