@@ -7,7 +7,7 @@
 // The feedback names the worst input: the one whose error is the largest multiple of its tolerance.
 import { termEntry, termLabel } from '../math/catalogue/index.js';
 import { fmt } from './graders.js';
-import { GRADED_SLOTS } from './shader-slots.js';
+import { GRADED_SLOTS, channelsOf } from './shader-slots.js';
 
 /** A number as feedback shows it (graders.js's fmt, 2 digits unless asked), with a short exponent: 3.2e7, 1e-4. */
 export function fmtShort(x, digits = 2) {
@@ -187,7 +187,11 @@ export function gradeShader(exercise, code, { parse, evaluate }) {
   const out = evaluate(exercise.slot, code, [...points, ...extra].map(slot.gpuArgs));
   if (!(out instanceof Float32Array)) return problemFeedback(out.errors, 'Your code does not compile:');
   const refs = referenceValues(exercise, points);
-  const result = gradeFeedback(exercise, points, compareValues(out, refs, slot.channels, exercise.tolerance));
+  const result = gradeFeedback(
+    exercise,
+    points,
+    compareValues(out, refs, channelsOf(exercise.slot), exercise.tolerance),
+  );
   if (!extra.length) return result;
   const base = points.length * 4;
   const curve = {

@@ -3,6 +3,7 @@
 // float64 value at exactly those rounded inputs. Pure: loads in Node.
 import { CATALOGUE, termEntry } from '../math/catalogue/index.js';
 import { iorFromF0 } from '../math/fresnel.js';
+import { SLOTS } from '../core/custom/slots.js';
 
 const f32 = Math.fround;
 
@@ -12,7 +13,7 @@ const cosine = (label, words) => ({ label, words, limits: [-1, 1.001] });
 const vectorCosine = (label, words) => ({ label, words, limits: [-1, 1] });
 const alpha = { label: 'α', words: 'roughness α', limits: [0, 10] };
 
-/** The scalar slots' arguments are the axes themselves; the vec3 ones take a grey value on each channel. */
+/** F's vec3 F0 takes a grey value on each channel (evaluateCustom's inputs: D [nh, alpha], F [f0r, f0g, f0b, lh]…). */
 const grey = (x) => [x, x, x];
 
 /**
@@ -34,7 +35,7 @@ function cosinesOf(l, v, cosPhi) {
 }
 
 /**
- * Each gradable slot: its family, the word for its value in feedback, how many channels it returns, its axes
+ * Each gradable slot: its family, the word for its value in feedback, its axes
  * (name → label, words, hard limits for the domain), the flattened GPU arguments of one point (in the slot's
  * signature order), and the reference.
  * `params` are the term's parameters: the point's where the names agree, else the exercise's fixed ones.
@@ -43,7 +44,6 @@ export const GRADED_SLOTS = {
   D: {
     family: 'ndf',
     value: 'D',
-    channels: 1,
     axes: { nh: cosine('n·h', 'the cosine n·h'), alpha },
     gpuArgs: (p) => [p.nh, p.alpha].map(f32),
     reference: (entry, p, fixed) => entry.evaluate(f32(p.nh), { ...fixed, alpha: f32(p.alpha) }),
@@ -51,7 +51,6 @@ export const GRADED_SLOTS = {
   V: {
     family: 'visibility',
     value: 'V',
-    channels: 1,
     axes: { nl: cosine('n·l', 'the cosine n·l'), nv: cosine('n·v', 'the cosine n·v'), alpha },
     gpuArgs: (p) => [p.nl, p.nv, p.alpha].map(f32),
     reference: (entry, p, fixed) => entry.evaluate({ nl: f32(p.nl), nv: f32(p.nv) }, { ...fixed, alpha: f32(p.alpha) }),
@@ -59,7 +58,6 @@ export const GRADED_SLOTS = {
   F: {
     family: 'fresnel',
     value: 'F',
-    channels: 3,
     axes: {
       f0: { label: 'F0', words: 'the reflectance at normal incidence F0', limits: [0, 1] },
       lh: cosine('l·h', 'the cosine l·h'),
@@ -71,7 +69,6 @@ export const GRADED_SLOTS = {
   diffuse: {
     family: 'diffuse',
     value: 'diffuse BRDF',
-    channels: 3,
     axes: {
       cdiff: { label: 'c_diff', words: 'the diffuse colour c_diff', limits: [0, 1] },
       nl: vectorCosine('n·l', 'the cosine n·l'),
@@ -81,7 +78,7 @@ export const GRADED_SLOTS = {
     },
     gpuArgs: (p) => {
       const { l, v } = directionsOf(p.nl, p.nv, p.cosPhi);
-      return [...grey(p.cdiff), ...l, ...v, p.alpha].map(f32);
+      return [p.cdiff, ...l, ...v, p.alpha].map(f32); // the diffuse slot's c_diff is grey: one number
     },
     reference: (entry, p, fixed) => {
       const { l, v } = directionsOf(p.nl, p.nv, p.cosPhi);
@@ -90,6 +87,9 @@ export const GRADED_SLOTS = {
     },
   },
 };
+
+/** How many channels of the GPU's output a slot's value fills (1: a float; 3: a vec3), from custom-core's SLOTS. */
+export const channelsOf = (slotKey) => SLOTS[slotKey].outputs;
 
 /** The slot keys a shader exercise can name ('brdf', the whole BRDF, has no catalogue term to grade against). */
 export const GRADED_SLOT_KEYS = Object.keys(GRADED_SLOTS);

@@ -4,6 +4,7 @@
 import { showValue } from '../core/framework/state.js';
 import { GRADED_SLOTS, GRADED_SLOT_KEYS, referenceProblems } from './shader-slots.js';
 import { axisValues } from './shader-grader.js';
+import { MAX_CODE_CHARS } from '../core/custom/code-state.js';
 
 export const SHADER_FIELDS = [
   'id',
@@ -19,8 +20,6 @@ export const SHADER_FIELDS = [
   'tolerance',
   'plot',
 ];
-/** A starter is a few hundred characters; this is far above any and below what a URL could carry. */
-export const MAX_STARTER_CHARS = 8000;
 /** The grid is one float render target: 16384 inputs draw in a few milliseconds even in software WebGL. */
 export const MAX_GRID_POINTS = 16384;
 export const MAX_STEPS = 101;
@@ -123,8 +122,8 @@ function referenceOf(slotKey, reference, errors) {
 export function shaderProblems(raw, errors) {
   sourcesProblems(raw.sources, errors);
   if (typeof raw.starter !== 'string') errors.push('starter: missing (the GLSL code the editor starts with)');
-  else if (raw.starter.length > MAX_STARTER_CHARS)
-    errors.push(`starter: ${raw.starter.length} characters; at most ${MAX_STARTER_CHARS}`);
+  else if (raw.starter.length > MAX_CODE_CHARS)
+    errors.push(`starter: ${raw.starter.length} characters; at most ${MAX_CODE_CHARS}`);
   toleranceProblems(raw.tolerance, errors);
   if (!GRADED_SLOT_KEYS.includes(raw.slot)) {
     const what = raw.slot === undefined ? 'missing' : `${show(raw.slot)} is not a slot graded against a term`;

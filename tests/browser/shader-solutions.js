@@ -195,10 +195,11 @@ export const SHADER_SOLUTIONS = {
         detail: /your V is 0\.25× the reference\. Is a factor of 1\/4 missing or extra\?/,
       },
       {
-        // n·v √(n·l² + α²…) + n·l √(n·v² + α²…) cancels to 0 at n·l = −n·v
+        // n·v √(n·l² + α²…) + n·l √(n·v² + α²…) ≈ n·v |n·l| + n·l n·v = 0 for n·l < 0 < n·v once float32 loses α²:
+        // Inf at α = 1e-4 (at which n·v first depends on float32's rounding)
         name: 'unclamped grazing input',
         code: CORRELATED({ guard: false }),
-        summary: /^At n·l = −0\.5, n·v = 0\.5, α = 1e-4 your V is (Inf|−?[\d.]+e[5-9]); the reference is 0\.$/,
+        summary: /^At n·l = −0\.5, n·v = 0\.\d+, α = 1e-4 your V is Inf; the reference is 0\.$/,
       },
     ],
   },

@@ -21,6 +21,9 @@ import { ndfGGX } from '../../src/math/ndf.js';
 import { fresnelDielectric, fresnelSchlick } from '../../src/math/fresnel.js';
 import { visibilitySmithGGXCorrelated } from '../../src/math/visibility.js';
 import { diffuseFresnelWeighted } from '../../src/math/diffuse.js';
+import { parseCustom } from '../../src/core/custom/parse.js';
+import { SLOTS } from '../../src/core/custom/slots.js';
+import { SHADER_SOLUTIONS } from '../browser/shader-solutions.js';
 
 const DIR = join(import.meta.dirname, '../../public/exercises');
 const SHADER_IDS = JSON.parse(readFileSync(join(DIR, 'index.json'), 'utf8'))
@@ -60,6 +63,26 @@ describe('shipped shader exercises', () => {
   it('eight, each valid, one per task of the issue', async () => {
     expect(SHADER_IDS).toHaveLength(8);
     for (const id of SHADER_IDS) expect(await errorsOf(read(id)), id).toEqual([]);
+  });
+
+  it('every starter, correct answer and mistake passes custom-core’s static check (parseCustom)', async () => {
+    expect(Object.keys(SHADER_SOLUTIONS).sort()).toEqual([...SHADER_IDS].sort());
+    for (const id of SHADER_IDS) {
+      const { slot, starter } = read(id);
+      const codes = [
+        starter,
+        SHADER_SOLUTIONS[id].correct,
+        ...SHADER_SOLUTIONS[id].mistakes.map((m) => m.code ?? starter),
+      ];
+      for (const code of codes) expect(parseCustom(slot, code).problems, `${id}: ${code}`).toEqual([]);
+    }
+  });
+
+  it('the slot axes give evaluateCustom the inputs SLOTS describes, one number per input entry', () => {
+    for (const [key, slot] of Object.entries(GRADED_SLOTS)) {
+      const point = Object.fromEntries(Object.keys(slot.axes).map((a) => [a, 0.5]));
+      expect(slot.gpuArgs(point), key).toHaveLength(SLOTS[key].inputs.length);
+    }
   });
 
   it('each grid stays within the render-target limit and names its sources with a year', async () => {
@@ -307,8 +330,8 @@ describe('grading with float32 arithmetic by hand in place of the GPU', () => {
 
   it('Lambert without π in the trade-off: the factor π is named', async () => {
     const ex = (await validated(read('shader-lambert-tradeoff'))).exercise;
-    const weighted = (cr, cg, cb, lx, ly, lz, vx, vy, vz) =>
-      lz > 0 && vz > 0 ? (1 - fresnelSchlick(0.04, lz)) * (1 - fresnelSchlick(0.04, vz)) * cr : 0;
+    const weighted = (c, lx, ly, lz, vx, vy, vz) =>
+      lz > 0 && vz > 0 ? (1 - fresnelSchlick(0.04, lz)) * (1 - fresnelSchlick(0.04, vz)) * c : 0;
     const r = gradeShader(ex, 'code', {
       parse: parsesOk,
       evaluate: fakeGpu((...a) => [a, a, a].map(() => weighted(...a))),
