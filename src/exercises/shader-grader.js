@@ -119,6 +119,8 @@ export function describePoint(slotKey, point) {
     .join(', ');
 }
 
+const inputs = (n) => `${n.toLocaleString('en')} input${n === 1 ? '' : 's'}`;
+
 const FACTORS = [
   [Math.PI, 'π'],
   [1 / Math.PI, '1/π'],
@@ -156,8 +158,8 @@ export function gradeFeedback(exercise, points, comparison) {
     `${passing.toLocaleString('en')} of ${count.toLocaleString('en')} inputs match within ${rule}: ` +
       `score ${fmt(score, 2)}.`,
   ];
-  if (nonFinite) details.push(`Your ${slot.value} is NaN or Inf at ${nonFinite.toLocaleString('en')} inputs.`);
-  if (negative) details.push(`Your ${slot.value} is negative at ${negative.toLocaleString('en')} inputs.`);
+  if (nonFinite) details.push(`Your ${slot.value} is NaN or Inf at ${inputs(nonFinite)}.`);
+  if (negative) details.push(`Your ${slot.value} is negative at ${inputs(negative)}.`);
   if (ratio !== null) details.push(ratioDetail(slot.value, ratio));
   return {
     passed: false,

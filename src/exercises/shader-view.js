@@ -15,10 +15,20 @@ const el = (tag, props = {}, ...children) => {
   return node;
 };
 
-/** The plot spec of a graded curve; values ≤ 0 are gaps on a log axis. */
+/** A log axis over whole decades around the positive values, at most 8 decades below the largest; null: none. */
+function logRange(values) {
+  const positive = values.filter((v) => Number.isFinite(v) && v > 0);
+  if (!positive.length) return null;
+  const top = Math.ceil(Math.log10(Math.max(...positive)));
+  const bottom = Math.max(Math.floor(Math.log10(Math.min(...positive))), top - 8);
+  return { log: true, min: 10 ** bottom, max: 10 ** Math.max(top, bottom + 1) };
+}
+
+/** The plot spec of a graded curve; on a log axis, values ≤ 0 are gaps. */
 function curveSpec(exercise, curve) {
   const slot = GRADED_SLOTS[exercise.slot];
-  const log = exercise.plot.logY === true;
+  const yLog = exercise.plot.logY ? logRange([...curve.yours, ...curve.reference]) : null;
+  const log = yLog !== null;
   const y = (v) => (Number.isFinite(v) && (!log || v > 0) ? v : null);
   const at = Object.entries(exercise.plot.at)
     .map(([name, v]) => `${slot.axes[name].label} = ${fmtInput(v)}`)
@@ -28,7 +38,7 @@ function curveSpec(exercise, curve) {
     xLabel: curve.xLabel,
     yLabel: slot.value,
     x: { min: curve.x[0], max: curve.x[curve.x.length - 1] },
-    y: log ? { log: true } : null,
+    y: yLog,
     series: [
       { label: `yours`, ...seriesStyle(1), width: 2 },
       { label: 'reference', ...seriesStyle(0), width: 2 },
