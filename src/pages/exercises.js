@@ -3,6 +3,7 @@
 // editor graded on the GPU). The set comes from exercises/index.json, from ?src=URL, or from a dropped file; a
 // bad file shows its errors, nothing throws. In an iframe it tells its parent each Check's result (`origins=`).
 import '../styles.css';
+import '../exercises/exercise-list.css';
 import { CHAPTERS } from './chapters.js';
 import { mountWidget } from '../core/framework/widget-host.js';
 import { isOption } from '../core/framework/state.js';
