@@ -120,7 +120,7 @@ export function referenceProblems(slotKey, key, params) {
     problems.push(`reference.params.${name}: missing ("${key}" reads it and the slot does not give it)`);
   }
   for (const [name, value] of Object.entries(params)) {
-    const p = entry.params[name];
+    const p = Object.hasOwn(entry.params, name) ? entry.params[name] : null; // no inherited names (__proto__)
     if (!p) problems.push(`reference.params.${name}: "${key}" has no parameter ${name}`);
     else if (Object.hasOwn(slot.axes, name)) problems.push(`reference.params.${name}: is an axis of the domain`);
     else if (typeof value !== 'number' || !(value >= p.min && value <= p.max))

@@ -157,6 +157,11 @@ describe('validation names every bad field', () => {
       { ...read('shader-lambert-tradeoff'), reference: { term: 'fresnelWeighted', params: { f0: 2 } } },
       ['reference.params.f0: 2 is not a number within 0…1'],
     ],
+    [
+      'an inherited name as a parameter',
+      JSON.parse('{ "reference": { "term": "ggx", "params": { "__proto__": 1 } } }'),
+      ['reference.params.__proto__: "ggx" has no parameter __proto__'],
+    ],
     ['a missing axis', { domain: { nh: base().domain.nh } }, ['domain.alpha: missing (roughness α)']],
     ['an unknown axis', { domain: { ...base().domain, nl: { stress: [1] } } }, [/^domain.nl: not an axis of slot "D"/]],
     [
