@@ -3,6 +3,7 @@
 import { CHAPTERS } from '../pages/chapters.js';
 import { coerceState, defaultState, optionKey, showValue } from '../core/framework/state.js';
 import { GRADERS, isGraderName } from './graders.js';
+import { SHADER_FIELDS, shaderProblems } from './validate-shader.js';
 
 export const FIELDS = [
   'id',
@@ -61,10 +62,10 @@ function requiredText(raw, key, errors) {
   if (typeof raw[key] !== 'string' || !raw[key].trim()) errors.push(`${key}: missing (a non-empty string)`);
 }
 
-/** The fields that stand alone: unknown keys, id, chapter, title, prompt and tolerance. */
-function headerProblems(raw, errors) {
+/** The fields every kind shares: unknown keys (of the kind's `fields`), id, chapter, title and prompt. */
+function sharedProblems(raw, fields, errors) {
   for (const key of Object.keys(raw))
-    if (!FIELDS.includes(key)) errors.push(`${key}: unknown field (fields: ${FIELDS.join(', ')})`);
+    if (!fields.includes(key)) errors.push(`${key}: unknown field (fields: ${fields.join(', ')})`);
   if (typeof raw.id !== 'string' || !/^[a-z0-9][a-z0-9-]*$/.test(raw.id)) {
     const what = raw.id === undefined ? 'missing' : `${show(raw.id)} is not`;
     errors.push(`id: ${what} a name of lower-case letters, digits and dashes`);
@@ -76,6 +77,11 @@ function headerProblems(raw, errors) {
   }
   requiredText(raw, 'title', errors);
   requiredText(raw, 'prompt', errors);
+}
+
+/** The fields of a widget exercise that stand alone: the shared ones and tolerance. */
+function headerProblems(raw, errors) {
+  sharedProblems(raw, FIELDS, errors);
   if (raw.tolerance === undefined) errors.push('tolerance: missing (a positive number)');
   else if (typeof raw.tolerance !== 'number' || !(raw.tolerance > 0) || !Number.isFinite(raw.tolerance))
     errors.push(`tolerance: ${show(raw.tolerance)} is not a positive number`);
@@ -145,6 +151,7 @@ function graderNeedsProblems(raw, grader, { schema, state, locked }, errors) {
  */
 export async function validateExercise(raw, { schemaOf }) {
   if (!isObject(raw)) return { exercise: null, errors: ['the exercise is not a JSON object'] };
+  if (raw.kind !== undefined) return validateOtherKind(raw);
   const errors = [];
   headerProblems(raw, errors);
   const grader = graderOf(raw, errors);
@@ -164,6 +171,20 @@ export async function validateExercise(raw, { schemaOf }) {
   const { id, chapter, title, prompt, tolerance } = raw;
   const exercise = { id, chapter, title, prompt, widget: raw.widget ?? null, state, locked, grader: raw.grader };
   return { exercise: { ...exercise, params, tolerance }, errors };
+}
+
+/** An exercise of another kind than a widget's: "shader" (validate-shader.js) is the one so far. */
+function validateOtherKind(raw) {
+  const errors = [];
+  if (raw.kind !== 'shader') {
+    errors.push(`kind: unknown kind ${show(raw.kind)} (kinds: shader; without "kind", a widget exercise)`);
+    return { exercise: null, errors };
+  }
+  sharedProblems(raw, SHADER_FIELDS, errors);
+  const fields = shaderProblems(raw, errors);
+  if (errors.length) return { exercise: null, errors };
+  const { id, chapter, title, prompt } = raw;
+  return { exercise: { id, chapter, title, prompt, ...fields }, errors };
 }
 
 /** The grader's params from raw.params, with its defaults filled in; each problem goes to `errors`. */

@@ -1,7 +1,9 @@
 // The exercises page: the list by chapter with progress, one exercise at a time (prompt, the grader's
-// pictures, the widget with its locked controls, an answer, Check, feedback). The set comes from
-// exercises/index.json, from ?src=URL, or from a dropped file; a bad file shows its errors, nothing throws.
+// pictures, the widget with its locked controls, an answer, Check, feedback; or, for a shader exercise, the code
+// editor graded on the GPU). The set comes from exercises/index.json, from ?src=URL, or from a dropped file; a
+// bad file shows its errors, nothing throws. In an iframe it tells its parent each Check's result (`origins=`).
 import '../styles.css';
+import '../exercises/exercise-list.css';
 import { CHAPTERS } from './chapters.js';
 import { mountWidget } from '../core/framework/widget-host.js';
 import { isOption } from '../core/framework/state.js';
@@ -14,11 +16,14 @@ import { createPreview } from '../exercises/previews.js';
 import { hashId } from '../core/framework/url-hash.js';
 import { onFileDrop } from '../core/ui/file-drop.js';
 import { publish, unregisterWidget } from '../core/framework/debug-hooks.js';
+import { createGradedLink } from '../exercises/graded-message.js';
 
 const listEl = document.getElementById('exercise-list');
 const articleEl = document.getElementById('exercise');
 const problemsEl = document.getElementById('exercise-problems');
 const progress = createProgress();
+const pageParams = new URLSearchParams(location.search);
+const gradedLink = createGradedLink(pageParams);
 
 const schemaOf = async (name) => (isWidgetName(name) ? (await WIDGETS[name].load()).widget.schema : null);
 const el = (tag, props = {}, ...children) => {
@@ -26,6 +31,10 @@ const el = (tag, props = {}, ...children) => {
   node.append(...children);
   return node;
 };
+
+// a bad `origins=` entry is said on the page (the rest of the list still counts)
+if (gradedLink.notices.length)
+  problemsEl.before(el('div', { className: 'notice' }, ...gradedLink.notices.map((n) => el('p', { textContent: n }))));
 
 let exercises = [];
 let current = null; // { exercise, widget, preview, hidden }
@@ -172,6 +181,55 @@ function showFeedback(box, result) {
   );
 }
 
+/** After each counted Check: progress, the list, and the parent frame told. */
+function recordCheck(id, passed, score) {
+  progress.record(id, passed);
+  renderStatus();
+  renderList();
+  gradedLink.graded({ id, passed, score });
+}
+
+/** The parts every exercise shows first: chapter, title, progress line and prompt. */
+function exerciseHeader(exercise) {
+  const heading = el('h2', { tabIndex: -1, textContent: exercise.title });
+  const chapter = CHAPTERS.find((c) => c.key === exercise.chapter);
+  const parts = [
+    el('p', {
+      className: 'exercise-chapter',
+      textContent: `Chapter ${CHAPTERS.indexOf(chapter) + 1}: ${chapter.title}`,
+    }),
+    heading,
+    el('p', { className: 'exercise-meta' }),
+    el('p', { className: 'exercise-prompt', textContent: exercise.prompt }),
+  ];
+  return { heading, parts };
+}
+
+/** A shader exercise: the editor (loaded on demand with the GPU grader), Check, feedback and the curve. */
+async function openShaderExercise(exercise, { focus }) {
+  current = { exercise, widget: null, preview: null, hidden: undefined };
+  publish('exercise', { id: exercise.id, ready: false });
+  const { heading, parts } = exerciseHeader(exercise);
+  const body = el('div', { className: 'exercise-shader' });
+  articleEl.replaceChildren(...parts, body);
+  renderStatus();
+  renderList();
+  if (focus) heading.focus();
+  const mine = current;
+  const [{ createCodeEditor }, { gradeOnGpu }, { createShaderExercise }] = await Promise.all([
+    import('../core/ui/code-editor.js'),
+    import('../exercises/gpu-grade.js'),
+    import('../exercises/shader-view.js'),
+  ]);
+  if (current !== mine) return; // another exercise was opened meanwhile
+  current.preview = createShaderExercise(body, exercise, {
+    createEditor: createCodeEditor,
+    grade: (code) => gradeOnGpu(exercise, code),
+    onGraded: (result) => result.counted !== false && recordCheck(exercise.id, result.passed, result.score),
+  });
+  publish('exercise', { id: exercise.id, ready: true });
+}
+
 function closeCurrent() {
   current?.widget?.dispose();
   current?.preview?.dispose?.();
@@ -181,15 +239,13 @@ function closeCurrent() {
 
 async function openExercise(exercise, { focus = false } = {}) {
   closeCurrent();
+  if (exercise.kind === 'shader') return openShaderExercise(exercise, { focus });
   const grader = GRADERS[exercise.grader];
   const hidden = grader.hide?.(exercise.params);
   current = { exercise, widget: null, preview: null, hidden };
   // for tests: what a hidden question drew, and when it is up
   publish('exercise', { id: exercise.id, hidden, ready: false });
-  const heading = el('h2', { tabIndex: -1, textContent: exercise.title });
-  const chapter = CHAPTERS.find((c) => c.key === exercise.chapter);
-  const meta = el('p', { className: 'exercise-meta' });
-  const prompt = el('p', { className: 'exercise-prompt', textContent: exercise.prompt });
+  const { heading, parts } = exerciseHeader(exercise);
   const pictures = el('div', { className: 'exercise-pictures' });
   const field = answerField(exercise, grader);
   const feedback = el('div', { className: 'exercise-feedback', role: 'status' });
@@ -203,27 +259,11 @@ async function openExercise(exercise, { focus = false } = {}) {
   form.addEventListener('submit', (e) => {
     e.preventDefault();
     const result = check(field.read);
-    if (result.counted) {
-      progress.record(exercise.id, result.ok);
-      renderStatus();
-      renderList();
-    }
+    if (result.counted) recordCheck(exercise.id, result.ok, result.ok ? 1 : 0);
     showFeedback(feedback, result);
   });
   const slot = el('div', { className: 'exercise-widget' });
-  articleEl.replaceChildren(
-    el('p', {
-      className: 'exercise-chapter',
-      textContent: `Chapter ${CHAPTERS.indexOf(chapter) + 1}: ${chapter.title}`,
-    }),
-    heading,
-    meta,
-    prompt,
-    pictures,
-    form,
-    feedback,
-    slot,
-  );
+  articleEl.replaceChildren(...parts, pictures, form, feedback, slot);
   renderStatus();
   renderList();
   if (focus) heading.focus(); // a chosen exercise takes the focus; the first one shown on load does not
@@ -282,5 +322,5 @@ window.addEventListener('hashchange', route);
 const readFile = async (file) => useSet(await readExerciseFile(file, { schemaOf }));
 onFileDrop(document.getElementById('exercise-drop'), readFile, { input: document.getElementById('exercise-file') });
 
-const src = new URLSearchParams(location.search).get('src');
+const src = pageParams.get('src');
 useSet(await loadExerciseSet(src || 'exercises/index.json', { schemaOf }));

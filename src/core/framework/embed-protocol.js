@@ -83,7 +83,7 @@ export function checkIncomingState(schema, partial, current) {
 }
 
 /** The parent's origin, when the browser tells it (ancestorOrigins, else the referrer). */
-function parentOriginHint() {
+export function parentOriginHint() {
   const ancestor = location.ancestorOrigins?.[0];
   if (ancestor) return ancestor;
   try {

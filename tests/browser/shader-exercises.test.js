@@ -1,0 +1,161 @@
+// Shader exercises in Chromium, code typed into the editor and graded on the GPU: every shipped exercise passes
+// its correct code and fails each typical mistake with the message naming the input where the mistake shows
+// (tests/browser/shader-solutions.js works each out from the mistake); compile errors and static-check problems
+// land on the student's line; progress is kept; a parent page on another origin hears the result only when
+// `origins=` allows it.
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { baseUrl, launchBrowser, open, openForeignParent, otherOrigin } from './helpers.js';
+import { SHADER_SOLUTIONS } from './shader-solutions.js';
+
+let browser;
+beforeAll(async () => {
+  browser = await launchBrowser();
+});
+afterAll(async () => {
+  await browser?.close();
+});
+
+const DIR = join(import.meta.dirname, '../../public/exercises');
+const exerciseFile = (id) => JSON.parse(readFileSync(join(DIR, `${id}.json`), 'utf8'));
+
+/** Opens exercise `id` in `target` (a page or a frame) by its anchor and waits for its editor. */
+async function choose(target, id) {
+  await target.evaluate((i) => {
+    location.hash = i;
+  }, id);
+  await target.waitForFunction(
+    (i) => globalThis.__shadingLab?.exercise?.id === i && globalThis.__shadingLab.exercise.ready,
+    { timeout: 30_000 },
+    id,
+  );
+  await target.waitForSelector('.exercise-code .cm-content');
+}
+
+/** Replaces the editor's text as a user would: select all, then type (one insertText), and checks it arrived. */
+async function setCode(page, target, code) {
+  await target.click('.exercise-code .cm-content');
+  await page.keyboard.down('Control');
+  await page.keyboard.press('a');
+  await page.keyboard.up('Control');
+  await page.keyboard.press('Backspace');
+  await page.keyboard.sendCharacter(code);
+  const text = await target.$$eval('.exercise-code .cm-line', (lines) => lines.map((l) => l.textContent).join('\n'));
+  expect(text).toBe(code); // a final newline is an empty last line
+}
+
+/** Presses Check and returns the feedback: { ok, summary, details }. */
+async function check(target) {
+  await target.click('.exercise-check');
+  await target.waitForSelector('.exercise-feedback.ok, .exercise-feedback.wrong', { timeout: 60_000 });
+  return target.$eval('.exercise-feedback', (el) => ({
+    ok: el.classList.contains('ok'),
+    summary: el.querySelector('p').textContent,
+    details: [...el.querySelectorAll('li')].map((li) => li.textContent),
+  }));
+}
+
+describe('shader exercises', () => {
+  let page;
+  beforeAll(async () => {
+    page = await open(browser, 'exercises.html', { width: 1280, height: 1000 });
+    await page.waitForSelector('#exercise-list a');
+  });
+  afterAll(async () => {
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it.each(Object.entries(SHADER_SOLUTIONS))(
+    '%s: the correct code passes on the GPU against the float64 catalogue term; each mistake fails where it shows',
+    async (id, { correct, mistakes }) => {
+      await choose(page, id);
+      for (const m of mistakes) {
+        await setCode(page, page, m.starter ? exerciseFile(id).starter : m.code);
+        const r = await check(page);
+        expect(r.ok, m.name).toBe(false);
+        expect(r.summary, m.name).toMatch(m.summary);
+        if (m.detail) expect(r.details.join('\n'), m.name).toMatch(m.detail);
+      }
+      await setCode(page, page, correct);
+      const r = await check(page);
+      expect(r.summary).toMatch(/^Right: your .* matches .* at all [\d,]+ inputs/);
+      expect(r.ok).toBe(true);
+      expect(await page.$eval(`#exercise-list a[href="#${id}"]`, (a) => a.parentElement.textContent)).toContain(
+        '✓ solved',
+      );
+    },
+    180_000,
+  );
+
+  it('compile errors and static-check problems show at the student’s line, in feedback and editor', async () => {
+    await choose(page, 'shader-schlick');
+    await setCode(page, page, 'vec3 customF(vec3 f0, float lh) {\n  float m = 1.0 - lh;\n  return f0 + m5;\n}\n');
+    let r = await check(page);
+    expect(r.summary).toBe('Your code does not compile:');
+    expect(r.details[0]).toMatch(/^Line 3: .*m5/);
+    const marked = () =>
+      page.$$eval('.exercise-code .cm-line', (lines) =>
+        lines.map((l, i) => (l.querySelector('.cm-lintRange-error') ? i + 1 : 0)).filter(Boolean),
+      );
+    expect(await marked()).toEqual([3]);
+
+    await setCode(
+      page,
+      page,
+      'vec3 customF(vec3 f0, float lh) {\n  float m = 1.0;\n  while (m > 0.5) m *= 0.9;\n  return f0 * m;\n}\n',
+    );
+    r = await check(page);
+    expect(r.summary).toBe('Your code did not pass the static check:');
+    expect(r.details[0]).toMatch(/^Line 3: /);
+    expect(await marked()).toEqual([3]);
+  }, 60_000);
+});
+
+describe('the graded message to a parent page', () => {
+  /** A parent on another origin embedding the exercises page; window.__inbox records what it hears. */
+  async function parentWith(query) {
+    const page = await openForeignParent(browser);
+    const src = new URL(`exercises.html${query}#shader-schlick`, baseUrl()).href;
+    await page.evaluate((src) => {
+      window.__inbox = [];
+      window.addEventListener('message', (e) => window.__inbox.push({ origin: e.origin, data: e.data }));
+      const frame = Object.assign(document.createElement('iframe'), { src, id: 'exercises' });
+      frame.style.cssText = 'width: 1200px; height: 900px; border: 0';
+      document.body.replaceChildren(frame);
+    }, src);
+    const frame = await (await page.waitForSelector('#exercises')).contentFrame();
+    await choose(frame, 'shader-schlick');
+    return { page, frame };
+  }
+
+  it('reaches a parent on an origin listed in origins=, from the app’s origin, after each Check', async () => {
+    const parentOrigin = new URL(otherOrigin()).origin;
+    const { page, frame } = await parentWith(`?origins=${encodeURIComponent(parentOrigin)}`);
+    await setCode(page, frame, SHADER_SOLUTIONS['shader-schlick'].mistakes[0].code);
+    expect((await check(frame)).ok).toBe(false);
+    await setCode(page, frame, SHADER_SOLUTIONS['shader-schlick'].correct);
+    expect((await check(frame)).ok).toBe(true);
+    await page.waitForFunction(() => window.__inbox.filter((m) => m.data?.type === 'shading-lab:graded').length === 2);
+    const graded = (await page.evaluate(() => window.__inbox)).filter((m) => m.data?.type === 'shading-lab:graded');
+    expect(graded.map((m) => m.origin)).toEqual([new URL(baseUrl()).origin, new URL(baseUrl()).origin]);
+    expect(graded[0].data).toMatchObject({ id: 'shader-schlick', passed: false });
+    expect(graded[0].data.score).toBeGreaterThan(0);
+    expect(graded[0].data.score).toBeLessThan(1);
+    expect(graded[1].data).toEqual({ type: 'shading-lab:graded', id: 'shader-schlick', passed: true, score: 1 });
+    expect(page.errors).toEqual([]);
+    await page.close();
+  }, 90_000);
+
+  it('stays silent to a parent whose origin is not listed', async () => {
+    const { page, frame } = await parentWith('?origins=https://course.example.org');
+    await setCode(page, frame, SHADER_SOLUTIONS['shader-schlick'].correct);
+    expect((await check(frame)).ok).toBe(true);
+    await new Promise((r) => setTimeout(r, 1500));
+    const messages = await page.evaluate(() => window.__inbox);
+    expect(messages.filter((m) => m.data?.type === 'shading-lab:graded')).toEqual([]);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  }, 90_000);
+});
