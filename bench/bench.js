@@ -9,6 +9,8 @@
 // --only measured: only the measured-BRDF part (bench/measured.js), merged into the existing JSON the same way.
 // --only latency: only the time from a change to its frame, per widget (bench/latency.js), merged the same way
 // and kept in bench/results/latency.json too.
+// --only custom: only the user-written terms' times (bench/custom-terms.js: an edit to the redrawn widget, a full
+// grade of each shader exercise), merged the same way.
 import { existsSync, mkdirSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { cpus, tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
@@ -19,13 +21,14 @@ import { measurePages } from './pages.js';
 import { measureIbl } from './ibl.js';
 import { measureMeasured, printMeasured } from './measured.js';
 import { measureLatency, printLatency, saveLatency } from './latency.js';
+import { measureCustomTerms, printCustomTerms } from './custom-terms.js';
 import { ROOT, launchBrowser, openPage, serveStatic } from '../tests/browser/harness.js';
 
 const args = process.argv.slice(2);
 const quick = args.includes('--quick');
 const only = args.includes('--only') ? args[args.indexOf('--only') + 1] : null;
 const timeCpu = only === null || args.includes('--time-cpu');
-const PARTS = ['families', 'measured', 'latency'];
+const PARTS = ['families', 'measured', 'latency', 'custom'];
 if (only !== null && !PARTS.includes(only))
   throw new Error(`--only ${only}: the parts that run alone are ${PARTS.join(', ')}`);
 const familyKey = args.includes('--family') ? args[args.indexOf('--family') + 1] : null;
@@ -165,6 +168,7 @@ async function everything() {
     ibl,
     measured: measureMeasured({ quick }),
     latency: await measureLatency({ quick }),
+    custom: await measureCustomTerms({ quick }),
   };
 }
 
@@ -188,7 +192,9 @@ const report = familyKey
       ? { ...lastReport(), measured: measureMeasured({ quick }) }
       : only === 'latency'
         ? { ...lastReport(), latency: await measureLatency({ quick }) }
-        : await everything();
+        : only === 'custom'
+          ? { ...lastReport(), custom: await measureCustomTerms({ quick }) }
+          : await everything();
 mkdirSync(dirname(out), { recursive: true });
 writeFileSync(out, `${JSON.stringify(report, null, 1)}\n`);
 if (report.latency && !quick && (only === null || only === 'latency')) saveLatency(report.latency);
@@ -196,6 +202,11 @@ if (report.latency && !quick && (only === null || only === 'latency')) saveLaten
 if (only === 'measured') {
   printMeasured(report.measured);
   console.log(`\nWrote ${out} (the measured-BRDF part only; the rest is from the run of ${report.date.slice(0, 10)})`);
+  process.exit(0);
+}
+if (only === 'custom') {
+  printCustomTerms(report.custom);
+  console.log(`\nWrote ${out} (the custom-term part only; the rest is from the run of ${report.date.slice(0, 10)})`);
   process.exit(0);
 }
 if (only === 'latency') {
@@ -276,4 +287,5 @@ for (const p of pages)
   );
 printMeasured(report.measured);
 printLatency(report.latency);
+printCustomTerms(report.custom);
 console.log(`\nWrote ${out}`);
