@@ -37,6 +37,11 @@ export function createRenderLoop(element, draw, ready = () => true) {
       dirty = true;
       schedule();
     },
+    /** Draws a pending frame at once (a resize clears the canvas: redrawn before it is painted, never blank). */
+    drawNow() {
+      if (scheduled) cancelAnimationFrame(scheduled);
+      frame();
+    },
     get inView() {
       return inView;
     },

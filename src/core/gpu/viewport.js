@@ -85,6 +85,7 @@ export function createViewport(container, { draw, onResize, onContextLost, label
     renderer.setSize(w, h, false);
     onResize?.(w, h);
     loop.invalidate();
+    loop.drawNow(); // a ResizeObserver runs before paint: the cleared canvas is drawn again in the same frame
   });
   resize.observe(holder);
 
