@@ -11,12 +11,13 @@ afterAll(async () => {
   await browser?.close();
 });
 
-/** Waits until every data-tex element and every live formula of the page is MathML. */
+/** Waits until every slot has its widget (they mount one after another) and every formula is MathML. */
 const typeset = (page) =>
   page.waitForFunction(
     () =>
       [...document.querySelectorAll('[data-tex], .widget-formula')].every((el) => el.querySelector('math')) &&
-      document.querySelectorAll('.widget-formula').length === document.querySelectorAll('[data-widget]').length,
+      document.querySelectorAll('.widget-formula').length === document.querySelectorAll('[data-widget]').length &&
+      document.querySelectorAll('[data-widget]').length >= document.querySelectorAll('[data-slot]').length,
     { timeout: 60_000 },
   );
 
