@@ -17,7 +17,8 @@ export const ABOUT =
   'the same BRDF in the angles it really depends on; the albedo plot integrates it over all light directions. ' +
   'Multiple scattering adds, dotted, the light that bounces between microfacets before it leaves (Kulla & ' +
   'Conty 2017), nearly diffuse in shape, with dots from the random walk on the microsurface (Heitz et al. ' +
-  '2016) that it approximates.';
+  '2016) that it approximates. Choose Custom in A’s D, V or F menu, or as A’s whole BRDF, to draw a term ' +
+  'you write in GLSL: it is checked on the GPU beside the editor, and B stays a catalogue term to compare with.';
 
 /** The functions behind the pictures, linked to their rows on the parity page. */
 export const TERMS_USED = [
