@@ -15,6 +15,8 @@ import { parseNumberAnswer } from '../exercises/answer.js';
 import { createPreview } from '../exercises/previews.js';
 import { hashId } from '../core/framework/url-hash.js';
 import { onFileDrop } from '../core/ui/file-drop.js';
+import { setInlineTex } from '../core/ui/inline-tex.js';
+import { typesetFormulas } from '../core/ui/formulas.js';
 import { publish, unregisterWidget } from '../core/framework/debug-hooks.js';
 import { createGradedLink } from '../exercises/graded-message.js';
 
@@ -189,6 +191,14 @@ function recordCheck(id, passed, score) {
   gradedLink.graded({ id, passed, score });
 }
 
+/** The prompt, its `$…$` formulas typeset (as text and MathML: a prompt from a URL is never HTML). */
+function promptOf(exercise) {
+  const prompt = el('p', { className: 'exercise-prompt' });
+  setInlineTex(prompt, exercise.prompt);
+  typesetFormulas(prompt);
+  return prompt;
+}
+
 /** The parts every exercise shows first: chapter, title, progress line and prompt. */
 function exerciseHeader(exercise) {
   const heading = el('h2', { tabIndex: -1, textContent: exercise.title });
@@ -200,7 +210,7 @@ function exerciseHeader(exercise) {
     }),
     heading,
     el('p', { className: 'exercise-meta' }),
-    el('p', { className: 'exercise-prompt', textContent: exercise.prompt }),
+    promptOf(exercise),
   ];
   return { heading, parts };
 }

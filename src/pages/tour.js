@@ -10,6 +10,8 @@ import { createNoticeArea } from '../core/framework/notice.js';
 import { WIDGETS, isWidgetName } from '../widgets/registry.js';
 import { tourPlan } from '../tour/steps.js';
 import { hashId } from '../core/framework/url-hash.js';
+import { setInlineTex } from '../core/ui/inline-tex.js';
+import { typesetFormulas } from '../core/ui/formulas.js';
 
 const { steps, sections } = tourPlan(isWidgetName);
 const root = document.getElementById('tour');
@@ -74,7 +76,8 @@ function renderText(step, i) {
     `${sections.indexOf(section) + 1}. ${section.title} (${i - section.first + 1} of ${section.count})`;
   $('.tour-title').textContent = step.title;
   $('.tour-spoken-title').textContent = `: ${step.title}`; // the live progress line reads the new title too
-  $('.tour-text').textContent = step.text;
+  setInlineTex($('.tour-text'), step.text);
+  typesetFormulas($('.tour-text'));
   const meter = $('.tour-meter');
   meter.max = steps.length;
   meter.value = i + 1;

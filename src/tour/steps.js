@@ -132,7 +132,7 @@ export const TOUR_STEPS = [
     text:
       'Shading measures light as radiance: power along a single ray, per area across it and per solid angle ' +
       'around it. Radiance does not fade with distance: the lamp, 4 m away here, is smaller than at 1 m but no ' +
-      'dimmer. What fades is the irradiance a surface receives from the whole lamp, as 1/d² (16 times less than ' +
+      'dimmer. What fades is the irradiance a surface receives from the whole lamp, as $1/d^2$ (16 times less than ' +
       'at 1 m). Drag the distance and watch the two curves.',
   },
   {
@@ -164,11 +164,12 @@ export const TOUR_STEPS = [
     title: 'BRDF times the cosine',
     state: { lightTheta: 60, viewTheta: 60, cosine: true, alpha: 0.3 },
     text:
-      'The BRDF is a density per steradian. In this state (light at 60°, α = 0.3) it is largest at the horizon: ' +
-      '1.00/sr at θv = 89° against 0.22 in the mirror direction; on a smoother surface (α = 0.1) it peaks near the ' +
-      'mirror direction instead. The lobe is drawn × n·v, the cosine of the view, which shows how much light leaves ' +
-      'towards each direction (most near 70° here). That is not the reflectance equation’s cosine: for one view ' +
-      'direction it integrates f × incoming radiance × n·l over incoming directions l (the albedo plot).',
+      'The BRDF is a density per steradian. In this state (light at 60°, $\\alpha = 0.3$) it is largest at the ' +
+      'horizon: 1.00/sr at $\\theta_v = 89^\\circ$ against 0.22 in the mirror direction; on a smoother surface ' +
+      '($\\alpha = 0.1$) it peaks near the mirror direction instead. The lobe is drawn $\\times\\, \\nv$, the ' +
+      'cosine of the view, which shows how much light leaves towards each direction (most near 70° here). That is ' +
+      'not the reflectance equation’s cosine: for one view direction it integrates $f \\times L_i \\times \\nl$ ' +
+      '(the incoming radiance $L_i$) over incoming directions $\\mathbf{l}$ (the albedo plot).',
   },
   {
     id: 'brdf-factors',
@@ -177,7 +178,7 @@ export const TOUR_STEPS = [
     title: 'Taking the BRDF apart',
     state: { lightTheta: 60, viewTheta: 60, useDenominator: false },
     text:
-      'A microfacet BRDF is F·G·D / (4 (n·l)(n·v)). Here the denominator is switched off: the lobe stops ' +
+      'A microfacet BRDF is $\\frac{F\\,G\\,D}{4 \\nl\\nv}$. Here the denominator is switched off: the lobe stops ' +
       'growing at grazing angles. Turn factors off one at a time to see what each contributes.',
   },
   {
@@ -199,9 +200,9 @@ export const TOUR_STEPS = [
     title: 'The half vector',
     state: { lightTheta: 35, viewTheta: -15, alpha: 0.5, bounces: false },
     text:
-      'Each microfacet is a perfect mirror, so it reflects l into v only if its normal m lies halfway ' +
-      'between them: m = h. The marked facets are the only ones that send this light to the eye; D(h) counts ' +
-      'how many there are.',
+      'Each microfacet is a perfect mirror, so it reflects l into v only if its normal m lies halfway between ' +
+      'them: $\\mathbf{m} = \\mathbf{h}$. The marked facets are the only ones that send this light to the eye; ' +
+      '$D(\\mathbf{h})$ counts how many there are.',
   },
   {
     id: 'microfacets-shadowing',
@@ -291,8 +292,9 @@ export const TOUR_STEPS = [
     state: { mode: 'zones-nv', shape: 'sphere' },
     text:
       'Colour the same angles by zone. Most of the picture lies where reflectance barely changes: for an ' +
-      'orthographic sphere exactly sin²45° = 50%, then 43.3% where it changes somewhat, and only 6.7% in the ' +
-      'rapidly rising zone at the rim. The widget measures the shares on the GPU beside the analytic values.',
+      'orthographic sphere exactly $\\sin^2 45^\\circ = 50\\%$, then 43.3% where it changes somewhat, and only ' +
+      '6.7% in the rapidly rising zone at the rim. The widget measures the shares on the GPU beside the analytic ' +
+      'values.',
   },
   {
     id: 'fresnel-zones-lh',
@@ -345,9 +347,9 @@ export const TOUR_STEPS = [
     title: 'Schlick’s approximation',
     state: { materials: ['gold', 'copper', 'glass-low', 'diamond'], schlick: true, zones: true },
     text:
-      'Schlick’s approximation needs only F(0°): F0 + (1 − F0)(1 − cos θ)⁵. The dashed curves follow the ' +
-      'exact ones closely; the error plot shows it is largest towards grazing angles, where little of the ' +
-      'picture lies.',
+      'Schlick’s approximation needs only $F(0^\\circ)$: $F(0^\\circ) + (1 - F(0^\\circ))(1 - \\cos \\theta)^5$. ' +
+      'The dashed curves follow the exact ones closely; the error plot shows it is largest towards grazing angles, ' +
+      'where little of the picture lies.',
   },
 
   // 6. Normal distribution functions
@@ -392,7 +394,7 @@ export const TOUR_STEPS = [
     state: { config: 'view-fixed', viewTheta: 60, alpha: 0.5 },
     text:
       'G gives the share of facets along h that are neither shadowed nor masked; the talk folds it with the ' +
-      'denominator into V = G / ((n·l)(n·v)). The plots show G for every term against the light angle, and ' +
+      'denominator into $V = \\frac{G}{\\nl\\nv}$. The plots show G for every term against the light angle, and ' +
       'how far each is from height-correlated Smith.',
   },
   {
@@ -402,8 +404,8 @@ export const TOUR_STEPS = [
     title: 'The implicit term ignores roughness',
     state: { config: 'view-fixed', viewTheta: 60, alpha: 0.1 },
     text:
-      'The implicit term, G = (n·l)(n·v), costs nothing but is the same at every roughness. At α = 0.1 the ' +
-      'Smith terms stay near 1 until grazing angles, while the implicit one is at most n·v = 0.5 here and falls ' +
+      'The implicit term, $G = \\nl\\nv$, costs nothing but is the same at every roughness. At $\\alpha = 0.1$ the ' +
+      'Smith terms stay near 1 until grazing angles, while the implicit one is at most $\\nv = 0.5$ here and falls ' +
       'with the light’s cosine.',
   },
   {
@@ -413,8 +415,8 @@ export const TOUR_STEPS = [
     title: 'Cook-Torrance and Kelemen',
     state: { config: 'mirror', alpha: 0.5 },
     text:
-      'With l and v mirrored about the normal, h = n: Cook-Torrance and Kelemen both give G = 1 whatever the ' +
-      'angle, while the Smith terms darken towards grazing.',
+      'With l and v mirrored about the normal, $\\mathbf{h} = \\mathbf{n}$: Cook-Torrance and Kelemen both give $G ' +
+      '= 1$ whatever the angle, while the Smith terms darken towards grazing.',
   },
   {
     id: 'visibility-smith',
@@ -435,9 +437,10 @@ export const TOUR_STEPS = [
     title: 'Lambert: the same from every direction',
     state: { models: ['lambert'], lightTheta: 50, lightPhi: 30 },
     text:
-      'Light that enters a non-metal, scatters inside and comes out again close to where it went in is seen ' +
-      'from afar as diffuse reflection. Lambert’s model makes it a constant, c_diff/π: the sphere’s brightness ' +
-      'follows n·l alone and does not depend on where you look from.',
+      'Light that enters a non-metal, scatters inside and comes out again close to where it went in is seen from ' +
+      'afar as diffuse reflection. Lambert’s model makes it a constant, ' +
+      '$\\frac{\\mathbf{c}_{\\text{diff}}}{\\pi}$: the sphere’s brightness follows $\\nl$ alone and does not ' +
+      'depend on where you look from.',
   },
   {
     id: 'diffuse-tradeoff',
@@ -477,9 +480,11 @@ export const TOUR_STEPS = [
       refSamples: '128',
     },
     text:
-      'A punctual light is a direction and a colour. Its colour c_light is defined as the radiance of a white ' +
-      'Lambertian surface that faces it: the centre of this white sphere shows exactly c_light. The integral ' +
-      'collapses to π f(l, v) c_light (n·l); the π is what turns a BRDF into that definition.',
+      'A punctual light is a direction and a colour. Its colour $\\mathbf{c}_{\\text{light}}$ is defined as the ' +
+      'radiance of a white Lambertian surface that faces it: the centre of this white sphere shows exactly ' +
+      '$\\mathbf{c}_{\\text{light}}$. The integral collapses to $L_o = \\pi f(\\mathbf{l}_c, \\mathbf{v}) \\otimes ' +
+      '\\mathbf{c}_{\\text{light}} (\\mathbf{n} \\cdot \\mathbf{l}_c)$; the $\\pi$ is what turns a BRDF into that ' +
+      'definition.',
   },
   {
     id: 'rendering-area',

@@ -11,13 +11,18 @@ import { MEDIA } from '../../src/widgets/media/schema.js';
 import { schema as LOBE } from '../../src/widgets/brdf-lobe/brdf-lobe.js';
 import { weightedSphereShares } from './zone-shares.js';
 import { DEG } from '../../src/math/angles.js';
+import { inlineTexPlain } from '../../src/core/ui/inline-tex.js';
 
 /** A page's words as a reader sees them: tags dropped (a typeset formula reads as its plain fallback). */
 const text = (file) =>
   readFileSync(new URL(`../../${file}`, import.meta.url), 'utf8')
     .replace(/<[^>]+>/g, '')
     .replace(/\s+/g, ' ');
-const stepText = (id) => TOUR_STEPS.find((s) => s.id === id);
+/** A tour step, its text as a reader sees it (each `$…$` formula as its plain fallback). */
+const stepText = (id) => {
+  const step = TOUR_STEPS.find((s) => s.id === id);
+  return { ...step, text: inlineTexPlain(step.text) };
+};
 /** The numbers the first match of `re` captures; fails if the sentence no longer reads that way. */
 function quoted(source, re) {
   const m = source.match(re);
@@ -51,7 +56,7 @@ describe('tour, brdf-intensity: the brdf-lobe widget’s BRDF (GGX, height-corre
     return best;
   };
   it('is 1.00/sr at θv 89°, 0.22 at the mirror; × n·v it peaks near 70°; at α 0.1 near the mirror', () => {
-    const [atHorizon, horizonDeg] = quoted(step.text, /(\d\.\d\d)\/sr at θv = (\d+)°/);
+    const [atHorizon, horizonDeg] = quoted(step.text, /(\d\.\d\d)\/sr at θ_v = (\d+)°/);
     const [atMirror] = quoted(step.text, /against (\d\.\d\d) in the mirror direction/);
     const [nearDeg] = quoted(step.text, /most near (\d+)° here/);
     const alpha = step.state.alpha;
