@@ -8,6 +8,8 @@ import { describe, expect, it } from 'vitest';
 import { FORMULA_MACROS, TALK_MACROS, declaredFormula } from '../../src/core/framework/formula-registry.js';
 import { coerceState, defaultState } from '../../src/core/framework/state.js';
 import { WIDGETS } from '../../src/widgets/registry.js';
+import { TOUR_STEPS } from '../../src/tour/steps.js';
+import { parseInlineTex, texToPlain } from '../../src/core/ui/inline-tex.js';
 
 const ROOT = join(import.meta.dirname, '../..');
 const decode = (s) =>
@@ -38,6 +40,55 @@ describe('formulas on the pages', () => {
       expect(html).not.toMatch(/katex-error|\sstyle=/); // MathML only: nothing a strict style policy would block
     });
   }
+});
+
+describe('formulas in data: the tour’s step texts and the exercise prompts ($…$ TeX)', () => {
+  const EXERCISES = join(ROOT, 'public/exercises');
+  const texts = [
+    ...TOUR_STEPS.map((s) => ({ where: `tour ${s.id}`, text: s.text })),
+    ...readdirSync(EXERCISES)
+      .filter((f) => f !== 'index.json')
+      .map((f) => ({ where: f, text: JSON.parse(readFileSync(join(EXERCISES, f), 'utf8')).prompt })),
+  ];
+  const inline = texts.flatMap(({ where, text }) =>
+    parseInlineTex(text).flatMap((p) => ('tex' in p ? [{ where, ...p }] : [])),
+  );
+  it('the formulas of the tour (V = G/((n·l)(n·v)), c_diff/π, …) and of the shader exercises are in TeX', () => {
+    expect(inline.filter((f) => f.where.startsWith('tour')).length).toBeGreaterThan(15);
+    expect(new Set(inline.map((f) => f.where)).size).toBeGreaterThan(20);
+  });
+  for (const { where, tex, plain } of inline) {
+    it(`${where}: ${plain.slice(0, 60)} parses with KaTeX as MathML, with a plain fallback`, () => {
+      expect(mathml(tex)).not.toMatch(/katex-error|\sstyle=/);
+      expect(plain).not.toMatch(/[\\{}^]/); // no TeX left in what a reader sees without MathML
+    });
+  }
+  it('no text keeps a stray $ (a literal dollar is written \\$)', () => {
+    for (const { where, text } of texts)
+      expect(
+        parseInlineTex(text).filter((p) => 'text' in p && p.text.includes('$')),
+        where,
+      ).toEqual([]);
+  });
+});
+
+describe('inline TeX: $…$ in text, its plain fallback written out from the talk’s TeX', () => {
+  it('splits text and formulas; \\$ is a dollar, a lone $ stays text', () => {
+    expect(parseInlineTex('costs \\$5, $x^2$ and $ alone')).toEqual([
+      { text: 'costs $5, ' },
+      { tex: 'x^2', plain: 'x²' },
+      { text: ' and $ alone' },
+    ]);
+    expect(parseInlineTex('$a \\$ b$')).toEqual([{ tex: 'a \\$ b', plain: 'a $ b' }]);
+  });
+  it.each([
+    ['V = \\frac{G}{\\nl\\nv}', 'V = G/((n·l)(n·v))'],
+    ['\\frac{\\mathbf{c}_{\\text{diff}}}{\\pi}', 'c_diff/π'],
+    ['D = \\frac{\\alpha^2}{\\pi (\\nh^2 (\\alpha^2 - 1) + 1)^2}', 'D = α²/(π ((n·h)² (α² − 1) + 1)²)'],
+    ['\\sin^2 45^\\circ = 50\\%', 'sin² 45° = 50%'],
+    ['g = \\sqrt{\\eta^2 - 1 + c^2}', 'g = √(η² − 1 + c²)'],
+    ['2^{-24} \\approx 6 \\times 10^{-8}', '2⁻²⁴ ≈ 6 × 10⁻⁸'],
+  ])('%s reads %s', (tex, plain) => expect(texToPlain(tex)).toBe(plain));
 });
 
 /** Each widget's states to try: the default, and every option of each enum and set field on its own. */
