@@ -62,7 +62,7 @@ describe('formulas', () => {
     await page.close();
   });
 
-  const CHAPTERS = ['fresnel', 'media', 'microfacets', 'ndf', 'brdf', 'diffuse', 'rendering'];
+  const CHAPTERS = ['fresnel', 'media', 'microfacets', 'ndf', 'brdf', 'diffuse', 'rendering', 'performance'];
   it.each(CHAPTERS)('%s.html: every formula and every widget’s live formula is laid-out MathML', async (name) => {
     const page = await open(browser, `${name}.html`);
     await typeset(page);
@@ -128,4 +128,71 @@ describe('formulas', () => {
     expect(page.errors).toEqual([]);
     await page.close();
   });
+});
+
+describe('formulas in data: a tour step’s text and an exercise’s prompt ($…$ TeX, never HTML)', () => {
+  /** The formulas under `selector` once typeset: their MathML's text (not its TeX annotation), title, width. */
+  const inlineFormulas = async (page, selector) => {
+    await page.waitForFunction(
+      (sel) => {
+        const all = [...document.querySelectorAll(`${sel} [data-tex]`)];
+        return all.length > 0 && all.every((el) => el.querySelector('math'));
+      },
+      { timeout: 60_000 },
+      selector,
+    );
+    return page.$$eval(`${selector} [data-tex]`, (els) =>
+      els.map((el) => ({
+        math: el.querySelector('math semantics > :first-child').textContent.replace(/\s+/g, ''),
+        title: el.title,
+        width: el.querySelector('math').getBoundingClientRect().width,
+      })),
+    );
+  };
+
+  it('tour, visibility-implicit: the talk’s G = (n·l)(n·v) is MathML with bold vectors, titled in plain', async () => {
+    const page = await open(browser, 'tour.html#visibility-implicit');
+    const formulas = await inlineFormulas(page, '.tour-text');
+    expect(formulas[0]).toMatchObject({ math: 'G=(𝐧⋅𝐥)(𝐧⋅𝐯)', title: 'G = (n·l)(n·v)' });
+    expect(formulas.every((f) => f.width > 4 && !f.title.startsWith('Formula not typeset'))).toBe(true);
+    expect(await page.$eval('.tour-text', (p) => p.textContent)).not.toContain('$');
+    expect(page.errors).toEqual([]);
+    await page.close();
+  }, 120_000);
+
+  it('exercise shader-ggx-tiny-alpha: GGX D = α²/(π((n·h)²(α² − 1) + 1)²) is a MathML fraction', async () => {
+    const page = await open(browser, 'exercises.html#shader-ggx-tiny-alpha');
+    const formulas = await inlineFormulas(page, '.exercise-prompt');
+    expect(formulas[0].title).toBe('D = α²/(π ((n·h)² (α² − 1) + 1)²)');
+    const fraction = await page.$eval('.exercise-prompt [data-tex] mfrac', (f) =>
+      [...f.children].map((c) => c.textContent.replace(/\s+/g, '')),
+    );
+    expect(fraction).toEqual(['α2', 'π((𝐧⋅𝐡)2(α2−1)+1)2']);
+    expect(formulas.every((f) => f.width > 4 && !f.title.startsWith('Formula not typeset'))).toBe(true);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  }, 120_000);
+
+  it('a hostile prompt stays inert: \\href{javascript:…} is not a link, <img onerror> is text', async () => {
+    const prompt = 'Costs \\$5. $\\href{javascript:window.__pwned=1}{x}$ <img src=x onerror="window.__pwned=2">';
+    const set = [{ id: 'hostile', chapter: 'diffuse', title: 'Hostile', prompt, grader: 'lambert-radiance' }];
+    Object.assign(set[0], { params: { cLight: 1, thetaDeg: 0 }, tolerance: 0.1 });
+    const src = encodeURIComponent(`data:application/json,${JSON.stringify(set)}`);
+    const page = await open(browser, `exercises.html?src=${src}#hostile`);
+    await inlineFormulas(page, '.exercise-prompt');
+    const seen = await page.$eval('.exercise-prompt', (p) => ({
+      text: p.textContent,
+      html: p.querySelectorAll('img, a, script, [onerror]').length,
+      links: [...p.querySelectorAll('[href]')].map((e) => e.getAttribute('href')),
+    }));
+    expect(seen.text).toContain('Costs $5. ');
+    expect(seen.text).toContain('<img src=x onerror="window.__pwned=2">'); // shown as text, not parsed
+    expect(seen.html).toBe(0); // no element made from the prompt's text
+    expect(seen.links).toEqual([]); // KaTeX, untrusted, draws \\href as an error mark, not a link
+    await page.click('.exercise-prompt [data-tex]');
+    await settle(page, 200);
+    expect(await page.evaluate(() => globalThis.__pwned)).toBeUndefined();
+    expect(page.errors).toEqual([]);
+    await page.close();
+  }, 120_000);
 });
