@@ -39,7 +39,7 @@ export function parseInlineTex(source) {
 }
 
 /** The index of the `$` that closes a formula opened before `from` (skipping TeX escapes), or -1. */
-function closingDollar(source, from) {
+function closingDollar(/** @type {string} */ source, /** @type {number} */ from) {
   for (let j = from; j < source.length; j++) {
     if (source[j] === '\\') j++;
     else if (source[j] === '$') return j > from ? j : -1;
@@ -53,6 +53,7 @@ export const inlineTexPlain = (/** @type {string} */ source) =>
     .map((p) => ('text' in p ? p.text : p.plain))
     .join('');
 
+/** @type {Record<string, string>} */
 const SYMBOLS = {
   alpha: 'α',
   beta: 'β',
@@ -86,6 +87,7 @@ const SYMBOLS = {
   ';': ' ',
   quad: '  ',
 };
+/** @type {Record<string, string>} */
 const SUPERSCRIPT = {
   '°': '°',
   0: '⁰',
@@ -126,13 +128,14 @@ export function texToPlain(tex) {
     tex,
   );
   let i = 0;
-  /** One argument: a {group} or a single character or command. */
+  /** One argument: a {group} or a single character or command. @returns {string} */
   const argument = () => {
     while (src[i] === ' ') i++;
     if (src[i] !== '{') return atom();
     i++;
     return sequence('}');
   };
+  /** @returns {string} */
   const atom = () => {
     const c = src[i++] ?? '';
     if (c === '{') return sequence('}');
