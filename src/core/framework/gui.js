@@ -45,7 +45,8 @@ export function createStateGui(
 
   for (const key of keys) {
     const f = schema[key];
-    if (f.type === 'samples' || f.type === 'text') continue; // data handed over by another widget, not a control
+    // data handed over by another widget, or edited by a panel of its own (a user-written term's code and sliders)
+    if (['samples', 'text', 'code', 'params'].includes(f.type)) continue;
     const parent = parentOf(f);
     if (f.type === 'set') {
       const folder = parent.addFolder(labelOf(key, f));

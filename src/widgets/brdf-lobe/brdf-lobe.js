@@ -1,6 +1,7 @@
 // brdf-lobe: the microfacet BRDF taken apart, in the spirit of Disney's BRDF Explorer. For a light the user
 // drags: the BRDF in the plane of incidence (polar), as a 3-D lobe, over the half/difference angles, and its
 // directional albedo; each factor (F, D, G, the denominator) can be switched off, and a second BRDF overlaid.
+// A's D, V, F or the whole BRDF can be the user's own GLSL, edited and checked in a panel under the views.
 import { createWidgetShell } from '../../core/framework/widget-shell.js';
 import { DEG } from '../../math/angles.js';
 import { schema } from './schema.js';
@@ -10,12 +11,14 @@ import { createLobeView } from './lobe-view.js';
 import { createHalfDiffPair } from './half-diff-pair.js';
 import { createAlbedoPlot } from './albedo-plot.js';
 import { createReadout } from './readout.js';
+import { createCustomArea } from './custom-area.js';
 import { ABOUT, TERMS_USED, TITLE, describeLobe3d, describePolar } from './words.js';
 
 export { schema };
 
 const LIGHT_AND_VIEW = ['lightTheta', 'viewTheta'];
-const ALBEDO_KEYS = ['D', 'V', 'F', 'alpha', 'f0', 'compare', 'D2', 'V2', 'alpha2'];
+const ALBEDO_KEYS = ['D', 'V', 'F', 'alpha', 'f0', 'compare', 'D2', 'V2', 'alpha2', 'brdf', 'params'];
+const CODE_KEYS = ['codeD', 'codeV', 'codeF', 'codeBRDF'];
 
 const row = (parent, className) => parent.appendChild(Object.assign(document.createElement('div'), { className }));
 
@@ -31,10 +34,16 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange, lo
   const [top, bottom] = [row(shell.view, 'lobe-row'), row(shell.view, 'lobe-row')];
   const update = (partial) => updateState(partial);
   const polar = createPolarPlot(top, { onDrag: update });
-  const lobe3d = createLobeView(row(top, 'lobe-3d'));
+  const lobe3d = createLobeView(row(top, 'lobe-3d'), { onContextChange: () => render(null) });
   const images = createHalfDiffPair(bottom);
   const albedo = createAlbedoPlot(bottom, brdfSpecs(shell.state));
   const readout = createReadout(shell.view);
+  const custom = createCustomArea(shell.view, {
+    getRenderer: () => lobe3d.renderer,
+    getState: () => shell.state,
+    update,
+    redraw: () => render(null),
+  });
 
   const drawPolar = (s, scene) => {
     const { a, lobeA, lobeB, ms, max } = scene;
@@ -50,12 +59,15 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange, lo
   };
   const render = (changed) => {
     const s = shell.state;
-    const scene = lobeScene(s);
+    const lookups = custom.lookups(s);
+    const scene = lobeScene(s, lookups);
     drawPolar(s, scene);
     drawLobe3d(s, scene);
     if (!changed || changed.some((k) => !LIGHT_AND_VIEW.includes(k))) images.draw(s, scene);
-    if (changed?.some((k) => ALBEDO_KEYS.includes(k))) albedo.draw(brdfSpecs(s));
+    if (!changed || changed.some((k) => ALBEDO_KEYS.includes(k) || CODE_KEYS.includes(k)))
+      albedo.draw(brdfSpecs(s, lookups));
     readout.draw(s, scene);
+    custom.showPanels(s);
   };
   const updateState = shell.connect({ title: TITLE, onChanged: render, onStateChange });
   render(null);
@@ -68,6 +80,7 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange, lo
       lobe3d.dispose();
       images.dispose();
       albedo.dispose();
+      custom.dispose();
       shell.dispose();
     },
   };

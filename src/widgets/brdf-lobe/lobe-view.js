@@ -103,15 +103,27 @@ function fillLobe(mesh, dirs, f, max) {
   mesh.geometry.computeBoundingSphere();
 }
 
-export function createLobeView(container) {
+/** options.onContextChange(): the view's WebGL context was lost or has come back (its renderer with it). */
+export function createLobeView(container, { onContextChange } = {}) {
   const dirs = hemisphereDirections();
+  let lost = false;
   const { scene, patch, lobeA, lobeB, arrows } = createLobeScene(dirs);
   const camera = new THREE.PerspectiveCamera(35, 1, 0.1, 50);
   camera.position.set(2.6, 2.2, 3.2);
   let controls = null;
   let orbitByKey = null;
   const viewport = createViewport(container, {
-    draw: (renderer) => renderer.render(scene, camera),
+    draw: (renderer) => {
+      if (lost) {
+        lost = false;
+        onContextChange?.();
+      }
+      renderer.render(scene, camera);
+    },
+    onContextLost: () => {
+      lost = true;
+      onContextChange?.();
+    },
     onResize: (w, h) => {
       camera.aspect = w / h;
       camera.updateProjectionMatrix();
@@ -131,6 +143,8 @@ export function createLobeView(container) {
     /** The view directions the lobes are evaluated at (local frame), for a caller that scales to their maximum. */
     directions: dirs,
     canvas: viewport?.canvas ?? null,
+    /** The view's three.js renderer (null without WebGL2), also the one user-written terms are evaluated with. */
+    renderer: viewport?.renderer ?? null,
     /**
      * fA(v), fB(v) | null: the lobes for the current light; directions: { n, l, v, h, mirror } as arrays (h may
      * be null); description: the view in words.

@@ -1,7 +1,9 @@
 // The BRDF lobe's numbers, from src/math only: BRDFs A and B as the term choices and matched parameters the
 // math reads, their lobes in the plane of incidence with the factors switched on, the multiple-scattering lobe
-// and the walk's dots, the (θh, θd) image function, the directional albedo and the factors at (l, v).
-import { brdfAngles, microfacetBRDF, microfacetFactors } from '../../math/brdf.js';
+// and the walk's dots, the (θh, θd) image function, the directional albedo and the factors at (l, v). A term the
+// user wrote in GLSL (A only) arrives as a lookup of values read back from the GPU (custom-tables.js).
+import { FRESNEL_TERMS, NDF_TERMS, VISIBILITY_TERMS, brdfAngles } from '../../math/brdf.js';
+import { SLOTS } from '../../core/custom/slots.js';
 import { ndfParamsMatchingGGX } from '../../math/ndf-width.js';
 import { directionFromCos, reflectanceImportanceGGX } from '../../math/integrate.js';
 import { directionsFromHalfDiff } from '../../math/half-diff.js';
@@ -16,22 +18,84 @@ export const viewDir = (deg) => [Math.sin(deg * DEG), 0, Math.cos(deg * DEG)];
 /** The view angles of the lobes in the plane of incidence: −89° to 89° every 0.5°. */
 const LOBE_ANGLES = Array.from({ length: 357 }, (_, i) => -89 + i * 0.5);
 
-/** BRDF A or B as microfacetBRDF's params: its terms, the parameters matching GGX's α, and its label. */
-export function brdfSpec(state, which) {
-  const [D, V, alpha] = which === 'B' ? [state.D2, state.V2, state.alpha2] : [state.D, state.V, state.alpha];
+/** The view angles of the albedo plot (degrees). */
+export const ALBEDO_ANGLES = Float64Array.from({ length: 45 }, (_, i) => i * 2 + 1);
+
+/** The slots of A the user wrote (the whole BRDF, or any of D, V, F). */
+export const customSlots = (state) =>
+  state.brdf === 'custom' ? ['brdf'] : ['D', 'V', 'F'].filter((k) => state[k] === 'custom');
+
+/** The catalogue term a custom slot stands in for before any code of it has run (the starter's term). */
+const standIn = (slotKey, term) => (term === 'custom' ? SLOTS[slotKey].reference : term);
+
+function specLabel(state, which, D, V) {
+  if (which === 'A' && state.brdf === 'custom') return 'A: your BRDF';
+  const d = D === 'custom' ? 'your D' : termEntry('ndf', D).short;
+  const v = V === 'custom' ? 'your V' : termLabel('visibility', V);
+  return `${which}: ${d} + ${v}${which === 'A' && state.F === 'custom' ? ' + your F' : ''}`;
+}
+
+/**
+ * BRDF A or B as the math reads it: its terms, the parameters matching GGX's α, and its label; `custom` holds A's
+ * lookups of user-written terms ({ D, V, F, brdf }, each absent until its code has run).
+ */
+export function brdfSpec(state, which, custom = {}) {
+  const B = which === 'B';
+  const [D, V, alpha] = B ? [state.D2, state.V2, state.alpha2] : [state.D, state.V, state.alpha];
+  const own = B
+    ? {}
+    : Object.fromEntries(
+        customSlots(state)
+          .map((k) => [k, custom[k]])
+          .filter(([, f]) => f),
+      );
+  const F = B && state.F === 'custom' ? SLOTS.F.reference : state.F;
   return {
-    D,
-    V,
-    F: state.F,
+    D: standIn('D', D),
+    V: standIn('V', V),
+    F: standIn('F', F),
     f0: state.f0,
-    ...ndfParamsMatchingGGX(D, alpha),
+    ...ndfParamsMatchingGGX(standIn('D', D), alpha),
     samplingAlpha: alpha,
-    label: `${which}: ${termEntry('ndf', D).short} + ${termLabel('visibility', V)}`,
+    custom: !B && state.brdf === 'custom' ? { brdf: own.brdf ?? LAMBERT_STAND_IN } : own,
+    label: specLabel(state, which, D, V),
   };
 }
 
+/** A whole custom BRDF before its code has run: the starter's Lambert at albedo 1, f = 1/π. */
+const LAMBERT_STAND_IN = {
+  atView: (v) => (v[2] > 0 ? 1 / Math.PI : 0),
+  halfDiff: () => 1 / Math.PI,
+  albedo: Array.from(ALBEDO_ANGLES, () => 1),
+};
+
 /** [A] or, with the overlay, [A, B]. */
-export const brdfSpecs = (state) => [brdfSpec(state, 'A'), ...(state.compare ? [brdfSpec(state, 'B')] : [])];
+export const brdfSpecs = (state, custom = {}) => [
+  brdfSpec(state, 'A', custom),
+  ...(state.compare ? [brdfSpec(state, 'B', custom)] : []),
+];
+
+/** F, D, V at the cosines a (with a.h), each from its lookup when the user wrote it, else from the catalogue. */
+function termsAt(a, p) {
+  const c = p.custom ?? {};
+  const D = c.D ? c.D(a) : NDF_TERMS[p.D](a.nh, p, a.h[0] * a.h[0] + a.h[1] * a.h[1]);
+  const V = c.V ? c.V(a) : VISIBILITY_TERMS[p.V](a, p);
+  return { F: c.F ? c.F(a) : FRESNEL_TERMS[p.F](a.lh, p), D, V, G: V * a.nl * a.nv };
+}
+
+const ALL_FACTORS = { F: true, D: true, G: true, denominator: true };
+
+/**
+ * f(l, v) of p with the factors in `use` ({ F, D, G, denominator }) that are false counted as 1, as
+ * microfacetFactors of src/math/brdf.js; a whole custom BRDF has no factors to switch.
+ */
+export function factorsOf(l, v, p, use = ALL_FACTORS) {
+  if (p.custom?.brdf) return p.custom.brdf.atView(v);
+  const a = brdfAngles(l, v);
+  if (!(a.nl > 0 && a.nv > 0) || !a.h) return 0;
+  const t = termsAt(a, p);
+  return ((use.F ? t.F : 1) * (use.D ? t.D : 1) * (use.G ? t.G : 1)) / (use.denominator ? 4 * a.nl * a.nv : 1);
+}
 
 const factorSwitches = (state) => ({
   F: state.useF,
@@ -42,12 +106,13 @@ const factorSwitches = (state) => ({
 
 /** v ↦ f(l, v) of p with the chosen factors, times n·v when the lobe shows intensity. */
 const lobeFunction = (state, l, p) => (v) =>
-  microfacetFactors(l, v, p, factorSwitches(state)) * (state.cosine ? Math.max(v[2], 0) : 1);
+  factorsOf(l, v, p, factorSwitches(state)) * (state.cosine ? Math.max(v[2], 0) : 1);
 
 /** (θh, θd) ↦ f of p with the chosen factors, at the state's φd. */
 export const halfDiffFunction = (state, p) => (thetaH, thetaD) => {
+  if (p.custom?.brdf) return p.custom.brdf.halfDiff(thetaH, thetaD);
   const d = directionsFromHalfDiff(thetaH, thetaD, state.phiD * DEG);
-  return microfacetFactors(d.l, d.v, p, factorSwitches(state));
+  return factorsOf(d.l, d.v, p, factorSwitches(state));
 };
 
 /** F0 for the multiple-scattering lobe: 1 when Fresnel is off or F = 1. */
@@ -77,10 +142,10 @@ function multipleScattering(state, A, l) {
  * without the overlay), fA and fB (v ↦ lobe value), lobeA, lobeB and ms ({ lobe, points }) as [θ, value] in
  * the plane of incidence, and max, the largest value of them all.
  */
-export function lobeScene(state) {
+export function lobeScene(state, custom = {}) {
   const l = lightDir(state.lightTheta);
   const v = viewDir(state.viewTheta);
-  const [A, B = null] = brdfSpecs(state);
+  const [A, B = null] = brdfSpecs(state, custom);
   const fA = lobeFunction(state, l, A);
   const fB = B ? lobeFunction(state, l, B) : null;
   const inPlane = (f) => LOBE_ANGLES.map((theta) => [theta, f(viewDir(theta))]);
@@ -94,28 +159,22 @@ export function lobeScene(state) {
 /** The [θ, value] of a lobe's largest value. */
 export const lobePeak = (lobe) => lobe.reduce((a, x) => (x[1] > a[1] ? x : a));
 
-/** The view angles of the albedo plot (degrees). */
-export const ALBEDO_ANGLES = Float64Array.from({ length: 45 }, (_, i) => i * 2 + 1);
-
-/** E(θv) = ∫ f (n·l) dω of p, all factors on, by importance sampling GGX at its α (512 samples). */
+/**
+ * E(θv) = ∫ f (n·l) dω of p, all factors on, by importance sampling GGX at its α (512 samples); a whole custom
+ * BRDF brings its own (a quadrature on the GPU's values, custom-tables.js).
+ */
 export const albedoCurve = (p) =>
+  p.custom?.brdf?.albedo ??
   ALBEDO_ANGLES.map((deg) =>
-    reflectanceImportanceGGX(
-      (l, v) => microfacetBRDF(l, v, p),
-      directionFromCos(Math.cos(deg * DEG)),
-      p.samplingAlpha,
-      512,
-    ),
+    reflectanceImportanceGGX((l, v) => factorsOf(l, v, p), directionFromCos(Math.cos(deg * DEG)), p.samplingAlpha, 512),
   );
 
-/** F, D, G and f of p at (l, v) with angles a; F, D and G are 1 where f has no half vector or is below. */
+/**
+ * F, D, G and f of p at (l, v) with angles a; F, D and G are 1 where f has no half vector or is below, and null
+ * for a whole custom BRDF (it has no factors).
+ */
 export function factorsAt(l, v, a, p) {
-  const only = (k) => ({ F: k === 'F', D: k === 'D', G: k === 'G', denominator: false });
-  const terms = { F: 1, D: 1, G: 1 };
-  if (a.h && a.nl > 0 && a.nv > 0) {
-    terms.F = p.F === 'one' ? 1 : microfacetFactors(l, v, p, only('F'));
-    terms.D = microfacetFactors(l, v, p, only('D'));
-    terms.G = microfacetFactors(l, v, p, only('G'));
-  }
-  return { ...terms, f: microfacetFactors(l, v, p, { F: true, D: true, G: true, denominator: true }) };
+  if (p.custom?.brdf) return { F: null, D: null, G: null, f: factorsOf(l, v, p) };
+  const terms = a.h && a.nl > 0 && a.nv > 0 ? termsAt(a, p) : { F: 1, D: 1, G: 1 };
+  return { F: p.F === 'one' ? 1 : terms.F, D: terms.D, G: terms.G, f: factorsOf(l, v, p) };
 }

@@ -13,8 +13,9 @@ import { randomWalkBRDFGGX } from '../../math/random-walk.js';
 export const WALK_ANGLES = [-80, -65, -50, -35, -20, -5, 5, 20, 35, 50, 65, 80];
 export const WALK_SAMPLES = 3000;
 
-/** Kulla & Conty's lobe is built for GGX with height-correlated Smith; other pairs get no lobe. */
-export const hasMultipleLobe = (spec) => spec.D === 'ggx' && spec.V === 'smithGGXCorrelated';
+/** Kulla & Conty's lobe is built for GGX with height-correlated Smith; other pairs and user-written terms get none. */
+export const hasMultipleLobe = (spec) =>
+  spec.D === 'ggx' && spec.V === 'smithGGXCorrelated' && !Object.keys(spec.custom ?? {}).length;
 
 /** f_ms(l, v) F_ms in 1/sr (F_ms = 1 when Fresnel is off or F = 1). */
 export function kullaContyLobe(l, v, alpha, f0OrOne) {

@@ -1,14 +1,17 @@
 // The BRDF lobe's readout: F, D, G and f of each BRDF at the chosen l and v, and, with multiple scattering, the
 // Kulla–Conty lobe there beside single scattering.
-import { microfacetBRDF } from '../../math/brdf.js';
-import { factorsAt, kullaContyAt } from './model.js';
+import { factorsAt, factorsOf, kullaContyAt } from './model.js';
 
 const HEAD = '<th>BRDF</th><th>F</th><th>D (1/sr)</th><th>G</th><th>f = FDG/(4 n·l n·v) (1/sr)</th>';
 
+/** A factor's cell: '—' for a whole custom BRDF, which has none. */
+const cell = (x, format) => `<td>${x === null ? '—' : format(x)}</td>`;
+
 function row({ l, v, a }, p) {
   const t = factorsAt(l, v, a, p);
+  const [fixed, precision] = [(x) => x.toFixed(4), (x) => x.toPrecision(4)];
   return (
-    `<tr><td>${p.label}</td><td>${t.F.toFixed(4)}</td><td>${t.D.toPrecision(4)}</td><td>${t.G.toFixed(4)}</td>` +
+    `<tr><td>${p.label}</td>${cell(t.F, fixed)}${cell(t.D, precision)}${cell(t.G, fixed)}` +
     `<td>${t.f.toPrecision(4)}</td></tr>`
   );
 }
@@ -17,7 +20,7 @@ function multipleLine(state, { l, v, A }) {
   const multiple = kullaContyAt(state, l, v).toPrecision(3);
   return (
     `<p class="multiple-readout">Multiple scattering at v (A): Kulla–Conty ${multiple} /sr beside single ` +
-    `scattering ${microfacetBRDF(l, v, A).toPrecision(3)} /sr (dotted lobe; dots: the random walk, bars ± 2 ` +
+    `scattering ${factorsOf(l, v, A).toPrecision(3)} /sr (dotted lobe; dots: the random walk, bars ± 2 ` +
     'standard errors).</p>'
   );
 }

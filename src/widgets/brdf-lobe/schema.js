@@ -1,16 +1,33 @@
 // The BRDF lobe's state: the light and view in the plane of incidence, BRDF A's terms and roughness, the factors
-// switched on, the overlays (intensity, multiple scattering, BRDF B) and the φd of the (θh, θd) images.
+// switched on, the overlays (intensity, multiple scattering, BRDF B) and the φd of the (θh, θd) images. A's D, V
+// and F, or A as a whole, can be the user's own GLSL (`custom`): its code and its sliders' values are fields too.
 import { termOptions } from '../../math/catalogue/index.js';
+import { SLOTS } from '../../core/custom/slots.js';
 
 const ndfOptions = termOptions('ndf');
 const visOptions = termOptions('visibility');
+const CUSTOM = { custom: 'Custom (your GLSL)' };
+
+/** The code of A's user-written term in `slotKey` (no control of its own: the panel's editor edits it). */
+const code = (slotKey, label) => ({ type: 'code', slot: slotKey, default: SLOTS[slotKey].starter, label });
 
 export const schema = {
   lightTheta: { type: 'number', min: 0, max: 89, step: 1, default: 45, label: 'Light θl', unit: '°' },
   viewTheta: { type: 'number', min: -89, max: 89, step: 1, default: 45, label: 'View θv (+: mirror side)', unit: '°' },
-  D: { type: 'enum', options: ndfOptions, default: 'ggx', label: 'A: D' },
-  V: { type: 'enum', options: visOptions, default: 'smithGGXCorrelated', label: 'A: V' },
-  F: { type: 'enum', options: termOptions('fresnel', ['schlick', 'one']), default: 'schlick', label: 'F' },
+  brdf: {
+    type: 'enum',
+    options: { microfacet: 'Microfacet F·D·V/4', custom: 'Custom whole BRDF (your GLSL)' },
+    default: 'microfacet',
+    label: 'A: BRDF',
+  },
+  D: { type: 'enum', options: { ...ndfOptions, ...CUSTOM }, default: 'ggx', label: 'A: D' },
+  V: { type: 'enum', options: { ...visOptions, ...CUSTOM }, default: 'smithGGXCorrelated', label: 'A: V' },
+  F: {
+    type: 'enum',
+    options: { ...termOptions('fresnel', ['schlick', 'one']), custom: 'Custom for A (your GLSL)' },
+    default: 'schlick',
+    label: 'F',
+  },
   alpha: { type: 'number', min: 0.02, max: 1, step: 0.01, default: 0.3, label: 'A: roughness α (GGX)' },
   f0: { type: 'number', min: 0, max: 1, step: 0.01, default: 0.04, label: 'F0' },
   useF: { type: 'bool', default: true, label: 'Factor F' },
@@ -24,4 +41,9 @@ export const schema = {
   V2: { type: 'enum', options: visOptions, default: 'smithBeckmannSeparable', label: 'B: V' },
   alpha2: { type: 'number', min: 0.02, max: 1, step: 0.01, default: 0.3, label: 'B: roughness α (GGX)' },
   phiD: { type: 'number', min: 0, max: 180, step: 1, default: 90, label: 'Image φd', unit: '°' },
+  codeD: code('D', 'A: your D (GLSL)'),
+  codeV: code('V', 'A: your V (GLSL)'),
+  codeF: code('F', 'A: your F (GLSL)'),
+  codeBRDF: code('brdf', 'A: your BRDF (GLSL)'),
+  params: { type: 'params', default: {}, label: 'Sliders of your code' },
 };
