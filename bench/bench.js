@@ -7,6 +7,8 @@
 // column, the pages and the IBL rows stay as last measured. With --time-cpu the CPU column is timed again too
 // (on a quiet machine only: timings taken beside other work are not comparable with the rest).
 // --only measured: only the measured-BRDF part (bench/measured.js), merged into the existing JSON the same way.
+// --only latency: only the time from a change to its frame, per widget (bench/latency.js), merged the same way
+// and kept in bench/results/latency.json too.
 import { existsSync, mkdirSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { cpus, tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
@@ -16,13 +18,14 @@ import { FAMILIES, measureErrors } from './families.js';
 import { measurePages } from './pages.js';
 import { measureIbl } from './ibl.js';
 import { measureMeasured, printMeasured } from './measured.js';
+import { measureLatency, printLatency, saveLatency } from './latency.js';
 import { ROOT, launchBrowser, openPage, serveStatic } from '../tests/browser/harness.js';
 
 const args = process.argv.slice(2);
 const quick = args.includes('--quick');
 const only = args.includes('--only') ? args[args.indexOf('--only') + 1] : null;
 const timeCpu = only === null || args.includes('--time-cpu');
-const PARTS = ['families', 'measured'];
+const PARTS = ['families', 'measured', 'latency'];
 if (only !== null && !PARTS.includes(only))
   throw new Error(`--only ${only}: the parts that run alone are ${PARTS.join(', ')}`);
 const familyKey = args.includes('--family') ? args[args.indexOf('--family') + 1] : null;
@@ -134,13 +137,9 @@ async function familiesOnly() {
   return { ...last, families, familiesMeasured };
 }
 
-/** Only the measured-BRDF part, into the last full report (or alone when there is none yet). */
-function measuredOnly() {
-  const last = existsSync(out)
-    ? JSON.parse(readFileSync(out, 'utf8'))
-    : { version: 1, date: new Date().toISOString(), quick };
-  return { ...last, measured: measureMeasured({ quick }) };
-}
+/** The last full report (or a bare one when there is none yet), for a part measured alone. */
+const lastReport = () =>
+  existsSync(out) ? JSON.parse(readFileSync(out, 'utf8')) : { version: 1, date: new Date().toISOString(), quick };
 
 async function everything() {
   const gpu = await gpuCosts();
@@ -165,6 +164,7 @@ async function everything() {
     pages,
     ibl,
     measured: measureMeasured({ quick }),
+    latency: await measureLatency({ quick }),
   };
 }
 
@@ -185,14 +185,22 @@ const report = familyKey
   : only === 'families'
     ? await familiesOnly()
     : only === 'measured'
-      ? measuredOnly()
-      : await everything();
+      ? { ...lastReport(), measured: measureMeasured({ quick }) }
+      : only === 'latency'
+        ? { ...lastReport(), latency: await measureLatency({ quick }) }
+        : await everything();
 mkdirSync(dirname(out), { recursive: true });
 writeFileSync(out, `${JSON.stringify(report, null, 1)}\n`);
+if (report.latency && !quick && (only === null || only === 'latency')) saveLatency(report.latency);
 
 if (only === 'measured') {
   printMeasured(report.measured);
   console.log(`\nWrote ${out} (the measured-BRDF part only; the rest is from the run of ${report.date.slice(0, 10)})`);
+  process.exit(0);
+}
+if (only === 'latency') {
+  printLatency(report.latency);
+  console.log(`\nWrote ${out} (the latency part only; the rest is from the run of ${report.date.slice(0, 10)})`);
   process.exit(0);
 }
 const pad = (s, n) => String(s).padEnd(n);
@@ -267,4 +275,5 @@ for (const p of pages)
       (p.firstFrameMs === null ? '—' : p.firstFrameMs.toFixed(0)),
   );
 printMeasured(report.measured);
+printLatency(report.latency);
 console.log(`\nWrote ${out}`);

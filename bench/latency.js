@@ -3,22 +3,25 @@
 // worst. "Done" is: the render loop's next animation frame has run (it draws what changed), every canvas of the
 // widget has finished its GPU work (a one-pixel read-back), and the browser reached the following frame. A widget
 // that keeps drawing a second after the drag (a Monte Carlo reference converging) is progressive and is reported
-// apart: its number is the time to its first changed frame. Writes bench/results/latency.json.
-import { mkdirSync, writeFileSync } from 'node:fs';
-import { join } from 'node:path';
+// apart: its number is the time to its first changed frame. Writes bench/results/latency.json; `npm run bench`
+// runs the same part (measureLatency) into bench/results/latest.json.
+import { mkdirSync, mkdtempSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { dirname, join, resolve } from 'node:path';
 import { WIDGETS } from '../src/widgets/registry.js';
 import { ROOT, buildApp, launchBrowser, openPage, serveStatic, settle } from '../tests/browser/harness.js';
 
-const args = process.argv.slice(2);
-const only = args.flatMap((a, i) => (args[i - 1] === '--widget' ? [a] : []));
 const STEPS = 24;
-const TARGET_MS = 50;
+// --quick (the bench's test): only that the part runs, on a 2-D widget and one drawn by the render loop
+const QUICK = { steps: 3, widgets: ['fresnel-curves', 'fresnel-zones'] };
+export const TARGET_MS = 50;
 // Light state for software rendering: fewer path-traced samples (as the browser tests do).
-const QUICK = { media: '&samples=16', 'material-lab': '&refSamples=128', 'lighting-models': '&refSamples=128' };
+const LIGHT_STATE = { media: '&samples=16', 'material-lab': '&refSamples=128', 'lighting-models': '&refSamples=128' };
 
 /**
  * The control a user would drag, per widget: [key, from, to] (a number swept in STEPS steps) or [key, [values]].
- * A new widget adds its row (the bench stops on a widget without one).
+ * The key must be one the widget's schema has and its views read. A new widget adds its row (the bench stops on
+ * a widget without one).
  */
 const DRAGS = {
   'fresnel-curves': ['ior', 1.2, 2.4],
@@ -32,23 +35,26 @@ const DRAGS = {
   'subsurface-scale': ['sigmaS', 1, 10],
   radiance: ['distance', 0.5, 10],
   'brdf-lobe': ['lightTheta', 10, 70],
+  'measured-brdf': ['lightTheta', 10, 70],
   'ndf-explorer': ['hwhm', 5, 25],
   'visibility-explorer': ['alpha', 0.1, 0.8],
   microfacets: ['alpha', 0.2, 0.8],
-  energy: ['samples', [32, 64, 96, 128, 160, 192, 224, 256]],
+  energy: ['metalAlpha', 0.2, 1], // its one slider: the coloured metal's roughness
   'diffuse-explorer': ['lightTheta', 10, 70],
   'material-lab': ['lightTheta', 10, 70],
   'lighting-models': ['alpha', 0.2, 0.6],
 };
 
-function dragValues(name) {
+async function dragValues(name, steps) {
   const drag = DRAGS[name];
   if (!drag) throw new Error(`bench/latency.js: add the drag of ${name} to DRAGS`);
   const [key, from, to] = drag;
+  const { schema } = await import(`../src/widgets/${name}/schema.js`);
+  if (!schema[key]) throw new Error(`bench/latency.js: ${name} has no state key ${key} (its schema changed?)`);
   const values = Array.isArray(from)
-    ? [...from, ...from].slice(0, STEPS)
-    : Array.from({ length: STEPS }, (_, i) => from + ((to - from) * i) / (STEPS - 1));
-  return { key, values };
+    ? Array.from({ length: steps }, (_, i) => from[i % from.length])
+    : Array.from({ length: steps }, (_, i) => from + ((to - from) * i) / (steps - 1));
+  return { key, values, step: schema[key].step ?? 0 };
 }
 
 /**
@@ -79,14 +85,24 @@ function timeChange(name, key, value, viaLoop) {
 
 const quantile = (xs, q) => [...xs].sort((a, b) => a - b)[Math.min(xs.length - 1, Math.floor(q * xs.length))];
 
-async function measure(browser, url, name) {
-  const { key, values } = dragValues(name);
-  const page = await openPage(browser, url, `embed.html?w=${name}${QUICK[name] ?? ''}`, { width: 1280, height: 2600 });
+/** The widget's state takes the dragged value (to the control's step): else the drag would time nothing. */
+async function checkTaken(page, name, { key, step }, value) {
+  const now = await page.evaluate((n, k) => globalThis.__shadingLab.widgets[n].getState()[k], name, key);
+  const taken = typeof value === 'number' ? Math.abs(now - value) <= step / 2 + 1e-9 : now === value;
+  if (!taken) throw new Error(`bench/latency.js: ${name}.update({ ${key}: ${value} }) left ${key} at ${now}`);
+}
+
+async function measure(browser, url, name, steps) {
+  const drag = await dragValues(name, steps);
+  const { key, values } = drag;
+  const path = `embed.html?w=${name}${LIGHT_STATE[name] ?? ''}`;
+  const page = await openPage(browser, url, path, { width: 1280, height: 2600 });
   await page.waitForFunction((n) => globalThis.__shadingLab?.widgets?.[n], { timeout: 60_000 }, name);
   await settle(page, 1500);
   // does a change go through the render loop (a 3-D view)? then each change waits for its draw
   const before = await page.evaluate(() => globalThis.__shadingLab.frames);
   await page.evaluate((n, k, v) => globalThis.__shadingLab.widgets[n].update({ [k]: v }), name, key, values.at(-1));
+  await checkTaken(page, name, drag, values.at(-1));
   await settle(page, 1500);
   const viaLoop = (await page.evaluate(() => globalThis.__shadingLab.frames)) > before;
   let ms = [];
@@ -95,36 +111,70 @@ async function measure(browser, url, name) {
   const after = await page.evaluate(() => globalThis.__shadingLab.frames);
   await settle(page, 1000);
   const progressive = (await page.evaluate(() => globalThis.__shadingLab.frames)) - after > 2;
+  if (page.errors.length) throw new Error(`${name}: ${page.errors.join('\n')}`);
   await page.close();
   return { widget: name, key, steps: ms.length, medianMs: quantile(ms, 0.5), worstMs: Math.max(...ms), progressive };
 }
 
-const server = await serveStatic(await buildApp());
-const browser = await launchBrowser();
-const rows = [];
-try {
-  for (const name of Object.keys(WIDGETS).filter((n) => !only.length || only.includes(n))) {
-    rows.push(await measure(browser, server.url, name));
-    const r = rows.at(-1);
-    console.log(
-      `${r.widget.padEnd(22)}${r.key.padEnd(14)}median ${r.medianMs.toFixed(1).padStart(7)} ms   worst ` +
-        `${r.worstMs.toFixed(1).padStart(7)} ms${r.progressive ? '   (progressive)' : ''}`,
-    );
+const rowText = (r) =>
+  `  ${r.widget.padEnd(22)}${r.key.padEnd(14)}median ${r.medianMs.toFixed(1).padStart(7)} ms   worst ` +
+  `${r.worstMs.toFixed(1).padStart(7)} ms`;
+
+/**
+ * Every widget (or those named in `only`; two with `quick`) dragged in a fresh Chromium against the app built
+ * from the sources (into BUILT_APP when set, else a temporary folder). Returns { date, steps, targetMs, rows }.
+ */
+export async function measureLatency({ only = [], quick = false, log = console.log } = {}) {
+  const steps = quick ? QUICK.steps : STEPS;
+  const chosen = only.length ? only : Object.keys(WIDGETS);
+  const names = quick ? QUICK.widgets : chosen;
+  const outDir = process.env.BUILT_APP ?? mkdtempSync(join(tmpdir(), 'shading-lab-latency-'));
+  const server = await serveStatic(await buildApp(resolve(outDir)));
+  const browser = await launchBrowser();
+  const rows = [];
+  try {
+    for (const name of names) {
+      rows.push(await measure(browser, server.url, name, steps));
+      log(`${rowText(rows.at(-1))}${rows.at(-1).progressive ? '   (progressive)' : ''}`);
+    }
+  } finally {
+    await browser.close();
+    server.close();
   }
-} finally {
-  await browser.close();
-  server.close();
+  return { date: new Date().toISOString(), steps, targetMs: TARGET_MS, rows };
 }
-const slow = rows.filter((r) => !r.progressive && r.medianMs > TARGET_MS).map((r) => r.widget);
-console.log(
-  slow.length
-    ? `Over ${TARGET_MS} ms (median, not progressive): ${slow.join(', ')}`
-    : `Every non-progressive widget within ${TARGET_MS} ms (median).`,
-);
-const out = join(ROOT, 'bench/results', only.length ? 'latency-partial.json' : 'latency.json');
-mkdirSync(join(ROOT, 'bench/results'), { recursive: true });
-writeFileSync(
-  out,
-  `${JSON.stringify({ date: new Date().toISOString(), steps: STEPS, targetMs: TARGET_MS, rows }, null, 1)}\n`,
-);
-console.log(`Wrote ${out}`);
+
+/** The table: widgets that answer a change in one frame, then the progressive ones, then the slowest named. */
+export function printLatency({ rows, steps, targetMs }) {
+  console.log(`\nFrom a change to its frame (${steps} steps of each widget's main control):`);
+  for (const r of rows.filter((x) => !x.progressive)) console.log(rowText(r));
+  const progressive = rows.filter((r) => r.progressive);
+  if (progressive.length) console.log('Progressive (time to the first changed frame):');
+  for (const r of progressive) console.log(rowText(r));
+  const slow = rows.filter((r) => !r.progressive && r.medianMs > targetMs).map((r) => r.widget);
+  console.log(
+    slow.length
+      ? `Over ${targetMs} ms (median, not progressive): ${slow.join(', ')}`
+      : `Every non-progressive widget within ${targetMs} ms (median).`,
+  );
+}
+
+/** Writes the full run to bench/results/latency.json (the part alone; `npm run bench` also keeps it in its report). */
+export function saveLatency(latency) {
+  const out = join(ROOT, 'bench/results/latency.json');
+  mkdirSync(dirname(out), { recursive: true });
+  writeFileSync(out, `${JSON.stringify(latency, null, 1)}\n`);
+  return out;
+}
+
+if (import.meta.url === `file://${process.argv[1]}`) {
+  const args = process.argv.slice(2);
+  const only = args.flatMap((a, i) => (args[i - 1] === '--widget' ? [a] : []));
+  const latency = await measureLatency({ only });
+  printLatency(latency);
+  if (only.length) {
+    const out = join(ROOT, 'bench/results/latency-partial.json');
+    writeFileSync(out, `${JSON.stringify(latency, null, 1)}\n`);
+    console.log(`Wrote ${out}`);
+  } else console.log(`Wrote ${saveLatency(latency)} (npm run bench -- --only latency also puts it in latest.json)`);
+}

@@ -72,6 +72,9 @@ function checkShape(report) {
     for (const x of [r.ms, r.rms, r.relative]) expect(Number.isFinite(x) && x >= 0).toBe(true);
   }
   for (const p of report.pages) expect(p).toMatchObject({ jsKB: num, jsFiles: num, loadMs: num });
+  expect(report.latency).toMatchObject({ steps: num, targetMs: 50 });
+  for (const r of report.latency.rows)
+    expect(r).toMatchObject({ widget: expect.any(String), key: expect.any(String), medianMs: num, worstMs: num });
 }
 
 describe('npm run bench', () => {

@@ -3,6 +3,8 @@
 // when it comes back. A page that nothing changes issues no draw calls at all.
 // ready() is false while the view cannot draw (its WebGL context is given up); the frame stays pending
 // until invalidate() is called again.
+// createSettledTask: work a change needs but no frame waits for (figures shown as words and numbers), done once
+// the changes pause, so that a drag's frames come first and the last state's figures are still exact.
 
 import { countFrame } from '../framework/debug-hooks.js';
 
@@ -42,6 +44,36 @@ export function createRenderLoop(element, draw, ready = () => true) {
       observer.disconnect();
       document.removeEventListener('visibilitychange', schedule);
       if (scheduled) cancelAnimationFrame(scheduled);
+    },
+  };
+}
+
+/**
+ * Runs `run` once changes have paused for `quietMs` after the last schedule(), and at least every `maxWaitMs`
+ * during a long drag; flush() runs it at once when it is pending (a reader wants the figures now).
+ * @param {() => void} run
+ */
+export function createSettledTask(run, { quietMs = 120, maxWaitMs = 500 } = {}) {
+  let timer = 0;
+  let pendingSince = null; // when the oldest change not yet run came
+  const fire = () => {
+    clearTimeout(timer);
+    pendingSince = null;
+    run();
+  };
+  return {
+    schedule() {
+      const now = performance.now();
+      pendingSince ??= now;
+      clearTimeout(timer);
+      timer = setTimeout(fire, Math.max(0, Math.min(quietMs, pendingSince + maxWaitMs - now)));
+    },
+    flush() {
+      if (pendingSince !== null) fire();
+    },
+    cancel() {
+      clearTimeout(timer);
+      pendingSince = null;
     },
   };
 }

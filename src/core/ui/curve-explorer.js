@@ -1,7 +1,9 @@
 // The arrangement ndf-explorer and visibility-explorer share: a widget shell whose view holds the plots, then the
-// spheres, then the table; curves derived from the state, redrawn with the table when a key they read changes;
-// the spheres and their description redrawn on every change.
+// spheres, then the table; curves derived from the state, redrawn when a key they read changes; the spheres and
+// their description redrawn on every change. The table (figures only) follows once a drag pauses: its numbers
+// may cost more than a frame (ndf-explorer's integrals), and the spheres' frame should not wait for them.
 import { createWidgetShell } from '../framework/widget-shell.js';
+import { createSettledTask } from '../gpu/render-loop.js';
 
 /**
  * @param {HTMLElement} container
@@ -26,6 +28,7 @@ export function createCurveExplorer(container, options) {
   const plots = views.plots(plotHolder, curves, shell.state);
   const spheres = views.spheres(shell.view);
   const table = views.table(shell.view);
+  const tableLater = createSettledTask(() => table.draw(curves));
 
   const drawSpheres = () => {
     spheres.draw(curves, shell.state);
@@ -35,7 +38,7 @@ export function createCurveExplorer(container, options) {
     if (changed.some((k) => curveKeys.includes(k))) {
       curves = curvesOf(shell.state);
       drawCurves(plots, curves, shell.state);
-      table.draw(curves);
+      tableLater.schedule();
     }
     afterChange?.(plots, changed, curves, shell.state);
     drawSpheres();
@@ -50,7 +53,10 @@ export function createCurveExplorer(container, options) {
     update,
     /** The curves drawn now (they are replaced, not mutated, when the state changes). */
     curves: () => curves,
+    /** Draws the table now if it waits for the drag to pause. */
+    flushTable: tableLater.flush,
     dispose() {
+      tableLater.cancel();
       plots.dispose();
       spheres.dispose();
       shell.dispose();

@@ -6,7 +6,7 @@ import * as THREE from 'three';
 import { createViewport } from '../gpu/viewport.js';
 import { assembleGlsl } from '../gpu/glsl.js';
 import { SHADER_CHUNKS } from '../gpu/shader-chunks.js';
-import { createProgramCache } from '../gpu/program-cache.js';
+import { createProgramCache, definesKey } from '../gpu/program-cache.js';
 import { angleText, probeAngles, showProbeRows } from './probe.js';
 import { drawSideBySide } from './side-by-side.js';
 
@@ -43,6 +43,17 @@ const sphereMaterial = (defines) =>
     fragmentShader: assembleGlsl(SHADER_CHUNKS['brdf-sphere.frag.glsl'], { defines }),
   });
 
+const sameValue = (a, b) => a === b || (Array.isArray(a) && Array.isArray(b) && a.every((x, i) => x === b[i]));
+
+/** Whether two lists of cells draw the same picture: labels, programs and uniform values (textures by identity). */
+function sameDrawing(cells, next) {
+  const same = (a, b) =>
+    a.label === b.label &&
+    definesKey(a.defines) === definesKey(b.defines) &&
+    Object.keys({ ...a.uniforms, ...b.uniforms }).every((k) => sameValue(a.uniforms[k], b.uniforms[k]));
+  return cells.length === next.length && cells.every((c, i) => same(c, next[i]));
+}
+
 /** Draws each cell in its own square viewport, side by side across the canvas, with its program and uniforms. */
 function drawCells(renderer, cells, programs, view) {
   drawSideBySide(renderer, cells.length, (i) => {
@@ -57,9 +68,13 @@ function drawCells(renderer, cells, programs, view) {
   });
 }
 
-/** The unit sphere, alone in a scene under an orthographic camera that frames it in a cell. */
+/**
+ * The unit sphere, alone in a scene under an orthographic camera that frames it in a cell. Only its half that
+ * faces the camera (z ≥ 0) is made: the same vertices and triangles as that half of a 128 × 64 sphere (the other
+ * half is culled as back faces), at half the cost on a software renderer.
+ */
 function sphereView(background) {
-  const geometry = new THREE.SphereGeometry(1, 128, 64);
+  const geometry = new THREE.SphereGeometry(1, 64, 64, 0, Math.PI);
   const mesh = new THREE.Mesh(geometry);
   const scene = new THREE.Scene().add(mesh);
   scene.background = new THREE.Color(background);
@@ -148,6 +163,7 @@ function attachProbe(container, viewport, cellsNow) {
 
 export function createSphereGrid(container, { label = 'Spheres', aspectPerCell = 1, background = '#16181d' } = {}) {
   let cells = [];
+  let drawnOnce = false;
   const programs = createProgramCache(sphereMaterial);
   const view = sphereView(background);
   const labels = document.createElement('div');
@@ -163,14 +179,15 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
     viewport && (viewport.holder.style.aspectRatio = `${Math.max(cells.length, 1) * aspectPerCell} / 1`);
 
   return {
-    /** Replaces the cells and redraws. */
+    /** Replaces the cells; redraws when what they draw differs (a probe alone may change). */
     setCells(next) {
-      cells = next;
+      const redraw = !drawnOnce || !sameDrawing(cells, next);
+      [cells, drawnOnce] = [next, true];
       labels.replaceChildren(
         ...cells.map((c) => Object.assign(document.createElement('span'), { textContent: c.label })),
       );
       setAspect();
-      viewport?.invalidate();
+      if (redraw) viewport?.invalidate();
     },
     get canvas() {
       return viewport?.canvas;

@@ -1,8 +1,10 @@
 // fresnel-zones: the talk's live demo. A shape under a light the user drags; the glass Fresnel of n·v,
 // the zones of n·v, the zones of l·h, and the l·h zones weighted by the rest of the BRDF, with the share
-// of covered pixels (or of reflected light) in each zone summed on the GPU.
+// of covered pixels (or of reflected light) in each zone summed on the GPU: after the frame, once a drag pauses
+// (a GPU read-back that the picture need not wait for; the shares of the last state are exact).
 import { createWidgetShell } from '../../core/framework/widget-shell.js';
 import { createViewport } from '../../core/gpu/viewport.js';
+import { createSettledTask } from '../../core/gpu/render-loop.js';
 import { schema, TERMS_USED } from './schema.js';
 import { ABOUT, TITLE, describeView } from './words.js';
 import { createZonesScene } from './scene-view.js';
@@ -28,11 +30,17 @@ export function create(container, initialState = {}, { onStateChange, locked } =
     legend.show(shell.state, measured);
     shell.describe(describeView(shell.state, measured), viewport?.canvas);
   };
-  const draw = (renderer) => {
+  const measureNow = () => {
+    if (viewport.renderer.getContext().isContextLost()) return; // measured again on the next draw
     view.applyState();
     if (stats.measure(shell.state)) showMeasured();
+  };
+  const measureLater = createSettledTask(measureNow);
+  const draw = (renderer) => {
+    view.applyState();
     view.render(renderer);
     tools?.drawLight();
+    measureLater.schedule();
   };
   const onResize = (w, h) => {
     view.fit(w, h);
@@ -41,7 +49,7 @@ export function create(container, initialState = {}, { onStateChange, locked } =
   const viewport = createViewport(column, { draw, onResize, label: 'Fresnel zones view' });
   if (viewport) {
     stats = createZoneStats(viewport.renderer, view);
-    const getZoneShares = () => stats.measured.zoneShares;
+    const getZoneShares = () => (measureLater.flush(), stats.measured.zoneShares);
     tools = attachViewTools(viewport, column, { getState, update: (p) => update(p), view, getZoneShares });
   }
   column.append(legend.element);
@@ -59,12 +67,13 @@ export function create(container, initialState = {}, { onStateChange, locked } =
     update,
     getState,
     /** Zone shares last measured on the GPU (for tests and exercises). */
-    getZoneShares: () => [...(stats?.measured ?? NOT_MEASURED).zoneShares],
+    getZoneShares: () => (measureLater.flush(), [...(stats?.measured ?? NOT_MEASURED).zoneShares]),
     /** In the weighted mode: the shares averaged over light directions uniform on the sphere. */
-    getAverageShares: () => stats?.measured.averageShares?.slice() ?? null,
+    getAverageShares: () => (measureLater.flush(), stats?.measured.averageShares?.slice() ?? null),
     /** Number of distinct shader programs compiled so far, and the source of the one in use. */
     getProgramInfo: view.programInfo,
     dispose() {
+      measureLater.cancel();
       tools?.dispose();
       stats?.dispose();
       view.dispose();

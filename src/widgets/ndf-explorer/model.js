@@ -28,13 +28,18 @@ export function ndfCurves(state) {
   return state.ndfs.map((key) => {
     const p = params[key];
     const D = (c) => NDF_TERMS[key](c, p);
+    let integral = null;
     return {
       key,
       p,
       label: termLabel('ndf', key),
       ...seriesStyle(NDF_KEYS.indexOf(key)),
       values: ANGLES.map((deg) => D(Math.cos(deg * DEG))),
-      integral: ndfProjectedIntegral(D),
+      /** Computed when first read: only the table shows it, and it costs more than a frame while dragging. */
+      get integral() {
+        integral ??= ndfProjectedIntegral(D);
+        return integral;
+      },
     };
   });
 }

@@ -8,25 +8,33 @@ export const MAX_EVENTS = 2000;
 const LOCAL_SHARE = 0.9; // "local" when this share of the re-emerging light exits inside the sample
 
 /**
- * From STATS_WALKS walks: each exit's distance from the entry and the light it carries ([d, weight], by
- * distance), the share that comes back out, the share of that inside the shading sample, the median and mean
- * exit distance (weighted by light) and the share of walks still inside after MAX_EVENTS events.
+ * STATS_WALKS walks from `seed` in a slab with σs = 1: each one that comes back out as [|x|, path length], by
+ * distance, and how many are still inside after MAX_EVENTS events. A walk at another σs is this one scaled by
+ * 1/σs (its steps are exponential with mean 1/σs, the same random numbers pick them, the slab has no far side),
+ * so one set serves a whole drag of σs and of σa; only the seed asks for new walks.
  */
-export function statistics(s) {
-  const rand = seededRandom(s.seed * 7919);
+export function unitWalks(seed) {
+  const rand = seededRandom(seed * 7919);
   const exits = [];
-  let back = 0;
   let stuck = 0;
   for (let i = 0; i < STATS_WALKS; i++) {
-    const w = randomWalk2D({ sigmaS: s.sigmaS, rand, maxEvents: MAX_EVENTS });
+    const w = randomWalk2D({ sigmaS: 1, rand, maxEvents: MAX_EVENTS });
     if (w.exit === 'lost') stuck++;
-    else {
-      const weight = Math.exp(-s.sigmaA * w.path); // light left after absorption along the path
-      exits.push([Math.abs(w.x), weight]);
-      back += weight;
-    }
+    else exits.push([Math.abs(w.x), w.path]);
   }
   exits.sort((a, b) => a[0] - b[0]);
+  return { seed, exits, stuck };
+}
+
+/**
+ * From the walks of state `s` (unitWalks of its seed, scaled to its σs): each exit's distance from the entry and
+ * the light it carries ([d, weight], by distance), the share that comes back out, the share of that inside the
+ * shading sample, the median and mean exit distance (weighted by light) and the share of walks still inside
+ * after MAX_EVENTS events.
+ */
+export function statistics(s, walks = unitWalks(s.seed)) {
+  const exits = walks.exits.map(([x, path]) => [x / s.sigmaS, Math.exp((-s.sigmaA * path) / s.sigmaS)]);
+  const back = exits.reduce((t, [, w]) => t + w, 0); // light left after absorption along each path
   const inside = exits.filter(([d]) => d <= s.pixel).reduce((t, [, w]) => t + w, 0);
   let acc = 0;
   const median = exits.find(([, w]) => (acc += w) >= back / 2)?.[0] ?? 0;
@@ -37,7 +45,7 @@ export function statistics(s) {
     insideShare: back > 0 ? inside / back : 0,
     median,
     mean,
-    stuck: stuck / STATS_WALKS,
+    stuck: walks.stuck / STATS_WALKS,
   };
 }
 

@@ -3,7 +3,7 @@
 // shows when that distance can be ignored (the pixel is large: diffuse shading is local) and when not.
 import { createWidgetShell } from '../../core/framework/widget-shell.js';
 import { schema, TERMS_USED } from './schema.js';
-import { isLocal, statistics } from './model.js';
+import { isLocal, statistics, unitWalks } from './model.js';
 import { ABOUT, TITLE, describeWalks, statisticsTable, verdictWords } from './words.js';
 import { drawWalks } from './walks-view.js';
 import { createExitPlot } from './exit-plot.js';
@@ -25,7 +25,8 @@ export function create(container, initialState = {}, { onStateChange, locked } =
   const plotHolder = document.createElement('div');
   const table = document.createElement('div');
   shell.view.append(canvas, verdict, plotHolder, table);
-  let stats = statistics(shell.state);
+  let walks = unitWalks(shell.state.seed); // σs and σa scale and weight them: a new seed alone walks again
+  let stats = statistics(shell.state, walks);
   const plot = createExitPlot(plotHolder, shell.state, stats);
 
   const draw = () => drawWalks(canvas, shell.state, stats);
@@ -37,8 +38,9 @@ export function create(container, initialState = {}, { onStateChange, locked } =
     table.innerHTML = statisticsTable(shell.state, stats);
   };
   const onChanged = (changed) => {
+    if (changed.includes('seed')) walks = unitWalks(shell.state.seed);
     if (changed.some((k) => STATISTICS_KEYS.includes(k))) {
-      stats = statistics(shell.state);
+      stats = statistics(shell.state, walks);
       plot.show(shell.state, stats);
     }
     show();
