@@ -1,0 +1,147 @@
+// User-written terms (issue 13) in the material lab, ndf-explorer, visibility-explorer and diffuse-explorer, in a
+// real Chromium: code typed into the editor as a user types it, drawn as the term predicts (the truth: closed
+// forms and the JS terms of src/math), a compile error keeping the last picture, and the URL carrying the code.
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { getState, launchBrowser, open, settle, widget } from './helpers.js';
+import { stateToParams } from '../../src/core/framework/state.js';
+import { srgbToLinear } from '../../src/math/color.js';
+import { schema as labSchema } from '../../src/widgets/material-lab/schema.js';
+
+let browser;
+beforeAll(async () => {
+  browser = await launchBrowser();
+});
+afterAll(async () => {
+  await browser?.close();
+});
+
+/** Replaces the text of the slot's editor by typing, as a user does (select all, type), and waits for the redraw. */
+async function typeCode(page, slot, text, wait = 1500) {
+  await page.click(`.custom-panel[data-slot="${slot}"] .cm-content`);
+  await page.keyboard.down('Control');
+  await page.keyboard.press('a');
+  await page.keyboard.up('Control');
+  await page.keyboard.press('Backspace');
+  await page.keyboard.type(text);
+  await settle(page, wait); // the edit's pause, the compile, the redraw
+}
+
+const panelText = (page, slot, selector) =>
+  page.$eval(`.custom-panel[data-slot="${slot}"] ${selector}`, (el) => el.textContent);
+
+/** Opens `w` alone (embed.html) and waits for its editor. */
+async function openWidget(key, query, size = { width: 1100, height: 1500 }) {
+  const page = await open(browser, `embed.html?w=${key}&${query}`, size);
+  await widget(page, key);
+  await page.waitForSelector('.custom-panel .cm-content', { timeout: 30_000 });
+  await settle(page, 800);
+  return page;
+}
+
+describe('material lab: your whole BRDF', () => {
+  const EXTENT = 1.1; // the lab's view half width (src/lab/lab-uniforms.js)
+  const RES = 192; // the lab's image size (material-lab.js)
+  const POINTS = [
+    [0, 0],
+    [0.5, 0.1],
+    [-0.4, 0.5],
+    [0.1, -0.8],
+  ];
+  const texelOf = ([x, y]) => [x, y].map((c) => Math.floor((c / (2 * EXTENT) + 0.5) * RES));
+  /** The approximation's red channel at POINTS (the sphere coordinates' texels). */
+  const approxAt = (page) =>
+    page.evaluate(
+      (texels, res) => {
+        const image = globalThis.__shadingLab.widgets['material-lab'].read('approx');
+        return texels.map(([i, j]) => image[(j * res + i) * 4]);
+      },
+      POINTS.map(texelOf),
+      RES,
+    );
+  /** n·l at each point's texel centre for a light from the viewer (lightTheta 0): n = (x, y, √(1 − x² − y²)), l = z. */
+  const cosines = POINTS.map(texelOf).map((texel) => {
+    const [x, y] = texel.map((i) => ((2 * (i + 0.5)) / RES - 1) * EXTENT);
+    return Math.sqrt(1 - x * x - y * y);
+  });
+  // the sphere's grey, as the lab's sRGB colour field holds it, and its linear value: Lambert's albedo ρ
+  const GREY = '#8c8c8c';
+  const rho = srgbToLinear(0x8c / 255);
+  const lambertCode = `vec3 customBRDF(vec3 l, vec3 v) {
+return vec3(${rho.toFixed(7)} / PI);
+}`;
+  const LIGHT = 'punctual=1&lightTheta=0&lightPhi=0&cLight=1&env=0&refSamples=128';
+
+  it('ρ/π typed in renders π f (n·l) = ρ (n·l) under the punctual light, as the lab’s Lambert sphere', async () => {
+    const page = await openWidget('material-lab', `brdfSource=custom&${LIGHT}`);
+    await typeCode(page, 'brdf', lambertCode, 2500);
+    expect((await getState(page, 'material-lab')).codeBRDF).toContain(rho.toFixed(7));
+    const custom = await approxAt(page);
+    custom.forEach((value, i) => expect(value / (rho * cosines[i])).toBeCloseTo(1, 2)); // half-float target
+    // the lab's own Lambert sphere (diffuse layer only), same colour
+    await page.evaluate(
+      (grey) =>
+        globalThis.__shadingLab.widgets['material-lab'].update({
+          brdfSource: 'model',
+          layers: 'diffuse',
+          diffuseModel: 'lambert',
+          diffuse: grey,
+        }),
+      GREY,
+    );
+    await settle(page, 2500);
+    const lambert = await approxAt(page);
+    lambert.forEach((value, i) => expect(value / custom[i]).toBeCloseTo(1, 3));
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('a compile error names the user’s line and keeps the last picture; the URL carries the code', async () => {
+    const page = await openWidget('material-lab', `brdfSource=custom&${LIGHT}`);
+    await typeCode(page, 'brdf', 'vec3 customBRDF(vec3 l, vec3 v) {\nreturn vec3(0.5 / PI);\n}', 2500);
+    const before = await approxAt(page);
+    before.forEach((value, i) => expect(value / (0.5 * cosines[i])).toBeCloseTo(1, 2));
+    // an undeclared name on line 2: parses, and the GLSL compiler refuses it there
+    await typeCode(page, 'brdf', 'vec3 customBRDF(vec3 l, vec3 v) {\nreturn vec3(0.9 / PI) * missing;\n}', 2500);
+    expect(await panelText(page, 'brdf', '.custom-problems')).toMatch(/^Line 2: .*missing/);
+    expect(await panelText(page, 'brdf', '.custom-status')).toMatch(/keeps your last good code/);
+    expect(await approxAt(page)).toEqual(before);
+    // the code as the share link carries it, opened in a new page: the same state
+    const state = await getState(page, 'material-lab');
+    const query = stateToParams(labSchema, state).toString();
+    const again = await openWidget('material-lab', query);
+    expect((await getState(again, 'material-lab')).codeBRDF).toBe(state.codeBRDF);
+    expect(page.errors).toEqual([]);
+    expect(again.errors).toEqual([]);
+    await Promise.all([page.close(), again.close()]);
+  });
+
+  it('in the white furnace the Monte Carlo reference of ρ/π converges to ρ (the albedo), sampled GGX + cosine', async () => {
+    const query = 'brdfSource=custom&punctual=0&env=1&environment=furnace&envMethod=importance&refSamples=512';
+    const page = await openWidget('material-lab', query);
+    await typeCode(page, 'brdf', lambertCode, 1000);
+    await page.waitForFunction(
+      () => {
+        const p = globalThis.__shadingLab.widgets['material-lab'].getProgress();
+        return p.frame >= p.target;
+      },
+      { timeout: 300_000, polling: 500 },
+    );
+    // per point, the mean of the 5 × 5 texels around it and its standard error (Monte Carlo noise)
+    const reference = await page.evaluate(
+      (texels, res) => {
+        const image = globalThis.__shadingLab.widgets['material-lab'].read('reference');
+        return texels.map(([i, j]) => {
+          const x = [];
+          for (let dj = -2; dj <= 2; dj++) for (let di = -2; di <= 2; di++) x.push(image[((j + dj) * res + i + di) * 4]);
+          const mean = x.reduce((a, b) => a + b) / 25;
+          return { mean, se: Math.sqrt(x.reduce((a, b) => a + (b - mean) ** 2, 0) / 24 / 25) };
+        });
+      },
+      POINTS.map(texelOf),
+      RES,
+    );
+    reference.forEach(({ mean, se }) => expect(Math.abs(mean - rho)).toBeLessThan(4 * se + 1e-3 * rho));
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+});
