@@ -45,6 +45,11 @@ const DRAGS = {
   'lighting-models': ['alpha', 0.2, 0.6],
 };
 
+/** Work a widget starts when opened and ends by itself (off the main thread): the drag waits until it is done. */
+const OPENING_WORK = {
+  'measured-brdf': () => Object.keys(globalThis.__shadingLab.widgets['measured-brdf'].getFits()).length === 5,
+};
+
 async function dragValues(name, steps) {
   const drag = DRAGS[name];
   if (!drag) throw new Error(`bench/latency.js: add the drag of ${name} to DRAGS`);
@@ -98,6 +103,7 @@ async function measure(browser, url, name, steps) {
   const path = `embed.html?w=${name}${LIGHT_STATE[name] ?? ''}`;
   const page = await openPage(browser, url, path, { width: 1280, height: 2600 });
   await page.waitForFunction((n) => globalThis.__shadingLab?.widgets?.[n], { timeout: 60_000 }, name);
+  if (OPENING_WORK[name]) await page.waitForFunction(OPENING_WORK[name], { timeout: 300_000, polling: 500 });
   await settle(page, 1500);
   // does a change go through the render loop (a 3-D view)? then each change waits for its draw
   const before = await page.evaluate(() => globalThis.__shadingLab.frames);

@@ -2,6 +2,7 @@
 // a seeded generator of partial states from them, and the rules a widget's state must keep whatever came in.
 // The rules are written here from docs/security.md's description of the state, not from
 // src/core/framework/state.js.
+import LZString from 'lz-string';
 
 /** A small seeded generator (mulberry32): the same seed gives the same inputs on every run. */
 export function seededRandom(seed) {
@@ -99,6 +100,36 @@ export function hostilePartial(schema, random, typed) {
 
 const DECIMAL = /^\s*[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?\s*$/i;
 
+/** A user-written term's code (issue 13): at most 8000 characters, no control character but tab, LF and CR. */
+const cleanCode = (code) =>
+  typeof code === 'string' &&
+  code.length <= 8000 &&
+  [...code].every((ch) => (ch.charCodeAt(0) >= 32 ? ch !== '\u007f' : '\t\n\r'.includes(ch)));
+/** As sent: the code, or `lz:` and its lz-string compression (URL-safe alphabet). */
+const isCleanCode = (raw) =>
+  typeof raw === 'string' &&
+  raw.length <= 8000 &&
+  cleanCode(raw.startsWith('lz:') ? LZString.decompressFromEncodedURIComponent(raw.slice(3)) || null : raw);
+const PARAM_NAME = /^[A-Za-z_]\w*$/;
+/** Slider values: at most 16 GLSL names (no `__`) → finite plain decimals, as a record or `name:value,…`. */
+function isCleanParams(raw) {
+  const plain = raw !== null && typeof raw === 'object' && Object.getPrototypeOf(raw) === Object.prototype;
+  const entries =
+    typeof raw === 'string'
+      ? raw === ''
+        ? []
+        : raw.split(',').map((e) => e.split(':'))
+      : plain
+        ? Object.entries(raw)
+        : null;
+  const finite = (v) => (typeof v === 'number' ? Number.isFinite(v) : typeof v === 'string' && DECIMAL.test(v));
+  return (
+    entries !== null &&
+    entries.length <= 16 &&
+    entries.every((e) => e.length === 2 && PARAM_NAME.test(e[0]) && !e[0].includes('__') && finite(e[1]))
+  );
+}
+
 /** True when `raw` is a value docs/security.md says a field takes as it is (no notice): the independent statement. */
 export function isClean(f, raw) {
   const own = (v) => typeof v === 'string' && Object.prototype.hasOwnProperty.call(f.options, v);
@@ -128,6 +159,10 @@ export function isClean(f, raw) {
     }
     case 'text': // docs/security.md: at most maxLength letters, digits, spaces and . _ - ( ) + ,
       return typeof raw === 'string' && raw.length <= f.maxLength && /^[\p{L}\p{N} ._()+,-]*$/u.test(raw);
+    case 'code':
+      return isCleanCode(raw);
+    case 'params':
+      return isCleanParams(raw);
     default:
       return false;
   }
@@ -210,7 +245,11 @@ export function stateProblems(schema, state) {
                     v.every((x) => typeof x === 'number' && x >= f.min && x <= f.max && !Object.is(x, -0))
                   : f.type === 'text'
                     ? isClean(f, v)
-                    : false;
+                    : f.type === 'code'
+                      ? cleanCode(v)
+                      : f.type === 'params'
+                        ? isCleanParams(v) && Object.values(v).every((x) => !Object.is(x, -0))
+                        : false;
     if (!ok) problems.push(`${key} = ${JSON.stringify(v)?.slice(0, 80)}`);
   }
   for (const key of Object.keys(state)) if (!Object.hasOwn(schema, key)) problems.push(`extra key ${key}`);

@@ -252,7 +252,7 @@ describe('custom terms in brdf-lobe: errors, safety, sharing', () => {
       window.__lose.loseContext();
     });
     await settle(page, 600);
-    expect(await panelText(page, 'D', '.custom-status')).toMatch(/graphics context was lost/);
+    expect(await panelText(page, 'D', '.custom-status')).toMatch(/WebGL context away; it comes back by itself/);
     expect(await shot(page, '.polar-plot canvas')).toBe(good);
     await page.evaluate(() => window.__lose.restoreContext());
     await settle(page, 1500);
@@ -260,6 +260,37 @@ describe('custom terms in brdf-lobe: errors, safety, sharing', () => {
     expect(await shot(page, '.polar-plot canvas')).toBe(good);
     await typeCode(page, 'D', D_TWICE_GGX.replace('2.0 * a2', 'a2'));
     expect((await polarPeaks(page)).A / jsPeak({})).toBeCloseTo(1, 2);
+    expect(page.errors.filter((e) => !/CONTEXT_LOST/i.test(e))).toEqual([]);
+    await page.close();
+  });
+
+  it('code running when the GPU takes the context away is blamed: the code before it comes back', async () => {
+    const page = await openLobe(`D=custom&${WITH_B}`);
+    // a GPU that gives up during the next read-back of the user's values, as it does on a shader that runs too long
+    await page.evaluate(() => {
+      const read = WebGL2RenderingContext.prototype.readPixels;
+      WebGL2RenderingContext.prototype.readPixels = function hanging(...args) {
+        if (window.__hangOnce) {
+          window.__hangOnce = false;
+          window.__lose = this.getExtension('WEBGL_lose_context');
+          window.__lose.loseContext();
+        }
+        return read.apply(this, args);
+      };
+    });
+    await typeCode(page, 'D', D_TWICE_GGX.replace('2.0 * a2', '3.0 * a2').replace('{', '{ // heavy'));
+    expect((await polarPeaks(page)).A / (3 * jsPeak({}))).toBeCloseTo(1, 2); // it ran once, before the hang
+    await page.evaluate(() => (window.__hangOnce = true));
+    await typeCode(page, 'D', D_TWICE_GGX.replace('2.0 * a2', '4.0 * a2'));
+    expect(await panelText(page, 'D', '.custom-status')).toMatch(/while your new code was drawing/);
+    await page.evaluate(() => window.__lose.restoreContext());
+    await settle(page, 1500);
+    expect(await panelText(page, 'D', '.custom-status')).toMatch(/Your code was running when the GPU took/);
+    expect((await polarPeaks(page)).A / (3 * jsPeak({}))).toBeCloseTo(1, 2); // the code before it
+    await page.click('.custom-panel[data-slot="D"] .cm-content');
+    await page.keyboard.press('Enter'); // an edit: the code may run again
+    await settle(page, 1200);
+    expect((await polarPeaks(page)).A / (4 * jsPeak({}))).toBeCloseTo(1, 2);
     expect(page.errors.filter((e) => !/CONTEXT_LOST/i.test(e))).toEqual([]);
     await page.close();
   });

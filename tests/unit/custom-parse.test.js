@@ -132,6 +132,15 @@ describe('parseCustom: slider lines', () => {
       ],
     });
   });
+  it('refuses a uniform hidden after other code on a line (it would read 0 for ever)', () => {
+    const code = `float k = 1.0; uniform float gain;\n${D('  return gain * nh;')}`;
+    expect(parseCustom('D', code).problems).toEqual([
+      {
+        line: 1,
+        message: 'a uniform must be a slider line of its own: uniform float name; // slider MIN MAX DEFAULT "Label"',
+      },
+    ]);
+  });
   it('refuses malformed slider lines, each on its line, with the reason', () => {
     const code = [
       'uniform float a; // slider 0 1 2 "A"',

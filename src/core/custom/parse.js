@@ -4,8 +4,8 @@
 // that could hang the GPU; its slider lines become parameters. Every problem names the user's own line.
 // A loop passes only in the one shape whose trip count is known before it runs:
 // `for (int i = A; i < B; i++)` (<, <=, >, >=; ++, --, += C, -= C; A, B, C integer literals), its counter never
-// assigned in the body, at most MAX_LOOP_ITERATIONS trips, nested loops counted together. `while` and `do` have no
-// such bound and are refused.
+// assigned in the body, at most MAX_LOOP_ITERATIONS trips, nested loops (and the loops of a function called inside a
+// loop) counted together. `while` and `do` have no such bound and are refused.
 import { parse } from '@shaderfrog/glsl-parser/index.js';
 import { visit } from '@shaderfrog/glsl-parser/ast/index.js';
 import { slotOf } from './slots.js';
@@ -21,6 +21,7 @@ const MAX_LABEL = 40;
 const SLIDER =
   /^\s*uniform\s+float\s+([A-Za-z_]\w*)\s*;\s*\/\/\s*slider\s+(\S+)\s+(\S+)\s+(\S+)\s+"([^"\p{Cc}]*)"\s*$/u;
 const SLIDER_FORM = 'uniform float name; // slider MIN MAX DEFAULT "Label"';
+const UNIFORM_LINE = /^\s*uniform\b/;
 const DECIMAL = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;
 /** Names the host program owns: the app's uniforms (uName), GLSL's own, and what common.glsl and the harness give. */
 const RESERVED = /^(gl_\w*|u[A-Z]\w*|PI|saturate|sin2FromCos|main|fragColor)$/;
@@ -59,7 +60,7 @@ function scanLines(lines) {
   lines.forEach((text, i) => {
     const line = i + 1;
     if (/^\s*#/.test(text)) problems.push({ line, message: 'preprocessor directives (#…) are not available here' });
-    if (!/^\s*uniform\b/.test(text)) return;
+    if (!UNIFORM_LINE.test(text)) return;
     const found = sliderOf(text, line);
     if ('problem' in found) problems.push(found.problem);
     else if (params.some((p) => p.name === found.param.name))
@@ -314,11 +315,13 @@ function loopProblems(functions) {
 }
 
 /**
- * Names the host program owns, where the user declares them.
+ * Names the host program owns, where the user declares them; uniforms that are not on a slider line of their own
+ * (one hidden after other code on a line would read 0 for ever).
  * @param {any} ast
+ * @param {Set<number>} uniformLines the lines that begin with `uniform` (scanLines judged them)
  * @returns {Problem[]}
  */
-function reservedProblems(ast) {
+function declarationProblems(ast, uniformLines) {
   /** @type {Problem[]} */
   const problems = [];
   const reserved = (/** @type {any} */ node) => {
@@ -326,7 +329,17 @@ function reservedProblems(ast) {
     if (typeof name === 'string' && RESERVED.test(name))
       problems.push({ line: lineOf(node), message: `'${name}' is a reserved name (gl_*, u + capital, PI, …)` });
   };
+  const isUniform = (/** @type {any} */ list) =>
+    (list.specified_type?.qualifiers ?? []).some((/** @type {any} */ q) => q.token === 'uniform');
   visit(ast, {
+    declarator_list: {
+      enter: (p) => {
+        if (!isUniform(p.node)) return;
+        for (const d of p.node.declarations ?? [])
+          if (!uniformLines.has(lineOf(d)))
+            problems.push({ line: lineOf(d), message: `a uniform must be a slider line of its own: ${SLIDER_FORM}` });
+      },
+    },
     declaration: { enter: (p) => reserved(p.node.identifier) },
     parameter_declaration: { enter: (p) => reserved(p.node.identifier) },
     function_header: { enter: (p) => reserved(p.node.name) },
@@ -335,14 +348,15 @@ function reservedProblems(ast) {
 }
 
 /**
- * The problems of a parsed program: the slot's function, loops, reserved names.
+ * The problems of a parsed program: the slot's function, loops, reserved names, uniforms off a slider line.
  * @param {any} ast
  * @param {import('./slots.js').Slot} slot
+ * @param {Set<number>} uniformLines the lines that begin with `uniform`
  * @returns {Problem[]}
  */
-function checkProgram(ast, slot) {
+function checkProgram(ast, slot, uniformLines) {
   const functions = ast.program.filter((/** @type {any} */ s) => s.type === 'function');
-  return [...signatureProblems(functions, slot), ...loopProblems(functions), ...reservedProblems(ast)];
+  return [...signatureProblems(functions, slot), ...loopProblems(functions), ...declarationProblems(ast, uniformLines)];
 }
 
 /**
@@ -372,7 +386,9 @@ export function parseCustom(slotKey, code) {
     return { ok: false, params: [], problems: [{ line: 1, message }] };
   }
   const text = code.replace(/\r\n?/g, '\n');
-  const { params, problems } = scanLines(text.split('\n'));
+  const lines = text.split('\n');
+  const { params, problems } = scanLines(lines);
+  const uniformLines = new Set(lines.flatMap((line, i) => (UNIFORM_LINE.test(line) ? [i + 1] : [])));
   /** @type {any} */
   let ast = null;
   try {
@@ -381,7 +397,7 @@ export function parseCustom(slotKey, code) {
     const error = /** @type {{ message?: string, location?: { start?: { line?: number } } }} */ (e);
     problems.push({ line: error?.location?.start?.line ?? 1, message: syntaxMessage(String(error?.message ?? e)) });
   }
-  if (ast) problems.push(...checkProgram(ast, slot));
+  if (ast) problems.push(...checkProgram(ast, slot, uniformLines));
   problems.sort((a, b) => a.line - b.line);
   return { ok: problems.length === 0, params, problems };
 }

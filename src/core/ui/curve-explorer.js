@@ -53,8 +53,6 @@ export function createCurveExplorer(container, options) {
     update,
     /** The curves drawn now (they are replaced, not mutated, when the state changes). */
     curves: () => curves,
-    /** Draws the table now if it waits for the drag to pause. */
-    flushTable: tableLater.flush,
     dispose() {
       tableLater.cancel();
       plots.dispose();

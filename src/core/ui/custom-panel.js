@@ -27,8 +27,14 @@ function statusText(status) {
   if (status.pending) return ''; // the consent box above the editor says it
   if (status.lost)
     return (
+      status.lostMessage ??
       'The graphics context was lost: the picture keeps the last values read back; your code runs again when ' +
-      'the context returns.'
+        'the context returns.'
+    );
+  if (status.suspect)
+    return (
+      'Your code was running when the GPU took the context away: it may run too long per pixel. The picture ' +
+      'keeps the code before it; edit your code to run it again.'
     );
   if (status.problems.length)
     return status.ran
@@ -145,7 +151,7 @@ export function createCustomPanel(container, { slotKey, code, title, getRenderer
       if (parsed.params.length || parsed.ok) sliders.show(parsed.params, sliderValues(parsed.params, params));
       consent.hidden = !run.pending;
       status.textContent = statusText(run);
-      status.classList.toggle('custom-status-bad', Boolean(run.problems.length || run.lost));
+      status.classList.toggle('custom-status-bad', Boolean(run.problems.length || run.lost || run.suspect));
       editor.setDiagnostics(run.problems);
       problems.replaceChildren(...run.problems.map((p) => element('li', '', `Line ${p.line}: ${p.message}`)));
       shown = { code: stateCode, params, ran: run.pending ? null : run.ran }; // no checks of code not shown

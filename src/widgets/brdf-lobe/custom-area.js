@@ -25,7 +25,7 @@ export function createCustomArea(container, { getRenderer, getState, update, red
     loading ??= import('../../core/ui/custom-panel.js').then(
       (m) => {
         panelModule = m;
-        runner = m.createCustomRunner(getRenderer);
+        runner = m.createCustomRunner(getRenderer, redraw);
         redraw();
       },
       () => {
@@ -78,6 +78,7 @@ export function createCustomArea(container, { getRenderer, getState, update, red
       }
     },
     dispose() {
+      runner?.dispose();
       Object.values(panels).forEach((p) => p.dispose());
       box.remove();
     },

@@ -6,7 +6,7 @@ import { SLOTS } from '../../core/custom/slots.js';
 
 const ndfOptions = termOptions('ndf');
 const visOptions = termOptions('visibility');
-const CUSTOM = { custom: 'Custom (your GLSL)' };
+const WITH_CUSTOM = { custom: true };
 
 /** The code of A's user-written term in `slotKey` (no control of its own: the panel's editor edits it). */
 const code = (slotKey, label) => ({ type: 'code', slot: slotKey, default: SLOTS[slotKey].starter, label });
@@ -20,14 +20,15 @@ export const schema = {
     default: 'microfacet',
     label: 'A: BRDF',
   },
-  D: { type: 'enum', options: { ...ndfOptions, ...CUSTOM }, default: 'ggx', label: 'A: D' },
-  V: { type: 'enum', options: { ...visOptions, ...CUSTOM }, default: 'smithGGXCorrelated', label: 'A: V' },
-  F: {
+  D: { type: 'enum', options: termOptions('ndf', undefined, WITH_CUSTOM), default: 'ggx', label: 'A: D' },
+  V: {
     type: 'enum',
-    options: { ...termOptions('fresnel', ['schlick', 'one']), custom: 'Custom for A (your GLSL)' },
-    default: 'schlick',
-    label: 'F',
+    options: termOptions('visibility', undefined, WITH_CUSTOM),
+    default: 'smithGGXCorrelated',
+    label: 'A: V',
   },
+  // a custom F is A's (B keeps Schlick)
+  F: { type: 'enum', options: termOptions('fresnel', ['schlick', 'one'], WITH_CUSTOM), default: 'schlick', label: 'F' },
   alpha: { type: 'number', min: 0.02, max: 1, step: 0.01, default: 0.3, label: 'A: roughness α (GGX)' },
   f0: { type: 'number', min: 0, max: 1, step: 0.01, default: 0.04, label: 'F0' },
   useF: { type: 'bool', default: true, label: 'Factor F' },

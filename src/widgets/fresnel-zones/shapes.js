@@ -8,10 +8,16 @@ const make = {
   teapot: () => new TeapotGeometry(1, 16),
 };
 
+// The cameras stay on the +z axis and the shape never turns, so the sphere's far half (z < 0) is only ever culled
+// as back faces: it is made as its near half alone, the same vertices and triangles, at half the vertex work.
+const nearHalf = { sphere: () => new THREE.SphereGeometry(1, 96, 96, 0, Math.PI) };
+
 export function createShapeGeometry(name) {
-  const g = make[name]();
-  g.computeBoundingSphere();
-  const { center, radius } = g.boundingSphere;
+  const whole = make[name]();
+  whole.computeBoundingSphere();
+  const { center, radius } = whole.boundingSphere; // the whole shape's fit, also for its near half
+  const g = nearHalf[name]?.() ?? whole;
+  if (g !== whole) whole.dispose();
   g.translate(-center.x, -center.y, -center.z);
   g.scale(1 / radius, 1 / radius, 1 / radius);
   g.computeBoundingSphere();
