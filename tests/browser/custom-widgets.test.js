@@ -2,10 +2,14 @@
 // real Chromium: code typed into the editor as a user types it, drawn as the term predicts (the truth: closed
 // forms and the JS terms of src/math), a compile error keeping the last picture, and the URL carrying the code.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { getState, launchBrowser, open, settle, widget } from './helpers.js';
+import { getState, launchBrowser, open, settle, shot, widget, withPixels } from './helpers.js';
 import { stateToParams } from '../../src/core/framework/state.js';
 import { srgbToLinear } from '../../src/math/color.js';
 import { schema as labSchema } from '../../src/widgets/material-lab/schema.js';
+import { schema as ndfSchema } from '../../src/widgets/ndf-explorer/schema.js';
+import { ANGLES as NDF_ANGLES } from '../../src/widgets/ndf-explorer/model.js';
+import { matchNdfWidths } from '../../src/math/ndf-width.js';
+import { ndfGGX } from '../../src/math/ndf.js';
 
 let browser;
 beforeAll(async () => {
@@ -37,6 +41,85 @@ async function openWidget(key, query, size = { width: 1100, height: 1500 }) {
   await settle(page, 800);
   return page;
 }
+
+/**
+ * The sphere grid's first and last cells compared: the largest channel difference (0–255) over the pixels of the
+ * spheres side by side, and the mean red of each (a blank cell is not a match).
+ */
+async function firstAndLastCells(page, count) {
+  const png = await shot(page, '.sphere-grid canvas');
+  return withPixels(
+    page,
+    png,
+    `(image) => {
+      const w = image.width / ${count};
+      const side = Math.min(w, image.height);
+      let worst = 0, first = 0, last = 0, n = 0;
+      // inside the sphere only (the unit sphere fills 1/1.08 of a cell; the save button sits in a corner)
+      const inside = (x, y) => (x - side / 2) ** 2 + (y - side / 2) ** 2 < (0.45 * side) ** 2;
+      for (let y = 0; y < side; y++)
+        for (let x = 0; x < side; x++) {
+          if (!inside(x, y)) continue;
+          const at = (cell) => (Math.floor(y + (image.height - side) / 2) * image.width + Math.floor(cell * w + (w - side) / 2 + x)) * 4;
+          const [a, b] = [at(0), at(${count - 1})];
+          for (let c = 0; c < 3; c++) worst = Math.max(worst, Math.abs(image.data[a + c] - image.data[b + c]));
+          first += image.data[a]; last += image.data[b]; n++;
+        }
+      return { worst, first: first / n, last: last / n };
+    }`,
+  );
+}
+
+/** Float32 agreement, the parity harness's tolerance: |Δ| ≤ 1e-5 + 1e-4 |reference|. */
+const withinFloat32 = (value, reference) => Math.abs(value - reference) <= 1e-5 + 1e-4 * Math.abs(reference);
+
+describe('ndf-explorer: your D beside the five', () => {
+  const QUERY = 'ndfs=ggx,custom&hwhm=8';
+  const alpha = matchNdfWidths(8, {}).ggx.alpha;
+  const jsGgx = Array.from(NDF_ANGLES, (deg) => ndfGGX(Math.cos((deg * Math.PI) / 180), alpha));
+  const curves = (page) => page.evaluate(() => globalThis.__shadingLab.widgets['ndf-explorer'].getCurves());
+  const integrals = (page) => page.evaluate(() => globalThis.__shadingLab.widgets['ndf-explorer'].getIntegrals());
+
+  it('the starter (GGX) draws GGX’s curve (JS ndfGGX at the matched α, float32) and sphere; 2 × GGX typed doubles both', async () => {
+    const page = await openWidget('ndf-explorer', QUERY);
+    const start = await curves(page);
+    start.custom.forEach((d, i) => expect(withinFloat32(d, jsGgx[i])).toBe(true));
+    expect((await integrals(page)).custom).toBeCloseTo(1, 4);
+    const spheres = await firstAndLastCells(page, 2);
+    expect(spheres.worst).toBeLessThanOrEqual(2);
+    expect(spheres.last).toBeGreaterThan(5);
+    await typeCode(
+      page,
+      'D',
+      `float customD(float nh, float alpha) {
+float a2 = alpha * alpha;
+float d = nh * nh * (a2 - 1.0) + 1.0;
+return 2.0 * a2 / (PI * d * d);
+}`,
+    );
+    const doubled = await curves(page);
+    doubled.custom.forEach((d, i) => expect(withinFloat32(d, 2 * jsGgx[i])).toBe(true));
+    expect((await integrals(page)).custom).toBeCloseTo(2, 3);
+    const brighter = await firstAndLastCells(page, 2);
+    expect(brighter.last).toBeGreaterThan(spheres.last * 1.2);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('a compile error names the user’s line and keeps the curve; the URL carries the code', async () => {
+    const page = await openWidget('ndf-explorer', QUERY);
+    await typeCode(page, 'D', 'float customD(float nh, float alpha) {\nreturn 3.0 * alpha;\n}');
+    expect((await curves(page)).custom[0]).toBeCloseTo(3 * alpha, 6);
+    await typeCode(page, 'D', 'float customD(float nh, float alpha) {\nreturn 3.0 * alpha * missing;\n}');
+    expect(await panelText(page, 'D', '.custom-problems')).toMatch(/^Line 2: .*missing/);
+    expect((await curves(page)).custom[0]).toBeCloseTo(3 * alpha, 6);
+    const state = await getState(page, 'ndf-explorer');
+    const again = await openWidget('ndf-explorer', stateToParams(ndfSchema, state).toString());
+    expect((await getState(again, 'ndf-explorer')).codeD).toBe(state.codeD);
+    expect([...page.errors, ...again.errors]).toEqual([]);
+    await Promise.all([page.close(), again.close()]);
+  });
+});
 
 describe('material lab: your whole BRDF', () => {
   const EXTENT = 1.1; // the lab's view half width (src/lab/lab-uniforms.js)
