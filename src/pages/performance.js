@@ -179,6 +179,42 @@ function renderIbl(ibl) {
   section.append(table);
 }
 
+const ms = (x) => x.toFixed(0);
+const latencyRow = (r) => row([r.widget, `<code>${r.key}</code>`, ms(r.medianMs), ms(r.worstMs)]);
+
+/** The slowest widgets by median (those over the target, else the three slowest), named with their figures. */
+function slowestWords({ rows, targetMs }) {
+  const answering = rows.filter((r) => !r.progressive).sort((a, b) => b.medianMs - a.medianMs);
+  const over = answering.filter((r) => r.medianMs > targetMs);
+  const named = (over.length ? over : answering.slice(0, 3))
+    .map((r) => `<strong>${r.widget}</strong> (${ms(r.medianMs)} ms, worst ${ms(r.worstMs)} ms)`)
+    .join(', ');
+  return over.length
+    ? `Over the ${targetMs} ms target: ${named}.`
+    : `Every widget answers within ${targetMs} ms; the slowest are ${named}.`;
+}
+
+/** From a change to its frame, per widget (bench/latency.js): the widgets that answer at once, then the others. */
+function renderLatency(latency) {
+  const section = document.createElement('section');
+  section.id = 'latency';
+  const head = row(['Widget', 'dragged', 'median (ms)', 'worst (ms)'], 'th');
+  const table = (rows) =>
+    `<table class="data-table compact"><thead>${head}</thead><tbody>${rows.map(latencyRow).join('')}</tbody></table>`;
+  const progressive = latency.rows.filter((r) => r.progressive);
+  section.innerHTML =
+    '<h2>From a change to its frame</h2>' +
+    `<p class="domain">Each widget's main control dragged in ${latency.steps} steps, one change after the ` +
+    'previous frame is done: the time from the change to its frame on screen, GPU work finished (measured ' +
+    `${latency.date.slice(0, 10)}, software WebGL on a shared machine). ${slowestWords(latency)}</p>` +
+    table(latency.rows.filter((r) => !r.progressive)) +
+    (progressive.length
+      ? '<p>Progressive widgets (they keep refining a Monte Carlo picture): the time to their first changed ' +
+        `frame.</p>${table(progressive)}`
+      : '');
+  extra.after(section);
+}
+
 // three.js for scale, and what each page costs to open
 const vt = report.versusThree;
 const extra = document.getElementById('pages');
@@ -203,4 +239,5 @@ extra.innerHTML =
     .join('') +
   '</tbody></table>';
 if (report.ibl) renderIbl(report.ibl);
+if (report.latency) renderLatency(report.latency);
 publish('performance', report);

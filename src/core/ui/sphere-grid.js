@@ -106,7 +106,7 @@ function drawCells(renderer, cells, programs, view) {
 /**
  * The unit sphere, alone in a scene under an orthographic camera that frames it in a cell. Only its half that
  * faces the camera (z ≥ 0) is made: the same vertices and triangles as that half of a 128 × 64 sphere (the other
- * half is culled as back faces), at half the cost on a software renderer.
+ * half is culled as back faces), with half the vertex work.
  */
 function sphereView(background) {
   const geometry = new THREE.SphereGeometry(1, 64, 64, 0, Math.PI);
