@@ -7,6 +7,8 @@ import { stateToParams } from '../../src/core/framework/state.js';
 import { srgbToLinear } from '../../src/math/color.js';
 import { schema as labSchema } from '../../src/widgets/material-lab/schema.js';
 import { schema as ndfSchema } from '../../src/widgets/ndf-explorer/schema.js';
+import { schema as visibilitySchema } from '../../src/widgets/visibility-explorer/schema.js';
+import { schema as diffuseSchema } from '../../src/widgets/diffuse-explorer/schema.js';
 import { ANGLES as NDF_ANGLES } from '../../src/widgets/ndf-explorer/model.js';
 import { matchNdfWidths } from '../../src/math/ndf-width.js';
 import { ndfGGX } from '../../src/math/ndf.js';
@@ -55,8 +57,8 @@ async function firstAndLastCells(page, count) {
       const w = image.width / ${count};
       const side = Math.min(w, image.height);
       let worst = 0, first = 0, last = 0, n = 0;
-      // inside the sphere only (the unit sphere fills 1/1.08 of a cell; the save button sits in a corner)
-      const inside = (x, y) => (x - side / 2) ** 2 + (y - side / 2) ** 2 < (0.45 * side) ** 2;
+      // inside the sphere only, clear of the labels at its foot (the save button sits in a corner)
+      const inside = (x, y) => (x - side / 2) ** 2 + (y - side / 2) ** 2 < (0.38 * side) ** 2;
       for (let y = 0; y < side; y++)
         for (let x = 0; x < side; x++) {
           if (!inside(x, y)) continue;
@@ -70,6 +72,26 @@ async function firstAndLastCells(page, count) {
   );
 }
 
+/**
+ * Types `fn { body; }` (its value `expected` where `read` reads it), then the same with an undeclared name on line 2:
+ * the compiler's error lands on line 2 and `read` still reads the good code's value; then the state, through the
+ * URL of the share link, opens the same code in a new page.
+ */
+async function compileErrorAndUrl({ key, query, slot, codeKey, schema, fn, body, read, expected }) {
+  const page = await openWidget(key, query);
+  await typeCode(page, slot, `${fn} {\n${body};\n}`);
+  expect((await read(page)) / expected).toBeCloseTo(1, 5);
+  await typeCode(page, slot, `${fn} {\n${body} * missing;\n}`);
+  expect(await panelText(page, slot, '.custom-problems')).toMatch(/^Line 2: .*missing/);
+  expect(await panelText(page, slot, '.custom-status')).toMatch(/keeps your last good code/);
+  expect((await read(page)) / expected).toBeCloseTo(1, 5);
+  const state = await getState(page, key);
+  const again = await openWidget(key, stateToParams(schema, state).toString());
+  expect((await getState(again, key))[codeKey]).toBe(state[codeKey]);
+  expect([...page.errors, ...again.errors]).toEqual([]);
+  await Promise.all([page.close(), again.close()]);
+}
+
 /** Float32 agreement, the parity harness's tolerance: |Δ| ≤ 1e-5 + 1e-4 |reference|. */
 const withinFloat32 = (value, reference) => Math.abs(value - reference) <= 1e-5 + 1e-4 * Math.abs(reference);
 
@@ -80,7 +102,7 @@ describe('ndf-explorer: your D beside the five', () => {
   const curves = (page) => page.evaluate(() => globalThis.__shadingLab.widgets['ndf-explorer'].getCurves());
   const integrals = (page) => page.evaluate(() => globalThis.__shadingLab.widgets['ndf-explorer'].getIntegrals());
 
-  it('the starter (GGX) draws GGX’s curve (JS ndfGGX at the matched α, float32) and sphere; 2 × GGX typed doubles both', async () => {
+  it('the starter (GGX) draws ndfGGX’s curve at the matched α (float32) and GGX’s sphere; 2 × GGX doubles both', async () => {
     const page = await openWidget('ndf-explorer', QUERY);
     const start = await curves(page);
     start.custom.forEach((d, i) => expect(withinFloat32(d, jsGgx[i])).toBe(true));
@@ -106,19 +128,18 @@ return 2.0 * a2 / (PI * d * d);
     await page.close();
   });
 
-  it('a compile error names the user’s line and keeps the curve; the URL carries the code', async () => {
-    const page = await openWidget('ndf-explorer', QUERY);
-    await typeCode(page, 'D', 'float customD(float nh, float alpha) {\nreturn 3.0 * alpha;\n}');
-    expect((await curves(page)).custom[0]).toBeCloseTo(3 * alpha, 6);
-    await typeCode(page, 'D', 'float customD(float nh, float alpha) {\nreturn 3.0 * alpha * missing;\n}');
-    expect(await panelText(page, 'D', '.custom-problems')).toMatch(/^Line 2: .*missing/);
-    expect((await curves(page)).custom[0]).toBeCloseTo(3 * alpha, 6);
-    const state = await getState(page, 'ndf-explorer');
-    const again = await openWidget('ndf-explorer', stateToParams(ndfSchema, state).toString());
-    expect((await getState(again, 'ndf-explorer')).codeD).toBe(state.codeD);
-    expect([...page.errors, ...again.errors]).toEqual([]);
-    await Promise.all([page.close(), again.close()]);
-  });
+  it('a compile error names the user’s line and keeps the curve; the URL carries the code', () =>
+    compileErrorAndUrl({
+      key: 'ndf-explorer',
+      query: QUERY,
+      slot: 'D',
+      codeKey: 'codeD',
+      schema: ndfSchema,
+      fn: 'float customD(float nh, float alpha)',
+      body: 'return 3.0 * alpha',
+      read: async (page) => (await curves(page)).custom[0],
+      expected: 3 * alpha,
+    }));
 });
 
 describe('material lab: your whole BRDF', () => {
@@ -215,7 +236,8 @@ return vec3(${rho.toFixed(7)} / PI);
         const image = globalThis.__shadingLab.widgets['material-lab'].read('reference');
         return texels.map(([i, j]) => {
           const x = [];
-          for (let dj = -2; dj <= 2; dj++) for (let di = -2; di <= 2; di++) x.push(image[((j + dj) * res + i + di) * 4]);
+          for (let dj = -2; dj <= 2; dj++)
+            for (let di = -2; di <= 2; di++) x.push(image[((j + dj) * res + i + di) * 4]);
           const mean = x.reduce((a, b) => a + b) / 25;
           return { mean, se: Math.sqrt(x.reduce((a, b) => a + (b - mean) ** 2, 0) / 24 / 25) };
         });
@@ -227,4 +249,80 @@ return vec3(${rho.toFixed(7)} / PI);
     expect(page.errors).toEqual([]);
     await page.close();
   });
+});
+
+describe('visibility-explorer: your V beside the catalogue’s', () => {
+  const QUERY = 'terms=smithGGXCorrelated,implicit,custom&alpha=0.5&config=view-fixed&viewTheta=60';
+  const curves = (page) => page.evaluate(() => globalThis.__shadingLab.widgets['visibility-explorer'].getCurves());
+
+  it('the starter (height-correlated Smith) draws its JS curve and sphere; V = 1 typed draws the implicit G', async () => {
+    const page = await openWidget('visibility-explorer', QUERY);
+    const start = await curves(page);
+    start.custom.forEach((g, i) => expect(withinFloat32(g, start.smithGGXCorrelated[i])).toBe(true));
+    const spheres = await firstAndLastCells(page, 3);
+    expect(spheres.worst).toBeLessThanOrEqual(2);
+    expect(spheres.last).toBeGreaterThan(5);
+    await typeCode(page, 'V', 'float customV(float nl, float nv, float alpha) {\nreturn 1.0;\n}');
+    const implicit = await curves(page);
+    implicit.custom.forEach((g, i) => expect(withinFloat32(g, implicit.implicit[i])).toBe(true));
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('a compile error names the user’s line and keeps the curve; the URL carries the code', () =>
+    compileErrorAndUrl({
+      key: 'visibility-explorer',
+      query: 'terms=custom&alpha=0.5&config=mirror',
+      slot: 'V',
+      codeKey: 'codeV',
+      schema: visibilitySchema,
+      fn: 'float customV(float nl, float nv, float alpha)',
+      body: 'return 0.5 / (nl * nv)',
+      read: async (page) => (await curves(page)).custom[0], // G at 0°: 0.5
+      expected: 0.5,
+    }));
+});
+
+describe('diffuse-explorer: your diffuse term beside the catalogue’s', () => {
+  const QUERY = 'models=lambert,custom&sigma=30&cdiff=0.8&lightTheta=40&lightPhi=0';
+  /** The profile plot's series by model, as uPlot holds them. */
+  const profiles = async (page) => {
+    const [, lambert, custom] = await page.evaluate(
+      () => globalThis.__shadingLab.widgets['diffuse-explorer'].getPlots().profile,
+    );
+    return { lambert, custom };
+  };
+
+  it('the starter (Lambert) draws Lambert’s profile (float32) and sphere; (1 + α) Lambert reads α as σ in radians', async () => {
+    const page = await openWidget('diffuse-explorer', QUERY);
+    const start = await profiles(page);
+    start.custom.forEach((y, i) => expect(withinFloat32(y, start.lambert[i])).toBe(true));
+    const spheres = await firstAndLastCells(page, 2);
+    expect(spheres.worst).toBeLessThanOrEqual(2);
+    expect(spheres.last).toBeGreaterThan(5);
+    await typeCode(
+      page,
+      'diffuse',
+      'vec3 customDiffuse(vec3 cdiff, vec3 l, vec3 v, float alpha) {\nreturn cdiff / PI * (1.0 + alpha);\n}',
+    );
+    const scaled = await profiles(page);
+    const factor = 1 + (30 * Math.PI) / 180; // σ = 30° in radians
+    scaled.custom.forEach((y, i) => expect(withinFloat32(y, factor * scaled.lambert[i])).toBe(true));
+    expect((await firstAndLastCells(page, 2)).last).toBeGreaterThan(spheres.last * 1.2);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('a compile error names the user’s line and keeps the curve; the URL carries the code', () =>
+    compileErrorAndUrl({
+      key: 'diffuse-explorer',
+      query: 'models=custom&cdiff=0.8&lightTheta=0&lightPhi=0',
+      slot: 'diffuse',
+      codeKey: 'codeDiffuse',
+      schema: diffuseSchema,
+      fn: 'vec3 customDiffuse(vec3 cdiff, vec3 l, vec3 v, float alpha)',
+      body: 'return vec3(0.25 / PI)',
+      read: async (page) => (await profiles(page)).lambert[100], // the only series: Lo at the centre, 0.25 · 1
+      expected: 0.25,
+    }));
 });

@@ -34,7 +34,11 @@ export function createCustomArea(container, { slots, chosen, planOf, getRenderer
 
   function load() {
     if (loading) return;
-    const modules = [import('./custom-panel.js'), import('../custom/parse.js'), import('../custom/custom-panel-run.js')];
+    const modules = [
+      import('./custom-panel.js'),
+      import('../custom/parse.js'),
+      import('../custom/custom-panel-run.js'),
+    ];
     loading = Promise.all(modules).then(
       ([panel, parse, run]) => {
         [panelModule, parseModule, runModule] = [panel, parse, run];
