@@ -303,12 +303,14 @@ describe('diffuse-explorer: your diffuse term beside the catalogue’s', () => {
     await typeCode(
       page,
       'diffuse',
-      'vec3 customDiffuse(vec3 cdiff, vec3 l, vec3 v, float alpha) {\nreturn cdiff / PI * (1.0 + alpha);\n}',
+      'vec3 customDiffuse(vec3 cdiff, vec3 l, vec3 v, float alpha) {\n' +
+        'if (!(l.z > 0.0 && v.z > 0.0)) return vec3(0.0);\nreturn cdiff / PI * (1.0 + alpha);\n}',
     );
     const scaled = await profiles(page);
     const factor = 1 + (30 * Math.PI) / 180; // σ = 30° in radians
     scaled.custom.forEach((y, i) => expect(withinFloat32(y, factor * scaled.lambert[i])).toBe(true));
-    expect((await firstAndLastCells(page, 2)).last).toBeGreaterThan(spheres.last * 1.2);
+    // 1.52 × in linear radiance is about 1.2 × in sRGB (and the brightest pixels clip)
+    expect((await firstAndLastCells(page, 2)).last).toBeGreaterThan(spheres.last * 1.1);
     expect(page.errors).toEqual([]);
     await page.close();
   });
