@@ -305,6 +305,7 @@ describe('diffuse-explorer: your diffuse term beside the catalogue’s', () => {
       'diffuse',
       'vec3 customDiffuse(vec3 cdiff, vec3 l, vec3 v, float alpha) {\n' +
         'if (!(l.z > 0.0 && v.z > 0.0)) return vec3(0.0);\nreturn cdiff / PI * (1.0 + alpha);\n}',
+      4000, // the plots read the term at 9 × 10⁴ inputs, then the sphere redraws
     );
     const scaled = await profiles(page);
     const factor = 1 + (30 * Math.PI) / 180; // σ = 30° in radians
