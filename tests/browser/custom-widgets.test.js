@@ -62,7 +62,8 @@ async function firstAndLastCells(page, count) {
       for (let y = 0; y < side; y++)
         for (let x = 0; x < side; x++) {
           if (!inside(x, y)) continue;
-          const at = (cell) => (Math.floor(y + (image.height - side) / 2) * image.width + Math.floor(cell * w + (w - side) / 2 + x)) * 4;
+          const row = Math.floor(y + (image.height - side) / 2);
+          const at = (cell) => (row * image.width + Math.floor(cell * w + (w - side) / 2 + x)) * 4;
           const [a, b] = [at(0), at(${count - 1})];
           for (let c = 0; c < 3; c++) worst = Math.max(worst, Math.abs(image.data[a + c] - image.data[b + c]));
           first += image.data[a]; last += image.data[b]; n++;
@@ -102,7 +103,7 @@ describe('ndf-explorer: your D beside the five', () => {
   const curves = (page) => page.evaluate(() => globalThis.__shadingLab.widgets['ndf-explorer'].getCurves());
   const integrals = (page) => page.evaluate(() => globalThis.__shadingLab.widgets['ndf-explorer'].getIntegrals());
 
-  it('the starter (GGX) draws ndfGGX’s curve at the matched α (float32) and GGX’s sphere; 2 × GGX doubles both', async () => {
+  it('the starter draws ndfGGX’s curve at the matched α (float32) and GGX’s sphere; 2 × GGX doubles both', async () => {
     const page = await openWidget('ndf-explorer', QUERY);
     const start = await curves(page);
     start.custom.forEach((d, i) => expect(withinFloat32(d, jsGgx[i])).toBe(true));
@@ -219,7 +220,7 @@ return vec3(${rho.toFixed(7)} / PI);
     await Promise.all([page.close(), again.close()]);
   });
 
-  it('in the white furnace the Monte Carlo reference of ρ/π converges to ρ (the albedo), sampled GGX + cosine', async () => {
+  it('in the white furnace the Monte Carlo reference of ρ/π converges to the albedo ρ (GGX + cosine)', async () => {
     const query = 'brdfSource=custom&punctual=0&env=1&environment=furnace&envMethod=importance&refSamples=512';
     const page = await openWidget('material-lab', query);
     await typeCode(page, 'brdf', lambertCode, 1000);
@@ -255,7 +256,7 @@ describe('visibility-explorer: your V beside the catalogue’s', () => {
   const QUERY = 'terms=smithGGXCorrelated,implicit,custom&alpha=0.5&config=view-fixed&viewTheta=60';
   const curves = (page) => page.evaluate(() => globalThis.__shadingLab.widgets['visibility-explorer'].getCurves());
 
-  it('the starter (height-correlated Smith) draws its JS curve and sphere; V = 1 typed draws the implicit G', async () => {
+  it('the starter draws height-correlated Smith’s JS curve and sphere; V = 1 typed draws the implicit G', async () => {
     const page = await openWidget('visibility-explorer', QUERY);
     const start = await curves(page);
     start.custom.forEach((g, i) => expect(withinFloat32(g, start.smithGGXCorrelated[i])).toBe(true));
@@ -293,7 +294,7 @@ describe('diffuse-explorer: your diffuse term beside the catalogue’s', () => {
     return { lambert, custom };
   };
 
-  it('the starter (Lambert) draws Lambert’s profile (float32) and sphere; (1 + α) Lambert reads α as σ in radians', async () => {
+  it('the starter draws Lambert’s JS profile and sphere; (1 + α) Lambert reads α as σ in radians', async () => {
     const page = await openWidget('diffuse-explorer', QUERY);
     const start = await profiles(page);
     start.custom.forEach((y, i) => expect(withinFloat32(y, start.lambert[i])).toBe(true));

@@ -4,6 +4,18 @@
 // custom term is drawn. brdf-lobe's custom-area.js is the same with its four slots fixed.
 
 /**
+ * The panel's modules (CodeMirror, the GLSL parser, the runner), loaded once: `then(modules)`, or a message in `box`.
+ * @param {HTMLElement} box
+ * @param {(modules: any[]) => void} then
+ */
+function loadModules(box, then) {
+  const modules = [import('./custom-panel.js'), import('../custom/parse.js'), import('../custom/custom-panel-run.js')];
+  return Promise.all(modules).then(then, () => {
+    box.textContent = 'The code editor could not be loaded (offline?). Reload the page to try again.';
+  });
+}
+
+/**
  * @param {HTMLElement} container
  * @param {object} io
  * @param {Record<string, { codeKey: string, title: string }>} io.slots  each slot the widget offers: the state key
@@ -19,11 +31,9 @@ export function createCustomArea(container, { slots, chosen, planOf, getRenderer
   const box = document.createElement('div');
   box.className = 'custom-area';
   container.append(box);
-  let panelModule = null;
-  let parseModule = null;
-  let runModule = null;
+  /** @type {{ panel: any, parse: any, run: any, runner: any } | null} the panel's modules, once loaded */
+  let mods = null;
   let loading = null;
-  let runner = null;
   let shownKey = '';
   /** @type {{ code: string, declared: any[] } | null} the sliders the last code asked about declares */
   let declared = null;
@@ -32,39 +42,24 @@ export function createCustomArea(container, { slots, chosen, planOf, getRenderer
   /** @type {Record<string, import('../custom/custom-panel-run.js').RunStatus>} */
   let statuses = {};
 
-  function load() {
-    if (loading) return;
-    const modules = [
-      import('./custom-panel.js'),
-      import('../custom/parse.js'),
-      import('../custom/custom-panel-run.js'),
-    ];
-    loading = Promise.all(modules).then(
-      ([panel, parse, run]) => {
-        [panelModule, parseModule, runModule] = [panel, parse, run];
-        runner = run.createCustomRunner(getRenderer);
-        redraw();
-      },
-      () => {
-        box.textContent = 'The code editor could not be loaded (offline?). Reload the page to try again.';
-      },
-    );
-  }
+  const load = () =>
+    (loading ??= loadModules(box, ([panel, parse, run]) => {
+      mods = { panel, parse, run, runner: run.createCustomRunner(getRenderer) };
+      redraw();
+    }));
 
   /** @param {string} slotKey */
-  function createPanel(slotKey) {
-    const { codeKey, title } = slots[slotKey];
-    return panelModule.createCustomPanel(box, {
+  const createPanel = (slotKey) =>
+    mods?.panel.createCustomPanel(box, {
       slotKey,
-      code: getState()[codeKey],
-      title,
+      code: getState()[slots[slotKey].codeKey],
+      title: slots[slotKey].title,
       getRenderer,
-      onCode: (/** @type {string} */ code) => update({ [codeKey]: code }),
+      onCode: (/** @type {string} */ code) => update({ [slots[slotKey].codeKey]: code }),
       onParam: (/** @type {string} */ name, /** @type {number} */ value) =>
         update({ params: { ...getState().params, [name]: value } }),
       onRun: redraw,
     });
-  }
 
   return {
     /**
@@ -75,14 +70,14 @@ export function createCustomArea(container, { slots, chosen, planOf, getRenderer
       statuses = {};
       const keys = chosen(state);
       if (!keys.length) return {};
-      if (!runner) {
+      if (!mods) {
         load();
         return {};
       }
       /** @type {Record<string, any>} */
       const out = {};
       for (const k of keys) {
-        const { lookup, status } = runner.run(k, state[slots[k].codeKey], state.params, planOf(k, state));
+        const { lookup, status } = mods.runner.run(k, state[slots[k].codeKey], state.params, planOf(k, state));
         if (lookup) out[k] = lookup;
         statuses[k] = status;
       }
@@ -107,14 +102,14 @@ export function createCustomArea(container, { slots, chosen, planOf, getRenderer
      * @param {Record<string, number>} params
      */
     sliderValues(slotKey, code, params) {
-      if (!parseModule) return null;
-      if (declared?.code !== code) declared = { code, declared: parseModule.parseCustom(slotKey, code).params };
-      return runModule.sliderValues(declared.declared, params);
+      if (!mods) return null;
+      if (declared?.code !== code) declared = { code, declared: mods.parse.parseCustom(slotKey, code).params };
+      return mods.run.sliderValues(declared.declared, params);
     },
     /** The panels of the chosen slots, each told how its code ran (after lookups()); unchanged ones are left. */
     showPanels(state) {
       const codes = Object.keys(statuses).map((k) => state[slots[k].codeKey]);
-      const key = JSON.stringify([statuses, codes, state.params, Boolean(runner)]);
+      const key = JSON.stringify([statuses, codes, state.params, Boolean(mods)]);
       if (key === shownKey) return;
       shownKey = key;
       for (const k of Object.keys(panels)) {

@@ -13,15 +13,20 @@ const AREA_SLOTS = { brdf: { codeKey: 'codeBRDF', title: 'Your whole BRDF f(l, v
 // what the runner evaluates: f at l = v = n, read back only to vet the code (the lab's programs draw it)
 const VET = { key: '', inputs: [[0, 0, 1, 0, 0, 1]], read: (out) => out[0] };
 
-/** `io`: { getRenderer, getState, update, redraw } as createCustomArea's. */
-export function createCustomBrdf(container, io) {
-  const area = createCustomArea(container, {
-    ...io,
+/** `io`: { view: () => the lab's view (lab-view.js), getState, update }; `element` holds the panel. */
+export function createCustomBrdf({ view, getState, update }) {
+  const element = document.createElement('div');
+  const getRenderer = () => view().viewport?.renderer;
+  const area = createCustomArea(element, {
+    getRenderer,
+    getState,
+    update,
+    redraw: () => view().invalidate(),
     slots: AREA_SLOTS,
     chosen: (s) => (s.brdfSource === 'custom' ? ['brdf'] : []),
     planOf: () => VET,
   });
-  const guard = createCompileGuard(io.getRenderer);
+  const guard = createCompileGuard(getRenderer);
 
   /** The fragment sources of the lab's two programs (approximation, reference) for the state, with `code`. */
   const sources = (state) => (code) => {
@@ -30,6 +35,7 @@ export function createCustomBrdf(container, io) {
   };
 
   return {
+    element,
     /**
      * The user's BRDF to draw for `state`: { code, params }. Until the editor's modules are in, the starter (its
      * sliders at 0 for that moment); then the last code that ran and compiled in the lab.

@@ -41,27 +41,16 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
     notes.show(scene);
     return captions(st, lights, stats);
   };
-  const editorHolder = document.createElement('div'); // the user's BRDF's panel, under the notes
-  const ownBrdf = createCustomBrdf(editorHolder, {
-    getRenderer: () => view.viewport?.renderer,
-    getState: () => shell.state,
-    update: (partial) => update(partial),
-    redraw: () => view.invalidate(),
-  });
-  const lab = createLabFrame({
-    state: () => shell.state,
-    measured: () => measured.current,
-    custom: (st) => ownBrdf.program(st),
-    file: () => file,
-    show,
-  });
+  const ownBrdf = createCustomBrdf({ view: () => view, getState: () => shell.state, update: (p) => update(p) });
+  const sources = { state: () => shell.state, measured: () => measured.current, custom: ownBrdf.program };
+  const lab = createLabFrame({ ...sources, file: () => file, show });
   const onReset = () => {
     lab.reset();
     measured.reupload();
   };
   const view = createLabView(shell.view, { label: 'Material lab', resolution: 192, frame: lab.frame, onReset });
   view.setAspect(3);
-  shell.view.append(readout.element, notes.element, editorHolder);
+  shell.view.append(readout.element, notes.element, ownBrdf.element); // the user's BRDF's panel under the notes
 
   const onChanged = (changed) => {
     const has = { measured: Boolean(measured.current), file: Boolean(file.pixels) };
