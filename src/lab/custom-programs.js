@@ -1,6 +1,6 @@
 // The lab's programs when its BRDF is the user's whole BRDF: the lab's program with the user's chunk and
 // lab-custom-brdf.glsl in place of measured.glsl (lab-material.glsl's path for a whole BRDF), and the user's slider
-// uniforms beside the lab's. Programs of older code are let go when the code changes.
+// uniforms beside the lab's. Programs of older code (or of other slider names) are let go when it changes.
 import { assembleGlsl } from '../core/gpu/glsl.js';
 import { SHADER_CHUNKS } from '../core/gpu/shader-chunks.js';
 import { definesKey } from '../core/gpu/program-cache.js';
@@ -22,6 +22,7 @@ export const customBrdfFragment = (defines, code) =>
 /** `get(defines, { code, params })`: the program, its sliders set to `params`; `has`, `dispose` as a cache's. */
 export function createCustomPrograms(uniforms) {
   let code = null;
+  let names = '';
   let sliders = {};
   const programs = new Map();
   const clear = () => {
@@ -30,9 +31,10 @@ export function createCustomPrograms(uniforms) {
   };
   return {
     get(defines, custom) {
-      if (custom.code !== code) {
-        clear();
-        [code, sliders] = [custom.code, {}];
+      const nextNames = Object.keys(custom.params).sort().join();
+      if (custom.code !== code || nextNames !== names) {
+        clear(); // a program's uniforms are fixed when it is made
+        [code, names, sliders] = [custom.code, nextNames, {}];
       }
       for (const [name, value] of Object.entries(custom.params)) (sliders[name] ??= { value }).value = value;
       const key = definesKey(defines);
@@ -42,7 +44,8 @@ export function createCustomPrograms(uniforms) {
       }
       return programs.get(key);
     },
-    has: (defines, custom) => custom.code === code && programs.has(definesKey(defines)),
+    has: (defines, custom) =>
+      custom.code === code && Object.keys(custom.params).sort().join() === names && programs.has(definesKey(defines)),
     get size() {
       return programs.size;
     },

@@ -25,10 +25,9 @@ export function createCustomSphere(getRenderer) {
       const { code, problems } = guard.pick(ran, (c) => [sphereFragment(defines, chunksOf(c))]);
       area.report(slotKey, problems);
       if (!code) return null;
-      return {
-        own: { key: code, chunks: chunksOf(code) },
-        uniforms: area.sliderValues(slotKey, code, state.params) ?? {},
-      };
+      const uniforms = area.sliderValues(slotKey, code, state.params) ?? {};
+      // a program's uniforms are fixed when it is made: its key names the sliders too
+      return { own: { key: `${code}\u0000${Object.keys(uniforms)}`, chunks: chunksOf(code) }, uniforms };
     },
   };
 }
