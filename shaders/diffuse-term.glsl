@@ -3,6 +3,8 @@
 // Oren-Nayar's inter-reflection term goes as c², so it cannot be evaluated for c = 1 and scaled. 0 at and below
 // the horizon. Without a DIFFUSE_* switch there is no diffuseTerm and DIFFUSE_TERM_NONE is defined: a host whose
 // diffuse layer is optional (brdf-sphere.frag.glsl) reads it; a host that needs a term can #error on it.
+// DIFFUSE_CUSTOM: the user's customDiffuse(cdiff, l, v, alpha) (issue 13; its chunk custom-diffuse.glsl is written
+// by src/core/custom/assemble.js), whole, its α the σ the others read (radians, as the checks' references take it).
 #if defined(DIFFUSE_LAMBERT)
 #include "diffuse.glsl"
 float diffuseTermChannel(float nl, float nv, float cosPhi, float c, float f0, float sigma) {
@@ -28,11 +30,18 @@ float diffuseTermChannel(float nl, float nv, float cosPhi, float c, float f0, fl
 float diffuseTermChannel(float nl, float nv, float cosPhi, float c, float f0, float sigma) {
   return diffuseOrenNayarQualitative(nl, nv, cosPhi, sigma, c);
 }
+#elif defined(DIFFUSE_CUSTOM)
+#include "custom-diffuse.glsl"
 #else
 #define DIFFUSE_TERM_NONE
 #endif
 
-#ifndef DIFFUSE_TERM_NONE
+#if defined(DIFFUSE_CUSTOM)
+vec3 diffuseTerm(vec3 l, vec3 v, vec3 cdiff, vec3 f0, float sigma) {
+  if (!(l.z > 0.0 && v.z > 0.0)) return vec3(0.0);
+  return customDiffuse(cdiff, l, v, sigma);
+}
+#elif !defined(DIFFUSE_TERM_NONE)
 vec3 diffuseTerm(vec3 l, vec3 v, vec3 cdiff, vec3 f0, float sigma) {
   if (!(l.z > 0.0 && v.z > 0.0)) return vec3(0.0);
   float cp = cosPhiDiff(l, v);

@@ -36,8 +36,8 @@ const has = (terms) => ({ specular: terms.layers !== 'diffuse', diffuse: terms.l
  * What the approximation of `scene` ({ terms, lights, methods }, see lab-scene.js) reads: `dfg` the terms of its
  * DFG table ({ ndf, visibility }) or null, `prefilter` the NDF its prefiltered map is filtered with or null.
  */
-export function approximationInputs({ terms, lights, methods, measured }) {
-  if (measured) return { dfg: null, prefilter: null };
+export function approximationInputs({ terms, lights, methods, measured, custom }) {
+  if (measured || custom) return { dfg: null, prefilter: null };
   const splitSum = Boolean(lights.env) && methods.env === 'split-sum';
   return {
     dfg: splitSum || lights.ambient ? { ndf: terms.D, visibility: terms.V } : null,
@@ -161,9 +161,39 @@ export function measuredNotes({ lights, methods, measured, material }) {
   return notes;
 }
 
+/**
+ * What each method does with the user's whole BRDF: as with a table, only the reference, importance sampling and
+ * the sphere light evaluate it. Its samples follow GGX at the state's α and the cosine, by the balance heuristic:
+ * the cosine's density is above 0 wherever n·l is, so the estimate converges to the integral whatever the BRDF
+ * (a bounded f gives a bounded weight, at most π f), and a lobe near the mirror direction is sampled by GGX.
+ */
+export function customNotes({ lights, methods, material }) {
+  const alpha = material.alpha.toFixed(3);
+  const notes = [
+    `Your BRDF: the reference integrates customBRDF itself, with directions drawn from a GGX lobe of α ${alpha} ` +
+      '(the roughness slider: set it near your lobe’s width), by cosine and from the map, weighted by the ' +
+      'balance heuristic. The lobe only steers the samples: a poor α makes the reference noisier, not wrong. ' +
+      'The material and terms chosen above are not used.',
+  ];
+  if (lights.env && methods.env === 'importance') {
+    notes.push('Importance sampling: N directions from that GGX lobe and N by cosine, your BRDF at every one.');
+  } else if (lights.env) {
+    notes.push(
+      `${ENV_WORDS[methods.env]} has no form for a BRDF it does not know (it needs a model’s D, V and F), so ` +
+        'the environment is left out of the approximation: choose importance sampling.',
+    );
+  }
+  if (lights.ambient) notes.push('Ambient: the DFG table of a model has no form for your BRDF; left out.');
+  if (lights.sphere && methods.area !== 'centre') {
+    notes.push('Sphere light: your BRDF at the representative point, with Karis’s (2013) GGX energy factor at α.');
+  }
+  return notes;
+}
+
 /** The sentences under the lab's images: for each light on, how its approximation treats the chosen terms. */
 export function approximationNotes(scene) {
   if (scene.measured) return measuredNotes(scene);
+  if (scene.custom) return customNotes(scene);
   const { specular, diffuse } = has(scene.terms);
   const notes = specular ? specularNotes(scene) : [];
   const surround = diffuse ? diffuseUnderSurround(scene) : null;

@@ -1,6 +1,7 @@
 // Renders the material lab's sphere: once by the chosen approximations, once as a converging Monte Carlo
 // reference (batches averaged in a float target), and their difference, summed on the GPU to an RMS error.
-// A scene is { material, terms, lights, methods, maps } (see lab-defines.js; maps: its environment-maps.js maps);
+// A scene is { material, terms, lights, methods, maps } (see lab-defines.js; maps: its environment-maps.js maps;
+// custom: { code, params } when the BRDF is the user's whole BRDF, custom-programs.js);
 // `slots` approximations can be kept side by side. Images are res × res, linear radiance. The approximations read
 // the DFG table and the prefiltered map of the chosen terms (lab-approximations.js says which): `dfg(terms)` gives
 // the table's texture.
@@ -12,6 +13,7 @@ import { fullscreenMaterial } from './fullscreen-material.js';
 import { sceneDefines } from './lab-defines.js';
 import { createLabUniforms, setSceneUniforms } from './lab-uniforms.js';
 import { createPmremOverlay } from './pmrem-overlay.js';
+import { createCustomPrograms } from './custom-programs.js';
 
 export const REFERENCE_BATCH = 8; // samples per pixel and light in one reference batch
 
@@ -24,16 +26,24 @@ const halfTarget = (res) =>
   });
 
 /** three.js's PMREM stands in for the lab's program under the environment (not for a measured table). */
-const byPmrem = (scene) => scene.lights.env && scene.methods.env === 'pmrem' && !scene.measured;
+const byPmrem = (scene) => scene.lights.env && scene.methods.env === 'pmrem' && !scene.measured && !scene.custom;
 
 export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
   const res = resolution;
   const approxTargets = Array.from({ length: slots }, () => halfTarget(res));
   const uniforms = createLabUniforms(res);
-  const programs = createProgramCache((defines) => fullscreenMaterial('lab-shade.frag.glsl', { uniforms, defines }));
+  const modelPrograms = createProgramCache((defines) =>
+    fullscreenMaterial('lab-shade.frag.glsl', { uniforms, defines }),
+  );
+  const customPrograms = createCustomPrograms(uniforms);
+  /** The program of `scene` for `defines`: the model's, or the one with the user's BRDF. */
+  const programs = {
+    get: (scene, defines) => (scene.custom ? customPrograms.get(defines, scene.custom) : modelPrograms.get(defines)),
+    has: (scene, defines) => (scene.custom ? customPrograms.has(defines, scene.custom) : modelPrograms.has(defines)),
+  };
   const pass = createFullscreenPass();
   const pmrem = createPmremOverlay();
-  const reference = createReference(renderer, { res, uniforms, programs, pass });
+  const reference = createReference(renderer, { res, uniforms, pass });
   const errors = createErrorSum(renderer, { res, pass });
   const sync = createSync(renderer);
 
@@ -52,10 +62,12 @@ export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
       setSceneUniforms(uniforms, scene, { reference: false, dfg });
       uniforms.uSamples.value = scene.methods.samples;
       const defines = sceneDefines(scene, false);
-      if (!programs.has(defines)) pass.render(renderer, programs.get(defines), target); // compiles: not the cost
+      const fresh = !programs.has(scene, defines);
+      const program = programs.get(scene, defines);
+      if (fresh) pass.render(renderer, program, target); // compiles: not the cost
       sync(errors.target); // finish earlier work so it is not counted
       const t0 = performance.now();
-      pass.render(renderer, programs.get(defines), target);
+      pass.render(renderer, program, target);
       if (byPmrem(scene)) pmrem.render(renderer, scene, target);
       sync(target);
       return performance.now() - t0;
@@ -64,25 +76,25 @@ export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
     /** Adds one batch of REFERENCE_BATCH samples per pixel and light to the reference's running mean. */
     accumulate(scene) {
       setSceneUniforms(uniforms, scene, { reference: true, dfg });
-      reference.add(sceneDefines(scene, true));
+      reference.add(programs.get(scene, sceneDefines(scene, true)));
     },
     /** RMS error of the approximation against the reference over the sphere, absolute and relative. */
     error: (slot = 0) => errors.measure(approxTargets[slot].texture, reference.texture),
     /** Reads an image back (tests): 'approx' (of `slot`) or 'reference', RGBA float per pixel. */
     read: (which, slot = 0) => readImage(renderer, which === 'approx' ? approxTargets[slot] : reference.target),
     get variants() {
-      return programs.size;
+      return modelPrograms.size + customPrograms.size;
     },
     dispose() {
       approxTargets.forEach((t) => t.dispose());
-      [programs, pass, pmrem, reference, errors].forEach((x) => x.dispose());
+      [modelPrograms, customPrograms, pass, pmrem, reference, errors].forEach((x) => x.dispose());
       uniforms.uAlbedoTableGGX.value?.dispose();
     },
   };
 }
 
 /** The reference: batches of Monte Carlo samples averaged into one of two float targets (ping-pong). */
-function createReference(renderer, { res, uniforms, programs, pass }) {
+function createReference(renderer, { res, uniforms, pass }) {
   const ping = [floatTarget(res, res), floatTarget(res, res)];
   let batches = 0;
   let current = 0;
@@ -97,13 +109,13 @@ function createReference(renderer, { res, uniforms, programs, pass }) {
       return batches;
     },
     reset: () => (batches = 0),
-    /** One batch by the program of `defines` (its uniforms set for the scene), averaged in. */
-    add(defines) {
+    /** One batch by `program` (its uniforms set for the scene), averaged in. */
+    add(program) {
       uniforms.uSamples.value = REFERENCE_BATCH;
       uniforms.uJitter.value.set(Math.random(), Math.random());
       uniforms.uPrevious.value = ping[current].texture;
       uniforms.uWeight.value = 1 / (batches + 1);
-      pass.render(renderer, programs.get(defines), ping[1 - current]);
+      pass.render(renderer, program, ping[1 - current]);
       current = 1 - current;
       batches++;
     },

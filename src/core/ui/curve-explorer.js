@@ -50,9 +50,12 @@ export function createCurveExplorer(container, options) {
   return {
     shell,
     plots,
+    spheres,
     update,
     /** The curves drawn now (they are replaced, not mutated, when the state changes). */
     curves: () => curves,
+    /** Derives the curves again and redraws all, as a change of every curve key would (a user's term ran). */
+    refresh: () => onChanged(curveKeys),
     dispose() {
       tableLater.cancel();
       plots.dispose();

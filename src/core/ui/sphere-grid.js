@@ -1,7 +1,9 @@
 // A row of spheres in one canvas, each shaded by its own BRDF variant (brdf-sphere.frag.glsl) under the
-// same punctual light, or in the white furnace. Cells: [{ label, defines, uniforms, probe }]; each cell is
-// one draw in its own viewport. Variants are compiled once and reused. Hovering a sphere probes it: the
-// angles there, and the rows the cell's probe(angles, n) returns ([[label, text], ...]; n in view space).
+// same punctual light, or in the white furnace. Cells: [{ label, defines, uniforms, probe, own? }]; each cell
+// is one draw in its own viewport. Variants are compiled once and reused. A cell with a user-written term brings
+// its chunks (`own`: { key, chunks }, key naming the code): its program is kept while a cell draws it. Hovering
+// a sphere probes it: the angles there, and the rows the cell's probe(angles, n) returns ([[label, text], ...]; n
+// in view space).
 import * as THREE from 'three';
 import { createViewport } from '../gpu/viewport.js';
 import { assembleGlsl } from '../gpu/glsl.js';
@@ -32,16 +34,48 @@ const HALF_SIZE = 1.08; // the orthographic camera's half extent: the unit spher
 /** The names of the uniforms the sphere grid feeds brdf-sphere.frag.glsl (the program-variants test checks them). */
 export const SPHERE_UNIFORMS = Object.keys(UNIFORM_DEFAULTS);
 
-/** The program of one set of #define switches, its uniforms set to the defaults. */
-const sphereMaterial = (defines) =>
+/** The sphere's fragment program for `defines`, with `chunks` (the app's, or those with a user's term). */
+export const sphereFragment = (defines, chunks = SHADER_CHUNKS) =>
+  assembleGlsl(chunks['brdf-sphere.frag.glsl'], { defines, chunks });
+
+/** The program of one set of #define switches, its uniforms set to the defaults (and `extra`'s: a user's sliders). */
+const sphereMaterial = (defines, chunks = SHADER_CHUNKS, extra = {}) =>
   new THREE.ShaderMaterial({
     glslVersion: THREE.GLSL3,
     uniforms: Object.fromEntries(
-      Object.entries(UNIFORM_DEFAULTS).map(([k, v]) => [k, { value: Array.isArray(v) ? new THREE.Vector3(...v) : v }]),
+      Object.entries({ ...extra, ...UNIFORM_DEFAULTS }).map(([k, v]) => [
+        k,
+        { value: Array.isArray(v) ? new THREE.Vector3(...v) : v },
+      ]),
     ),
     vertexShader: SHADER_CHUNKS['surface.vert.glsl'],
-    fragmentShader: assembleGlsl(SHADER_CHUNKS['brdf-sphere.frag.glsl'], { defines }),
+    fragmentShader: sphereFragment(defines, chunks),
   });
+
+/** Programs of cells with chunks of their own: made on first use, let go once no cell draws them (keep(cells)). */
+function createOwnPrograms() {
+  const programs = new Map();
+  const keyOf = (cell) => `${cell.own.key}\u0000${definesKey(cell.defines)}`;
+  return {
+    get(cell) {
+      const key = keyOf(cell);
+      if (!programs.has(key)) programs.set(key, sphereMaterial(cell.defines, cell.own.chunks, cell.uniforms));
+      return programs.get(key);
+    },
+    keep(cells) {
+      const used = new Set(cells.filter((c) => c.own).map(keyOf));
+      for (const [key, program] of programs)
+        if (!used.has(key)) {
+          program.dispose();
+          programs.delete(key);
+        }
+    },
+    dispose() {
+      programs.forEach((p) => p.dispose());
+      programs.clear();
+    },
+  };
+}
 
 const sameValue = (a, b) => a === b || (Array.isArray(a) && Array.isArray(b) && a.every((x, i) => x === b[i]));
 
@@ -50,6 +84,7 @@ function sameDrawing(cells, next) {
   const same = (a, b) =>
     a.label === b.label &&
     definesKey(a.defines) === definesKey(b.defines) &&
+    a.own?.key === b.own?.key &&
     Object.keys({ ...a.uniforms, ...b.uniforms }).every((k) => sameValue(a.uniforms[k], b.uniforms[k]));
   return cells.length === next.length && cells.every((c, i) => same(c, next[i]));
 }
@@ -58,7 +93,7 @@ function sameDrawing(cells, next) {
 function drawCells(renderer, cells, programs, view) {
   drawSideBySide(renderer, cells.length, (i) => {
     const cell = cells[i];
-    const material = programs.get(cell.defines);
+    const material = cell.own ? programs.own.get(cell) : programs.get(cell.defines);
     for (const [k, v] of Object.entries({ ...UNIFORM_DEFAULTS, ...cell.uniforms })) {
       if (Array.isArray(v)) material.uniforms[k].value.set(...v);
       else material.uniforms[k].value = v;
@@ -164,7 +199,7 @@ function attachProbe(container, viewport, cellsNow) {
 export function createSphereGrid(container, { label = 'Spheres', aspectPerCell = 1, background = '#16181d' } = {}) {
   let cells = [];
   let drawnOnce = false;
-  const programs = createProgramCache(sphereMaterial);
+  const programs = Object.assign(createProgramCache(sphereMaterial), { own: createOwnPrograms() });
   const view = sphereView(background);
   const labels = document.createElement('div');
   labels.className = 'sphere-labels';
@@ -183,6 +218,7 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
     setCells(next) {
       const redraw = !drawnOnce || !sameDrawing(cells, next);
       [cells, drawnOnce] = [next, true];
+      programs.own.keep(cells);
       labels.replaceChildren(
         ...cells.map((c) => Object.assign(document.createElement('span'), { textContent: c.label })),
       );
@@ -192,12 +228,17 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
     get canvas() {
       return viewport?.canvas;
     },
+    /** The renderer the spheres are drawn with (null without WebGL2): a user's term is evaluated on it too. */
+    get renderer() {
+      return viewport?.renderer ?? null;
+    },
     get variants() {
       return programs.size;
     },
     dispose() {
       removeProbe();
       programs.dispose();
+      programs.own.dispose();
       view.dispose();
       viewport?.dispose();
     },

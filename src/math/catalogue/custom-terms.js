@@ -31,12 +31,18 @@ const custom = (definePrefix, slot, glsl, glslCall, args) => ({
 });
 
 /**
- * The custom term of each family whose GLSL dispatch is generated (the diffuse dispatch is shaders/diffuse-term.glsl,
- * written by hand: it has no custom branch yet).
+ * The custom term of each family that offers one. The diffuse dispatch is shaders/diffuse-term.glsl, written by
+ * hand: its DIFFUSE_CUSTOM branch calls customDiffuse with σ as its α; the others' dispatch is generated.
  * @type {Partial<Record<import('./types.js').FamilyName, import('./types.js').TermEntry>>}
  */
 export const CUSTOM_TERMS = {
   ndf: custom('NDF', 'D', 'customD', 'customD(nh, alpha)', ['nh', 'alpha']),
   visibility: custom('VIS', 'V', 'customV', 'customV(nl, nv, alpha)', ['nl', 'nv', 'alpha']),
   fresnel: custom('F', 'F', 'customF', 'customF(f0, lh)', ['f0', 'lh']),
+  diffuse: custom('DIFFUSE', 'diffuse', 'customDiffuse', 'customDiffuse(cdiff, l, v, alpha)', [
+    'cdiff',
+    'l',
+    'v',
+    'alpha',
+  ]),
 };

@@ -8,8 +8,14 @@ import { DEG } from '../../math/angles.js';
 import { SERIES_COLORS } from '../../core/ui/palettes.js';
 import { schema } from './schema.js';
 
-/** f(nl, nv, cosPhi, { cdiff, f0, sigma }) of the diffuse model `key`, in 1/sr, as the catalogue evaluates it. */
-export const diffuseAt = (key, nl, nv, cosPhi, params) => termEntry('diffuse', key).evaluate(nl, nv, cosPhi, params);
+export const CUSTOM = 'custom';
+
+/**
+ * f(nl, nv, cosPhi, { cdiff, f0, sigma, custom }) of the diffuse model `key`, in 1/sr, as the catalogue evaluates
+ * it; the user's (`custom`) by params.custom(nl, nv, cosPhi), its values read back from the GPU (custom.js).
+ */
+export const diffuseAt = (key, nl, nv, cosPhi, params) =>
+  key === CUSTOM ? params.custom(nl, nv, cosPhi) : termEntry('diffuse', key).evaluate(nl, nv, cosPhi, params);
 
 /** The models whose f reads no azimuth: their albedo is an integral over n·l alone (any other takes both). */
 const AZIMUTH_FREE = new Set(['lambert', 'fresnelWeighted', 'ashikhminShirley']);
@@ -38,8 +44,16 @@ export function radianceAt(model, n, l, v, params) {
   return punctualRadiance(diffuseAt(model, nl, nv, cosPhiDiff(n, l, v), params), nl, 1);
 }
 
-/** The shading parameters of a state: c_diff, specular F0, sigma in radians. */
-export const paramsOf = (state) => ({ cdiff: state.cdiff, f0: state.f0, sigma: state.sigma * DEG });
+/**
+ * The shading parameters of a state: c_diff, specular F0, sigma in radians, and the user's f(nl, nv, cosPhi)
+ * (`custom`; 0 while none has run).
+ */
+export const paramsOf = (state, custom = null) => ({
+  cdiff: state.cdiff,
+  f0: state.f0,
+  sigma: state.sigma * DEG,
+  custom: custom ?? (() => 0),
+});
 
 export const PROFILE_XS = Float64Array.from({ length: 201 }, (_, i) => -1 + i / 100);
 
@@ -47,8 +61,8 @@ export const PROFILE_XS = Float64Array.from({ length: 201 }, (_, i) => -1 + i / 
  * Brightness across the sphere's diameter that points towards the light (azimuth lightPhi), seen head-on
  * (v = z): position s in sphere radii, normal (s cos phi, s sin phi, sqrt(1 - s²)). One array per model.
  */
-export function profile(state, lightDir) {
-  const p = paramsOf(state);
+export function profile(state, lightDir, custom) {
+  const p = paramsOf(state, custom);
   const phi = state.lightPhi * DEG;
   const normalAt = (s) => [s * Math.cos(phi), s * Math.sin(phi), Math.sqrt(Math.max(1 - s * s, 0))];
   return state.models.map((m) => PROFILE_XS.map((s) => radianceAt(m, normalAt(s), lightDir, [0, 0, 1], p)));
@@ -60,8 +74,8 @@ export const SWEEP_XS = Float64Array.from({ length: 361 }, (_, i) => -90 + i / 2
  * Radiance per unit light on a flat patch (n = z) seen from viewTheta, as the light sweeps through the plane
  * of n and v: theta_l > 0 on the viewer's side (theta_l = theta_v sends light back to the eye), < 0 across.
  */
-export function lightSweep(state) {
-  const p = paramsOf(state);
+export function lightSweep(state, custom) {
+  const p = paramsOf(state, custom);
   const tv = state.viewTheta * DEG;
   const v = [Math.sin(tv), 0, Math.cos(tv)];
   return state.models.map((m) =>
@@ -91,8 +105,8 @@ export function diffuseAlbedo(model, nv, params, n = 32) {
  * The share of incoming light a surface sends back when its diffuse term sits under a smooth specular one of
  * reflectance F(theta_v) (Schlick, F0): F + diffuse albedo, per model, and F alone. Above 1 means energy is made.
  */
-export function tradeOff(state) {
-  const p = paramsOf(state);
+export function tradeOff(state, custom) {
+  const p = paramsOf(state, custom);
   const specular = TRADE_XS.map((deg) => fresnelSchlick(p.f0, Math.cos(deg * DEG)));
   const totals = state.models.map((m) =>
     TRADE_XS.map((deg, i) => specular[i] + diffuseAlbedo(m, Math.cos(deg * DEG), p)),

@@ -1,12 +1,14 @@
 // The diffuse explorer's state: which models are drawn, their parameters (σ, c_diff, the specular F0 of the
-// trade-off), the light of the spheres and the profile, the view of the sweep plot, and the spheres' exposure.
+// trade-off), the light of the spheres and the profile, the view of the sweep plot, the spheres' exposure, and
+// the user's own diffuse term (its code and its sliders' values), drawn when `custom` is among the models.
 import { SIGMA_HINT } from '../../core/ui/sigma-range.js';
 import { termOptions } from '../../math/catalogue/index.js';
+import { SLOTS } from '../../core/custom/slots.js';
 
 export const schema = {
   models: {
     type: 'set',
-    options: termOptions('diffuse'),
+    options: termOptions('diffuse', undefined, { custom: true }),
     default: Object.keys(termOptions('diffuse')),
     label: 'Diffuse models',
   },
@@ -26,4 +28,6 @@ export const schema = {
   lightPhi: { type: 'number', min: -180, max: 180, step: 0.5, default: 0, label: 'Light around view', unit: '°' },
   viewTheta: { type: 'number', min: 0, max: 85, step: 1, default: 45, label: 'View angle (sweep plot)', unit: '°' },
   exposure: { type: 'number', min: 0.1, max: 4, step: 0.05, default: 1, label: 'Sphere exposure' },
+  codeDiffuse: { type: 'code', slot: 'diffuse', default: SLOTS.diffuse.starter, label: 'Your diffuse term (GLSL)' },
+  params: { type: 'params', default: {}, label: 'Sliders of your code' },
 };

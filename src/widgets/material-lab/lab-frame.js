@@ -1,16 +1,18 @@
 // The material lab's frame (createLabView's `frame`): the scene of the state, the approximation rendered again when
 // it changed (its GPU time the median of `timingRuns` renders), the reference restarted when it changed and given
-// one more batch until it has the samples asked for, and the error between them.
+// one more batch until it has the samples asked for, and the error between them. The user's BRDF, when chosen, is
+// asked for in each frame: the code that last ran well, with its sliders.
 import { REFERENCE_BATCH } from '../../lab/lab-renderer.js';
 import { sceneOf } from './model.js';
 
 /**
- * `state()` the widget's state, `measured()` the measured table in use or null, `file()` the dropped environment
- * ({ key, pixels }), `show(state, lights)` shows what the frame measured. frame(...) is the view's frame; stats the
+ * `state()` the widget's state, `measured()` the measured table in use or null, `custom(state)` the user's BRDF
+ * ({ code, params }) to draw, `file()` the dropped environment ({ key, pixels }), `show(state, lights)` shows what
+ * the frame measured. frame(...) is the view's frame; stats the
  * last frame's; reset() renders everything again; remeasure(runs) times the approximation again, the median of
  * `runs` renders.
  */
-export function createLabFrame({ state, measured, file, show }) {
+export function createLabFrame({ state, measured, custom, file, show }) {
   let approxKey = '';
   let refKey = '';
   let stats = null;
@@ -22,7 +24,8 @@ export function createLabFrame({ state, measured, file, show }) {
     const table = st.brdfSource === 'measured' ? measured() : null;
     const fromFile = st.env && st.environment === 'file';
     const envKey = st.env ? (fromFile ? file().key : st.environment) : 'none';
-    const { scene, lights, keys } = sceneOf(st, table, envKey);
+    const ownBrdf = st.brdfSource === 'custom' ? custom(st) : null;
+    const { scene, lights, keys } = sceneOf(st, table, envKey, ownBrdf);
     scene.table = table?.texture;
     scene.maps = environment(st.env ? st.environment : 'furnace', fromFile ? file().pixels : null);
     if (keys.approx !== approxKey) {

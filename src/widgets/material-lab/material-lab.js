@@ -1,7 +1,8 @@
 // material-lab: the playground of the talk's last part. A sphere with a material from the F0 tables (or your
 // own), the BRDF's terms to choose, and four kinds of light to switch on: punctual, a sphere (area) light, an
 // environment, ambient. Each light is rendered by the approximation chosen for it; beside it the same view by
-// a converging Monte Carlo reference, the error image, and the RMS error and GPU time of the approximation.
+// a converging Monte Carlo reference, the error image, and the RMS error and GPU time of the approximation. The BRDF
+// may be a measured table or the user's own GLSL, edited in a panel under the images.
 import { createWidgetShell } from '../../core/framework/widget-shell.js';
 import { MAX_FILE_BYTES, parseEnvironmentFile } from '../../lab/environment-files.js';
 import { createLabView } from '../../lab/lab-view.js';
@@ -9,6 +10,7 @@ import { createNotesList } from '../../lab/lab-approximations.js';
 import { attachEnvironmentDrop } from './environment-drop.js';
 import { createMeasuredMaterial } from './measured-material.js';
 import { createLabFrame } from './lab-frame.js';
+import { createCustomBrdf } from './custom-brdf.js';
 import { missingFile } from './model.js';
 import { schema } from './schema.js';
 import { createReadout } from './views.js';
@@ -39,14 +41,16 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
     notes.show(scene);
     return captions(st, lights, stats);
   };
-  const lab = createLabFrame({ state: () => shell.state, measured: () => measured.current, file: () => file, show });
+  const ownBrdf = createCustomBrdf({ view: () => view, getState: () => shell.state, update: (p) => update(p) });
+  const sources = { state: () => shell.state, measured: () => measured.current, custom: ownBrdf.program };
+  const lab = createLabFrame({ ...sources, file: () => file, show });
   const onReset = () => {
     lab.reset();
     measured.reupload();
   };
   const view = createLabView(shell.view, { label: 'Material lab', resolution: 192, frame: lab.frame, onReset });
   view.setAspect(3);
-  shell.view.append(readout.element, notes.element);
+  shell.view.append(readout.element, notes.element, ownBrdf.element); // the user's BRDF's panel under the notes
 
   const onChanged = (changed) => {
     const has = { measured: Boolean(measured.current), file: Boolean(file.pixels) };
@@ -91,7 +95,7 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
       return view.resolution;
     },
     dispose() {
-      [drop, measured, view, shell].forEach((x) => x.dispose());
+      [drop, measured, ownBrdf, view, shell].forEach((x) => x.dispose());
     },
   };
 }

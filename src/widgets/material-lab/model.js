@@ -16,32 +16,40 @@ export function lightsOf(state) {
   };
 }
 
-/** A lab scene with a measured table for its BRDF: no terms; the GGX fit's α (the state's until it is in) to
- * sample by. */
-function measuredScene(scene, table) {
-  const alpha = table.fit?.params.alpha ?? scene.material.alpha;
-  return {
-    ...scene,
-    material: { ...scene.material, alpha: Math.max(alpha, 0.01) },
-    terms: { ...scene.terms, D: 'ggx', compensation: 'none' },
-    measured: table.name,
-  };
+/**
+ * A lab scene whose BRDF is whole (`whole`: { measured: a table's name } or { custom: { code, params } }, the
+ * user's): no terms; a GGX lobe of α (at least 0.01) to sample by.
+ */
+const wholeBrdfScene = (scene, alpha, whole) => ({
+  ...scene,
+  material: { ...scene.material, alpha: Math.max(alpha, 0.01) },
+  terms: { ...scene.terms, D: 'ggx', compensation: 'none' },
+  ...whole,
+});
+
+/** The scene of `state` with its BRDF: the model, a measured table (sampled by its GGX fit's α, the state's until
+ * it is in) or the user's (`custom`, sampled at the state's α). */
+function sceneWithBrdf(state, lights, table, custom) {
+  const scene = labScene(state, lights);
+  if (table) return wholeBrdfScene(scene, table.fit?.params.alpha ?? scene.material.alpha, { measured: table.name });
+  if (custom) return wholeBrdfScene(scene, scene.material.alpha, { custom });
+  return scene;
 }
 
 /**
  * The scene of `state` (`table`: the measured table in use, or null; `envKey`: which map is lit by, a new one for
- * every file taken) and its keys: `approx` changes when the approximation must be rendered again, `reference` when
- * the reference must start over.
+ * every file taken; `custom`: the user's BRDF { code, params } when the state asks for it, or null) and its keys:
+ * `approx` changes when the approximation must be rendered again, `reference` when the reference must start over.
  */
-export function sceneOf(state, table, envKey) {
+export function sceneOf(state, table, envKey, custom = null) {
   const lights = lightsOf(state);
-  const scene = table ? measuredScene(labScene(state, lights), table) : labScene(state, lights);
+  const scene = sceneWithBrdf(state, lights, table, custom);
   return {
     scene,
     lights,
     keys: {
       approx: JSON.stringify([scene, envKey, table?.key]),
-      reference: JSON.stringify([scene.material, scene.terms, scene.lights, envKey, table?.key]),
+      reference: JSON.stringify([scene.material, scene.terms, scene.lights, envKey, table?.key, scene.custom]),
     },
   };
 }

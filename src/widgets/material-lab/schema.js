@@ -1,11 +1,13 @@
 // The material lab's state: the material, the BRDF's terms, four lights with the method each is shaded by, the
 // reference and the display. All of it round-trips through the URL; a dropped file cannot, so the state says
-// only that a file is in use. Pure data: loads in Node without three.js.
+// only that a file is in use. The BRDF may be the user's own GLSL: its code and its sliders' values are fields too.
+// Pure data: loads in Node without three.js.
 import { ENVIRONMENTS } from '../../lab/environments.js';
 import { MATERIAL_FIELDS } from '../../lab/lab-scene.js';
 import { LAB_TERMS } from '../../lab/lab-approximations.js';
 import { TERM_ALIASES } from '../../math/catalogue/index.js';
 import { SIGMA_HINT } from '../../core/ui/sigma-range.js';
+import { SLOTS } from '../../core/custom/slots.js';
 
 export const ENV_METHODS = {
   'split-sum': 'Split sum (prefiltered + DFG)',
@@ -64,8 +66,15 @@ export const schema = {
     type: 'enum',
     default: 'model',
     label: 'BRDF',
-    options: { model: 'The model (terms above)', measured: 'Measured (a dropped MERL file)' },
+    options: {
+      model: 'The model (terms above)',
+      measured: 'Measured (a dropped MERL file)',
+      custom: 'Your GLSL: a whole BRDF f(l, v)',
+    },
   },
+  // the user's whole BRDF (no control of its own: the panel's editor edits it) and its sliders' values
+  codeBRDF: { type: 'code', slot: 'brdf', default: SLOTS.brdf.starter, label: 'Your BRDF (GLSL)' },
+  params: { type: 'params', default: {}, label: 'Sliders of your code' },
   punctual: { group: 'Punctual light', type: 'bool', default: false, label: 'Punctual light' },
   lightTheta: {
     group: 'Punctual light',

@@ -4,10 +4,16 @@ import { NDF_TERMS } from '../../math/brdf.js';
 import { matchNdfWidths } from '../../math/ndf-width.js';
 import { ndfProjectedIntegral } from '../../math/integrate.js';
 import { DEG } from '../../math/angles.js';
-import { seriesStyle } from '../../core/ui/palettes.js';
+import { SERIES_DASHES, seriesStyle } from '../../core/ui/palettes.js';
 import { THETA_H_DEG } from '../measured-brdf/model.js';
 import { termLabel } from '../../math/catalogue/index.js';
 import { NDF_KEYS } from './schema.js';
+
+/** A curve's label and series style: the five NDFs in the talk's order, then the user's, dashed (over GGX's). */
+export const withStyle = (key) =>
+  NDF_KEYS.includes(key)
+    ? { label: termLabel('ndf', key), ...seriesStyle(NDF_KEYS.indexOf(key)) }
+    : { label: termLabel('ndf', key), ...seriesStyle(NDF_KEYS.length), dash: SERIES_DASHES[1] };
 
 /** θh in degrees: every 0.25° and the θh nodes of a MERL table (where a measured slice has its values), in order. */
 export const ANGLES = Float64Array.from(
@@ -21,25 +27,27 @@ export const measuredOnAngles = (slice) =>
 
 /**
  * One curve per chosen NDF: { key, p (its parameters at the matched width, as NDF_TERMS read them), label,
- * stroke, dash, values (D over ANGLES, 1/sr), integral (∫ D (n·m) dω, 1 for a density) }.
+ * stroke, dash, values (D over ANGLES, 1/sr), integral (∫ D (n·m) dω, 1 for a density) }. The user's D (`custom`)
+ * is not among them: its values come from the GPU (custom.js), and `withStyle` dresses its curve like these.
  */
 export function ndfCurves(state) {
   const params = matchNdfWidths(state.hwhm, { abcA2: state.abcA2, sgdP: state.sgdP });
-  return state.ndfs.map((key) => {
-    const p = params[key];
-    const D = (c) => NDF_TERMS[key](c, p);
-    let integral = null;
-    return {
-      key,
-      p,
-      label: termLabel('ndf', key),
-      ...seriesStyle(NDF_KEYS.indexOf(key)),
-      values: ANGLES.map((deg) => D(Math.cos(deg * DEG))),
-      /** Computed when first read: only the table shows it, and it costs more than a frame while dragging. */
-      get integral() {
-        integral ??= ndfProjectedIntegral(D);
-        return integral;
-      },
-    };
-  });
+  return state.ndfs
+    .filter((key) => NDF_KEYS.includes(key))
+    .map((key) => {
+      const p = params[key];
+      const D = (c) => NDF_TERMS[key](c, p);
+      let integral = null;
+      return {
+        key,
+        p,
+        ...withStyle(key),
+        values: ANGLES.map((deg) => D(Math.cos(deg * DEG))),
+        /** Computed when first read: only the table shows it, and it costs more than a frame while dragging. */
+        get integral() {
+          integral ??= ndfProjectedIntegral(D);
+          return integral;
+        },
+      };
+    });
 }

@@ -1,6 +1,8 @@
 // The NDF explorer's state: the matched half width, the shapes of ABC and SGD, which NDFs are drawn, the
-// spheres' light and exposure, and the measured slice the measured-BRDF widget hands over.
+// spheres' light and exposure, the measured slice the measured-BRDF widget hands over, and the user's own D (its
+// code and its sliders' values), drawn when `custom` is among the NDFs.
 import { termOptions } from '../../math/catalogue/index.js';
+import { SLOTS } from '../../core/custom/slots.js';
 
 /** The talk's five NDFs (catalogue keys), in the order the talk shows them: menu, legend and colour order. */
 export const NDF_KEYS = ['blinnPhong', 'beckmann', 'ggx', 'abc', 'sgd'];
@@ -11,7 +13,7 @@ export const schema = {
   sgdP: { type: 'number', min: 0, max: 1.9, step: 0.01, default: 0.64, label: 'SGD shape p' },
   ndfs: {
     type: 'set',
-    options: termOptions('ndf', NDF_KEYS),
+    options: termOptions('ndf', NDF_KEYS, { custom: true }),
     default: NDF_KEYS,
     label: 'Distributions',
   },
@@ -21,4 +23,6 @@ export const schema = {
   // MERL table (0: missing or below 1e-5), and the name of its file
   measured: { type: 'samples', length: 90, min: 0, max: 1, default: [], label: 'Measured NDF slice' },
   measuredName: { type: 'text', maxLength: 80, default: '', label: 'Measured file' },
+  codeD: { type: 'code', slot: 'D', default: SLOTS.D.starter, label: 'Your D (GLSL)' },
+  params: { type: 'params', default: {}, label: 'Sliders of your code' },
 };

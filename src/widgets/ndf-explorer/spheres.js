@@ -4,17 +4,22 @@ import { createSphereGrid } from '../../core/ui/sphere-grid.js';
 import { lightDirFromAngles } from '../../math/angles.js';
 import { NDF_TERMS, microfacetBRDFAt, punctualRadiance } from '../../math/brdf.js';
 import { termDefines, termEntry } from '../../math/catalogue/index.js';
+import { DEG } from '../../math/angles.js';
+import { ANGLES } from './model.js';
+
+/** The terms of an NDF's sphere: only D differs. */
+export const cellTerms = (key) => ({ F: 'one', D: key, V: 'implicit' });
 
 /** The sphere of one NDF curve (model.js's ndfCurves): { label, defines, uniforms, probe } for the sphere grid. */
 export function sphereCell(c, state) {
-  const terms = { F: 'one', D: c.key, V: 'implicit' }; // only D differs
+  if (c.cell) return customCell(c, state);
+  const terms = cellTerms(c.key);
   const radiance = (a) => punctualRadiance(microfacetBRDFAt(a, { ...terms, ...c.p }), a.nl, 1);
   return {
     label: termEntry('ndf', c.key).short,
     defines: termDefines(terms),
     uniforms: {
-      uLightDir: lightDirFromAngles(state.lightTheta, 135),
-      uExposure: state.exposure,
+      ...lightUniforms(state),
       uAlpha: c.p.alpha ?? 0.3,
       uExponent: c.p.exponent ?? 1,
       uA1: c.p.a1 ?? 1,
@@ -28,10 +33,37 @@ export function sphereCell(c, state) {
   };
 }
 
+const lightUniforms = (state) => ({ uLightDir: lightDirFromAngles(state.lightTheta, 135), uExposure: state.exposure });
+
+/** The sphere of the user's D (custom.js's curve): its own program; the probe reads D off its curve. */
+function customCell(c, state) {
+  const D = (nh) => {
+    const deg = Math.acos(Math.min(Math.max(nh, -1), 1)) / DEG;
+    const i = ANGLES.findIndex((x) => x >= deg);
+    if (i <= 0) return c.values[Math.max(i, 0)];
+    const t = (deg - ANGLES[i - 1]) / (ANGLES[i] - ANGLES[i - 1]);
+    return c.values[i - 1] + (c.values[i] - c.values[i - 1]) * t;
+  };
+  return {
+    label: 'Yours',
+    defines: termDefines(cellTerms(c.key)),
+    own: c.cell.own,
+    uniforms: { ...c.cell.uniforms, ...lightUniforms(state), uAlpha: c.p.alpha },
+    probe: (a) => [
+      ['D(n·h), your code', `${D(a.nh).toPrecision(4)} /sr`],
+      ['radiance π·D/4·(n·l)', punctualRadiance(D(a.nh) / 4, a.nl, 1).toPrecision(4)],
+    ],
+  };
+}
+
 export function createNdfSpheres(container) {
   const grid = createSphereGrid(container, { label: 'NDF highlights on spheres' });
   return {
-    draw: (curves, state) => grid.setCells(curves.map((c) => sphereCell(c, state))),
+    /** One sphere per curve; the user's once its code compiled in the sphere's program. */
+    draw: (curves, state) => grid.setCells(curves.filter((c) => c.cell !== null).map((c) => sphereCell(c, state))),
+    get renderer() {
+      return grid.renderer;
+    },
     get canvas() {
       return grid.canvas;
     },

@@ -19,11 +19,22 @@ function directions(state, deg) {
   return { l: [Math.sin(t), 0, Math.cos(t)], v: [-Math.sin(tv), 0, Math.cos(tv)] };
 }
 
+/** (n·l, n·v) at each of ANGLES for the state's directions: where the user's V is evaluated (custom.js). */
+export const cosinesOf = (state) =>
+  Array.from(ANGLES, (deg) => {
+    const { l, v } = directions(state, deg);
+    const a = brdfAngles(l, v);
+    return [a.nl, a.nv];
+  });
+
+export const CUSTOM = 'custom';
+
 /**
  * One curve per chosen term: { key, label, stroke, dash, G (over ANGLES), error (% from the reference, null
- * where it is 0), worst (largest |error| up to 80°) }.
+ * where it is 0), worst (largest |error| up to 80°) }. The user's V (`custom`) is drawn from `customG`, its G over
+ * ANGLES read back from the GPU, once there is one.
  */
-export function visibilityCurves(state) {
+export function visibilityCurves(state, customG = null) {
   const params = { alpha: state.alpha };
   const evalTerm = (key) =>
     ANGLES.map((deg) => {
@@ -32,8 +43,9 @@ export function visibilityCurves(state) {
       return VISIBILITY_TERMS[key](a, params) * a.nl * a.nv;
     });
   const reference = evalTerm(REFERENCE);
-  return state.terms.map((key) => {
-    const G = evalTerm(key);
+  const keys = state.terms.filter((key) => key !== CUSTOM || customG);
+  return keys.map((key) => {
+    const G = key === CUSTOM ? customG : evalTerm(key);
     const error = G.map((g, i) => (reference[i] > 1e-9 ? (100 * (g - reference[i])) / reference[i] : null));
     const within = error.filter((e, i) => e !== null && ANGLES[i] <= 80);
     return {

@@ -1,6 +1,8 @@
 // The visibility explorer's state: the roughness, how l and v move for the plots, which terms are drawn, and
-// the spheres' light and exposure.
+// the spheres' light and exposure, and the user's own V (its code and its sliders' values), drawn when `custom` is
+// among the terms.
 import { termOptions } from '../../math/catalogue/index.js';
+import { SLOTS } from '../../core/custom/slots.js';
 
 export const schema = {
   alpha: { type: 'number', min: 0.01, max: 1, step: 0.01, default: 0.5, label: 'Roughness α' },
@@ -13,7 +15,7 @@ export const schema = {
   viewTheta: { type: 'number', min: 0, max: 85, step: 1, default: 60, label: 'View angle (view fixed)', unit: '°' },
   terms: {
     type: 'set',
-    options: termOptions('visibility'),
+    options: termOptions('visibility', undefined, { custom: true }),
     default: [
       'implicit',
       'cookTorrance',
@@ -27,4 +29,6 @@ export const schema = {
   },
   lightTheta: { type: 'number', min: 0, max: 85, step: 1, default: 30, label: 'Sphere light from view', unit: '°' },
   exposure: { type: 'number', min: 0.1, max: 20, step: 0.1, default: 1.5, label: 'Sphere exposure' },
+  codeV: { type: 'code', slot: 'V', default: SLOTS.V.starter, label: 'Your V (GLSL)' },
+  params: { type: 'params', default: {}, label: 'Sliders of your code' },
 };

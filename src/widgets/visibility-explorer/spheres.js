@@ -6,13 +6,31 @@ import { VISIBILITY_TERMS } from '../../math/brdf.js';
 import { REFERENCE } from './model.js';
 import { termDefines, termEntry } from '../../math/catalogue/index.js';
 
+/** The terms of a visibility term's sphere: GGX D, F = 1. */
+export const cellTerms = (key) => ({ F: 'one', D: 'ggx', V: key });
+
+const uniformsOf = (state) => ({
+  uLightDir: lightDirFromAngles(state.lightTheta, 135),
+  uExposure: state.exposure,
+  uAlpha: state.alpha,
+});
+
+/** The sphere of the user's V: its own program (custom.js's cell: { own, uniforms }). */
+const customCell = (c, state) => ({
+  label: 'Yours',
+  defines: termDefines(cellTerms(c.key)),
+  own: c.cell.own,
+  uniforms: { ...c.cell.uniforms, ...uniformsOf(state) },
+});
+
 /** The sphere of one term's curve (model.js's visibilityCurves): { label, defines, uniforms, probe }. */
 export function sphereCell(c, state) {
+  if (c.cell) return customCell(c, state);
   const params = { alpha: state.alpha };
   return {
     label: termEntry('visibility', c.key).short,
-    defines: termDefines({ F: 'one', D: 'ggx', V: c.key }),
-    uniforms: { uLightDir: lightDirFromAngles(state.lightTheta, 135), uExposure: state.exposure, uAlpha: state.alpha },
+    defines: termDefines(cellTerms(c.key)),
+    uniforms: uniformsOf(state),
     probe: (a) => {
       const V = VISIBILITY_TERMS[c.key](a, params);
       return [
@@ -27,7 +45,11 @@ export function sphereCell(c, state) {
 export function createVisibilitySpheres(container) {
   const grid = createSphereGrid(container, { label: 'Visibility terms on spheres' });
   return {
-    draw: (curves, state) => grid.setCells(curves.map((c) => sphereCell(c, state))),
+    /** One sphere per curve; the user's once its code compiled in the sphere's program. */
+    draw: (curves, state) => grid.setCells(curves.filter((c) => c.cell !== null).map((c) => sphereCell(c, state))),
+    get renderer() {
+      return grid.renderer;
+    },
     get canvas() {
       return grid.canvas;
     },

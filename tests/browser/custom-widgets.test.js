@@ -1,0 +1,332 @@
+// User-written terms (issue 13) in the material lab, ndf-explorer, visibility-explorer and diffuse-explorer, in a
+// real Chromium: code typed into the editor as a user types it, drawn as the term predicts (the truth: closed
+// forms and the JS terms of src/math), a compile error keeping the last picture, and the URL carrying the code.
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { getState, launchBrowser, open, settle, shot, widget, withPixels } from './helpers.js';
+import { stateToParams } from '../../src/core/framework/state.js';
+import { srgbToLinear } from '../../src/math/color.js';
+import { schema as labSchema } from '../../src/widgets/material-lab/schema.js';
+import { schema as ndfSchema } from '../../src/widgets/ndf-explorer/schema.js';
+import { schema as visibilitySchema } from '../../src/widgets/visibility-explorer/schema.js';
+import { schema as diffuseSchema } from '../../src/widgets/diffuse-explorer/schema.js';
+import { ANGLES as NDF_ANGLES } from '../../src/widgets/ndf-explorer/model.js';
+import { matchNdfWidths } from '../../src/math/ndf-width.js';
+import { ndfGGX } from '../../src/math/ndf.js';
+
+let browser;
+beforeAll(async () => {
+  browser = await launchBrowser();
+});
+afterAll(async () => {
+  await browser?.close();
+});
+
+/** Replaces the text of the slot's editor by typing, as a user does (select all, type), and waits for the redraw. */
+async function typeCode(page, slot, text, wait = 1500) {
+  await page.click(`.custom-panel[data-slot="${slot}"] .cm-content`);
+  await page.keyboard.down('Control');
+  await page.keyboard.press('a');
+  await page.keyboard.up('Control');
+  await page.keyboard.press('Backspace');
+  await page.keyboard.type(text);
+  await settle(page, wait); // the edit's pause, the compile, the redraw
+}
+
+const panelText = (page, slot, selector) =>
+  page.$eval(`.custom-panel[data-slot="${slot}"] ${selector}`, (el) => el.textContent);
+
+/** Opens `w` alone (embed.html) and waits for its editor. */
+async function openWidget(key, query, size = { width: 1100, height: 1500 }) {
+  const page = await open(browser, `embed.html?w=${key}&${query}`, size);
+  await widget(page, key);
+  await page.waitForSelector('.custom-panel .cm-content', { timeout: 30_000 });
+  await settle(page, 800);
+  return page;
+}
+
+/**
+ * The sphere grid's first and last cells compared: the largest channel difference (0–255) over the pixels of the
+ * spheres side by side, and the mean red of each (a blank cell is not a match).
+ */
+async function firstAndLastCells(page, count) {
+  const png = await shot(page, '.sphere-grid canvas');
+  return withPixels(
+    page,
+    png,
+    `(image) => {
+      const w = image.width / ${count};
+      const side = Math.min(w, image.height);
+      let worst = 0, first = 0, last = 0, n = 0;
+      // inside the sphere only, clear of the labels at its foot (the save button sits in a corner)
+      const inside = (x, y) => (x - side / 2) ** 2 + (y - side / 2) ** 2 < (0.38 * side) ** 2;
+      for (let y = 0; y < side; y++)
+        for (let x = 0; x < side; x++) {
+          if (!inside(x, y)) continue;
+          const row = Math.floor(y + (image.height - side) / 2);
+          const at = (cell) => (row * image.width + Math.floor(cell * w + (w - side) / 2 + x)) * 4;
+          const [a, b] = [at(0), at(${count - 1})];
+          for (let c = 0; c < 3; c++) worst = Math.max(worst, Math.abs(image.data[a + c] - image.data[b + c]));
+          first += image.data[a]; last += image.data[b]; n++;
+        }
+      return { worst, first: first / n, last: last / n };
+    }`,
+  );
+}
+
+/**
+ * Types `fn { body; }` (its value `expected` where `read` reads it), then the same with an undeclared name on line 2:
+ * the compiler's error lands on line 2 and `read` still reads the good code's value; then the state, through the
+ * URL of the share link, opens the same code in a new page.
+ */
+async function compileErrorAndUrl({ key, query, slot, codeKey, schema, fn, body, read, expected }) {
+  const page = await openWidget(key, query);
+  await typeCode(page, slot, `${fn} {\n${body};\n}`);
+  expect((await read(page)) / expected).toBeCloseTo(1, 5);
+  await typeCode(page, slot, `${fn} {\n${body} * missing;\n}`);
+  expect(await panelText(page, slot, '.custom-problems')).toMatch(/^Line 2: .*missing/);
+  expect(await panelText(page, slot, '.custom-status')).toMatch(/keeps your last good code/);
+  expect((await read(page)) / expected).toBeCloseTo(1, 5);
+  const state = await getState(page, key);
+  const again = await openWidget(key, stateToParams(schema, state).toString());
+  expect((await getState(again, key))[codeKey]).toBe(state[codeKey]);
+  expect([...page.errors, ...again.errors]).toEqual([]);
+  await Promise.all([page.close(), again.close()]);
+}
+
+/** Float32 agreement, the parity harness's tolerance: |Δ| ≤ 1e-5 + 1e-4 |reference|. */
+const withinFloat32 = (value, reference) => Math.abs(value - reference) <= 1e-5 + 1e-4 * Math.abs(reference);
+
+describe('ndf-explorer: your D beside the five', () => {
+  const QUERY = 'ndfs=ggx,custom&hwhm=8';
+  const alpha = matchNdfWidths(8, {}).ggx.alpha;
+  const jsGgx = Array.from(NDF_ANGLES, (deg) => ndfGGX(Math.cos((deg * Math.PI) / 180), alpha));
+  const curves = (page) => page.evaluate(() => globalThis.__shadingLab.widgets['ndf-explorer'].getCurves());
+  const integrals = (page) => page.evaluate(() => globalThis.__shadingLab.widgets['ndf-explorer'].getIntegrals());
+
+  it('the starter draws ndfGGX’s curve at the matched α (float32) and GGX’s sphere; 2 × GGX doubles both', async () => {
+    const page = await openWidget('ndf-explorer', QUERY);
+    const start = await curves(page);
+    start.custom.forEach((d, i) => expect(withinFloat32(d, jsGgx[i])).toBe(true));
+    expect((await integrals(page)).custom).toBeCloseTo(1, 4);
+    const spheres = await firstAndLastCells(page, 2);
+    expect(spheres.worst).toBeLessThanOrEqual(2);
+    expect(spheres.last).toBeGreaterThan(5);
+    await typeCode(
+      page,
+      'D',
+      `float customD(float nh, float alpha) {
+float a2 = alpha * alpha;
+float d = nh * nh * (a2 - 1.0) + 1.0;
+return 2.0 * a2 / (PI * d * d);
+}`,
+    );
+    const doubled = await curves(page);
+    doubled.custom.forEach((d, i) => expect(withinFloat32(d, 2 * jsGgx[i])).toBe(true));
+    expect((await integrals(page)).custom).toBeCloseTo(2, 3);
+    const brighter = await firstAndLastCells(page, 2);
+    expect(brighter.last).toBeGreaterThan(spheres.last * 1.2);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('a compile error names the user’s line and keeps the curve; the URL carries the code', () =>
+    compileErrorAndUrl({
+      key: 'ndf-explorer',
+      query: QUERY,
+      slot: 'D',
+      codeKey: 'codeD',
+      schema: ndfSchema,
+      fn: 'float customD(float nh, float alpha)',
+      body: 'return 3.0 * alpha',
+      read: async (page) => (await curves(page)).custom[0],
+      expected: 3 * alpha,
+    }));
+});
+
+describe('material lab: your whole BRDF', () => {
+  const EXTENT = 1.1; // the lab's view half width (src/lab/lab-uniforms.js)
+  const RES = 192; // the lab's image size (material-lab.js)
+  const POINTS = [
+    [0, 0],
+    [0.5, 0.1],
+    [-0.4, 0.5],
+    [0.1, -0.8],
+  ];
+  const texelOf = ([x, y]) => [x, y].map((c) => Math.floor((c / (2 * EXTENT) + 0.5) * RES));
+  /** The approximation's red channel at POINTS (the sphere coordinates' texels). */
+  const approxAt = (page) =>
+    page.evaluate(
+      (texels, res) => {
+        const image = globalThis.__shadingLab.widgets['material-lab'].read('approx');
+        return texels.map(([i, j]) => image[(j * res + i) * 4]);
+      },
+      POINTS.map(texelOf),
+      RES,
+    );
+  /** n·l at each point's texel centre for a light from the viewer (lightTheta 0): n = (x, y, √(1 − x² − y²)), l = z. */
+  const cosines = POINTS.map(texelOf).map((texel) => {
+    const [x, y] = texel.map((i) => ((2 * (i + 0.5)) / RES - 1) * EXTENT);
+    return Math.sqrt(1 - x * x - y * y);
+  });
+  // the sphere's grey, as the lab's sRGB colour field holds it, and its linear value: Lambert's albedo ρ
+  const GREY = '#8c8c8c';
+  const rho = srgbToLinear(0x8c / 255);
+  const lambertCode = `vec3 customBRDF(vec3 l, vec3 v) {
+return vec3(${rho.toFixed(7)} / PI);
+}`;
+  const LIGHT = 'punctual=1&lightTheta=0&lightPhi=0&cLight=1&env=0&refSamples=128';
+
+  it('ρ/π typed in renders π f (n·l) = ρ (n·l) under the punctual light, as the lab’s Lambert sphere', async () => {
+    const page = await openWidget('material-lab', `brdfSource=custom&${LIGHT}`);
+    await typeCode(page, 'brdf', lambertCode, 2500);
+    expect((await getState(page, 'material-lab')).codeBRDF).toContain(rho.toFixed(7));
+    const custom = await approxAt(page);
+    custom.forEach((value, i) => expect(value / (rho * cosines[i])).toBeCloseTo(1, 2)); // half-float target
+    // the lab's own Lambert sphere (diffuse layer only), same colour
+    await page.evaluate(
+      (grey) =>
+        globalThis.__shadingLab.widgets['material-lab'].update({
+          brdfSource: 'model',
+          layers: 'diffuse',
+          diffuseModel: 'lambert',
+          diffuse: grey,
+        }),
+      GREY,
+    );
+    await settle(page, 2500);
+    const lambert = await approxAt(page);
+    lambert.forEach((value, i) => expect(value / custom[i]).toBeCloseTo(1, 3));
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('a compile error names the user’s line and keeps the last picture; the URL carries the code', async () => {
+    const page = await openWidget('material-lab', `brdfSource=custom&${LIGHT}`);
+    await typeCode(page, 'brdf', 'vec3 customBRDF(vec3 l, vec3 v) {\nreturn vec3(0.5 / PI);\n}', 2500);
+    const before = await approxAt(page);
+    before.forEach((value, i) => expect(value / (0.5 * cosines[i])).toBeCloseTo(1, 2));
+    // an undeclared name on line 2: parses, and the GLSL compiler refuses it there
+    await typeCode(page, 'brdf', 'vec3 customBRDF(vec3 l, vec3 v) {\nreturn vec3(0.9 / PI) * missing;\n}', 2500);
+    expect(await panelText(page, 'brdf', '.custom-problems')).toMatch(/^Line 2: .*missing/);
+    expect(await panelText(page, 'brdf', '.custom-status')).toMatch(/keeps your last good code/);
+    expect(await approxAt(page)).toEqual(before);
+    // the code as the share link carries it, opened in a new page: the same state
+    const state = await getState(page, 'material-lab');
+    const query = stateToParams(labSchema, state).toString();
+    const again = await openWidget('material-lab', query);
+    expect((await getState(again, 'material-lab')).codeBRDF).toBe(state.codeBRDF);
+    expect(page.errors).toEqual([]);
+    expect(again.errors).toEqual([]);
+    await Promise.all([page.close(), again.close()]);
+  });
+
+  it('in the white furnace the Monte Carlo reference of ρ/π converges to the albedo ρ (GGX + cosine)', async () => {
+    const query = 'brdfSource=custom&punctual=0&env=1&environment=furnace&envMethod=importance&refSamples=512';
+    const page = await openWidget('material-lab', query);
+    await typeCode(page, 'brdf', lambertCode, 1000);
+    await page.waitForFunction(
+      () => {
+        const p = globalThis.__shadingLab.widgets['material-lab'].getProgress();
+        return p.frame >= p.target;
+      },
+      { timeout: 300_000, polling: 500 },
+    );
+    // per point, the mean of the 5 × 5 texels around it and its standard error (Monte Carlo noise)
+    const reference = await page.evaluate(
+      (texels, res) => {
+        const image = globalThis.__shadingLab.widgets['material-lab'].read('reference');
+        return texels.map(([i, j]) => {
+          const x = [];
+          for (let dj = -2; dj <= 2; dj++)
+            for (let di = -2; di <= 2; di++) x.push(image[((j + dj) * res + i + di) * 4]);
+          const mean = x.reduce((a, b) => a + b) / 25;
+          return { mean, se: Math.sqrt(x.reduce((a, b) => a + (b - mean) ** 2, 0) / 24 / 25) };
+        });
+      },
+      POINTS.map(texelOf),
+      RES,
+    );
+    reference.forEach(({ mean, se }) => expect(Math.abs(mean - rho)).toBeLessThan(4 * se + 1e-3 * rho));
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+});
+
+describe('visibility-explorer: your V beside the catalogue’s', () => {
+  const QUERY = 'terms=smithGGXCorrelated,implicit,custom&alpha=0.5&config=view-fixed&viewTheta=60';
+  const curves = (page) => page.evaluate(() => globalThis.__shadingLab.widgets['visibility-explorer'].getCurves());
+
+  it('the starter draws height-correlated Smith’s JS curve and sphere; V = 1 typed draws the implicit G', async () => {
+    const page = await openWidget('visibility-explorer', QUERY);
+    const start = await curves(page);
+    start.custom.forEach((g, i) => expect(withinFloat32(g, start.smithGGXCorrelated[i])).toBe(true));
+    const spheres = await firstAndLastCells(page, 3);
+    expect(spheres.worst).toBeLessThanOrEqual(2);
+    expect(spheres.last).toBeGreaterThan(5);
+    await typeCode(page, 'V', 'float customV(float nl, float nv, float alpha) {\nreturn 1.0;\n}');
+    const implicit = await curves(page);
+    implicit.custom.forEach((g, i) => expect(withinFloat32(g, implicit.implicit[i])).toBe(true));
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('a compile error names the user’s line and keeps the curve; the URL carries the code', () =>
+    compileErrorAndUrl({
+      key: 'visibility-explorer',
+      query: 'terms=custom&alpha=0.5&config=mirror',
+      slot: 'V',
+      codeKey: 'codeV',
+      schema: visibilitySchema,
+      fn: 'float customV(float nl, float nv, float alpha)',
+      body: 'return 0.5 / (nl * nv)',
+      read: async (page) => (await curves(page)).custom[0], // G at 0°: 0.5
+      expected: 0.5,
+    }));
+});
+
+describe('diffuse-explorer: your diffuse term beside the catalogue’s', () => {
+  const QUERY = 'models=lambert,custom&sigma=30&cdiff=0.8&lightTheta=40&lightPhi=0';
+  /** The profile plot's series by model, as uPlot holds them. */
+  const profiles = async (page) => {
+    const [, lambert, custom] = await page.evaluate(
+      () => globalThis.__shadingLab.widgets['diffuse-explorer'].getPlots().profile,
+    );
+    return { lambert, custom };
+  };
+
+  it('the starter draws Lambert’s JS profile and sphere; (1 + α) Lambert reads α as σ in radians', async () => {
+    const page = await openWidget('diffuse-explorer', QUERY);
+    const start = await profiles(page);
+    start.custom.forEach((y, i) => expect(withinFloat32(y, start.lambert[i])).toBe(true));
+    const spheres = await firstAndLastCells(page, 2);
+    expect(spheres.worst).toBeLessThanOrEqual(2);
+    expect(spheres.last).toBeGreaterThan(5);
+    await typeCode(
+      page,
+      'diffuse',
+      'vec3 customDiffuse(vec3 cdiff, vec3 l, vec3 v, float alpha) {\n' +
+        'if (!(l.z > 0.0 && v.z > 0.0)) return vec3(0.0);\nreturn cdiff / PI * (1.0 + alpha);\n}',
+      4000, // the plots read the term at 9 × 10⁴ inputs, then the sphere redraws
+    );
+    const scaled = await profiles(page);
+    const factor = 1 + (30 * Math.PI) / 180; // σ = 30° in radians
+    scaled.custom.forEach((y, i) => expect(withinFloat32(y, factor * scaled.lambert[i])).toBe(true));
+    // 1.52 × in linear radiance is about 1.2 × in sRGB (and the brightest pixels clip)
+    expect((await firstAndLastCells(page, 2)).last).toBeGreaterThan(spheres.last * 1.1);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('a compile error names the user’s line and keeps the curve; the URL carries the code', () =>
+    compileErrorAndUrl({
+      key: 'diffuse-explorer',
+      query: 'models=custom&cdiff=0.8&lightTheta=0&lightPhi=0',
+      slot: 'diffuse',
+      codeKey: 'codeDiffuse',
+      schema: diffuseSchema,
+      fn: 'vec3 customDiffuse(vec3 cdiff, vec3 l, vec3 v, float alpha)',
+      body: 'return vec3(0.25 / PI)',
+      read: async (page) => (await profiles(page)).lambert[100], // the only series: Lo at the centre, 0.25 · 1
+      expected: 0.25,
+    }));
+});
