@@ -1,7 +1,7 @@
 // A widget's user-written terms: for each slot chosen, a panel with its code, sliders and checks, and the values
 // the widget's views need, read back from the GPU (the runner keeps the last good code drawing). The panel's module
 // (with CodeMirror and the GLSL parser) is loaded only when a custom term is first chosen; until then nothing of the
-// custom term is drawn. brdf-lobe's custom-area.js is the same with its four slots fixed.
+// custom term is drawn. A lost GPU context is watched by the runner, which then asks the widget to redraw.
 
 /**
  * The panel's modules (CodeMirror, the GLSL parser, the runner), loaded once: `then(modules)`, or a message in `box`.
@@ -44,7 +44,7 @@ export function createCustomArea(container, { slots, chosen, planOf, getRenderer
 
   const load = () =>
     (loading ??= loadModules(box, ([panel, parse, run]) => {
-      mods = { panel, parse, run, runner: run.createCustomRunner(getRenderer) };
+      mods = { panel, parse, run, runner: run.createCustomRunner(getRenderer, redraw) };
       redraw();
     }));
 
@@ -123,6 +123,7 @@ export function createCustomArea(container, { slots, chosen, planOf, getRenderer
       }
     },
     dispose() {
+      mods?.runner.dispose();
       Object.values(panels).forEach((p) => p.dispose());
       box.remove();
     },

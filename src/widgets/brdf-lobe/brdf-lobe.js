@@ -5,13 +5,14 @@
 import { createWidgetShell } from '../../core/framework/widget-shell.js';
 import { DEG } from '../../math/angles.js';
 import { schema } from './schema.js';
-import { brdfSpecs, lobeScene } from './model.js';
+import { brdfSpecs, customSlots, lobeScene } from './model.js';
 import { createPolarPlot } from './polar-plot.js';
 import { createLobeView } from './lobe-view.js';
 import { createHalfDiffPair } from './half-diff-pair.js';
 import { createAlbedoPlot } from './albedo-plot.js';
 import { createReadout } from './readout.js';
-import { createCustomArea } from './custom-area.js';
+import { createCustomArea } from '../../core/ui/custom-area.js';
+import { customPlan } from './custom-tables.js';
 import { ABOUT, TERMS_USED, TITLE, describeLobe3d, describePolar } from './words.js';
 
 export { schema };
@@ -19,6 +20,13 @@ export { schema };
 const LIGHT_AND_VIEW = ['lightTheta', 'viewTheta'];
 const ALBEDO_KEYS = ['D', 'V', 'F', 'alpha', 'f0', 'compare', 'D2', 'V2', 'alpha2', 'brdf', 'params'];
 const CODE_KEYS = ['codeD', 'codeV', 'codeF', 'codeBRDF'];
+/** A's slots that can be the user's: the state key of each one's code, and its panel's title. */
+const CUSTOM_SLOTS = {
+  D: { codeKey: 'codeD', title: 'A: your D' },
+  V: { codeKey: 'codeV', title: 'A: your V' },
+  F: { codeKey: 'codeF', title: 'A: your F' },
+  brdf: { codeKey: 'codeBRDF', title: 'A: your whole BRDF' },
+};
 
 const row = (parent, className) => parent.appendChild(Object.assign(document.createElement('div'), { className }));
 
@@ -39,6 +47,9 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange, lo
   const albedo = createAlbedoPlot(bottom, brdfSpecs(shell.state));
   const readout = createReadout(shell.view);
   const custom = createCustomArea(shell.view, {
+    slots: CUSTOM_SLOTS,
+    chosen: customSlots,
+    planOf: customPlan,
     getRenderer: () => lobe3d.renderer,
     getState: () => shell.state,
     update,

@@ -42,6 +42,9 @@ const ON_B = (s2) => (0.45 * s2) / (s2 + 0.09);
 
 /** Each diffuse model as src/math/diffuse.js evaluates it, its constants computed from the state. */
 const DIFFUSE_TEX = {
+  custom: () =>
+    `f_{\\text{yours}}(${C}, \\mathbf{l}, \\mathbf{v}, \\alpha),\\ \\alpha = \\sigma\\ \\text{in radians}` +
+    '\\ \\text{(your GLSL, evaluated on the GPU)}',
   lambert: (s) =>
     `f_{\\text{Lambert}} = \\frac{${C}}{\\pi} = \\frac{${texNumber(s.cdiff, 2)}}{\\pi} =` +
     ` ${texNumber(s.cdiff / Math.PI)}\\ \\mathrm{sr}^{-1}`,

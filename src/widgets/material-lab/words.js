@@ -130,6 +130,15 @@ const KEYS = {
   alpha: 'alpha',
 };
 
+const F0_KEY = (state) => (state.material === 'custom' ? 'f0' : 'material');
+/** A BRDF that is not the model's terms: named, not written out. */
+const SOURCE_TEX = {
+  measured: '\\sym{brdfSource}{f(\\mathbf{l}, \\mathbf{v}) = f_{\\text{measured}}\\ \\text{(a MERL table)}}',
+  custom:
+    '\\sym{brdfSource}{f(\\mathbf{l}, \\mathbf{v}) = f_{\\text{yours}}(\\mathbf{l}, \\mathbf{v})\\ ' +
+    '\\text{(your GLSL)}}',
+};
+
 /** The lab's BRDF and, with the punctual light on, the talk's punctual-light equation with its c_light. */
 export const FORMULA = declareFormula('material-lab', (state) => {
   const terms = {
@@ -140,7 +149,7 @@ export const FORMULA = declareFormula('material-lab', (state) => {
     layers: state.layers,
     compensation: state.compensation,
   };
-  const f = brdfTex(terms, materialOf(state), { ...KEYS, f0: state.material === 'custom' ? 'f0' : 'material' });
+  const f = SOURCE_TEX[state.brdfSource] ?? brdfTex(terms, materialOf(state), { ...KEYS, f0: F0_KEY(state) });
   if (!state.punctual) return f;
   const light =
     `${PUNCTUAL},\\quad \\sym{cLight}{\\mathbf{c}_{\\text{light}} = ${texNumber(state.cLight, 2)}},\\ ` +

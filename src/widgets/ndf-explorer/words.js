@@ -55,6 +55,10 @@ function searched(state) {
 
 /** NDF `key` as the talk writes it, and its parameters at the state's matched width (half width t, radians). */
 const NDF_TEX = {
+  custom: (s, t) => [
+    `D_{\\text{yours}}(${NM}, \\alpha_{tr})\\ \\text{(your GLSL, evaluated on the GPU)}`,
+    `\\alpha_{tr} = ${texNumber(matchedGGX(t))}`,
+  ],
   ggx: (s, t) => [
     `D_{tr}(\\mathbf{m}) = \\frac{\\alpha_{tr}^2}{\\pi(${NM}^2(\\alpha_{tr}^2 - 1) + 1)^2}`,
     `\\alpha_{tr} = ${texNumber(matchedGGX(t))}`,

@@ -49,6 +49,7 @@ const g1 = (c, a2) => `\\frac{2${c}}{${c} + ${root(c, a2)}}`;
 
 /** Each visibility term as it is evaluated (src/math/visibility.js), with α² (or k) substituted. */
 const V_TEX = {
+  custom: () => 'V = V_{\\text{yours}}(\\nl, \\nv, \\alpha)\\ \\text{(your GLSL, evaluated on the GPU)}',
   implicit: () => 'V = 1,\\quad G_{\\text{implicit}} = \\nl \\nv ',
   cookTorrance: () =>
     `G_{\\text{ct}} = \\min\\left(1, \\frac{2\\nh ${NV}}{\\vh }, ` + `\\frac{2\\nh ${NL}}{\\vh }\\right)`,
