@@ -58,8 +58,7 @@ void main() {
   f += microfacetBRDF(l, vLocal, uAlpha, uF0);
 #endif
 #ifdef DIFFUSE_LAYER
-  // the sphere is grey: one channel of diffuseTerm (which evaluates the term once per channel), same horizon
-  if (l.z > 0.0 && vLocal.z > 0.0) f += diffuseTermChannel(l.z, vLocal.z, cosPhiDiff(l, vLocal), uDiffuse, uF0, uSigma);
+  f += diffuseTerm(l, vLocal, vec3(uDiffuse), vec3(uF0), uSigma).x;
 #endif
   float radiance = PI * f * uLightIntensity * max(l.z, 0.0);
 #endif
