@@ -2,7 +2,7 @@
 // src/math/brdf.js. The terms are chosen by their defines, one of each family: F_* (fresnelTerm), NDF_* (ndfTerm),
 // VIS_* (visibilityTerm), as the catalogue names them (src/math/catalogue; termDefines gives them). The three
 // dispatch chunks are generated from the catalogue (src/core/gpu/term-chunks.js): each is an explicit chain of its
-// terms that declares the uniforms of the chosen term only (uExponent, uA1, uA2, uSgdP) and stops with #error
+// terms that declares the uniforms of the chosen term only (uExponent, uA1, uA2, uSgdP, uSgdNorm) and stops with #error
 // when no term of its family is chosen. 0 at or below the horizon, and for l = -v (no half vector).
 #include "fresnel-term.glsl"
 #include "ndf-term.glsl"

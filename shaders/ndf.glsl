@@ -74,19 +74,9 @@ float ndfABC(float cosThetaM, float a1, float a2) {
   return pow(1.0 + b * (1.0 - c), -cc) / (2.0 * PI * abcNormalization(b, cc));
 }
 
-#define SGD_STEPS 48
-float sgdNormalization(float alpha, float p) {
-  float U = log(50.0 / alpha);
-  float h = U / float(SGD_STEPS);
-  float sum = 0.0;
-  for (int i = 0; i <= SGD_STEPS; i++) {
-    float y = alpha * exp(float(i) * h);
-    float w = (i == 0 || i == SGD_STEPS) ? 1.0 : ((i % 2) == 1 ? 4.0 : 2.0);
-    sum += w * exp(-y) * pow(y, 1.0 - p);
-  }
-  return sum * h / 3.0;
-}
-float ndfSGD(float cosThetaM, float alpha, float p) {
+// The normaliser Γ(1 - p, alpha) depends on the parameters alone: it comes in precomputed (float64, in JS:
+// the SGD entry's normaliser in src/math/catalogue/ndf-terms.js, as uSgdNorm), not integrated at every pixel.
+float ndfSGD(float cosThetaM, float alpha, float p, float norm) {
   if (!(cosThetaM > 0.0)) return 0.0;
   float a = clamp(alpha, 0.01, 2.0);
   float q = clamp(p, 0.0, 1.9);
@@ -94,5 +84,5 @@ float ndfSGD(float cosThetaM, float alpha, float p) {
   float c2 = c * c;
   float y = a + sin2FromCos(c) / (c2 * a);
   if (y > 80.0) return 0.0;
-  return exp(-y) * pow(y, -q) / (a * sgdNormalization(a, q) * PI * c2 * c2);
+  return exp(-y) * pow(y, -q) / (a * norm * PI * c2 * c2);
 }

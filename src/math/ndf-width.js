@@ -43,25 +43,36 @@ function matchWidthParam(term, hwhmDeg) {
   return { ...fixed, [name]: solveLog(width, hwhmDeg, Math.max(range.min, 1e-6), range.max) };
 }
 
+/** An object whose properties are each computed when first read, then kept (a widget reads only those it shows). */
+function lazyRecord(solvers) {
+  const out = {};
+  for (const [key, solve] of Object.entries(solvers)) {
+    let value;
+    Object.defineProperty(out, key, { enumerable: true, get: () => (value ??= solve()) });
+  }
+  return out;
+}
+
 /**
  * Parameters that give every NDF the half width `hwhmDeg` (1°–40°):
  * { ggx: { alpha }, beckmann: { alpha }, blinnPhong: { exponent }, abc: { a1, a2 }, sgd: { alpha, p } }, and
- * for every other NDF of the catalogue its parameters by matchWidthParam.
+ * for every other NDF of the catalogue its parameters by matchWidthParam. Each NDF is solved when first read.
  */
 export function matchNdfWidths(hwhmDeg, { abcA2 = 2.5, sgdP = 0.64 } = {}) {
   const w = (D) => ndfHalfWidthDeg(D);
-  return {
-    ggx: { alpha: solveLog((a) => w((c) => ndfGGX(c, a)), hwhmDeg, 1e-3, 1) },
-    beckmann: { alpha: solveLog((a) => w((c) => ndfBeckmann(c, a)), hwhmDeg, 1e-3, 1) },
-    blinnPhong: { exponent: Math.log(0.5) / Math.log(Math.cos(hwhmDeg * DEG)) }, // closed form: cos^p = 1/2
-    abc: { a1: solveLog((a1) => w((c) => ndfABC(c, a1, abcA2)), hwhmDeg, 0.01, 1e4), a2: abcA2 },
-    sgd: { alpha: solveLog((a) => w((c) => ndfSGD(c, a, sgdP)), hwhmDeg, 0.01, 2), p: sgdP },
+  return lazyRecord({
+    ggx: () => ({ alpha: solveLog((a) => w((c) => ndfGGX(c, a)), hwhmDeg, 1e-3, 1) }),
+    beckmann: () => ({ alpha: solveLog((a) => w((c) => ndfBeckmann(c, a)), hwhmDeg, 1e-3, 1) }),
+    blinnPhong: () => ({ exponent: Math.log(0.5) / Math.log(Math.cos(hwhmDeg * DEG)) }), // closed form: cos^p = 1/2
+    abc: () => ({ a1: solveLog((a1) => w((c) => ndfABC(c, a1, abcA2)), hwhmDeg, 0.01, 1e4), a2: abcA2 }),
+    // the normaliser Γ(1 - p, alpha) cancels in the half width (D against D(1)/2): 1 in its place
+    sgd: () => ({ alpha: solveLog((a) => w((c) => ndfSGD(c, a, sgdP, 1)), hwhmDeg, 0.01, 2), p: sgdP }),
     ...Object.fromEntries(
       Object.values(NDF_FAMILY.terms)
         .filter((term) => !(term.key in MATCHED_HERE))
-        .map((term) => [term.key, matchWidthParam(term, hwhmDeg)]),
+        .map((term) => [term.key, () => matchWidthParam(term, hwhmDeg)]),
     ),
-  };
+  });
 }
 
 /**

@@ -135,16 +135,18 @@ export function sgdNormalization(alpha, p) {
 
 /**
  * Shifted gamma distribution (Bagher, Soler, Holzschuch 2012): D = P22(tan²) / (pi (n·m)^4) with
- * P22(x) = e^-y y^-p / (alpha Γ(1 - p, alpha)), y = alpha + x/alpha, normalised so ∫ P22 dx = 1.
+ * P22(x) = e^-y y^-p / (alpha Γ(1 - p, alpha)), y = alpha + x/alpha, normalised so ∫ P22 dx = 1. `norm`, the
+ * normaliser Γ(1 - p, alpha), depends on the parameters alone: a caller evaluating many angles computes it once
+ * (the catalogue's normaliser), as the GPU takes it (uSgdNorm, ndf.glsl).
  */
-export function ndfSGD(cosThetaM, alpha, p) {
+export function ndfSGD(cosThetaM, alpha, p, norm = sgdNormalization(...clampSgd(alpha, p))) {
   if (!(cosThetaM > 0)) return 0;
   const [a, q] = clampSgd(alpha, p);
   const c = Math.min(cosThetaM, 1);
   const c2 = c * c;
   const y = a + sin2(c) / (c2 * a);
   if (y > 80) return 0;
-  return (Math.exp(-y) * y ** -q) / (a * sgdNormalization(a, q) * Math.PI * c2 * c2);
+  return (Math.exp(-y) * y ** -q) / (a * norm * Math.PI * c2 * c2);
 }
 
 /** Walter et al. 2007: the Blinn-Phong exponent whose lobe matches a Beckmann alpha, p = 2/alpha² - 2. */

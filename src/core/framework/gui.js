@@ -36,6 +36,12 @@ export function createStateGui(
   const setModels = {}; // set fields: one boolean per option
   /** @type {Map<string, GUI>} */
   const groups = new Map(); // a field's `group` puts it in a folder of that name (long panels stay readable)
+  /** @type {Map<string, import('lil-gui').Controller[]>} */
+  const controllersOf = new Map(); // a key's controllers: sync refreshes only those whose value changed
+  /** @type {(key: string, ctrl: import('lil-gui').Controller) => void} */
+  const keep = (key, ctrl) => {
+    controllersOf.set(key, [...(controllersOf.get(key) ?? []), ctrl]);
+  };
   /** @type {(f: Field) => GUI} */
   const parentOf = (f) => {
     if (!f.group) return gui;
@@ -62,6 +68,7 @@ export function createStateGui(
             onChange({ [key]: Object.keys(f.options).filter((v) => flags[v]) });
           });
         if (locked.includes(key)) lock(ctrl);
+        keep(key, ctrl);
       }
       continue;
     }
@@ -76,18 +83,33 @@ export function createStateGui(
     ctrl.name(labelOf(key, f)).onChange((/** @type {import('./types.js').StateValue} */ v) => onChange({ [key]: v }));
     if (f.hint) ctrl.domElement.title = f.hint;
     if (locked.includes(key)) lock(ctrl);
+    keep(key, ctrl);
   }
+
+  /**
+   * Brings the panel's copy of `key` to `value`; false when it already shows it (the control that made the change).
+   * @param {string} key
+   * @param {import('./types.js').StateValue} value
+   */
+  const take = (key, value) => {
+    const flags = setModels[key];
+    if (flags) {
+      const chosen = /** @type {string[]} */ (value);
+      const stale = Object.keys(flags).filter((v) => flags[v] !== chosen.includes(v));
+      stale.forEach((v) => (flags[v] = !flags[v]));
+      return stale.length > 0;
+    }
+    const stale = JSON.stringify(model[key]) !== JSON.stringify(value);
+    model[key] = value;
+    return stale;
+  };
 
   return {
     gui,
     /** @param {import('./types.js').State} next */
     sync(next) {
+      for (const [key, ctrls] of controllersOf) if (take(key, next[key])) ctrls.forEach((c) => c.updateDisplay());
       Object.assign(model, next);
-      for (const [key, flags] of Object.entries(setModels)) {
-        const chosen = /** @type {string[]} */ (next[key]);
-        for (const v of Object.keys(flags)) flags[v] = chosen.includes(v);
-      }
-      gui.controllersRecursive().forEach((c) => c.updateDisplay());
     },
     dispose() {
       gui.destroy();

@@ -99,6 +99,10 @@ const TERM_RANGE = {
  */
 const TERM_TOLERANCE = { diffuseOrenNayar: { atol: 1e-5, rtol: 5e-4 } };
 
+/** Each tuple with the term's normaliser (of its parameters, after cos) appended, as both twins take it. */
+const withNormaliser = (term, tuples) =>
+  term.normaliser ? tuples.map(([c, ...params]) => [c, ...params, term.normaliser(...params)]) : tuples;
+
 /** The parity rows of the catalogue's terms. */
 export function termParityCases(catalogue) {
   return Object.values(catalogue).flatMap((family) =>
@@ -107,11 +111,11 @@ export function termParityCases(catalogue) {
       .map((term) => ({
         name: term.glsl,
         chunk: term.chunk,
-        glsl: `${term.glsl}(${term.args.map((_, i) => SLOTS[i]).join(', ')})`,
+        glsl: `${term.glsl}(${SLOTS.slice(0, term.args.length + (term.normaliser ? 1 : 0)).join(', ')})`,
         outputs: 1,
         js: term.js,
         range: TERM_RANGE[term.glsl] ?? FAMILY_RANGE[family.family],
-        args: termInputs(term, termAngles),
+        args: withNormaliser(term, termInputs(term, termAngles)),
         ...(TERM_TOLERANCE[term.glsl] ? { tolerance: TERM_TOLERANCE[term.glsl] } : {}),
       })),
   );

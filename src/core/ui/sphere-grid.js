@@ -11,6 +11,7 @@ import { SHADER_CHUNKS } from '../gpu/shader-chunks.js';
 import { createProgramCache, definesKey } from '../gpu/program-cache.js';
 import { angleText, probeAngles, showProbeRows } from './probe.js';
 import { drawSideBySide } from './side-by-side.js';
+import { NDF_FAMILY } from '../../math/catalogue/ndf-terms.js';
 
 /** Every uniform a cell's program may read, with its value when the cell gives none (brdf-sphere.frag.glsl). */
 const UNIFORM_DEFAULTS = {
@@ -22,6 +23,7 @@ const UNIFORM_DEFAULTS = {
   uA1: 20,
   uA2: 2.5,
   uSgdP: 0.64,
+  uSgdNorm: null, // from uAlpha and uSgdP (withDerived)
   uF0: 1,
   uDiffuse: 0.5,
   uSigma: 0,
@@ -89,12 +91,15 @@ function sameDrawing(cells, next) {
   return cells.length === next.length && cells.every((c, i) => same(c, next[i]));
 }
 
+/** The uniforms with those computed from others once per draw: the SGD normaliser Γ(1 - p, alpha) (ndf.glsl). */
+const withDerived = (u) => ({ ...u, uSgdNorm: NDF_FAMILY.terms.sgd.normaliser?.(u.uAlpha, u.uSgdP) });
+
 /** Draws each cell in its own square viewport, side by side across the canvas, with its program and uniforms. */
 function drawCells(renderer, cells, programs, view) {
   drawSideBySide(renderer, cells.length, (i) => {
     const cell = cells[i];
     const material = cell.own ? programs.own.get(cell) : programs.get(cell.defines);
-    for (const [k, v] of Object.entries({ ...UNIFORM_DEFAULTS, ...cell.uniforms })) {
+    for (const [k, v] of Object.entries(withDerived({ ...UNIFORM_DEFAULTS, ...cell.uniforms }))) {
       if (Array.isArray(v)) material.uniforms[k].value.set(...v);
       else material.uniforms[k].value = v;
     }

@@ -1,13 +1,30 @@
 // @ts-check
 // The normal distributions D(n·h) of the microfacet BRDF. evaluate(c, p, s2): s2 = sin²θh when known from the
 // half vector itself (h.x² + h.y², precise near n), else taken from c. The ranges are the ones ndf.js clamps to.
-import { ndfABC, ndfBeckmannFromSin2, ndfBlinnPhongFromSin2, ndfGGXFromSin2, ndfSGD } from '../ndf.js';
+import {
+  ndfABC,
+  ndfBeckmannFromSin2,
+  ndfBlinnPhongFromSin2,
+  ndfGGXFromSin2,
+  ndfSGD,
+  clampSgd,
+  sgdNormalization,
+} from '../ndf.js';
 import { ALPHA as alpha, terms } from './term.js';
 
 /** @param {number} c */
 const sin2 = (c) => (1 - c) * (1 + c);
 
 const NDF = { definePrefix: 'NDF', chunk: 'ndf.glsl' };
+
+/** Γ(1 - p, alpha) at the clamped parameters (ndfSGD's normaliser), kept for the last pair: a curve asks for one. */
+const sgdNormaliser = (() => {
+  let last = { alpha: NaN, p: NaN, norm: NaN };
+  return (/** @type {number} */ alpha, /** @type {number} */ p) => {
+    if (alpha !== last.alpha || p !== last.p) last = { alpha, p, norm: sgdNormalization(...clampSgd(alpha, p)) };
+    return last.norm;
+  };
+})();
 
 /** @type {import('./types.js').TermFamily} */
 export const NDF_FAMILY = {
@@ -79,11 +96,13 @@ export const NDF_FAMILY = {
       short: 'SGD',
       cite: 'Bagher et al. 2012',
       js: ndfSGD,
-      evaluate: (c, p) => ndfSGD(c, p.alpha, p.p),
+      evaluate: (c, p) => ndfSGD(c, p.alpha, p.p, sgdNormaliser(p.alpha, p.p)),
       glsl: 'ndfSGD',
-      glslCall: 'ndfSGD(nh, alpha, uSgdP)',
-      uniforms: { uSgdP: 'float' },
+      glslCall: 'ndfSGD(nh, alpha, uSgdP, uSgdNorm)',
+      uniforms: { uSgdP: 'float', uSgdNorm: 'float' },
       args: ['cos', 'alpha', 'p'],
+      // the GLSL's last argument, from the parameters (args after cos): computed once per draw, not per pixel
+      normaliser: sgdNormaliser,
       params: {
         alpha: { min: 0.01, max: 2, unit: '', label: 'SGD width α', clamped: true, delicate: [0.05, 0.2, 0.5, 1] },
         p: { min: 0, max: 1.9, unit: '', label: 'SGD shape p', clamped: true, delicate: [0.3, 0.64, 1, 1.5] },

@@ -35,6 +35,8 @@
  *   by the dispatch under the term's define only
  * @property {string[]} args the arguments of js and of the GLSL function, in order: an angle ('cos', 'sin2', 'nl',
  *   'nv', 'nh', 'lh', 'cosPhi') or a key of params
+ * @property {(...params: number[]) => number} [normaliser] a factor of the parameters alone (args after cos), which
+ *   js takes optionally and the GLSL function as its last argument: computed once per draw, not per pixel
  * @property {Record<string, TermParam>} params for an NDF the first is its width (ndf-width.js matches it)
  */
 
