@@ -18,7 +18,8 @@ export const ABOUT =
   'that wide would tilt over 4.6% of the facets past 90°, so the slider’s upper half (to 90°) extrapolates the ' +
   'model, and the plots say so. The last plot adds a smooth specular F(θv) to each diffuse albedo: above 1, the ' +
   'pair reflects more light than arrives. Fresnel-weighted Lambert is not normalised: head-on it returns ' +
-  '(1 − F0)²·20/21 of c_diff (0.878 at F0 = 0.04).';
+  '(1 − F0)²·20/21 of c_diff (0.878 at F0 = 0.04). Choose Custom to draw a diffuse term you write in GLSL ' +
+  'beside them (its α is σ in radians).';
 
 /** The functions behind the pictures, linked to their rows on the parity page. */
 export const TERMS_USED = [

@@ -19,7 +19,9 @@ export const ABOUT =
   'error image shows what each method does with it. Drop an .hdr or .exr panorama on the widget to light it with ' +
   'your own environment, or a MERL .binary file (Matusik et al. 2003) to render a measured BRDF: its table is ' +
   `a 3-D texture of ${(MERL_TEXTURE_BYTES / 1e6).toFixed(2)} MB on the GPU, and only the reference and importance ` +
-  'sampling have a form for it.';
+  'sampling have a form for it. Choose “Your GLSL” as the BRDF to render a whole f(l, v) you write: the ' +
+  'reference samples it by GGX at the chosen α and by the cosine together (so it converges for any BRDF), and ' +
+  'only the punctual and sphere lights and importance sampling have a form for it.';
 
 export const TERMS_USED = [
   'microfacetBRDF',

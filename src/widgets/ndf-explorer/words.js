@@ -12,7 +12,8 @@ export const ABOUT =
   'Raise the exposure to see it. The spheres use F = 1 and V = 1 so that only D differs. The table integrates ' +
   'each D·(n·m) over the hemisphere: a density must give 1. Opened from the measured-BRDF widget (BRDF page), ' +
   'the log plot adds the NDF a measurement implies (black) and puts every curve over its own peak, so the ' +
-  'measured tail is read against the five shapes at the fitted width.';
+  'measured tail is read against the five shapes at the fitted width. Choose Custom to draw a D you write in ' +
+  'GLSL as a sixth curve and sphere, at GGX’s α for the width, checked on the GPU beside the editor.';
 
 /** The functions behind the pictures, linked to their rows on the parity page. */
 export const TERMS_USED = ['ndfBlinnPhong', 'ndfBeckmann', 'ndfGGX', 'ndfABC', 'ndfSGD', 'microfacetBRDF'];

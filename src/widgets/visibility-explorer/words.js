@@ -10,7 +10,8 @@ export const ABOUT =
   'roughness. Change α and watch which curves move. The error plot measures each term against ' +
   'height-correlated Smith. With l and v mirrored about n, h = n and both Cook-Torrance and Kelemen give G = 1 ' +
   'exactly. On the spheres (GGX D, F = 1) the differences show at the silhouettes, where the ' +
-  'angles are grazing.';
+  'angles are grazing. Choose Custom to draw a V you write in GLSL beside them, checked on the GPU beside the ' +
+  'editor.';
 
 /** The functions behind the pictures, linked to their rows on the parity page. */
 export const TERMS_USED = [
