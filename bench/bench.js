@@ -73,7 +73,10 @@ async function gpuCosts() {
       server.url,
       `bench/gpu-bench.html?frames=${quick ? 1 : 9}${familyKey ? `&family=${familyKey}` : ''}`,
     );
-    await page.waitForFunction(() => window.__gpuBench?.done, { timeout: 600_000, polling: 500 });
+    await page.waitForFunction(() => window.__gpuBench?.done || window.__gpuBenchFailed, {
+      timeout: 600_000,
+      polling: 500,
+    });
     const result = await page.evaluate(() => window.__gpuBench);
     if (page.errors.length) throw new Error(page.errors.join('\n'));
     result.chromium = await browser.version();

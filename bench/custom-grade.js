@@ -33,16 +33,16 @@ async function typeCode(page, code) {
 }
 
 /**
- * { runs, outDir, baseUrl } → rows { id, inputs, firstMs, medianMs, passed } per shader exercise. Without
- * `baseUrl` it builds the app into outDir and serves it.
+ * { runs, outDir, baseUrl, limit } → rows { id, inputs, firstMs, medianMs, passed } per shader exercise (the first
+ * `limit` of them). Without `baseUrl` it builds the app into outDir and serves it.
  */
-export async function measureCustomGrade({ runs = 5, outDir = join(ROOT, 'dist'), baseUrl } = {}) {
+export async function measureCustomGrade({ runs = 5, outDir = join(ROOT, 'dist'), baseUrl, limit = Infinity } = {}) {
   const server = baseUrl ? null : await serveStatic(await buildApp(outDir));
   const browser = await launchBrowser();
   const rows = [];
   try {
     const page = await openPage(browser, baseUrl ?? server.url, 'exercises.html', { width: 1280, height: 1000 });
-    for (const [id, { correct }] of Object.entries(SHADER_SOLUTIONS)) {
+    for (const [id, { correct }] of Object.entries(SHADER_SOLUTIONS).slice(0, limit)) {
       await page.evaluate((i) => (location.hash = i), id);
       await page.waitForFunction(
         (i) => globalThis.__shadingLab?.exercise?.id === i && globalThis.__shadingLab.exercise.ready,

@@ -3,18 +3,22 @@
 // both on one build of the app. `npm run bench -- --only custom` runs this part alone.
 import { mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join } from 'node:path';
+import { join, resolve } from 'node:path';
 import { buildApp, launchBrowser, serveStatic } from '../tests/browser/harness.js';
 import { measureCustomEdit } from './custom-edit.js';
 import { measureCustomGrade, printCustomGrade } from './custom-grade.js';
 
-/** { edit: { medianMs, worstMs, edits, missed, editDelayMs }, grade: rows }; --quick: a few edits and one grade. */
+/**
+ * { edit: { medianMs, worstMs, edits, missed, editDelayMs }, grade: rows }, on the app built into BUILT_APP when set
+ * (else a temporary folder); --quick: two edits and two exercises graded twice, to check the part runs.
+ */
 export async function measureCustomTerms({ quick = false } = {}) {
-  const server = await serveStatic(await buildApp(mkdtempSync(join(tmpdir(), 'shading-lab-custom-'))));
+  const outDir = process.env.BUILT_APP ?? mkdtempSync(join(tmpdir(), 'shading-lab-custom-'));
+  const server = await serveStatic(await buildApp(resolve(outDir)));
   const browser = await launchBrowser();
   try {
-    const edit = await measureCustomEdit({ url: server.url, browser, edits: quick ? 3 : 20 });
-    const grade = await measureCustomGrade({ runs: quick ? 1 : 5, baseUrl: server.url });
+    const edit = await measureCustomEdit({ url: server.url, browser, edits: quick ? 2 : 20 });
+    const grade = await measureCustomGrade({ runs: quick ? 1 : 5, baseUrl: server.url, limit: quick ? 2 : Infinity });
     return { edit, grade };
   } finally {
     await browser.close();

@@ -62,6 +62,13 @@ const FAMILY_OF = { visibility: visibilityOf, ndf: ndfOf };
 const MODEL_OF = { smithGGXCorrelated: 'smith-ggx-correlated', smithGGXCorrelatedFast: 'smith-ggx-correlated' };
 const kebab = (key) => key.replace(/[A-Z]+/g, (m) => `-${m.toLowerCase()}`);
 
+/**
+ * A term whose GLSL takes a normaliser computed once per draw (SGD's Γ(1 - p, α)) gets the one of its parameters'
+ * midpoints: a uniform in the app, a constant here, the same cost per pixel.
+ */
+const normaliserOf = ({ normaliser, args, params }) =>
+  normaliser ? [glslFloat(normaliser(...args.slice(1).map((a) => (params[a].min + params[a].max) / 2)))] : [];
+
 /** One variant per term of a catalogue family, the reference first. */
 function termVariants(family, roles) {
   const variants = Object.values(CATALOGUE[family].terms).map((term) => {
@@ -78,7 +85,7 @@ function termVariants(family, roles) {
       ...(role.kind === 'reference' ? {} : { against: role.against ?? roles[reference].key ?? kebab(reference) }),
       model,
       js: FAMILY_OF[family](term, role.params),
-      glsl: role.glsl ?? `${term.glsl}(${term.args.map(glslOf).join(', ')})`,
+      glsl: role.glsl ?? `${term.glsl}(${[...term.args.map(glslOf), ...normaliserOf(term)].join(', ')})`,
     };
   });
   return [...variants.filter((v) => v.kind === 'reference'), ...variants.filter((v) => v.kind !== 'reference')];

@@ -94,6 +94,8 @@ function bindTables(p, tables = {}) {
   return p;
 }
 
+// a program that does not compile throws: say so at once (bench.js stops waiting) instead of never being done
+window.addEventListener('error', () => (window.__gpuBenchFailed = true));
 const debug = gl.getExtension('WEBGL_debug_renderer_info');
 const only = params.get('family'); // one family alone (npm run bench -- --family KEY)
 const results = {};

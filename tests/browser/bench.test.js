@@ -74,7 +74,7 @@ function checkShape(report) {
   for (const p of report.pages) expect(p).toMatchObject({ jsKB: num, jsFiles: num, loadMs: num });
   expect(report.latency).toMatchObject({ steps: num, targetMs: 50 });
   expect(report.custom.edit).toMatchObject({ medianMs: num, worstMs: num, missed: 0 });
-  expect(report.custom.grade.length).toBeGreaterThanOrEqual(8); // every shader exercise, its correct code passing
+  expect(report.custom.grade.length).toBeGreaterThanOrEqual(report.quick ? 2 : 8); // every one in a full run
   for (const r of report.custom.grade) expect(r).toMatchObject({ id: expect.any(String), medianMs: num, passed: true });
   for (const r of report.latency.rows)
     expect(r).toMatchObject({ widget: expect.any(String), key: expect.any(String), medianMs: num, worstMs: num });
