@@ -3,7 +3,7 @@
 // the polar plot's geometry); compile errors on the user's line with the last picture kept; the loop check; the
 // URL and postMessage carrying the code; code from a link waiting for a click; a lost context and its recovery.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { baseUrl, getState, launchBrowser, open, settle, shot, widget, withPixels } from './helpers.js';
+import { baseUrl, getState, launchBrowser, open, settle, shot, typeCode, widget, withPixels } from './helpers.js';
 import { defaultState } from '../../src/core/framework/state.js';
 import { schema } from '../../src/widgets/brdf-lobe/schema.js';
 import { lobePeak, lobeScene } from '../../src/widgets/brdf-lobe/model.js';
@@ -36,17 +36,6 @@ async function openLobe(query) {
   await page.waitForSelector('.custom-panel .cm-content', { timeout: 30_000 });
   await settle(page, 600);
   return page;
-}
-
-/** Replaces the text of the slot's editor by typing, as a user does (select all, type), and waits for the redraw. */
-async function typeCode(page, slot, text) {
-  await page.click(`.custom-panel[data-slot="${slot}"] .cm-content`);
-  await page.keyboard.down('Control');
-  await page.keyboard.press('a');
-  await page.keyboard.up('Control');
-  await page.keyboard.press('Backspace');
-  await page.keyboard.type(text);
-  await settle(page, 1200); // the edit's debounce, the GPU tables, the redraw
 }
 
 /** The polar plot's words: each lobe's peak, e.g. { A: 0.95, B: 0.47 } (in 1/sr). */

@@ -2,7 +2,7 @@
 // real Chromium: code typed into the editor as a user types it, drawn as the term predicts (the truth: closed
 // forms and the JS terms of src/math), a compile error keeping the last picture, and the URL carrying the code.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { getState, launchBrowser, open, settle, shot, widget, withPixels } from './helpers.js';
+import { getState, launchBrowser, open, settle, shot, typeCode, widget, withPixels } from './helpers.js';
 import { stateToParams } from '../../src/core/framework/state.js';
 import { srgbToLinear } from '../../src/math/color.js';
 import { schema as labSchema } from '../../src/widgets/material-lab/schema.js';
@@ -20,17 +20,6 @@ beforeAll(async () => {
 afterAll(async () => {
   await browser?.close();
 });
-
-/** Replaces the text of the slot's editor by typing, as a user does (select all, type), and waits for the redraw. */
-async function typeCode(page, slot, text, wait = 1500) {
-  await page.click(`.custom-panel[data-slot="${slot}"] .cm-content`);
-  await page.keyboard.down('Control');
-  await page.keyboard.press('a');
-  await page.keyboard.up('Control');
-  await page.keyboard.press('Backspace');
-  await page.keyboard.type(text);
-  await settle(page, wait); // the edit's pause, the compile, the redraw
-}
 
 const panelText = (page, slot, selector) =>
   page.$eval(`.custom-panel[data-slot="${slot}"] ${selector}`, (el) => el.textContent);

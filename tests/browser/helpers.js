@@ -46,6 +46,20 @@ export async function widget(page, key) {
   await settle(page, 400);
 }
 
+/**
+ * Replaces the text of a custom term's editor (the panel of `slot`) by typing, as a user does (select all, type),
+ * then waits `wait` ms for the edit's pause, the compile and the redraw.
+ */
+export async function typeCode(page, slot, text, wait = 1500) {
+  await page.click(`.custom-panel[data-slot="${slot}"] .cm-content`);
+  await page.keyboard.down('Control');
+  await page.keyboard.press('a');
+  await page.keyboard.up('Control');
+  await page.keyboard.press('Backspace');
+  await page.keyboard.type(text);
+  await settle(page, wait);
+}
+
 export const getState = (page, key) => page.evaluate((k) => globalThis.__shadingLab.widgets[k].getState(), key);
 
 /** Sets a lil-gui control, found by its label, as a user would (dropdown, checkbox or number box). */

@@ -63,12 +63,16 @@ function checkLines(slot, r) {
     lines.push([r.furnace.max <= 1 + 1e-3, `White furnace: largest albedo ${num(r.furnace.max)}${at} (at most 1)`]);
   }
   const ref = r.reference;
+  // the largest absolute and relative differences are usually at different inputs: the one named is the farthest
+  // outside the parity tolerance |Δ| ≤ atol + rtol |reference|
   const worst = ref.worst
-    ? `; at ${inputsText(slot, ref.worst.inputs)} yours ${num(ref.worst.value)}, it ${num(ref.worst.reference)}`
+    ? `. Farthest from it for float32: at ${inputsText(slot, ref.worst.inputs)} yours ${num(ref.worst.value)}, ` +
+      `it ${num(ref.worst.reference)}`
     : '';
   lines.push([
     null,
-    `Against ${ref.label}: largest difference ${num(ref.maxAbs)} (relative ${num(ref.maxRel)})${worst}`,
+    `Against ${ref.label}: largest difference ${num(ref.maxAbs)}, largest relative difference ${num(ref.maxRel)}` +
+      `${worst}`,
   ]);
   return lines;
 }
