@@ -24,7 +24,7 @@ function noWebGl2(holder, canvas) {
   return null;
 }
 
-export function createViewport(container, { draw, onResize, onContextLost, label }) {
+export function createViewport(container, { draw, onResize, onContextLost, label, antialias = true }) {
   const holder = document.createElement('div');
   holder.className = 'viewport';
   const canvas = document.createElement('canvas');
@@ -41,7 +41,7 @@ export function createViewport(container, { draw, onResize, onContextLost, label
   let loop = null;
   const context = createBudgetedContext(
     canvas,
-    { antialias: true, alpha: false },
+    { antialias, alpha: false },
     {
       onLost(planned) {
         onContextLost?.();
@@ -69,7 +69,7 @@ export function createViewport(container, { draw, onResize, onContextLost, label
   );
   if (!context) return noWebGl2(holder, canvas);
   if (label) describeCanvas(canvas, label); // the first words; a widget may describe the view better later
-  const renderer = new THREE.WebGLRenderer({ canvas, context: context.gl, antialias: true });
+  const renderer = new THREE.WebGLRenderer({ canvas, context: context.gl, antialias });
   renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
   loop = createRenderLoop(
     holder,
