@@ -149,7 +149,7 @@ const lastReport = () =>
 
 async function everything() {
   const gpu = await gpuCosts();
-  const pages = await measurePages();
+  const pages = await measurePages({ quick });
   const ibl = await measureIbl({ quick });
   const families = [];
   for (const family of FAMILIES) families.push(await measureFamily(family, gpu.results[family.key]));

@@ -33,12 +33,13 @@ function recordFirstFrame() {
   window.__shadingLab = lab;
 }
 
-export async function measurePages() {
+/** The pages measured; `quick` (the bench's test): two, to check the part runs. */
+export async function measurePages({ quick = false } = {}) {
   const server = await serveStatic(await buildApp());
   const browser = await launchBrowser();
   const rows = [];
   try {
-    for (const path of MEASURED_PAGES) {
+    for (const path of quick ? ['index.html', 'fresnel.html'] : MEASURED_PAGES) {
       const page = await openPage(browser, server.url, path, {
         beforeLoad: (p) => p.evaluateOnNewDocument(recordFirstFrame),
       });
