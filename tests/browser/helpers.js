@@ -6,7 +6,7 @@ export const baseUrl = () => inject('baseUrl');
 export { launchBrowser, settle };
 
 /** Counts every WebGL draw call of the page in window.__drawCalls. */
-function countDrawCalls() {
+export function countDrawCalls() {
   window.__drawCalls = 0;
   for (const fn of [
     'drawArrays',

@@ -1,9 +1,10 @@
 // Pages load cleanly: every built page opens under the Content-Security-Policy with no violation, no console
-// error, no page error and no failed request; each chapter with its widgets mounted and its views drawn; the
-// landing page links every live page.
+// error, no page error and no failed request; each chapter with its widgets mounted and its views drawn; once
+// every view has drawn, a page issues no draw call while idle; the landing page links every live page.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { distinctColors, launchBrowser, open, settle, shot, widget } from './helpers.js';
 import { POLICY_PAGES, openUnderPolicy } from './under-policy.js';
+import { expectIdle } from './idle.js';
 
 let browser;
 beforeAll(async () => {
@@ -96,10 +97,33 @@ describe('chapter pages load cleanly', () => {
   }
 });
 
-describe('Content-Security-Policy', () => {
+// the pages checked for drawing nothing once idle: every chapter and page with views (the embed's widget is
+// fresnel.html's; the gallery's and the wall's views are frames and tiles that context-budget.test.js follows)
+const IDLE_CHECKED = new Set([
+  'index.html',
+  'media.html',
+  'surfaces.html',
+  'brdf.html',
+  'microfacets.html',
+  'fresnel.html',
+  'ndf.html',
+  'visibility.html',
+  'diffuse.html',
+  'rendering.html?lab.refSamples=128&models.refSamples=128',
+  'performance.html',
+  'parity.html',
+]);
+
+describe('Content-Security-Policy, and idle pages draw nothing', () => {
+  it('the pages checked for idle drawing are among the pages run (a renamed page is not silently dropped)', () => {
+    expect(POLICY_PAGES).toEqual(expect.arrayContaining([...IDLE_CHECKED]));
+  });
   for (const path of POLICY_PAGES) {
-    it(`${path.replace(/src=.*/, 'src=data:…')} runs under the policy: no violation, no console error`, async () => {
+    const idle = IDLE_CHECKED.has(path) ? '; once every view has drawn, no draw call over 2 s' : '';
+    const name = path.replace(/src=.*/, 'src=data:…');
+    it(`${name} runs under the policy: no violation, no console error${idle}`, async () => {
       const page = await openUnderPolicy(browser, path);
+      if (idle) await expectIdle(page);
       expect(await page.evaluate(() => window.__csp ?? [])).toEqual([]);
       expect(page.errors).toEqual([]);
       if (path.startsWith('exercises.html?src=')) {

@@ -1,4 +1,5 @@
-// Skip what a scene does not need, measured: WebGL draw calls are counted in the page itself.
+// Skip what a scene does not need, measured: WebGL draw calls are counted in the page itself. That an idle page draws
+// nothing is checked where every page is loaded (pages-load.test.js).
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { launchBrowser, open, settle, widget } from './helpers.js';
 
@@ -10,66 +11,7 @@ afterAll(async () => {
   await browser?.close();
 });
 
-const PAGES = [
-  'index.html',
-  'media.html',
-  'surfaces.html',
-  'brdf.html',
-  'microfacets.html',
-  'fresnel.html',
-  'ndf.html',
-  'visibility.html',
-  'diffuse.html',
-  'rendering.html?lab.refSamples=128&models.refSamples=128',
-  'performance.html',
-  'parity.html',
-];
 const draws = (page) => page.evaluate(() => window.__drawCalls);
-
-/** Scroll through the page so every view gets its first frame, then let it settle. */
-async function visitAll(page) {
-  const height = await page.evaluate(() => document.body.scrollHeight);
-  for (let y = 0; y < height; y += 500) {
-    await page.evaluate((top) => window.scrollTo(0, top), y);
-    await settle(page, 300);
-  }
-  await settle(page, 1500);
-  // progressive views (the media path tracer, the lab's references) run until their sample count is reached,
-  // then stop; they only run in sight, so each unfinished one is brought into view until it is done
-  const unfinished = await page.evaluate(() =>
-    Object.entries(globalThis.__shadingLab?.widgets ?? {})
-      .filter(([, w]) => w.getProgress && w.getProgress().frame < w.getProgress().target)
-      .map(([key]) => key),
-  );
-  for (const key of unfinished) {
-    await page.evaluate(
-      (k) => (document.querySelector(`[data-prefix="${k}"]`) ?? document.querySelector('.widget'))?.scrollIntoView(),
-      key,
-    );
-    await page.waitForFunction(
-      (k) => {
-        const p = globalThis.__shadingLab.widgets[k].getProgress();
-        return p.frame >= p.target;
-      },
-      { timeout: 120_000, polling: 250 },
-      key,
-    );
-  }
-}
-
-describe('idle pages draw nothing', () => {
-  for (const path of PAGES) {
-    it(path, async () => {
-      const page = await open(browser, path);
-      await visitAll(page);
-      const before = await draws(page);
-      await new Promise((r) => setTimeout(r, 2000));
-      expect(await draws(page)).toBe(before);
-      expect(page.errors).toEqual([]);
-      await page.close();
-    });
-  }
-});
 
 describe('views out of sight draw nothing', () => {
   it('a widget scrolled out of view does not draw on a state change, and draws once back in view', async () => {

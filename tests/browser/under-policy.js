@@ -2,7 +2,7 @@
 // each page does on load to wait for. Used by csp.test.js and pages-load.test.js.
 import { readdirSync } from 'node:fs';
 import { join } from 'node:path';
-import { baseUrl, settle } from './helpers.js';
+import { baseUrl, countDrawCalls, settle } from './helpers.js';
 import { ROOT, openPage } from './harness.js';
 
 /** Every violation in the page and its same-origin frames, in window.top.__csp (installed before any script). */
@@ -43,19 +43,28 @@ const ONE_EXERCISE = [
   },
 ];
 
+// the lab's references with fewer samples, as every browser test has them on software WebGL
+const LIGHT = { 'rendering.html': 'rendering.html?lab.refSamples=128&models.refSamples=128' };
+
 /** The pages to run: every built HTML file, the embed with a widget, exercises with ?src=. */
 export const POLICY_PAGES = [
-  ...BUILT.filter((f) => f !== 'embed.html'),
+  ...BUILT.filter((f) => f !== 'embed.html').map((f) => LIGHT[f] ?? f),
   'embed.html?w=fresnel-zones',
   `exercises.html?src=${encodeURIComponent(`data:application/json,${JSON.stringify(ONE_EXERCISE)}`)}`,
 ];
 
-/** Opens `path` with its violations recorded (window.__csp) and waits until it has done what it does on load. */
+/**
+ * Opens `path` with its violations recorded (window.__csp) and its draw calls counted (window.__drawCalls), and
+ * waits until it has done what it does on load.
+ */
 export async function openUnderPolicy(browser, path) {
   const page = await openPage(browser, baseUrl(), path, {
     width: 1100,
     height: 800,
-    beforeLoad: (p) => p.evaluateOnNewDocument(recordViolations),
+    beforeLoad: async (p) => {
+      await p.evaluateOnNewDocument(recordViolations);
+      await p.evaluateOnNewDocument(countDrawCalls);
+    },
   });
   const ready = READY[path.startsWith('embed.html') ? path : path.split('?')[0]] ?? chapterReady;
   if (ready) await page.waitForFunction(ready, { timeout: 60_000 });
