@@ -210,7 +210,7 @@ return vec3(${rho.toFixed(7)} / PI);
   });
 
   it('in the white furnace the Monte Carlo reference of ρ/π converges to the albedo ρ (GGX + cosine)', async () => {
-    const query = 'brdfSource=custom&punctual=0&env=1&environment=furnace&envMethod=importance&refSamples=512';
+    const query = 'brdfSource=custom&punctual=0&env=1&environment=furnace&envMethod=importance&refSamples=128';
     const page = await openWidget('material-lab', query);
     await typeCode(page, 'brdf', lambertCode, 1000);
     await page.waitForFunction(
