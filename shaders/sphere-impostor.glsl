@@ -33,10 +33,10 @@ SpherePixel spherePixel() {
   // half a pixel's diagonal is under 1: beyond, the pixel is all in or all out (and the edge's normal is not needed)
   float coverage = s >= 1.0 ? 1.0 : s <= -1.0 ? 0.0 : edgeCoverage(s, vSphere / r);
   if (coverage <= 0.0) discard;
-  // a pixel the silhouette cuts is shaded inside the part it covers, half a pixel in from the edge (not on it,
-  // where n·v = 0)
-  float rs = min(r, 1.0 - 0.5 * pixel);
-  vec2 xy = r > rs ? vSphere * (rs / r) : vSphere;
+  // a pixel the silhouette cuts is shaded at the middle of the part it covers, from the edge to s + 1/2 pixels in
+  // (but not on the edge, where n·v = 0): n·v changes fast there, and the pixel centre may be outside
+  float rs = s >= 0.5 ? r : 1.0 - pixel * max(0.5 * (s + 0.5), 0.1);
+  vec2 xy = vSphere * (rs / r);
   // 1 - r² as (1 - r)(1 + r): no cancellation near the silhouette
   return SpherePixel(vec3(xy, sqrt(max(sin2FromCos(rs), 0.0))), coverage);
 }
