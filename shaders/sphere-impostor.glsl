@@ -36,7 +36,7 @@ SpherePixel spherePixel() {
   // a pixel the silhouette cuts is shaded at the middle of the part it covers, from the edge to s + 1/2 pixels in
   // (but not on the edge, where n·v = 0): n·v changes fast there, and the pixel centre may be outside
   float rs = s >= 0.5 ? r : 1.0 - pixel * max(0.5 * (s + 0.5), 0.1);
-  vec2 xy = vSphere * (rs / r);
+  vec2 xy = s >= 0.5 ? vSphere : vSphere * (rs / r); // (r = 0 at the centre)
   // 1 - r² as (1 - r)(1 + r): no cancellation near the silhouette
   return SpherePixel(vec3(xy, sqrt(max(sin2FromCos(rs), 0.0))), coverage);
 }
