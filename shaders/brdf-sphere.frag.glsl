@@ -5,6 +5,8 @@
 // Under the light the BRDF has two layers: the specular lobe of brdf.glsl (its term switches NDF_*, VIS_*, F_*
 // pick D, V and F), off with SPECULAR_OFF; and the diffuse term of diffuse-term.glsl, there when a DIFFUSE_* term
 // switch is given and not DIFFUSE_OFF. Only what is on compiles.
+// With SPHERE_IMPOSTOR the sphere is ray-traced on a quad (sphere-impostor.glsl: the sphere grid); without, it is a
+// mesh with interpolated normals (surface.vert.glsl: bench/versus-three.js).
 #include "color.glsl"
 #if defined(COMPENSATION_KULLA_CONTY) || defined(COMPENSATION_TURQUIN)
 #include "multiple-scattering.glsl"
@@ -20,8 +22,12 @@
 #endif
 #endif
 
+#ifdef SPHERE_IMPOSTOR
+#include "sphere-impostor.glsl"
+#else
 in vec3 vNormal;
 in vec3 vViewPosition;
+#endif
 uniform vec3 uLightDir;
 uniform float uLightIntensity;
 uniform float uExposure;
@@ -37,8 +43,14 @@ uniform float uSigma;
 out vec4 fragColor;
 
 void main() {
+#ifdef SPHERE_IMPOSTOR
+  SpherePixel pixel = spherePixel();
+  vec3 n = pixel.n;
+  vec3 v = vec3(0.0, 0.0, 1.0);
+#else
   vec3 n = normalize(vNormal);
   vec3 v = isOrthographic ? vec3(0.0, 0.0, 1.0) : normalize(-vViewPosition);
+#endif
   float nv = dot(n, v);
 #if defined(COMPENSATION_KULLA_CONTY)
   float radiance = specularAlbedoKullaConty(nv, uAlpha, 1.0);
@@ -62,5 +74,9 @@ void main() {
 #endif
   float radiance = PI * f * uLightIntensity * max(l.z, 0.0);
 #endif
+#ifdef SPHERE_IMPOSTOR
+  fragColor = overBackground(vec3(radiance * uExposure), pixel.coverage);
+#else
   fragColor = vec4(linearToSrgb(vec3(radiance * uExposure)), 1.0);
+#endif
 }

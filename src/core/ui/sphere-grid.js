@@ -1,9 +1,9 @@
 // A row of spheres in one canvas, each shaded by its own BRDF variant (brdf-sphere.frag.glsl) under the
-// same punctual light, or in the white furnace. Cells: [{ label, defines, uniforms, probe, own? }]; each cell
-// is one draw in its own viewport. Variants are compiled once and reused. A cell with a user-written term brings
-// its chunks (`own`: { key, chunks }, key naming the code): its program is kept while a cell draws it. Hovering
-// a sphere probes it: the angles there, and the rows the cell's probe(angles, n) returns ([[label, text], ...]; n
-// in view space).
+// same punctual light, or in the white furnace, each a ray-traced impostor (sphere-impostor.js). Cells: [{ label,
+// defines, uniforms, probe, own? }]; each cell is one draw in its own viewport. Variants are compiled once and
+// reused. A cell with a user-written term brings its chunks (`own`: { key, chunks }, key naming the code): its
+// program is kept while a cell draws it. Hovering a sphere probes it: the angles there, and the rows the cell's
+// probe(angles, n) returns ([[label, text], ...]; n in view space).
 import * as THREE from 'three';
 import { createViewport } from '../gpu/viewport.js';
 import { assembleGlsl } from '../gpu/glsl.js';
@@ -11,6 +11,7 @@ import { SHADER_CHUNKS } from '../gpu/shader-chunks.js';
 import { createProgramCache, definesKey } from '../gpu/program-cache.js';
 import { angleText, probeAngles, showProbeRows } from './probe.js';
 import { drawSideBySide } from './side-by-side.js';
+import { HALF_SIZE, IMPOSTOR_VERTEX, createImpostorView } from './sphere-impostor.js';
 import { NDF_FAMILY } from '../../math/catalogue/ndf-terms.js';
 
 /** Every uniform a cell's program may read, with its value when the cell gives none (brdf-sphere.frag.glsl). */
@@ -29,16 +30,15 @@ const UNIFORM_DEFAULTS = {
   uSigma: 0,
   uDfg: null, // the split-sum table, for the furnace
   uAlbedoTableGGX: null, // the albedo-loss table, for the compensated furnace
+  uBackground: [0, 0, 0], // the grid's background (linear RGB), for the antialiased silhouette
 };
-
-const HALF_SIZE = 1.08; // the orthographic camera's half extent: the unit sphere fills 1/1.08 of a cell
 
 /** The names of the uniforms the sphere grid feeds brdf-sphere.frag.glsl (the program-variants test checks them). */
 export const SPHERE_UNIFORMS = Object.keys(UNIFORM_DEFAULTS);
 
 /** The sphere's fragment program for `defines`, with `chunks` (the app's, or those with a user's term). */
 export const sphereFragment = (defines, chunks = SHADER_CHUNKS) =>
-  assembleGlsl(chunks['brdf-sphere.frag.glsl'], { defines, chunks });
+  assembleGlsl(chunks['brdf-sphere.frag.glsl'], { defines: { ...defines, SPHERE_IMPOSTOR: true }, chunks });
 
 /** The program of one set of #define switches, its uniforms set to the defaults (and `extra`'s: a user's sliders). */
 const sphereMaterial = (defines, chunks = SHADER_CHUNKS, extra = {}) =>
@@ -50,7 +50,7 @@ const sphereMaterial = (defines, chunks = SHADER_CHUNKS, extra = {}) =>
         { value: Array.isArray(v) ? new THREE.Vector3(...v) : v },
       ]),
     ),
-    vertexShader: SHADER_CHUNKS['surface.vert.glsl'],
+    vertexShader: IMPOSTOR_VERTEX,
     fragmentShader: sphereFragment(defines, chunks),
   });
 
@@ -99,28 +99,14 @@ function drawCells(renderer, cells, programs, view) {
   drawSideBySide(renderer, cells.length, (i) => {
     const cell = cells[i];
     const material = cell.own ? programs.own.get(cell) : programs.get(cell.defines);
-    for (const [k, v] of Object.entries(withDerived({ ...UNIFORM_DEFAULTS, ...cell.uniforms }))) {
+    const uniforms = { ...UNIFORM_DEFAULTS, uBackground: view.background, ...cell.uniforms };
+    for (const [k, v] of Object.entries(withDerived(uniforms))) {
       if (Array.isArray(v)) material.uniforms[k].value.set(...v);
       else material.uniforms[k].value = v;
     }
     view.mesh.material = material;
     renderer.render(view.scene, view.camera);
   });
-}
-
-/**
- * The unit sphere, alone in a scene under an orthographic camera that frames it in a cell. Only its half that
- * faces the camera (z ≥ 0) is made: the same vertices and triangles as that half of a 128 × 64 sphere (the other
- * half is culled as back faces), with half the vertex work.
- */
-function sphereView(background) {
-  const geometry = new THREE.SphereGeometry(1, 64, 64, 0, Math.PI);
-  const mesh = new THREE.Mesh(geometry);
-  const scene = new THREE.Scene().add(mesh);
-  scene.background = new THREE.Color(background);
-  const camera = new THREE.OrthographicCamera(-HALF_SIZE, HALF_SIZE, HALF_SIZE, -HALF_SIZE, 0.1, 10);
-  camera.position.z = 5;
-  return { mesh, scene, camera, dispose: () => geometry.dispose() };
 }
 
 /**
@@ -205,10 +191,14 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
   let cells = [];
   let drawnOnce = false;
   const programs = Object.assign(createProgramCache(sphereMaterial), { own: createOwnPrograms() });
-  const view = sphereView(background);
+  const view = createImpostorView(background);
   const labels = document.createElement('div');
   labels.className = 'sphere-labels';
-  const viewport = createViewport(container, { draw: (renderer) => drawCells(renderer, cells, programs, view), label });
+  const viewport = createViewport(container, {
+    draw: (renderer) => drawCells(renderer, cells, programs, view),
+    label,
+    antialias: false, // the spheres smooth their own silhouettes
+  });
   if (viewport) {
     viewport.holder.classList.add('sphere-grid');
     viewport.holder.classList.toggle('light-background', new THREE.Color(background).getHSL({}).l > 0.6);

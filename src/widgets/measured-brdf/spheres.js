@@ -1,10 +1,12 @@
 // Spheres of tabulated BRDFs under one punctual light, side by side: the measured table and a fit tabulated
-// the same way, each a 3-D texture (90 θh × 90 θd × 180 φd texels, RGBA half floats) read by measured.glsl.
+// the same way, each a 3-D texture (90 θh × 90 θd × 180 φd texels, RGBA half floats) read by measured.glsl, on a
+// ray-traced impostor (sphere-impostor.js).
 import * as THREE from 'three';
 import { createViewport } from '../../core/gpu/viewport.js';
 import { drawSideBySide } from '../../core/ui/side-by-side.js';
 import { assembleGlsl } from '../../core/gpu/glsl.js';
 import { SHADER_CHUNKS } from '../../core/gpu/shader-chunks.js';
+import { IMPOSTOR_VERTEX, createImpostorView } from '../../core/ui/sphere-impostor.js';
 import { MERL_DIMS } from '../../measured/merl.js';
 
 /** A table (RGBA half floats, MERL order) as the 3-D texture measured.glsl reads. */
@@ -25,19 +27,23 @@ export function tableTexture(half) {
   return t;
 }
 
+const BACKGROUND = '#16181d';
+
 export function createMeasuredSpheres(container, { label }) {
   const slots = [null, null]; // { texture, name }
+  const view = createImpostorView(BACKGROUND);
   const material = new THREE.ShaderMaterial({
     glslVersion: THREE.GLSL3,
-    uniforms: { uMeasured: { value: null }, uLightDir: { value: new THREE.Vector3(0, 0, 1) }, uExposure: { value: 1 } },
-    vertexShader: SHADER_CHUNKS['surface.vert.glsl'],
+    uniforms: {
+      uMeasured: { value: null },
+      uLightDir: { value: new THREE.Vector3(0, 0, 1) },
+      uExposure: { value: 1 },
+      uBackground: { value: new THREE.Vector3(...view.background) },
+    },
+    vertexShader: IMPOSTOR_VERTEX,
     fragmentShader: assembleGlsl(SHADER_CHUNKS['measured-sphere.frag.glsl'], { defines: {} }),
   });
-  const geometry = new THREE.SphereGeometry(1, 128, 64);
-  const scene = new THREE.Scene().add(new THREE.Mesh(geometry, material));
-  scene.background = new THREE.Color('#16181d');
-  const camera = new THREE.OrthographicCamera(-1.08, 1.08, 1.08, -1.08, 0.1, 10);
-  camera.position.z = 5;
+  view.mesh.material = material;
   const names = document.createElement('div');
   names.className = 'sphere-labels';
 
@@ -45,15 +51,16 @@ export function createMeasuredSpheres(container, { label }) {
     drawSideBySide(renderer, slots.length, (i) => {
       if (slots[i]) {
         material.uniforms.uMeasured.value = slots[i].texture;
-        renderer.render(scene, camera);
+        renderer.render(view.scene, view.camera);
       } else {
-        renderer.setClearColor('#16181d');
+        renderer.setClearColor(BACKGROUND);
         renderer.clear();
       }
     });
   const viewport = createViewport(container, {
     draw,
     label,
+    antialias: false, // the spheres smooth their own silhouettes
     onContextLost: () => slots.forEach((s) => s && (s.texture.needsUpdate = true)),
   });
   if (viewport) {
@@ -83,7 +90,7 @@ export function createMeasuredSpheres(container, { label }) {
     dispose() {
       slots.forEach((s) => s?.texture.dispose());
       material.dispose();
-      geometry.dispose();
+      view.dispose();
       viewport?.dispose();
     },
   };
