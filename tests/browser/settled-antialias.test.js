@@ -22,8 +22,8 @@ afterAll(async () => {
 /**
  * In the page, before it loads: counts draw calls by the sample count of the framebuffer they draw into
  * (window.__draws: { plain, multisampled }); logs each frame of the render loop as it starts (window.__frameLog:
- * { at, multisampled so far }) and keeps it as read back right after it was drawn (window.__frame, RGBA). With
- * `contextAntialias`, every WebGL2 context is made multisampled.
+ * { at, multisampled so far }) and keeps it as read back right after it was drawn (window.__frame, RGBA); keeps
+ * the last file saved (window.__saved). With `contextAntialias`, every WebGL2 context is made multisampled.
  */
 function instrument(contextAntialias) {
   window.__draws = { plain: 0, multisampled: 0 };
@@ -46,6 +46,8 @@ function instrument(contextAntialias) {
     gl.readPixels(0, 0, gl.drawingBufferWidth, gl.drawingBufferHeight, gl.RGBA, gl.UNSIGNED_BYTE, window.__frame);
   };
   window.__frameLog = [];
+  const createObjectURL = URL.createObjectURL;
+  URL.createObjectURL = (blob) => ((window.__saved = blob), createObjectURL(blob)); // the last file saved
   let frames = 0;
   // the render loop counts a frame right before drawing it: read it back once the draw is done (same task)
   globalThis.__shadingLab = {
@@ -96,6 +98,19 @@ const counts = (page, withFrame = false) =>
     const { frames } = globalThis.__shadingLab;
     return { frames, ...window.__draws, frame: btoa(frame), log: window.__frameLog.slice() };
   }, withFrame);
+
+/** In the page: the last PNG saved, as RGBA rows bottom to top (as WebGL reads them back), base64. */
+const savedPixels = (page) =>
+  page.evaluate(async () => {
+    const bitmap = await createImageBitmap(window.__saved);
+    const ctx = new OffscreenCanvas(bitmap.width, bitmap.height).getContext('2d');
+    ctx.drawImage(bitmap, 0, 0);
+    const { data, width, height } = ctx.getImageData(0, 0, bitmap.width, bitmap.height);
+    let text = '';
+    for (let y = height - 1; y >= 0; y--)
+      text += String.fromCharCode(...data.subarray(y * width * 4, (y + 1) * width * 4));
+    return btoa(text);
+  });
 
 /** A drag of the light, one change per frame; and the state once it has paused. */
 async function drag(page) {
@@ -151,6 +166,27 @@ describe("antialias: 'settled' (fresnel-zones)", () => {
     const after = await counts(page);
     // (its zone shares are measured after it: plain draws into float images, no frame)
     expect([after.frames, after.multisampled]).toEqual([changed.frames, changed.multisampled]);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('saves the multisampled picture from the middle of a drag, its frame still plain', async () => {
+    const page = await openZones();
+    for (const lightTheta of DRAG) await change(page, { lightTheta });
+    const atSave = await page.$eval('.widget-fresnel-zones .save-view', (button) => {
+      const multisampled = window.__draws.multisampled;
+      button.click(); // the still is redrawn in the click's task
+      return { frames: globalThis.__shadingLab.frames, multisampled: window.__draws.multisampled - multisampled };
+    });
+    expect(atSave.multisampled, 'the mesh drawn multisampled for the still').toBe(1);
+    await page.waitForFunction(() => window.__saved, { timeout: 10_000 });
+    const plain = await counts(page, true);
+    await settle(page, 800);
+    const settled = await counts(page, true);
+    expect(settled.frames, 'the pause came after the save').toBe(atSave.frames + 1);
+    const saved = await savedPixels(page);
+    expect(saved === settled.frame, 'saved picture = settled frame, byte for byte').toBe(true);
+    expect(saved).not.toBe(plain.frame);
     expect(page.errors).toEqual([]);
     await page.close();
   });
