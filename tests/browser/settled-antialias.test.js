@@ -190,4 +190,21 @@ describe("antialias: 'settled' (fresnel-zones)", () => {
     expect(page.errors).toEqual([]);
     await page.close();
   });
+
+  it('draws the same multisampled picture after its context is lost and restored', async () => {
+    const page = await openZones();
+    const before = await counts(page, true);
+    await page.evaluate(() => {
+      const lose = document.querySelector('.widget canvas').getContext('webgl2').getExtension('WEBGL_lose_context');
+      lose.loseContext();
+      setTimeout(() => lose.restoreContext(), 300);
+    });
+    await settle(page, 1500);
+    const after = await counts(page, true);
+    expect(after.frames).toBeGreaterThan(before.frames);
+    expect(after.multisampled - before.multisampled, 'the mesh, multisampled').toBe(1);
+    expect(after.frame === before.frame, 'the frame before the loss = the frame after, byte for byte').toBe(true);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
 });
