@@ -4,9 +4,9 @@
 // framebuffer and resolved onto the canvas, as a multisampled context does with every frame. A frame after a pause
 // (a lone change: a click) goes straight to the multisampled one.
 //
-// three.js draws into that framebuffer as into any render target, where it leaves its own colours (a scene's
-// background, fog, its built-in materials) in the working colour space, where on the canvas it encodes them for
-// the display: a view that opts in writes display values itself and gives such colours already encoded when
+// three.js draws into that framebuffer as into any render target: it leaves its own colours (a scene's background,
+// fog, its built-in materials) in the working colour space there, and encodes them for the display only on the
+// canvas. So a view that opts in writes display values itself, and gives such colours already encoded when
 // `renderer.getRenderTarget()` is set.
 import * as THREE from 'three';
 import { createSettledTask } from './render-loop.js';
