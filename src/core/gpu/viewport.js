@@ -3,11 +3,16 @@
 // budget (gl-budget.js): given up while the view is far out of sight if another view needs it, taken back
 // before the view returns, and the frame redrawn from the widget's state.
 //
+// antialias: true (the context multisamples every frame), false (a view that smooths its own edges), or 'settled'
+// (plain frames during a drag, one multisampled frame once it pauses: settled-antialias.js; stills read from the
+// canvas get the multisampled one).
+//
 // onContextLost(): GPU content the widget filled once and keeps (a prefiltered environment, an
 // accumulation buffer) is gone with the context; drop it so that draw() builds it again.
 import * as THREE from 'three';
 import { createRenderLoop } from './render-loop.js';
 import { createBudgetedContext } from './gl-context.js';
+import { createSettledAntialias } from './settled-antialias.js';
 import { showBlockingMessage } from '../framework/notice.js';
 import { registerRedraw } from '../framework/snapshot.js';
 import { describeCanvas } from '../framework/describe.js';
@@ -24,7 +29,8 @@ function noWebGl2(holder, canvas) {
   return null;
 }
 
-export function createViewport(container, { draw, onResize, onContextLost, label, antialias = true }) {
+/** The view's box in `container`, and its canvas in it. */
+function createHolder(container) {
   const holder = document.createElement('div');
   holder.className = 'viewport';
   const canvas = document.createElement('canvas');
@@ -32,6 +38,11 @@ export function createViewport(container, { draw, onResize, onContextLost, label
   canvas.setAttribute('role', 'img');
   holder.append(canvas);
   container.append(holder);
+  return { holder, canvas };
+}
+
+export function createViewport(container, { draw, onResize, onContextLost, label, antialias = true }) {
+  const { holder, canvas } = createHolder(container);
 
   let message = null; // { kind, box }
   const say = (kind, title, text) => {
@@ -39,11 +50,14 @@ export function createViewport(container, { draw, onResize, onContextLost, label
     message = kind ? { kind, box: showBlockingMessage(holder, title, text) } : null;
   };
   let loop = null;
+  let settled = null; // with antialias: 'settled'
+  const contextAntialias = antialias === true;
   const context = createBudgetedContext(
     canvas,
-    { antialias, alpha: false },
+    { antialias: contextAntialias, alpha: false },
     {
       onLost(planned) {
+        settled?.drop();
         onContextLost?.();
         if (!planned)
           say(
@@ -69,14 +83,13 @@ export function createViewport(container, { draw, onResize, onContextLost, label
   );
   if (!context) return noWebGl2(holder, canvas);
   if (label) describeCanvas(canvas, label); // the first words; a widget may describe the view better later
-  const renderer = new THREE.WebGLRenderer({ canvas, context: context.gl, antialias });
+  const renderer = new THREE.WebGLRenderer({ canvas, context: context.gl, antialias: contextAntialias });
   renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
-  loop = createRenderLoop(
-    holder,
-    () => draw(renderer),
-    () => context.live,
-  );
-  registerRedraw(canvas, () => context.live && draw(renderer));
+  if (antialias === 'settled') settled = createSettledAntialias(renderer, draw, () => loop.invalidate());
+  const drawFrame = () => draw(renderer);
+  loop = createRenderLoop(holder, settled?.frame ?? drawFrame, () => context.live);
+  const drawStill = settled?.drawSettled ?? drawFrame;
+  registerRedraw(canvas, () => context.live && drawStill());
   context.start();
 
   const resize = new ResizeObserver(() => {
@@ -100,6 +113,7 @@ export function createViewport(container, { draw, onResize, onContextLost, label
     dispose() {
       resize.disconnect();
       loop.dispose();
+      settled?.dispose();
       renderer.dispose();
       context.dispose();
       holder.remove();

@@ -46,7 +46,8 @@ export function create(container, initialState = {}, { onStateChange, locked } =
     view.fit(w, h);
     stats?.invalidate();
   };
-  const viewport = createViewport(column, { draw, onResize, label: 'Fresnel zones view' });
+  // multisampling only once a drag pauses: the meshes' silhouettes need it, a drag's frames cannot afford it
+  const viewport = createViewport(column, { draw, onResize, label: 'Fresnel zones view', antialias: 'settled' });
   if (viewport) {
     stats = createZoneStats(viewport.renderer, view);
     const getZoneShares = () => (measureLater.flush(), stats.measured.zoneShares);

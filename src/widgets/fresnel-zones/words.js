@@ -11,7 +11,8 @@ export const ABOUT =
   'Drag on the picture (or focus it and use the arrow keys) to move the light; the ring marks light at 90° ' +
   'from the view. Start with the glass Fresnel of n·v: dark centre, bright rim. Then compare the zones of n·v ' +
   'with the zones of l·h: by l·h the whole object can turn yellow or red, yet once weighted by the rest of the ' +
-  'BRDF the light that actually reaches the eye is mostly green. Hover the surface to probe it.';
+  'BRDF the light that actually reaches the eye is mostly green. Hover the surface to probe it. While the light ' +
+  'moves, edges are drawn without smoothing so that the picture keeps up; they are smoothed once it stops.';
 
 const pct = (x) => `${(x * 100).toFixed(1)}%`;
 /** A zone's short name: 'barely changes', … */

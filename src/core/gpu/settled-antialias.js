@@ -1,0 +1,114 @@
+// Multisampling once the changes pause: on software WebGL a multisampled frame of a large view costs about twice a
+// plain one. A frame that follows another within `quietMs` (a drag) is drawn plainly on the canvas (its context
+// made without multisampling), and once the changes pause the same state is drawn once more into a multisampled
+// framebuffer and resolved onto the canvas, as a multisampled context does with every frame. A frame after a pause
+// (a lone change: a click) goes straight to the multisampled one.
+//
+// three.js draws into that framebuffer as into any render target: it leaves its own colours (a scene's background,
+// fog, its built-in materials) in the working colour space there, and encodes them for the display only on the
+// canvas. So a view that opts in writes display values itself, and gives such colours already encoded when
+// `renderer.getRenderTarget()` is set.
+import * as THREE from 'three';
+import { createSettledTask } from './render-loop.js';
+
+const SAMPLES = 4; // what a WebGL context's own multisampling gives (Chromium, SwiftShader included)
+
+/**
+ * A framebuffer of SAMPLES-sample colour and depth renderbuffers, sized by `fit(w, h)`; its colour has the canvas's
+ * format (RGB8 without alpha), as a blit that resolves samples needs the same format on both sides.
+ */
+function createMultisampledFramebuffer(renderer) {
+  const gl = renderer.getContext();
+  const framebuffer = gl.createFramebuffer();
+  const color = gl.createRenderbuffer();
+  const depth = gl.createRenderbuffer();
+  const colorFormat = gl.getContextAttributes()?.alpha ? gl.RGBA8 : gl.RGB8;
+  let [width, height] = [0, 0];
+  const store = (renderbuffer, format, attachment) => {
+    gl.bindRenderbuffer(gl.RENDERBUFFER, renderbuffer);
+    gl.renderbufferStorageMultisample(gl.RENDERBUFFER, SAMPLES, format, width, height);
+    gl.framebufferRenderbuffer(gl.FRAMEBUFFER, attachment, gl.RENDERBUFFER, renderbuffer);
+  };
+  return {
+    framebuffer,
+    fit(w, h) {
+      if (w === width && h === height) return;
+      [width, height] = [w, h];
+      renderer.state.bindFramebuffer(gl.FRAMEBUFFER, framebuffer);
+      store(color, colorFormat, gl.COLOR_ATTACHMENT0);
+      store(depth, gl.DEPTH_COMPONENT24, gl.DEPTH_ATTACHMENT);
+      gl.bindRenderbuffer(gl.RENDERBUFFER, null);
+      renderer.state.bindFramebuffer(gl.FRAMEBUFFER, null);
+    },
+    /** Resolves the samples onto the canvas. */
+    resolve() {
+      renderer.state.bindFramebuffer(gl.READ_FRAMEBUFFER, framebuffer);
+      renderer.state.bindFramebuffer(gl.DRAW_FRAMEBUFFER, null);
+      gl.blitFramebuffer(0, 0, width, height, 0, 0, width, height, gl.COLOR_BUFFER_BIT, gl.NEAREST);
+      renderer.state.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
+    },
+    dispose() {
+      gl.deleteFramebuffer(framebuffer);
+      gl.deleteRenderbuffer(color);
+      gl.deleteRenderbuffer(depth);
+    },
+  };
+}
+
+/**
+ * `draw(renderer)` draws a frame into the renderer's current target (the canvas, or the multisampled framebuffer);
+ * `invalidate()` asks the render loop for a frame. Returns `frame()`, the render loop's draw, which picks plain or
+ * multisampled; `drawSettled()`, the multisampled frame now (for a still read from the canvas); `drop()`, after a
+ * context loss; `dispose()`.
+ */
+export function createSettledAntialias(renderer, draw, invalidate, { quietMs = 130 } = {}) {
+  const size = new THREE.Vector2();
+  const target = new THREE.WebGLRenderTarget(1, 1); // three.js's handle on the framebuffer: its size, its viewport
+  let multisampled = null; // made on first use, and again after a context loss
+  let lastFrameAt = -Infinity;
+  let due = false; // the pause came: the next frame is the multisampled one
+  const settle = createSettledTask(
+    () => {
+      due = true;
+      invalidate();
+    },
+    { quietMs, maxWaitMs: Infinity },
+  );
+
+  const drawSettled = () => {
+    renderer.getDrawingBufferSize(size);
+    multisampled ??= createMultisampledFramebuffer(renderer);
+    multisampled.fit(size.x, size.y);
+    target.setSize(size.x, size.y);
+    renderer.setRenderTargetFramebuffer(target, multisampled.framebuffer); // again after a restore: three forgets
+    const previous = renderer.getRenderTarget();
+    renderer.setRenderTarget(target);
+    draw(renderer);
+    renderer.setRenderTarget(previous);
+    multisampled.resolve();
+  };
+
+  return {
+    frame() {
+      const now = performance.now();
+      if (due || now - lastFrameAt >= quietMs) {
+        due = false;
+        settle.cancel();
+        drawSettled();
+      } else {
+        draw(renderer);
+        settle.schedule();
+      }
+      lastFrameAt = now;
+    },
+    drawSettled,
+    drop() {
+      multisampled = null; // its objects died with the context
+    },
+    dispose() {
+      settle.cancel();
+      multisampled?.dispose();
+      target.dispose();
+    },
+  };
+}
