@@ -1,4 +1,5 @@
-// Multisampling once the changes pause (src/core/gpu/settled-antialias.js), in fresnel-zones: WebGL itself tells
+// Multisampling once the changes pause (src/core/gpu/settled-antialias.js), in fresnel-zones (its own shader) and
+// the 3-D lobe of brdf-lobe (three.js's built-in materials, colour-managed by three.js): WebGL itself tells
 // how each draw call was sampled (the SAMPLES of the framebuffer it draws into), and each frame is read back in the
 // task that drew it. The reference for the settled picture is the one before this mode: the same page with its
 // WebGL context made multisampled (antialias: true), drawn straight to the canvas.
@@ -9,6 +10,7 @@ import { openPage } from './harness.js';
 const WIDGET = 'fresnel-zones';
 const PAGE = `embed.html?w=${WIDGET}&shape=teapot&mode=zones-nv&camera=perspective`;
 const DRAG = [30, 34, 38, 42, 46, 50, 54, 58]; // light θ, one change per frame
+const LOBE = 'brdf-lobe'; // its 3-D lobe view: a surface patch, two lobes and arrows
 const QUIET_MS = 130; // the pause after which a frame is multisampled (settled-antialias.js)
 
 let browser;
@@ -40,7 +42,7 @@ function instrument(contextAntialias) {
     return getContext.call(this, type, forced);
   };
   const readFrame = () => {
-    const gl = document.querySelector('.widget canvas')?.getContext('webgl2');
+    const gl = document.querySelector('.viewport canvas')?.getContext('webgl2');
     if (!gl) return;
     window.__frame = new Uint8Array(gl.drawingBufferWidth * gl.drawingBufferHeight * 4);
     gl.readPixels(0, 0, gl.drawingBufferWidth, gl.drawingBufferHeight, gl.RGBA, gl.UNSIGNED_BYTE, window.__frame);
@@ -62,17 +64,18 @@ function instrument(contextAntialias) {
   };
 }
 
-async function openZones(contextAntialias = false) {
-  const page = await openPage(browser, baseUrl(), PAGE, {
+async function openWidget(widget, path, contextAntialias = false) {
+  const page = await openPage(browser, baseUrl(), path, {
     beforeLoad: (p) => p.evaluateOnNewDocument(instrument, contextAntialias),
   });
-  await page.waitForFunction((w) => globalThis.__shadingLab?.widgets?.[w], { timeout: 30_000 }, WIDGET);
+  await page.waitForFunction((w) => globalThis.__shadingLab?.widgets?.[w], { timeout: 30_000 }, widget);
   await settle(page, 1000);
   return page;
 }
+const openZones = (contextAntialias = false) => openWidget(WIDGET, PAGE, contextAntialias);
 
 /** In the page: the state change, then the frame it causes (or none within a second). */
-const change = (page, partial) =>
+const change = (page, partial, widget = WIDGET) =>
   page.evaluate(
     (w, p) => {
       const lab = globalThis.__shadingLab;
@@ -85,7 +88,7 @@ const change = (page, partial) =>
         requestAnimationFrame(wait);
       });
     },
-    WIDGET,
+    widget,
     partial,
   );
 
@@ -113,9 +116,9 @@ const savedPixels = (page) =>
   });
 
 /** A drag of the light, one change per frame; and the state once it has paused. */
-async function drag(page) {
+async function drag(page, widget = WIDGET) {
   const start = await counts(page);
-  for (const lightTheta of DRAG) await change(page, { lightTheta });
+  for (const lightTheta of DRAG) await change(page, { lightTheta }, widget);
   const dragged = await counts(page, true);
   await settle(page, 800);
   return { start, dragged, settled: await counts(page, true) };
@@ -195,7 +198,7 @@ describe("antialias: 'settled' (fresnel-zones)", () => {
     const page = await openZones();
     const before = await counts(page, true);
     await page.evaluate(() => {
-      const lose = document.querySelector('.widget canvas').getContext('webgl2').getExtension('WEBGL_lose_context');
+      const lose = document.querySelector('.viewport canvas').getContext('webgl2').getExtension('WEBGL_lose_context');
       lose.loseContext();
       setTimeout(() => lose.restoreContext(), 300);
     });
@@ -206,5 +209,23 @@ describe("antialias: 'settled' (fresnel-zones)", () => {
     expect(after.frame === before.frame, 'the frame before the loss = the frame after, byte for byte').toBe(true);
     expect(page.errors).toEqual([]);
     await page.close();
+  });
+});
+
+describe("antialias: 'settled' with three.js's own materials (the 3-D lobe of brdf-lobe)", () => {
+  it('draws a drag plainly, then a multisampled frame equal to that of a multisampled context', async () => {
+    const page = await openWidget(LOBE, `embed.html?w=${LOBE}`);
+    const { start, dragged, settled } = await drag(page, LOBE);
+    expect(dragged.frames - start.frames, 'a frame per change').toBe(DRAG.length);
+    expect(dragged.plain, 'the drag drew plain frames').toBeGreaterThan(start.plain);
+    expect(settled.frames - dragged.frames, 'frames after the pause').toBe(1);
+    expect(settled.multisampled, 'the frame after the pause, multisampled').toBeGreaterThan(dragged.multisampled);
+    const reference = await openWidget(LOBE, `embed.html?w=${LOBE}`, true);
+    const { dragged: referenceLast } = await drag(reference, LOBE);
+    expect(settled.frame === referenceLast.frame, 'settled frame = context-multisampled frame, byte for byte').toBe(
+      true,
+    );
+    expect([...page.errors, ...reference.errors]).toEqual([]);
+    await Promise.all([page.close(), reference.close()]);
   });
 });

@@ -4,10 +4,9 @@
 // framebuffer and resolved onto the canvas, as a multisampled context does with every frame. A frame after a pause
 // (a lone change: a click) goes straight to the multisampled one.
 //
-// three.js draws into that framebuffer as into any render target: it leaves its own colours (a scene's background,
-// fog, its built-in materials) in the working colour space there, and encodes them for the display only on the
-// canvas. So a view that opts in writes display values itself, and gives such colours already encoded when
-// `renderer.getRenderTarget()` is set.
+// three.js draws into that framebuffer through a render target marked as its WebXR views' are (a framebuffer that
+// stands for the display): its own colours (a scene's background, its built-in materials) are encoded and tone
+// mapped there as on the canvas, not left in the working colour space as in a render target read as a texture.
 import * as THREE from 'three';
 import { createSettledTask } from './render-loop.js';
 
@@ -63,7 +62,9 @@ function createMultisampledFramebuffer(renderer) {
  */
 export function createSettledAntialias(renderer, draw, invalidate, { quietMs = 130 } = {}) {
   const size = new THREE.Vector2();
-  const target = new THREE.WebGLRenderTarget(1, 1); // three.js's handle on the framebuffer: its size, its viewport
+  // three.js's handle on the framebuffer (its size, its viewport), in the canvas's colour space
+  const target = new THREE.WebGLRenderTarget(1, 1, { colorSpace: renderer.outputColorSpace });
+  target.isXRRenderTarget = true; // what three.js checks to treat a target's framebuffer as the display
   let multisampled = null; // made on first use, and again after a context loss
   let lastFrameAt = -Infinity;
   let due = false; // the pause came: the next frame is the multisampled one

@@ -129,6 +129,7 @@ export function createLobeView(container, { onContextChange } = {}) {
       camera.updateProjectionMatrix();
     },
     label: 'BRDF lobe in 3-D',
+    antialias: 'settled', // multisampling doubles its frame on software WebGL: a drag's frames go without
   });
   if (viewport) {
     controls = new OrbitControls(camera, viewport.canvas);

@@ -10,12 +10,6 @@ import { createShapeGeometry } from './shapes.js';
 
 const HALF = 1.1; // half the shorter side of the view, in scene units: the unit sphere and a margin
 const FOV_DEG = 30; // the perspective camera's field across the shorter side
-const BACKGROUND = new THREE.Color('#22252b');
-// three.js encodes a background to sRGB on the canvas but clears a render target (the viewport's multisampled
-// frame) with its linear values; this shader writes display values in both, so a target gets them encoded
-const BACKGROUND_IN_TARGET = (({ r, g, b }) => new THREE.Color(r, g, b))(
-  BACKGROUND.getRGB({ r: 0, g: 0, b: 0 }, THREE.SRGBColorSpace),
-);
 
 function createCameras() {
   const cameras = {
@@ -75,6 +69,7 @@ export function createZonesScene(getState) {
       }),
   );
   const scene = new THREE.Scene();
+  scene.background = new THREE.Color('#22252b');
   const mesh = new THREE.Mesh(createShapeGeometry(getState().shape), undefined);
   scene.add(mesh);
   const cameras = createCameras();
@@ -92,7 +87,6 @@ export function createZonesScene(getState) {
     lightFrom: (direction) => uniforms.uLightDir.value.set(...direction),
     render(renderer) {
       mesh.material = programs.get(programDefines(getState(), false));
-      scene.background = renderer.getRenderTarget() ? BACKGROUND_IN_TARGET : BACKGROUND;
       renderer.render(scene, camera());
     },
     /** Draws the one-hot zone coverage into `target`, on a transparent background, for the GPU sum. */

@@ -39,7 +39,12 @@ export function planeOfIncidence(f, lightDeg) {
  */
 export function lobe3dSpec(lookup, fitF, lightDeg, directions) {
   const l = lightDir(lightDeg);
-  const green = (f) => (f ? (v) => Math.max(f(l, v)[1], 0) : null);
+  // each lobe evaluated once per direction (the view reads them back by direction, after the maximum)
+  const green = (f) => {
+    if (!f) return null;
+    const values = new Map(directions.map((v) => [v, Math.max(f(l, v)[1], 0)]));
+    return (v) => values.get(v);
+  };
   const [fA, fB] = [green(lookup), green(fitF)];
   const max = Math.max(1e-9, ...directions.map((v) => Math.max(fA(v), fB ? fB(v) : 0)));
   return { fA, fB, max, directions: { n: [0, 0, 1], l, v: null, h: null, mirror: [-l[0], 0, l[2]] } };
