@@ -122,29 +122,34 @@ export function measuredFromTable(table) {
     const k0 = Math.min(Math.floor(p), NP - 1);
     const fk = p - k0;
     const k1 = (k0 + 1) % NP;
+    // the eight nodes around the point and their weights, once for the three channels (a lookup per vertex of
+    // the 3-D lobe at every change: no arrays made in the channel loop)
+    const nodes = [];
+    const weights = [];
+    for (const [i, wi] of [
+      [i0, 1 - fi],
+      [i1, fi],
+    ])
+      for (const [j, wj] of [
+        [j0, 1 - fj],
+        [j1, fj],
+      ])
+        for (const [k, wk] of [
+          [k0, 1 - fk],
+          [k1, fk],
+        ]) {
+          nodes.push(merlIndex(i, j, k));
+          weights.push(wi * wj * wk);
+        }
     const out = [0, 0, 0];
     for (let c = 0; c < 3; c++) {
       let sum = 0;
       let weight = 0;
-      for (const [i, wi] of [
-        [i0, 1 - fi],
-        [i1, fi],
-      ]) {
-        for (const [j, wj] of [
-          [j0, 1 - fj],
-          [j1, fj],
-        ]) {
-          for (const [k, wk] of [
-            [k0, 1 - fk],
-            [k1, fk],
-          ]) {
-            const w = wi * wj * wk;
-            const x = table[c * MERL_SAMPLES + merlIndex(i, j, k)];
-            if (w > 0 && x >= 0) {
-              sum += w * x;
-              weight += w;
-            }
-          }
+      for (let n = 0; n < 8; n++) {
+        const x = table[c * MERL_SAMPLES + nodes[n]];
+        if (weights[n] > 0 && x >= 0) {
+          sum += weights[n] * x;
+          weight += weights[n];
         }
       }
       out[c] = weight > 0 ? sum / weight : 0;
