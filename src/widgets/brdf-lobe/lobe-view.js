@@ -1,5 +1,5 @@
 // The BRDF as a 3-D lobe over a surface patch: for the current light, each direction v is pushed out by
-// f(l, v) (scaled to the largest value); A is solid orange, B a green wireframe, as in the polar plot. Drag to
+// f(l, v) (scaled to the largest value); A is solid orange, B a green wire grid, as in the polar plot. Drag to
 // orbit. n, l, v, h and the mirror direction are drawn as arrows.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
@@ -34,6 +34,20 @@ function gridIndex() {
   return idx;
 }
 
+const RING_EVERY = 3; // lobe B's wires: every third ring of constant θ and every fourth meridian of the grid
+const MERIDIAN_EVERY = 4;
+
+/** Lobe B's wire grid over the hemisphere grid's vertices: rings and meridians, as line segments. */
+function wireIndex() {
+  const idx = [];
+  const row = PHI_STEPS + 1;
+  for (let i = RING_EVERY; i <= THETA_STEPS; i += RING_EVERY)
+    for (let j = 0; j < PHI_STEPS; j++) idx.push(i * row + j, i * row + j + 1);
+  for (let j = 0; j < PHI_STEPS; j += MERIDIAN_EVERY)
+    for (let i = 0; i < THETA_STEPS; i++) idx.push(i * row + j, (i + 1) * row + j);
+  return idx;
+}
+
 const ARROW_COLORS = { n: '#333333', l: '#e6a700', v: '#0072b2', h: '#cc79a7', mirror: '#888888' };
 
 /** The scene: lights, the surface patch, lobe A (solid) and B (wireframe) over `dirs`, and the arrows. */
@@ -61,9 +75,11 @@ function createLobeScene(dirs) {
     makeGeometry(),
     new THREE.MeshLambertMaterial({ color: '#d55e00', side: THREE.DoubleSide }),
   );
-  const lobeB = new THREE.Mesh(
-    makeGeometry(),
-    new THREE.MeshBasicMaterial({ color: '#009e73', wireframe: true, transparent: true, opacity: 0.45 }),
+  const wire = makeGeometry();
+  wire.setIndex(wireIndex());
+  const lobeB = new THREE.LineSegments(
+    wire,
+    new THREE.LineBasicMaterial({ color: '#009e73', transparent: true, opacity: 0.7 }),
   );
   local.add(patch, lobeA, lobeB);
   const arrows = {};
@@ -99,7 +115,7 @@ function fillLobe(mesh, dirs, f, max) {
     pos.setXYZ(i, d[0] * r, d[1] * r, d[2] * r);
   });
   pos.needsUpdate = true;
-  mesh.geometry.computeVertexNormals();
+  if (mesh.isMesh) mesh.geometry.computeVertexNormals(); // lines (lobe B) are unlit
   mesh.geometry.computeBoundingSphere();
 }
 
