@@ -96,7 +96,9 @@ async function postAll(messages, last) {
 
 /**
  * Waits for the widget's picture to settle (a Monte Carlo reference: until it has all its samples), its notices
- * dismissed first (read before this: they push the view down, out of the frame, where it stops drawing).
+ * dismissed first (read before this: they push the view down, out of the frame, where it stops drawing), and for
+ * its page to keep its height and words for 500 ms (work that comes late: a user-written term's editor, loaded on
+ * demand, and its checks).
  */
 async function settled(frame) {
   await frame.$$eval('.notice-close', (buttons) => buttons.forEach((b) => b.click()));
@@ -107,7 +109,16 @@ async function settled(frame) {
     },
     { timeout: 90_000 },
   );
-  await settle(frame, 600);
+  await frame.waitForFunction(
+    () => {
+      const now = `${document.body.scrollHeight} ${document.body.innerText}`;
+      const seen = (window.__layoutSeen ??= { now, since: performance.now() });
+      if (seen.now !== now) Object.assign(seen, { now, since: performance.now() });
+      return performance.now() - seen.since > 500;
+    },
+    { timeout: 60_000, polling: 100 },
+  );
+  await settle(frame, 300);
 }
 
 const frameState = (frame) => frame.evaluate(() => Object.values(globalThis.__shadingLab.widgets)[0].getState());

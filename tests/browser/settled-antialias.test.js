@@ -124,6 +124,9 @@ async function drag(page, widget = WIDGET) {
   return { start, dragged, settled: await counts(page, true) };
 }
 
+/** Whether the last frame drawn had no multisampled draw. */
+const lastFramePlain = ({ log, multisampled }) => log.at(-1).multisampled === multisampled;
+
 /** Each frame of a drag (after its first): the time since the frame before it (ms), its multisampled draws. */
 function dragFrames({ start, dragged }) {
   const log = [...dragged.log.slice(start.frames), { multisampled: dragged.multisampled }];
@@ -145,9 +148,11 @@ describe("antialias: 'settled' (fresnel-zones)", () => {
     expect(quick.length, `frames ${JSON.stringify(frames)}`).toBeGreaterThanOrEqual(frames.length / 2);
     expect(quick.map((f) => f.multisampled)).toEqual(quick.map(() => 0));
     expect(frames.filter((f) => f.gap > QUIET_MS + 1).every((f) => f.multisampled === 1)).toBe(true);
-    expect(settled.frames - dragged.frames, 'frames after the pause').toBe(1);
-    expect(settled.multisampled - dragged.multisampled, 'multisampled draws after the pause: the mesh').toBe(1);
-    expect(settled.frame, 'the settled frame differs from the last plain one').not.toBe(dragged.frame);
+    // one multisampled frame after the pause, unless the drag's last frame was one already (a slow gap before it)
+    const after = lastFramePlain(dragged) ? 1 : 0;
+    expect(settled.frames - dragged.frames, 'frames after the pause').toBe(after);
+    expect(settled.multisampled - dragged.multisampled, 'multisampled draws after the pause: the mesh').toBe(after);
+    if (after) expect(settled.frame, 'the settled frame differs from the last plain one').not.toBe(dragged.frame);
 
     const reference = await openZones(true); // the picture before this mode: every frame multisampled by the context
     const { dragged: referenceLast } = await drag(reference);
@@ -175,12 +180,19 @@ describe("antialias: 'settled' (fresnel-zones)", () => {
 
   it('saves the multisampled picture from the middle of a drag, its frame still plain', async () => {
     const page = await openZones();
-    for (const lightTheta of DRAG) await change(page, { lightTheta });
-    const atSave = await page.$eval('.widget-fresnel-zones .save-view', (button) => {
-      const multisampled = window.__draws.multisampled;
-      button.click(); // the still is redrawn in the click's task
-      return { frames: globalThis.__shadingLab.frames, multisampled: window.__draws.multisampled - multisampled };
-    });
+    // a loaded machine may space a drag's frames past the pause (then the canvas already holds the multisampled
+    // frame): the drag is made again until its last frame is plain, and the save is clicked in the same task
+    let atSave = null;
+    for (let attempt = 0; attempt < 5 && !atSave; attempt++) {
+      for (const lightTheta of DRAG) await change(page, { lightTheta: lightTheta + attempt });
+      atSave = await page.$eval('.widget-fresnel-zones .save-view', (button) => {
+        const multisampled = window.__draws.multisampled;
+        if (window.__frameLog.at(-1).multisampled !== multisampled) return null; // the last frame multisampled
+        button.click(); // the still is redrawn in the click's task
+        return { frames: globalThis.__shadingLab.frames, multisampled: window.__draws.multisampled - multisampled };
+      });
+    }
+    expect(atSave, 'a drag whose last frame is plain, in five tries').not.toBeNull();
     expect(atSave.multisampled, 'the mesh drawn multisampled for the still').toBe(1);
     await page.waitForFunction(() => window.__saved, { timeout: 10_000 });
     const plain = await counts(page, true);
@@ -218,8 +230,10 @@ describe("antialias: 'settled' with three.js's own materials (the 3-D lobe of br
     const { start, dragged, settled } = await drag(page, LOBE);
     expect(dragged.frames - start.frames, 'a frame per change').toBe(DRAG.length);
     expect(dragged.plain, 'the drag drew plain frames').toBeGreaterThan(start.plain);
-    expect(settled.frames - dragged.frames, 'frames after the pause').toBe(1);
-    expect(settled.multisampled, 'the frame after the pause, multisampled').toBeGreaterThan(dragged.multisampled);
+    if (lastFramePlain(dragged)) {
+      expect(settled.frames - dragged.frames, 'frames after the pause').toBe(1);
+      expect(settled.multisampled, 'the frame after the pause, multisampled').toBeGreaterThan(dragged.multisampled);
+    } else expect(settled.frames, 'the last frame was multisampled: none after it').toBe(dragged.frames);
     const reference = await openWidget(LOBE, `embed.html?w=${LOBE}`, true);
     const { dragged: referenceLast } = await drag(reference, LOBE);
     expect(settled.frame === referenceLast.frame, 'settled frame = context-multisampled frame, byte for byte').toBe(
