@@ -191,7 +191,7 @@ function slowestWords({ rows, targetMs }) {
     .join(', ');
   return over.length
     ? `Over the ${targetMs} ms target: ${named}.`
-    : `Every widget answers within ${targetMs} ms; the slowest are ${named}.`;
+    : `Every widget answers within ${targetMs} ms (median; the progressive ones apart); the slowest are ${named}.`;
 }
 
 /** From a change to its frame, per widget (bench/latency.js): the widgets that answer at once, then the others. */
@@ -206,7 +206,7 @@ function renderLatency(latency) {
     '<h2>From a change to its frame</h2>' +
     `<p class="domain">Each widget's main control dragged in ${latency.steps} steps, one change after the ` +
     'previous frame is done: the time from the change to its frame on screen, GPU work finished (measured ' +
-    `${latency.date.slice(0, 10)}, software WebGL on a shared machine). ${slowestWords(latency)}</p>` +
+    `${latency.date.slice(0, 10)}, software WebGL on two cores). ${slowestWords(latency)}</p>` +
     table(latency.rows.filter((r) => !r.progressive)) +
     (progressive.length
       ? '<p>Progressive widgets (they keep refining a Monte Carlo picture): the time to their first changed ' +
