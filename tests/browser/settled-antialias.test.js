@@ -93,14 +93,18 @@ const change = (page, partial, widget = WIDGET) =>
   );
 
 /** Frames and draw calls so far, the frame log; with `withFrame` the last frame (base64). */
-const counts = (page, withFrame = false) =>
-  page.evaluate((all) => {
-    let frame = '';
-    for (let i = 0; all && i < window.__frame.length; i += 0x8000)
-      frame += String.fromCharCode(...window.__frame.subarray(i, i + 0x8000));
-    const { frames } = globalThis.__shadingLab;
-    return { frames, ...window.__draws, frame: btoa(frame), log: window.__frameLog.slice() };
-  }, withFrame);
+const counts = (page, withFrame = false, kept = '__frame') =>
+  page.evaluate(
+    (all, name) => {
+      let frame = '';
+      for (let i = 0; all && i < window[name].length; i += 0x8000)
+        frame += String.fromCharCode(...window[name].subarray(i, i + 0x8000));
+      const { frames } = globalThis.__shadingLab;
+      return { frames, ...window.__draws, frame: btoa(frame), log: window.__frameLog.slice() };
+    },
+    withFrame,
+    kept,
+  );
 
 /** In the page: the last PNG saved, as RGBA rows bottom to top (as WebGL reads them back), base64. */
 const savedPixels = (page) =>
@@ -188,6 +192,7 @@ describe("antialias: 'settled' (fresnel-zones)", () => {
       atSave = await page.$eval('.widget-fresnel-zones .save-view', (button) => {
         const multisampled = window.__draws.multisampled;
         if (window.__frameLog.at(-1).multisampled !== multisampled) return null; // the last frame multisampled
+        window.__plainAtSave = window.__frame.slice(); // the plain frame the canvas shows as the save is clicked
         button.click(); // the still is redrawn in the click's task
         return { frames: globalThis.__shadingLab.frames, multisampled: window.__draws.multisampled - multisampled };
       });
@@ -195,7 +200,7 @@ describe("antialias: 'settled' (fresnel-zones)", () => {
     expect(atSave, 'a drag whose last frame is plain, in five tries').not.toBeNull();
     expect(atSave.multisampled, 'the mesh drawn multisampled for the still').toBe(1);
     await page.waitForFunction(() => window.__saved, { timeout: 10_000 });
-    const plain = await counts(page, true);
+    const plain = await counts(page, true, '__plainAtSave');
     await settle(page, 800);
     const settled = await counts(page, true);
     expect(settled.frames, 'the pause came after the save').toBe(atSave.frames + 1);
