@@ -1,8 +1,8 @@
 import { defineConfig } from 'vitest/config';
 
 // The browser tests run two files at a time, each with its own Chromium: much of a browser test is waiting (idle
-// windows, loads, convergence), so two share the 2 cores well (the suite in about 14 min, against about 17 min one
-// at a time).
+// windows, loads, convergence), so two share the 2 cores (the suite in about 15 min, against about 17 min one at a
+// time). Three at a time was about 5 % faster, but a material-lab test failed under that load: not yet understood.
 
 export default defineConfig({
   test: {
