@@ -109,6 +109,7 @@ async function settled(frame) {
     },
     { timeout: 90_000 },
   );
+  await frame.evaluate(() => delete window.__layoutSeen); // each wait starts its 500 ms afresh
   await frame.waitForFunction(
     () => {
       const now = `${document.body.scrollHeight} ${document.body.innerText}`;
