@@ -6,7 +6,8 @@ import { FIT_MODELS } from '../../measured/fit.js';
 import { MERL_BYTES, measuredFromTable } from '../../measured/merl.js';
 import { createFitClient } from './fit-client.js';
 import { EXAMPLES } from './model.js';
-import { fitStatusWords, tableReadWords, tooLargeWords } from './words.js';
+import { EXAMPLE_FITS } from './example-fits.data.js';
+import { fitStatusWords, shippedFitsWords, tableReadWords, tooLargeWords } from './words.js';
 
 const MODELS = Object.keys(FIT_MODELS);
 
@@ -55,8 +56,20 @@ function runFits(ctx) {
   data.client.fit(MODELS, {}, onMessage).catch((e) => gen === data.generation && shell.notices.show(e.message));
 }
 
-/** A table the worker read (with the worker that holds it) replaces the one shown; fits start over. */
-function showTable(ctx, next, result, { words, name }) {
+/** Shows the fits made ahead for a synthetic example (scripts/example-fits.js): the same fitter, the same table. */
+function showShippedFits(ctx, fits) {
+  const { views, paint, data } = ctx;
+  data.fits = fits;
+  ['ndf', 'lobe', 'images', 'describe'].forEach((k) => paint[k]());
+  tabulateOverlay(ctx);
+  views.table.draw(data.fits, { statusText: shippedFitsWords });
+}
+
+/**
+ * A table the worker read (with the worker that holds it) replaces the one shown; fits start over (in the worker,
+ * unless the table is an example whose fits were made ahead: `fits`).
+ */
+function showTable(ctx, next, result, { words, name, fits }) {
   const { views, paint, data } = ctx;
   data.client.dispose();
   Object.assign(data, {
@@ -71,6 +84,7 @@ function showTable(ctx, next, result, { words, name }) {
   views.drop.setSource(tableReadWords(words, result));
   views.spheres.setTable(0, result.half, 'measured');
   views.spheres.setTable(1, null, '');
+  if (fits) return showShippedFits(ctx, fits);
   ['lobe', 'ndf', 'images', 'describe'].forEach((k) => paint[k]());
   runFits(ctx);
 }
@@ -101,7 +115,7 @@ export function createTableLoader(ctx) {
       const e = EXAMPLES[key];
       load(
         (c) => c.synthesize(e.model, e.params),
-        { words: e.label, name: `synthetic ${e.model.toUpperCase()} example (writeMerl)` },
+        { words: e.label, name: `synthetic ${e.model.toUpperCase()} example (writeMerl)`, fits: EXAMPLE_FITS[key] },
         (err) => err.message,
       );
     },

@@ -15,7 +15,8 @@ export const ABOUT =
   'Drop a file from the MERL BRDF database (Matusik et al. 2003; not shipped here) or keep a synthetic example. ' +
   'It is drawn as a lobe in the plane of incidence, as a 3-D lobe (green channel; drag to orbit) and on spheres. ' +
   'The five models of the talk are fitted to it in the background, each with Schlick Fresnel and a Lambert ' +
-  'diffuse per colour channel. The log plot of the NDF slice shows whether a model’s tail follows the data: ' +
+  'diffuse per colour channel (an example’s fits were made ahead by the same fitter, so they show at once). ' +
+  'The log plot of the NDF slice shows whether a model’s tail follows the data: ' +
   'on real materials GGX, ABC and shifted gamma keep up where Beckmann and Blinn-Phong fall away (Löw et al. ' +
   `2012, Bagher et al. 2012). Each table is a 3-D texture of ${MB(MERL_TEXTURE_BYTES)} on the GPU.`;
 
@@ -59,6 +60,10 @@ export function describeMeasured({ fits, sourceWords }, state) {
 export const tableReadWords = (words, { ms, missing }) =>
   `${words}. Read in ${ms.toFixed(0)} ms in a worker; ${(missing / 3).toLocaleString('en')} ` +
   'of 1,458,000 nodes per channel missing (below the horizon or not measured).';
+
+/** The status line of an example, whose fits were made ahead (scripts/example-fits.js). */
+export const shippedFitsWords =
+  '5 fits made ahead by the same fitter (npm run example-fits); a file you drop is fitted here';
 
 /** The progress line while fitting: the model under way, or the time all five took. */
 export const fitStatusWords = (done, running, seconds) =>
