@@ -130,13 +130,24 @@ describe('offline, after one visit', () => {
 
   it(`every exercise (${EXERCISES.length}) is listed and opens with no network`, async () => {
     const page = await visit('exercises.html');
+    await page.waitForNetworkIdle({ idleTime: 300, timeout: 30_000 }); // as for the pages: nothing left in flight
     await goOffline(page);
     await page.reload({ waitUntil: 'load' });
-    await page.waitForFunction(
-      (n) => document.querySelectorAll('#exercise-list a').length === n,
-      { timeout: 30_000 },
-      EXERCISES.length,
-    );
+    const listed = await page
+      .waitForFunction(
+        (n) => document.querySelectorAll('#exercise-list a').length === n,
+        { timeout: 30_000 },
+        EXERCISES.length,
+      )
+      .then(() => true)
+      .catch(() => false);
+    // once seen to time out (cause not found): what the page showed instead is in the message
+    const shown = await page.evaluate(() => ({
+      listed: document.querySelectorAll('#exercise-list a').length,
+      controlled: !!navigator.serviceWorker.controller,
+      messages: [...document.querySelectorAll('.blocking-message, .notice, .offline-status')].map((e) => e.textContent),
+    }));
+    expect(listed, `the list after an offline reload: ${JSON.stringify(shown)}, errors ${page.errors}`).toBe(true);
     const ids = await page.$$eval('#exercise-list a', (as) => as.map((a) => a.getAttribute('href').slice(1)));
     for (const id of ids) {
       await page.$eval(`#exercise-list a[href="#${id}"]`, (a) => a.click());
