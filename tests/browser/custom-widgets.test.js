@@ -300,8 +300,14 @@ describe('diffuse-explorer: your diffuse term beside the catalogue’s', () => {
     const scaled = await profiles(page);
     const factor = 1 + (30 * Math.PI) / 180; // σ = 30° in radians
     scaled.custom.forEach((y, i) => expect(withinFloat32(y, factor * scaled.lambert[i])).toBe(true));
-    // 1.52 × in linear radiance is about 1.2 × in sRGB (and the brightest pixels clip)
-    expect((await firstAndLastCells(page, 2)).last).toBeGreaterThan(spheres.last * 1.1);
+    // 1.52 × in linear radiance is about 1.2 × in sRGB (and the brightest pixels clip). The sphere's program is
+    // compiled with the new code after the plots have read it: under load that was seen to take more than the wait
+    let last = 0;
+    for (let i = 0; i < 40 && !(last > spheres.last * 1.1); i++) {
+      if (i) await settle(page, 500);
+      last = (await firstAndLastCells(page, 2)).last;
+    }
+    expect(last).toBeGreaterThan(spheres.last * 1.1);
     expect(page.errors).toEqual([]);
     await page.close();
   });
