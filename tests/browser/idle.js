@@ -3,14 +3,38 @@
 import { expect } from 'vitest';
 import { settle } from './helpers.js';
 
-/** Scrolls through the page so every view gets its first frame, then lets it settle. */
+let quietCalls = 0;
+
+/**
+ * Resolves once the page has issued no draw call for `quietMs` (a view still drawing its first frames, or a
+ * settled frame after them, counts as busy); fails after `timeoutMs`.
+ */
+async function untilQuiet(page, quietMs = 500, timeoutMs = 30_000) {
+  const token = ++quietCalls; // each wait keeps its own record in the page, started afresh
+  await page.waitForFunction(
+    (token, quietMs) => {
+      const now = performance.now();
+      const seen = window.__quiet;
+      if (seen?.token !== token || seen.calls !== window.__drawCalls) {
+        window.__quiet = { token, calls: window.__drawCalls, since: now };
+        return false;
+      }
+      return now - seen.since >= quietMs;
+    },
+    { timeout: timeoutMs, polling: 100 },
+    token,
+    quietMs,
+  );
+}
+
+/** Scrolls through the page a screen at a time so every view gets its first frame, then lets it settle. */
 async function visitAll(page) {
-  const height = await page.evaluate(() => document.body.scrollHeight);
-  for (let y = 0; y < height; y += 500) {
+  const [height, screen] = await page.evaluate(() => [document.body.scrollHeight, innerHeight]);
+  for (let y = 0; y < height; y += screen - 200) {
     await page.evaluate((top) => window.scrollTo(0, top), y);
-    await settle(page, 300);
+    await settle(page, 200);
   }
-  await settle(page, 1500);
+  await untilQuiet(page);
   // progressive views (the media path tracer, the lab's references) run until their sample count is reached,
   // then stop; they only run in sight, so each unfinished one is brought into view until it is done
   const unfinished = await page.evaluate(() =>
@@ -32,6 +56,7 @@ async function visitAll(page) {
       key,
     );
   }
+  await untilQuiet(page);
 }
 
 /** Every view drawn and every progressive one done, the page issues no draw call over two seconds. */
