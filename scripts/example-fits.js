@@ -1,8 +1,8 @@
-// npm run example-fits: fits the five models to each synthetic example of the measured-BRDF widget, as its
-// worker would (writeMerl, parseMerl, fitSamples and fitMeasured with their defaults), and writes the results to
-// src/widgets/measured-brdf/example-fits.data.js, so an example shows its fits at once instead of after about
-// 15 s of fitting. A file the user loads is still fitted live. Rerun after changing src/measured/ or EXAMPLES;
-// tests/unit/example-fits.test.js checks the shipped fits against the fitter. Takes about 40 s.
+// npm run example-fits: fits the five models to each synthetic example of the measured-BRDF widget as its worker
+// does (synthesizeTable, then fitModels with the defaults) and writes the results to
+// src/widgets/measured-brdf/example-fits.data.js, so an example shows its fits at once instead of after 16-20 s of
+// fitting (Node, one idle core). A file the user loads is still fitted live. Rerun after changing src/measured/ or
+// EXAMPLES; tests/unit/example-fits.test.js checks the shipped fits against the fitter. Takes about 40 s.
 import { writeFileSync } from 'node:fs';
 import { EXAMPLES } from '../src/widgets/measured-brdf/model.js';
 import { fitExample } from '../src/widgets/measured-brdf/example-table.js';

@@ -6,8 +6,8 @@
 //   { id, type: 'progress', model, index, evaluations, error } | { id, type: 'fitted', index, result, ms } |
 //   { id, type: 'tabulated', half } | { id, type: 'done' } | { id, type: 'error', message }.
 import { DataUtils } from 'three';
-import { parseMerl, writeMerl } from './merl.js';
-import { fitMeasured, fitSamples, modelBRDF } from './fit.js';
+import { parseMerl } from './merl.js';
+import { fitModels, synthesizeTable } from './fit.js';
 
 let measured = null;
 
@@ -35,19 +35,16 @@ function load(next, id, started) {
 
 const handlers = {
   parse: (msg, started) => load(parseMerl(msg.buffer), msg.id, started),
-  synthesize: (msg, started) => load(parseMerl(writeMerl(modelBRDF(msg.model, msg.params))), msg.id, started),
+  synthesize: (msg, started) => load(synthesizeTable(msg.model, msg.params), msg.id, started),
   fit(msg) {
     if (!measured) throw new Error('No measured BRDF is loaded.');
-    const samples = fitSamples(measured, msg.options);
-    msg.models.forEach((model, index) => {
-      const started = performance.now();
-      const onProgress = (p) => self.postMessage({ id: msg.id, type: 'progress', index, ...p });
-      const result = fitMeasured(measured, model, { ...msg.options, samples, onProgress });
-      self.postMessage({ id: msg.id, type: 'fitted', index, result, ms: performance.now() - started });
+    fitModels(measured, msg.models, msg.options, {
+      onProgress: (p, index) => self.postMessage({ id: msg.id, type: 'progress', index, ...p }),
+      onFitted: (result, index, ms) => self.postMessage({ id: msg.id, type: 'fitted', index, result, ms }),
     });
   },
   tabulate(msg) {
-    const half = halfFloatRgba(parseMerl(writeMerl(modelBRDF(msg.model, msg.params))).table);
+    const half = halfFloatRgba(synthesizeTable(msg.model, msg.params).table);
     self.postMessage({ id: msg.id, type: 'tabulated', half }, [half.buffer]);
   },
 };

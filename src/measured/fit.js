@@ -18,7 +18,7 @@ import { NDF_TERMS, VISIBILITY_TERMS, brdfAngles, microfacetTermsAt } from '../m
 import { fresnelSchlick } from '../math/fresnel.js';
 import { beckmannAlphaFromBlinnPhongExponent } from '../math/ndf.js';
 import { directionsFromHalfDiff } from '../math/half-diff.js';
-import { MERL_DIMS, MERL_SAMPLES, merlIndex, merlNodeAngles } from './merl.js';
+import { MERL_DIMS, MERL_SAMPLES, merlIndex, merlNodeAngles, parseMerl, writeMerl } from './merl.js';
 import { nelderMead } from './nelder-mead.js';
 import { solveWeights } from './weights.js';
 import { DEG } from '../math/angles.js';
@@ -186,4 +186,25 @@ export function fitMeasured(measured, model, options = {}) {
   const shape = toShape(model, best.x);
   const fit = evaluateShape(samples, model, shape);
   return { model, params: { ...shape, f0: fit.f0, cdiff: fit.cdiff }, error: fit.error, evaluations };
+}
+
+/** A table written by writeMerl from `model` with `params` and read back as a file would be: { table, missing, … }. */
+export const synthesizeTable = (model, params) => parseMerl(writeMerl(modelBRDF(model, params)));
+
+/**
+ * Fits each of `models` to `measured` on the same samples (fitSamples with `options`), in order:
+ * onProgress(progress, index) as fitMeasured reports it, onFitted(result, index, ms) after each.
+ * Returns { model: result }. The fit worker and scripts/example-fits.js both fit this way.
+ */
+export function fitModels(measured, models, options = {}, { onProgress, onFitted } = {}) {
+  const samples = fitSamples(measured, options);
+  return Object.fromEntries(
+    models.map((model, index) => {
+      const started = performance.now();
+      const report = onProgress && ((p) => onProgress(p, index));
+      const result = fitMeasured(measured, model, { ...options, samples, onProgress: report });
+      onFitted?.(result, index, performance.now() - started);
+      return [model, result];
+    }),
+  );
 }

@@ -56,18 +56,10 @@ function runFits(ctx) {
   data.client.fit(MODELS, {}, onMessage).catch((e) => gen === data.generation && shell.notices.show(e.message));
 }
 
-/** Shows the fits made ahead for a synthetic example (scripts/example-fits.js): the same fitter, the same table. */
-function showShippedFits(ctx, fits) {
-  const { views, paint, data } = ctx;
-  data.fits = fits;
-  ['ndf', 'lobe', 'images', 'describe'].forEach((k) => paint[k]());
-  tabulateOverlay(ctx);
-  views.table.draw(data.fits, { statusText: shippedFitsWords });
-}
-
 /**
- * A table the worker read (with the worker that holds it) replaces the one shown; fits start over (in the worker,
- * unless the table is an example whose fits were made ahead: `fits`).
+ * A table the worker read (with the worker that holds it) replaces the one shown, with its fits: those of an example
+ * were made ahead (`fits`, scripts/example-fits.js: the same fitter on the same table); any other table is fitted
+ * in the worker.
  */
 function showTable(ctx, next, result, { words, name, fits }) {
   const { views, paint, data } = ctx;
@@ -77,16 +69,17 @@ function showTable(ctx, next, result, { words, name, fits }) {
     tabulated: null,
     generation: data.generation + 1,
     measured: measuredFromTable(result.table),
-    fits: {},
+    fits: { ...fits },
     sourceWords: words,
     sourceName: name,
   });
   views.drop.setSource(tableReadWords(words, result));
   views.spheres.setTable(0, result.half, 'measured');
   views.spheres.setTable(1, null, '');
-  if (fits) return showShippedFits(ctx, fits);
   ['lobe', 'ndf', 'images', 'describe'].forEach((k) => paint[k]());
-  runFits(ctx);
+  if (!fits) return runFits(ctx);
+  tabulateOverlay(ctx);
+  views.table.draw(data.fits, { progressValue: 1, statusText: shippedFitsWords });
 }
 
 /**

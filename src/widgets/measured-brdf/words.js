@@ -62,8 +62,7 @@ export const tableReadWords = (words, { ms, missing }) =>
   'of 1,458,000 nodes per channel missing (below the horizon or not measured).';
 
 /** The status line of an example, whose fits were made ahead (scripts/example-fits.js). */
-export const shippedFitsWords =
-  '5 fits made ahead by the same fitter (npm run example-fits); a file you drop is fitted here';
+export const shippedFitsWords = '5 fits made ahead with the same fitter; a file you drop is fitted here, live';
 
 /** The progress line while fitting: the model under way, or the time all five took. */
 export const fitStatusWords = (done, running, seconds) =>
