@@ -97,6 +97,6 @@ describe('Content-Security-Policy, and idle pages draw nothing', () => {
         expect(await page.$eval('#exercise h2', (h) => h.textContent)).toBe('A set from a data: URL');
       }
       await page.close();
-    });
+    }, 240_000); // room for the waits inside: a page that never goes quiet must fail on its draw calls, not here
   }
 });

@@ -62,6 +62,10 @@ async function firstAndLastCells(page, count) {
   );
 }
 
+/** The mean red of the last of two sphere cells; polled for (POLL) where a sphere's program is rebuilt. */
+const lastCellRed = async (page) => (await firstAndLastCells(page, 2)).last;
+const POLL = { timeout: 20_000, interval: 500 };
+
 /**
  * Types `fn { body; }` (its value `expected` where `read` reads it), then the same with an undeclared name on line 2:
  * the compiler's error lands on line 2 and `read` still reads the good code's value; then the state, through the
@@ -112,8 +116,8 @@ return 2.0 * a2 / (PI * d * d);
     const doubled = await curves(page);
     doubled.custom.forEach((d, i) => expect(withinFloat32(d, 2 * jsGgx[i])).toBe(true));
     expect((await integrals(page)).custom).toBeCloseTo(2, 3);
-    const brighter = await firstAndLastCells(page, 2);
-    expect(brighter.last).toBeGreaterThan(spheres.last * 1.2);
+    // the sphere's program is rebuilt with the new code after the plots have read it
+    await expect.poll(() => lastCellRed(page), POLL).toBeGreaterThan(spheres.last * 1.2);
     expect(page.errors).toEqual([]);
     await page.close();
   });
@@ -302,12 +306,7 @@ describe('diffuse-explorer: your diffuse term beside the catalogue’s', () => {
     scaled.custom.forEach((y, i) => expect(withinFloat32(y, factor * scaled.lambert[i])).toBe(true));
     // 1.52 × in linear radiance is about 1.2 × in sRGB (and the brightest pixels clip). The sphere's program is
     // compiled with the new code after the plots have read it: under load that was seen to take more than the wait
-    let last = 0;
-    for (let i = 0; i < 40 && !(last > spheres.last * 1.1); i++) {
-      if (i) await settle(page, 500);
-      last = (await firstAndLastCells(page, 2)).last;
-    }
-    expect(last).toBeGreaterThan(spheres.last * 1.1);
+    await expect.poll(() => lastCellRed(page), POLL).toBeGreaterThan(spheres.last * 1.1);
     expect(page.errors).toEqual([]);
     await page.close();
   });

@@ -7,30 +7,33 @@ let quietCalls = 0;
 
 /**
  * Resolves once the page has issued no draw call for `quietMs` (a view still drawing its first frames, or a
- * settled frame after them, counts as busy); fails after `timeoutMs`.
+ * settled frame after them, counts as busy), or after `timeoutMs`: a page that never goes quiet is then caught by
+ * expectIdle's own check, with its message.
  */
 async function untilQuiet(page, quietMs = 500, timeoutMs = 30_000) {
   const token = ++quietCalls; // each wait keeps its own record in the page, started afresh
-  await page.waitForFunction(
-    (token, quietMs) => {
-      const now = performance.now();
-      const seen = window.__quiet;
-      if (seen?.token !== token || seen.calls !== window.__drawCalls) {
-        window.__quiet = { token, calls: window.__drawCalls, since: now };
-        return false;
-      }
-      return now - seen.since >= quietMs;
-    },
-    { timeout: timeoutMs, polling: 100 },
-    token,
-    quietMs,
-  );
+  await page
+    .waitForFunction(
+      (token, quietMs) => {
+        const now = performance.now();
+        const seen = window.__quiet;
+        if (seen?.token !== token || seen.calls !== window.__drawCalls) {
+          window.__quiet = { token, calls: window.__drawCalls, since: now };
+          return false;
+        }
+        return now - seen.since >= quietMs;
+      },
+      { timeout: timeoutMs, polling: 100 },
+      token,
+      quietMs,
+    )
+    .catch(() => {});
 }
 
 /** Scrolls through the page a screen at a time so every view gets its first frame, then lets it settle. */
 async function visitAll(page) {
   const [height, screen] = await page.evaluate(() => [document.body.scrollHeight, innerHeight]);
-  for (let y = 0; y < height; y += screen - 200) {
+  for (let y = 0; y < height; y += Math.max(screen - 200, screen / 2)) {
     await page.evaluate((top) => window.scrollTo(0, top), y);
     await settle(page, 200);
   }
@@ -61,6 +64,7 @@ async function visitAll(page) {
 
 /** Every view drawn and every progressive one done, the page issues no draw call over two seconds. */
 export async function expectIdle(page) {
+  expect(await page.evaluate(() => typeof window.__drawCalls), 'draw calls counted (countDrawCalls)').toBe('number');
   await visitAll(page);
   const before = await page.evaluate(() => window.__drawCalls);
   await new Promise((r) => setTimeout(r, 2000));

@@ -1,7 +1,8 @@
 // Pages load cleanly: the landing page, the Fresnel chapter and its embeds with no console error, no page error
-// and no failed request; each chapter with its widgets mounted and its views drawn; the landing page links every
-// live page. Every built page opening under the Content-Security-Policy with none of these (and idle pages
-// drawing nothing) is in csp.test.js: this file is the quick check of the edit loop (npm run test:quick).
+// and no failed request; the BRDF, microfacet, NDF, visibility and performance pages with their widgets mounted
+// and their views drawn; the landing page links every live page. Every built page opening under the
+// Content-Security-Policy with none of these (and idle pages drawing nothing) is in csp.test.js: this file is the
+// quick check of the edit loop (npm run test:quick).
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { distinctColors, launchBrowser, open, settle, shot, widget } from './helpers.js';
 
