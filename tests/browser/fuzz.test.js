@@ -17,7 +17,7 @@ import {
   seededRandom,
   stateProblems,
 } from '../hostile-values.js';
-import { baseUrl, launchBrowser, open, openForeignParent, otherOrigin, settle } from './helpers.js';
+import { baseUrl, launchBrowser, open, openForeignParent, otherOrigin, settle, untilSteady } from './helpers.js';
 
 const SEED = 17;
 const SETS_PER_WIDGET = 40;
@@ -109,16 +109,7 @@ async function settled(frame) {
     },
     { timeout: 90_000 },
   );
-  await frame.evaluate(() => delete window.__layoutSeen); // each wait starts its 500 ms afresh
-  await frame.waitForFunction(
-    () => {
-      const now = `${document.body.scrollHeight} ${document.body.innerText}`;
-      const seen = (window.__layoutSeen ??= { now, since: performance.now() });
-      if (seen.now !== now) Object.assign(seen, { now, since: performance.now() });
-      return performance.now() - seen.since > 500;
-    },
-    { timeout: 60_000, polling: 100 },
-  );
+  await untilSteady(frame, 'layout', { timeout: 60_000 });
   await settle(frame, 300);
 }
 

@@ -40,6 +40,33 @@ export const openForeignParent = (browser) =>
     beforeLoad: (page) => page.setBypassCSP(true),
   });
 
+let steadyWaits = 0;
+
+/**
+ * Resolves once what `watch` names has held for `quietMs` in the page (or frame) `target`: 'drawCalls', its WebGL
+ * draw count (countDrawCalls), or 'layout', its height and words. Rejects after `timeout`.
+ */
+export async function untilSteady(target, watch, { quietMs = 500, timeout = 30_000 } = {}) {
+  const token = ++steadyWaits; // each wait keeps its own record in the page, started afresh
+  await target.waitForFunction(
+    (watch, token, quietMs) => {
+      const value =
+        watch === 'drawCalls' ? window.__drawCalls : `${document.body.scrollHeight} ${document.body.innerText}`;
+      const now = performance.now();
+      const seen = window.__steady;
+      if (seen?.token !== token || seen.value !== value) {
+        window.__steady = { token, value, since: now };
+        return false;
+      }
+      return now - seen.since >= quietMs;
+    },
+    { timeout, polling: 100 },
+    watch,
+    token,
+    quietMs,
+  );
+}
+
 /** Waits for a widget instance to be registered under `key` (its name, or its prefix on a page). */
 export async function widget(page, key) {
   await page.waitForFunction((k) => globalThis.__shadingLab?.widgets?.[k], { timeout: 30_000 }, key);

@@ -1,34 +1,14 @@
 // Idle pages draw nothing: every view is scrolled into sight for its first frame, progressive views run to their
 // sample count, and then two seconds pass without a WebGL draw call (window.__drawCalls, helpers.js).
 import { expect } from 'vitest';
-import { settle } from './helpers.js';
-
-let quietCalls = 0;
+import { settle, untilSteady } from './helpers.js';
 
 /**
- * Resolves once the page has issued no draw call for `quietMs` (a view still drawing its first frames, or a
- * settled frame after them, counts as busy), or after `timeoutMs`: a page that never goes quiet is then caught by
- * expectIdle's own check, with its message.
+ * Resolves once the page has issued no draw call for 500 ms (a view still drawing its first frames, or a settled
+ * frame after them, counts as busy), or after 30 s: a page that never goes quiet is then caught by expectIdle's own
+ * check, with its message.
  */
-async function untilQuiet(page, quietMs = 500, timeoutMs = 30_000) {
-  const token = ++quietCalls; // each wait keeps its own record in the page, started afresh
-  await page
-    .waitForFunction(
-      (token, quietMs) => {
-        const now = performance.now();
-        const seen = window.__quiet;
-        if (seen?.token !== token || seen.calls !== window.__drawCalls) {
-          window.__quiet = { token, calls: window.__drawCalls, since: now };
-          return false;
-        }
-        return now - seen.since >= quietMs;
-      },
-      { timeout: timeoutMs, polling: 100 },
-      token,
-      quietMs,
-    )
-    .catch(() => {});
-}
+const untilQuiet = (page) => untilSteady(page, 'drawCalls').catch(() => {});
 
 /** Scrolls through the page a screen at a time so every view gets its first frame, then lets it settle. */
 async function visitAll(page) {
