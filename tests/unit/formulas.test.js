@@ -198,6 +198,32 @@ describe('live formulas', () => {
     expect(tex).not.toContain((1 / Math.PI).toFixed(3));
   });
 
+  it('energy: Kulla–Conty and Turquin both with the Fresnel terms the albedo evaluates (Simpson)', async () => {
+    const { compensatedAlbedoGGX } = await import('../../src/math/multiple-scattering.js');
+    const { albedoGGX, averageAlbedo, dfgSplitSum } = await import('../../src/math/integrate.js');
+    const kc = texOf('energy', { compensation: 'kullaConty' });
+    const turquin = texOf('energy', { compensation: 'turquin' });
+    expect(kc).toContain('F_{\\text{ms}}\\,f_{\\text{ms}}');
+    expect(kc).toContain(
+      'F_{\\text{ms}} = \\frac{F_{\\text{avg}}^2\\,E_{\\text{avg}}}{1 - F_{\\text{avg}}(1 - E_{\\text{avg}})}',
+    );
+    expect(kc).toContain('F_{\\text{avg}} = F_0 + \\frac{1 - F_0}{21}');
+    expect(turquin).toContain('1 + F_0\\,\\frac{1 - E(\\mu_o)}{E(\\mu_o)}');
+    // what the formulas say, evaluated here: F_avg = 2∫F μ dμ of Schlick by Simpson, E = scale + bias (F = 1)
+    const [mu, alpha, f0] = [0.5, 0.6, 0.3];
+    const n = 2000;
+    const schlick = (m) => f0 + (1 - f0) * (1 - m) ** 5;
+    let sum = 0;
+    for (let i = 0; i <= n; i++) sum += (i === 0 || i === n ? 1 : i % 2 ? 4 : 2) * schlick(i / n) * (i / n);
+    const fAvg = (2 * sum) / (3 * n);
+    const eAvg = averageAlbedo((m) => albedoGGX(m, alpha));
+    const [scale, bias] = dfgSplitSum(mu, alpha);
+    const [single, E] = [f0 * scale + bias, scale + bias];
+    const fMs = (fAvg ** 2 * eAvg) / (1 - fAvg * (1 - eAvg));
+    expect(compensatedAlbedoGGX(mu, alpha, f0, 'kullaConty', eAvg)).toBeCloseTo(single + fMs * (1 - E), 9);
+    expect(compensatedAlbedoGGX(mu, alpha, f0, 'turquin', eAvg)).toBeCloseTo(single * (1 + (f0 * (1 - E)) / E), 9);
+  });
+
   it('ndf-explorer: GGX’s α and Beckmann’s α where D falls to half its peak at the matched half width', () => {
     const t = (10 * Math.PI) / 180;
     // D_tr(t)/D_tr(0) = 1/2 and D_b(t)/D_b(0) = 1/2, solved by bisection here
