@@ -11,6 +11,7 @@ import { MEDIA } from '../../src/widgets/media/schema.js';
 import { schema as LOBE } from '../../src/widgets/brdf-lobe/brdf-lobe.js';
 import { weightedSphereShares } from './zone-shares.js';
 import { DEG } from '../../src/math/angles.js';
+import { ndfABC } from '../../src/math/ndf.js';
 import { inlineTexPlain } from '../../src/core/ui/inline-tex.js';
 
 /** A page's words as a reader sees them: tags dropped (a typeset formula reads as its plain fallback). */
@@ -97,4 +98,26 @@ describe('fresnel.html: red share of the BRDF-weighted l·h zones on a sphere (f
     // every direction: 4096 lights (1024 give 1.55%, 4096 1.53%: the zone edges converge as 1/lights)
     reads(100 * weightedSphereShares(0.3, 4096, 100, 48)[2], redAll, 1);
   }, 120_000);
+});
+
+describe('ndf.html: the ABC formula shown is the one ndfABC evaluates (a Simpson integral over the hemisphere)', () => {
+  it('D_abc = D_uabc / ∫ D_uabc (n·m) dω, D_uabc = 1/(1 + a1(1 − n·m))^a2', () => {
+    const page = readFileSync(new URL('../../ndf.html', import.meta.url), 'utf8');
+    const tex = [...page.matchAll(/data-tex="([^"]*)"/g)].map((m) => m[1]).find((t) => t.includes('uabc'));
+    const normalised = '\\frac{D_{uabc}(\\mathbf{m})}{\\int_{\\Omega} D_{uabc}(\\mathbf{m}) \\nm \\, d\\omega_m}';
+    expect(tex.startsWith(`D_{abc}(\\mathbf{m}) = ${normalised}`)).toBe(true);
+    expect(tex).toContain('D_{uabc}(\\mathbf{m}) = \\frac{1}{(1 + \\alpha_{abc1}(1 - \\nm))^{\\alpha_{abc2}}}');
+    for (const [a1, a2] of [
+      [5, 1.5],
+      [60, 0.8],
+    ]) {
+      const unnormalised = (c) => (1 + a1 * (1 - c)) ** -a2;
+      // ∫ D_uabc (n·m) dω = 2π ∫_0^1 D_uabc(c) c dc, Simpson in c
+      const n = 20000;
+      let sum = 0;
+      for (let i = 0; i <= n; i++) sum += (i === 0 || i === n ? 1 : i % 2 ? 4 : 2) * unnormalised(i / n) * (i / n);
+      const integral = (2 * Math.PI * sum) / (3 * n);
+      for (const c of [1, 0.9, 0.5]) expect(ndfABC(c, a1, a2) / (unnormalised(c) / integral)).toBeCloseTo(1, 6);
+    }
+  });
 });
