@@ -113,8 +113,6 @@ const LIGHT_VIEW = (state) =>
 
 /** A's D, G and F as named in the formula: a catalogue term, or the user's (named as the explorers name it). */
 function termsTex(state) {
-  const n = (x) => texNumber(x, 3);
-  const f0 = `\\sym{f0}{F_0 = ${n(state.f0)}}`;
   const D =
     state.D === 'custom' ? texYoursTerm('D', '\\nh, \\alpha') : `D_{\\text{${termEntry('ndf', state.D).short}}}`;
   const G =
@@ -123,8 +121,8 @@ function termsTex(state) {
       : `V_{\\text{${termEntry('visibility', state.V).short}}}\\,\\nl \\nv `;
   const F = {
     one: '\\sym{F}{F = 1}',
-    schlick: `\\sym{F}{F_{\\text{Schlick}}},\\ ${f0}`,
-    custom: `\\sym{F}{F = ${texYoursTerm('F', 'F_0, \\lh ')}},\\ ${f0}`,
+    schlick: '\\sym{F}{F_{\\text{Schlick}}}',
+    custom: `\\sym{F}{F = ${texYoursTerm('F', 'F_0, \\lh ')}}`,
   }[state.F];
   return `D = \\sym{D}{${D}},\\ G = \\sym{V}{${G}},\\ ${F}`;
 }
@@ -145,7 +143,7 @@ function valuesTex(state, t, a) {
   const values = state.useDenominator ? `\\frac{${top}}{4\\cdot ${n(a.nl)}\\cdot ${n(a.nv)}}` : top;
   const anyYours = ['F', 'D', 'V'].some(yours);
   return anyYours
-    ? `${values}\\ \\text{(yours: in the table, as read back from the GPU)}`
+    ? `${values}\\ \\text{(your terms: their values are in the table)}`
     : `${values} = ${n(t.f)}\\ \\mathrm{sr}^{-1}`;
 }
 
@@ -162,7 +160,10 @@ export const FORMULA = declareFormula('brdf-lobe', (state) => {
   const [l, v] = [lightDir(state.lightTheta), viewDir(state.viewTheta)];
   const a = brdfAngles(l, v);
   const f = `f(\\mathbf{l},\\mathbf{v}) = ${symbolic(state)} = ${valuesTex(state, factorsAt(l, v, a, p), a)}`;
-  const angles = `\\sym{alpha}{\\alpha = ${texNumber(state.alpha, 2)}},\\ ${LIGHT_VIEW(state)}`;
-  const note = ['F', 'D', 'V'].some((k) => state[k] === 'custom') ? TEX_YOURS_NOTE : '';
-  return `\\begin{gathered}${f}\\\\ ${termsTex(state)},\\ ${angles}${note}\\end{gathered}`;
+  const f0 = state.F === 'one' ? '' : `\\sym{f0}{F_0 = ${texNumber(state.f0, 3)}},\\ `;
+  const angles = `${f0}\\sym{alpha}{\\alpha = ${texNumber(state.alpha, 2)}},\\ ${LIGHT_VIEW(state)}`;
+  // a term of the user's makes the lines longer: the parameters get a line of their own, with the note
+  const yours = ['F', 'D', 'V'].some((k) => state[k] === 'custom');
+  const rest = yours ? `\\\\ ${angles}${TEX_YOURS_NOTE}` : `,\\ ${angles}`;
+  return `\\begin{gathered}${f}\\\\ ${termsTex(state)}${rest}\\end{gathered}`;
 });
