@@ -79,5 +79,5 @@ describe('docs/performance.md: the measured block (bench/readme-lines.js over be
     const scaled = walkStandardError() * Math.sqrt(2000 / paths);
     MULTIPLE_SCATTERING_FAMILY.configure({ quick: false });
     expect(Math.abs(scaled / quoted - 1)).toBeLessThan(0.15);
-  });
+  }, 30_000);
 });
