@@ -191,11 +191,15 @@ describe('live formulas', () => {
     expect(texOf('diffuse-explorer', { models: ['custom'] })).toContain('f_{\\text{yours}}(');
   });
 
-  it('brdf-lobe: a whole custom BRDF has no F·D·G/(4 (n·l)(n·v)) and no Lambert 1/π (the starter’s)', () => {
+  it('brdf-lobe: a whole custom BRDF has no F·D·G/(4 (n·l)(n·v)) and no Lambert 1/π (the starter’s)', async () => {
     const tex = texOf('brdf-lobe', { ...lobeState(LOBE_AT), brdf: 'custom' });
     expect(tex).toContain('f(\\mathbf{l},\\mathbf{v}) = f_{\\text{yours}}(\\mathbf{l}, \\mathbf{v})');
     expect(tex).not.toMatch(/\\frac|D\(|G\(|F_0|\\alpha/);
     expect(tex).not.toContain((1 / Math.PI).toFixed(3));
+    // nor does the readout's table head
+    const { tableHead } = await import('../../src/widgets/brdf-lobe/readout.js');
+    expect(tableHead({ brdf: 'custom' })).not.toMatch(/FDG/);
+    expect(tableHead({ brdf: 'microfacet' })).toContain('f = FDG/(4 n·l n·v) (1/sr)');
   });
 
   it('energy: Kulla–Conty and Turquin both with the Fresnel terms the albedo evaluates (Simpson)', async () => {

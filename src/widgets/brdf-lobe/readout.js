@@ -3,7 +3,7 @@
 import { factorsAt, factorsOf, kullaContyAt } from './model.js';
 
 /** The table's head: a whole custom BRDF is no F·D·G/(4 n·l n·v). */
-const head = (state) =>
+export const tableHead = (state) =>
   '<th>BRDF</th><th>F</th><th>D (1/sr)</th><th>G</th>' +
   `<th>${state.brdf === 'custom' ? 'f' : 'f = FDG/(4 n·l n·v)'} (1/sr)</th>`;
 
@@ -39,7 +39,7 @@ export function createReadout(container) {
         `n·h ${a.nh.toFixed(3)}, l·h ${a.lh.toFixed(3)}`;
       const rows = [scene.A, scene.B].filter(Boolean).map((p) => row(scene, p));
       readout.innerHTML =
-        `<table class="data-table compact"><caption>${caption}</caption><thead><tr>${head(state)}</tr></thead>` +
+        `<table class="data-table compact"><caption>${caption}</caption><thead><tr>${tableHead(state)}</tr></thead>` +
         `<tbody>${rows.join('')}</tbody></table>` +
         (scene.ms.lobe ? multipleLine(state, scene) : '');
     },
