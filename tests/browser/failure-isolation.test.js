@@ -53,7 +53,7 @@ const otherErrors = (page, chunk) =>
   page.errors.filter((e) => !e.includes(chunk) && !/net::ERR_FAILED|Failed to load resource/.test(e));
 
 describe('a widget that fails stays in its box', () => {
-  it('fresnel.html: an aborted chunk shows what failed and Retry; the other two widgets mount; Retry loads it', async () => {
+  it('fresnel.html: an aborted chunk shows what failed and Retry; the two others mount; Retry loads it', async () => {
     const { page, let: allow } = await openWithoutChunk('fresnel.html', 'fresnel-curves');
     const words = await failureIn(page, '[data-slot="fresnel-curves"]');
     expect(words).toMatch(/Fresnel curves did not arrive/);
@@ -69,7 +69,7 @@ describe('a widget that fails stays in its box', () => {
     await page.close();
   });
 
-  it('a chapter page: a create that throws shows its error in place and the rest of the page still mounts', async () => {
+  it('a chapter page: a create that throws shows its error in place; the rest of the page mounts', async () => {
     // the first ResizeObserver made on the page throws: a real exception inside a widget's create
     const page = await open('brdf.html', {
       beforeLoad: (p) =>
