@@ -120,7 +120,8 @@ function plotOptions(spec) {
         dash: s.dash,
         points: { show: Boolean(s.points), size: 7, fill: s.stroke },
         spanGaps: Boolean(s.spanGaps), // a curve over x values other series own
-        value: (_, v) => (v == null ? '—' : v.toFixed(4)),
+        // a log axis spans decades: significant figures, not a fixed point that reads 0.0000 down the tail
+        value: (_, v) => (v == null ? '—' : spec.y?.log ? v.toPrecision(3) : v.toFixed(4)),
       })),
     ],
   };
