@@ -112,6 +112,25 @@ describe('visibility-explorer', () => {
   });
 });
 
+describe('visibility-explorer, the axes and the spheres’ note', () => {
+  it('after “l, v mirrored” the plots look as that state opened fresh (the axis follows the mode)', async () => {
+    const plotCanvas = '.widget-visibility-explorer figure.plot canvas';
+    const page = await open(browser, 'embed.html?w=visibility-explorer');
+    await widget(page, 'visibility-explorer');
+    await setControl(page, 'Directions', 'l, v mirrored about n (h = n)');
+    const changed = await shot(page, plotCanvas);
+    const fresh = await open(browser, 'embed.html?w=visibility-explorer&config=mirror');
+    await widget(fresh, 'visibility-explorer');
+    await settle(fresh, 400);
+    expect(changed).toBe(await shot(fresh, plotCanvas));
+    expect(await page.$eval('.widget-visibility-explorer .rim-note', (el) => el.textContent)).toMatch(
+      /^What to look for: the lit side.*Cook–Torrance \+\d+%/,
+    );
+    expect([...page.errors, ...fresh.errors]).toEqual([]);
+    await Promise.all([page.close(), fresh.close()]);
+  });
+});
+
 describe('energy (white furnace)', () => {
   it('renders E = 1 - ln 2 at the centre of the alpha = 1 sphere, and a near-invisible smooth sphere', async () => {
     // samples and sampleCount were removed: an old URL with them still loads

@@ -226,8 +226,9 @@ export function createPlot(container, spec, { onCursor } = {}) {
         next.series.length === current.series.length &&
         next.series.every((s, i) => s.label === current.series[i].label);
       const sameScales = JSON.stringify([next.x, next.y]) === JSON.stringify([current.x, current.y]);
+      const sameAxes = next.xLabel === current.xLabel && next.yLabel === current.yLabel; // drawn when built
       current = next;
-      if (sameSeries && sameScales) {
+      if (sameSeries && sameScales && sameAxes) {
         caption.textContent = next.title;
         u.setData(next.data);
         u.redraw(false, true);
