@@ -134,7 +134,7 @@ describe("energy: the coloured metal's random walk", () => {
 
 describe('energy: the picture the words speak of', () => {
   it(
-    'the spheres come first, each outlined where it vanishes (radius 1/1.08 of its cell), and gold is shown in ' +
+    'the spheres come first, each ringed where it vanishes (radius 1.03/1.08 of half its cell), and gold is shown in ' +
       'patches of the colours src/math/albedo-table.js gives head-on',
     async () => {
       const { buildAlbedoTableGGX, specularAlbedoFromTable } = await import('../../src/math/albedo-table.js');
@@ -162,7 +162,7 @@ describe('energy: the picture the words speak of', () => {
       expect(layout.inView).toBe(true);
       expect(layout.caption).toMatch(/disappears.*Kulla–Conty puts back .* every sphere disappears/);
       expect(layout.diameters).toHaveLength(5);
-      for (const d of layout.diameters) expect(Math.abs(d - layout.cell / 1.08)).toBeLessThan(3);
+      for (const d of layout.diameters) expect(Math.abs(d - (layout.cell / 1.08) * 1.03)).toBeLessThan(3);
 
       const patches = await page.$$eval('.metal-patches figure', (figs) =>
         figs.map((f) => {

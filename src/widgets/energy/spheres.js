@@ -31,12 +31,16 @@ function probeRows(a, alpha, compensation, compensationLabel) {
 /** What the furnace shows, over the spheres: a sphere that loses nothing disappears into the background. */
 export const furnaceCaption = (compensationLabel) =>
   'White furnace: light of radiance 1 from all around, on a background of the same radiance. A sphere that loses ' +
-  'no energy looks just like the background and disappears (dashed: where each sphere is). ' +
+  'no energy looks just like the background and disappears (dashed: round each sphere). ' +
   (compensationLabel
     ? `${compensationLabel} puts back the light lost between facets: every sphere disappears (probe one: E = 1).`
     : 'The grey that stays is the energy lost; probe a sphere to read it.');
 
-/** Dashed circles where the spheres are (the grid's cells are squares: cell i spans [i, i + 1] of n × 1). */
+/**
+ * Dashed circles round the spheres, just outside each silhouette so that no sphere pixel is covered (the grid's
+ * cells are squares: cell i spans [i, i + 1] of n × 1; a sphere's radius is half a cell over HALF_SIZE).
+ */
+const OUTSIDE = 1.03;
 function createOutlines(holder) {
   const svg = document.createElementNS('http://www.w3.org/2000/svg', 'svg');
   svg.classList.add('furnace-outlines');
@@ -46,7 +50,8 @@ function createOutlines(holder) {
     svg.setAttribute('viewBox', `0 0 ${Math.max(n, 1)} 1`);
     svg.innerHTML = Array.from(
       { length: n },
-      (_, i) => `<circle cx="${i + 0.5}" cy="0.5" r="${0.5 / HALF_SIZE}" vector-effect="non-scaling-stroke" />`,
+      (_, i) =>
+        `<circle cx="${i + 0.5}" cy="0.5" r="${(0.5 / HALF_SIZE) * OUTSIDE}" vector-effect="non-scaling-stroke" />`,
     ).join('');
   };
 }
