@@ -23,7 +23,7 @@ export async function measureIbl({ quick }) {
         browser,
         server.url,
         `embed.html?w=material-lab&material=${c.material}&alpha=${c.alpha}` +
-          `&environment=${c.environment}&refSamples=${refSamples}`,
+          `&environment=${c.environment}&refSamples=${refSamples}&punctual=0`, // the environment alone
         { width: 1100, height: 700 },
       );
       await page.waitForFunction(

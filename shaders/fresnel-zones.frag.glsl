@@ -1,5 +1,6 @@
 // The Fresnel-zones demo. Switches (one program per combination, only the used code is compiled):
-//   SHOW_FRESNEL   draw the material's Fresnel reflectance of n·v instead of zone colours
+//   SHOW_FRESNEL   draw the material's Fresnel reflectance of n·v instead of zone colours, the zones' borders
+//                  drawn over it as lines (so the legend's shares have their picture)
 //   ZONE_BY_LH     zones of l·h instead of n·v
 //   WEIGHTED       weight each zone by the rest of the specular BRDF, D·V, with the terms' own switches
 //                  NDF_* and VIS_* (the catalogue's; the widget passes GGX and height-correlated Smith)
@@ -63,6 +64,8 @@ void main() {
 #else
 #if defined(SHOW_FRESNEL)
   vec3 linear = materialFresnel(nv);
+  // a border pixel: a step of 1.5 pixels towards the centre is in the next zone; drawn in the outer zone's colour
+  if (int(fresnelZone(nv + 1.5 * fwidth(nv))) != zone) linear = uZoneColors[zone];
 #elif defined(WEIGHTED)
   vec3 linear = uZoneColors[zone] * (1.0 - exp(-uExposure * weight));
 #else

@@ -80,6 +80,15 @@ export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
     },
     /** RMS error of the approximation against the reference over the sphere, absolute and relative. */
     error: (slot = 0) => errors.measure(approxTargets[slot].texture, reference.texture),
+    /** The approximation's radiance at the sphere's centre (n = v): the mean RGB of its four middle texels. */
+    readCentre(slot = 0) {
+      const target = approxTargets[slot];
+      const half = target.texture.type === THREE.HalfFloatType;
+      const texels = half ? new Uint16Array(16) : new Float32Array(16);
+      renderer.readRenderTargetPixels(target, res / 2 - 1, res / 2 - 1, 2, 2, texels);
+      const value = (i) => (half ? THREE.DataUtils.fromHalfFloat(texels[i]) : texels[i]);
+      return [0, 1, 2].map((c) => (value(c) + value(4 + c) + value(8 + c) + value(12 + c)) / 4);
+    },
     /** Reads an image back (tests): 'approx' (of `slot`) or 'reference', RGBA float per pixel. */
     read: (which, slot = 0) => readImage(renderer, which === 'approx' ? approxTargets[slot] : reference.target),
     get variants() {

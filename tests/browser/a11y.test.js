@@ -115,7 +115,7 @@ describe('every widget describes its canvases and is usable by keyboard', () => 
 
 describe('interactive canvases answer the keyboard', () => {
   it('the Fresnel-zones view moves its light with the arrow keys', async () => {
-    const page = await openWidget('fresnel-zones');
+    const page = await openWidget('fresnel-zones&mode=zones-lh');
     const before = await getState(page, 'fresnel-zones');
     await page.focus('.viewport canvas');
     await page.keyboard.press('ArrowDown');

@@ -131,3 +131,63 @@ describe("energy: the coloured metal's random walk", () => {
     180_000,
   );
 });
+
+describe('energy: the picture the words speak of', () => {
+  it(
+    'the spheres come first, each ringed where it vanishes (radius 1.03/1.08 of half its cell), and gold is shown in ' +
+      'patches of the colours src/math/albedo-table.js gives head-on',
+    async () => {
+      const { buildAlbedoTableGGX, specularAlbedoFromTable } = await import('../../src/math/albedo-table.js');
+      const { materialByKey } = await import('../../src/math/materials.js');
+      const { linearToSrgb } = await import('../../src/math/color.js');
+      const page = await open(browser, 'embed.html?w=energy&compensation=kullaConty&metal=gold&metalAlpha=0.8', {
+        width: 1280,
+        height: 800,
+      });
+      await widget(page, 'energy');
+      const layout = await page.evaluate(() => {
+        const top = (q) => document.querySelector(q).getBoundingClientRect().top;
+        const canvas = document.querySelector('.sphere-grid canvas').getBoundingClientRect();
+        const circles = [...document.querySelectorAll('.furnace-outlines circle')];
+        return {
+          spheres: top('.sphere-grid'),
+          firstPlot: top('.widget-energy figure.plot'),
+          inView: canvas.bottom <= window.innerHeight,
+          cell: canvas.width / 5,
+          diameters: circles.map((c) => c.getBoundingClientRect().width),
+          caption: document.querySelector('.furnace-caption').textContent,
+        };
+      });
+      expect(layout.spheres).toBeLessThan(layout.firstPlot);
+      expect(layout.inView).toBe(true);
+      expect(layout.caption).toMatch(/disappears.*Kulla–Conty puts back .* every sphere disappears/);
+      expect(layout.diameters).toHaveLength(5);
+      for (const d of layout.diameters) expect(Math.abs(d - (layout.cell / 1.08) * 1.03)).toBeLessThan(3);
+
+      const patches = await page.$$eval('.metal-patches figure', (figs) =>
+        figs.map((f) => {
+          const patch = f.querySelector('.patch');
+          const rgb = getComputedStyle(patch).backgroundColor.match(/\d+/g).map(Number);
+          return { name: f.textContent, width: patch.getBoundingClientRect().width, rgb };
+        }),
+      );
+      expect(patches.map((p) => p.name.split(' (')[0])).toEqual([
+        'single scattering',
+        'Kulla–Conty',
+        'Turquin',
+        'random walk',
+      ]);
+      const table = buildAlbedoTableGGX();
+      const gold = materialByKey('gold').linear;
+      ['none', 'kullaConty', 'turquin'].forEach((key, i) => {
+        expect(patches[i].width).toBeGreaterThanOrEqual(96);
+        const expected = gold.map((f0) =>
+          Math.round(linearToSrgb(specularAlbedoFromTable(table, 1, 0.8, f0, key)) * 255),
+        );
+        patches[i].rgb.forEach((c, ch) => expect(Math.abs(c - expected[ch])).toBeLessThanOrEqual(1));
+      });
+      expect(page.errors).toEqual([]);
+      await page.close();
+    },
+  );
+});

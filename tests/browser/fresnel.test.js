@@ -1,6 +1,16 @@
 // The Fresnel chapter in a real Chromium: widgets, URL state, notices, zone shares, idling, no WebGL2.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { distinctColors, getState, launchBrowser, open, setControl, settle, shot, widget } from './helpers.js';
+import {
+  distinctColors,
+  getState,
+  launchBrowser,
+  open,
+  setControl,
+  settle,
+  shot,
+  widget,
+  withPixels,
+} from './helpers.js';
 import { sphereZoneFractions } from '../../src/math/zones.js';
 import { weightedSphereShares } from '../unit/zone-shares.js';
 
@@ -119,7 +129,7 @@ describe('fresnel-zones', () => {
   });
 
   it('moves the light with the keyboard and by dragging, and probes the surface', async () => {
-    const page = await open(browser, 'embed.html?w=fresnel-zones&lightTheta=60');
+    const page = await open(browser, 'embed.html?w=fresnel-zones&mode=zones-lh&lightTheta=60');
     await widget(page, 'fresnel-zones');
     await page.focus(CANVAS);
     await page.keyboard.press('ArrowUp');
@@ -132,6 +142,66 @@ describe('fresnel-zones', () => {
     await page.mouse.move(box.x + box.width / 2 + 20, box.y + box.height / 2 + 10);
     await settle(page);
     expect(await page.$eval('.probe', (el) => el.textContent)).toMatch(/n·v.*n·l.*n·h.*l·h.*F\(n·v\) exact/s);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('the modes of n·v hide the light and leave it where it is; a drag does not move it', async () => {
+    const page = await open(browser, 'embed.html?w=fresnel-zones&mode=zones-nv&lightTheta=60');
+    await widget(page, 'fresnel-zones');
+    const sunShown = () => page.$eval('.light-overlay', (svg) => getComputedStyle(svg).display !== 'none');
+    expect(await sunShown()).toBe(false);
+    const box = await (await page.$(CANVAS)).boundingBox();
+    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+    await page.mouse.down();
+    await page.mouse.up();
+    await page.focus(CANVAS);
+    await page.keyboard.press('ArrowUp');
+    expect((await getState(page, 'fresnel-zones')).lightTheta).toBe(60);
+    await setControl(page, 'Mode', 'Zones of l·h');
+    expect(await sunShown()).toBe(true);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('the probe follows the light: at the centre of the orthographic sphere n·l = cos θ, 60° then 65°', async () => {
+    const page = await open(browser, 'embed.html?w=fresnel-zones&mode=zones-lh&lightTheta=60');
+    await widget(page, 'fresnel-zones');
+    const box = await (await page.$(CANVAS)).boundingBox();
+    await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+    const nl = () =>
+      page.$$eval('.probe tr', (trs) =>
+        Number.parseFloat(trs.find((tr) => tr.cells[0].textContent === 'n·l').cells[1].textContent),
+      );
+    await expect.poll(nl).toBeCloseTo(Math.cos((60 * Math.PI) / 180), 3);
+    await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].update({ lightTheta: 65 }));
+    await expect.poll(nl).toBeCloseTo(Math.cos((65 * Math.PI) / 180), 3);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
+  it('the Fresnel picture outlines the zones of n·v at sin 45° and sin 75° of the sphere radius', async () => {
+    const page = await open(browser, 'embed.html?w=fresnel-zones&mode=fresnel-nv&shape=sphere&camera=orthographic');
+    await widget(page, 'fresnel-zones');
+    await settle(page, 500);
+    // along the row through the centre, rightwards: the radius (in sphere radii) of the first yellow and red pixels
+    const radii = await withPixels(
+      page,
+      await shot(page, CANVAS),
+      `(image) => {
+        const near = (i, [r, g, b]) => Math.abs(image.data[i] - r) + Math.abs(image.data[i + 1] - g) +
+          Math.abs(image.data[i + 2] - b) < 60;
+        const cy = Math.round(image.height / 2), cx = image.width / 2, R = image.height / 2 / 1.1;
+        const first = (rgb) => {
+          for (let x = Math.ceil(cx); x < image.width; x++)
+            if (near((cy * image.width + x) * 4, rgb)) return (x - cx) / R;
+          return null;
+        };
+        return [first([0xf5, 0xd3, 0x27]), first([0xe2, 0x35, 0x2b])];
+      }`,
+    );
+    expect(Math.abs(radii[0] - Math.SQRT1_2)).toBeLessThan(0.02);
+    expect(Math.abs(radii[1] - Math.sin((75 * Math.PI) / 180))).toBeLessThan(0.02);
     expect(page.errors).toEqual([]);
     await page.close();
   });

@@ -25,7 +25,7 @@ afterAll(async () => {
 
 async function furnaceLab(compensation) {
   const query =
-    'lab.environment=furnace&lab.layers=specular&lab.fresnel=one&lab.alpha=1' +
+    'lab.punctual=0&lab.environment=furnace&lab.layers=specular&lab.fresnel=one&lab.alpha=1' +
     `&lab.compensation=${compensation}&lab.refSamples=128`;
   const page = await open(browser, `rendering.html?${query}`, { width: 1200, height: 900 });
   await widget(page, 'lab');

@@ -4,6 +4,8 @@ import { getState, launchBrowser, open, redAt, setControl, settle, shot, widget,
 import { linearToSrgb } from '../../src/math/color.js';
 import { albedoGGX } from '../../src/math/integrate.js';
 import { DEG } from '../../src/math/angles.js';
+import { termLabel } from '../../src/math/catalogue/index.js';
+import { ndfCurves, tailsAt } from '../../src/widgets/ndf-explorer/model.js';
 
 let browser;
 beforeAll(async () => {
@@ -71,6 +73,31 @@ describe('ndf-explorer', () => {
   });
 });
 
+describe('ndf-explorer, the log plot', () => {
+  it('has a legend of its own whose hover readout gives D (Home: D(0) of each NDF, as src/math has it)', async () => {
+    const page = await open(browser, 'embed.html?w=ndf-explorer');
+    await widget(page, 'ndf-explorer');
+    const logPlot = '.widget-ndf-explorer figure.plot:nth-of-type(2)';
+    const values = () => page.$$eval(`${logPlot} .u-legend .u-value`, (els) => els.map((e) => e.textContent));
+    expect((await values()).length).toBe(6); // θh and the five NDFs
+    const box = await (await page.$(`${logPlot} .u-over`)).boundingBox();
+    await page.mouse.move(box.x + box.width * 0.3, box.y + box.height * 0.5);
+    await expect.poll(async () => (await values())[0]).not.toBe('—');
+    await page.focus(`${logPlot} canvas`);
+    await page.keyboard.press('Home');
+    const curves = await page.evaluate(() => globalThis.__shadingLab.widgets['ndf-explorer'].getCurves());
+    const expected = ['0.0', ...Object.values(curves).map((d) => d[0].toPrecision(3))];
+    await expect.poll(values).toEqual(expected);
+    const state = await getState(page, 'ndf-explorer');
+    const named = termLabel('ndf', tailsAt(ndfCurves(state))[0].key);
+    expect(await page.$eval('.widget-ndf-explorer .tail-note', (el) => el.textContent)).toMatch(
+      new RegExp(`^Longest tail at a half width of 8°: ${named}\\.`),
+    );
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+});
+
 describe('visibility-explorer', () => {
   it('roughness changes the Smith curves but not the implicit term', async () => {
     const page = await open(browser, 'embed.html?w=visibility-explorer&terms=implicit,smithGGXCorrelated');
@@ -82,6 +109,25 @@ describe('visibility-explorer', () => {
     expect(errs2.implicit).not.toBeCloseTo(errs1.implicit, 1); // the reference moved, the implicit term did not
     expect(page.errors).toEqual([]);
     await page.close();
+  });
+});
+
+describe('visibility-explorer, the axes and the spheres’ note', () => {
+  it('after “l, v mirrored” the plots look as that state opened fresh (the axis follows the mode)', async () => {
+    const plotCanvas = '.widget-visibility-explorer figure.plot canvas';
+    const page = await open(browser, 'embed.html?w=visibility-explorer');
+    await widget(page, 'visibility-explorer');
+    await setControl(page, 'Directions', 'l, v mirrored about n (h = n)');
+    const changed = await shot(page, plotCanvas);
+    const fresh = await open(browser, 'embed.html?w=visibility-explorer&config=mirror');
+    await widget(fresh, 'visibility-explorer');
+    await settle(fresh, 400);
+    expect(changed).toBe(await shot(fresh, plotCanvas));
+    expect(await page.$eval('.widget-visibility-explorer .rim-note', (el) => el.textContent)).toMatch(
+      /^What to look for: the lit side.*Cook–Torrance \+\d+%/,
+    );
+    expect([...page.errors, ...fresh.errors]).toEqual([]);
+    await Promise.all([page.close(), fresh.close()]);
   });
 });
 

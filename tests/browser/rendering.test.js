@@ -159,7 +159,8 @@ describe('material lab', () => {
 
   it('shows 1 for a white Lambertian sphere in the white furnace: approximation and converged reference', async () => {
     const page = await openLab(
-      'lab.environment=furnace&lab.layers=diffuse&lab.diffuse=ffffff&lab.refSamples=128&lab.exposure=0.5',
+      'lab.punctual=0&lab.environment=furnace&lab.layers=diffuse&lab.diffuse=ffffff&lab.refSamples=128' +
+        '&lab.exposure=0.5',
     );
     const points = texelCentre([
       [0, 0],
@@ -181,7 +182,7 @@ describe('material lab', () => {
 
   it('importance sampling converges on the reference as N grows', async () => {
     const page = await openLab(
-      'lab.material=gold&lab.alpha=0.3&lab.envMethod=importance&lab.samples=2&lab.refSamples=256',
+      'lab.punctual=0&lab.material=gold&lab.alpha=0.3&lab.envMethod=importance&lab.samples=2&lab.refSamples=256',
     );
     const errors = [];
     for (const n of [2, 8, 32, 128]) {
@@ -207,7 +208,8 @@ describe('material lab', () => {
       'reference than a point at its centre',
     async () => {
       const page = await openLab(
-        'lab.env=0&lab.area=1&lab.areaRadius=15&lab.areaTheta=30&lab.material=silver&lab.alpha=0.1&lab.refSamples=128',
+        'lab.env=0&lab.punctual=0&lab.area=1&lab.areaRadius=15&lab.areaTheta=30&lab.material=silver&lab.alpha=0.1' +
+          '&lab.refSamples=128',
       );
       const errorOf = async (method) => {
         await page.evaluate((m) => globalThis.__shadingLab.widgets.lab.update({ areaMethod: m }), method);
@@ -281,7 +283,7 @@ describe('material lab', () => {
     async () => {
       const alpha = 0.3;
       const page = await openLab(
-        `lab.environment=furnace&lab.layers=specular&lab.f0=0.04&lab.alpha=${alpha}` +
+        `lab.punctual=0&lab.environment=furnace&lab.layers=specular&lab.f0=0.04&lab.alpha=${alpha}` +
           '&lab.envMethod=mirror&lab.refSamples=128',
       );
       const spots = [
@@ -380,7 +382,8 @@ describe('material lab', () => {
     async () => {
       const alpha = 0.0625; // a layer of the prefiltered map: no blend between layers
       const page = await openLab(
-        `lab.layers=specular&lab.fresnel=one&lab.alpha=${alpha}&lab.envMethod=split-sum&lab.refSamples=128`,
+        `lab.punctual=0&lab.layers=specular&lab.fresnel=one&lab.alpha=${alpha}&lab.envMethod=split-sum` +
+          '&lab.refSamples=128',
       );
       await dropFile(
         page,
@@ -484,7 +487,7 @@ describe('material lab', () => {
     'takes a dropped .hdr, and refuses a broken or wrongly shaped one with a ' + 'message, keeping the environment',
     async () => {
       const page = await openLab(
-        'lab.environment=sky&lab.layers=diffuse&lab.diffuse=ffffff&lab.refSamples=128&lab.exposure=0.5',
+        'lab.punctual=0&lab.environment=sky&lab.layers=diffuse&lab.diffuse=ffffff&lab.refSamples=128&lab.exposure=0.5',
       );
       const drop = (name, bytes) => dropFile(page, name, bytes);
       const notices = () => page.$$eval('.widget-material-lab .notice', (els) => els.map((e) => e.textContent));

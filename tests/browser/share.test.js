@@ -72,7 +72,7 @@ describe('touch', () => {
     'a drag moves the light (right of centre: φ = 0°); ' +
       'a tap at the centre of the orthographic sphere reads n·v = 1',
     async () => {
-      const page = await touchPage('embed.html?w=fresnel-zones');
+      const page = await touchPage('embed.html?w=fresnel-zones&mode=zones-lh'); // a mode the light matters to
       await widget(page, 'fresnel-zones');
       const box = await (await page.$('.widget-fresnel-zones canvas')).boundingBox();
       const [cx, cy] = [box.x + box.width / 2, box.y + box.height / 2];

@@ -45,7 +45,7 @@ export function createStateGui(
   /** @type {(f: Field) => GUI} */
   const parentOf = (f) => {
     if (!f.group) return gui;
-    if (!groups.has(f.group)) groups.set(f.group, gui.addFolder(f.group));
+    if (!groups.has(f.group)) groups.set(f.group, f.closed ? gui.addFolder(f.group).close() : gui.addFolder(f.group));
     return /** @type {GUI} */ (groups.get(f.group));
   };
 

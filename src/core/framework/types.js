@@ -61,6 +61,7 @@
  * @typedef {object} FieldCommon  what every kind of field may carry
  * @property {string} [label]  the control's name and the name in notices (else the key)
  * @property {string} [group]  the control goes in a folder of this name
+ * @property {boolean} [closed]  on a group's first field: its folder starts closed (a long panel stays short)
  * @property {string} [hint]  the control's tooltip
  * @property {string} [unit]  shown after the label (a number's unit)
  */

@@ -8,7 +8,7 @@ import { DEG } from '../../math/angles.js';
 const ringRadius = (w, h) => 0.42 * Math.min(w, h);
 
 /** The light's marker over the canvas: the 90° ring, the ray from the centre and the sun, with its label. */
-function createOverlay(canvas, overlayParent, get) {
+function createOverlay(canvas, overlayParent, get, active) {
   const svg = document.createElementNS('http://www.w3.org/2000/svg', 'svg');
   svg.classList.add('light-overlay');
   svg.setAttribute('aria-hidden', 'true');
@@ -18,6 +18,7 @@ function createOverlay(canvas, overlayParent, get) {
   const [ring, ray, sun, label] = svg.children;
 
   const draw = () => {
+    svg.style.display = active() ? '' : 'none';
     const w = canvas.clientWidth;
     const h = canvas.clientHeight;
     svg.setAttribute('viewBox', `0 0 ${w} ${h}`);
@@ -56,8 +57,12 @@ function keyMove(e, { lightTheta, lightPhi }) {
   return Object.hasOwn(moves, e.key) ? moves[e.key] : null;
 }
 
-export function attachLightControl(canvas, overlayParent, { get, set }) {
-  const overlay = createOverlay(canvas, overlayParent, get);
+/**
+ * `get()`/`set(partial)` read and move the light; `active()` says whether the light matters to the picture now:
+ * when it does not, the handle is hidden and drags and keys leave the light alone.
+ */
+export function attachLightControl(canvas, overlayParent, { get, set, active = () => true }) {
+  const overlay = createOverlay(canvas, overlayParent, get, active);
 
   const fromPointer = (e) => {
     const rect = canvas.getBoundingClientRect();
@@ -76,7 +81,7 @@ export function attachLightControl(canvas, overlayParent, { get, set }) {
   };
   const listeners = {
     pointerdown(e) {
-      if (e.button !== 0) return;
+      if (e.button !== 0 || !active()) return;
       dragging = true;
       canvas.setPointerCapture(e.pointerId);
       fromPointer(e);
@@ -85,7 +90,7 @@ export function attachLightControl(canvas, overlayParent, { get, set }) {
     pointerup: up,
     pointercancel: up,
     keydown(e) {
-      const move = keyMove(e, get());
+      const move = active() ? keyMove(e, get()) : null;
       if (!move) return;
       e.preventDefault();
       set(move);

@@ -121,7 +121,8 @@ function plotOptions(spec) {
         dash: s.dash,
         points: { show: Boolean(s.points), size: 7, fill: s.stroke },
         spanGaps: Boolean(s.spanGaps), // a curve over x values other series own
-        value: (_, v) => (v == null ? '—' : v.toFixed(4)),
+        // a log axis spans decades: significant figures, not a fixed point that reads 0.0000 down the tail
+        value: (_, v) => (v == null ? '—' : spec.y?.log ? v.toPrecision(3) : v.toFixed(4)),
       })),
     ],
   };
@@ -226,8 +227,9 @@ export function createPlot(container, spec, { onCursor } = {}) {
         next.series.length === current.series.length &&
         next.series.every((s, i) => s.label === current.series[i].label);
       const sameScales = JSON.stringify([next.x, next.y]) === JSON.stringify([current.x, current.y]);
+      const sameAxes = next.xLabel === current.xLabel && next.yLabel === current.yLabel; // drawn when built
       current = next;
-      if (sameSeries && sameScales) {
+      if (sameSeries && sameScales && sameAxes) {
         caption.textContent = next.title;
         u.setData(next.data);
         u.redraw(false, true);

@@ -41,6 +41,7 @@ export function attachProbe(canvas, parent, { getMesh, getCamera, describe, isBu
   const normal = new THREE.Vector3();
   const normalMatrix = new THREE.Matrix3();
 
+  let last = null; // the point last read ([n, v] in view space), read again by refresh()
   const move = (e) => {
     if (isBusy?.()) return;
     const rect = canvas.getBoundingClientRect();
@@ -50,23 +51,29 @@ export function attachProbe(canvas, parent, { getMesh, getCamera, describe, isBu
     const hit = raycaster.intersectObject(getMesh(), false)[0];
     if (!hit?.normal) {
       panel.textContent = idle;
+      last = null;
       return;
     }
     normalMatrix.getNormalMatrix(camera.matrixWorldInverse.clone().multiply(hit.object.matrixWorld));
     normal.copy(hit.normal).applyMatrix3(normalMatrix).normalize();
     const viewPos = hit.point.clone().applyMatrix4(camera.matrixWorldInverse);
     const v = camera.isOrthographicCamera ? [0, 0, 1] : viewPos.clone().negate().normalize().toArray();
-    showProbeRows(panel, describe(normal.toArray(), v));
+    last = [normal.toArray(), v];
+    showProbeRows(panel, describe(...last));
   };
   // phones have no hover: a tap (touch or pen) probes where it lands, and the reading stays when the finger lifts
   const tap = (e) => e.pointerType !== 'mouse' && move(e);
   const leave = (e) => {
-    if (e.pointerType === 'mouse') panel.textContent = idle;
+    if (e.pointerType !== 'mouse') return;
+    panel.textContent = idle;
+    last = null;
   };
   canvas.addEventListener('pointermove', move);
   canvas.addEventListener('pointerup', tap);
   canvas.addEventListener('pointerleave', leave);
   return {
+    /** Reads the same point again: after the state changed (the light moved), the rows follow it. */
+    refresh: () => last && showProbeRows(panel, describe(...last)),
     dispose() {
       canvas.removeEventListener('pointermove', move);
       canvas.removeEventListener('pointerup', tap);

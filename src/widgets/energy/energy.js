@@ -24,11 +24,12 @@ export function createEnergy(container, initialState = {}, { onStateChange, lock
     about: ABOUT,
     terms: TERMS_USED,
   });
+  // the spheres first: they are what the words speak of; the plots and the table give their figures
+  const spheres = createFurnaceSpheres(shell.view);
   const plotHolder = document.createElement('div');
   shell.view.append(plotHolder);
   let sweep = albedoSweep(shell.state);
   const plots = createAlbedoPlots(plotHolder, sweep);
-  const spheres = createFurnaceSpheres(shell.view);
   const table = createAlbedoTable(shell.view);
   const compensationLabel = () => termLabel('compensation', shell.state.compensation);
   const metalNow = () => metalView.update(shell.state.metal, shell.state.metalAlpha);

@@ -71,10 +71,27 @@ function plotSpec({ metal, alpha, curves, walk }) {
   };
 }
 
-function swatchTable({ metal, alpha, curves, walk }) {
+/** The models' head-on colours, [name, linear rgb | undefined while the walk runs], the walk last. */
+function headOnColours({ curves, walk }) {
   const walkRow = [`random walk (${WALK_PATHS / 1000}k paths${walk ? '' : ', running'})`, walk?.[0].albedo];
-  const rows = [...COMPENSATIONS.map((key) => [termEntry('compensation', key).short, curves[key][0]]), walkRow];
-  const swatch = (rgb) => `<span class="swatch" style="background:${rgbToHex(rgb.map(linearToSrgb))}"></span>`;
+  return [...COMPENSATIONS.map((key) => [termEntry('compensation', key).short, curves[key][0]]), walkRow];
+}
+const hexOf = (rgb) => rgbToHex(rgb.map(linearToSrgb));
+
+/** The same colours large enough to compare by eye, each named. */
+function patches(shown) {
+  const patch = ([name, rgb]) =>
+    `<figure><span class="patch" style="background:${rgb ? hexOf(rgb) : 'transparent'}"></span>` +
+    `<figcaption>${name}</figcaption></figure>`;
+  const { metal, alpha } = shown;
+  const head = `<p class="patches-head">${metal.name} at α = ${alpha}, seen head-on, as each model colours it:</p>`;
+  return `${head}<div class="metal-patches">${headOnColours(shown).map(patch).join('')}</div>`;
+}
+
+function swatchTable(shown) {
+  const { metal, alpha } = shown;
+  const rows = headOnColours(shown);
+  const swatch = (rgb) => `<span class="swatch" style="background:${hexOf(rgb)}"></span>`;
   const row = ([name, rgb]) =>
     rgb
       ? `<tr><td>${name}</td><td>${swatch(rgb)}</td><td>${rgb.map((x) => x.toFixed(3)).join(', ')}</td>` +
@@ -103,7 +120,7 @@ export function createMetalView(container, onWalk = () => {}) {
   const draw = () => {
     if (plot) plot.setData(plotSpec(last));
     else plot = createPlot(holder, plotSpec(last));
-    swatches.innerHTML = swatchTable(last);
+    swatches.innerHTML = patches(last) + swatchTable(last);
   };
   const walks = createWalkCache((key) => {
     if (!last || key !== `${last.metal.key}|${last.alpha}`) return;

@@ -7,7 +7,7 @@ const seriesOf = (sweep) => sweep.map((d) => ({ label: `α = ${d.alpha}`, stroke
 
 const albedoSpec = (sweep) => ({
   ...axis,
-  title: 'Directional albedo E(θv), F = 1',
+  title: 'Directional albedo E(θv) of one bounce (no compensation), F = 1',
   yLabel: 'E',
   y: { min: 0, max: 1.02 },
   series: seriesOf(sweep),

@@ -2,6 +2,7 @@
 // split-sum table (GGX, height-correlated Smith, F = 1), or, compensated, the albedo with the lost energy put back
 // (from the albedo-loss table, made when a compensation is first chosen). The probe reads E and the loss there.
 import { createSphereGrid } from '../../core/ui/sphere-grid.js';
+import { HALF_SIZE } from '../../core/ui/sphere-impostor.js';
 import { createDfgTexture } from '../../lab/environment-maps.js';
 import { createAlbedoTableTexture, albedoTableOnce } from '../../core/gpu/albedo-table-texture.js';
 import { albedoGGX } from '../../math/integrate.js';
@@ -27,13 +28,47 @@ function probeRows(a, alpha, compensation, compensationLabel) {
   return [...rows, [`with ${compensationLabel}`, compensated.toFixed(4)]];
 }
 
+/** What the furnace shows, over the spheres: a sphere that loses nothing disappears into the background. */
+export const furnaceCaption = (compensationLabel) =>
+  'White furnace: light of radiance 1 from all around, on a background of the same radiance. A sphere that loses ' +
+  'no energy looks just like the background and disappears (dashed: round each sphere). ' +
+  (compensationLabel
+    ? `${compensationLabel} puts back the light lost between facets: every sphere disappears (probe one: E = 1).`
+    : 'The grey that stays is the energy lost; probe a sphere to read it.');
+
+/**
+ * Dashed circles round the spheres, just outside each silhouette so that no sphere pixel is covered (the grid's
+ * cells are squares: cell i spans [i, i + 1] of n × 1; a sphere's radius is half a cell over HALF_SIZE).
+ */
+const OUTSIDE = 1.03;
+function createOutlines(holder) {
+  const svg = document.createElementNS('http://www.w3.org/2000/svg', 'svg');
+  svg.classList.add('furnace-outlines');
+  svg.setAttribute('aria-hidden', 'true');
+  holder?.append(svg);
+  return (n) => {
+    svg.setAttribute('viewBox', `0 0 ${Math.max(n, 1)} 1`);
+    svg.innerHTML = Array.from(
+      { length: n },
+      (_, i) =>
+        `<circle cx="${i + 0.5}" cy="0.5" r="${(0.5 / HALF_SIZE) * OUTSIDE}" vector-effect="non-scaling-stroke" />`,
+    ).join('');
+  };
+}
+
 export function createFurnaceSpheres(container) {
+  const caption = document.createElement('p');
+  caption.className = 'furnace-caption';
+  container.append(caption);
   const grid = createSphereGrid(container, { label: 'Spheres in a white furnace', background: '#ffffff' });
+  const outline = createOutlines(grid.canvas?.parentElement);
   const dfg = createDfgTexture(); // GGX, height-correlated Smith: scale + bias is E
   let lossTable = null;
   return {
     /** One sphere per α of the sweep, with `compensation` (a key) whose label the probe shows. */
     draw(sweep, compensation, compensationLabel) {
+      caption.textContent = furnaceCaption(compensation === 'none' ? null : compensationLabel);
+      outline(sweep.length);
       if (compensation !== 'none') lossTable ??= createAlbedoTableTexture();
       grid.setCells(
         sweep.map((d) => ({
@@ -48,6 +83,7 @@ export function createFurnaceSpheres(container) {
       return grid.canvas;
     },
     dispose() {
+      caption.remove();
       grid.dispose();
       dfg.dispose();
       lossTable?.dispose();

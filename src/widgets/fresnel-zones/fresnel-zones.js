@@ -60,6 +60,8 @@ export function create(container, initialState = {}, { onStateChange, locked } =
     if (changed.includes('shape')) view.setShape(shell.state.shape);
     stats?.invalidate(changed);
     if (changed.includes('palette')) showMeasured();
+    // the probe reads its point again with the new light or material (a new shape or camera moves the point)
+    if (!changed.includes('shape') && !changed.includes('camera')) tools?.refreshProbe();
     viewport?.invalidate();
   };
   const update = shell.connect({ title: TITLE, onChanged, onStateChange });

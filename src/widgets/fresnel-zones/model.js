@@ -17,6 +17,8 @@ export const WEIGHT_TERMS = { D: 'ggx', V: 'smithGGXCorrelated' };
 
 export const zonesByLh = (state) => state.mode.startsWith('zones-lh');
 export const isWeighted = (state) => state.mode === 'zones-lh-weighted';
+/** Whether the light changes the picture: only the zones of l·h depend on it (n·v is the viewer's alone). */
+export const lightMatters = zonesByLh;
 
 /** Light directions (theta, phi in degrees, view space) spread uniformly over the whole sphere. */
 export function sphereLights(n) {

@@ -8,9 +8,10 @@ import { AVERAGE_LIGHTS, isWeighted, zonesByLh } from './model.js';
 export const TITLE = 'Fresnel zones';
 
 export const ABOUT =
-  'Drag on the picture (or focus it and use the arrow keys) to move the light; the ring marks light at 90° ' +
-  'from the view. Start with the glass Fresnel of n·v: dark centre, bright rim. Then compare the zones of n·v ' +
-  'with the zones of l·h: by l·h the whole object can turn yellow or red, yet once weighted by the rest of the ' +
+  'In the modes of l·h, drag on the picture (or focus it and use the arrow keys) to move the light; the ring ' +
+  'marks light at 90° from the view. n·v depends on the viewer alone, so its modes hide the light. Start with ' +
+  'the glass Fresnel of n·v: dark centre, bright rim, the zones’ borders drawn on it. Then compare the zones of ' +
+  'n·v with the zones of l·h: by l·h the whole object can turn yellow or red, yet once weighted by the rest of the ' +
   'BRDF the light that actually reaches the eye is mostly green. Hover the surface to probe it. While the light ' +
   'moves, edges are drawn without smoothing so that the picture keeps up; they are smoothed once it stops.';
 
@@ -23,7 +24,8 @@ const angleName = (state) => (zonesByLh(state) ? 'l·h' : 'n·v');
 
 /** The legend's heading: what is shared out, by which angle, and whether the figures in brackets are exact. */
 export const legendHead = (state, analytic) =>
-  `Zones of ${angleName(state)} — share of ${shareOf(state)}${analytic ? ' (analytic for this sphere)' : ''}`;
+  `Zones of ${angleName(state)}${state.mode === 'fresnel-nv' ? ', their borders drawn as lines on the picture' : ''}` +
+  ` — share of ${shareOf(state)}${analytic ? ' (analytic for this sphere)' : ''}`;
 
 /** One zone's measured share, and its exact share in brackets where known. */
 export const shareText = (share, exact) => `${pct(share)}${exact === undefined ? '' : ` (${pct(exact)})`}`;
@@ -37,7 +39,7 @@ function pictureText(state) {
     const f0 = fresnelParams(state.material, state.conductor).f0;
     return (
       `${state.fresnel} Fresnel reflectance of n·v: ${f0.map(pct).join(' / ')} where the surface faces the ` +
-      'viewer, rising to 100% at the silhouette'
+      'viewer, rising to 100% at the silhouette; the zones of n·v outlined at 45° and 75°'
     );
   }
   const alpha = isWeighted(state) ? ` (GGX α ${state.alpha})` : '';

@@ -17,6 +17,7 @@ export function createLabFrame({ state, measured, custom, file, show }) {
   let refKey = '';
   let stats = null;
   let ms = null;
+  let centre = null; // the approximation's radiance at the sphere's centre
   let timingRuns = 1; // renders of the approximation whose median is its cost (the bench asks for more)
 
   const frame = ({ lab, environment, again }) => {
@@ -31,6 +32,7 @@ export function createLabFrame({ state, measured, custom, file, show }) {
     if (keys.approx !== approxKey) {
       const times = Array.from({ length: timingRuns }, () => lab.renderApprox(scene)).sort((a, b) => a - b);
       ms = times[Math.floor(times.length / 2)];
+      centre = lab.readCentre(); // once per new approximation, not per frame
       approxKey = keys.approx;
     }
     if (keys.reference !== refKey) {
@@ -43,7 +45,7 @@ export function createLabFrame({ state, measured, custom, file, show }) {
       again();
     }
     stats = { ...lab.error(), ms, timingRuns, samples: lab.batches * REFERENCE_BATCH, target };
-    Object.assign(stats, { samplesN: st.samples, method: st.envMethod });
+    Object.assign(stats, { samplesN: st.samples, method: st.envMethod, centre });
     return show(st, lights, scene, stats);
   };
 

@@ -11,7 +11,7 @@ import { attachEnvironmentDrop } from './environment-drop.js';
 import { createMeasuredMaterial } from './measured-material.js';
 import { createLabFrame } from './lab-frame.js';
 import { createCustomBrdf } from './custom-brdf.js';
-import { missingFile } from './model.js';
+import { WHITE_LAMBERT_HEAD_ON, missingFile } from './model.js';
 import { schema } from './schema.js';
 import { createReadout } from './views.js';
 import { ABOUT, NOTICES, TERMS_USED, captions, description, readoutHtml } from './words.js';
@@ -27,7 +27,7 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
     about: ABOUT,
     terms: TERMS_USED,
   });
-  const readout = createReadout();
+  const readout = createReadout(NOTICES.headOn, () => update(WHITE_LAMBERT_HEAD_ON));
   const notes = createNotesList(); // under the images: how each light's approximation treats the chosen terms
   const file = { key: '', pixels: null }; // a new key for every file taken: a second file of the same name is used too
   const measured = createMeasuredMaterial({
@@ -35,7 +35,7 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
     onError: (message) => shell.notices.show(message),
   });
   const show = (st, lights, scene, stats) => {
-    readout.show(readoutHtml(stats, lights, view.resolution));
+    readout.show(readoutHtml(st, stats, lights, view.resolution));
     const table = st.brdfSource === 'measured' ? measured.current : null;
     shell.describe(description(st, lights, stats, table?.name), view.canvas);
     notes.show(scene);

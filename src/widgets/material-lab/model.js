@@ -67,3 +67,21 @@ export function missingFile(changed, state, has) {
   }
   return null;
 }
+
+/** One click to the talk's check of the π: a white Lambert sphere under the punctual light alone, head-on. */
+export const WHITE_LAMBERT_HEAD_ON = {
+  material: 'custom',
+  diffuse: '#ffffff',
+  layers: 'diffuse',
+  diffuseModel: 'lambert',
+  brdfSource: 'model',
+  punctual: true,
+  lightTheta: 0,
+  cLight: 1,
+  area: false,
+  env: false,
+  ambient: false,
+};
+
+/** Whether the punctual light is the only light on (then the centre's radiance is π f c_light (n·l) alone). */
+export const punctualAlone = (lights) => Boolean(lights.punctual && !lights.sphere && !lights.env && !lights.ambient);

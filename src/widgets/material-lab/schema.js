@@ -75,7 +75,8 @@ export const schema = {
   // the user's whole BRDF (no control of its own: the panel's editor edits it) and its sliders' values
   codeBRDF: { type: 'code', slot: 'brdf', default: SLOTS.brdf.starter, label: 'Your BRDF (GLSL)' },
   params: { type: 'params', default: {}, label: 'Sliders of your code' },
-  punctual: { group: 'Punctual light', type: 'bool', default: false, label: 'Punctual light' },
+  // on by default: the talk's first light, exact in both images (L = π f c_light (n·l)); the readout reads it
+  punctual: { group: 'Punctual light', type: 'bool', default: true, label: 'Punctual light' },
   lightTheta: {
     group: 'Punctual light',
     type: 'number',
@@ -105,7 +106,8 @@ export const schema = {
     default: 1,
     label: 'Punctual c_light',
   },
-  area: { group: 'Sphere light', type: 'bool', default: false, label: 'Sphere light' },
+  // the folders of the lights that start off, and of the display, start closed: the panel stays near the view's height
+  area: { group: 'Sphere light', closed: true, type: 'bool', default: false, label: 'Sphere light' },
   areaTheta: {
     group: 'Sphere light',
     type: 'number',
@@ -185,7 +187,7 @@ export const schema = {
     default: 16,
     label: 'Importance samples N',
   },
-  ambient: { group: 'Ambient light', type: 'bool', default: false, label: 'Ambient light' },
+  ambient: { group: 'Ambient light', closed: true, type: 'bool', default: false, label: 'Ambient light' },
   ambientLevel: {
     group: 'Ambient light',
     type: 'number',
@@ -197,6 +199,7 @@ export const schema = {
   },
   refSamples: {
     group: 'Reference and display',
+    closed: true,
     type: 'enum',
     options: { 128: '128', 512: '512', 2048: '2048' },
     default: '512',

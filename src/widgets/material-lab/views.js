@@ -1,13 +1,21 @@
 // The material lab's views besides its canvas (src/lab/lab-view.js draws the images and captions).
 
-/** The readout under the images (the approximation's cost and error), read out politely when it changes. */
-export function createReadout() {
+/**
+ * The readout under the images (the approximation's cost and error, the centre's radiance), read out politely when it
+ * changes, and a button named `buttonText` that calls `onButton()`.
+ */
+export function createReadout(buttonText, onButton) {
   const element = Object.assign(document.createElement('div'), { className: 'lab-readout' });
-  element.setAttribute('aria-live', 'polite');
+  const figures = document.createElement('div');
+  figures.setAttribute('aria-live', 'polite');
+  const button = Object.assign(document.createElement('button'), { type: 'button', textContent: buttonText });
+  button.className = 'lab-head-on';
+  button.addEventListener('click', onButton);
+  element.append(figures, button);
   return {
     element,
     show(html) {
-      element.innerHTML = html;
+      figures.innerHTML = html;
     },
   };
 }

@@ -5,6 +5,7 @@ import { ENVIRONMENTS } from '../../lab/environments.js';
 import { materialOf } from '../../lab/lab-scene.js';
 import { termEntry } from '../../math/catalogue/index.js';
 import { MERL_TEXTURE_BYTES } from '../measured-brdf/texture-size.js';
+import { punctualAlone } from './model.js';
 
 export const ABOUT =
   'A shading model becomes a picture only with an illumination model. The left sphere is rendered the way a ' +
@@ -61,7 +62,7 @@ export const captions = (st, lights, stats) => [
 ];
 
 /** The readout under the images: the approximation's GPU time and its error (stats), or why there is none. */
-export function readoutHtml(stats, lights, resolution) {
+export function readoutHtml(st, stats, lights, resolution) {
   if (!Object.values(lights).some(Boolean)) {
     return '<p class="lab-empty">Every light is off: switch one on in the controls.</p>';
   }
@@ -71,7 +72,41 @@ export function readoutHtml(stats, lights, resolution) {
   return `<table class="data-table compact"><tbody>
         <tr><th scope="row">GPU time of the approximation</th><td>${time}</td></tr>
         <tr><th scope="row">RMS error against the reference</th><td>${error}</td></tr>
+        ${centreHtml(st, lights, stats.centre)}
         </tbody></table>`;
+}
+
+const rgbText = (rgb) =>
+  rgb.every((x) => Math.abs(x - rgb[0]) < 5e-4) ? rgb[0].toFixed(3) : rgb.map((x) => x.toFixed(3)).join(', ');
+
+/**
+ * The readout's row for the sphere's centre (n = v): its radiance L in the approximation (`centre`, linear RGB),
+ * and with the punctual light alone, L taken apart as π f c_light (n·l): f, and what L would be without the π.
+ */
+export function centreHtml(st, lights, centre) {
+  if (!centre) return '';
+  const L = `L = ${rgbText(centre)}`;
+  const row = (head, text) => `<tr><th scope="row">${head}</th><td>${text}</td></tr>`;
+  if (!punctualAlone(lights)) {
+    return row(
+      'Radiance at the sphere’s centre',
+      `${L}, from every light that is on. With the punctual light alone it is L = π f c_light (n·l): the ` +
+        'button below shows it for a white Lambert sphere.',
+    );
+  }
+  const nl = lights.punctual.dir[2]; // n = v = z at the centre
+  if (!(nl > 1e-6)) return row('Radiance at the sphere’s centre', `${L}: the light is behind it (n·l ≤ 0).`);
+  const cnl = st.cLight * nl;
+  const f = cnl > 0 ? centre.map((x) => x / (Math.PI * cnl)) : null;
+  const apart = f
+    ? `f = L / (π c_light (n·l)) = ${rgbText(f)} (1/π = 0.318 for a white Lambert surface). Without the π ` +
+      `the centre would read L / π = ${rgbText(centre.map((x) => x / Math.PI))}.`
+    : 'c_light = 0: no light arrives.';
+  return row(
+    'Radiance at the sphere’s centre, punctual light alone',
+    `${L} against c_light (n·l) = ${st.cLight} × ${nl.toFixed(3)} = ${cnl.toFixed(3)}: L = π f c_light (n·l), ` +
+      `so ${apart}`,
+  );
 }
 
 /** What the canvas shows, for a screen reader: the material (or the measured table's `name`), the lights, the error. */
@@ -92,6 +127,7 @@ export const NOTICES = {
   noMeasured: 'No MERL file has been dropped yet: drop a .binary file on the widget. Kept the model.',
   noFile: 'No environment file has been dropped yet: drop an .hdr or .exr panorama on the widget. Kept the studio.',
   dropText: 'Load an .hdr / .exr environment or a MERL .binary BRDF…',
+  headOn: 'Check the π: a white Lambert sphere lit head-on by the punctual light alone',
 };
 
 const short = (family, key) => texText(termEntry(family, key).short);

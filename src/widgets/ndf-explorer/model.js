@@ -51,3 +51,14 @@ export function ndfCurves(state) {
       };
     });
 }
+
+/** Where the tails are compared: beyond every matched width (1°–40°), short of grazing. One of ANGLES. */
+export const TAIL_DEG = 60;
+
+/** The curves by their tail, longest first: D(TAIL_DEG) / D(0), how much of its peak each keeps that far out. */
+export function tailsAt(curves) {
+  const i = ANGLES.indexOf(TAIL_DEG);
+  return curves
+    .map((c) => ({ key: c.key, label: c.label, ratio: c.values[i] / c.values[0] }))
+    .sort((a, b) => b.ratio - a.ratio);
+}

@@ -1,7 +1,8 @@
 // The NDF explorer's two plots: D(θh) on a linear axis, and on a log axis for the tails; with a measured slice
 // the log plot puts every curve over its own peak and adds the measurement.
 import { createPlot } from '../../core/ui/plot.js';
-import { ANGLES, measuredOnAngles } from './model.js';
+import { ANGLES, TAIL_DEG, measuredOnAngles, tailsAt } from './model.js';
+import { describeTails } from './words.js';
 
 const axis = {
   xLabel: 'Angle of the microfacet normal from n, θh (degrees)',
@@ -29,7 +30,6 @@ function absoluteLogSpec(curves) {
     title: 'D(θh), log scale: the tails',
     yLabel: 'D (1/sr)',
     y: { min: peak * 1e-7, max: peak * 2, log: true },
-    legend: false,
     series: seriesOf(curves),
     data: [ANGLES, ...curves.map((c) => c.values.map((v) => (v > peak * 1e-7 ? v : null)))],
     filename: 'ndf-log',
@@ -61,9 +61,17 @@ const logSpec = (curves, state) =>
 export function createNdfPlots(container, curves, state) {
   const linear = createPlot(container, linearSpec(curves));
   const log = createPlot(container, logSpec(curves, state));
+  const tails = document.createElement('p');
+  tails.className = 'tail-note';
+  container.append(tails);
+  const drawLog = (next, nextState) => {
+    log.setData(logSpec(next, nextState));
+    tails.textContent = describeTails(tailsAt(next), nextState, TAIL_DEG);
+  };
+  drawLog(curves, state);
   return {
     drawLinear: (next) => linear.setData(linearSpec(next)),
-    drawLog: (next, nextState) => log.setData(logSpec(next, nextState)),
+    drawLog,
     /** The log plot's measured curve as uPlot holds it: its label and the (θh, value) points drawn. */
     measuredCurve() {
       const u = log.uplot;
@@ -74,6 +82,7 @@ export function createNdfPlots(container, curves, state) {
     dispose() {
       linear.dispose();
       log.dispose();
+      tails.remove();
     },
   };
 }

@@ -39,6 +39,26 @@ export function describeSpheres(curves, state) {
   );
 }
 
+const SUPERSCRIPT = { '-': '⁻', 0: '⁰', 1: '¹', 2: '²', 3: '³', 4: '⁴', 5: '⁵', 6: '⁶', 7: '⁷', 8: '⁸', 9: '⁹' };
+/** A small ratio as people write it: 7.8 × 10⁻³ (0 where src/math cuts the far tail to 0, as the GPU must). */
+const scientific = (x) => {
+  if (x === 0) return '0 (too far down to compute)';
+  const [mantissa, exponent] = x.toExponential(1).split('e');
+  const power = [...String(Number(exponent))].map((ch) => SUPERSCRIPT[ch]).join('');
+  return exponent === '+0' ? mantissa : `${mantissa} × 10${power}`;
+};
+
+/** The log plot's note: which tail is longest at this width, and how much of its peak each keeps at TAIL_DEG. */
+export function describeTails(tails, state, deg) {
+  if (tails.length < 2) return '';
+  const [first, ...rest] = tails;
+  const others = rest.map((t) => `${t.label} ${scientific(t.ratio)}`).join(', ');
+  return (
+    `Longest tail at a half width of ${state.hwhm}°: ${first.label}. At θh = ${deg}° it still has ` +
+    `${scientific(first.ratio)} of its peak; ${others}.`
+  );
+}
+
 const NM = '\\nm ';
 const TAN2 = `\\frac{1 - ${NM}^2}{${NM}^2}`;
 

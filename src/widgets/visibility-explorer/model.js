@@ -58,3 +58,22 @@ export function visibilityCurves(state, customG = null) {
     };
   });
 }
+
+/** The sphere point the page points to: on the lit side, its normal this far from the view towards the light. */
+export const RIM_DEG = 60;
+
+/**
+ * Each catalogue term's radiance at that point over height-correlated Smith's (D and F are the same on every
+ * sphere, so the ratio is V's): [{ key, label, ratio }]. In n's frame v is RIM_DEG from n and l lies in the same
+ * plane, lightTheta from v (the spheres' light is lightTheta from the view): above the horizon for every lightTheta.
+ */
+export function rimRatios(state) {
+  const t = (RIM_DEG - state.lightTheta) * DEG;
+  const r = RIM_DEG * DEG;
+  const a = brdfAngles([Math.sin(t), 0, Math.cos(t)], [Math.sin(r), 0, Math.cos(r)]);
+  const params = { alpha: state.alpha };
+  const reference = VISIBILITY_TERMS[REFERENCE](a, params);
+  return state.terms
+    .filter((key) => key !== CUSTOM && key !== REFERENCE)
+    .map((key) => ({ key, label: termLabel('visibility', key), ratio: VISIBILITY_TERMS[key](a, params) / reference }));
+}

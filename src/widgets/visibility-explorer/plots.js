@@ -11,9 +11,9 @@ const axis = (state) => ({
 const seriesOf = (curves) => curves.map((c) => ({ label: c.label, stroke: c.stroke, dash: c.dash }));
 
 const gSpec = (curves, state) => ({
-  title: `G = V·(n·l)(n·v) at α = ${state.alpha}`,
+  title: `G = V·(n·l)(n·v), the visibility term V times the foreshortening, at α = ${state.alpha}`,
   ...axis(state),
-  yLabel: 'G',
+  yLabel: 'G = V (n·l)(n·v)',
   y: { min: 0, max: 1.05 },
   series: seriesOf(curves),
   data: [ANGLES, ...curves.map((c) => c.G)],

@@ -5,7 +5,8 @@ import { termOptions } from '../../math/catalogue/index.js';
 import { SLOTS } from '../../core/custom/slots.js';
 
 export const schema = {
-  alpha: { type: 'number', min: 0.01, max: 1, step: 0.01, default: 0.5, label: 'Roughness α' },
+  // rough by default: the terms part most there (on the spheres too), and the smooth end is one drag away
+  alpha: { type: 'number', min: 0.01, max: 1, step: 0.01, default: 0.8, label: 'Roughness α' },
   config: {
     type: 'enum',
     options: { mirror: 'l, v mirrored about n (h = n)', 'view-fixed': 'View fixed, light sweeps' },
@@ -27,8 +28,9 @@ export const schema = {
     ],
     label: 'Terms',
   },
-  lightTheta: { type: 'number', min: 0, max: 85, step: 1, default: 30, label: 'Sphere light from view', unit: '°' },
-  exposure: { type: 'number', min: 0.1, max: 20, step: 0.1, default: 1.5, label: 'Sphere exposure' },
+  // a light near grazing and no clipping by default: V matters where the light is low, and the spheres differ there
+  lightTheta: { type: 'number', min: 0, max: 85, step: 1, default: 75, label: 'Sphere light from view', unit: '°' },
+  exposure: { type: 'number', min: 0.1, max: 20, step: 0.1, default: 1, label: 'Sphere exposure' },
   codeV: { type: 'code', slot: 'V', default: SLOTS.V.starter, label: 'Your V (GLSL)' },
   params: { type: 'params', default: {}, label: 'Sliders of your code' },
 };

@@ -3,7 +3,8 @@
 import { createSphereGrid } from '../../core/ui/sphere-grid.js';
 import { lightDirFromAngles } from '../../math/angles.js';
 import { VISIBILITY_TERMS } from '../../math/brdf.js';
-import { REFERENCE } from './model.js';
+import { REFERENCE, RIM_DEG, rimRatios } from './model.js';
+import { describeRim } from './words.js';
 import { termDefines, termEntry } from '../../math/catalogue/index.js';
 
 /** The terms of a visibility term's sphere: GGX D, F = 1. */
@@ -44,15 +45,24 @@ export function sphereCell(c, state) {
 
 export function createVisibilitySpheres(container) {
   const grid = createSphereGrid(container, { label: 'Visibility terms on spheres' });
+  const note = document.createElement('p');
+  note.className = 'rim-note';
+  container.append(note);
   return {
-    /** One sphere per curve; the user's once its code compiled in the sphere's program. */
-    draw: (curves, state) => grid.setCells(curves.filter((c) => c.cell !== null).map((c) => sphereCell(c, state))),
+    /** One sphere per curve (the user's once its code compiled in the sphere's program), and where to look. */
+    draw(curves, state) {
+      grid.setCells(curves.filter((c) => c.cell !== null).map((c) => sphereCell(c, state)));
+      note.textContent = describeRim(rimRatios(state), state, RIM_DEG);
+    },
     get renderer() {
       return grid.renderer;
     },
     get canvas() {
       return grid.canvas;
     },
-    dispose: () => grid.dispose(),
+    dispose() {
+      grid.dispose();
+      note.remove();
+    },
   };
 }

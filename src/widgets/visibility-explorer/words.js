@@ -32,6 +32,20 @@ export const angleAxisLabel = (state) =>
     ? 'Angle of l and of v from n (degrees)'
     : `Light angle θl, view fixed at ${state.viewTheta}° (degrees)`;
 
+/** Under the spheres: where to look, and how much brighter or darker each term is there than the reference. */
+export function describeRim(ratios, state, deg) {
+  const signed = (r) => {
+    const pct = Math.round((r - 1) * 100);
+    return `${pct > 0 ? '+' : pct < 0 ? '−' : '±'}${Math.abs(pct)}%`;
+  };
+  const each = ratios.map((r) => `${r.label} ${signed(r.ratio)}`).join(', ');
+  return (
+    `What to look for: the lit side, where the surface turns ${deg}° from you towards the light ` +
+    `(${state.lightTheta}° from you). There each sphere is brighter or darker than the one with Smith GGX, ` +
+    `height-correlated (the reference) by${each ? `: ${each}` : ' nothing: no other term chosen'}.`
+  );
+}
+
 /** The spheres in words: the light, and each term's largest difference from height-correlated Smith. */
 export function describeSpheres(curves, state) {
   const where = state.config === 'mirror' ? 'l and v mirrored' : `view at ${state.viewTheta}°`;
