@@ -208,9 +208,9 @@ describe('brdf-lobe', () => {
     expect(theta).toBeGreaterThan(0);
     expect(theta).toBeLessThan(45);
     const before = await shot(page, '.polar-plot canvas');
-    await setControl(page, 'Factor D', false);
+    await setControl(page, 'Use D (distribution)', false);
     expect(await shot(page, '.polar-plot canvas')).not.toBe(before);
-    await setControl(page, 'Overlay BRDF B', true);
+    await setControl(page, 'Compare with BRDF B', true);
     expect(await page.$$eval('.half-diff-row.single', (els) => els.length)).toBe(0);
     expect(page.errors).toEqual([]);
     await page.close();
