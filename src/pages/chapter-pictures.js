@@ -7,7 +7,7 @@ export const CHAPTER_PICTURES = {
   microfacets: 'Rays on a rough 2-D microsurface, some shadowed or masked',
   fresnel: 'A torus knot coloured by the Fresnel zones of l·h, lit from behind',
   ndf: 'Two spheres under one light, GGX and Beckmann at the same width: GGX’s highlight fades out further',
-  visibility: 'Three rough spheres (α = 0.9) lit from 60°: implicit, Cook–Torrance and Smith visibility',
+  visibility: 'Two rough spheres (α = 0.9) lit from 60°: the implicit visibility term (V = 1) and Smith’s',
   diffuse: 'Two spheres lit head on: Lambert darkens towards the rim, Oren–Nayar (σ = 60°) looks flat',
   rendering: 'A gold sphere lit by an environment: approximation, reference and their error',
   performance: 'Error against GPU cost for the Fresnel approximations',

@@ -19,7 +19,7 @@ const SHOTS = {
   fresnel: ['embed.html?w=fresnel-zones&mode=zones-lh&shape=torusknot&lightTheta=140'],
   ndf: ['embed.html?w=ndf-explorer&hwhm=12&ndfs=ggx,beckmann', '.sphere-grid canvas', 'contain', 420],
   visibility: [
-    'embed.html?w=visibility-explorer&alpha=0.9&lightTheta=60&terms=implicit,cookTorrance,smithGGXCorrelated',
+    'embed.html?w=visibility-explorer&alpha=0.9&lightTheta=60&terms=implicit,smithGGXCorrelated',
     '.sphere-grid canvas',
     'contain',
     420,
