@@ -1,6 +1,7 @@
 import { defineConfig } from 'vite';
 import { basename, resolve } from 'node:path';
 import { VitePWA } from 'vite-plugin-pwa';
+import { chapterPagerHtml } from './src/pages/chapter-pager.js';
 
 // Every HTML page is an entry; relative base so the built site works from any static host and sub-path.
 const pages = [
@@ -37,13 +38,16 @@ const HEAD = `
 
 /**
  * The chrome every page shares, written once: the head's meta tags, and the site header. A page's
- * <body data-crumb="…"> gets the header with that crumb; a body without data-crumb (embed) gets none.
+ * <body data-crumb="…"> gets the header with that crumb; a body without data-crumb (embed) gets none. A chapter's
+ * page ends its <main> with the links to the previous and next chapter (src/pages/chapter-pager.js).
  */
 function pageChrome() {
   return {
     name: 'shading-lab-page-chrome',
-    transformIndexHtml(html) {
-      const withHead = html.replace(/<head>/, `<head>${HEAD}`);
+    transformIndexHtml(html, { filename }) {
+      const pager = chapterPagerHtml(basename(filename));
+      const paged = pager ? html.replace('</main>', `  ${pager}\n    </main>`) : html;
+      const withHead = paged.replace(/<head>/, `<head>${HEAD}`);
       return withHead.replace(/<body([^>]*)data-crumb="([^"]*)"([^>]*)>/, (_, a, crumb, b) => {
         const nav = crumb
           ? `<nav aria-label="Chapter"><a href="./">All chapters</a> · <span>${crumb}</span></nav>`

@@ -6,9 +6,9 @@ export const CHAPTER_PICTURES = {
   brdf: 'A microfacet BRDF lobe in 3-D, with the light, view and half vectors',
   microfacets: 'Rays on a rough 2-D microsurface, some shadowed or masked',
   fresnel: 'A torus knot coloured by the Fresnel zones of l·h, lit from behind',
-  ndf: 'Spheres under one light, each with a different NDF at the same width',
-  visibility: 'Visibility terms against the light angle, the view fixed at 60°',
-  diffuse: 'Spheres with the diffuse models side by side',
+  ndf: 'Two spheres under one light, GGX and Beckmann at the same width: GGX’s highlight fades out further',
+  visibility: 'Two rough spheres (α = 0.9) lit from 60°: the implicit visibility term (V = 1) and Smith’s',
+  diffuse: 'Two spheres lit head on: Lambert darkens towards the rim, Oren–Nayar (σ = 60°) looks flat',
   rendering: 'A gold sphere lit by an environment: approximation, reference and their error',
   performance: 'Error against GPU cost for the Fresnel approximations',
 };

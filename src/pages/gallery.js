@@ -34,6 +34,7 @@ function card(name) {
   const { title, summary } = WIDGETS[name];
   const article = document.createElement('article');
   article.className = 'gallery-card';
+  article.id = name; // the index's link target: gallery.html#fresnel-zones
   article.dataset.widget = name;
   const h2 = Object.assign(document.createElement('h2'), { id: `${name}-h`, textContent: title });
   const p = Object.assign(document.createElement('p'), { textContent: summary });
@@ -85,8 +86,26 @@ function card(name) {
   };
 }
 
+/** The page's index: a link to every widget's card, in the gallery's order. */
+function index(names) {
+  const nav = document.createElement('nav');
+  nav.className = 'gallery-index';
+  nav.setAttribute('aria-labelledby', 'gallery-index-h');
+  const h = Object.assign(document.createElement('h2'), { id: 'gallery-index-h', textContent: 'The widgets' });
+  const ol = document.createElement('ol');
+  for (const name of names) {
+    const li = document.createElement('li');
+    li.append(Object.assign(document.createElement('a'), { href: `#${name}`, textContent: WIDGETS[name].title }));
+    ol.append(li);
+  }
+  nav.append(h, ol);
+  return nav;
+}
+
 const cards = Object.keys(WIDGETS).map(card);
-document.getElementById('gallery').append(...cards.map((c) => c.article));
+const gallery = document.getElementById('gallery');
+gallery.before(index(Object.keys(WIDGETS)));
+gallery.append(...cards.map((c) => c.article));
 
 const lazy = new IntersectionObserver(
   (entries) => {

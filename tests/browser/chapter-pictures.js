@@ -6,28 +6,45 @@ import { ROOT, buildApp, launchBrowser, openPage, serveStatic, settle } from './
 import { CHAPTER_PICTURE_SIZE as SIZE } from '../../src/pages/chapter-pictures.js';
 
 const QUALITY = 0.78;
-// chapter key → the page shot, the element pictured (default: the first canvas of the widget's view), and how it
-// fits the 16:9 frame: 'cover' (cropped, centred) or 'contain' (whole, on the page's background)
+// chapter key → the page shot, the element pictured (default: the first canvas of the widget's view), how it fits
+// the 16:9 frame ('cover': cropped, centred, for a picture with no words at its edges; 'contain': whole, on the
+// page's background), and the width of the window it is shot in (narrow for a plot, so that its words come out
+// near their size on the page, not shrunk). Rows of spheres show two or three, so that each sphere and its name
+// are whole and large enough to read.
 const SHOTS = {
   media: ['embed.html?w=media&view=grid&samples=16'],
   surfaces: ['embed.html?w=surfaces&material=gold&alpha=0.3'],
   brdf: ['embed.html?w=brdf-lobe&lightTheta=50&alpha=0.3', '.lobe-3d canvas'],
   microfacets: ['embed.html?w=microfacets&lightTheta=60&rays=24'],
   fresnel: ['embed.html?w=fresnel-zones&mode=zones-lh&shape=torusknot&lightTheta=140'],
-  ndf: ['embed.html?w=ndf-explorer&hwhm=12', '.sphere-grid canvas'],
-  visibility: ['embed.html?w=visibility-explorer', '.widget-view canvas', 'contain'],
-  diffuse: ['embed.html?w=diffuse-explorer'],
+  ndf: ['embed.html?w=ndf-explorer&hwhm=12&ndfs=ggx,beckmann', '.sphere-grid canvas', 'contain', 420],
+  visibility: [
+    'embed.html?w=visibility-explorer&alpha=0.9&lightTheta=60&terms=implicit,smithGGXCorrelated',
+    '.sphere-grid canvas',
+    'contain',
+    420,
+  ],
+  diffuse: [
+    'embed.html?w=diffuse-explorer&models=lambert,orenNayar&sigma=60',
+    '.sphere-grid canvas',
+    'contain',
+    420,
+  ],
   rendering: ['embed.html?w=material-lab&material=gold&alpha=0.25', '.widget-view canvas', 'contain'],
-  performance: ['performance.html', '.uplot', 'contain'],
+  performance: ['performance.html', '.uplot .u-wrap', 'contain', 560],
 };
 
 const out = join(ROOT, 'public/chapters');
 mkdirSync(out, { recursive: true });
 const server = await serveStatic(await buildApp());
 const browser = await launchBrowser();
-for (const [key, [path, selector = '.widget-view canvas', fit = 'cover']] of Object.entries(SHOTS)) {
-  const page = await openPage(browser, server.url, path, { width: 1100, height: 800 });
-  const target = await page.waitForSelector(selector, { timeout: 30_000 });
+// `npm run chapter-pictures -- ndf diffuse` shoots only those chapters' pictures
+const only = process.argv.slice(2);
+const shots = Object.entries(SHOTS).filter(([key]) => !only.length || only.includes(key));
+for (const [key, [path, selector = '.widget-view canvas', fit = 'cover', width = 1100]] of shots) {
+  const page = await openPage(browser, server.url, path, { width, height: 800 });
+  const target = await page.waitForSelector(selector, { timeout: 120_000 });
+  await page.addStyleTag({ content: '.save-view { display: none !important; }' }); // the view's own button
   await target.scrollIntoView();
   await settle(page, 2500); // progressive views (the material lab's reference) get time to converge
   const png = await target.screenshot({ encoding: 'base64' });

@@ -79,4 +79,27 @@ describe('gallery.html', () => {
       await page.close();
     },
   );
+
+  it('its index links every registered widget card in order; Tab reaches its links and Enter jumps', async () => {
+    const page = await open(browser, 'gallery.html', { height: 800 });
+    const links = await page.$$eval('nav.gallery-index a', (as) =>
+      as.map((a) => [a.getAttribute('href'), a.textContent, document.querySelector(a.hash)?.dataset.widget]),
+    );
+    expect(links).toEqual(Object.keys(WIDGETS).map((name) => [`#${name}`, WIDGETS[name].title, name]));
+    const last = Object.keys(WIDGETS).at(-1);
+    let focused = '';
+    for (let tab = 0; tab < 60 && focused !== `#${last}`; tab++) {
+      await page.keyboard.press('Tab');
+      focused = await page.evaluate(
+        () => document.activeElement.closest('.gallery-index') && document.activeElement.hash,
+      );
+    }
+    expect(focused).toBe(`#${last}`);
+    await page.keyboard.press('Enter');
+    await page.waitForFunction((n) => location.hash === `#${n}`, {}, last);
+    const top = await page.$eval(`#${last}`, (card) => card.getBoundingClientRect().top);
+    expect(Math.abs(top)).toBeLessThan(20); // the card at the top of the window (scroll-margin)
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
 });

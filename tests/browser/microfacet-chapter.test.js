@@ -31,9 +31,17 @@ describe('chapter page state', () => {
     expect(again.errors).toEqual([]);
     await Promise.all([page.close(), again.close()]);
   });
-  it('each widget links the terms it uses to their rows on the parity page', async () => {
+  it('each widget links the parity page, and the terms it uses (folded away) to their rows there', async () => {
     const page = await open(browser, 'visibility.html');
     await widget(page, 'vis');
+    const terms = await page.$eval('.widget-terms', (box) => ({
+      shown: [...box.querySelectorAll(':scope > p a')].map((a) => [a.getAttribute('href'), a.checkVisibility()]),
+      folded: [...box.querySelectorAll('details:not([open]) a')].map((a) => [a.textContent, a.checkVisibility()]),
+      visibleText: box.innerText,
+    }));
+    expect(terms.shown).toEqual([['parity.html', true]]); // the way to the accuracy, in view
+    expect(terms.folded).toContainEqual(['visibilityKelemen', false]); // the function names, in a closed <details>
+    expect(terms.visibleText).not.toMatch(/visibilityKelemen|src\/math/);
     const hrefs = await page.$$eval('.widget-terms a', (as) => as.map((a) => a.getAttribute('href')));
     expect(hrefs).toContain('parity.html#fn-visibilityKelemen');
     await page.close();
@@ -246,9 +254,9 @@ describe('brdf-lobe', () => {
     expect(theta).toBeGreaterThan(0);
     expect(theta).toBeLessThan(45);
     const before = await shot(page, '.polar-plot canvas');
-    await setControl(page, 'Factor D', false);
+    await setControl(page, 'Use D (distribution)', false);
     expect(await shot(page, '.polar-plot canvas')).not.toBe(before);
-    await setControl(page, 'Overlay BRDF B', true);
+    await setControl(page, 'Compare with BRDF B', true);
     expect(await page.$$eval('.half-diff-row.single', (els) => els.length)).toBe(0);
     expect(page.errors).toEqual([]);
     await page.close();

@@ -93,6 +93,54 @@ describe('offline, after one visit', () => {
     await page.close();
   });
 
+  const noticeTitle =
+    'the "saved" notice sits in the header above the content (bounding boxes, 1280 and 390 px wide), ' +
+    'Dismiss takes it away, and a second install on the device does not say it again';
+  it(
+    noticeTitle,
+    async () => {
+      const context = await browser.createBrowserContext(); // a device of its own: its storage and service worker
+      const page = await openPage(context, site.url, 'index.html', { width: 1280, height: 800 });
+      await page.waitForSelector('.offline-status', { timeout: 60_000 });
+      await page.waitForSelector('.chapter-picture');
+      for (const [width, height] of [
+        [1280, 800],
+        [390, 844],
+      ]) {
+        await page.setViewport({ width, height });
+        const laid = await page.evaluate(() => {
+          const box = document.querySelector('.offline-status').getBoundingClientRect();
+          const meets = (r) => r.left < box.right && box.left < r.right && r.top < box.bottom && box.top < r.bottom;
+          const content = [document.querySelector('main'), ...document.querySelectorAll('main *')];
+          const hit = document.elementFromPoint(box.left + box.width / 2, box.top + box.height / 2);
+          return {
+            covered: content.filter((el) => meets(el.getBoundingClientRect())).map((el) => el.className || el.tagName),
+            onTop: !!hit?.closest('.offline-status'),
+            inHeader: !!document.querySelector('.site-header .offline-status'),
+          };
+        });
+        expect(laid, `${width}×${height}`).toEqual({ covered: [], onTop: true, inHeader: true });
+      }
+      const dismiss = await page.waitForSelector('.offline-status ::-p-text(Dismiss)');
+      await dismiss.click();
+      expect(await page.$('.offline-status')).toBeNull();
+      expect(await page.evaluate(() => globalThis.__shadingLab.offline)).toEqual({ ready: true, announced: true });
+
+      // the service worker gone (the browser cleared it) and installed again: the build is saved again, unsaid
+      await page.evaluate(() =>
+        navigator.serviceWorker.getRegistrations().then((rs) => Promise.all(rs.map((r) => r.unregister()))),
+      );
+      await page.goto('about:blank'); // no page left using it: the registration goes
+      await page.goto(new URL('index.html', site.url).href, { waitUntil: 'load' });
+      await page.waitForFunction(() => globalThis.__shadingLab?.offline?.ready, { timeout: 60_000 });
+      expect(await page.evaluate(() => globalThis.__shadingLab.offline.announced)).toBe(false);
+      expect(await page.$('.offline-status')).toBeNull();
+      expect(page.errors).toEqual([]);
+      await context.close();
+    },
+    120_000,
+  );
+
   it(`every page (${PAGES.length}) loads with no network`, async () => {
     const page = await visit('index.html'); // the first visit saved the whole build: no page needs one of its own
     await page.waitForNetworkIdle({ idleTime: 300, timeout: 30_000 }); // nothing of the online visit left in flight

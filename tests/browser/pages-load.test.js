@@ -66,6 +66,39 @@ describe('pages load cleanly', () => {
     await page.close();
   });
 
+  const pagerTitle =
+    'each chapter page ends with links to the chapters one before and one after it (as their headers number them)';
+  it(pagerTitle, async () => {
+    const page = await open(browser, 'index.html');
+    const files = await page.$$eval('#chapters a.chapter-title', (as) => as.map((a) => a.getAttribute('href')));
+    const pages = await page.evaluate(async (list) => {
+      const read = async (file) => new DOMParser().parseFromString(await (await fetch(file)).text(), 'text/html');
+      return Promise.all(
+        list.map(async (file) => {
+          const doc = await read(file);
+          const link = (rel) => doc.querySelector(`main > nav.chapter-pager:last-child a.pager-${rel}`);
+          const to = (a) => a && { href: a.getAttribute('href'), text: a.textContent };
+          const crumb = doc.querySelector('.site-header nav span')?.textContent;
+          return { file, crumb, prev: to(link('prev')), next: to(link('next')) };
+        }),
+      );
+    }, files);
+    const byNumber = new Map(pages.map((p) => [Number.parseInt(p.crumb, 10), p]));
+    expect([...byNumber.keys()]).toEqual(pages.map((_, i) => i + 1)); // the crumbs number the chapters 1, 2, …
+    for (const [n, p] of byNumber) {
+      for (const [rel, other, words] of [
+        ['prev', byNumber.get(n - 1), '← Previous chapter'],
+        ['next', byNumber.get(n + 1), 'Next chapter →'],
+      ]) {
+        const want = other
+          ? { href: other.file, text: `${words} ${other.crumb}` }
+          : { href: './', text: expect.stringMatching(/All chapters/) };
+        expect(p[rel], `${p.file} ${rel}`).toMatchObject(want);
+      }
+    }
+    await page.close();
+  });
+
   it('an unknown widget gets a message, not a blank page', async () => {
     const page = await open(browser, 'embed.html?w=nope');
     await settle(page);

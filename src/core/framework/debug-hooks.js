@@ -29,6 +29,8 @@
  * @property {ExerciseHook} [exercise]
  * @property {object[]} [parity]  the parity page's rows (src/core/gpu/parity.js results)
  * @property {object} [performance]  the performance page's report (bench/results)
+ * @property {{ ready: boolean, announced: boolean }} [offline]  the build is saved on the device; whether this
+ *   page said so (only the first time on a device)
  */
 
 /** @returns {ShadingLabHooks} */
@@ -69,9 +71,9 @@ export function mountedWidget(key) {
 }
 
 /**
- * Publishes what a page has to report (the tour's step, the exercise, the parity rows, the performance report),
- * replacing what it said before.
- * @template {'tour' | 'exercise' | 'parity' | 'performance'} K
+ * Publishes what a page has to report (the tour's step, the exercise, the parity rows, the performance report,
+ * the offline copy), replacing what it said before.
+ * @template {'tour' | 'exercise' | 'parity' | 'performance' | 'offline'} K
  * @param {K} name
  * @param {ShadingLabHooks[K]} value
  */

@@ -4,9 +4,27 @@
 // to switch. Frames (embeds in a gallery or a deck) and the widget-only embed page register it too but say
 // nothing: a notice there would sit on the widget itself. Added to every page by vite.config.js.
 import { registerSW } from 'virtual:pwa-register';
+import { publish } from './debug-hooks.js';
 
-const READY_SHOWN_MS = 8000;
+const SAVED_SEEN_KEY = 'shading-lab:offline-ready-seen'; // the first visit's "saved" is said once per device
 
+/** Whether `key` is set in localStorage; sets it. Storage refused (a private window's quota): said each time. */
+function firstTime(key) {
+  try {
+    if (localStorage.getItem(key)) return false;
+    localStorage.setItem(key, '1');
+  } catch {
+    /* no storage: nothing remembers that it was said */
+  }
+  return true;
+}
+
+/**
+ * Says `text` in the site header, in the page's flow above the content (so it covers nothing), with a Dismiss
+ * button and, when given, an action. Pages without the header (none but embed's) get it at the top of the body.
+ * @param {string} text
+ * @param {{ label: string, run: () => void }} [action]
+ */
 function say(text, action) {
   if (window.parent !== window || document.body.classList.contains('embed')) return;
   document.querySelector('.offline-status')?.remove();
@@ -14,19 +32,25 @@ function say(text, action) {
   box.className = 'offline-status';
   box.setAttribute('role', 'status');
   box.append(Object.assign(document.createElement('span'), { textContent: text }));
-  if (action) {
-    const button = Object.assign(document.createElement('button'), { type: 'button', textContent: action.label });
-    button.addEventListener('click', action.run);
-    box.append(button);
-  } else {
-    setTimeout(() => box.remove(), READY_SHOWN_MS);
-  }
-  document.body.append(box);
+  const button = (label, run) => {
+    const b = Object.assign(document.createElement('button'), { type: 'button', textContent: label });
+    b.addEventListener('click', run);
+    return b;
+  };
+  if (action) box.append(button(action.label, action.run));
+  box.append(button('Dismiss', () => box.remove()));
+  const header = document.querySelector('.site-header');
+  if (header) header.append(box);
+  else document.body.prepend(box);
 }
 
 const updateSW = registerSW({
   immediate: true,
-  onOfflineReady: () => say('Shading Lab is saved on this device: every page works offline from now on.'),
+  onOfflineReady: () => {
+    const announced = firstTime(SAVED_SEEN_KEY);
+    if (announced) say('Shading Lab is saved on this device: every page works offline from now on.');
+    publish('offline', { ready: true, announced });
+  },
   onNeedRefresh: () => {
     const reload = { label: 'Reload to use it', run: () => updateSW(true) };
     say('A new version of Shading Lab is saved on this device.', reload);

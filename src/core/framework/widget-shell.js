@@ -132,18 +132,26 @@ export function createWidgetShell(
 }
 
 /**
- * "Terms used": each math function the widget calls, linked to its GLSL-vs-JS row on the parity page.
+ * Where the pictures' accuracy is measured (the parity page), and, folded away for developers, each math
+ * function the widget calls, linked to its GLSL-vs-JS row there.
  * @param {string[]} terms
  */
 function termLinks(terms) {
+  const box = document.createElement('div');
+  box.className = 'widget-terms';
   const p = document.createElement('p');
-  p.className = 'widget-terms';
-  p.append('Terms used (src/math and shaders/, accuracy on the ');
+  p.append('How closely the GPU’s pictures follow the exact math: the ');
   p.append(Object.assign(document.createElement('a'), { href: 'parity.html', textContent: 'parity page' }));
-  p.append('): ');
+  p.append('.');
+  const names = document.createElement('details');
+  names.append(Object.assign(document.createElement('summary'), { textContent: 'For developers: the functions used' }));
+  const list = document.createElement('p');
+  list.append('In src/math (JavaScript) and shaders/ (GLSL), each linked to its row on the parity page: ');
   terms.forEach((name, i) => {
-    if (i) p.append(' · ');
-    p.append(Object.assign(document.createElement('a'), { href: `parity.html#fn-${name}`, textContent: name }));
+    if (i) list.append(' · ');
+    list.append(Object.assign(document.createElement('a'), { href: `parity.html#fn-${name}`, textContent: name }));
   });
-  return p;
+  names.append(list);
+  box.append(p, names);
+  return box;
 }

@@ -4,12 +4,9 @@
 
 import { sizeCanvas2d } from '../../core/ui/canvas2d.js';
 import { DEG } from '../../math/angles.js';
+import { dialGeometry, directionsOf, layOutLabels, polarLabelSpecs, SMALL_FONT, toXY } from './polar-labels.js';
 
 const COLORS = {
-  light: '#e6a700',
-  view: '#0072b2',
-  half: '#cc79a7',
-  mirror: '#777',
   grid: '#0000001f',
   a: '#d55e00',
   b: '#009e73',
@@ -17,41 +14,27 @@ const COLORS = {
 };
 
 /** The dial's size and centre on the canvas, in CSS pixels. */
-function geometryOf(canvas) {
-  const w = canvas.clientWidth;
-  const h = canvas.clientHeight;
-  const R = Math.min(w / 2, h) * 0.86;
-  return { w, h, R, cx: w / 2, cy: h * 0.92 };
-}
-// angle theta from n, positive towards +x (the view side), negative towards the light side
-const toXY = (g, theta, r) => [g.cx + r * g.R * Math.sin(theta * DEG), g.cy - r * g.R * Math.cos(theta * DEG)];
+const geometryOf = (canvas) => dialGeometry(canvas.clientWidth, canvas.clientHeight);
 
-/** Radius rings labelled in 1/sr, angle spokes every 30° and the surface line. */
-function drawGrid(ctx, g, max) {
+/** Radius rings, angle spokes every 30° and the surface line (their words: drawLabels). */
+function drawGrid(ctx, g) {
   ctx.strokeStyle = COLORS.grid;
-  ctx.fillStyle = '#666';
   for (const r of [0.25, 0.5, 0.75, 1]) {
     ctx.beginPath();
     ctx.arc(g.cx, g.cy, r * g.R, Math.PI, 2 * Math.PI);
     ctx.stroke();
-    ctx.fillText(`${(r * max).toPrecision(2)}`, g.cx + 3, g.cy - r * g.R + 11);
   }
   for (let a = -90; a <= 90; a += 30) {
-    const [x, y] = toXY(g, a, 1.04);
     ctx.beginPath();
     ctx.moveTo(g.cx, g.cy);
     ctx.lineTo(...toXY(g, a, 1));
     ctx.stroke();
-    ctx.textAlign = 'center';
-    ctx.fillText(`${Math.abs(a)}°`, x, y);
   }
   ctx.strokeStyle = '#333';
   ctx.beginPath();
   ctx.moveTo(g.cx - g.R * 1.05, g.cy);
   ctx.lineTo(g.cx + g.R * 1.05, g.cy);
   ctx.stroke();
-  ctx.textAlign = 'left';
-  ctx.fillText('surface', g.cx - g.R * 1.05, g.cy + 12);
 }
 
 /** The lobes: A filled, B dashed, the multiple-scattering lobe dotted. */
@@ -96,32 +79,34 @@ function drawWalkPoints(ctx, g, spec) {
   }
 }
 
-/** One direction from the centre to the dial, with a dot (big for the handles l and v) and its name. */
-function drawArrow(ctx, g, theta, color, label, dash = []) {
+/** One direction from the centre to the dial, with a dot (big for the handles l and v). */
+function drawArrow(ctx, g, theta, color, name) {
   const [x, y] = toXY(g, theta, 1);
   ctx.strokeStyle = color;
   ctx.fillStyle = color;
   ctx.lineWidth = 2;
-  ctx.setLineDash(dash);
+  ctx.setLineDash(name === 'mirror' ? [4, 4] : []);
   ctx.beginPath();
   ctx.moveTo(g.cx, g.cy);
   ctx.lineTo(x, y);
   ctx.stroke();
   ctx.setLineDash([]);
   ctx.beginPath();
-  ctx.arc(x, y, label === 'l' || label === 'v' ? 7 : 3, 0, 2 * Math.PI);
+  ctx.arc(x, y, name === 'l' || name === 'v' ? 7 : 3, 0, 2 * Math.PI);
   ctx.fill();
-  ctx.font = 'bold 13px system-ui, sans-serif';
-  ctx.fillText(label, x + 9, label === 'mirror' ? y + 16 : y - 6);
-  ctx.font = '11px system-ui, sans-serif';
 }
 
-function drawDirections(ctx, g, spec) {
-  drawArrow(ctx, g, 0, '#333', 'n');
-  drawArrow(ctx, g, spec.lightTheta, COLORS.mirror, 'mirror', [4, 4]);
-  if (spec.halfTheta !== null) drawArrow(ctx, g, spec.halfTheta, COLORS.half, 'h');
-  drawArrow(ctx, g, -spec.lightTheta, COLORS.light, 'l');
-  drawArrow(ctx, g, spec.viewTheta, COLORS.view, 'v');
+/** Every word of the plot, each where it covers no other (polar-labels.js). */
+function drawLabels(ctx, g, spec) {
+  const measure = (text, font) => ((ctx.font = font), ctx.measureText(text).width);
+  ctx.textAlign = 'center';
+  ctx.textBaseline = 'middle';
+  for (const label of layOutLabels(polarLabelSpecs(g, spec, measure), g, spec)) {
+    ctx.font = label.font;
+    ctx.fillStyle = label.color;
+    ctx.fillText(label.text, label.x + label.w / 2, label.y + label.h / 2);
+  }
+  ctx.font = SMALL_FONT;
 }
 
 /**
@@ -188,11 +173,11 @@ export function createPolarPlot(container, { onDrag }) {
     const { ctx } = sizeCanvas2d(canvas);
     const g = geometryOf(canvas);
     ctx.clearRect(0, 0, g.w, g.h);
-    ctx.font = '11px system-ui, sans-serif';
-    drawGrid(ctx, g, spec.max);
+    drawGrid(ctx, g);
     drawLobes(ctx, g, spec);
     drawWalkPoints(ctx, g, spec);
-    drawDirections(ctx, g, spec);
+    for (const [theta, color, name] of directionsOf(spec)) drawArrow(ctx, g, theta, color, name);
+    drawLabels(ctx, g, spec);
   }
   attachHandles(canvas, () => last, onDrag);
   const resize = new ResizeObserver(() => last && draw(last));

@@ -26,14 +26,14 @@ export const schema = {
     default: 'both',
     label: 'Layers',
   },
-  fresnel: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.fresnel, default: 'schlick', label: 'F' },
-  ndf: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.ndf, default: 'ggx', label: 'D' },
+  fresnel: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.fresnel, default: 'schlick', label: 'Fresnel F' },
+  ndf: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.ndf, default: 'ggx', label: 'Distribution D' },
   visibility: {
     group: 'BRDF terms',
     type: 'enum',
     options: LAB_TERMS.visibility,
     default: 'smithGGXCorrelated',
-    label: 'V',
+    label: 'Visibility V',
   },
   compensation: {
     group: 'BRDF terms',
