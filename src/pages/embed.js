@@ -1,6 +1,7 @@
 // embed.html?w=NAME&...: one widget alone, no page chrome, filling its frame. In an iframe it speaks the
 // postMessage protocol of src/core/framework/embed-protocol.js with its parent, if the parent's origin is allowed
-// (`origins=`, a comma list; the widget's own origin always is).
+// (`origins=`, a comma list; the widget's own origin always is), and tells it the height of its content.
+// `presenter=1`: the presenter view for slides, the widget's views only (no control panel), filling the frame.
 import '../styles.css';
 import { mountWidget } from '../core/framework/widget-host.js';
 import { connectEmbedProtocol, parseAllowedOrigins } from '../core/framework/embed-protocol.js';
@@ -12,6 +13,8 @@ import { snapshotWidget } from '../core/framework/snapshot.js';
 const root = document.getElementById('embed');
 const params = new URLSearchParams(location.search);
 const name = params.get('w');
+const presenter = params.get('presenter') === '1';
+document.body.classList.toggle('presenter', presenter);
 if (isWidgetName(name)) {
   document.title = `${WIDGETS[name].title} — Shading Lab`;
   const notices = createNoticeArea(root);
@@ -22,7 +25,9 @@ if (isWidgetName(name)) {
   if (window.parent !== window) {
     const { widget } = await WIDGETS[name].load();
     const capture = () => snapshotWidget(root.querySelector('.widget'));
-    link = connectEmbedProtocol({ name, schema: widget.schema, instance, origins, notices, capture });
+    // the presenter view fills whatever frame it is given: no height of its own to report
+    const content = presenter ? null : root;
+    link = connectEmbedProtocol({ name, schema: widget.schema, instance, origins, notices, capture, content });
     link.ready();
   }
 } else {

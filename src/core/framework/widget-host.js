@@ -25,8 +25,9 @@ export function widgetParams(search, prefix) {
   return Object.fromEntries(out);
 }
 
-// Parameters of embed.html that are not widget state: the widget's name and the origins allowed to message it.
-const EMBED_PARAMS = new Set(['w', 'origins']);
+// Parameters of embed.html that are not widget state: the widget's name, the origins allowed to message it and
+// the presenter view.
+const EMBED_PARAMS = new Set(['w', 'origins', 'presenter']);
 
 /**
  * @param {Schema} schema
