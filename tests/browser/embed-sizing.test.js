@@ -88,4 +88,31 @@ describe('embedding', () => {
       expect(page.errors).toEqual([]);
     },
   );
+
+  it('the presenter view (presenter=1) has no control panel and its 3-D view fills the frame', async () => {
+    const page = await browser.newPage();
+    onTestFinished(() => page.close().catch(() => {}));
+    const url = new URL('embed.html?w=fresnel-zones&presenter=1', baseUrl()).href;
+    await page.setContent(`<iframe id="f" src="${url}" style="width:960px;height:540px;border:0"></iframe>`);
+    const frame = await widgetFrame(page, '#f');
+    const layout = () =>
+      frame.evaluate(() => {
+        const shown = (sel) => [...document.querySelectorAll(sel)].some((e) => e.getClientRects().length > 0);
+        const view = document.querySelector('.viewport').getBoundingClientRect();
+        const main = document.querySelector('main');
+        return {
+          controls: shown('.lil-gui, .widget-controls, .share-button, .save-view'),
+          viewShare: (view.width * view.height) / (innerWidth * innerHeight),
+          viewWidth: view.width / innerWidth,
+          scrolls: main.scrollHeight > main.clientHeight || document.documentElement.scrollHeight > innerHeight,
+        };
+      });
+    await expect.poll(layout, { timeout: 15_000 }).toMatchObject({ controls: false, viewWidth: 1, scrolls: false });
+    // the rest below the view is the zone legend, a sixth of the frame at most
+    expect((await layout()).viewShare).toBeGreaterThan(0.8);
+    // the whole state still comes from the URL, and the URL written back keeps presenter=1
+    await frame.evaluate(() => Object.values(globalThis.__shadingLab.widgets)[0].update({ mode: 'zones-lh' }));
+    await frame.waitForFunction(() => new URL(location.href).searchParams.get('mode') === 'zones-lh');
+    expect(new URL(frame.url()).searchParams.get('presenter')).toBe('1');
+  });
 });
