@@ -23,11 +23,11 @@ const lab = () => encodeURIComponent(new URL('embed.html', baseUrl()).href);
 const WARNING = /WebGL|Too many active|context lost/i;
 
 /** Opens a page of the lecturer's host; page.warnings keeps every WebGL warning of the page and its frames. */
-async function openDeck(path) {
+async function openDeck(path, { width = 1200, height = 800 } = {}) {
   const warnings = [];
   const page = await openPage(browser, decks.url, path, {
-    width: 1200,
-    height: 800,
+    width,
+    height,
     beforeLoad: (p) =>
       p.on('console', (m) => WARNING.test(m.text()) && !m.text().includes('GPU stall') && warnings.push(m.text())),
   });
@@ -165,7 +165,8 @@ describe('<shading-lab-widget> on another origin', () => {
     'makes the iframe with this origin allowed, fires ready and change, ' +
       'exposes state, applies set() through validation',
     async () => {
-      const page = await openDeck(`/examples/element/index.html?lab=${lab()}`);
+      // tall enough for the whole element, which is as tall as the widget (its canvas is screenshot on screen below)
+      const page = await openDeck(`/examples/element/index.html?lab=${lab()}`, { height: 1300 });
       onTestFinished(() => page.close().catch(() => {}));
       const frame = await readyFrame(page, '#zones');
       const src = await page.$eval('#zones iframe', (f) => f.src);
