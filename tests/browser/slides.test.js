@@ -223,8 +223,16 @@ describe('reveal.js plugin (reveal.js 6 from node_modules, the app on another or
 
     await press(page, 'ArrowRight');
     await waitForState(page, { mode: 'zones-nv' });
+    const presenter = () =>
+      page.$eval('.present shading-lab-widget iframe', (f) => new URL(f.src).searchParams.get('presenter'));
+    expect(await presenter()).toBe('1'); // this slide has data-shading-lab-presenter
     await press(page, 'ArrowRight');
     await waitForState(page, { mode: 'zones-lh', lightTheta: 120, shape: 'sphere' });
+    expect(await presenter()).toBeNull();
+    // the slot the plugin added takes the widget's height, as far as the 700 px slide has room for it
+    const slot = () =>
+      page.$eval('.present [data-shading-lab-slot]', (s) => ({ height: s.offsetHeight, room: 700 - s.offsetTop }));
+    await expect.poll(slot, { timeout: 15_000 }).toSatisfy(({ height, room }) => height === room && height > 480);
     await press(page, 'ArrowRight'); // first fragment
     await waitForState(page, { mode: 'zones-lh-weighted', shape: 'sphere' });
     await press(page, 'ArrowRight'); // second fragment
