@@ -7,7 +7,7 @@
 import { stateToParams } from './state.js';
 import { urlWithState } from './widget-host.js';
 
-const QR_PIXELS = 560; // drawn size; shown at up to min(58vmin, 560px)
+const QR_PIXELS = 560; // drawn size; shown at up to min(70vmin, 560px, 100vh − room for the rest of the dialog)
 
 /** The link to widget `name` alone in `state`, relative to the page at `base`. */
 export function shareLink(name, schema, state, base = location.href) {
