@@ -3,7 +3,6 @@
 import '../../dist/shading-lab-widget.js';
 
 const zones = document.getElementById('zones');
-zones.style.height = '480px';
 zones.setAttribute('src', new URLSearchParams(location.search).get('lab') ?? 'http://localhost:5173/embed.html');
 const show = (e) => (document.getElementById('now').value = e.detail.query);
 zones.addEventListener('ready', show);

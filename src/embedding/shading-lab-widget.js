@@ -5,7 +5,11 @@
 //   el.query          the same as URL parameters, only what differs from the defaults
 //   el.set(partial)   an object or a query string; → Promise<{ state, query, errors }>
 //   el.snapshot()     → Promise<PNG data URL> of what the widget shows
-//   events            'ready' and 'change' (the user moved the widget), detail { state, query }
+//   events            'ready' and 'change' (the user moved the widget), detail { state, query }; 'resize', detail
+//                     { height }: the widget's content height, which the element takes unless its height is fixed
+// Its height follows the widget's (no scroll bar inside) unless the page fixed it in the element's style
+// attribute (style="height: 480px", or el.style.height): then the widget scrolls inside that height. The
+// `presenter` attribute shows the views only, filling the element (4 : 3 unless its height is fixed).
 // Built alone into dist/shading-lab-widget.js: it imports nothing, so the page embedding it loads no three.js.
 
 // The protocol's message prefix (src/core/framework/embed-protocol.js MESSAGE_PREFIX; a unit test holds them equal).
@@ -17,9 +21,10 @@ const toPartial = (value) =>
   typeof value === 'string' ? Object.fromEntries(new URLSearchParams(value)) : { ...(value ?? {}) };
 
 /** The iframe's URL: `src` with the widget's name, its state and this page's origin (allowed to message it). */
-export function frameUrl(src, name, state, pageOrigin, base) {
+export function frameUrl(src, name, state, pageOrigin, base, presenter = false) {
   const url = new URL(src, base);
   url.searchParams.set('w', name);
+  if (presenter) url.searchParams.set('presenter', '1');
   for (const [k, v] of new URLSearchParams(state ?? '')) url.searchParams.set(k, v);
   if (pageOrigin !== url.origin && pageOrigin !== 'null') url.searchParams.set('origins', pageOrigin);
   return url;
@@ -27,7 +32,7 @@ export function frameUrl(src, name, state, pageOrigin, base) {
 
 // In Node (unit tests) there is no HTMLElement: the class is still defined, the element is not registered.
 export class ShadingLabWidget extends (globalThis.HTMLElement ?? class {}) {
-  static observedAttributes = ['name', 'src', 'state'];
+  static observedAttributes = ['name', 'src', 'state', 'presenter'];
 
   #frame = null;
   #origin = '';
@@ -37,6 +42,7 @@ export class ShadingLabWidget extends (globalThis.HTMLElement ?? class {}) {
   #pending = new Map(); // id → { resolve, reject, errors }
   #nextId = 1;
   #hello = 0;
+  #height = ''; // the style height this element gave itself from the widget's `resize` ('' for none yet)
   #onMessage = (e) => this.#receive(e);
 
   get state() {
@@ -84,7 +90,8 @@ export class ShadingLabWidget extends (globalThis.HTMLElement ?? class {}) {
     const name = this.getAttribute('name');
     const src = this.getAttribute('src');
     if (!name || !src) return;
-    const url = frameUrl(src, name, this.getAttribute('state'), location.origin, document.baseURI);
+    const presenter = this.hasAttribute('presenter');
+    const url = frameUrl(src, name, this.getAttribute('state'), location.origin, document.baseURI, presenter);
     this.#origin = url.origin;
     const frame = document.createElement('iframe');
     frame.src = url.href;
@@ -93,6 +100,7 @@ export class ShadingLabWidget extends (globalThis.HTMLElement ?? class {}) {
     frame.addEventListener('load', () => this.#sayHello());
     this.#frame = frame;
     if (!this.style.display) this.style.display = 'block';
+    if (presenter && !this.#fixed() && !this.style.aspectRatio) this.style.aspectRatio = '4 / 3';
     window.addEventListener('message', this.#onMessage);
     this.replaceChildren(frame);
   }
@@ -106,6 +114,17 @@ export class ShadingLabWidget extends (globalThis.HTMLElement ?? class {}) {
     this.#state = null;
     this.#frame?.remove();
     this.#frame = null;
+  }
+
+  /** True when the page, not the widget, sets the height: a style height this element did not give itself. */
+  #fixed() {
+    return this.style.height !== '' && this.style.height !== this.#height;
+  }
+
+  #resize(height) {
+    if (!(height > 0) || height > 1e5) return; // not a height (a frame tall enough for anything is a bug)
+    if (!this.#fixed()) this.style.height = this.#height = `${Math.ceil(height)}px`;
+    this.dispatchEvent(new CustomEvent('resize', { detail: { height } }));
   }
 
   // A browser that reveals neither ancestorOrigins nor the referrer lets the widget talk only once asked.
@@ -140,7 +159,8 @@ export class ShadingLabWidget extends (globalThis.HTMLElement ?? class {}) {
     if (m.state) [this.#state, this.#query] = [m.state, m.query];
     if (!wasReady && this.ready) this.#becomeReady();
     const pending = this.#pending.get(m.id);
-    if (kind === 'changed') this.#emit('change');
+    if (kind === 'resize') this.#resize(m.height);
+    else if (kind === 'changed') this.#emit('change');
     else if (kind === 'error' && pending) pending.errors.push(...m.errors);
     else if ((kind === 'state' || kind === 'snapshot') && pending) {
       this.#pending.delete(m.id);

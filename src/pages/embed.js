@@ -1,6 +1,7 @@
 // embed.html?w=NAME&...: one widget alone, no page chrome, filling its frame. In an iframe it speaks the
 // postMessage protocol of src/core/framework/embed-protocol.js with its parent, if the parent's origin is allowed
-// (`origins=`, a comma list; the widget's own origin always is).
+// (`origins=`, a comma list; the widget's own origin always is), and tells it the height of its content.
+// `presenter=1`: the presenter view for slides, the widget's views only (no control panel), filling the frame.
 import '../styles.css';
 import { mountOrExplain } from '../core/framework/widget-failure.js';
 import { connectEmbedProtocol, parseAllowedOrigins } from '../core/framework/embed-protocol.js';
@@ -13,6 +14,8 @@ const root = document.getElementById('embed');
 document.getElementById('embed-fallback')?.remove(); // the app runs: the words for blocked scripts go
 const params = new URLSearchParams(location.search);
 const name = params.get('w');
+const presenter = params.get('presenter') === '1';
+document.body.classList.toggle('presenter', presenter);
 if (isWidgetName(name)) {
   document.title = `${WIDGETS[name].title} — Shading Lab`;
   const notices = createNoticeArea(root);
@@ -24,7 +27,9 @@ if (isWidgetName(name)) {
     if (window.parent === window) return;
     const { widget } = await WIDGETS[name].load();
     const capture = () => snapshotWidget(root.querySelector('.widget'));
-    link = connectEmbedProtocol({ name, schema: widget.schema, instance, origins, notices, capture });
+    // the presenter view fills whatever frame it is given: no height of its own to report
+    const content = presenter ? null : root;
+    link = connectEmbedProtocol({ name, schema: widget.schema, instance, origins, notices, capture, content });
     link.ready();
   };
   await mountOrExplain(root, name, { widgets: WIDGETS, onStateChange: () => link?.userChanged() }, connect);

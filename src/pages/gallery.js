@@ -1,11 +1,12 @@
 // gallery.html: every registered widget with a live preview (loaded when scrolled to) and the iframe snippet
-// that embeds it in the state the preview shows. The previews report their state through the embed
-// protocol (src/core/framework/embed-protocol.js); the gallery is on their origin, so they talk to it by default.
+// that embeds it in the state the preview shows, as tall as the preview has been. The previews report their state
+// and height through the embed protocol (src/core/framework/embed-protocol.js); the gallery is on their origin,
+// so they talk to it by default.
 import '../styles.css';
 import { MESSAGE_PREFIX } from '../core/framework/embed-protocol.js';
 import { WIDGETS } from '../widgets/registry.js';
 
-const PREVIEW_HEIGHT = 600; // px: room for a view and its controls; the widget scrolls inside the frame
+const PREVIEW_HEIGHT = 600; // px: the placeholder's, until the preview tells its height
 const NEAR_VIEW = '300px 0px'; // start loading a preview a little before it scrolls in
 
 const escapeAttr = (s) => s.replace(/&/g, '&amp;').replace(/"/g, '&quot;').replace(/</g, '&lt;');
@@ -14,9 +15,9 @@ const escapeAttr = (s) => s.replace(/&/g, '&amp;').replace(/"/g, '&quot;').repla
 const embedUrl = (name, query) =>
   new URL(`embed.html?w=${encodeURIComponent(name)}${query ? `&${query}` : ''}`, location.href).href;
 
-const snippetFor = (name, query) =>
+const snippetFor = (name, query, height) =>
   `<iframe src="${escapeAttr(embedUrl(name, query))}" title="${escapeAttr(`${WIDGETS[name].title} — Shading Lab`)}" ` +
-  `width="100%" height="${PREVIEW_HEIGHT}" style="border: 0" loading="lazy"></iframe>`;
+  `width="100%" height="${height}" style="border: 0" loading="lazy"></iframe>`;
 
 async function copy(textarea, status) {
   try {
@@ -51,7 +52,7 @@ function card(name) {
     id: `${name}-snippet`,
     readOnly: true,
     rows: 3,
-    value: snippetFor(name, ''),
+    value: snippetFor(name, '', PREVIEW_HEIGHT),
   });
   snippet.className = 'gallery-snippet';
   snippet.spellcheck = false;
@@ -67,6 +68,11 @@ function card(name) {
 
   article.append(h2, p, preview, label, snippet, row);
   let frame = null;
+  let query = '';
+  // the tallest the widget has been (a probe table that appeared once keeps its room): a frame that tall never
+  // cuts the widget off at the width it was measured at
+  let height = 0;
+  const write = () => (snippet.value = snippetFor(name, query, height || PREVIEW_HEIGHT));
   return {
     article,
     preview,
@@ -79,9 +85,17 @@ function card(name) {
     },
     /** A message from this card's preview: `ready`, `changed` or `state` carry the state as URL parameters. */
     owns: (source) => frame?.contentWindow === source,
-    setQuery(query) {
-      snippet.value = snippetFor(name, query);
+    setQuery(q) {
+      query = q;
+      write();
       status.textContent = '';
+    },
+    /** The preview's content height (its `resize`): the preview takes it, the snippet the tallest so far. */
+    setHeight(h) {
+      preview.style.height = ''; // the preview wraps its frame (and its border)
+      frame.style.height = `${h}px`;
+      height = Math.max(height, h);
+      write();
     },
   };
 }
@@ -120,6 +134,9 @@ cards.forEach((c) => lazy.observe(c.preview));
 
 const STATE_MESSAGES = new Set(['ready', 'changed', 'state'].map((t) => `${MESSAGE_PREFIX}${t}`));
 window.addEventListener('message', (e) => {
-  if (e.origin !== location.origin || !STATE_MESSAGES.has(e.data?.type) || typeof e.data.query !== 'string') return;
-  cards.find((c) => c.owns(e.source))?.setQuery(e.data.query);
+  if (e.origin !== location.origin) return;
+  const card = cards.find((c) => c.owns(e.source));
+  const { type, query, height } = e.data ?? {};
+  if (STATE_MESSAGES.has(type) && typeof query === 'string') card?.setQuery(query);
+  else if (type === `${MESSAGE_PREFIX}resize` && Number.isFinite(height) && height > 0) card?.setHeight(height);
 });

@@ -1,5 +1,5 @@
 // Embedding, the postMessage protocol between a parent page and embed.html: ready, get, set through validation,
-// bad messages ignored, other origins refused unless listed.
+// bad messages ignored, other origins refused unless listed, the content's height told to allowed origins only.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { baseUrl, launchBrowser, open, openForeignParent, otherOrigin, setControl } from './helpers.js';
 
@@ -58,6 +58,18 @@ describe('postMessage protocol of embed.html', () => {
       expect(ready.state).toEqual(await widgetState(frame));
       expect(ready.query).toBe('');
       expect((await inbox(page)).every((m) => m.origin === own)).toBe(true);
+      // and its height: the content's, measured in the frame (main's box, rounded up), which the 700 px frame cuts
+      const height = () => frame.$eval('#embed', (m) => Math.ceil(m.getBoundingClientRect().height));
+      const lastResize = async () => (await inbox(page)).findLast((m) => m.data.type === 'shading-lab:resize')?.data;
+      await expect
+        .poll(async () => [await lastResize(), await height()], { timeout: 15_000 })
+        .toSatisfy(([m, h]) => m?.height === h);
+      expect(await lastResize()).toEqual({
+        type: 'shading-lab:resize',
+        widget: 'fresnel-zones',
+        height: await height(),
+      });
+      expect(await height()).toBeGreaterThan(700);
 
       await post(page, { type: 'shading-lab:get', id: 'g1' }, own);
       const got = await waitForMessage(page, (d) => d.type === 'shading-lab:state' && d.id === 'g1');
@@ -126,7 +138,8 @@ describe('postMessage protocol of embed.html', () => {
     await post(page, { type: 'shading-lab:get', id: 'last' }, own);
     await waitForMessage(page, (d) => d.id === 'last');
     await sleep(300);
-    const replies = (await inbox(page)).filter((m) => m.data?.type !== 'shading-lab:ready');
+    const unasked = new Set(['shading-lab:ready', 'shading-lab:resize']);
+    const replies = (await inbox(page)).filter((m) => !unasked.has(m.data?.type));
     expect(replies.map((m) => m.data.id)).toEqual(['last']);
     expect(await widgetState(frame)).toEqual(before);
     expect(await frame.$$eval('.notice', (n) => n.length)).toBe(0);
@@ -145,7 +158,7 @@ describe('postMessage protocol of embed.html', () => {
     await post(page, { type: 'shading-lab:set', id: 's', state: { mode: 'zones-lh' } }, widgetOrigin);
     await post(page, { type: 'shading-lab:get', id: 'g' }, '*');
     await sleep(800);
-    expect(await inbox(page)).toEqual([]); // not even `ready`: nothing goes to an origin that was not allowed
+    expect(await inbox(page)).toEqual([]); // not even `ready` or `resize`: nothing goes to an origin not allowed
     expect(await widgetState(frame)).toEqual(before);
 
     const allowed = await embedIn(
@@ -154,6 +167,7 @@ describe('postMessage protocol of embed.html', () => {
     );
     const ready = await waitForMessage(page, (d) => d.type === 'shading-lab:ready');
     expect(ready.widget).toBe('fresnel-zones');
+    await waitForMessage(page, (d) => d.type === 'shading-lab:resize'); // told its height, as the origin is allowed
     await post(page, { type: 'shading-lab:set', id: 's2', state: { mode: 'zones-lh' } }, widgetOrigin);
     await waitForMessage(page, (d) => d.type === 'shading-lab:state' && d.id === 's2');
     expect((await widgetState(allowed)).mode).toBe('zones-lh');

@@ -1,22 +1,37 @@
-// Embedding, the size: a widget in an iframe fills its frame, with no page chrome, and follows the frame's size.
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+// Embedding, the size: a widget in an iframe fills its frame, with no page chrome, and follows the frame's size;
+// the <shading-lab-widget> element takes the height the widget reports (its `resize` message), on another origin;
+// the presenter view (presenter=1) shows the views only, filling the frame.
+import { afterAll, beforeAll, describe, expect, it, onTestFinished } from 'vitest';
+import { openPage } from './harness.js';
+import { serveDecks } from './decks.js';
 import { baseUrl, launchBrowser, settle } from './helpers.js';
 
 let browser;
+let decks;
 beforeAll(async () => {
   browser = await launchBrowser();
+  decks = await serveDecks({});
 });
 afterAll(async () => {
   await browser?.close();
+  decks?.close();
 });
+
+/** The frame of iframe `selector` in `page`, once its widget is registered. */
+async function widgetFrame(page, selector) {
+  const frame = await (await page.waitForSelector(selector)).contentFrame();
+  await frame.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 1, {
+    timeout: 30_000,
+  });
+  return frame;
+}
 
 describe('embedding', () => {
   it('a widget in an iframe fills the frame and follows its size', async () => {
     const page = await browser.newPage();
     const url = new URL('embed.html?w=fresnel-zones', baseUrl()).href;
     await page.setContent(`<iframe id="f" src="${url}" style="width:480px;height:420px;border:0"></iframe>`);
-    const frame = await (await page.waitForSelector('#f')).contentFrame();
-    await frame.waitForFunction(() => globalThis.__shadingLab?.widgets?.['fresnel-zones'], { timeout: 30_000 });
+    const frame = await widgetFrame(page, '#f');
     await settle(page, 800);
     const width = () => frame.$eval('.widget-fresnel-zones canvas', (c) => c.getBoundingClientRect().width);
     const w1 = await width();
@@ -27,5 +42,77 @@ describe('embedding', () => {
     await settle(page, 800);
     expect(await width()).toBeGreaterThan(w1 * 1.3);
     await page.close();
+  });
+
+  it(
+    'the element on another origin grows to the height the widget reports, the probe table included: ' +
+      'no scroll bar inside, the zone legend in sight',
+    async () => {
+      const lab = encodeURIComponent(new URL('embed.html', baseUrl()).href);
+      const page = await openPage(browser, decks.url, `/examples/element/index.html?lab=${lab}`, {
+        width: 1280,
+        height: 800,
+      });
+      onTestFinished(() => page.close().catch(() => {}));
+      await page.waitForFunction(() => document.getElementById('zones').ready, { timeout: 30_000 });
+      const frame = await widgetFrame(page, '#zones iframe');
+      // the frame's own measure of its content, against the element's height in the page
+      const fits = () =>
+        Promise.all([
+          page.$eval('#zones', (el) => el.getBoundingClientRect().height),
+          frame.evaluate(() => {
+            const legend = document.querySelector('.zone-legend').getBoundingClientRect();
+            const root = document.documentElement;
+            return { content: root.scrollHeight, inside: innerHeight, legendBottom: legend.bottom };
+          }),
+        ]).then(([element, f]) => ({
+          element,
+          grown: element > 600,
+          noScroll: f.content <= f.inside,
+          legendInSight: f.legendBottom <= f.inside,
+        }));
+      await expect.poll(fits, { timeout: 20_000 }).toMatchObject({ grown: true, noScroll: true, legendInSight: true });
+      const before = (await fits()).element;
+
+      // the pointer on the sphere: the probe's table appears under the view, and the element grows with it
+      const box = await (await page.$('#zones')).boundingBox();
+      const canvas = await frame.$eval('.widget-fresnel-zones canvas', (c) => {
+        const r = c.getBoundingClientRect();
+        return { x: r.x + r.width / 2, y: r.y + r.height / 2 };
+      });
+      await page.mouse.move(box.x + canvas.x, box.y + canvas.y);
+      await frame.waitForFunction(() => document.querySelector('.probe table'), { timeout: 10_000 });
+      await expect
+        .poll(fits, { timeout: 20_000 })
+        .toMatchObject({ noScroll: true, legendInSight: true, element: expect.toSatisfy((h) => h > before) });
+      expect(page.errors).toEqual([]);
+    },
+  );
+
+  it('the presenter view (presenter=1) has no control panel and its 3-D view fills the frame', async () => {
+    const page = await browser.newPage();
+    onTestFinished(() => page.close().catch(() => {}));
+    const url = new URL('embed.html?w=fresnel-zones&presenter=1', baseUrl()).href;
+    await page.setContent(`<iframe id="f" src="${url}" style="width:960px;height:540px;border:0"></iframe>`);
+    const frame = await widgetFrame(page, '#f');
+    const layout = () =>
+      frame.evaluate(() => {
+        const shown = (sel) => [...document.querySelectorAll(sel)].some((e) => e.getClientRects().length > 0);
+        const view = document.querySelector('.viewport').getBoundingClientRect();
+        const main = document.querySelector('main');
+        return {
+          controls: shown('.lil-gui, .widget-controls, .share-button, .save-view'),
+          viewShare: (view.width * view.height) / (innerWidth * innerHeight),
+          viewWidth: view.width / innerWidth,
+          scrolls: main.scrollHeight > main.clientHeight || document.documentElement.scrollHeight > innerHeight,
+        };
+      });
+    await expect.poll(layout, { timeout: 15_000 }).toMatchObject({ controls: false, viewWidth: 1, scrolls: false });
+    // the rest below the view is the zone legend, a sixth of the frame at most
+    expect((await layout()).viewShare).toBeGreaterThan(0.8);
+    // the whole state still comes from the URL, and the URL written back keeps presenter=1
+    await frame.evaluate(() => Object.values(globalThis.__shadingLab.widgets)[0].update({ mode: 'zones-lh' }));
+    await frame.waitForFunction(() => new URL(location.href).searchParams.get('mode') === 'zones-lh');
+    expect(new URL(frame.url()).searchParams.get('presenter')).toBe('1');
   });
 });

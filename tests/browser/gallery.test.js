@@ -1,5 +1,5 @@
 // Embedding, the gallery of embeds (gallery.html): a card and a snippet for every widget, previews loaded when
-// scrolled to, a snippet that follows the preview's state.
+// scrolled to, a snippet that follows the preview's state and is as tall as the widget.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { WIDGETS } from '../../src/widgets/registry.js';
 import { baseUrl, launchBrowser, open, setControl, settle } from './helpers.js';
@@ -39,7 +39,7 @@ describe('gallery.html', () => {
   );
 
   it(
-    'a snippet follows the state the user leaves the preview in, ' +
+    'a snippet follows the state the user leaves the preview in, is as tall as the widget measured in the preview, ' +
       'and opens in that state; Copy works from the keyboard',
     async () => {
       const page = await open(browser, 'gallery.html');
@@ -56,6 +56,18 @@ describe('gallery.html', () => {
           timeout: 10_000,
         },
       );
+      // the snippet's frame is as tall as the widget, measured in its preview; the preview shows it all, unscrolled
+      const fits = async () => {
+        const height = await page.$eval('#fresnel-zones-snippet', (t) =>
+          Number(new DOMParser().parseFromString(t.value, 'text/html').querySelector('iframe').getAttribute('height')),
+        );
+        const inside = await frame.evaluate(() => ({
+          content: Math.ceil(document.getElementById('embed').getBoundingClientRect().height),
+          scroll: document.documentElement.scrollHeight - innerHeight,
+        }));
+        return { fits: height >= inside.content, tall: height > 700, noScroll: inside.scroll <= 0 };
+      };
+      await expect.poll(fits, { timeout: 15_000 }).toEqual({ fits: true, tall: true, noScroll: true });
       const src = await snippetSrc(page, 'fresnel-zones');
       expect(new URL(src).searchParams.get('mode')).toBe('zones-lh');
       expect(new URL(src).searchParams.get('shape')).toBe('torusknot');

@@ -1,6 +1,6 @@
-// Paper: a chapter page printed by Chromium (page.pdf, which fires beforeprint as a real print does): each widget
-// a still of its current state with the state's link and QR code, controls hidden; the PDF rendered to PNG
-// (poppler's pdftoppm) holds the still.
+// Paper: a chapter page printed by Chromium (page.pdf, which fires beforeprint as a real print does): each canvas
+// of a widget a still of its current state in its place, the state's link and QR code under the views, controls
+// hidden; the PDF rendered to PNG (poppler's pdftoppm) holds the stills, fills its first page and ends on white.
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -43,10 +43,29 @@ const zoneShares = (page, png) =>
   }`,
   );
 
+/** Of a base64 PNG of a printed page: where its last inked row is (0…1 of the height) and its bottom row's colour. */
+const pageInk = (page, png) =>
+  withPixels(
+    page,
+    png,
+    `(image) => {
+    const { width, height, data } = image;
+    const inked = (y) => {
+      for (let x = 0; x < width; x++) if (data[(y * width + x) * 4] < 200) return true;
+      return false;
+    };
+    let last = height - 1;
+    while (last > 0 && !inked(last)) last--;
+    const i = ((height - 1) * width + (width >> 1)) * 4;
+    return { lastInk: last / height, bottom: [data[i], data[i + 1], data[i + 2]] };
+  }`,
+  );
+
 describe('a printed chapter page', () => {
   it(
-    'shows each widget as a still of its state (zone shares of n·v on the orthographic sphere: sin²45°, ' +
-      'sin²75° − sin²45°, cos²75°) with its link and QR code, no controls',
+    'shows each view as a still of its state in its place (zone shares of n·v on the orthographic sphere: sin²45°, ' +
+      'sin²75° − sin²45°, cos²75°), the link and QR code under it, no controls; plot titles above their plots, ' +
+      'page 1 full, the last page white',
     async () => {
       const page = await open(browser, 'fresnel.html?zones.mode=zones-nv', { width: 1100, height: 900 });
       await widget(page, 'zones');
@@ -56,34 +75,41 @@ describe('a printed chapter page', () => {
       writeFileSync(join(dir, 'page.pdf'), pdf);
 
       const widgets = await page.$$eval('.widget', (ws) => ws.map((w) => w.dataset.widget));
-      const stills = await page.$$eval('.widget > .print-still', (fs) =>
-        fs.map((f) => ({ img: f.querySelector('img')?.src ?? null, link: f.querySelector('a').href })),
-      );
-      expect(stills.length).toBe(widgets.length);
-      const zones = stills[widgets.indexOf('fresnel-zones')];
-      expect(new URL(zones.link).searchParams.get('mode')).toBe('zones-nv');
-      const shares = await zoneShares(page, zones.img.split(',')[1]);
+      const links = await page.$$eval('.widget > .print-link a', (as) => as.map((a) => a.href));
+      expect(links.length).toBe(widgets.length);
+      const zonesLink = links[widgets.indexOf('fresnel-zones')];
+      expect(new URL(zonesLink).searchParams.get('mode')).toBe('zones-nv');
+      const zones = await page.$eval('.widget-fresnel-zones img.print-canvas', (img) => img.src);
+      const shares = await zoneShares(page, zones.split(',')[1]);
       // ±0.05: the silhouette's edge pixels
       sphereZoneFractions().forEach((f, i) => expect(shares[i]).toBeCloseTo(f, 1));
 
       // each QR code decodes (jsQR, an independent decoder) to its link
-      const qrs = await page.$$eval('.print-still .print-qr', (cs) =>
+      const qrs = await page.$$eval('.print-link .print-qr', (cs) =>
         cs.map((c) => {
           const image = c.getContext('2d').getImageData(0, 0, c.width, c.height);
           return { width: c.width, height: c.height, data: Array.from(image.data) };
         }),
       );
-      expect(qrs.map((q) => jsQR(Uint8ClampedArray.from(q.data), q.width, q.height)?.data)).toEqual(
-        stills.map((s) => s.link),
-      );
+      expect(qrs.map((q) => jsQR(Uint8ClampedArray.from(q.data), q.width, q.height)?.data)).toEqual(links);
 
       // in print media: the stills show, the controls, share buttons and live views do not
       await page.emulateMediaType('print');
       // laid out at all
       const shown = (sel) => page.$$eval(sel, (els) => els.some((e) => e.getClientRects().length > 0));
-      expect(await shown('.print-still')).toBe(true);
+      expect(await shown('.print-canvas')).toBe(true);
       for (const sel of ['.widget-controls', '.lil-gui', '.share-button', '.viewport', '.toolbar'])
         expect(await shown(sel), sel).toBe(false);
+      // every plot prints its title, then its still below it, in the print layout
+      const plots = await page.$$eval('figure.plot', (figs) =>
+        figs.map((f) => {
+          const title = f.querySelector('figcaption').getBoundingClientRect();
+          const still = f.querySelector('img.print-canvas')?.getBoundingClientRect();
+          return { title: f.querySelector('figcaption').textContent, below: !!still && still.top >= title.bottom - 1 };
+        }),
+      );
+      expect(plots.length).toBeGreaterThanOrEqual(2);
+      expect(plots.filter((p) => !p.below)).toEqual([]);
 
       // the PDF, rendered: somewhere on its pages are the still's zone colours
       execFileSync('pdftoppm', ['-r', '40', '-png', join(dir, 'page.pdf'), join(dir, 'p')]);
@@ -92,9 +118,19 @@ describe('a printed chapter page', () => {
         .sort();
       expect(pngs.length).toBeGreaterThan(1);
       const printed = [];
-      for (const f of pngs) printed.push(await zoneShares(page, readFileSync(join(dir, f)).toString('base64')));
+      const ink = [];
+      for (const f of pngs) {
+        const png = readFileSync(join(dir, f)).toString('base64');
+        printed.push(await zoneShares(page, png));
+        ink.push(await pageInk(page, png));
+      }
       const withZones = printed.filter((s) => s.every((x) => x > 0.02));
       expect(withZones.length).toBeGreaterThanOrEqual(1);
+      // page 1 is filled down to near its bottom margin (Chromium's 0.4 in of 11.7 in), not left half empty by a
+      // figure that went whole to page 2 (it ended at 0.54 of the page so); the paper under the last line of the
+      // last page is white, not the screen's tint (#fbfbfa)
+      expect(ink[0].lastInk).toBeGreaterThan(0.75);
+      expect(ink.at(-1).bottom).toEqual([255, 255, 255]);
       expect(page.errors).toEqual([]);
       await page.close();
     },

@@ -23,11 +23,11 @@ const lab = () => encodeURIComponent(new URL('embed.html', baseUrl()).href);
 const WARNING = /WebGL|Too many active|context lost/i;
 
 /** Opens a page of the lecturer's host; page.warnings keeps every WebGL warning of the page and its frames. */
-async function openDeck(path) {
+async function openDeck(path, { width = 1200, height = 800 } = {}) {
   const warnings = [];
   const page = await openPage(browser, decks.url, path, {
-    width: 1200,
-    height: 800,
+    width,
+    height,
     beforeLoad: (p) =>
       p.on('console', (m) => WARNING.test(m.text()) && !m.text().includes('GPU stall') && warnings.push(m.text())),
   });
@@ -165,7 +165,8 @@ describe('<shading-lab-widget> on another origin', () => {
     'makes the iframe with this origin allowed, fires ready and change, ' +
       'exposes state, applies set() through validation',
     async () => {
-      const page = await openDeck(`/examples/element/index.html?lab=${lab()}`);
+      // tall enough for the whole element, which is as tall as the widget (its canvas is screenshot on screen below)
+      const page = await openDeck(`/examples/element/index.html?lab=${lab()}`, { height: 1300 });
       onTestFinished(() => page.close().catch(() => {}));
       const frame = await readyFrame(page, '#zones');
       const src = await page.$eval('#zones iframe', (f) => f.src);
@@ -222,8 +223,16 @@ describe('reveal.js plugin (reveal.js 6 from node_modules, the app on another or
 
     await press(page, 'ArrowRight');
     await waitForState(page, { mode: 'zones-nv' });
+    const presenter = () =>
+      page.$eval('.present shading-lab-widget iframe', (f) => new URL(f.src).searchParams.get('presenter'));
+    expect(await presenter()).toBe('1'); // this slide has data-shading-lab-presenter
     await press(page, 'ArrowRight');
     await waitForState(page, { mode: 'zones-lh', lightTheta: 120, shape: 'sphere' });
+    expect(await presenter()).toBeNull();
+    // the slot the plugin added takes the widget's height, as far as the 700 px slide has room for it
+    const slot = () =>
+      page.$eval('.present [data-shading-lab-slot]', (s) => ({ height: s.offsetHeight, room: 700 - s.offsetTop }));
+    await expect.poll(slot, { timeout: 15_000 }).toSatisfy(({ height, room }) => height === room && height > 480);
     await press(page, 'ArrowRight'); // first fragment
     await waitForState(page, { mode: 'zones-lh-weighted', shape: 'sphere' });
     await press(page, 'ArrowRight'); // second fragment

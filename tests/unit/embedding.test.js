@@ -3,7 +3,7 @@
 import { describe, expect, it } from 'vitest';
 import { MESSAGE_PREFIX, parseMessage } from '../../src/core/framework/embed-protocol.js';
 import { PREFIX, frameUrl } from '../../src/embedding/shading-lab-widget.js';
-import { parseWidgetSpec } from '../../src/embedding/reveal-plugin.js';
+import { isPresenter, parseWidgetSpec } from '../../src/embedding/reveal-plugin.js';
 
 describe('<shading-lab-widget> iframe URL', () => {
   it('uses the protocol of src/core/framework/embed-protocol.js', () => {
@@ -36,6 +36,13 @@ describe('<shading-lab-widget> iframe URL', () => {
     // a file:// page
     expect(frameUrl('https://lab.example.org/embed.html', 'media', '', 'null').searchParams.has('origins')).toBe(false);
   });
+
+  it('asks for the presenter view (presenter=1) only when told to', () => {
+    const of = (presenter) =>
+      frameUrl('https://lab.example.org/embed.html', 'media', '', 'https://lab.example.org', undefined, presenter);
+    expect(of(true).searchParams.get('presenter')).toBe('1');
+    expect(of(false).searchParams.has('presenter')).toBe(false);
+  });
 });
 
 describe('reveal plugin markup', () => {
@@ -46,5 +53,15 @@ describe('reveal plugin markup', () => {
     });
     expect(parseWidgetSpec(' ndf-explorer ')).toEqual({ name: 'ndf-explorer', query: '' });
     expect(parseWidgetSpec('media?a=1?b')).toEqual({ name: 'media', query: 'a=1?b' });
+  });
+});
+
+describe('reveal plugin: the presenter view', () => {
+  const section = (dataset) => ({ dataset });
+  it('follows the deck’s presenter option unless the slide says otherwise (data-shading-lab-presenter)', () => {
+    expect(isPresenter(section({}), false)).toBe(false);
+    expect(isPresenter(section({}), true)).toBe(true);
+    expect(isPresenter(section({ shadingLabPresenter: '' }), false)).toBe(true);
+    expect(isPresenter(section({ shadingLabPresenter: 'false' }), true)).toBe(false);
   });
 });

@@ -10,6 +10,8 @@
 //                                                                                state)
 //                     { type: 'shading-lab:changed', widget, state, query }      the user changed it (debounced)
 //                     { type: 'shading-lab:snapshot', id, widget, state, query, image }  reply: a PNG data URL
+//                     { type: 'shading-lab:resize', widget, height }    the content's height in CSS px: on ready
+//                                                                       and whenever it changes
 //
 // `query` is the state as embed URL parameters (only what differs from the defaults). Messages are taken only
 // from the parent window and from an allowed origin; anything else, or of another shape, is ignored. Replies
@@ -93,10 +95,18 @@ export function parentOriginHint() {
   }
 }
 
+/** The height of `content` with its margins, whole CSS pixels (rounded up: a frame that tall has no scroll bar). */
+export function contentHeight(content) {
+  const style = getComputedStyle(content);
+  const margins = Number.parseFloat(style.marginTop) + Number.parseFloat(style.marginBottom);
+  return Math.ceil(content.getBoundingClientRect().height + (margins || 0));
+}
+
 /**
  * Connects a mounted widget to its parent window. `instance` is the widget ({ update, getState }), `notices`
  * a notice area for problems the widget itself does not report (unknown keys), `capture()` the picture it
- * shows as a PNG data URL (or null). Returns
+ * shows as a PNG data URL (or null), `content` the element whose height the parent is told (`resize`, observed
+ * with a ResizeObserver; none when omitted). Returns
  * { ready(), userChanged() (call on every state change), dispose() }.
  */
 export function connectEmbedProtocol({
@@ -106,6 +116,7 @@ export function connectEmbedProtocol({
   origins,
   notices,
   capture = () => null,
+  content = null,
   parent = window.parent,
 }) {
   const hint = parentOriginHint();
@@ -120,11 +131,23 @@ export function connectEmbedProtocol({
   const post = (type, origin, fields = {}) =>
     parent.postMessage({ type: `${MESSAGE_PREFIX}${type}`, ...snapshot(), ...fields }, origin);
 
+  // the height goes, like every unsolicited message, only to the parent's origin once it is known and allowed
+  let told = { origin: null, height: -1 };
+  const tellHeight = () => {
+    if (!content || !parentOrigin) return;
+    const height = contentHeight(content);
+    if (told.origin === parentOrigin && told.height === height) return;
+    told = { origin: parentOrigin, height };
+    parent.postMessage({ type: `${MESSAGE_PREFIX}resize`, widget: name, height }, parentOrigin);
+  };
+  const observer = content && new ResizeObserver(tellHeight);
+
   const onMessage = (e) => {
     if (e.source !== parent || !origins.has(e.origin)) return;
     const msg = parseMessage(e.data);
     if (!msg) return;
     parentOrigin = e.origin;
+    tellHeight(); // a parent heard from first (its browser hid its origin) learns the height now
     if (msg.kind === 'snapshot') return void post('snapshot', e.origin, { id: msg.id, image: capture() });
     if (msg.kind === 'set') {
       const { invalid, unknown } = checkIncomingState(schema, msg.state, instance.getState());
@@ -144,6 +167,7 @@ export function connectEmbedProtocol({
   return {
     ready() {
       if (parentOrigin) post('ready', parentOrigin);
+      observer?.observe(content); // its first call sends the height
     },
     userChanged() {
       if (fromParent || !parentOrigin) return;
@@ -152,6 +176,7 @@ export function connectEmbedProtocol({
     },
     dispose() {
       clearTimeout(timer);
+      observer?.disconnect();
       window.removeEventListener('message', onMessage);
     },
   };

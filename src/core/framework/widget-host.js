@@ -25,8 +25,26 @@ export function widgetParams(search, prefix) {
   return Object.fromEntries(out);
 }
 
-// Parameters of embed.html that are not widget state: the widget's name and the origins allowed to message it.
-const EMBED_PARAMS = new Set(['w', 'origins']);
+// Parameters of embed.html that are not widget state: the widget's name, the origins allowed to message it and
+// the presenter view.
+const EMBED_PARAMS = new Set(['w', 'origins', 'presenter']);
+
+/**
+ * The page's URL `href` with a widget's state in it (its keys under `prefix.`, or all but the embed's own).
+ * @param {string} href
+ * @param {Schema} schema
+ * @param {State} state
+ * @param {string} prefix
+ */
+export function urlWithState(href, schema, state, prefix) {
+  const url = new URL(href);
+  const own = stateToParams(schema, state);
+  for (const k of [...url.searchParams.keys()]) {
+    if (prefix ? k.startsWith(`${prefix}.`) : !EMBED_PARAMS.has(k)) url.searchParams.delete(k);
+  }
+  for (const [k, v] of own) url.searchParams.set(prefix ? `${prefix}.${k}` : k, v);
+  return url;
+}
 
 /**
  * @param {Schema} schema
@@ -34,13 +52,7 @@ const EMBED_PARAMS = new Set(['w', 'origins']);
  * @param {string} prefix
  */
 function writeUrl(schema, state, prefix) {
-  const url = new URL(location.href);
-  const own = stateToParams(schema, state);
-  for (const k of [...url.searchParams.keys()]) {
-    if (prefix ? k.startsWith(`${prefix}.`) : !EMBED_PARAMS.has(k)) url.searchParams.delete(k);
-  }
-  for (const [k, v] of own) url.searchParams.set(prefix ? `${prefix}.${k}` : k, v);
-  history.replaceState(history.state, '', url);
+  history.replaceState(history.state, '', urlWithState(location.href, schema, state, prefix));
 }
 
 /**
@@ -70,6 +82,8 @@ export async function mountWidget(
 ) {
   if (!Object.hasOwn(widgets, name)) throw new Error(`unknown widget ${name}`);
   const { widget } = await widgets[name].load();
+  // the page's URL carries this widget's state (under this prefix): its Share can link to the page as it is
+  if (syncUrl) container.dataset.stateInUrl = prefix;
   /** @type {ReturnType<typeof setTimeout> | undefined} */
   let timer;
   const instance = widget.create(container, state ?? { ...initialState, ...widgetParams(location.search, prefix) }, {

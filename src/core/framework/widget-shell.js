@@ -5,7 +5,7 @@ import { coerceState, defaultState } from './state.js';
 import { createNoticeArea } from './notice.js';
 import { createStateGui } from './gui.js';
 import { createLiveRegion, describeCanvas } from './describe.js';
-import { createShareBar, shareLink } from './share.js';
+import { createShareBar, linkChoices, shareLink } from './share.js';
 import { registerPrintable } from './print.js';
 import { declaredFormula } from './formula-registry.js';
 import { controlElements, createLiveFormula } from './live-formula.js';
@@ -117,7 +117,8 @@ export function createWidgetShell(
       gui = createStateGui(controls, { schema, state, onChange: update, title, locked });
       formula?.link(controlElements(gui.gui, schema));
       const getLink = () => shareLink(name, schema, state);
-      (formula?.element ?? body).after(createShareBar({ title: title ?? name, getLink }));
+      const choices = linkChoices(root, { name, schema, getState: () => state });
+      body.before(createShareBar({ title: title ?? name, choices })); // at the top of the widget, by its panel
       unprint = registerPrintable(root, title ?? name, getLink);
       return update;
     },
