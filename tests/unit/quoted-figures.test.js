@@ -23,14 +23,7 @@ const stepText = (id) => {
   const step = TOUR_STEPS.find((s) => s.id === id);
   return { ...step, text: inlineTexPlain(step.text) };
 };
-/** The numbers the first match of `re` captures; fails if the sentence no longer reads that way. */
-function quoted(source, re) {
-  const m = source.match(re);
-  expect(m, `${re} in the text`).not.toBeNull();
-  return m.slice(1).map(Number);
-}
-/** x printed with `digits` decimals reads `printed`. */
-const reads = (x, printed, digits = 0) => expect(x.toFixed(digits)).toBe(printed.toFixed(digits));
+import { quoted, reads } from './quoted-text.js';
 
 describe('tour, media-red-absorber: the wine-like absorber (media widget σa) by Beer–Lambert', () => {
   it('1 cm leaves 97/55/41% of red/green/blue and 5 cm 86/5/1%', () => {

@@ -4,8 +4,7 @@
 // height-correlated Smith, Schlick), the white furnace with Kulla–Conty's compensation and the random walk on the
 // Smith microsurface, and Oren–Nayar (1994) against Lambert on a sphere lit from the viewer.
 import { describe, expect, it } from 'vitest';
-import { TOUR_STEPS } from '../../src/tour/steps.js';
-import { inlineTexPlain } from '../../src/core/ui/inline-tex.js';
+import { quoted, reads, stepText as step } from './quoted-text.js';
 import { transmittance } from '../../src/math/media.js';
 import { MEDIA } from '../../src/widgets/media/schema.js';
 import { fresnelDielectric } from '../../src/math/fresnel.js';
@@ -21,18 +20,6 @@ import { randomWalkAlbedoGGX } from '../../src/math/random-walk.js';
 import { WALK_PATHS } from '../../src/widgets/energy/compensation.js';
 import { diffuseOrenNayar, diffuseOrenNayarQualitative } from '../../src/math/diffuse.js';
 import { DEG } from '../../src/math/angles.js';
-
-const step = (id) => {
-  const s = TOUR_STEPS.find((x) => x.id === id);
-  return { ...s, text: inlineTexPlain(s.text) };
-};
-/** The numbers the first match of `re` captures; fails if the sentence no longer reads that way. */
-function quoted(text, re) {
-  const m = text.match(re);
-  expect(m, `${re} in the text`).not.toBeNull();
-  return m.slice(1).map(Number);
-}
-const reads = (x, printed, digits = 0) => expect(x.toFixed(digits)).toBe(printed.toFixed(digits));
 
 describe('tour, media-straight-line: a metre of clean water (Beer–Lambert, the media widget’s σa)', () => {
   it('the glass shown lets 73/96/97% of red/green/blue through; 5 cm would let 98% of red through', () => {
