@@ -3,92 +3,10 @@
 import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { ROOT } from '../tests/browser/harness.js';
-import { iblStaleNote } from '../src/pages/ibl-note.js';
+import { measuredLines } from './readme-lines.js';
 
 const report = JSON.parse(readFileSync(join(ROOT, 'bench/results/latest.json'), 'utf8'));
-const { machine: m, gpuSetup: g, versusThree: vt, ibl } = report;
-const esc = (s) => s.replaceAll('|', '\\|');
-const lines = [
-  `Measured ${report.date.slice(0, 10)} on ${m.cpu} (${m.cores} cores), Node ${m.node}, ${m.chromium}, GPU: ` +
-    `${m.gpuRenderer}. ` +
-    `On this software renderer the GPU columns move by up to about 30% between runs (the empty pass alone is ` +
-    `${g.baselineMsPerFrame.toFixed(1)} ms ` +
-    'of every frame) and the CPU column by about 15%; the errors and differences of the term families are exact.',
-  '',
-];
-if (report.familiesMeasured) {
-  const { date, timedCpu } = report.familiesMeasured;
-  const date0 = report.date.slice(0, 10);
-  lines.push(
-    `The term families' ${timedCpu ? 'errors and CPU costs' : 'errors'} below were measured again on ` +
-      `${date.slice(0, 10)} (\`npm run bench -- --only families\`); their ` +
-      `${timedCpu ? 'GPU columns are' : 'costs are'} ` +
-      `from the full run${iblStaleNote(report.date) ? `, as are the image-based lighting rows (${date0})` : ''}.`,
-    '',
-  );
-}
-const HEAD = (first, what) => [
-  `| ${first} | ${what === 'error' ? 'error against' : 'difference from'} | max \\|${what}\\| | RMS | ` +
-    'CPU ns/eval | GPU relative |',
-  '|---|---|---|---|---|---|',
-];
-const row = (v, m) => {
-  const reference = v.kind === 'reference';
-  return (
-    `| ${esc(v.label)} | ${reference ? 'reference' : esc(v.againstLabel)} | ` +
-    `${reference ? '0' : m.maxAbs.toExponential(2)} | ` +
-    `${m.rms.toExponential(2)} | ${v.cpuNsPerEval === null ? '— (run offline)' : v.cpuNsPerEval.toFixed(0)} | ` +
-    `${v.gpuRelative === null ? '—' : `${v.gpuRelative.toFixed(2)}×`} |`
-  );
-};
-for (const f of report.families) {
-  const others = f.variants.filter((v) => v.kind === 'difference');
-  const note = f.referenceNote ? ` (${esc(f.referenceNote)})` : '';
-  lines.push(`**${f.title}** — ${esc(f.errorOf)} over ${esc(f.domain)}${note}`, '', ...HEAD('approximation', 'error'));
-  for (const v of f.variants.filter((w) => w.kind !== 'difference')) lines.push(row(v, v.error));
-  if (others.length) {
-    const from = esc(others[0].againstLabel);
-    lines.push('', `Other models, as a difference from ${from} (not an error: neither approximates the other):`, '');
-    lines.push(...HEAD('model', 'difference'));
-    for (const v of others) lines.push(row(v, v.difference));
-  }
-  lines.push('');
-}
-lines.push(
-  "**Image-based lighting against the reference.** The material lab's environment methods on a " +
-    `${ibl.setup.resolution}² sphere against its Monte Carlo reference (${ibl.setup.referenceSamples} samples ` +
-    `per pixel, multiple importance ` +
-    `sampling of the BRDF and the map); GPU time of the method's pass, median of ${ibl.setup.timingRuns}; RMS ` +
-    `error over the sphere, in radiance ` +
-    `and relative to the reference's RMS.${iblStaleNote(report.date) ? ` ${iblStaleNote(report.date)}` : ''}`,
-  '',
-  '| environment, material | method | GPU ms | RMS | relative |',
-  '|---|---|---|---|---|',
-  ...ibl.rows.map(
-    (r) =>
-      `| ${r.environment}, ${r.material} α ${r.alpha} | ` +
-      `${r.samples ? `importance, N = ${r.samples}` : r.method} | ${r.ms.toFixed(1)} | ` +
-      `${r.rms.toExponential(2)} | ${(r.relative * 100).toFixed(1)} % |`,
-  ),
-  '',
-  `**Against three.js.** A sphere at ${vt.size}² with the terms of MeshStandardMaterial (GGX, height-correlated ` +
-    `Smith, Schlick with ` +
-    `F0 = 0.04, Lambert, one punctual light): this app's shader ${vt.oursMsPerFrame.toFixed(1)} ms per frame, ` +
-    `MeshStandardMaterial ` +
-    `${vt.threeMsPerFrame.toFixed(1)} ms: a ratio of **${vt.ratio.toFixed(2)}**.`,
-  '',
-  '**Load only what is opened.** Each page is its own entry and each widget its own chunk, loaded when mounted; ' +
-    'three.js is shared ' +
-    'by the 3-D pages. What each page fetched, and when it drew its first frame:',
-  '',
-  '| page | JS (KiB, uncompressed) | load (ms) | first 3-D frame (ms) |',
-  '|---|---|---|---|',
-  ...report.pages.map(
-    (p) =>
-      `| \`${p.page}\` | ${p.jsKB.toFixed(0)} | ${p.loadMs.toFixed(0)} | ` +
-      `${p.firstFrameMs === null ? '—' : p.firstFrameMs.toFixed(0)} |`,
-  ),
-);
+const lines = measuredLines(report);
 
 const path = join(ROOT, 'docs/performance.md');
 const readme = readFileSync(path, 'utf8');

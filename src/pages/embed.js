@@ -2,7 +2,7 @@
 // postMessage protocol of src/core/framework/embed-protocol.js with its parent, if the parent's origin is allowed
 // (`origins=`, a comma list; the widget's own origin always is).
 import '../styles.css';
-import { mountWidget } from '../core/framework/widget-host.js';
+import { mountOrExplain } from '../core/framework/widget-failure.js';
 import { connectEmbedProtocol, parseAllowedOrigins } from '../core/framework/embed-protocol.js';
 import { WIDGETS, isWidgetName } from '../widgets/registry.js';
 import { createNoticeArea, showBlockingMessage } from '../core/framework/notice.js';
@@ -10,6 +10,7 @@ import { showValue } from '../core/framework/state.js';
 import { snapshotWidget } from '../core/framework/snapshot.js';
 
 const root = document.getElementById('embed');
+document.getElementById('embed-fallback')?.remove(); // the app runs: the words for blocked scripts go
 const params = new URLSearchParams(location.search);
 const name = params.get('w');
 if (isWidgetName(name)) {
@@ -18,13 +19,15 @@ if (isWidgetName(name)) {
   const { origins, notices: originProblems } = parseAllowedOrigins(params.get('origins'), location.origin);
   if (originProblems.length) notices.show(originProblems);
   let link = null;
-  const instance = await mountWidget(root, name, { widgets: WIDGETS, onStateChange: () => link?.userChanged() });
-  if (window.parent !== window) {
+  // the protocol starts once the widget is up, at the first try or a retry (a failure says so in the frame)
+  const connect = async (instance) => {
+    if (window.parent === window) return;
     const { widget } = await WIDGETS[name].load();
     const capture = () => snapshotWidget(root.querySelector('.widget'));
     link = connectEmbedProtocol({ name, schema: widget.schema, instance, origins, notices, capture });
     link.ready();
-  }
+  };
+  await mountOrExplain(root, name, { widgets: WIDGETS, onStateChange: () => link?.userChanged() }, connect);
 } else {
   const known = Object.keys(WIDGETS).join(', ');
   const what = name ? `There is no widget called ${showValue(name)}.` : 'No widget named.';

@@ -5,7 +5,7 @@
 import '../styles.css';
 import '../exercises/exercise-list.css';
 import { CHAPTERS } from './chapters.js';
-import { mountWidget } from '../core/framework/widget-host.js';
+import { mountOrExplain } from '../core/framework/widget-failure.js';
 import { isOption } from '../core/framework/state.js';
 import { WIDGETS, isWidgetName } from '../widgets/registry.js';
 import { GRADERS } from '../exercises/graders.js';
@@ -282,18 +282,8 @@ async function openExercise(exercise, { focus = false } = {}) {
     publish('exercise', { id: exercise.id, hidden, ready: true });
     return;
   }
-  if (exercise.locked.length) {
-    const schema = await schemaOf(exercise.widget);
-    const names = exercise.locked.map((k) => schema[k].label ?? k);
-    slot.append(
-      el('p', {
-        className: 'exercise-locked',
-        textContent: `Fixed by the exercise (greyed out below): ${names.join(', ')}.`,
-      }),
-    );
-  }
   const mine = current;
-  const widget = await mountWidget(slot, exercise.widget, {
+  const widget = await mountOrExplain(slot, exercise.widget, {
     widgets: WIDGETS,
     prefix: 'exercise',
     syncUrl: false,
@@ -301,7 +291,18 @@ async function openExercise(exercise, { focus = false } = {}) {
     locked: exercise.locked,
     onStateChange: (state) => mine.preview?.update(state),
   });
+  if (!widget) return; // it says why in its place, with Retry
   if (current !== mine) return widget.dispose(); // another exercise was opened meanwhile
+  if (exercise.locked.length) {
+    const schema = await schemaOf(exercise.widget); // loaded: the widget is up
+    const names = exercise.locked.map((k) => schema[k].label ?? k);
+    slot.prepend(
+      el('p', {
+        className: 'exercise-locked',
+        textContent: `Fixed by the exercise (greyed out below): ${names.join(', ')}.`,
+      }),
+    );
+  }
   current.widget = widget;
   current.preview?.update(widget.getState());
   publish('exercise', { id: exercise.id, hidden, ready: true });

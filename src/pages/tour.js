@@ -3,7 +3,7 @@
 // forward walk the tour. A widget that goes on from one step to the next is kept and only given the new
 // state; a different one replaces it, and the old one is disposed (its WebGL context with it).
 import '../styles.css';
-import { mountWidget } from '../core/framework/widget-host.js';
+import { mountOrExplain } from '../core/framework/widget-failure.js';
 import { publish } from '../core/framework/debug-hooks.js';
 import { defaultState, showValue } from '../core/framework/state.js';
 import { createNoticeArea } from '../core/framework/notice.js';
@@ -37,22 +37,17 @@ function show(i) {
 }
 
 async function setUp(step, i) {
-  const { widget } = await WIDGETS[step.widget].load();
-  const state = { ...defaultState(widget.schema), ...step.state }; // the same picture however one arrives
-  if (mounted?.name === step.widget) mounted.instance.update(state);
-  else {
+  if (mounted?.name === step.widget) {
+    const { widget } = await WIDGETS[step.widget].load(); // loaded already: it is up
+    mounted.instance.update({ ...defaultState(widget.schema), ...step.state }); // the same picture as a fresh one
+  } else {
     if (mounted) release(mounted.instance);
     mounted = null;
     stage.replaceChildren();
-    mounted = {
-      name: step.widget,
-      instance: await mountWidget(stage, step.widget, {
-        widgets: WIDGETS,
-        prefix: 'tour',
-        syncUrl: false,
-        initialState: state,
-      }),
-    };
+    // a widget that fails says so on the stage with Retry; a retry that works is this step's widget
+    const up = (instance) => (mounted = { name: step.widget, instance });
+    const options = { widgets: WIDGETS, prefix: 'tour', syncUrl: false, initialState: step.state };
+    if (!(await mountOrExplain(stage, step.widget, options, up))) return;
   }
   if (i !== index) return;
   bringIntoSight(step);

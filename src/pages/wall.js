@@ -1,7 +1,7 @@
 // wall.html: twenty 3-D widgets mounted on one page, more than the browser's cap on live WebGL contexts;
 // the shared context budget (src/core/gpu/gl-budget.js) keeps every one of them drawable.
 import '../styles.css';
-import { mountWidget } from '../core/framework/widget-host.js';
+import { mountOrExplain } from '../core/framework/widget-failure.js';
 import { glBudgetStatus } from '../core/gpu/gl-budget.js';
 import { stateToParams } from '../core/framework/state.js';
 import { WIDGETS } from '../widgets/registry.js';
@@ -54,21 +54,17 @@ for (const [i, [name, caption, state]] of TILES.entries()) {
   const slot = document.createElement('div');
   tile.append(heading, slot);
   wall.append(tile);
-  const { widget } = await WIDGETS[name].load();
   const alone = Object.assign(document.createElement('a'), { className: 'wall-open', textContent: 'open alone' });
-  const link = (s) =>
-    (alone.href = `embed.html?${new URLSearchParams([['w', name], ...stateToParams(widget.schema, s)])}`);
+  alone.href = `embed.html?${new URLSearchParams({ w: name })}`;
   heading.append(' ', alone);
-  link(
-    (
-      await mountWidget(slot, name, {
-        widgets: WIDGETS,
-        prefix: `tile${i + 1}`,
-        syncUrl: false,
-        initialState: state,
-        onStateChange: link,
-      })
-    ).getState(),
-  );
+  let schema = null; // the link follows the tile's state once its widget is up (a failed tile says so in place)
+  const link = (s) =>
+    schema && (alone.href = `embed.html?${new URLSearchParams([['w', name], ...stateToParams(schema, s)])}`);
+  const prefix = `tile${i + 1}`;
+  const options = { widgets: WIDGETS, prefix, syncUrl: false, initialState: state, onStateChange: link };
+  await mountOrExplain(slot, name, options, async (instance) => {
+    schema = (await WIDGETS[name].load()).widget.schema; // loaded: it is up
+    link(instance.getState());
+  });
   showStatus();
 }

@@ -3,6 +3,9 @@
 import { describe, expect, it } from 'vitest';
 import { FAMILIES, measureErrors } from '../../bench/families.js';
 import * as M from '../../src/math/index.js';
+import { readFileSync } from 'node:fs';
+import { measuredLines } from '../../bench/readme-lines.js';
+import { MULTIPLE_SCATTERING_FAMILY, WALK_SAMPLES, walkStandardError } from '../../bench/multiple-scattering-family.js';
 
 const KINDS = ['reference', 'approximation', 'difference'];
 
@@ -52,4 +55,29 @@ describe('bench families: errors only between forms of one model', () => {
     expect(ndf.variants.filter((v) => v.kind === 'approximation').map((v) => v.key)).toEqual(['blinn-phong']);
     expect(ndf.variants.filter((v) => v.kind === 'difference').map((v) => v.key)).toEqual(['ggx', 'abc', 'sgd']);
   });
+});
+
+describe('docs/performance.md: the measured block (bench/readme-lines.js over bench/results/latest.json)', () => {
+  const read = (path) => readFileSync(new URL(`../../${path}`, import.meta.url), 'utf8');
+  const report = JSON.parse(read('bench/results/latest.json'));
+  const doc = read('docs/performance.md');
+  it('is what the generator writes from the report', () => {
+    expect(doc).toContain(measuredLines(report).join('\n'));
+  });
+  it('multiple scattering’s errors: uncertain by the walk’s standard error (a 2000-path walk’s ÷ 10 agrees)', () => {
+    expect(doc).not.toMatch(/term families are exact/);
+    const head = doc.split('\n').find((line) => line.startsWith('Measured '));
+    expect(head).toContain(
+      'except multiple scattering, scored against a random walk (Heitz et al. 2016), itself uncertain',
+    );
+    const m = head.match(/(\d+)k paths per \(μ, α\); the walk's largest standard error is ([\d.]+e-\d)/);
+    expect(m).not.toBeNull();
+    const [paths, quoted] = [Number(m[1]) * 1000, Number(m[2])];
+    expect(paths).toBe(WALK_SAMPLES);
+    // the same walks at 2000 paths: the standard error falls as 1/√paths
+    MULTIPLE_SCATTERING_FAMILY.configure({ quick: true });
+    const scaled = walkStandardError() * Math.sqrt(2000 / paths);
+    MULTIPLE_SCATTERING_FAMILY.configure({ quick: false });
+    expect(Math.abs(scaled / quoted - 1)).toBeLessThan(0.15);
+  }, 30_000);
 });

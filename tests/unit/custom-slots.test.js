@@ -3,6 +3,7 @@
 import { describe, expect, it } from 'vitest';
 import { SLOTS, slotOf } from '../../src/core/custom/slots.js';
 import { CATALOGUE } from '../../src/math/catalogue/index.js';
+import { smithG1GGX } from '../../src/math/visibility.js';
 
 const ISSUE_13 = {
   D: 'float customD(float nh, float alpha)',
@@ -26,5 +27,19 @@ describe('SLOTS', () => {
       expect(CATALOGUE[slot.family ?? 'diffuse'].terms).toHaveProperty(slot.reference);
     expect(Object.keys(SLOTS)).toEqual(Object.keys(ISSUE_13));
     expect(() => slotOf('toString')).toThrow(/no slot/);
+  });
+  it('the V starter names its root r(x) = x (1 + 2Λ(x)), not Λ: Heitz 2014’s Λ in closed form, G1 = 1/(1 + Λ)', () => {
+    const comment = SLOTS.V.starter
+      .split('\n')
+      .filter((line) => line.startsWith('//'))
+      .join(' ');
+    expect(comment).toContain('r(x) = sqrt(x² + α² (1 - x²)) = x (1 + 2Λ(x))');
+    expect(comment).not.toMatch(/Λ[xlv]\b|Λx =/);
+    for (const alpha of [0.1, 0.5, 1])
+      for (const x of [0.05, 0.3, 0.7, 1]) {
+        const lambda = (-1 + Math.sqrt(1 + (alpha * alpha * (1 - x * x)) / (x * x))) / 2; // Heitz 2014, GGX
+        expect(Math.sqrt(x * x + alpha * alpha * (1 - x * x))).toBeCloseTo(x * (1 + 2 * lambda), 12);
+        expect(smithG1GGX(x, alpha)).toBeCloseTo(1 / (1 + lambda), 12);
+      }
   });
 });

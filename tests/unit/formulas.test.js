@@ -147,9 +147,8 @@ describe('live formulas', () => {
     expect(tex).toContain('\\sym{ior}{1.70}');
   });
 
-  it('brdf-lobe: f = F G D / (4 (n·l)(n·v)) with GGX, height-correlated Smith and Schlick, in closed form', () => {
-    const [a, f0, tl, tv] = [0.4, 0.04, 30, 50];
-    const tex = texOf('brdf-lobe', { alpha: a, f0, lightTheta: tl, viewTheta: tv });
+  /** GGX, height-correlated Smith and Schlick at (α, F0, θl, θv) in closed form: F, D, G and f in 1/sr. */
+  const lobeClosedForm = ([a, f0, tl, tv]) => {
     const DEG = Math.PI / 180;
     const l = [-Math.sin(tl * DEG), 0, Math.cos(tl * DEG)];
     const v = [Math.sin(tv * DEG), 0, Math.cos(tv * DEG)];
@@ -160,10 +159,73 @@ describe('live formulas', () => {
     const F = f0 + (1 - f0) * (1 - lh) ** 5;
     const D = a ** 2 / (Math.PI * (nh ** 2 * (a ** 2 - 1) + 1) ** 2);
     const V = 2 / (nv * Math.sqrt(nl ** 2 + a ** 2 * (1 - nl ** 2)) + nl * Math.sqrt(nv ** 2 + a ** 2 * (1 - nv ** 2)));
-    shows(tex, F);
-    shows(tex, D);
-    shows(tex, V * nl * nv); // G
-    shows(tex, (F * D * V) / 4); // f, 1/sr
+    return { F, D, G: V * nl * nv, f: (F * D * V) / 4 };
+  };
+  const LOBE_AT = [0.4, 0.04, 30, 50];
+  const lobeState = ([alpha, f0, lightTheta, viewTheta]) => ({ alpha, f0, lightTheta, viewTheta });
+
+  it('brdf-lobe: f = F G D / (4 (n·l)(n·v)) with GGX, height-correlated Smith and Schlick, in closed form', () => {
+    const tex = texOf('brdf-lobe', lobeState(LOBE_AT));
+    const { F, D, G, f } = lobeClosedForm(LOBE_AT);
+    for (const x of [F, D, G, f]) shows(tex, x);
+  });
+
+  it('brdf-lobe: a custom F, D or V is named as the explorers name it, no catalogue number (closed form) shown', () => {
+    const closed = lobeClosedForm(LOBE_AT);
+    const cases = [
+      ['F', 'F_{\\text{yours}}(F_0, \\lh )', closed.F, 'F_{\\text{Schlick}}'],
+      ['D', 'D_{\\text{yours}}(\\nh, \\alpha)', closed.D, 'D_{\\text{GGX}}'],
+      ['V', 'V_{\\text{yours}}(\\nl, \\nv, \\alpha)', closed.G, 'V_{\\text{Smith'],
+    ];
+    for (const [slot, named, catalogue, name] of cases) {
+      const tex = texOf('brdf-lobe', { ...lobeState(LOBE_AT), [slot]: 'custom' });
+      expect(tex, slot).toContain(named);
+      expect(tex, slot).toContain('your GLSL, evaluated on the GPU');
+      expect(tex, slot).not.toContain(catalogue.toFixed(3));
+      expect(tex, slot).not.toContain(closed.f.toFixed(3)); // f follows the user's term: its value is the GPU's
+      expect(tex, slot).not.toContain(name);
+    }
+    // the three explorers name theirs the same way
+    expect(texOf('ndf-explorer', { ndfs: ['custom'] })).toContain('D_{\\text{yours}}(\\nm ');
+    expect(texOf('visibility-explorer', { terms: ['custom'] })).toContain('V_{\\text{yours}}(\\nl, \\nv, \\alpha)');
+    expect(texOf('diffuse-explorer', { models: ['custom'] })).toContain('f_{\\text{yours}}(');
+  });
+
+  it('brdf-lobe: a whole custom BRDF has no F·D·G/(4 (n·l)(n·v)) and no Lambert 1/π (the starter’s)', async () => {
+    const tex = texOf('brdf-lobe', { ...lobeState(LOBE_AT), brdf: 'custom' });
+    expect(tex).toContain('f(\\mathbf{l},\\mathbf{v}) = f_{\\text{yours}}(\\mathbf{l}, \\mathbf{v})');
+    expect(tex).not.toMatch(/\\frac|D\(|G\(|F_0|\\alpha/);
+    expect(tex).not.toContain((1 / Math.PI).toFixed(3));
+    // nor does the readout's table head
+    const { tableHead } = await import('../../src/widgets/brdf-lobe/readout.js');
+    expect(tableHead({ brdf: 'custom' })).not.toMatch(/FDG/);
+    expect(tableHead({ brdf: 'microfacet' })).toContain('f = FDG/(4 n·l n·v) (1/sr)');
+  });
+
+  it('energy: Kulla–Conty and Turquin both with the Fresnel terms the albedo evaluates (Simpson)', async () => {
+    const { compensatedAlbedoGGX } = await import('../../src/math/multiple-scattering.js');
+    const { albedoGGX, averageAlbedo, dfgSplitSum } = await import('../../src/math/integrate.js');
+    const kc = texOf('energy', { compensation: 'kullaConty' });
+    const turquin = texOf('energy', { compensation: 'turquin' });
+    expect(kc).toContain('F_{\\text{ms}}\\,f_{\\text{ms}}');
+    expect(kc).toContain(
+      'F_{\\text{ms}} = \\frac{F_{\\text{avg}}^2\\,E_{\\text{avg}}}{1 - F_{\\text{avg}}(1 - E_{\\text{avg}})}',
+    );
+    expect(kc).toContain('F_{\\text{avg}} = F_0 + \\frac{1 - F_0}{21}');
+    expect(turquin).toContain('1 + F_0\\,\\frac{1 - E(\\mu_o)}{E(\\mu_o)}');
+    // what the formulas say, evaluated here: F_avg = 2∫F μ dμ of Schlick by Simpson, E = scale + bias (F = 1)
+    const [mu, alpha, f0] = [0.5, 0.6, 0.3];
+    const n = 2000;
+    const schlick = (m) => f0 + (1 - f0) * (1 - m) ** 5;
+    let sum = 0;
+    for (let i = 0; i <= n; i++) sum += (i === 0 || i === n ? 1 : i % 2 ? 4 : 2) * schlick(i / n) * (i / n);
+    const fAvg = (2 * sum) / (3 * n);
+    const eAvg = averageAlbedo((m) => albedoGGX(m, alpha));
+    const [scale, bias] = dfgSplitSum(mu, alpha);
+    const [single, E] = [f0 * scale + bias, scale + bias];
+    const fMs = (fAvg ** 2 * eAvg) / (1 - fAvg * (1 - eAvg));
+    expect(compensatedAlbedoGGX(mu, alpha, f0, 'kullaConty', eAvg)).toBeCloseTo(single + fMs * (1 - E), 9);
+    expect(compensatedAlbedoGGX(mu, alpha, f0, 'turquin', eAvg)).toBeCloseTo(single * (1 + (f0 * (1 - E)) / E), 9);
   });
 
   it('ndf-explorer: GGX’s α and Beckmann’s α where D falls to half its peak at the matched half width', () => {

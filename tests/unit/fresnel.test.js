@@ -1,3 +1,4 @@
+import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import {
   conductorIorFromF0EdgeTint,
@@ -123,7 +124,8 @@ describe('Schlick', () => {
     }
   });
   it(
-    'errs most at grazing angles, near acos(1/7) ≈ 81.8° (Hoffman 2019, ' + '"Fresnel Equations Considered Harmful")',
+    'errs most at grazing angles: metals 72.8°–84.5°, the far-off ones around acos(1/7) ≈ 81.8°, the peak of ' +
+      'Hoffman 2019’s error model ("Fresnel Equations Considered Harmful")',
     () => {
       // Hoffman models Schlick's error with the term cos(1 - cos)^6, which peaks at cos = 1/7.
       const peaks = [];
@@ -165,6 +167,30 @@ describe('Schlick', () => {
       expect(metalPeaks.length).toBeGreaterThanOrEqual(6);
       const mean = metalPeaks.reduce((a, b) => a + b, 0) / metalPeaks.length;
       expect(Math.abs(mean - (Math.acos(1 / 7) * 180) / Math.PI)).toBeLessThan(1.5);
+      // docs/math-api.md quotes the measured maxima (to the 0.05° grid), and 1/7 as the error model's peak
+      const doc = readFileSync(new URL('../../docs/math-api.md', import.meta.url), 'utf8').replace(/\s+/g, ' ');
+      const m = doc.match(
+        /between ([\d.]+)° \(silver, blue\) and ([\d.]+)° \(gold, blue\) for the red, green and blue/,
+      );
+      expect(m).not.toBeNull();
+      const metal = peaks.filter((p) => p.metal);
+      const close = (quoted, x) => expect(Math.abs(Number(quoted) - x)).toBeLessThanOrEqual(0.06);
+      close(m[1], Math.min(...metal.map((p) => p.at)));
+      close(m[2], Math.max(...metal.map((p) => p.at)));
+      expect(metal.find((p) => p.at === Math.min(...metal.map((q) => q.at))).name).toBe('Silver 2');
+      expect(metal.find((p) => p.at === Math.max(...metal.map((q) => q.at))).name).toBe('Gold 2');
+      const far = doc.match(
+        /cos θ \(1 − cos θ\)⁶, which peaks at cos θ = 1\/7 \(θ ≈ ([\d.]+)°\).*?between ([\d.]+)° and ([\d.]+)°/,
+      );
+      expect(far).not.toBeNull();
+      close(far[1], (Math.acos(1 / 7) * 180) / Math.PI);
+      // cos(1 − cos)⁶ peaks at 1/7: its derivative (1 − c)⁵ (1 − 7c) vanishes there
+      const model = (c) => c * (1 - c) ** 6;
+      expect(model(1 / 7)).toBeGreaterThan(Math.max(model(1 / 7 - 1e-4), model(1 / 7 + 1e-4)));
+      const farNames = new Set(peaks.filter((p) => p.metal && p.worst > 0.02).map((p) => p.name.split(' ')[0]));
+      expect([...farNames]).toEqual(['Copper', 'Iron', 'Aluminum']); // "copper, iron and aluminium"
+      close(far[2], Math.min(...metalPeaks));
+      close(far[3], Math.max(...metalPeaks));
     },
   );
 });

@@ -11,6 +11,9 @@ import { MEDIA } from '../../src/widgets/media/schema.js';
 import { schema as LOBE } from '../../src/widgets/brdf-lobe/brdf-lobe.js';
 import { weightedSphereShares } from './zone-shares.js';
 import { DEG } from '../../src/math/angles.js';
+import { ndfABC } from '../../src/math/ndf.js';
+import { LIGHTS, SURFACES, blackBody, colours, coloursOf } from '../../src/widgets/radiance/model.js';
+import { schema as RADIANCE } from '../../src/widgets/radiance/schema.js';
 import { inlineTexPlain } from '../../src/core/ui/inline-tex.js';
 
 /** A page's words as a reader sees them: tags dropped (a typeset formula reads as its plain fallback). */
@@ -87,7 +90,65 @@ describe('fresnel.html: red share of the BRDF-weighted l·h zones on a sphere (f
     const [redSmooth] = quoted(page, /but (\d+)% at α = 0\.1/);
     reads(100 * weightedSphereShares(0.3)[2], red64, 1);
     reads(100 * weightedSphereShares(0.1)[2], redSmooth);
-    // every direction: 4096 lights (1024 give 1.55%, 4096 1.53%: the zone edges converge as 1/lights)
+    // every direction: 4096 lights (1024 give 1.55%, 4096 1.53%, 16384 1.54%: the zone edges converge as 1/lights)
     reads(100 * weightedSphereShares(0.3, 4096, 100, 48)[2], redAll, 1);
+    // a sum over lights, as the reference here: a numerical integral over all directions, not an exact one
+    expect(page).toMatch(/every direction at once, a numerical integral over all directions\)/);
+    expect(page).not.toMatch(/integrated exactly/);
   }, 120_000);
+});
+
+describe('ndf.html: the ABC formula shown is the one ndfABC evaluates (a Simpson integral over the hemisphere)', () => {
+  it('D_abc = D_uabc / ∫ D_uabc (n·m) dω, D_uabc = 1/(1 + a1(1 − n·m))^a2', () => {
+    const page = readFileSync(new URL('../../ndf.html', import.meta.url), 'utf8');
+    const tex = [...page.matchAll(/data-tex="([^"]*)"/g)].map((m) => m[1]).find((t) => t.includes('uabc'));
+    const normalised = '\\frac{D_{uabc}(\\mathbf{m})}{\\int_{\\Omega} D_{uabc}(\\mathbf{m}) \\nm \\, d\\omega_m}';
+    expect(tex).toContain(`D_{abc}(\\mathbf{m}) = ${normalised}`);
+    expect(tex).toContain('D_{uabc}(\\mathbf{m}) = \\frac{1}{(1 + \\alpha_{abc1}(1 - \\nm))^{\\alpha_{abc2}}}');
+    for (const [a1, a2] of [
+      [5, 1.5],
+      [60, 0.8],
+    ]) {
+      const unnormalised = (c) => (1 + a1 * (1 - c)) ** -a2;
+      // ∫ D_uabc (n·m) dω = 2π ∫_0^1 D_uabc(c) c dc, Simpson in c
+      const n = 20000;
+      let sum = 0;
+      for (let i = 0; i <= n; i++) sum += (i === 0 || i === n ? 1 : i % 2 ? 4 : 2) * unnormalised(i / n) * (i / n);
+      const integral = (2 * Math.PI * sum) / (3 * n);
+      for (const c of [1, 0.9, 0.5]) expect(ndfABC(c, a1, a2) / (unnormalised(c) / integral)).toBeCloseTo(1, 6);
+    }
+  });
+});
+
+describe('brdf.html: RGB ⊗ against the per-wavelength product (radiance model, Planck black bodies)', () => {
+  it('exact under the 6504 K white; green +5%/+14% at 5000/4000 K; ×1.08, ×1.53, blue’s sign at 2856 K', () => {
+    const page = text('brdf.html');
+    const [white] = quoted(page, /defined against \(here a (\d+) K black body/);
+    const [g5, t5, g4, t4] = quoted(
+      page,
+      /green channel comes out (\d+)% too bright under a (\d+) K black body and (\d+)% under (\d+) K/,
+    );
+    const [kelvin, red, green] = quoted(
+      page,
+      /a (\d+) K tungsten bulb, red is ([\d.]+) times and green ([\d.]+) times/,
+    );
+    const [sodium] = quoted(page, /under a sodium lamp the red channel comes out ([\d.]+) times brighter/);
+    expect(page).toMatch(
+      /blue, slightly negative in the true colour \(just outside the sRGB gamut\), comes out positive/,
+    );
+    const paint = SURFACES[RADIANCE.surface.default].reflectance;
+    const ratios = (c) => c.product.map((x, i) => x / c.spectral[i]);
+    ratios(coloursOf(blackBody(white), paint)).forEach((r) => expect(r).toBeCloseTo(1, 9));
+    reads(100 * (ratios(coloursOf(blackBody(t5), paint))[1] - 1), g5);
+    reads(100 * (ratios(coloursOf(blackBody(t4), paint))[1] - 1), g4);
+    // the widget's default light is the 2856 K black body, on its default (red) paint
+    expect(LIGHTS[RADIANCE.light.default].name).toContain(`${kelvin} K`);
+    const c = colours(RADIANCE.light.default, RADIANCE.surface.default);
+    c.product.forEach((x, i) => expect(x).toBeCloseTo(coloursOf(blackBody(kelvin), paint).product[i], 12));
+    reads(ratios(c)[0], red, 2);
+    reads(ratios(c)[1], green, 2);
+    expect(c.spectral[2]).toBeLessThan(0);
+    expect(c.product[2]).toBeGreaterThan(0);
+    reads(ratios(colours('sodium', RADIANCE.surface.default))[0], sodium, 1);
+  });
 });

@@ -55,7 +55,8 @@ float customD(float nh, float alpha) {
 `;
 
 const STARTER_V = `// Height-correlated Smith for GGX (Heitz 2014), as the talk's V = G / ((n·l)(n·v)):
-// V = 2 / (n·l · Λv + n·v · Λl), Λx = sqrt(x² + α² (1 - x²)).
+// V = 2 / (n·l · r(n·v) + n·v · r(n·l)), r(x) = sqrt(x² + α² (1 - x²)) = x (1 + 2Λ(x)),
+// Λ being Smith's Λ of that paper.
 float customV(float nl, float nv, float alpha) {
   if (!(nl > 0.0 && nv > 0.0)) return 0.0;
   float l = min(nl, 1.0);

@@ -67,3 +67,23 @@ export function texSignificant(x, digits = 3) {
   if (a !== 0 && (a < 1e-4 || a >= 1e6)) return texNumber(x);
   return String(Number(x.toPrecision(digits)));
 }
+
+/**
+ * A term the user wrote in GLSL, as every live formula names it: `symbol` with the subscript "yours", over its
+ * arguments (TeX).
+ * @param {string} symbol
+ * @param {string} args
+ */
+export const texYoursTerm = (symbol, args) => `${symbol}_{\\text{yours}}(${args})`;
+
+/** What a formula says of the terms it names with texYoursTerm. */
+export const TEX_YOURS_NOTE = '\\ \\text{(your GLSL, evaluated on the GPU)}';
+
+/**
+ * One user-written term with the note: texYoursTerm, then `where` (TeX, e.g. "α = σ in radians"), then the note.
+ * @param {string} symbol
+ * @param {string} args
+ * @param {string} [where]
+ */
+export const texYours = (symbol, args, where = '') =>
+  `${texYoursTerm(symbol, args)}${where ? `,\\ ${where}` : ''}${TEX_YOURS_NOTE}`;

@@ -1,5 +1,6 @@
 // 2-D plots on uPlot: labelled axes, shaded x-ranges (e.g. the Fresnel zones), a follow-the-size layout,
 // and export of the picture (PNG, with title and legend) and of the data (CSV).
+import './locale-guard.js'; // before uPlot, whose module formats numbers in navigator.language
 import uPlot from 'uplot';
 import 'uplot/dist/uPlot.min.css';
 import { canvasToPng, createToolbar, downloadCsv } from './export.js';

@@ -2,7 +2,10 @@
 // Kulla–Conty lobe there beside single scattering.
 import { factorsAt, factorsOf, kullaContyAt } from './model.js';
 
-const HEAD = '<th>BRDF</th><th>F</th><th>D (1/sr)</th><th>G</th><th>f = FDG/(4 n·l n·v) (1/sr)</th>';
+/** The table's head: a whole custom BRDF is no F·D·G/(4 n·l n·v). */
+export const tableHead = (state) =>
+  '<th>BRDF</th><th>F</th><th>D (1/sr)</th><th>G</th>' +
+  `<th>${state.brdf === 'custom' ? 'f' : 'f = FDG/(4 n·l n·v)'} (1/sr)</th>`;
 
 /** A factor's cell: '—' for a whole custom BRDF, which has none. */
 const cell = (x, format) => `<td>${x === null ? '—' : format(x)}</td>`;
@@ -36,7 +39,7 @@ export function createReadout(container) {
         `n·h ${a.nh.toFixed(3)}, l·h ${a.lh.toFixed(3)}`;
       const rows = [scene.A, scene.B].filter(Boolean).map((p) => row(scene, p));
       readout.innerHTML =
-        `<table class="data-table compact"><caption>${caption}</caption><thead><tr>${HEAD}</tr></thead>` +
+        `<table class="data-table compact"><caption>${caption}</caption><thead><tr>${tableHead(state)}</tr></thead>` +
         `<tbody>${rows.join('')}</tbody></table>` +
         (scene.ms.lobe ? multipleLine(state, scene) : '');
     },

@@ -1,5 +1,11 @@
 // The BRDF lobe's words: what it shows, the functions it names, and its pictures described for screen readers.
-import { declareFormula, texNumber } from '../../core/framework/formula-registry.js';
+import {
+  TEX_YOURS_NOTE,
+  declareFormula,
+  texNumber,
+  texYours,
+  texYoursTerm,
+} from '../../core/framework/formula-registry.js';
 import { brdfAngles } from '../../math/brdf.js';
 import { termEntry } from '../../math/catalogue/index.js';
 import { brdfSpec, factorsAt, lightDir, lobePeak, viewDir } from './model.js';
@@ -101,23 +107,63 @@ function symbolic(state) {
   return state.useDenominator ? `\\frac{${numerator}}{${bottom}}` : numerator;
 }
 
-/** BRDF A at the light and view of the sliders: the factors, their values and f, in 1/sr. */
+const LIGHT_VIEW = (state) =>
+  `\\sym{lightTheta}{\\theta_l = ${texNumber(state.lightTheta, 1)}^\\circ},\\ ` +
+  `\\sym{viewTheta}{\\theta_v = ${texNumber(state.viewTheta, 1)}^\\circ}`;
+
+/** A's D, G and F as named in the formula: a catalogue term, or the user's (named as the explorers name it). */
+function termsTex(state) {
+  const D =
+    state.D === 'custom' ? texYoursTerm('D', '\\nh, \\alpha') : `D_{\\text{${termEntry('ndf', state.D).short}}}`;
+  const G =
+    state.V === 'custom'
+      ? `V\\,\\nl \\nv ,\\ V = ${texYoursTerm('V', '\\nl, \\nv, \\alpha')}`
+      : `V_{\\text{${termEntry('visibility', state.V).short}}}\\,\\nl \\nv `;
+  const F = {
+    one: '\\sym{F}{F = 1}',
+    schlick: '\\sym{F}{F_{\\text{Schlick}}}',
+    custom: `\\sym{F}{F = ${texYoursTerm('F', 'F_0, \\lh ')}}`,
+  }[state.F];
+  return `D = \\sym{D}{${D}},\\ G = \\sym{V}{${G}},\\ ${F}`;
+}
+
+/**
+ * A's factors at (l, v) as numbers, a term the user wrote as its symbol: its values are read back from the GPU
+ * after the formula is written (they are in the readout's table).
+ */
+function valuesTex(state, t, a) {
+  const n = (x) => texNumber(x, 3);
+  const yours = (k) => state[k] === 'custom';
+  const numbers = [
+    state.useF && (yours('F') ? 'F_{\\text{yours}}' : n(t.F)),
+    state.useG && (yours('V') ? 'G_{\\text{yours}}' : n(t.G)),
+    state.useD && (yours('D') ? 'D_{\\text{yours}}' : n(t.D)),
+  ].filter(Boolean);
+  const top = numbers.join('\\cdot ') || '1';
+  const values = state.useDenominator ? `\\frac{${top}}{4\\cdot ${n(a.nl)}\\cdot ${n(a.nv)}}` : top;
+  const anyYours = ['F', 'D', 'V'].some(yours);
+  return anyYours
+    ? `${values}\\ \\text{(your terms: their values are in the table)}`
+    : `${values} = ${n(t.f)}\\ \\mathrm{sr}^{-1}`;
+}
+
+/**
+ * BRDF A at the light and view of the sliders: the factors, their values and f, in 1/sr; a whole BRDF the user
+ * wrote has no factors: it is named, with the angles it is read at.
+ */
 export const FORMULA = declareFormula('brdf-lobe', (state) => {
+  if (state.brdf === 'custom') {
+    const f = `\\sym{brdf}{f(\\mathbf{l},\\mathbf{v}) = ${texYours('f', '\\mathbf{l}, \\mathbf{v}')}}`;
+    return `\\begin{gathered}${f}\\\\ ${LIGHT_VIEW(state)}\\end{gathered}`;
+  }
   const p = specA(state);
   const [l, v] = [lightDir(state.lightTheta), viewDir(state.viewTheta)];
   const a = brdfAngles(l, v);
-  const t = factorsAt(l, v, a, p);
-  const n = (x) => texNumber(x, 3);
-  const numbers = [state.useF && n(t.F), state.useG && n(t.G), state.useD && n(t.D)].filter(Boolean);
-  const valued = `\\frac{${numbers.join('\\cdot') || '1'}}{4\\cdot ${n(a.nl)}\\cdot ${n(a.nv)}}`;
-  const values = state.useDenominator ? valued : numbers.join('\\cdot') || '1';
-  const f = `f(\\mathbf{l},\\mathbf{v}) = ${symbolic(state)} = ${values} = ${n(t.f)}\\ \\mathrm{sr}^{-1}`;
-  const D = `D = \\sym{D}{D_{\\text{${termEntry('ndf', state.D).short}}}}`;
-  const G = `G = \\sym{V}{V_{\\text{${termEntry('visibility', state.V).short}}}}\\,\\nl \\nv `;
-  const F = state.F === 'one' ? '\\sym{F}{F = 1}' : `\\sym{F}{F_{\\text{Schlick}}},\\ \\sym{f0}{F_0 = ${n(state.f0)}}`;
-  const angles =
-    `\\sym{alpha}{\\alpha = ${texNumber(state.alpha, 2)}},\\ ` +
-    `\\sym{lightTheta}{\\theta_l = ${texNumber(state.lightTheta, 1)}^\\circ},\\ ` +
-    `\\sym{viewTheta}{\\theta_v = ${texNumber(state.viewTheta, 1)}^\\circ}`;
-  return `\\begin{gathered}${f}\\\\ ${D},\\ ${G},\\ ${F},\\ ${angles}\\end{gathered}`;
+  const f = `f(\\mathbf{l},\\mathbf{v}) = ${symbolic(state)} = ${valuesTex(state, factorsAt(l, v, a, p), a)}`;
+  const f0 = state.F === 'one' ? '' : `\\sym{f0}{F_0 = ${texNumber(state.f0, 3)}},\\ `;
+  const angles = `${f0}\\sym{alpha}{\\alpha = ${texNumber(state.alpha, 2)}},\\ ${LIGHT_VIEW(state)}`;
+  // a term of the user's makes the lines longer: the parameters get a line of their own, with the note
+  const yours = ['F', 'D', 'V'].some((k) => state[k] === 'custom');
+  const rest = yours ? `\\\\ ${angles}${TEX_YOURS_NOTE}` : `,\\ ${angles}`;
+  return `\\begin{gathered}${f}\\\\ ${termsTex(state)}${rest}\\end{gathered}`;
 });

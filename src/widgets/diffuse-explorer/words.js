@@ -1,5 +1,5 @@
 // The diffuse explorer's words: what it shows, the functions it names, and its spheres described for screen readers.
-import { declareFormula, texNumber } from '../../core/framework/formula-registry.js';
+import { declareFormula, texNumber, texYours } from '../../core/framework/formula-registry.js';
 import { DEG } from '../../math/angles.js';
 import { sigmaText } from '../../core/ui/sigma-range.js';
 import { termLabel } from '../../math/catalogue/index.js';
@@ -43,9 +43,7 @@ const ON_B = (s2) => (0.45 * s2) / (s2 + 0.09);
 
 /** Each diffuse model as src/math/diffuse.js evaluates it, its constants computed from the state. */
 const DIFFUSE_TEX = {
-  custom: () =>
-    `f_{\\text{yours}}(${C}, \\mathbf{l}, \\mathbf{v}, \\alpha),\\ \\alpha = \\sigma\\ \\text{in radians}` +
-    '\\ \\text{(your GLSL, evaluated on the GPU)}',
+  custom: () => texYours('f', `${C}, \\mathbf{l}, \\mathbf{v}, \\alpha`, '\\alpha = \\sigma\\ \\text{in radians}'),
   lambert: (s) =>
     `f_{\\text{Lambert}} = \\frac{${C}}{\\pi} = \\frac{${texNumber(s.cdiff, 2)}}{\\pi} =` +
     ` ${texNumber(s.cdiff / Math.PI)}\\ \\mathrm{sr}^{-1}`,

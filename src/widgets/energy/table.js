@@ -1,7 +1,9 @@
-// The white furnace's table: per roughness, E head-on, E averaged over the hemisphere and the energy lost.
+// The white furnace's table: per roughness, E head-on, E's cosine-weighted average and the energy lost.
 
-const HEAD =
-  '<th>α</th><th>E at normal incidence</th><th>E averaged over the hemisphere</th><th>energy lost on average</th>';
+/** The table's head: E_avg = 2∫E(μ) μ dμ weights each direction by its cosine (Kulla & Conty 2017). */
+export const HEAD =
+  '<th>α</th><th>E at normal incidence</th><th>E<sub>avg</sub> = 2∫E(μ) μ dμ (cosine-weighted average)</th>' +
+  '<th>energy lost on average</th>';
 
 const row = (d) =>
   `<tr><td><span class="swatch" style="background:${d.stroke}"></span> ${d.alpha}</td>` +

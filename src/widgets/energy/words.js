@@ -48,11 +48,17 @@ export function describeFurnace(sweep, compensation, metal) {
 }
 
 const E_OF = 'E(\\mu_o) = \\int_\\Omega f(\\mathbf{l},\\mathbf{v})\\nl \\,d\\omega_l';
+const E_AVG = 'E_{\\text{avg}}';
+const F_AVG = 'F_{\\text{avg}}';
+// both with their Fresnel terms, as src/math/multiple-scattering.js evaluates them (the spheres' F = 1 makes
+// F_ms = 1 and Turquin's factor 1/E)
 const COMPENSATION_TEX = {
   none: 'f = f_{\\text{ss}}\\quad \\text{(single scattering only)}',
   kullaConty:
-    'f = f_{\\text{ss}} + f_{\\text{ms}},\\ f_{\\text{ms}} =' +
-    ' \\frac{(1 - E(\\mu_o))(1 - E(\\mu_i))}{\\pi(1 - E_{\\text{avg}})}',
+    `f = f_{\\text{ss}} + F_{\\text{ms}}\\,f_{\\text{ms}},\\ f_{\\text{ms}} =` +
+    ` \\frac{(1 - E(\\mu_o))(1 - E(\\mu_i))}{\\pi(1 - ${E_AVG})},\\ ` +
+    `F_{\\text{ms}} = \\frac{${F_AVG}^2\\,${E_AVG}}{1 - ${F_AVG}(1 - ${E_AVG})},\\ ` +
+    `${F_AVG} = F_0 + \\frac{1 - F_0}{21}`,
   turquin: 'f = f_{\\text{ss}}\\left(1 + F_0\\,\\frac{1 - E(\\mu_o)}{E(\\mu_o)}\\right)',
 };
 let memo = { alpha: NaN, E: 0 }; // E head-on by quadrature: once per roughness

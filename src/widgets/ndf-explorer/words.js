@@ -1,5 +1,5 @@
 // The NDF explorer's words: what it shows, the functions it names, and its pictures described for screen readers.
-import { declareFormula, texNumber } from '../../core/framework/formula-registry.js';
+import { declareFormula, texNumber, texYours } from '../../core/framework/formula-registry.js';
 import { DEG } from '../../math/angles.js';
 import { matchNdfWidths } from '../../math/ndf-width.js';
 
@@ -56,10 +56,7 @@ function searched(state) {
 
 /** NDF `key` as the talk writes it, and its parameters at the state's matched width (half width t, radians). */
 const NDF_TEX = {
-  custom: (s, t) => [
-    `D_{\\text{yours}}(${NM}, \\alpha_{tr})\\ \\text{(your GLSL, evaluated on the GPU)}`,
-    `\\alpha_{tr} = ${texNumber(matchedGGX(t))}`,
-  ],
+  custom: (s, t) => [texYours('D', `${NM}, \\alpha_{tr}`), `\\alpha_{tr} = ${texNumber(matchedGGX(t))}`],
   ggx: (s, t) => [
     `D_{tr}(\\mathbf{m}) = \\frac{\\alpha_{tr}^2}{\\pi(${NM}^2(\\alpha_{tr}^2 - 1) + 1)^2}`,
     `\\alpha_{tr} = ${texNumber(matchedGGX(t))}`,

@@ -21,7 +21,8 @@ export function lampView({ distance, lampRadius }) {
 }
 
 const gauss = (l, mu, sigma) => Math.exp(-0.5 * ((l - mu) / sigma) ** 2);
-const blackBody = (kelvin) => {
+/** A black body's spectrum at `kelvin`, relative power against wavelength (nm), 1 at its peak. */
+export const blackBody = (kelvin) => {
   const peak = planckRadiance(2.897771955e6 / kelvin, kelvin); // Wien: scaled to 1 at its peak
   return (l) => planckRadiance(l, kelvin) / peak;
 };
@@ -53,11 +54,9 @@ const relative = (rgb) => rgb.map((c, i) => c / WHITE_RGB[i]);
 /**
  * Linear RGB, white = (1, 1, 1): the light (scaled to the white's luminance), the surface's colour under white
  * light, the RGB of the light the surface reflects computed per wavelength, and the renderer's shortcut: the
- * component-wise product (⊗) of the two RGB triples.
+ * component-wise product (⊗) of the two RGB triples. `spectrum` and `reflectance` are functions of λ (nm).
  */
-export function colours(lightKey, surfaceKey) {
-  const { spectrum } = LIGHTS[lightKey];
-  const { reflectance } = SURFACES[surfaceKey];
+export function coloursOf(spectrum, reflectance) {
   const k = WHITE_Y / spectrumToXyz(spectrum)[1];
   const light = relative(rgbOf((l) => k * spectrum(l)));
   const surface = relative(rgbOf((l) => reflectance(l) * WHITE(l)));
@@ -65,3 +64,6 @@ export function colours(lightKey, surfaceKey) {
   const product = light.map((c, i) => c * surface[i]);
   return { light, surface, spectral, product };
 }
+
+/** coloursOf for one of the widget's lights and surfaces. */
+export const colours = (lightKey, surfaceKey) => coloursOf(LIGHTS[lightKey].spectrum, SURFACES[surfaceKey].reflectance);

@@ -1,6 +1,6 @@
 // The visibility explorer's words: what it shows, the functions it names, and its pictures described for
 // screen readers.
-import { declareFormula, texNumber } from '../../core/framework/formula-registry.js';
+import { declareFormula, texNumber, texYours } from '../../core/framework/formula-registry.js';
 
 export const TITLE = 'Visibility explorer';
 
@@ -50,7 +50,7 @@ const g1 = (c, a2) => `\\frac{2${c}}{${c} + ${root(c, a2)}}`;
 
 /** Each visibility term as it is evaluated (src/math/visibility.js), with α² (or k) substituted. */
 const V_TEX = {
-  custom: () => 'V = V_{\\text{yours}}(\\nl, \\nv, \\alpha)\\ \\text{(your GLSL, evaluated on the GPU)}',
+  custom: () => `V = ${texYours('V', '\\nl, \\nv, \\alpha')}`,
   implicit: () => 'V = 1,\\quad G_{\\text{implicit}} = \\nl \\nv ',
   cookTorrance: () =>
     `G_{\\text{ct}} = \\min\\left(1, \\frac{2\\nh ${NV}}{\\vh }, ` + `\\frac{2\\nh ${NL}}{\\vh }\\right)`,
