@@ -6,7 +6,6 @@ import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { transmittance } from '../../src/math/media.js';
 import { microfacetBRDF } from '../../src/math/brdf.js';
-import { TOUR_STEPS } from '../../src/tour/steps.js';
 import { MEDIA } from '../../src/widgets/media/schema.js';
 import { schema as LOBE } from '../../src/widgets/brdf-lobe/brdf-lobe.js';
 import { weightedSphereShares } from './zone-shares.js';
@@ -14,19 +13,13 @@ import { DEG } from '../../src/math/angles.js';
 import { ndfABC } from '../../src/math/ndf.js';
 import { LIGHTS, SURFACES, blackBody, colours, coloursOf } from '../../src/widgets/radiance/model.js';
 import { schema as RADIANCE } from '../../src/widgets/radiance/schema.js';
-import { inlineTexPlain } from '../../src/core/ui/inline-tex.js';
+import { quoted, reads, stepText } from './quoted-text.js';
 
 /** A page's words as a reader sees them: tags dropped (a typeset formula reads as its plain fallback). */
 const text = (file) =>
   readFileSync(new URL(`../../${file}`, import.meta.url), 'utf8')
     .replace(/<[^>]+>/g, '')
     .replace(/\s+/g, ' ');
-/** A tour step, its text as a reader sees it (each `$…$` formula as its plain fallback). */
-const stepText = (id) => {
-  const step = TOUR_STEPS.find((s) => s.id === id);
-  return { ...step, text: inlineTexPlain(step.text) };
-};
-import { quoted, reads } from './quoted-text.js';
 
 describe('tour, media-red-absorber: the wine-like absorber (media widget σa) by Beer–Lambert', () => {
   it('1 cm leaves 97/55/41% of red/green/blue and 5 cm 86/5/1%', () => {
