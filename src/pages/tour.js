@@ -49,8 +49,24 @@ async function setUp(step, i) {
     const options = { widgets: WIDGETS, prefix: 'tour', syncUrl: false, initialState: step.state };
     if (!(await mountOrExplain(stage, step.widget, options, up))) return;
   }
-  if (i === index)
-    publish('tour', { index: i, id: step.id, widget: step.widget, instance: mounted.instance, ready: true });
+  if (i !== index) return;
+  bringIntoSight(step);
+  publish('tour', { index: i, id: step.id, widget: step.widget, instance: mounted.instance, ready: true });
+}
+
+/**
+ * Where the step's head (its buttons and words) stays on screen while the widget scrolls under it (a wide,
+ * tall enough window: styles.css), scrolls the view the step speaks of (`look`), or else the widget's top, to
+ * just below the head; a step's words then always sit above the picture they describe. A phone keeps the page
+ * as the reader left it.
+ */
+function bringIntoSight(step) {
+  const head = $('.tour-head');
+  if (getComputedStyle(head).position !== 'sticky') return;
+  const target = (step.look && stage.querySelector(step.look)) || stage;
+  const gap = target.getBoundingClientRect().top - head.offsetHeight - 8; // the head, once stuck, is at the top
+  // the widget's top is only brought back when the reader had scrolled past it
+  if (target !== stage || gap < 0) (document.fullscreenElement ?? document.scrollingElement).scrollBy(0, gap);
 }
 
 /**
@@ -82,9 +98,13 @@ function renderText(step, i) {
   end.textContent = `End of the tour${coming.length ? ` so far. Still to come: ${coming.join(', ')}` : ''}.`;
   prevButton.setAttribute('aria-disabled', String(i === 0));
   nextButton.setAttribute('aria-disabled', String(i === steps.length - 1));
-  for (const li of $('.tour-sections ol').children) {
-    if (li.dataset.section === step.section) li.setAttribute('aria-current', 'step');
-    else li.removeAttribute('aria-current');
+  const list = $('.tour-sections ol');
+  for (const li of list.children) {
+    if (li.dataset.section !== step.section) li.removeAttribute('aria-current');
+    else {
+      li.setAttribute('aria-current', 'step');
+      list.scrollLeft = li.offsetLeft - list.offsetLeft - 8; // a phone's one row of sections: the current one in sight
+    }
   }
   document.title = `${step.title} — Guided tour — Shading Lab`;
 }

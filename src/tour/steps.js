@@ -1,6 +1,8 @@
 // The guided tour as plain data: one step per idea of the talk, in its order. A step names the widget that
 // shows the idea and the state that sets it up (only the keys that matter: the rest take the widget's
-// defaults, so a step looks the same however the reader arrived). Its id is its URL: tour.html#<id>.
+// defaults, so a step looks the same however the reader arrived). Its id is its URL: tour.html#<id>. A step
+// whose words are about a view further down its widget names it in `look` (a selector within the widget): the
+// tour scrolls it into sight under the step's words.
 //
 // To extend the tour, append steps; nothing else changes. A step whose widget is not registered yet is left
 // out, and a section without steps is shown as "coming".
@@ -16,10 +18,12 @@ export const TOUR_STEPS = [
     section: 'media',
     widget: 'media',
     title: 'Light in a clear medium',
-    state: { medium: 'water', distance: -1.3 },
+    state: { medium: 'water', distance: 0 },
     text:
-      'Where a medium is the same everywhere, light travels in straight lines. Five centimetres of clean water ' +
-      'hardly touch it: the chequered wall shows through unchanged, and almost all of the light gets across.',
+      'Where a medium is the same everywhere, light travels in straight lines. The glass here, the square inside ' +
+      'a border of bare wall, holds a metre of clean water: the chequered wall shows through it sharp and ' +
+      'undistorted, only tinted a little blue-green, since a metre of water lets 73% of red light through, 96% of ' +
+      'green and 97% of blue. Five centimetres would leave the glass invisible: 98% of red gets across.',
   },
   {
     id: 'media-water-depth',
@@ -71,11 +75,13 @@ export const TOUR_STEPS = [
     section: 'surfaces',
     widget: 'surfaces',
     title: 'An optically flat surface',
-    state: { material: 'glass-high', theta: 40 },
+    state: { material: 'glass-high', theta: 40, alpha: 0.02 },
     text:
       'A surface is a sudden change of refractive index. When its bumps are smaller than a wavelength it is ' +
-      'optically flat and splits light into exactly two directions: reflected and refracted. The Fresnel ' +
-      'equations give the split.',
+      'optically flat and splits light into exactly two directions, reflected and refracted; the Fresnel ' +
+      'equations give the split (here 8.7% and 91.3%, drawn at the top). The plot under that picture is set to ' +
+      'the smoothest microsurface the widget has, α = 0.02, nearly flat: the reflected light leaves in one narrow ' +
+      'spike at the mirror direction, −40°.',
   },
   {
     id: 'surfaces-metal',
@@ -151,11 +157,13 @@ export const TOUR_STEPS = [
     section: 'brdf',
     widget: 'brdf-lobe',
     title: 'The BRDF f(l, v)',
-    state: { lightTheta: 45, viewTheta: 45 },
+    state: { lightTheta: 30, viewTheta: 30, alpha: 0.2 },
     text:
       'With shading local, a surface point answers one question: of the light arriving from l, how much ' +
-      'leaves towards v? That is the BRDF, defined only for l and v above the surface. Fix the light and sweep ' +
-      'the view, and f traces a lobe around the mirror direction. Drag l or v on the polar plot.',
+      'leaves towards v? That is the BRDF, defined only for l and v above the surface. Fix the light (here at ' +
+      '30°, on a fairly smooth surface, α = 0.2) and sweep the view, and f traces a lobe around the mirror ' +
+      'direction: 0.11 per steradian at its peak, at 31°, and 0.03 towards the horizon. Drag l or v on the ' +
+      'polar plot.',
   },
   {
     id: 'brdf-intensity',
@@ -164,12 +172,13 @@ export const TOUR_STEPS = [
     title: 'BRDF times the cosine',
     state: { lightTheta: 60, viewTheta: 60, cosine: true, alpha: 0.3 },
     text:
-      'The BRDF is a density per steradian. In this state (light at 60°, $\\alpha = 0.3$) it is largest at the ' +
-      'horizon: 1.00/sr at $\\theta_v = 89^\\circ$ against 0.22 in the mirror direction; on a smoother surface ' +
-      '($\\alpha = 0.1$) it peaks near the mirror direction instead. The lobe is drawn $\\times\\, \\nv$, the ' +
-      'cosine of the view, which shows how much light leaves towards each direction (most near 70° here). That is ' +
-      'not the reflectance equation’s cosine: for one view direction it integrates $f \\times L_i \\times \\nl$ ' +
-      '(the incoming radiance $L_i$) over incoming directions $\\mathbf{l}$ (the albedo plot).',
+      'The BRDF is a density per steradian, and it can be large where little light goes. On this rougher ' +
+      'surface (α = 0.3, light at 60°) f is largest at the horizon: 1.00 per steradian at θv = 89°, against 0.22 ' +
+      'in the mirror direction (at α = 0.1 it would peak near the mirror direction). But seen from near the ' +
+      'horizon the lit patch looks thin, so the light it sends per steradian towards v is f times the cosine of ' +
+      'the view angle, n·v. That product is the lobe drawn here: it peaks near 70° and falls to nothing at the ' +
+      'horizon. It is not the cosine of the reflectance equation, n·l, which weighs the light arriving from ' +
+      'each direction l (the albedo plot adds that up).',
   },
   {
     id: 'brdf-factors',
@@ -231,10 +240,11 @@ export const TOUR_STEPS = [
     widget: 'energy',
     title: 'The energy that is lost',
     state: {},
+    look: '.sphere-grid',
     text:
       'How much does dropping the second bounces cost? In a uniform white environment a surface that loses ' +
-      'nothing would vanish. Smooth spheres nearly do; rough ones stay grey, and at α = 1 most of the light ' +
-      'arriving head-on is lost (the table has the figures).',
+      'nothing would vanish. In the row of spheres below the plots the smoothest nearly does; rougher ones stay ' +
+      'grey, and at α = 1 most of the light arriving head-on is lost (the table has the figures).',
   },
   {
     id: 'microfacets-furnace-fixed',
@@ -242,12 +252,15 @@ export const TOUR_STEPS = [
     widget: 'energy',
     title: 'The lost energy, found',
     state: { compensation: 'kullaConty', metal: 'gold', metalAlpha: 0.8 },
+    look: '.sphere-grid',
     text:
-      'With an energy compensation switched on the spheres vanish at every roughness: the dropped light is put ' +
-      'back. On a metal it matters most. Rough gold (α = 0.8) seen head-on reflects 43% of red, 30% of green and ' +
-      '12% of blue light in one bounce; followed through every bounce (the random walk) it reflects 100%, 56% and ' +
-      '16%: brighter, and more saturated, since a channel that reflects more also gets more of its lost light ' +
-      'back. Kulla–Conty comes within 0.02 of the walk; Turquin overshoots green by 0.03.',
+      'With an energy compensation switched on (here Kulla–Conty) the dropped light is put back, and the row of ' +
+      'spheres below the plots looks empty: each sphere, at every roughness, is now as bright as the white around ' +
+      'it (point at one: the probe’s compensated albedo reads 1.0000). It matters most on a metal (the plot and ' +
+      'table under the spheres): rough gold (α = 0.8) seen head-on reflects 43% of red, 30% of green and 12% of ' +
+      'blue light in one bounce; followed through every bounce (the random walk) it reflects 100%, 56% and 16%, ' +
+      'brighter and more saturated (a channel that reflects more gets more of its lost light back). Kulla–Conty ' +
+      'comes within 0.02 of the walk; Turquin overshoots green by 0.03.',
   },
   {
     id: 'microfacets-multiple-lobe',
@@ -461,8 +474,9 @@ export const TOUR_STEPS = [
     state: { models: ['lambert', 'orenNayar', 'orenNayarQualitative'], sigma: 40, lightTheta: 0, lightPhi: 0 },
     text:
       'When the surface is rough on a scale larger than the distance light travels inside it, the bumps ' +
-      'themselves shade each other. Lit from behind the viewer, a rough sphere looks flat, like the full moon: ' +
-      'Oren–Nayar keeps its rim nearly as bright as its centre, where Lambert falls off with n·l.',
+      'themselves shade each other. Lit from behind the viewer, a rough sphere looks flatter, towards the look ' +
+      'of the full moon: near the rim, 95% of the radius out, Oren–Nayar at σ = 40° is still 0.71 as bright as ' +
+      'the centre (its qualitative form 0.80), where Lambert, following n·l, has fallen to 0.31.',
   },
   // 9. From math to rendering
   {

@@ -6,7 +6,6 @@ import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { transmittance } from '../../src/math/media.js';
 import { microfacetBRDF } from '../../src/math/brdf.js';
-import { TOUR_STEPS } from '../../src/tour/steps.js';
 import { MEDIA } from '../../src/widgets/media/schema.js';
 import { schema as LOBE } from '../../src/widgets/brdf-lobe/brdf-lobe.js';
 import { weightedSphereShares } from './zone-shares.js';
@@ -14,26 +13,13 @@ import { DEG } from '../../src/math/angles.js';
 import { ndfABC } from '../../src/math/ndf.js';
 import { LIGHTS, SURFACES, blackBody, colours, coloursOf } from '../../src/widgets/radiance/model.js';
 import { schema as RADIANCE } from '../../src/widgets/radiance/schema.js';
-import { inlineTexPlain } from '../../src/core/ui/inline-tex.js';
+import { quoted, reads, stepText } from './quoted-text.js';
 
 /** A page's words as a reader sees them: tags dropped (a typeset formula reads as its plain fallback). */
 const text = (file) =>
   readFileSync(new URL(`../../${file}`, import.meta.url), 'utf8')
     .replace(/<[^>]+>/g, '')
     .replace(/\s+/g, ' ');
-/** A tour step, its text as a reader sees it (each `$…$` formula as its plain fallback). */
-const stepText = (id) => {
-  const step = TOUR_STEPS.find((s) => s.id === id);
-  return { ...step, text: inlineTexPlain(step.text) };
-};
-/** The numbers the first match of `re` captures; fails if the sentence no longer reads that way. */
-function quoted(source, re) {
-  const m = source.match(re);
-  expect(m, `${re} in the text`).not.toBeNull();
-  return m.slice(1).map(Number);
-}
-/** x printed with `digits` decimals reads `printed`. */
-const reads = (x, printed, digits = 0) => expect(x.toFixed(digits)).toBe(printed.toFixed(digits));
 
 describe('tour, media-red-absorber: the wine-like absorber (media widget σa) by Beer–Lambert', () => {
   it('1 cm leaves 97/55/41% of red/green/blue and 5 cm 86/5/1%', () => {
@@ -59,15 +45,15 @@ describe('tour, brdf-intensity: the brdf-lobe widget’s BRDF (GGX, height-corre
     return best;
   };
   it('is 1.00/sr at θv 89°, 0.22 at the mirror; × n·v it peaks near 70°; at α 0.1 near the mirror', () => {
-    const [atHorizon, horizonDeg] = quoted(step.text, /(\d\.\d\d)\/sr at θ_v = (\d+)°/);
+    const [atHorizon, horizonDeg] = quoted(step.text, /(\d\.\d\d) per steradian at θv = (\d+)°/);
     const [atMirror] = quoted(step.text, /against (\d\.\d\d) in the mirror direction/);
-    const [nearDeg] = quoted(step.text, /most near (\d+)° here/);
+    const [nearDeg] = quoted(step.text, /drawn here: it peaks near (\d+)°/);
     const alpha = step.state.alpha;
     reads(f(horizonDeg, alpha), atHorizon, 2);
     reads(f(step.state.lightTheta, alpha), atMirror, 2);
     expect(argmax((deg) => f(deg, alpha))).toBeGreaterThan(88); // "largest at the horizon"
     expect(Math.abs(argmax((deg) => f(deg, alpha) * Math.cos(deg * DEG)) - nearDeg)).toBeLessThan(1); // 70.5°
-    expect(step.text).toMatch(/α = 0\.1\) it peaks near the ?\s*mirror/);
+    expect(step.text).toMatch(/at α = 0\.1 it would peak near the mirror direction/);
     expect(Math.abs(argmax((deg) => f(deg, 0.1)) - step.state.lightTheta)).toBeLessThan(3); // 62.5°
   });
 });
