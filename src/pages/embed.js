@@ -14,7 +14,9 @@ const root = document.getElementById('embed');
 const params = new URLSearchParams(location.search);
 const name = params.get('w');
 const presenter = params.get('presenter') === '1';
+const framed = window.parent !== window;
 document.body.classList.toggle('presenter', presenter);
+document.body.classList.toggle('in-frame', framed);
 if (isWidgetName(name)) {
   document.title = `${WIDGETS[name].title} — Shading Lab`;
   const notices = createNoticeArea(root);
@@ -22,7 +24,7 @@ if (isWidgetName(name)) {
   if (originProblems.length) notices.show(originProblems);
   let link = null;
   const instance = await mountWidget(root, name, { widgets: WIDGETS, onStateChange: () => link?.userChanged() });
-  if (window.parent !== window) {
+  if (framed) {
     const { widget } = await WIDGETS[name].load();
     const capture = () => snapshotWidget(root.querySelector('.widget'));
     // the presenter view fills whatever frame it is given: no height of its own to report
