@@ -15,7 +15,9 @@ document.getElementById('embed-fallback')?.remove(); // the app runs: the words 
 const params = new URLSearchParams(location.search);
 const name = params.get('w');
 const presenter = params.get('presenter') === '1';
+const framed = window.parent !== window;
 document.body.classList.toggle('presenter', presenter);
+document.body.classList.toggle('in-frame', framed);
 if (isWidgetName(name)) {
   document.title = `${WIDGETS[name].title} — Shading Lab`;
   const notices = createNoticeArea(root);
@@ -24,7 +26,7 @@ if (isWidgetName(name)) {
   let link = null;
   // the protocol starts once the widget is up, at the first try or a retry (a failure says so in the frame)
   const connect = async (instance) => {
-    if (window.parent === window) return;
+    if (!framed) return;
     const { widget } = await WIDGETS[name].load();
     const capture = () => snapshotWidget(root.querySelector('.widget'));
     // the presenter view fills whatever frame it is given: no height of its own to report
