@@ -28,6 +28,7 @@
  * @property {TourHook} [tour]
  * @property {ExerciseHook} [exercise]
  * @property {object[]} [parity]  the parity page's rows (src/core/gpu/parity.js results)
+ * @property {object} [parityReport]  the parity page's GPU (vendor, renderer) and its report's text
  * @property {object} [performance]  the performance page's report (bench/results)
  */
 
@@ -69,9 +70,9 @@ export function mountedWidget(key) {
 }
 
 /**
- * Publishes what a page has to report (the tour's step, the exercise, the parity rows, the performance report),
- * replacing what it said before.
- * @template {'tour' | 'exercise' | 'parity' | 'performance'} K
+ * Publishes what a page has to report (the tour's step, the exercise, the parity rows and report, the performance
+ * report), replacing what it said before.
+ * @template {'tour' | 'exercise' | 'parity' | 'parityReport' | 'performance'} K
  * @param {K} name
  * @param {ShadingLabHooks[K]} value
  */
