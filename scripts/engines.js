@@ -5,7 +5,7 @@
 // errors) and exits non-zero if any engine fails a check. Started without a display, it runs itself under
 // xvfb-run. Options: --engines chromium,firefox,webkit (default all three), --pages a.html,b.html (default every
 // top-level page), --report DIR (each engine's parity report written there).
-import { spawnSync } from 'node:child_process';
+import { spawn } from 'node:child_process';
 import { cpSync, mkdirSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { ROOT, buildApp, serveStatic } from '../tests/browser/harness.js';
@@ -16,14 +16,6 @@ const option = (name) => {
   const i = process.argv.indexOf(`--${name}`);
   return i > 0 ? process.argv[i + 1] : undefined;
 };
-
-if (!process.env.DISPLAY) {
-  const args = ['-a', '-s', '-screen 0 1280x1024x24', process.execPath, ...process.argv.slice(1)];
-  const run = spawnSync('xvfb-run', args, { stdio: 'inherit', env: { ...process.env, LANG: 'C.UTF-8' } });
-  if (run.error) console.error(`no display and no xvfb-run (Debian: apt-get install xvfb): ${run.error}`);
-  process.exit(run.status ?? 1);
-}
-process.env.LANG = 'C.UTF-8';
 
 const PAGES = option('pages')?.split(',') ?? readdirSync(ROOT).filter((f) => f.endsWith('.html'));
 const engines = option('engines')?.split(',') ?? Object.keys(ENGINES);
@@ -42,9 +34,11 @@ async function probedBuild() {
   return dir;
 }
 
+let current = null; // the open driver, closed on an interrupt
+
 async function runEngine(name, baseUrl) {
   const t0 = performance.now();
-  const driver = await ENGINES[name]();
+  const driver = (current = await ENGINES[name]());
   try {
     const parity = await checkParity(driver, new URL('parity.html', baseUrl).href);
     const pages = [];
@@ -75,20 +69,41 @@ function printTable(rows) {
   }
 }
 
-const server = await serveStatic(await probedBuild());
-const rows = [];
-for (const name of engines) {
-  console.log(`${name}…`);
-  const row = await runEngine(name, server.url).catch((e) => ({ name, error: String(e).split('\n')[0] }));
-  if (reportDir && row.parity?.report) {
-    mkdirSync(reportDir, { recursive: true });
-    writeFileSync(join(reportDir, `parity-${name}.txt`), row.parity.report);
+async function main() {
+  process.env.LANG = 'C.UTF-8';
+  for (const signal of ['SIGINT', 'SIGTERM'])
+    process.on(signal, async () => {
+      await current?.close().catch(() => {});
+      process.exit(130);
+    });
+  const server = await serveStatic(await probedBuild());
+  const rows = [];
+  for (const name of engines) {
+    console.log(`${name}…`);
+    const row = await runEngine(name, server.url).catch((e) => ({ name, error: String(e).split('\n')[0] }));
+    if (reportDir && row.parity?.report) {
+      mkdirSync(reportDir, { recursive: true });
+      writeFileSync(join(reportDir, `parity-${name}.txt`), row.parity.report);
+    }
+    rows.push(row);
   }
-  rows.push(row);
+  server.close();
+  printTable(rows);
+  const failed = rows.filter(
+    (r) =>
+      r.error || r.parity?.error || r.parity?.failed.length || r.pages.some((p) => p.errors.length + p.blank.length),
+  );
+  process.exit(failed.length ? 1 : 0);
 }
-server.close();
-printTable(rows);
-const failed = rows.filter(
-  (r) => r.error || r.parity?.error || r.parity?.failed.length || r.pages.some((p) => p.errors.length + p.blank.length),
-);
-process.exit(failed.length ? 1 : 0);
+
+// without a display: the same command under xvfb-run (signals passed on, its exit code kept)
+if (!process.env.DISPLAY) {
+  const args = ['-a', '-s', '-screen 0 1280x1024x24', process.execPath, ...process.argv.slice(1)];
+  const env = { ...process.env, LANG: 'C.UTF-8' };
+  const child = spawn('xvfb-run', args, { stdio: 'inherit', env, detached: true }); // its own group, for the kill
+  child.on('error', (e) => console.error(`no display and no xvfb-run (Debian: apt-get install xvfb): ${e}`));
+  child.on('exit', (code) => process.exit(code ?? 1));
+  for (const signal of ['SIGINT', 'SIGTERM']) process.on(signal, () => process.kill(-child.pid, signal));
+} else {
+  await main();
+}
