@@ -6,11 +6,12 @@ import { distinctColours } from './png.js';
 /** The script the runner puts first in each page of its copy of the build: it records errors for call(). */
 export const PROBE = `// Written by scripts/engines.js into its copy of the build, not part of the app: records page
 // errors, unhandled rejections, resources that failed to load and console.error calls, for the runner to read.
-// The ResizeObserver loop notice is left out: browsers raise it as an error event although no script failed (the
-// suite's puppeteer "pageerror" never sees it).
+// Left out: the ResizeObserver loop notice (raised as an error event although no script failed: the suite's
+// puppeteer "pageerror" never sees it) and modulepreload links (Firefox fails those of modules already loaded; Vite's
+// preload helper settles on them itself, and a chunk that does not arrive fails its import).
 window.__engineErrors = [];
 addEventListener('error', (e) => {
-  if (/^ResizeObserver loop/.test(e.message)) return;
+  if (/^ResizeObserver loop/.test(e.message) || e.target?.rel === 'modulepreload') return;
   const resource = e.target && e.target !== window;
   window.__engineErrors.push(resource ? 'resource failed: ' + (e.target.src || e.target.href) : 'page: ' + e.message);
 }, true);
@@ -42,23 +43,29 @@ function canvasesWithSize() {
   });
 }
 
+const emptySlots = () =>
+  [...document.querySelectorAll('[data-slot]')].filter((s) => !s.childElementCount).map((s) => s.dataset.slot);
+
 /**
- * Opens `url` and checks it: { errors, blank: [canvas labels], canvases }. A canvas counts as drawn once its shot has
- * 3 colours or more; out of view a widget draws nothing (by design), so each is scrolled to first.
+ * Opens `url` and checks it: { errors, empty: [widget slots left empty], blank: [canvas labels], canvases }. A slot
+ * still empty after 20 s is a widget that never mounted, with no message (a page module that failed before it).
+ * A canvas counts as drawn once its shot has 3 colours or more; out of view a widget draws nothing (by design), so
+ * each is scrolled to first.
  */
-export async function checkPage(driver, url, { canvasTimeout = 20_000 } = {}) {
+export async function checkPage(driver, url, { timeout = 20_000 } = {}) {
   await driver.goto(url);
   await until(() => driver.call(() => document.readyState === 'complete'), 30_000);
-  await sleep(1000); // the widgets' chunks and first frames
+  await until(async () => (await driver.call(emptySlots)).length === 0, timeout);
+  const empty = await driver.call(emptySlots);
   const canvases = await driver.call(canvasesWithSize);
   const blank = [];
   for (const { i, label } of canvases) {
     await driver.call((k) => document.querySelectorAll('canvas')[k].scrollIntoView({ block: 'center' }), i);
-    const drawn = await until(async () => distinctColours(await driver.canvasShot(i)) >= 3, canvasTimeout, 1000);
+    const drawn = await until(async () => distinctColours(await driver.canvasShot(i)) >= 3, timeout, 1000);
     if (!drawn) blank.push(label || `canvas ${i}`);
   }
-  const errors = await driver.call(() => window.__engineErrors ?? ['the error probe did not run']);
-  return { errors, blank, canvases: canvases.length };
+  const probed = await driver.call(() => window.__engineErrors ?? ['the error probe did not run']);
+  return { errors: [...probed, ...driver.takeErrors()], empty, blank, canvases: canvases.length };
 }
 
 /** Runs parity.html to its verdict: { renderer, language, failed: [names], total, report } or { error }. */

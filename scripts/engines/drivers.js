@@ -1,6 +1,7 @@
 // The three engines the runner drives, behind one small interface:
 //   goto(url), call(fn, ...args) (fn runs in the page, its value returned; a promise is awaited),
-//   canvasShot(index) → PNG bytes of the index-th <canvas>, close().
+//   canvasShot(index) → PNG bytes of the index-th <canvas>, takeErrors() → requests that failed since the last call
+//   (where the protocol reports them: not WebDriver classic), close().
 // Chromium (--use-angle=gl: Mesa's llvmpipe through ANGLE's GL back end) and Firefox ESR (WebDriver BiDi) through
 // puppeteer-core; WebKitGTK (MiniBrowser) through WebKitWebDriver, a W3C WebDriver server spoken to over fetch.
 import { spawn, execFileSync } from 'node:child_process';
@@ -25,15 +26,18 @@ const which = (...names) => {
 async function puppeteerDriver(launchOptions) {
   const browser = await puppeteer.launch({ headless: false, ...launchOptions });
   let page = null;
+  const failed = [];
   return {
     async goto(url) {
       await page?.close();
       page = await browser.newPage();
+      page.on('requestfailed', (r) => failed.push(`request failed: ${r.url()} (${r.failure()?.errorText})`));
       await page.setViewport(VIEWPORT);
       await page.goto(url, { waitUntil: 'load', timeout: 120_000 });
     },
     call: (fn, ...args) => page.evaluate(fn, ...args),
     canvasShot: async (index) => Buffer.from(await (await page.$$('canvas'))[index].screenshot()),
+    takeErrors: () => failed.splice(0),
     close: () => browser.close(),
   };
 }
@@ -92,6 +96,7 @@ export async function webkitDriver() {
   const script = (fn) => `return (${fn}).apply(null, arguments);`;
   return {
     goto: (url) => send('POST', `${session}/url`, { url }),
+    takeErrors: () => [],
     call: (fn, ...args) => send('POST', `${session}/execute/sync`, { script: script(fn), args }),
     async canvasShot(index) {
       const canvases = await send('POST', `${session}/elements`, { using: 'css selector', value: 'canvas' });
