@@ -35,12 +35,16 @@ float diffuseOrenNayar(float nl, float nv, float cosPhiDiff, float sigma, float 
   float cosB = min(max(nl, nv), 1.0);
   float sinA = sqrt(sin2FromCos(cosA));
   float sinB = sqrt(sin2FromCos(cosB));
-  float a = acos(cosA);
-  float b = acos(cosB);
+  // The angles through atan, not acos/asin: GPUs may evaluate asin(x) as pi/2 - sqrt(1 - x)·P(x) (Mesa's llvmpipe
+  // does), so float32's rounding near pi/2 is left as an absolute error: asin(1e-7) came out 19 % off, and below
+  // u multiplies tan b ~ 1/cos b (relative error up to 1 at cos = 1e-7). atan is evaluated as x·P(x²) after range
+  // reduction (2e-5 relative there), and asin(c) = atan(c, sqrt(1 - c²)) with both arguments from the cosine.
+  float a = atan(sinA, cosA);
+  float b = atan(sinB, cosB);
   float tanB = sinB / cosB;
   float tanHalfSum = (sinA + sinB) / (cosA + cosB);
   float C1 = 1.0 - 0.5 * s2 / (s2 + 0.33);
-  float u = 2.0 / PI * asin(cosB); // 1 - 2b/pi without cancellation
+  float u = 2.0 / PI * atan(cosB, sinB); // 1 - 2b/pi without cancellation
   float t = 1.0 - u;
   float sinAMinusT3 = -(cosA * cosA) / (1.0 + sinA) + u * (1.0 + t + t * t);
   float C2 = 0.45 * s2 / (s2 + 0.09) * (cp >= 0.0 ? sinA : sinAMinusT3);

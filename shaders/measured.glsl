@@ -21,7 +21,11 @@ vec3 merlCoordinates(vec3 n, vec3 l, vec3 v) {
   vec3 x = cross(y, h);
   vec3 d = l - h;
   float thetaD = atan(length(cross(l, h)), dot(l, h));
-  float phiD = atan(dot(d, y), dot(d, x));
+  // l = v (h = l): d has no part across h, and GLSL ES 3.00 leaves atan(0, 0) undefined (llvmpipe: 3pi/4). Below a
+  // float32 ulp of a unit vector the angle is rounding noise (and at theta_d = 0 every phi_d is the same pair): 0.
+  float dx = dot(d, x);
+  float dy = dot(d, y);
+  float phiD = dx * dx + dy * dy > 1e-12 ? atan(dy, dx) : 0.0;
   if (phiD < 0.0) phiD += PI;
   return vec3(sqrt(thetaH / (0.5 * PI)) * 90.0, thetaD / (0.5 * PI) * 90.0, phiD / PI * 180.0);
 }

@@ -18,7 +18,7 @@ uint hashState;
 float rand() {
   hashState = hashState * 747796405u + 2891336453u;
   uint w = ((hashState >> ((hashState >> 28u) + 4u)) ^ hashState) * 277803737u;
-  return float((w >> 22u) ^ w) / 4294967296.0;
+  return uniformFromBits((w >> 22u) ^ w);
 }
 
 // The surroundings: a chequered wall behind the glasses, a bright sky above, a dim floor below.

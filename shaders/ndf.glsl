@@ -40,9 +40,11 @@ float ndfBeckmannFromSin2(float cosThetaM, float sin2ThetaM, float alpha) {
   float a = clampAlpha(alpha);
   float a2 = a * a;
   float c2 = c * c;
-  float e = max(sin2ThetaM, 0.0) / (c2 * a2);
-  if (e > 80.0) return 0.0;
-  return exp(-e) / (PI * a2 * c2 * c2);
+  float s2 = max(sin2ThetaM, 0.0);
+  // compared before dividing: c² alpha² underflows to 0 for cos below ~1e-15 (flushed, as GPUs may), and GLSL ES
+  // 3.00 leaves x / 0 unspecified
+  if (s2 > 80.0 * c2 * a2) return 0.0;
+  return exp(-s2 / (c2 * a2)) / (PI * a2 * c2 * c2);
 }
 float ndfBeckmann(float cosThetaM, float alpha) {
   return ndfBeckmannFromSin2(cosThetaM, sin2FromCos(min(cosThetaM, 1.0)), alpha);
@@ -82,7 +84,8 @@ float ndfSGD(float cosThetaM, float alpha, float p, float norm) {
   float q = clamp(p, 0.0, 1.9);
   float c = min(cosThetaM, 1.0);
   float c2 = c * c;
-  float y = a + sin2FromCos(c) / (c2 * a);
-  if (y > 80.0) return 0.0;
+  float s2 = sin2FromCos(c);
+  if (s2 > (80.0 - a) * c2 * a) return 0.0; // y > 80, compared before dividing (c² a underflows below cos ~1e-19)
+  float y = a + s2 / (c2 * a);
   return exp(-y) * pow(y, -q) / (a * norm * PI * c2 * c2);
 }

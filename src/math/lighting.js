@@ -36,12 +36,14 @@ export function sphereLightNormalization(alpha, sinRadius) {
 }
 
 /**
- * The equirectangular map of directions (y up), as three.js lays out environment maps: u = atan2(z, x)/2π + ½,
- * v = asin(y)/π + ½ (v = 1 at the zenith).
+ * The equirectangular map of directions d (y up, any length > 0), as three.js lays out environment maps:
+ * u = atan2(z, x)/2π + ½, v = asin(y/|d|)/π + ½ (v = 1 at the zenith), the elevation taken as atan2(y, |(x, z)|).
+ * At the poles (x = z = 0, where GLSL leaves atan(0, 0) undefined) u = ½, for ±0 alike; d = 0 maps to (½, ½).
  */
 export function equirectUv(d) {
-  const y = Math.min(Math.max(d[1], -1), 1);
-  return [Math.atan2(d[2], d[0]) / (2 * Math.PI) + 0.5, Math.asin(y) / Math.PI + 0.5];
+  const horizontal = Math.hypot(d[0], d[2]);
+  if (horizontal === 0) return [0.5, d[1] > 0 ? 1 : d[1] < 0 ? 0 : 0.5];
+  return [Math.atan2(d[2], d[0]) / (2 * Math.PI) + 0.5, Math.atan2(d[1], horizontal) / Math.PI + 0.5];
 }
 
 /** The direction at (u, v) of the equirectangular map: the inverse of equirectUv. */

@@ -28,4 +28,35 @@ describe('GLSL vs JS parity', () => {
     expect(page.errors).toEqual([]);
     await page.close();
   });
+
+  it('the report names the GPU as WebGL reports it, and each function with its worst case', async () => {
+    const page = await open(browser, 'parity.html?only=srgbToLinear,equirectUv,diffuseOrenNayar');
+    await page.waitForSelector('#parity-summary', { timeout: 60_000 });
+    const { text, results, renderer } = await page.evaluate(() => {
+      const gl = document.createElement('canvas').getContext('webgl2');
+      const ext = gl.getExtension('WEBGL_debug_renderer_info');
+      return {
+        text: document.querySelector('#parity-report').value,
+        results: globalThis.__shadingLab.parity,
+        renderer: gl.getParameter(ext ? ext.UNMASKED_RENDERER_WEBGL : gl.RENDERER),
+      };
+    });
+    expect(text).toContain(`GL renderer: ${renderer}`);
+    expect(text).toContain(`Browser: ${await browser.userAgent()}`);
+    expect(text).toContain(`Result: 0 of ${results.length} functions beyond tolerance`);
+    expect(results.map((r) => r.name)).toEqual([
+      'srgbToLinear',
+      'equirectUv',
+      'diffuseOrenNayar (grazing, cos φ < 0)',
+      'diffuseOrenNayar',
+      'diffuseOrenNayarQualitative',
+    ]);
+    for (const r of results) {
+      const line = text.split('\n').find((l) => l.startsWith(`ok   ${r.name}: `));
+      expect(line, r.name).toContain(`${r.count} inputs, ${r.failures} beyond tolerance`);
+      expect(line).toContain(`GPU ${r.worst.gpu.toPrecision(7)}, JS ${r.worst.js.toPrecision(7)}`);
+    }
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
 });

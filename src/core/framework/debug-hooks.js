@@ -28,6 +28,7 @@
  * @property {TourHook} [tour]
  * @property {ExerciseHook} [exercise]
  * @property {object[]} [parity]  the parity page's rows (src/core/gpu/parity.js results)
+ * @property {object} [parityReport]  the parity page's GPU (vendor, renderer) and its report's text
  * @property {object} [performance]  the performance page's report (bench/results)
  * @property {{ ready: boolean, announced: boolean }} [offline]  the build is saved on the device; whether this
  *   page said so (only the first time on a device)
@@ -71,9 +72,9 @@ export function mountedWidget(key) {
 }
 
 /**
- * Publishes what a page has to report (the tour's step, the exercise, the parity rows, the performance report,
- * the offline copy), replacing what it said before.
- * @template {'tour' | 'exercise' | 'parity' | 'performance' | 'offline'} K
+ * Publishes what a page has to report (the tour's step, the exercise, the parity rows and report, the performance
+ * report, the offline copy), replacing what it said before.
+ * @template {'tour' | 'exercise' | 'parity' | 'parityReport' | 'performance' | 'offline'} K
  * @param {K} name
  * @param {ShadingLabHooks[K]} value
  */

@@ -84,6 +84,9 @@ const termAngles = (kind, dims) => {
   if (kind === 'cosPhi') return [-1, -0.5, 0, 0.5, 1];
   return dims > 3 ? GRIDS.cosCoarse : GRIDS.cos;
 };
+const GRAZING = [1e-7, 3e-7, 1e-6, 1e-5, 1e-4, 1e-3, 0.01, 0.05];
+const BITS_U = 'uniformFromBits((uint(a.x) << 16u) | uint(a.y))';
+const TINY_COS = [1e-9, 1e-12, 1e-15, 1e-20, 1e-30];
 const SLOTS = ['a.x', 'a.y', 'a.z', 'a.w', 'b.x', 'b.y', 'b.z', 'b.w'];
 const FAMILY_RANGE = { fresnel: [0, 1], ndf: [0, Infinity], visibility: [0, Infinity], diffuse: [0, Infinity] };
 /** Tighter bounds some terms keep (a diffuse albedo at most c, the implicit V at most 1). */
@@ -95,7 +98,7 @@ const TERM_RANGE = {
 };
 /**
  * The full Oren–Nayar needs the angles themselves, (4ab/pi²)², times tan up to 1e7 at cos = 1e-7: there the
- * GPU's acos (a polynomial, ~1e-5 relative) sets the accuracy, not the formula.
+ * GPU's atan (a polynomial, 2e-5 relative on llvmpipe) sets the accuracy, not the formula.
  */
 const TERM_TOLERANCE = { diffuseOrenNayar: { atol: 1e-5, rtol: 5e-4 } };
 
@@ -368,17 +371,26 @@ export const PARITY_CASES = [
     outputs: 2,
     js: (x, y, z) => M.equirectUv([x, y, z]),
     range: [0, 1],
-    // away from the seam at u = 0 / 1 (atan2 of ±0), where both sides are right
+    // away from the seam at u = 0 / 1 (atan2 of ±0), where both sides are right; the poles, where GLSL leaves
+    // atan(0, 0) undefined (±0 alike: u = 1/2 by definition), a direction of length 2 and d = 0
     args: [
-      [0, 1, 0],
-      [0, -1, 0],
-      [1, 0, 0],
-      [0, 0, 1],
-      [0, 0, -1],
-      [0.6, 0.8, 0],
-      [-0.48, 0.6, 0.64],
-      [0.3, -0.9, -0.3162],
-    ].map((d) => unitDir(...d)),
+      ...[
+        [0, 1, 0],
+        [0, -1, 0],
+        [1, 0, 0],
+        [0, 0, 1],
+        [0, 0, -1],
+        [0.6, 0.8, 0],
+        [-0.48, 0.6, 0.64],
+        [0.3, -0.9, -0.3162],
+        [0.01, 0.99, 0.01],
+      ].map((d) => unitDir(...d)),
+      [-0, 1, -0],
+      [-0, -1, 0],
+      [0, 2, 0],
+      [0, 0, 0],
+      [1.2, -1.6, 0],
+    ],
   },
   {
     name: 'equirectDirection',
@@ -408,6 +420,41 @@ export const PARITY_CASES = [
     args: cartesian([0.02, 0.3, 0.7854, 1.2, 1.5], [0.02, 0.3, 0.7854, 1.2, 1.5], [0.6, 1, 2, 2.8, Math.PI + 0.1]).map(
       ([tl, tv, pv]) => [...spherical(tl, 0.3), 0, ...spherical(tv, pv), 0],
     ),
+  },
+  {
+    // l = v: h = l, so d = l - h has no part across h and phi_d is atan(0, 0), which GLSL leaves undefined; at
+    // theta_d = 0 every phi_d is the same pair of directions, and both sides take 0 (JS: the closed form θh = θl)
+    name: 'merlCoordinates (l = v)',
+    chunk: 'measured.glsl',
+    glsl: 'merlCoordinates(vec3(0.0, 0.0, 1.0), a.xyz, a.xyz)',
+    outputs: 3,
+    js: (lx, ly, lz) => merlCoordinates(Math.atan2(Math.hypot(lx, ly), lz), 0, 0),
+    range: [0, 180],
+    tolerance: { atol: 2e-3, rtol: 1e-4 },
+    args: cartesian([0, 1e-3, 0.3, 0.7854, 1.2, 1.5], [0, 0.3, 2, 4]).map(([t, p]) => spherical(t, p)),
+  },
+  {
+    // the media tracer's random numbers (hi and lo 16 bits in): 32 bits over 2^32 round up to 1 for the top 128
+    // values, and its free flight -log(1 - u) would take log(0), which GLSL leaves undefined. JS: the definition,
+    // the top 24 bits over 2^24, in float64
+    name: 'uniformFromBits (and -log(1 - u))',
+    chunk: 'media.glsl',
+    glsl: `vec2(${BITS_U}, -log(1.0 - ${BITS_U}))`,
+    outputs: 2,
+    js: (hi, lo) => {
+      const u = Math.floor((hi * 65536 + lo) / 256) / 2 ** 24;
+      return [u, -Math.log(1 - u)];
+    },
+    range: [0, 17],
+    args: [
+      [0, 0],
+      [0, 255],
+      [12345, 6789],
+      [32768, 0],
+      [65535, 65280],
+      [65535, 65407],
+      [65535, 65535],
+    ],
   },
   {
     name: 'transmittance',
@@ -445,6 +492,22 @@ export const PARITY_CASES = [
     range: [0, Infinity],
     args: cartesian(GRIDS.cos, GRIDS.alpha),
   },
+  // cosines whose squares times alpha² underflow float32 (and may be flushed to 0): the forms that divide by them
+  ...[
+    ['ndfBeckmann', 'beckmann', [GRIDS.alpha]],
+    ['ndfSGD', 'sgd', [GRIDS.sgdAlpha, GRIDS.sgdP]],
+  ].map(([fn, key, params]) => {
+    const term = CATALOGUE.ndf.terms[key];
+    return {
+      name: `${fn} (cos down to 1e-30)`,
+      chunk: 'ndf.glsl',
+      glsl: `${fn}(${SLOTS.slice(0, 1 + params.length + (term.normaliser ? 1 : 0)).join(', ')})`,
+      outputs: 1,
+      js: M[fn],
+      range: [0, Infinity],
+      args: withNormaliser(term, cartesian(TINY_COS, ...params)),
+    };
+  }),
   {
     name: 'ndfBlinnPhong',
     chunk: 'ndf.glsl',
@@ -480,6 +543,18 @@ export const PARITY_CASES = [
     js: M.smithG1BeckmannWalter,
     range: [0, 1],
     args: cartesian(GRIDS.cos, GRIDS.alpha),
+  },
+  {
+    // grazing pairs on opposite sides (cos φ < 0): there 1 - 2b/π is multiplied by tan b ~ 1/cos b, and a GPU's
+    // asin of a small cosine (llvmpipe's: 19 % off at 1e-7) was the whole error (diffuse.glsl)
+    name: 'diffuseOrenNayar (grazing, cos φ < 0)',
+    chunk: 'diffuse.glsl',
+    glsl: 'diffuseOrenNayar(a.x, a.y, a.z, a.w, b.x)',
+    outputs: 1,
+    js: M.diffuseOrenNayar,
+    range: [0, Infinity],
+    tolerance: TERM_TOLERANCE.diffuseOrenNayar,
+    args: cartesian(GRAZING, GRAZING, [-1, -0.7, -0.2], [0.2, 0.5, 1, Math.PI / 2], [0.3, 1]),
   },
   ...termParityCases(CATALOGUE),
 ];
