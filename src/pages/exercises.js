@@ -299,7 +299,7 @@ async function openExercise(exercise, { focus = false } = {}) {
     slot.prepend(
       el('p', {
         className: 'exercise-locked',
-        textContent: `Fixed by the exercise (greyed out below): ${names.join(', ')}.`,
+        textContent: `Fixed by the exercise (grey, framed in dashes and marked “fixed” below): ${names.join(', ')}.`,
       }),
     );
   }

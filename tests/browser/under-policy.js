@@ -19,13 +19,13 @@ export const BUILT = readdirSync(join(ROOT, 'dist'))
   .sort();
 // when each page has finished what it does on load (its widgets mounted, its data drawn); run in the page
 const READY = {
-  'embed.html?w=fresnel-zones': () => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 1,
   'exercises.html': () => globalThis.__shadingLab?.exercise?.ready,
   'tour.html': () => globalThis.__shadingLab?.tour?.ready,
   'parity.html': () => globalThis.__shadingLab?.parity,
   'performance.html': () => globalThis.__shadingLab?.performance,
   'wall.html': () => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length > 0,
 };
+const oneWidget = () => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 1;
 const chapterReady = () =>
   document.querySelectorAll('[data-slot]').length === Object.keys(globalThis.__shadingLab?.widgets ?? {}).length;
 const ONE_EXERCISE = [
@@ -55,18 +55,18 @@ export const POLICY_PAGES = [
 
 /**
  * Opens `path` with its violations recorded (window.__csp) and its draw calls counted (window.__drawCalls), and
- * waits until it has done what it does on load.
+ * waits until it has done what it does on load (an embed with a widget: that widget mounted).
  */
-export async function openUnderPolicy(browser, path) {
+export async function openUnderPolicy(browser, path, { width = 1100, height = 800 } = {}) {
   const page = await openPage(browser, baseUrl(), path, {
-    width: 1100,
-    height: 800,
+    width,
+    height,
     beforeLoad: async (p) => {
       await p.evaluateOnNewDocument(recordViolations);
       await p.evaluateOnNewDocument(countDrawCalls);
     },
   });
-  const ready = READY[path.startsWith('embed.html') ? path : path.split('?')[0]] ?? chapterReady;
+  const ready = path.startsWith('embed.html?w=') ? oneWidget : (READY[path.split('?')[0]] ?? chapterReady);
   if (ready) await page.waitForFunction(ready, { timeout: 60_000 });
   await settle(page, 800);
   return page;

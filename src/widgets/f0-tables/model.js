@@ -20,8 +20,8 @@ export function materialOf(key) {
   return { material, metal: METALS.includes(material) };
 }
 
-/** The widgets a row loads its material into: [widget, link text, its URL parameters]. */
+/** The widgets a row loads its material into: [widget, link text, its URL parameters, where it goes, said]. */
 export const loadTargets = (key) => [
-  ['fresnel-curves', 'curves', `materials=${key}`],
-  ['fresnel-zones', '3-D', `material=${key}&mode=fresnel-nv`],
+  ['fresnel-curves', 'curves', `materials=${key}`, 'into the Fresnel curves plot'],
+  ['fresnel-zones', '3-D', `material=${key}&mode=fresnel-nv`, 'onto the Fresnel zones 3-D shape'],
 ];

@@ -15,11 +15,12 @@ function swatch(rgb, title) {
 
 /** The links of a row; `onPick(key, widget)` returns true when the page loaded it in place (no navigation). */
 function loadLinks(m, onPick) {
-  return loadTargets(m.key).map(([target, text, params]) => {
+  return loadTargets(m.key).map(([target, text, params, where]) => {
     const a = document.createElement('a');
     a.href = `embed.html?w=${target}&${params}`;
     a.textContent = text;
-    a.setAttribute('aria-label', `Load ${m.name} into ${target}`);
+    // the name starts with the words shown, so a voice-control user can say them (WCAG 2.5.3, label in name)
+    a.setAttribute('aria-label', `${text}: load ${m.name} ${where}`);
     a.addEventListener('click', (e) => {
       if (onPick?.(m.key, target)) e.preventDefault();
     });

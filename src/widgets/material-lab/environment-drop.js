@@ -12,7 +12,9 @@ export function attachEnvironmentDrop(root, { onFile, maxBytes, accept = '.hdr,.
     accept,
     className: 'visually-hidden',
     id: `env-file-${Math.random().toString(36).slice(2)}`,
+    tabIndex: -1, // the button is the way in by keyboard: no stop on a control no one sees
   });
+  input.setAttribute('aria-label', text); // named as the button that opens it
   const button = Object.assign(document.createElement('button'), { type: 'button', textContent: text });
   const status = Object.assign(document.createElement('span'), {
     className: 'env-drop-status',
