@@ -507,6 +507,7 @@ export const TOUR_STEPS = [
     title: 'Area lights have a size',
     state: {
       env: false,
+      punctual: false,
       area: true,
       areaRadius: 15,
       material: 'silver',
@@ -524,7 +525,14 @@ export const TOUR_STEPS = [
     section: 'rendering',
     widget: 'material-lab',
     title: 'Image-based lighting: a mirror',
-    state: { material: 'silver', alpha: 0.01, envMethod: 'mirror', environment: 'studio', refSamples: '128' },
+    state: {
+      material: 'silver',
+      alpha: 0.01,
+      punctual: false,
+      envMethod: 'mirror',
+      environment: 'studio',
+      refSamples: '128',
+    },
     text:
       'For an optically flat surface, image-based lighting is easy: the environment seen in the mirror ' +
       'direction, times Fresnel at the angle between view and normal. On this near-mirror the error is small.',
@@ -534,7 +542,14 @@ export const TOUR_STEPS = [
     section: 'rendering',
     widget: 'material-lab',
     title: 'Glossy reflections by prefiltering',
-    state: { material: 'gold', alpha: 0.3, envMethod: 'split-sum', environment: 'studio', refSamples: '128' },
+    state: {
+      material: 'gold',
+      alpha: 0.3,
+      punctual: false,
+      envMethod: 'split-sum',
+      environment: 'studio',
+      refSamples: '128',
+    },
     text:
       'A glossy surface needs the environment averaged over its lobe. Prefiltering does that once per ' +
       'roughness and splits off the rest of the BRDF into a small table (the split sum): cheap, and close to the ' +
@@ -548,6 +563,7 @@ export const TOUR_STEPS = [
     state: {
       material: 'gold',
       alpha: 0.3,
+      punctual: false,
       envMethod: 'importance',
       samples: 16,
       environment: 'studio',
