@@ -168,6 +168,19 @@ describe('a SCORM package in scorm-again’s SCORM 1.2 runtime', { timeout: 60_0
     await page.close();
   });
 
+  it('keeps a set the student loads out of the LMS: the package’s score and suspend data stay', async () => {
+    const { page, frame } = await launch();
+    expect(await answer(frame, 'schlick-worst', '85')).toBe(true);
+    const before = await cmi(page);
+    const own = join(dir, 'own.json');
+    writeFileSync(own, readFileSync(join(EXERCISES, 'lake-mirror.json')));
+    await (await frame.$('#exercise-file')).uploadFile(own);
+    await frame.waitForFunction(() => globalThis.__shadingLab.exercise?.id === 'lake-mirror');
+    expect(await notice(frame)).toContain('loaded yourself are checked here, but not sent to the LMS');
+    expect(await cmi(page)).toMatchObject({ raw: '50', suspend: before.suspend });
+    await page.close();
+  });
+
   it('opened without an LMS, says grades are not being recorded', async () => {
     const page = await openPage(browser, server.url, 'package/scorm-launch.html');
     await page.waitForFunction(() => globalThis.__shadingLab?.exercise?.ready, { timeout: 30_000 });

@@ -10,10 +10,17 @@ const NO_LMS =
   'Package mode, but no learning management system (LMS) was found: your answers are checked here, and your ' +
   'progress stays in this browser, but grades are not being recorded.';
 const CONNECTED = 'Connected to your course’s LMS: each checked answer is sent to its gradebook.';
+const NOT_SENT = 'The exercises you loaded yourself are checked here, but not sent to the LMS.';
 const AFRESH = {
   foreign: 'The progress your LMS kept for this package belongs to another exercise set, so you start afresh.',
   corrupt: 'The progress your LMS kept for this package could not be read, so you start afresh.',
 };
+
+/** A set the student loads into the page is theirs: kept in memory, never sent over the package's grades. */
+function memoryStorage() {
+  let json = '{}';
+  return { getItem: () => json, setItem: (_key, text) => void (json = text), removeItem: () => void (json = '{}') };
+}
 
 /** Shows the mode's notices in a box put before `place`. Returns { storageFor(ids) } for createProgress. */
 export function startPackageMode({ win = window, place }) {
@@ -28,7 +35,7 @@ export function startPackageMode({ win = window, place }) {
   const api = findLmsApi(win);
   if (!api) {
     say(NO_LMS);
-    return { storageFor: () => win.localStorage, connected: false };
+    return { storageFor: () => win.localStorage };
   }
   say(CONNECTED);
   const session = createLmsSession(api, {
@@ -39,15 +46,16 @@ export function startPackageMode({ win = window, place }) {
   win.addEventListener('pagehide', () => session.finish());
   let restored = false;
   return {
-    connected: true,
     storageFor(ids) {
-      let progress = {};
-      if (!restored) {
-        restored = true; // only the set the package opened with resumes; a dropped file starts empty
-        const got = decodeProgress(suspend ?? '', ids);
-        if (got.problem) say(AFRESH[got.problem], 'scorm-problem');
-        progress = got.progress;
+      if (!ids.length) return memoryStorage(); // a set that failed to load must not overwrite the kept progress
+      if (restored) {
+        say(NOT_SENT);
+        return memoryStorage();
       }
+      restored = true; // only the set the package opened with goes to the LMS
+      const got = decodeProgress(suspend ?? '', ids);
+      if (got.problem) say(AFRESH[got.problem], 'scorm-problem');
+      let progress = got.progress;
       const save = () => {
         const score = scoreOf(ids, progress);
         session.save({ raw: score.raw, status: lessonStatus(score, mastery), suspend: encodeProgress(ids, progress) });
