@@ -19,12 +19,15 @@ import { setInlineTex } from '../core/ui/inline-tex.js';
 import { typesetFormulas } from '../core/ui/formulas.js';
 import { publish, unregisterWidget } from '../core/framework/debug-hooks.js';
 import { createGradedLink } from '../exercises/graded-message.js';
+import { startPackageMode } from '../exercises/scorm/package-mode.js';
 
 const listEl = document.getElementById('exercise-list');
 const articleEl = document.getElementById('exercise');
 const problemsEl = document.getElementById('exercise-problems');
-const progress = createProgress();
 const pageParams = new URLSearchParams(location.search);
+// in a SCORM package (?scorm=1) progress goes to the LMS, once the set's ids are known (useSet)
+const scorm = pageParams.get('scorm') === '1' ? startPackageMode({ place: problemsEl }) : null;
+let progress = createProgress(); // replaced in package mode by useSet, before anything is shown
 const gradedLink = createGradedLink(pageParams);
 
 const schemaOf = async (name) => (isWidgetName(name) ? (await WIDGETS[name].load()).widget.schema : null);
@@ -322,6 +325,7 @@ function route(event) {
 
 function useSet({ exercises: list, problems }) {
   exercises = list;
+  if (scorm) progress = createProgress(scorm.storageFor(list.map((e) => e.id)));
   showProblems(problems);
   closeCurrent();
   route();
