@@ -25,7 +25,7 @@ afterAll(async () => {
 /**
  * In the page, before it loads: counts draw calls by the sample count of the framebuffer they draw into
  * (window.__draws: { plain, multisampled }); logs each frame of the render loop as it starts (window.__frameLog:
- * { at, multisampled so far }) and keeps it as read back right after it was drawn (window.__frame, RGBA); keeps
+ * { multisampled so far }) and keeps it as read back right after it was drawn (window.__frame, RGBA); keeps
  * the last file saved (window.__saved). With `contextAntialias`, every WebGL2 context is made multisampled.
  */
 function instrument(contextAntialias) {
@@ -59,7 +59,7 @@ function instrument(contextAntialias) {
     },
     set frames(n) {
       frames = n;
-      window.__frameLog.push({ at: performance.now(), multisampled: window.__draws.multisampled });
+      window.__frameLog.push({ multisampled: window.__draws.multisampled });
       queueMicrotask(readFrame);
     },
   };
