@@ -26,8 +26,12 @@ export function watchHeldInput(element, onEnd) {
 
   const on = (/** @type {Event} */ e) =>
     e.target instanceof Node && (element.closest('.widget') ?? element).contains(e.target);
-  const down = (/** @type {PointerEvent} */ e) => on(e) && pointers.add(e.pointerId);
+  // a <select>'s list takes the release away from the page: its choice is a lone change
+  const down = (/** @type {PointerEvent} */ e) =>
+    on(e) && !(e.target instanceof HTMLSelectElement) && pointers.add(e.pointerId);
   const up = (/** @type {PointerEvent} */ e) => release(() => pointers.delete(e.pointerId));
+  // a pointer that moves with no button down was released where the page could not see it
+  const move = (/** @type {PointerEvent} */ e) => e.buttons === 0 && pointers.has(e.pointerId) && up(e);
   const keydown = (/** @type {KeyboardEvent} */ e) => e.repeat && on(e) && keys.add(e.code);
   const keyup = (/** @type {KeyboardEvent} */ e) => release(() => keys.delete(e.code));
   const wheelEnd = () => release(() => (wheelTimer = 0));
@@ -50,6 +54,7 @@ export function watchHeldInput(element, onEnd) {
     ['keydown', keydown],
     ['wheel', wheel],
     ['pointerup', up],
+    ['pointermove', move],
     ['pointercancel', up],
     ['keyup', keyup],
     ['blur', blur], // a release the page never sees (another window took the focus)
