@@ -1,10 +1,11 @@
-// npm run bench:latency [-- --widget NAME …]: for every widget, the time from a state change to the changed frame,
-// over a scripted drag (a slider swept in small steps, one change after the previous frame is done): median and
-// worst. "Done" is: the render loop's next animation frame has run (it draws what changed), every canvas of the
-// widget has finished its GPU work (a one-pixel read-back), and the browser reached the following frame. A widget
-// that keeps drawing a second after the drag (a Monte Carlo reference converging) is progressive and is reported
-// apart: its number is the time to its first changed frame. Writes bench/results/latency.json; `npm run bench`
-// runs the same part (measureLatency) into bench/results/latest.json.
+// npm run bench:latency [-- --widget NAME …]: for every widget, the time from a state change to the changed frame, over
+// a scripted drag (a slider swept in small steps, one change after the previous frame is done, a pointer held on the
+// widget meanwhile as on a slider: src/core/ui/held-input.js): median and worst. "Done" is: the render loop's next
+// animation frame has run (it draws what changed), every canvas of the widget has finished its GPU work (a one-pixel
+// read-back), and the browser reached the following frame. A widget that keeps drawing a second after the drag (a Monte
+// Carlo reference converging) is progressive and is reported apart: its number is the time to its first changed frame.
+// Writes bench/results/latency.json; `npm run bench` runs the same part (measureLatency) into
+// bench/results/latest.json.
 import { mkdirSync, mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
@@ -112,7 +113,11 @@ async function measure(browser, url, name, steps) {
   await settle(page, 1500);
   const viaLoop = (await page.evaluate(() => globalThis.__shadingLab.frames)) > before;
   let ms = [];
+  const pointer = (type) =>
+    page.$eval('.widget', (w, t) => w.dispatchEvent(new PointerEvent(t, { bubbles: true })), type);
+  await pointer('pointerdown'); // a drag's frames, drawn as during one (the 3-D views of meshes: not multisampled)
   for (const v of values) ms.push(await page.evaluate(timeChange, name, key, v, viaLoop));
+  await pointer('pointerup');
   ms = ms.filter((x) => x !== null);
   const after = await page.evaluate(() => globalThis.__shadingLab.frames);
   await settle(page, 1000);

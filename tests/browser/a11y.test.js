@@ -67,11 +67,18 @@ describe('every widget describes its canvases and is usable by keyboard', () => 
       expect(before.live.length).toBeGreaterThan(30);
 
       await page.evaluate((n, change) => globalThis.__shadingLab.widgets[n].update(change), name, CHANGES[name]);
-      // the live region speaks once changes settle (500 ms after the last, describe.js): wait for it, then a frame
-      await page
-        .waitForFunction((text) => document.querySelector('.widget-live')?.textContent !== text, {}, before.live)
-        .catch(() => {}); // words that never change fail below, with the words in the message
-      await settle(page, 0);
+      // the live region speaks once changes settle (500 ms after the last, describe.js), and a canvas may be
+      // described later still (after work off the main thread): wait until all of them have new words
+      const changed = (was, staticPicture) => {
+        const now = [...document.querySelectorAll('.widget canvas')].filter((c) => c.getClientRects().length);
+        const label = (c) => c.getAttribute('aria-label') ?? '';
+        return (
+          document.querySelector('.widget-live')?.textContent !== was.live &&
+          now.every((c, i) => new RegExp(staticPicture).test(label(c)) || label(c) !== was.canvases[i]?.label)
+        );
+      };
+      // (words that never change fail below, with the words in the message)
+      await page.waitForFunction(changed, { timeout: 30_000 }, before, STATIC_PICTURE.source).catch(() => {});
       const after = await readWords(page);
       expect(after.canvases.length).toBe(before.canvases.length);
       after.canvases.forEach((c, i) => {
@@ -187,7 +194,10 @@ describe('interactive canvases answer the keyboard', () => {
     const page = await openWidget('f0-tables');
     await page.focus('tr[data-material="copper"]');
     await page.keyboard.press('Enter');
-    await settle(page, 800); // the live region speaks once changes settle
+    // the live region speaks once changes settle (500 ms after the last, describe.js)
+    await page
+      .waitForFunction(() => /Copper/.test(document.querySelector('.widget-live')?.textContent), { timeout: 30_000 })
+      .catch(() => {}); // other words fail below, with the words in the message
     expect((await getState(page, 'f0-tables')).selected).toBe('copper');
     expect(await page.evaluate(() => document.activeElement.dataset.material)).toBe('copper');
     expect(await page.$eval('.widget-live', (el) => el.textContent)).toMatch(
@@ -201,7 +211,12 @@ describe('interactive canvases answer the keyboard', () => {
 describe('the words carry the numbers', () => {
   it('the zones of n·v on an orthographic sphere are read out with their shares: 50%, 43.3%, 6.7%', async () => {
     const page = await openWidget('fresnel-zones&mode=zones-nv');
-    await settle(page, 500);
+    // the shares are measured once the first frames pause (a GPU read-back), then described
+    await page
+      .waitForFunction(() => /goes rapidly to 1 [\d.]+%/.test(document.querySelector('.viewport canvas').ariaLabel), {
+        timeout: 30_000,
+      })
+      .catch(() => {}); // other words fail below, with the words in the message
     const label = await page.$eval('.viewport canvas', (c) => c.getAttribute('aria-label'));
     const shares = [...label.matchAll(/(barely changes|changes somewhat|goes rapidly to 1) ([\d.]+)%/g)].map(
       (m) => Number(m[2]) / 100,

@@ -100,8 +100,8 @@ describe('postMessage protocol of embed.html', () => {
       );
       expect(noticeText).toMatch(/banana/);
       expect(noticeText).toMatch(/colour/);
-      await sleep(300);
-      expect(new URL(frame.url()).searchParams.get('mode')).toBe('zones-lh');
+      const frameParam = (f, key) => new URL(f.url()).searchParams.get(key); // the URL is written back after a pause
+      await expect.poll(() => frameParam(frame, 'mode'), { timeout: 10_000 }).toBe('zones-lh');
       // a change the parent made is not echoed back as a user change
       expect((await inbox(page)).some((m) => m.data.type === 'shading-lab:changed')).toBe(false);
 
@@ -137,7 +137,7 @@ describe('postMessage protocol of embed.html', () => {
     for (const m of bad) await post(page, m, own);
     await post(page, { type: 'shading-lab:get', id: 'last' }, own);
     await waitForMessage(page, (d) => d.id === 'last');
-    await sleep(300);
+    await sleep(300); // a window for replies that must not come: it cannot fail a widget that keeps silent
     const unasked = new Set(['shading-lab:ready', 'shading-lab:resize']);
     const replies = (await inbox(page)).filter((m) => !unasked.has(m.data?.type));
     expect(replies.map((m) => m.data.id)).toEqual(['last']);
@@ -157,7 +157,7 @@ describe('postMessage protocol of embed.html', () => {
     const before = await widgetState(frame);
     await post(page, { type: 'shading-lab:set', id: 's', state: { mode: 'zones-lh' } }, widgetOrigin);
     await post(page, { type: 'shading-lab:get', id: 'g' }, '*');
-    await sleep(800);
+    await sleep(800); // a window for what must not come, as above
     expect(await inbox(page)).toEqual([]); // not even `ready` or `resize`: nothing goes to an origin not allowed
     expect(await widgetState(frame)).toEqual(before);
 
@@ -172,8 +172,8 @@ describe('postMessage protocol of embed.html', () => {
     await waitForMessage(page, (d) => d.type === 'shading-lab:state' && d.id === 's2');
     expect((await widgetState(allowed)).mode).toBe('zones-lh');
     expect((await inbox(page)).every((m) => m.origin === widgetOrigin)).toBe(true);
-    await sleep(300);
-    // kept when the state is written back
+    // kept when the state is written back (after a pause)
+    await expect.poll(() => new URL(allowed.url()).searchParams.get('mode'), { timeout: 10_000 }).toBe('zones-lh');
     expect(new URL(allowed.url()).searchParams.get('origins')).toBe(parentOrigin);
     expect(page.errors).toEqual([]);
     await page.close();

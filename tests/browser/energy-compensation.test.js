@@ -2,7 +2,7 @@
 // albedo of 1, so each pixel inside each sphere reads back as the white background (the truth: a surface that
 // loses nothing is invisible in the furnace); without compensation the rough sphere stays grey.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { launchBrowser, open, settle, shot, widget, withPixels } from './helpers.js';
+import { launchBrowser, open, settle, shot, untilSteady, widget, withPixels } from './helpers.js';
 
 let browser;
 beforeAll(async () => {
@@ -51,7 +51,7 @@ describe('energy: compensated furnace spheres', () => {
           },
         );
         await widget(page, 'energy');
-        await settle(page, 1500);
+        await untilSteady(page, 'drawCalls'); // the spheres drawn with their tables, nothing more to come
         expect((await page.evaluate(() => globalThis.__shadingLab.widgets['energy'].getAlbedos())).length).toBe(
           ALPHAS.length,
         );

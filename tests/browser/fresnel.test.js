@@ -8,6 +8,7 @@ import {
   setControl,
   settle,
   shot,
+  untilSteady,
   widget,
   withPixels,
 } from './helpers.js';
@@ -210,9 +211,9 @@ describe('fresnel-zones', () => {
     const page = await open(browser, 'fresnel.html');
     await widget(page, 'zones');
     await page.$eval('[data-slot="fresnel-zones"]', (el) => el.scrollIntoView());
-    await settle(page, 1000);
+    await untilSteady(page, 'drawCalls'); // its first frames and its zone shares' read-back done
     const before = await page.evaluate(() => [window.__drawCalls, globalThis.__shadingLab.frames]);
-    await new Promise((r) => setTimeout(r, 2000));
+    await new Promise((r) => setTimeout(r, 2000)); // a window for what must not come: it cannot fail an idle page
     const after = await page.evaluate(() => [window.__drawCalls, globalThis.__shadingLab.frames]);
     expect(before[0]).toBeGreaterThan(0);
     expect(after).toEqual(before);
@@ -224,7 +225,9 @@ describe('fresnel-zones', () => {
     await widget(page, 'fresnel-zones');
     const w1 = await page.$eval(CANVAS, (c) => c.width);
     await page.setViewport({ width: 1200, height: 900 });
-    await settle(page, 500);
+    await page
+      .waitForFunction((w) => document.querySelector('.widget-fresnel-zones canvas').width > w * 1.2, {}, w1)
+      .catch(() => {}); // a canvas that does not follow fails below, with its width
     const w2 = await page.$eval(CANVAS, (c) => c.width);
     expect(w1).toBeLessThanOrEqual(700);
     expect(w2).toBeGreaterThan(w1 * 1.2);
@@ -267,12 +270,17 @@ describe('fresnel-curves and f0-tables', () => {
     const page = await open(browser, 'fresnel.html');
     await widget(page, 'tables');
     await page.click('tr[data-material="diamond"] a[aria-label*="fresnel-zones"]');
-    await settle(page, 1200); // the page scrolls smoothly to the widget that took the material
+    // the page scrolls smoothly to the widget that took the material: the next click waits till it stops
+    await page.evaluate(async () => {
+      for (let still = 0, y = scrollY; still < 5;) {
+        await new Promise((r) => requestAnimationFrame(r));
+        [still, y] = scrollY === y ? [still + 1, y] : [0, scrollY];
+      }
+    });
     await page.click('tr[data-material="iron"] a[aria-label*="fresnel-curves"]');
-    await settle(page, 400);
-    expect((await getState(page, 'zones')).material).toBe('diamond');
-    expect((await getState(page, 'curves')).materials).toContain('iron');
-    expect(page.url()).toMatch(/zones\.material=diamond/);
+    await expect.poll(async () => (await getState(page, 'zones')).material, { timeout: 10_000 }).toBe('diamond');
+    await expect.poll(async () => (await getState(page, 'curves')).materials, { timeout: 10_000 }).toContain('iron');
+    await expect.poll(() => page.url(), { timeout: 10_000 }).toMatch(/zones\.material=diamond/);
     expect(page.errors).toEqual([]);
     await page.close();
   });

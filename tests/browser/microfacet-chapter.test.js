@@ -1,6 +1,17 @@
 // The microfacet chapters (BRDF, microfacet theory, NDF, visibility) in a real Chromium.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { getState, launchBrowser, open, redAt, setControl, settle, shot, widget, withPixels } from './helpers.js';
+import {
+  getState,
+  launchBrowser,
+  open,
+  redAt,
+  setControl,
+  settle,
+  shot,
+  untilSteady,
+  widget,
+  withPixels,
+} from './helpers.js';
 import { linearToSrgb } from '../../src/math/color.js';
 import { albedoGGX } from '../../src/math/integrate.js';
 import { DEG } from '../../src/math/angles.js';
@@ -145,7 +156,7 @@ describe('energy (white furnace)', () => {
     const url = 'embed.html?w=energy&alphas=0.05,1.0&samples=256&sampleCount=4096';
     const page = await open(browser, url, { width: 900, height: 900 });
     await widget(page, 'energy');
-    await settle(page, 1500);
+    await untilSteady(page, 'drawCalls'); // the spheres drawn, nothing more to come
     const albedos = await page.evaluate(() => globalThis.__shadingLab.widgets['energy'].getAlbedos());
     console.log(
       'albedo: ' +
@@ -172,7 +183,7 @@ describe('energy (white furnace)', () => {
     async () => {
       const page = await open(browser, 'embed.html?w=energy&alphas=0.5', { width: 900, height: 900 });
       await widget(page, 'energy');
-      await settle(page, 1500);
+      await untilSteady(page, 'drawCalls'); // the spheres drawn, nothing more to come
       const rim = rimAgainstAlbedo(await centreRow(page, await shot(page, '.sphere-grid canvas')), 0.5);
       const { at85, worst } = rim;
       console.log(

@@ -1,17 +1,18 @@
-// Multisampling once the changes pause (src/core/gpu/settled-antialias.js), in fresnel-zones (its own shader) and
-// the 3-D lobe of brdf-lobe (three.js's built-in materials, colour-managed by three.js): WebGL itself tells
-// how each draw call was sampled (the SAMPLES of the framebuffer it draws into), and each frame is read back in the
-// task that drew it. The reference for the settled picture is the one before this mode: the same page with its
-// WebGL context made multisampled (antialias: true), drawn straight to the canvas.
+// Multisampling once a gesture ends (src/core/gpu/settled-antialias.js, src/core/ui/held-input.js), in fresnel-zones
+// (its own shader) and the 3-D lobe of brdf-lobe (three.js's built-in materials, colour-managed by three.js): the
+// tests drive input as a reader does (a pointer pressed, moved, released; a key held) and WebGL itself tells how each
+// draw call was sampled (the SAMPLES of the framebuffer it draws into); each frame is read back in the task that
+// drew it. No test reads the time between frames or sleeps to let one come: each waits for the frame count. The
+// reference for the settled picture is the one before this mode: the same page with its WebGL context made
+// multisampled (antialias: true), drawn straight to the canvas.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { baseUrl, launchBrowser, settle } from './helpers.js';
+import { baseUrl, launchBrowser } from './helpers.js';
 import { openPage } from './harness.js';
 
 const WIDGET = 'fresnel-zones';
 const PAGE = `embed.html?w=${WIDGET}&shape=teapot&mode=zones-nv&camera=perspective`;
-const DRAG = [30, 34, 38, 42, 46, 50, 54, 58]; // light θ, one change per frame
+const DRAG = [0.2, 0.24, 0.28, 0.32, 0.36, 0.4, 0.44, 0.48]; // pointer positions: right of centre, by half-widths
 const LOBE = 'brdf-lobe'; // its 3-D lobe view: a surface patch, two lobes and arrows
-const QUIET_MS = 130; // the pause after which a frame is multisampled (settled-antialias.js)
 
 let browser;
 beforeAll(async () => {
@@ -24,7 +25,7 @@ afterAll(async () => {
 /**
  * In the page, before it loads: counts draw calls by the sample count of the framebuffer they draw into
  * (window.__draws: { plain, multisampled }); logs each frame of the render loop as it starts (window.__frameLog:
- * { at, multisampled so far }) and keeps it as read back right after it was drawn (window.__frame, RGBA); keeps
+ * { multisampled so far }) and keeps it as read back right after it was drawn (window.__frame, RGBA); keeps
  * the last file saved (window.__saved). With `contextAntialias`, every WebGL2 context is made multisampled.
  */
 function instrument(contextAntialias) {
@@ -58,39 +59,49 @@ function instrument(contextAntialias) {
     },
     set frames(n) {
       frames = n;
-      window.__frameLog.push({ at: performance.now(), multisampled: window.__draws.multisampled });
+      window.__frameLog.push({ multisampled: window.__draws.multisampled });
       queueMicrotask(readFrame);
     },
   };
 }
+
+/** In the page: the frames the render loops have drawn. */
+const frames = (page) => page.evaluate(() => globalThis.__shadingLab.frames);
+
+/** Waits until the render loops have drawn more than `n` frames. */
+const untilFrameAfter = (page, n) =>
+  page.waitForFunction((k) => globalThis.__shadingLab.frames > k, { timeout: 30_000, polling: 'raf' }, n);
+
+/**
+ * Waits until no frame is pending: the frame count held over ten animation frames in a row (a frame asked for is
+ * drawn at the next one; ten leave room for a resize or a late font). A test of "no more frames" rests on it.
+ */
+const untilQuiet = (page) =>
+  page.evaluate(async () => {
+    const lab = globalThis.__shadingLab;
+    for (let still = 0, seen = lab.frames; still < 10;) {
+      await new Promise((r) => requestAnimationFrame(r));
+      [still, seen] = lab.frames === seen ? [still + 1, seen] : [0, lab.frames];
+    }
+  });
 
 async function openWidget(widget, path, contextAntialias = false) {
   const page = await openPage(browser, baseUrl(), path, {
     beforeLoad: (p) => p.evaluateOnNewDocument(instrument, contextAntialias),
   });
   await page.waitForFunction((w) => globalThis.__shadingLab?.widgets?.[w], { timeout: 30_000 }, widget);
-  await settle(page, 1000);
+  await untilFrameAfter(page, 0);
+  await untilQuiet(page);
   return page;
 }
 const openZones = (contextAntialias = false) => openWidget(WIDGET, PAGE, contextAntialias);
 
-/** In the page: the state change, then the frame it causes (or none within a second). */
-const change = (page, partial, widget = WIDGET) =>
-  page.evaluate(
-    (w, p) => {
-      const lab = globalThis.__shadingLab;
-      const before = lab.frames;
-      lab.widgets[w].update(p);
-      return new Promise((resolve) => {
-        const t0 = performance.now();
-        const wait = () =>
-          lab.frames > before || performance.now() - t0 > 1000 ? resolve() : requestAnimationFrame(wait);
-        requestAnimationFrame(wait);
-      });
-    },
-    widget,
-    partial,
-  );
+/** In the page: the state change, then the frame it causes. */
+async function change(page, partial, widget = WIDGET) {
+  const before = await frames(page);
+  await page.evaluate((w, p) => globalThis.__shadingLab.widgets[w].update(p), widget, partial);
+  await untilFrameAfter(page, before);
+}
 
 /** Frames and draw calls so far, the frame log; with `withFrame` the last frame (base64). */
 const counts = (page, withFrame = false, kept = '__frame') =>
@@ -119,52 +130,63 @@ const savedPixels = (page) =>
     return btoa(text);
   });
 
-/** A drag of the light, one change per frame; and the state once it has paused. */
-async function drag(page, widget = WIDGET) {
+/**
+ * A pointer pressed on the view's canvas at DRAG[0] and moved through the rest, each position waiting for its frame;
+ * the pointer stays pressed. Returns the counts before the press and after the last move.
+ */
+async function pressAndDrag(page) {
+  const box = await (await page.$('.viewport canvas')).boundingBox();
+  const at = (f) => [box.x + box.width / 2 + (f * box.width) / 2, box.y + box.height / 2 - (f * box.height) / 8];
+  await page.mouse.move(...at(DRAG[0]));
+  await untilQuiet(page); // whatever the hover draws (the probe), before the press
   const start = await counts(page);
-  for (const lightTheta of DRAG) await change(page, { lightTheta }, widget);
-  const dragged = await counts(page, true);
-  await settle(page, 800);
-  return { start, dragged, settled: await counts(page, true) };
+  await page.mouse.down();
+  for (const f of DRAG.slice(1)) {
+    const before = await frames(page);
+    await page.mouse.move(...at(f));
+    await untilFrameAfter(page, before);
+  }
+  return { start, held: await counts(page, true) };
 }
 
-/** Whether the last frame drawn had no multisampled draw. */
-const lastFramePlain = ({ log, multisampled }) => log.at(-1).multisampled === multisampled;
+/** Releases the pointer; returns the counts once the frame it asks for (if any) is drawn and nothing is pending. */
+async function release(page) {
+  await page.mouse.up();
+  await untilQuiet(page);
+  return counts(page, true);
+}
 
-/** Each frame of a drag (after its first): the time since the frame before it (ms), its multisampled draws. */
-function dragFrames({ start, dragged }) {
-  const log = [...dragged.log.slice(start.frames), { multisampled: dragged.multisampled }];
-  return log
-    .slice(1, -1)
-    .map((f, i) => ({ gap: f.at - log[i].at, multisampled: log[i + 2].multisampled - f.multisampled }));
+/**
+ * The reference: a page whose context multisamples, brought to `state` while a pointer is held on the widget (so
+ * that its view draws straight to the canvas, as before this mode); its last frame.
+ */
+async function referenceFrame(widget, path, bringThere) {
+  const reference = await openWidget(widget, path, true);
+  await reference.$eval('.widget', (w) => w.dispatchEvent(new PointerEvent('pointerdown', { bubbles: true })));
+  await bringThere(reference);
+  const { frame } = await counts(reference, true);
+  expect(reference.errors).toEqual([]);
+  await reference.close();
+  return frame;
 }
 
 describe("antialias: 'settled' (fresnel-zones)", () => {
-  it('draws a drag plainly, then one multisampled frame equal to the context-multisampled one', async () => {
+  it('draws a pointer drag plainly, on release one multisampled frame = the context-multisampled one', async () => {
     const page = await openZones();
-    const run = await drag(page);
-    const { start, dragged, settled } = run;
-    expect(dragged.frames - start.frames, 'a frame per change').toBe(DRAG.length);
-    // a frame that follows the one before within the pause is plain, one after a longer gap multisampled (this
-    // machine may be slow enough for a gap that long)
-    const frames = dragFrames(run);
-    const quick = frames.filter((f) => f.gap < QUIET_MS);
-    expect(quick.length, `frames ${JSON.stringify(frames)}`).toBeGreaterThanOrEqual(frames.length / 2);
-    expect(quick.map((f) => f.multisampled)).toEqual(quick.map(() => 0));
-    expect(frames.filter((f) => f.gap > QUIET_MS + 1).every((f) => f.multisampled === 1)).toBe(true);
-    // one multisampled frame after the pause, unless the drag's last frame was one already (a slow gap before it)
-    const after = lastFramePlain(dragged) ? 1 : 0;
-    expect(settled.frames - dragged.frames, 'frames after the pause').toBe(after);
-    expect(settled.multisampled - dragged.multisampled, 'multisampled draws after the pause: the mesh').toBe(after);
-    if (after) expect(settled.frame, 'the settled frame differs from the last plain one').not.toBe(dragged.frame);
+    const { start, held } = await pressAndDrag(page);
+    expect(held.frames - start.frames, 'a frame per pointer position').toBeGreaterThanOrEqual(DRAG.length - 1);
+    expect(held.multisampled - start.multisampled, 'no multisampled draw while the pointer is held').toBe(0);
+    expect(held.plain).toBeGreaterThan(start.plain);
+    const settled = await release(page);
+    expect(settled.frames - held.frames, 'frames after the release').toBe(1);
+    expect(settled.multisampled - held.multisampled, 'multisampled draws after the release: the mesh').toBe(1);
+    expect(settled.frame, 'the settled frame differs from the last plain one').not.toBe(held.frame);
 
-    const reference = await openZones(true); // the picture before this mode: every frame multisampled by the context
-    const { dragged: referenceLast } = await drag(reference);
-    expect(settled.frame === referenceLast.frame, 'settled frame = context-multisampled frame, byte for byte').toBe(
-      true,
-    );
-    expect([...page.errors, ...reference.errors]).toEqual([]);
-    await Promise.all([page.close(), reference.close()]);
+    const { lightTheta, lightPhi } = await page.evaluate((w) => globalThis.__shadingLab.widgets[w].getState(), WIDGET);
+    const reference = await referenceFrame(WIDGET, PAGE, (p) => change(p, { lightTheta, lightPhi }));
+    expect(settled.frame === reference, 'settled frame = context-multisampled frame, byte for byte').toBe(true);
+    expect(page.errors).toEqual([]);
+    await page.close();
   });
 
   it('draws a lone change multisampled at once, and nothing more after it', async () => {
@@ -174,7 +196,7 @@ describe("antialias: 'settled' (fresnel-zones)", () => {
     const changed = await counts(page);
     expect(changed.frames - before.frames).toBe(1);
     expect(changed.multisampled - before.multisampled, 'the mesh, multisampled').toBe(1);
-    await settle(page, 800);
+    await untilQuiet(page);
     const after = await counts(page);
     // (its zone shares are measured after it: plain draws into float images, no frame)
     expect([after.frames, after.multisampled]).toEqual([changed.frames, changed.multisampled]);
@@ -182,28 +204,45 @@ describe("antialias: 'settled' (fresnel-zones)", () => {
     await page.close();
   });
 
+  it('draws a held key plainly from its first repeat, and multisampled on its release', async () => {
+    const page = await openZones();
+    await page.focus('.viewport canvas');
+    const before = await counts(page);
+    const press = async () => {
+      const n = await frames(page);
+      await page.keyboard.down('ArrowDown'); // the light 5° lower; pressed again: a repeat
+      await untilFrameAfter(page, n);
+      return counts(page);
+    };
+    const first = await press();
+    expect(first.multisampled - before.multisampled, 'the first press: a lone change, multisampled').toBe(1);
+    let repeated = first;
+    for (let i = 0; i < 4; i++) repeated = await press();
+    expect(repeated.frames - first.frames, 'a frame per repeat').toBe(4);
+    expect(repeated.multisampled, 'no multisampled draw while the key repeats').toBe(first.multisampled);
+    await page.keyboard.up('ArrowDown');
+    await untilQuiet(page);
+    const released = await counts(page);
+    expect([released.frames - repeated.frames, released.multisampled - repeated.multisampled]).toEqual([1, 1]);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
   it('saves the multisampled picture from the middle of a drag, its frame still plain', async () => {
     const page = await openZones();
-    // a loaded machine may space a drag's frames past the pause (then the canvas already holds the multisampled
-    // frame): the drag is made again until its last frame is plain, and the save is clicked in the same task
-    let atSave = null;
-    for (let attempt = 0; attempt < 5 && !atSave; attempt++) {
-      for (const lightTheta of DRAG) await change(page, { lightTheta: lightTheta + attempt });
-      atSave = await page.$eval('.widget-fresnel-zones .save-view', (button) => {
-        const multisampled = window.__draws.multisampled;
-        if (window.__frameLog.at(-1).multisampled !== multisampled) return null; // the last frame multisampled
-        window.__plainAtSave = window.__frame.slice(); // the plain frame the canvas shows as the save is clicked
-        button.click(); // the still is redrawn in the click's task
-        return { frames: globalThis.__shadingLab.frames, multisampled: window.__draws.multisampled - multisampled };
-      });
-    }
-    expect(atSave, 'a drag whose last frame is plain, in five tries').not.toBeNull();
+    const { held } = await pressAndDrag(page);
+    const atSave = await page.$eval('.widget-fresnel-zones .save-view', (button) => {
+      const multisampled = window.__draws.multisampled;
+      window.__plainAtSave = window.__frame.slice(); // the plain frame the canvas shows as the save is clicked
+      button.click(); // the still is redrawn in the click's task
+      return { frames: globalThis.__shadingLab.frames, multisampled: window.__draws.multisampled - multisampled };
+    });
+    expect(held.log.at(-1).multisampled, 'the frame at the save was plain').toBe(held.multisampled);
     expect(atSave.multisampled, 'the mesh drawn multisampled for the still').toBe(1);
     await page.waitForFunction(() => window.__saved, { timeout: 10_000 });
     const plain = await counts(page, true, '__plainAtSave');
-    await settle(page, 800);
-    const settled = await counts(page, true);
-    expect(settled.frames, 'the pause came after the save').toBe(atSave.frames + 1);
+    const settled = await release(page);
+    expect(settled.frames, 'the release came after the save').toBe(atSave.frames + 1);
     const saved = await savedPixels(page);
     expect(saved === settled.frame, 'saved picture = settled frame, byte for byte').toBe(true);
     expect(saved).not.toBe(plain.frame);
@@ -215,13 +254,15 @@ describe("antialias: 'settled' (fresnel-zones)", () => {
     const page = await openZones();
     const before = await counts(page, true);
     await page.evaluate(() => {
-      const lose = document.querySelector('.viewport canvas').getContext('webgl2').getExtension('WEBGL_lose_context');
-      lose.loseContext();
-      setTimeout(() => lose.restoreContext(), 300);
+      const gl = document.querySelector('.viewport canvas').getContext('webgl2');
+      window.__lose = gl.getExtension('WEBGL_lose_context');
+      window.__lose.loseContext();
     });
-    await settle(page, 1500);
+    await page.waitForFunction(() => document.querySelector('.viewport canvas').getContext('webgl2').isContextLost());
+    await page.evaluate(() => window.__lose.restoreContext());
+    await untilFrameAfter(page, before.frames);
+    await untilQuiet(page);
     const after = await counts(page, true);
-    expect(after.frames).toBeGreaterThan(before.frames);
     expect(after.multisampled - before.multisampled, 'the mesh, multisampled').toBe(1);
     expect(after.frame === before.frame, 'the frame before the loss = the frame after, byte for byte').toBe(true);
     expect(page.errors).toEqual([]);
@@ -230,21 +271,19 @@ describe("antialias: 'settled' (fresnel-zones)", () => {
 });
 
 describe("antialias: 'settled' with three.js's own materials (the 3-D lobe of brdf-lobe)", () => {
-  it('draws a drag plainly, then a multisampled frame equal to that of a multisampled context', async () => {
-    const page = await openWidget(LOBE, `embed.html?w=${LOBE}`);
-    const { start, dragged, settled } = await drag(page, LOBE);
-    expect(dragged.frames - start.frames, 'a frame per change').toBe(DRAG.length);
-    expect(dragged.plain, 'the drag drew plain frames').toBeGreaterThan(start.plain);
-    if (lastFramePlain(dragged)) {
-      expect(settled.frames - dragged.frames, 'frames after the pause').toBe(1);
-      expect(settled.multisampled, 'the frame after the pause, multisampled').toBeGreaterThan(dragged.multisampled);
-    } else expect(settled.frames, 'the last frame was multisampled: none after it').toBe(dragged.frames);
-    const reference = await openWidget(LOBE, `embed.html?w=${LOBE}`, true);
-    const { dragged: referenceLast } = await drag(reference, LOBE);
-    expect(settled.frame === referenceLast.frame, 'settled frame = context-multisampled frame, byte for byte').toBe(
-      true,
-    );
-    expect([...page.errors, ...reference.errors]).toEqual([]);
-    await Promise.all([page.close(), reference.close()]);
+  it('draws an orbit drag plainly, then a multisampled frame equal to that of a multisampled context', async () => {
+    const path = `embed.html?w=${LOBE}`;
+    const page = await openWidget(LOBE, path);
+    const { start, held } = await pressAndDrag(page);
+    expect(held.frames - start.frames, 'a frame per pointer move').toBeGreaterThanOrEqual(DRAG.length - 1);
+    expect(held.multisampled - start.multisampled, 'no multisampled draw while the pointer is held').toBe(0);
+    const settled = await release(page);
+    expect(settled.frames - held.frames, 'frames after the release').toBe(1);
+    expect(settled.multisampled, 'the frame after the release, multisampled').toBeGreaterThan(held.multisampled);
+    // the same orbit (the same pointer path), its last frame drawn while the pointer is still down
+    const reference = await referenceFrame(LOBE, path, pressAndDrag);
+    expect(settled.frame === reference, 'settled frame = context-multisampled frame, byte for byte').toBe(true);
+    expect(page.errors).toEqual([]);
+    await page.close();
   });
 });

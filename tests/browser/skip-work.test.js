@@ -1,7 +1,7 @@
 // Skip what a scene does not need, measured: WebGL draw calls are counted in the page itself. That an idle page draws
 // nothing is checked where every page is loaded under the policy (csp.test.js).
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { launchBrowser, open, settle, widget } from './helpers.js';
+import { launchBrowser, open, settle, untilSteady, widget } from './helpers.js';
 
 let browser;
 beforeAll(async () => {
@@ -12,22 +12,23 @@ afterAll(async () => {
 });
 
 const draws = (page) => page.evaluate(() => window.__drawCalls);
+/** Waits until the page has drawn more than `n` calls (a frame it owes). */
+const untilDrawsAfter = (page, n) => page.waitForFunction((k) => window.__drawCalls > k, { timeout: 30_000 }, n);
 
 describe('views out of sight draw nothing', () => {
   it('a widget scrolled out of view does not draw on a state change, and draws once back in view', async () => {
     const page = await open(browser, 'fresnel.html');
     await widget(page, 'zones');
     await page.$eval('[data-slot="fresnel-zones"]', (el) => el.scrollIntoView());
-    await settle(page, 800);
+    await untilSteady(page, 'drawCalls'); // its frames and its zone shares' read-back done
     await page.evaluate(() => window.scrollTo(0, 0)); // the zones view is far below
-    await settle(page, 500);
+    await untilSteady(page, 'drawCalls');
     const before = await draws(page);
     await page.evaluate(() => globalThis.__shadingLab.widgets.zones.update({ mode: 'zones-lh' }));
-    await settle(page, 800);
+    await settle(page, 800); // (a wait for what must not come: it can let a wrong draw through, never fail a right one)
     expect(await draws(page)).toBe(before);
     await page.$eval('[data-slot="fresnel-zones"]', (el) => el.scrollIntoView());
-    await settle(page, 800);
-    expect(await draws(page)).toBeGreaterThan(before);
+    await untilDrawsAfter(page, before);
     await page.close();
   });
 
@@ -39,14 +40,14 @@ describe('views out of sight draw nothing', () => {
         Object.defineProperty(document, 'hidden', { configurable: true, get: () => h });
         document.dispatchEvent(new Event('visibilitychange'));
       }, hidden);
+    await untilSteady(page, 'drawCalls'); // its first frames and its zone shares' read-back done
     await setHidden(true);
     const before = await draws(page);
     await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].update({ lightTheta: 20 }));
-    await settle(page, 600);
+    await settle(page, 600); // (a wait for what must not come, as above)
     expect(await draws(page)).toBe(before);
     await setHidden(false);
-    await settle(page, 600);
-    expect(await draws(page)).toBeGreaterThan(before);
+    await untilDrawsAfter(page, before);
     await page.close();
   });
 });
@@ -64,18 +65,19 @@ describe('compile only what is shown (the sources WebGL actually compiles)', () 
     });
     // reload the widget's programs under the recorder: a fresh page would race it, so record from here on
     await widget(page, 'fresnel-zones');
-    await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].update({ shape: 'torusknot' }));
-    await settle(page, 500);
+    // each change waits until its frames and its zone shares (and their programs) are done drawing
+    const change = async (partial) => {
+      await page.evaluate((p) => globalThis.__shadingLab.widgets['fresnel-zones'].update(p), partial);
+      await untilSteady(page, 'drawCalls');
+    };
+    await change({ shape: 'torusknot' });
     const sources = () => page.evaluate(() => window.__sources);
     expect((await sources()).join('\n')).not.toMatch(/ndfGGX|visibilitySmith/);
-    await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].update({ mode: 'zones-lh-weighted' }));
-    await settle(page, 2500);
+    await change({ mode: 'zones-lh-weighted' });
     const afterWeighted = await sources();
     expect(afterWeighted.some((s) => /float ndfGGX/.test(s))).toBe(true);
-    await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].update({ mode: 'zones-nv' }));
-    await settle(page, 500);
-    await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].update({ mode: 'zones-lh-weighted' }));
-    await settle(page, 2500);
+    await change({ mode: 'zones-nv' });
+    await change({ mode: 'zones-lh-weighted' });
     expect((await sources()).length).toBe(afterWeighted.length);
     await page.close();
   });

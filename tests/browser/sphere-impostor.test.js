@@ -3,7 +3,7 @@
 // the box-filtered picture (each rim pixel's light integrated over the pixel, the exact circle parting sphere from
 // background): an edge antialiased without multisampling, neither stepped nor haloed.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { launchBrowser, open, settle, shot, widget, withPixels } from './helpers.js';
+import { launchBrowser, open, shot, untilSteady, widget, withPixels } from './helpers.js';
 import { lightDirFromAngles } from '../../src/math/angles.js';
 import { linearToSrgb, srgbToLinear } from '../../src/math/color.js';
 
@@ -57,7 +57,7 @@ async function readSphere() {
   );
   await widget(page, 'diffuse-explorer');
   await page.addStyleTag({ content: '.sphere-labels, .viewport button { display: none !important; }' });
-  await settle(page, 800);
+  await untilSteady(page, 'drawCalls'); // the spheres drawn, nothing more to come
   const size = await page.$eval('.sphere-grid canvas', (c) => [c.width, c.height]);
   const image = await withPixels(page, await shot(page, '.sphere-grid canvas'), (img) => ({
     width: img.width,

@@ -112,8 +112,8 @@ describe('guided tour', () => {
       const canvas = await page.$('.tour-stage .widget-view canvas');
       if (canvas) {
         await canvas.evaluate((c) => c.scrollIntoView({ block: 'center' }));
-        await settle(page, 150);
-        expect(await distinctColors(page, await canvas.screenshot({ encoding: 'base64' })), where).toBeGreaterThan(8);
+        const colours = async () => distinctColors(page, await canvas.screenshot({ encoding: 'base64' }));
+        await expect.poll(colours, { timeout: 20_000, interval: 250, message: where }).toBeGreaterThan(8);
         await page.evaluate(() => window.scrollTo(0, 0));
       } else expect(await page.$$eval('.tour-stage tbody tr', (rows) => rows.length), where).toBeGreaterThan(5);
       expect(page.errors, where).toEqual([]);
@@ -291,29 +291,27 @@ describe('guided tour', () => {
         full: document.fullscreenElement?.id ?? null,
         message: document.querySelector('.tour-messages').textContent,
       }));
+    // full screen comes and goes asynchronously: each outcome is polled for
+    const poll = (fn) => expect.poll(fn, { timeout: 10_000 });
+    const granted = () => status().then((s) => (s.full === 'tour' ? 'granted' : s.message));
     await page.keyboard.press('f');
-    await settle(page, 400);
+    await poll(async () => /^granted$|did not allow full screen/.test(await granted())).toBe(true);
     const afterKey = await status();
-    expect(afterKey.full === 'tour' || /did not allow full screen/.test(afterKey.message)).toBe(true);
     if (afterKey.full) {
       expect(await page.$eval('.tour-fullscreen', (b) => b.textContent)).toBe('Exit full screen');
       await page.click('.tour-fullscreen');
-      await settle(page, 400);
-      expect((await status()).full).toBeNull();
+      await poll(async () => (await status()).full).toBeNull();
       await page.click('.tour-fullscreen');
-      await settle(page, 400);
-      expect((await status()).full).toBe('tour');
+      await poll(async () => (await status()).full).toBe('tour');
     }
     // a refusal (here: the Fullscreen API taken away) gives a message, not an error
     if ((await status()).full) await page.click('.tour-fullscreen');
-    await settle(page, 300);
-    expect((await status()).full).toBeNull();
+    await poll(async () => (await status()).full).toBeNull();
     await page.evaluate(
       () => void Object.defineProperty(Document.prototype, 'fullscreenEnabled', { get: () => false }),
     );
     await page.click('.tour-fullscreen');
-    await settle(page, 200);
-    expect((await status()).message).toMatch(/did not allow full screen/);
+    await poll(async () => (await status()).message).toMatch(/did not allow full screen/);
     console.log(`tour: full screen by key ${afterKey.full ? 'granted' : 'refused'} in this Chromium`);
     expect(page.errors).toEqual([]);
     await page.close();

@@ -1,14 +1,16 @@
-// Multisampling once the changes pause: on software WebGL a multisampled frame of a large view costs about twice a
-// plain one. A frame that follows another within `quietMs` (a drag) is drawn plainly on the canvas (its context
-// made without multisampling), and once the changes pause the same state is drawn once more into a multisampled
-// framebuffer and resolved onto the canvas, as a multisampled context does with every frame. A frame after a pause
-// (a lone change: a click) goes straight to the multisampled one.
+// Multisampling once a gesture ends: on software WebGL a multisampled frame of a large view costs about twice a
+// plain one. A frame drawn while the reader holds a gesture on the widget (a pointer pressed on its view or its
+// controls, a held key, a turning wheel: held-input.js) is drawn plainly on the canvas (its context made without
+// multisampling), and once the gesture ends the same state is drawn once more into a multisampled framebuffer and
+// resolved onto the canvas, as a multisampled context does with every frame. Any other frame (a click, a typed
+// value, a parent's message) goes straight to the multisampled one. The input decides, not the time between frames:
+// a slow machine spaces a drag's frames out but draws them plainly all the same.
 //
 // three.js draws into that framebuffer through a render target marked as its WebXR views' are (a framebuffer that
 // stands for the display): its own colours (a scene's background, its built-in materials) are encoded and tone
 // mapped there as on the canvas, not left in the working colour space as in a render target read as a texture.
 import * as THREE from 'three';
-import { createSettledTask } from './render-loop.js';
+import { watchHeldInput } from '../ui/held-input.js';
 
 const SAMPLES = 4; // what a WebGL context's own multisampling gives (Chromium, SwiftShader included)
 
@@ -56,25 +58,18 @@ function createMultisampledFramebuffer(renderer) {
 
 /**
  * `draw(renderer)` draws a frame into the renderer's current target (the canvas, or the multisampled framebuffer);
- * `invalidate()` asks the render loop for a frame. Returns `frame()`, the render loop's draw, which picks plain or
- * multisampled; `drawSettled()`, the multisampled frame now (for a still read from the canvas); `drop()`, after a
- * context loss; `dispose()`.
+ * `invalidate()` asks the render loop for a frame; the gestures that count are those on `element`'s widget.
+ * Returns `frame()`, the render loop's draw, which picks plain or multisampled; `drawSettled()`, the multisampled
+ * frame now (for a still read from the canvas); `drop()`, after a context loss; `dispose()`.
  */
-export function createSettledAntialias(renderer, draw, invalidate, { quietMs = 130 } = {}) {
+export function createSettledAntialias(renderer, draw, invalidate, element) {
   const size = new THREE.Vector2();
   // three.js's handle on the framebuffer (its size, its viewport), in the canvas's colour space
   const target = new THREE.WebGLRenderTarget(1, 1, { colorSpace: renderer.outputColorSpace });
   target.isXRRenderTarget = true; // what three.js checks to treat a target's framebuffer as the display
   let multisampled = null; // made on first use, and again after a context loss
-  let lastFrameAt = -Infinity;
-  let due = false; // the pause came: the next frame is the multisampled one
-  const settle = createSettledTask(
-    () => {
-      due = true;
-      invalidate();
-    },
-    { quietMs, maxWaitMs: Infinity },
-  );
+  let plainShown = false; // the canvas holds a plain frame: the gesture's end draws it multisampled
+  const input = watchHeldInput(element, () => plainShown && invalidate());
 
   const drawSettled = () => {
     renderer.getDrawingBufferSize(size);
@@ -91,23 +86,16 @@ export function createSettledAntialias(renderer, draw, invalidate, { quietMs = 1
 
   return {
     frame() {
-      const now = performance.now();
-      if (due || now - lastFrameAt >= quietMs) {
-        due = false;
-        settle.cancel();
-        drawSettled();
-      } else {
-        draw(renderer);
-        settle.schedule();
-      }
-      lastFrameAt = now;
+      plainShown = input.held;
+      if (plainShown) draw(renderer);
+      else drawSettled();
     },
     drawSettled,
     drop() {
       multisampled = null; // its objects died with the context
     },
     dispose() {
-      settle.cancel();
+      input.dispose();
       multisampled?.dispose();
       target.dispose();
     },

@@ -4,8 +4,8 @@
 // before the view returns, and the frame redrawn from the widget's state.
 //
 // antialias: true (the context multisamples every frame), false (a view that smooths its own edges), or 'settled'
-// (plain frames during a drag, one multisampled frame once it pauses: settled-antialias.js; stills read from the
-// canvas get the multisampled one).
+// (plain frames while a gesture on the widget is held, one multisampled frame once it ends: settled-antialias.js;
+// stills read from the canvas get the multisampled one).
 //
 // onContextLost(): GPU content the widget filled once and keeps (a prefiltered environment, an
 // accumulation buffer) is gone with the context; drop it so that draw() builds it again.
@@ -85,7 +85,7 @@ export function createViewport(container, { draw, onResize, onContextLost, label
   if (label) describeCanvas(canvas, label); // the first words; a widget may describe the view better later
   const renderer = new THREE.WebGLRenderer({ canvas, context: context.gl, antialias: contextAntialias });
   renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
-  if (antialias === 'settled') settled = createSettledAntialias(renderer, draw, () => loop.invalidate());
+  if (antialias === 'settled') settled = createSettledAntialias(renderer, draw, () => loop.invalidate(), holder);
   const drawFrame = () => draw(renderer);
   loop = createRenderLoop(holder, settled?.frame ?? drawFrame, () => context.live);
   const drawStill = settled?.drawSettled ?? drawFrame;
