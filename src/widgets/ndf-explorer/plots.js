@@ -22,16 +22,24 @@ const linearSpec = (curves) => ({
   height: 260,
 });
 
-function absoluteLogSpec(curves) {
+/**
+ * The log plot's axes for `curves` (D in 1/sr over θh, down to 1e-7 of the highest peak), and `clip`, which leaves
+ * out the values below that floor. The NDF exercise draws its hidden highlight on these same axes.
+ */
+export function logAxes(curves) {
   const peak = Math.max(...curves.map((c) => c.values[0]), 1e-3);
+  const clip = (values) => Array.from(values, (v) => (v > peak * 1e-7 ? v : null));
+  return { ...axis, yLabel: 'D (1/sr)', y: { min: peak * 1e-7, max: peak * 2, log: true }, clip };
+}
+
+function absoluteLogSpec(curves) {
+  const { clip, ...axes } = logAxes(curves);
   return {
-    ...axis,
+    ...axes,
     title: 'D(θh), log scale: the tails',
-    yLabel: 'D (1/sr)',
-    y: { min: peak * 1e-7, max: peak * 2, log: true },
     legend: false,
     series: seriesOf(curves),
-    data: [ANGLES, ...curves.map((c) => c.values.map((v) => (v > peak * 1e-7 ? v : null)))],
+    data: [ANGLES, ...curves.map((c) => clip(c.values))],
     filename: 'ndf-log',
     height: 260,
   };
