@@ -19,6 +19,7 @@ import { setInlineTex } from '../core/ui/inline-tex.js';
 import { typesetFormulas } from '../core/ui/formulas.js';
 import { publish, unregisterWidget } from '../core/framework/debug-hooks.js';
 import { createGradedLink } from '../exercises/graded-message.js';
+import { createAnswerControls } from '../exercises/answer-controls.js';
 import { drawsHidden, hiddenFor, readSeed } from '../exercises/question-seed.js';
 
 const listEl = document.getElementById('exercise-list');
@@ -147,10 +148,10 @@ function answerField(exercise, grader) {
     );
     return { node: fieldset, read: () => fieldset.querySelector('input:checked')?.value ?? '' };
   }
-  return {
-    node: el('p', { className: 'exercise-answer', textContent: 'Answer with the widget’s controls, then check.' }),
-    read: () => null,
-  };
+  // the sliders of the keys the grader reads join `controls` once the widget is up (answer-controls.js)
+  const controls = el('div', { className: 'exercise-controls' });
+  const note = el('p', { textContent: 'Answer with the slider here or the widget’s own controls, then check.' });
+  return { node: el('div', { className: 'exercise-answer' }, note, controls), read: () => null, controls };
 }
 
 /** Grades the current answer; null when there is nothing to grade yet (an empty or unreadable box). */
@@ -307,6 +308,18 @@ function seedLine(exercise) {
   return el('p', { className: 'exercise-seed' }, text, again);
 }
 
+/** The form's sliders for the keys a state exercise's grader reads, tied to the widget both ways. */
+async function answerControls(parent, exercise, grader, widget) {
+  const schema = await schemaOf(exercise.widget);
+  return createAnswerControls(parent, {
+    schema,
+    keys: grader.reads ?? [],
+    locked: exercise.locked,
+    state: widget.getState(),
+    onInput: (partial) => widget.update(partial),
+  });
+}
+
 async function openExercise(exercise, { focus = false } = {}) {
   closeCurrent();
   if (exercise.kind === 'shader') return openShaderExercise(exercise, { focus });
@@ -361,10 +374,14 @@ async function openExercise(exercise, { focus = false } = {}) {
     syncUrl: false,
     state: exercise.state,
     locked: exercise.locked,
-    onStateChange: (state) => mine.preview?.update(state),
+    onStateChange: (state) => {
+      mine.preview?.update(state);
+      mine.controls?.sync(state);
+    },
   });
   if (current !== mine) return widget.dispose(); // another exercise was opened meanwhile
   current.widget = widget;
+  if (field.controls) current.controls = await answerControls(field.controls, exercise, grader, widget);
   current.preview?.update(widget.getState());
   publish('exercise', { id: exercise.id, hidden, ready: true });
 }
