@@ -242,6 +242,12 @@ function promptOf(exercise) {
   return prompt;
 }
 
+/** A chosen exercise's heading takes the focus and the top of the window: the question and Check below it. */
+function focusHeading(heading) {
+  heading.focus({ preventScroll: true });
+  heading.scrollIntoView({ block: 'start' });
+}
+
 /** The parts every exercise shows first: chapter, title, progress line and prompt. */
 function exerciseHeader(exercise) {
   const heading = el('h2', { tabIndex: -1, textContent: exercise.title });
@@ -267,7 +273,7 @@ async function openShaderExercise(exercise, { focus }) {
   articleEl.replaceChildren(...parts, body);
   renderStatus();
   renderList();
-  if (focus) heading.focus();
+  if (focus) focusHeading(heading);
   const mine = current;
   const [{ createCodeEditor }, { gradeOnGpu }, { createShaderExercise }] = await Promise.all([
     import('../core/ui/code-editor.js'),
@@ -351,7 +357,7 @@ async function openExercise(exercise, { focus = false } = {}) {
   articleEl.replaceChildren(...parts, ...question, pictures, form, feedback, slot);
   renderStatus();
   renderList();
-  if (focus) heading.focus(); // a chosen exercise takes the focus; the first one shown on load does not
+  if (focus) focusHeading(heading); // a chosen exercise takes the focus; the first one shown on load does not
   current.preview = createPreview(pictures, exercise, hidden);
   if (!exercise.widget) {
     publish('exercise', { id: exercise.id, hidden, ready: true });
@@ -395,8 +401,11 @@ function route(event) {
     renderList();
     return;
   }
-  if (current?.exercise === exercise) return;
   if (event?.type === 'hashchange') foldList(); // a link picked in the unfolded list on a phone folds it again
+  if (current?.exercise === exercise) {
+    if (event?.type === 'hashchange') focusHeading(articleEl.querySelector('h2')); // the one shown, picked again
+    return;
+  }
   openExercise(exercise, { focus: event?.type === 'hashchange' });
 }
 

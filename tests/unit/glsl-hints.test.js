@@ -48,7 +48,7 @@ describe('GLSL hints', () => {
     );
   });
 
-  it('no hint for another message or outside the code; the feedback and the editor get the hint after the message', () => {
+  it('no hint for other messages or outside the code; feedback and editor get the hint after the message', () => {
     const text = code('  return f0;');
     expect(hintFor({ line: 2, message: 'a while loop is not allowed' }, text, F)).toBeNull();
     expect(withHints([{ line: 0, message: "'m5' : undeclared identifier" }], text, F)).toEqual([
