@@ -4,9 +4,8 @@
 import { createPlot } from '../core/ui/plot.js';
 import { displayValue, peakOf } from './sphere-image.js';
 import { fmt, highlightSphere, materialSphere } from './graders.js';
-import { ANGLES, ndfCurves } from '../widgets/ndf-explorer/model.js';
+import { ANGLES, logAxes, ndfCurves } from '../widgets/ndf-explorer/model.js';
 import { NDF_KEYS } from '../widgets/ndf-explorer/schema.js';
-import { logAxes } from '../widgets/ndf-explorer/plots.js';
 
 /** A figure with a canvas showing a grey radiance image at an exposure, one canvas pixel per grid cell. */
 function sphereFigure(parent, caption) {
@@ -35,6 +34,21 @@ function sphereFigure(parent, caption) {
   };
 }
 
+/** The hidden NDF's plot: its D(θh) among the explorer's five curves at this width, on its log plot's axes. */
+export function hiddenNdfPlot(params, hidden) {
+  const curves = ndfCurves({ hwhm: params.hwhm, abcA2: params.abcA2, sgdP: params.sgdP, ndfs: NDF_KEYS });
+  const { clip, ...axes } = logAxes(curves);
+  return {
+    ...axes,
+    title: 'The highlight’s NDF: D(θh), log scale, on the axes of the explorer’s log plot',
+    series: [{ label: 'hidden NDF', stroke: '#d55e00' }],
+    data: [ANGLES, clip(curves.find((c) => c.key === hidden).values)],
+    height: 260,
+    legend: false,
+    filename: 'highlight-profile',
+  };
+}
+
 /** The media widget's depth slider is in log₁₀ metres, the answer in metres: the line says both. */
 function depthLine(parent) {
   const line = document.createElement('p');
@@ -45,7 +59,7 @@ function depthLine(parent) {
       if (!Number.isFinite(state.distance)) return void (line.textContent = '');
       line.textContent =
         `Depth on the widget: ${fmt(10 ** state.distance)} m (its slider shows log₁₀ of the depth in metres: ` +
-        `${fmt(state.distance)}). Answer in metres.`;
+        `${fmt(state.distance).replace(/^-/, '−')}). Answer in metres.`;
     },
   };
 }
@@ -65,21 +79,10 @@ const PREVIEWS = {
     const peak = peakOf(image);
     sphereFigure(parent, 'The highlight').draw(image, 1 / peak);
     sphereFigure(parent, 'Its tail (30× brighter)').draw(image, 30 / peak);
-    // the explorer's curves at this width: the hidden one drawn on the axes of the explorer's log plot
-    const curves = ndfCurves({ hwhm: params.hwhm, abcA2: params.abcA2, sgdP: params.sgdP, ndfs: NDF_KEYS });
-    const { clip, ...axes } = logAxes(curves);
     const holder = document.createElement('div');
     holder.className = 'exercise-profile';
     parent.append(holder);
-    const plot = createPlot(holder, {
-      ...axes,
-      title: 'The highlight’s NDF: D(θh), log scale, on the axes of the explorer’s log plot',
-      series: [{ label: 'hidden NDF', stroke: '#d55e00' }],
-      data: [ANGLES, clip(curves.find((c) => c.key === hidden).values)],
-      height: 260,
-      legend: false,
-      filename: 'highlight-profile',
-    });
+    const plot = createPlot(holder, hiddenNdfPlot(params, hidden));
     return { update() {}, dispose: () => plot.dispose() };
   },
 };

@@ -1,13 +1,8 @@
 // The NDF explorer's two plots: D(θh) on a linear axis, and on a log axis for the tails; with a measured slice
 // the log plot puts every curve over its own peak and adds the measurement.
 import { createPlot } from '../../core/ui/plot.js';
-import { ANGLES, measuredOnAngles } from './model.js';
+import { ANGLES, THETA_AXIS as axis, logAxes, measuredOnAngles } from './model.js';
 
-const axis = {
-  xLabel: 'Angle of the microfacet normal from n, θh (degrees)',
-  x: { min: 0, max: 90 },
-  xValues: (u, t) => t.map((v) => `${v}°`),
-};
 const seriesOf = (curves) => curves.map((c) => ({ label: c.label, stroke: c.stroke, dash: c.dash }));
 
 const linearSpec = (curves) => ({
@@ -21,16 +16,6 @@ const linearSpec = (curves) => ({
   filename: 'ndf-linear',
   height: 260,
 });
-
-/**
- * The log plot's axes for `curves` (D in 1/sr over θh, down to 1e-7 of the highest peak), and `clip`, which leaves
- * out the values below that floor. The NDF exercise draws its hidden highlight on these same axes.
- */
-export function logAxes(curves) {
-  const peak = Math.max(...curves.map((c) => c.values[0]), 1e-3);
-  const clip = (values) => Array.from(values, (v) => (v > peak * 1e-7 ? v : null));
-  return { ...axis, yLabel: 'D (1/sr)', y: { min: peak * 1e-7, max: peak * 2, log: true }, clip };
-}
 
 function absoluteLogSpec(curves) {
   const { clip, ...axes } = logAxes(curves);
