@@ -315,8 +315,7 @@ function seedLine(exercise) {
 }
 
 /** The form's sliders for the keys a state exercise's grader reads, tied to the widget both ways. */
-async function answerControls(parent, exercise, grader, widget) {
-  const schema = await schemaOf(exercise.widget);
+function answerControls(parent, { exercise, grader, schema, widget }) {
   return createAnswerControls(parent, {
     schema,
     keys: grader.reads ?? [],
@@ -363,8 +362,8 @@ async function openExercise(exercise, { focus = false } = {}) {
     publish('exercise', { id: exercise.id, hidden, ready: true });
     return;
   }
+  const schema = await schemaOf(exercise.widget);
   if (exercise.locked.length) {
-    const schema = await schemaOf(exercise.widget);
     const names = exercise.locked.map((k) => schema[k].label ?? k);
     slot.append(
       el('p', {
@@ -387,7 +386,7 @@ async function openExercise(exercise, { focus = false } = {}) {
   });
   if (current !== mine) return widget.dispose(); // another exercise was opened meanwhile
   current.widget = widget;
-  if (field.controls) current.controls = await answerControls(field.controls, exercise, grader, widget);
+  if (field.controls) current.controls = answerControls(field.controls, { exercise, grader, schema, widget });
   current.preview?.update(widget.getState());
   publish('exercise', { id: exercise.id, hidden, ready: true });
 }

@@ -222,7 +222,7 @@ describe('exercises', () => {
 
   it('Which NDF: the question number is in the address and on the page, and a reload shows the same one', async () => {
     const page = await open(browser, 'exercises.html?seed=77#which-ndf', { width: 1280, height: 1000 });
-    await page.waitForFunction(() => globalThis.__shadingLab.exercise?.id === 'which-ndf');
+    await page.waitForFunction(() => globalThis.__shadingLab?.exercise?.id === 'which-ndf');
     const hidden = await page.evaluate(() => globalThis.__shadingLab.exercise.hidden);
     expect(await page.$eval('.exercise-seed', (el) => el.textContent)).toMatch(/^Question 77 \(seed=77 /);
     await page.click('.exercise-again');
@@ -231,11 +231,11 @@ describe('exercises', () => {
     expect(seed).not.toBe('77');
     const drawn = await page.evaluate(() => globalThis.__shadingLab.exercise.hidden);
     await page.reload({ waitUntil: 'load' });
-    await page.waitForFunction(() => globalThis.__shadingLab.exercise?.id === 'which-ndf');
+    await page.waitForFunction(() => globalThis.__shadingLab?.exercise?.id === 'which-ndf');
     expect(await page.evaluate(() => globalThis.__shadingLab.exercise.hidden)).toBe(drawn);
     expect(await page.$eval('.exercise-seed', (el) => el.textContent)).toContain(`Question ${seed} `);
     await page.goto(new URL('exercises.html?seed=77#which-ndf', page.url()).href, { waitUntil: 'load' });
-    await page.waitForFunction(() => globalThis.__shadingLab.exercise?.id === 'which-ndf');
+    await page.waitForFunction(() => globalThis.__shadingLab?.exercise?.id === 'which-ndf');
     expect(await page.evaluate(() => globalThis.__shadingLab.exercise.hidden)).toBe(hidden);
     expect(page.errors).toEqual([]);
     await page.close();
