@@ -436,6 +436,7 @@ export const GRADERS = {
       }
       return problems;
     },
+    /** The hidden NDF: the one named, or one drawn by `random` (the page seeds it: the same seed, the same NDF). */
     hide(params, random = Math.random) {
       if (params.hidden !== 'random') return params.hidden;
       const kinds = Object.keys(NDF_NAMES);
@@ -444,11 +445,17 @@ export const GRADERS = {
     grade({ answer, params, tolerance, hidden }) {
       const profiles = ndfProfiles(params.hwhm, params);
       const mine = profileFactor(profiles[answer], profiles[hidden], params.floor);
+      const where = `wherever the highlight is above ${pct(params.floor)} of its peak`;
       const verdict =
-        `${NDF_NAMES[answer]}’s profile is within a factor ${fmt(mine.factor, 3)} of the ` +
-        `highlight’s wherever the highlight is above ${pct(params.floor)} of its peak`;
+        mine.factor - 1 < 1e-9
+          ? `${NDF_NAMES[answer]} made it: its profile is the highlight’s`
+          : `${NDF_NAMES[answer]}’s profile is within ${pct(mine.factor - 1)} of the highlight’s ${where}`;
       if (mine.factor <= tolerance)
-        return { ok: true, summary: `Right: ${verdict} (${fmt(tolerance, 3)} allowed).`, details: [] };
+        return {
+          ok: true,
+          summary: `Right: ${verdict} (profiles within ${pct(tolerance - 1)} of each other ${where} count).`,
+          details: [],
+        };
       const side =
         profiles[answer][Math.round(mine.deg / 0.25)] > profiles[hidden][Math.round(mine.deg / 0.25)]
           ? 'brighter'

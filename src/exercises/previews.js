@@ -1,8 +1,11 @@
 // Pictures some graders show next to the prompt, drawn from the same JS math they grade with: the target
-// sphere beside the student's (sphere-match), and the hidden NDF's highlight and profile (ndf-profile).
+// sphere beside the student's (sphere-match), the hidden NDF's highlight and profile (ndf-profile), and the
+// widget's depth in metres, the answer's unit, beside its log₁₀ slider (transmittance-depth).
 import { createPlot } from '../core/ui/plot.js';
 import { displayValue, peakOf } from './sphere-image.js';
-import { highlightSphere, materialSphere, ndfProfiles } from './graders.js';
+import { fmt, highlightSphere, materialSphere } from './graders.js';
+import { ANGLES, logAxes, ndfCurves } from '../widgets/ndf-explorer/model.js';
+import { NDF_KEYS } from '../widgets/ndf-explorer/schema.js';
 
 /** A figure with a canvas showing a grey radiance image at an exposure, one canvas pixel per grid cell. */
 function sphereFigure(parent, caption) {
@@ -31,7 +34,39 @@ function sphereFigure(parent, caption) {
   };
 }
 
+/** The hidden NDF's plot: its D(θh) among the explorer's five curves at this width, on its log plot's axes. */
+export function hiddenNdfPlot(params, hidden) {
+  const curves = ndfCurves({ hwhm: params.hwhm, abcA2: params.abcA2, sgdP: params.sgdP, ndfs: NDF_KEYS });
+  const { clip, ...axes } = logAxes(curves);
+  return {
+    ...axes,
+    title: 'The highlight’s NDF: D(θh), log scale, on the axes of the explorer’s log plot',
+    series: [{ label: 'hidden NDF', stroke: '#d55e00' }],
+    data: [ANGLES, clip(curves.find((c) => c.key === hidden).values)],
+    height: 260,
+    legend: false,
+    filename: 'highlight-profile',
+  };
+}
+
+/** The media widget's depth slider is in log₁₀ metres, the answer in metres: the line says both. */
+function depthLine(parent) {
+  const line = document.createElement('p');
+  line.className = 'exercise-readout';
+  parent.append(line);
+  return {
+    update(state) {
+      if (!Number.isFinite(state.distance)) return void (line.textContent = '');
+      line.textContent =
+        `Depth on the widget: ${fmt(10 ** state.distance)} m (its slider shows log₁₀ of the depth in metres: ` +
+        `${fmt(state.distance).replace(/^-/, '−')}). Answer in metres.`;
+    },
+  };
+}
+
 const PREVIEWS = {
+  'transmittance-depth': (parent) => depthLine(parent),
+
   'sphere-match'(parent, { params }) {
     const target = sphereFigure(parent, 'Target');
     const yours = sphereFigure(parent, 'Yours (F0 and α from the controls)');
@@ -44,23 +79,10 @@ const PREVIEWS = {
     const peak = peakOf(image);
     sphereFigure(parent, 'The highlight').draw(image, 1 / peak);
     sphereFigure(parent, 'Its tail (30× brighter)').draw(image, 30 / peak);
-    const xs = Float64Array.from({ length: 360 }, (_, i) => i * 0.25);
-    const profile = ndfProfiles(params.hwhm, params)[hidden].map((v) => Math.max(v, 1e-6));
     const holder = document.createElement('div');
     holder.className = 'exercise-profile';
     parent.append(holder);
-    const plot = createPlot(holder, {
-      title: 'The highlight’s profile: D(θh) / D(0)',
-      xLabel: 'θh (degrees)',
-      yLabel: 'D / D(0)',
-      x: { min: 0, max: Math.min(90, 8 * params.hwhm) },
-      y: { log: true, min: 1e-4, max: 1 },
-      series: [{ label: 'hidden NDF', stroke: '#d55e00' }],
-      data: [xs, profile],
-      height: 220,
-      legend: false,
-      filename: 'highlight-profile',
-    });
+    const plot = createPlot(holder, hiddenNdfPlot(params, hidden));
     return { update() {}, dispose: () => plot.dispose() };
   },
 };

@@ -8,6 +8,8 @@
 import { termEntry, termLabel } from '../math/catalogue/index.js';
 import { fmt } from './graders.js';
 import { GRADED_SLOTS, channelsOf } from './shader-slots.js';
+import { withHints } from './glsl-hints.js';
+import { SLOTS } from '../core/custom/slots.js';
 
 /** A number as feedback shows it (graders.js's fmt, 2 digits unless asked), with a short exponent: 3.2e7, 1e-4. */
 export function fmtShort(x, digits = 2) {
@@ -169,10 +171,16 @@ export function gradeFeedback(exercise, points, comparison) {
   };
 }
 
-/** Feedback for code that does not get to run: static-check problems or compile errors, at the student's lines. */
-export function problemFeedback(problems, what) {
-  const lines = problems.map((p) => (p.line ? `Line ${p.line}: ${p.message}` : p.message));
-  return { passed: false, score: 0, summary: what, details: lines, problems };
+/**
+ * Feedback for code that does not get to run: static-check problems or compile errors, at the student's lines,
+ * each with its hint in plain words when it is a common mistake (glsl-hints.js), in the list and in the editor.
+ */
+export function problemFeedback(problems, what, code, slotKey) {
+  const told = withHints(problems, code, SLOTS[slotKey].signature).map((p) =>
+    p.hint ? { ...p, message: `${p.message}. In plain words: ${p.hint}` } : p,
+  );
+  const lines = told.map((p) => (p.line ? `Line ${p.line}: ${p.message}` : p.message));
+  return { passed: false, score: 0, summary: what, details: lines, problems: told };
 }
 
 /**
@@ -183,11 +191,13 @@ export function problemFeedback(problems, what) {
 export function gradeShader(exercise, code, { parse, evaluate }) {
   const slot = GRADED_SLOTS[exercise.slot];
   const parsed = parse(exercise.slot, code);
-  if (!parsed.ok) return problemFeedback(parsed.problems, 'Your code did not pass the static check:');
+  if (!parsed.ok)
+    return problemFeedback(parsed.problems, 'Your code did not pass the static check:', code, exercise.slot);
   const points = domainGrid(exercise.domain, Object.keys(slot.axes));
   const extra = exercise.plot ? plotPoints(exercise) : [];
   const out = evaluate(exercise.slot, code, [...points, ...extra].map(slot.gpuArgs));
-  if (!(out instanceof Float32Array)) return problemFeedback(out.errors, 'Your code does not compile:');
+  if (!(out instanceof Float32Array))
+    return problemFeedback(out.errors, 'Your code does not compile:', code, exercise.slot);
   const refs = referenceValues(exercise, points);
   const result = gradeFeedback(
     exercise,

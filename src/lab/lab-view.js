@@ -1,5 +1,6 @@
-// One canvas for the lab: a row of panels (approximations, reference, errors), each a res × res image from the
-// lab renderer, drawn with the exposure (or on the error scale), with HTML captions. Also owns the GPU side:
+// One canvas for the lab: panels (approximations, reference, errors), each a res × res image from the lab
+// renderer, drawn with the exposure (or on the error scale), in as many columns as fit (one row on a wide screen,
+// a grid on a phone), each with its HTML caption in a strip above it, never over the picture. Also owns the GPU side:
 // the lab renderer, each environment's maps and each DFG table, made when first asked for and kept for switching
 // back.
 import * as THREE from 'three';
@@ -40,7 +41,8 @@ export function createLabView(container, { label, resolution, slots = 1, frame, 
   captions.className = 'lab-captions';
   let lab = null;
   const resources = createLabResources();
-  const panels = createPanels();
+  const layout = createLayout(captions);
+  const panels = createPanels(layout);
   let again = false;
 
   const draw = (renderer) => {
@@ -61,7 +63,8 @@ export function createLabView(container, { label, resolution, slots = 1, frame, 
     resources.dispose();
     onReset?.();
   };
-  const viewport = createViewport(container, { draw, label, onContextLost });
+  const onResize = (width) => viewport && layout.fit(viewport.holder, width);
+  const viewport = createViewport(container, { draw, label, onContextLost, onResize });
   if (viewport) {
     viewport.holder.classList.add('lab-view');
     viewport.holder.append(captions);
@@ -79,8 +82,10 @@ export function createLabView(container, { label, resolution, slots = 1, frame, 
       panels.setDisplay(next);
       viewport?.invalidate();
     },
-    setAspect(panels) {
-      if (viewport) viewport.holder.style.aspectRatio = `${panels} / 1`;
+    /** How many panels the frame shows: the grid (columns, rows, the holder's height) follows. */
+    setPanels(count) {
+      layout.count = count;
+      if (viewport) layout.fit(viewport.holder, viewport.holder.clientWidth);
     },
     invalidate: () => viewport?.invalidate(),
     dispose() {
@@ -92,11 +97,45 @@ export function createLabView(container, { label, resolution, slots = 1, frame, 
   };
 }
 
+const CAPTION_STRIP = 38; // CSS px above each picture: two lines of the captions' 0.78rem text
+const MIN_PANEL = 140; // CSS px: narrower pictures go on more rows instead
+
 /**
- * The row of panels on the canvas: draw(renderer, lab, panels) shows each image of `lab` in its square, with the
- * exposure (or on the error scale) of setDisplay({ exposure, errorScale }).
+ * The panels' grid: as many columns as fit pictures at least MIN_PANEL wide (the last row may be short).
+ * fit(holder, width) sets the holder's aspect to rows of (square + caption strip) and lays the captions out on the
+ * same grid; cell(i, width, height) is panel i's square in CSS px, y from the top.
  */
-function createPanels() {
+function createLayout(captions) {
+  const grid = { count: 1, cols: 1, rows: 1 };
+  const columnsFor = (width) => Math.min(Math.max(Math.floor(width / MIN_PANEL), 1), grid.count);
+  return {
+    set count(n) {
+      grid.count = n;
+    },
+    fit(holder, width) {
+      if (width <= 0) return;
+      grid.cols = columnsFor(width);
+      grid.rows = Math.ceil(grid.count / grid.cols);
+      const cellHeight = width / grid.cols + CAPTION_STRIP;
+      holder.style.aspectRatio = `${width} / ${Math.round(grid.rows * cellHeight)}`;
+      captions.style.gridTemplateColumns = `repeat(${grid.cols}, minmax(0, 1fr))`;
+      captions.style.gridAutoRows = `${cellHeight}px`;
+      captions.style.setProperty('--caption-strip', `${CAPTION_STRIP}px`);
+    },
+    cell(i, width, height) {
+      const [w, h] = [width / grid.cols, height / grid.rows];
+      const side = Math.max(Math.min(w, h - CAPTION_STRIP), 1);
+      const [col, row] = [i % grid.cols, Math.floor(i / grid.cols)];
+      return { x: col * w + (w - side) / 2, y: row * h + CAPTION_STRIP, side };
+    },
+  };
+}
+
+/**
+ * The panels on the canvas: draw(renderer, lab, panels) shows each image of `lab` in its square of the layout,
+ * with the exposure (or on the error scale) of setDisplay({ exposure, errorScale }).
+ */
+function createPanels(layout) {
   const tone = viewMaterial({});
   const error = viewMaterial({ ERROR_VIEW: 1 });
   const pass = createFullscreenPass();
@@ -106,11 +145,10 @@ function createPanels() {
     draw(renderer, lab, panels) {
       const pr = renderer.getPixelRatio();
       renderer.getSize(size);
-      const w = size.x / panels.length;
       renderer.setScissorTest(true);
       panels.forEach((panel, i) => {
-        const side = Math.min(w, size.y);
-        const rect = [i * w + (w - side) / 2, (size.y - side) / 2, side, side];
+        const { x: left, y: top, side } = layout.cell(i, size.x, size.y);
+        const rect = [left, size.y - top - side, side, side]; // GL counts y from the bottom
         const m = panel.image === 'error' ? error : tone;
         m.uniforms.uImage.value = panel.image === 'reference' ? lab.reference : lab.approx(panel.slot ?? 0);
         m.uniforms.uOther.value = lab.reference;

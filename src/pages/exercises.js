@@ -20,8 +20,17 @@ import { typesetFormulas } from '../core/ui/formulas.js';
 import { publish, unregisterWidget } from '../core/framework/debug-hooks.js';
 import { createGradedLink } from '../exercises/graded-message.js';
 import { startPackageMode } from '../exercises/scorm/package-mode.js';
+import { createAnswerControls } from '../exercises/answer-controls.js';
+import { drawsHidden, hiddenFor, readSeed } from '../exercises/question-seed.js';
 
 const listEl = document.getElementById('exercise-list');
+const listBox = /** @type {HTMLDetailsElement} */ (document.getElementById('exercise-list-box'));
+const listSummary = document.getElementById('exercise-list-summary');
+// a phone folds the list into one line above the exercise (exercise-list.css); a wide screen keeps it open beside it
+const narrow = matchMedia('(max-width: 820px)');
+const foldList = () => (listBox.open = !narrow.matches);
+narrow.addEventListener('change', foldList);
+foldList();
 const articleEl = document.getElementById('exercise');
 const problemsEl = document.getElementById('exercise-problems');
 const pageParams = new URLSearchParams(location.search);
@@ -40,6 +49,12 @@ const el = (tag, props = {}, ...children) => {
 // a bad `origins=` entry is said on the page (the rest of the list still counts)
 if (gradedLink.notices.length)
   problemsEl.before(el('div', { className: 'notice' }, ...gradedLink.notices.map((n) => el('p', { textContent: n }))));
+
+// the question number of exercises with a hidden part: from the address, else drawn (and then written there)
+const firstSeed = readSeed(pageParams.get('seed'));
+let seed = firstSeed.seed;
+if (firstSeed.problem)
+  problemsEl.before(el('div', { className: 'notice' }, el('p', { textContent: firstSeed.problem })));
 
 let exercises = [];
 let current = null; // { exercise, widget, preview, hidden }
@@ -96,6 +111,8 @@ function renderList() {
     );
   });
   listEl.replaceChildren(summary, reset, ...groups);
+  const now = current ? ` · now: ${current.exercise.title}` : '';
+  listSummary.textContent = `All exercises (${solved} of ${exercises.length} solved)${now}`;
 }
 
 function renderStatus() {
@@ -134,10 +151,10 @@ function answerField(exercise, grader) {
     );
     return { node: fieldset, read: () => fieldset.querySelector('input:checked')?.value ?? '' };
   }
-  return {
-    node: el('p', { className: 'exercise-answer', textContent: 'Answer with the widget’s controls, then check.' }),
-    read: () => null,
-  };
+  // the sliders of the keys the grader reads join `controls` once the widget is up (answer-controls.js)
+  const controls = el('div', { className: 'exercise-controls' });
+  const note = el('p', { textContent: 'Answer with the slider here or the widget’s own controls, then check.' });
+  return { node: el('div', { className: 'exercise-answer' }, note, controls), read: () => null, controls };
 }
 
 /** Grades the current answer; null when there is nothing to grade yet (an empty or unreadable box). */
@@ -178,17 +195,43 @@ function check(read) {
   }
 }
 
+/** The exercises in the list's order: by chapter, then as the set lists them. */
+const inListOrder = () => CHAPTERS.flatMap((ch) => exercises.filter((e) => e.chapter === ch.key));
+
+/** The exercise to offer after `id`: the next one in the list not solved yet (from the top again), or null. */
+function nextAfter(id) {
+  const list = inListOrder();
+  const at = list.findIndex((e) => e.id === id);
+  const after = [...list.slice(at + 1), ...list.slice(0, Math.max(at, 0))];
+  return after.find((e) => !progress.of(e.id).solved) ?? null;
+}
+
+/** A solved exercise's feedback ends with a link to the next one (the Tab after Check reaches it). */
+function offerNext(box, id) {
+  const next = nextAfter(id);
+  box.append(
+    next
+      ? el(
+          'p',
+          { className: 'exercise-next' },
+          el('a', { href: `#${next.id}`, textContent: `Next exercise: ${next.title}` }),
+        )
+      : el('p', { className: 'exercise-next', textContent: 'That was the last one not yet solved: all are solved.' }),
+  );
+}
+
 function showFeedback(box, result) {
   box.className = `exercise-feedback ${result.ok ? 'ok' : 'wrong'}`;
   box.replaceChildren(
     el('p', { textContent: result.summary }),
     ...(result.details.length ? [el('ul', {}, ...result.details.map((d) => el('li', { textContent: d })))] : []),
   );
+  if (result.ok) offerNext(box, current.exercise.id);
 }
 
-/** After each counted Check: progress, the list, and the parent frame told. */
-function recordCheck(id, passed, score) {
-  progress.record(id, passed);
+/** After each counted Check of a new answer: progress, the list, and the parent frame told. */
+function recordCheck(id, passed, score, answer) {
+  if (!progress.record(id, passed, answer)) return;
   renderStatus();
   renderList();
   gradedLink.graded({ id, passed, score });
@@ -200,6 +243,12 @@ function promptOf(exercise) {
   setInlineTex(prompt, exercise.prompt);
   typesetFormulas(prompt);
   return prompt;
+}
+
+/** A chosen exercise's heading takes the focus and the top of the window: the question and Check below it. */
+function focusHeading(heading) {
+  heading.focus({ preventScroll: true });
+  heading.scrollIntoView({ block: 'start' });
 }
 
 /** The parts every exercise shows first: chapter, title, progress line and prompt. */
@@ -227,7 +276,7 @@ async function openShaderExercise(exercise, { focus }) {
   articleEl.replaceChildren(...parts, body);
   renderStatus();
   renderList();
-  if (focus) heading.focus();
+  if (focus) focusHeading(heading);
   const mine = current;
   const [{ createCodeEditor }, { gradeOnGpu }, { createShaderExercise }] = await Promise.all([
     import('../core/ui/code-editor.js'),
@@ -235,10 +284,14 @@ async function openShaderExercise(exercise, { focus }) {
     import('../exercises/shader-view.js'),
   ]);
   if (current !== mine) return; // another exercise was opened meanwhile
+  let graded = '';
   current.preview = createShaderExercise(body, exercise, {
     createEditor: createCodeEditor,
-    grade: (code) => gradeOnGpu(exercise, code),
-    onGraded: (result) => result.counted !== false && recordCheck(exercise.id, result.passed, result.score),
+    grade: (code) => gradeOnGpu(exercise, (graded = code)),
+    onGraded: (result) => {
+      if (result.counted !== false) recordCheck(exercise.id, result.passed, result.score, graded);
+      if (result.passed) offerNext(body.querySelector('.exercise-feedback'), exercise.id);
+    },
   });
   publish('exercise', { id: exercise.id, ready: true });
 }
@@ -250,11 +303,36 @@ function closeCurrent() {
   current = null;
 }
 
+/** The line that says which question is shown (its seed, kept in the address) and draws another one. */
+function seedLine(exercise) {
+  const url = new URL(location.href);
+  url.searchParams.set('seed', String(seed));
+  history.replaceState(history.state, '', url);
+  const again = el('button', { type: 'button', className: 'exercise-again', textContent: 'Another question' });
+  again.addEventListener('click', () => {
+    seed = readSeed(null).seed;
+    openExercise(exercise, { focus: true });
+  });
+  const text = `Question ${seed} (seed=${seed} in this page’s address: a reload or the same link shows it again). `;
+  return el('p', { className: 'exercise-seed' }, text, again);
+}
+
+/** The form's sliders for the keys a state exercise's grader reads, tied to the widget both ways. */
+function answerControls(parent, { exercise, grader, schema, widget }) {
+  return createAnswerControls(parent, {
+    schema,
+    keys: grader.reads ?? [],
+    locked: exercise.locked,
+    state: widget.getState(),
+    onInput: (partial) => widget.update(partial),
+  });
+}
+
 async function openExercise(exercise, { focus = false } = {}) {
   closeCurrent();
   if (exercise.kind === 'shader') return openShaderExercise(exercise, { focus });
   const grader = GRADERS[exercise.grader];
-  const hidden = grader.hide?.(exercise.params);
+  const hidden = hiddenFor(grader, exercise.params, seed);
   current = { exercise, widget: null, preview: null, hidden };
   // for tests: what a hidden question drew, and when it is up
   publish('exercise', { id: exercise.id, hidden, ready: false });
@@ -272,19 +350,23 @@ async function openExercise(exercise, { focus = false } = {}) {
   form.addEventListener('submit', (e) => {
     e.preventDefault();
     const result = check(field.read);
-    if (result.counted) recordCheck(exercise.id, result.ok, result.ok ? 1 : 0);
+    const answer = JSON.stringify([field.read(), current.widget?.getState() ?? null]);
+    if (result.counted) recordCheck(exercise.id, result.ok, result.ok ? 1 : 0, answer);
     showFeedback(feedback, result);
   });
   const slot = el('div', { className: 'exercise-widget' });
-  articleEl.replaceChildren(...parts, pictures, form, feedback, slot);
+  const question = drawsHidden(grader, exercise.params) ? [seedLine(exercise)] : [];
+  articleEl.replaceChildren(...parts, ...question, pictures, form, feedback, slot);
   renderStatus();
   renderList();
-  if (focus) heading.focus(); // a chosen exercise takes the focus; the first one shown on load does not
+  if (focus) focusHeading(heading); // a chosen exercise takes the focus; the first one shown on load does not
   current.preview = createPreview(pictures, exercise, hidden);
   if (!exercise.widget) {
     publish('exercise', { id: exercise.id, hidden, ready: true });
     return;
   }
+  // read once, before the mount (a widget whose chunk fails is explained in its place by the mount)
+  const schema = await schemaOf(exercise.widget).catch(() => null);
   const mine = current;
   const widget = await mountOrExplain(slot, exercise.widget, {
     widgets: WIDGETS,
@@ -292,12 +374,14 @@ async function openExercise(exercise, { focus = false } = {}) {
     syncUrl: false,
     state: exercise.state,
     locked: exercise.locked,
-    onStateChange: (state) => mine.preview?.update(state),
+    onStateChange: (state) => {
+      mine.preview?.update(state);
+      mine.controls?.sync(state);
+    },
   });
-  if (!widget) return; // it says why in its place, with Retry
+  if (!widget || !schema) return; // it says why in its place, with Retry
   if (current !== mine) return widget.dispose(); // another exercise was opened meanwhile
   if (exercise.locked.length) {
-    const schema = await schemaOf(exercise.widget); // loaded: the widget is up
     const names = exercise.locked.map((k) => schema[k].label ?? k);
     slot.prepend(
       el('p', {
@@ -307,6 +391,7 @@ async function openExercise(exercise, { focus = false } = {}) {
     );
   }
   current.widget = widget;
+  if (field.controls) current.controls = answerControls(field.controls, { exercise, grader, schema, widget });
   current.preview?.update(widget.getState());
   publish('exercise', { id: exercise.id, hidden, ready: true });
 }
@@ -320,7 +405,12 @@ function route(event) {
     renderList();
     return;
   }
-  if (current?.exercise !== exercise) openExercise(exercise, { focus: event?.type === 'hashchange' });
+  if (event?.type === 'hashchange') foldList(); // a link picked in the unfolded list on a phone folds it again
+  if (current?.exercise === exercise) {
+    if (event?.type === 'hashchange') focusHeading(articleEl.querySelector('h2')); // the one shown, picked again
+    return;
+  }
+  openExercise(exercise, { focus: event?.type === 'hashchange' });
 }
 
 function useSet({ exercises: list, problems }) {

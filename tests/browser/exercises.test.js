@@ -174,6 +174,73 @@ describe('exercises', () => {
     await page.close();
   }, 240_000);
 
+  it('one attempt per answer; the depth in metres; Next exercise by keyboard; the sliders beside Check', async () => {
+    const page = await open(browser, 'exercises.html', { width: 1280, height: 1000 });
+    await page.waitForSelector('#exercise-list a');
+    await choose(page, 'water-red-depth');
+    const status = () => page.$eval('.exercise-meta', (el) => el.textContent);
+    await typeAnswer(page, '5');
+    await check(page, { enter: true });
+    await check(page); // the same answer again, by Check
+    expect(await status()).toBe('Not solved yet: 1 attempt');
+    await typeAnswer(page, '6');
+    await check(page);
+    expect(await status()).toBe('Not solved yet: 2 attempts');
+
+    // the widget's slider is log₁₀ of the depth in metres: the line beside the answer says the depth in metres
+    await control(page, 'Depth, log₁₀ metres', -1.3);
+    await page.waitForFunction(() => document.querySelector('.exercise-readout').textContent.includes('0.0501 m'));
+    expect(10 ** -1.3).toBeCloseTo(0.0501, 4);
+    expect(await page.$eval('.exercise-readout', (el) => el.textContent)).toBe(
+      'Depth on the widget: 0.0501 m (its slider shows log₁₀ of the depth in metres: −1.3). Answer in metres.',
+    );
+
+    // solved: the feedback offers the next exercise not yet solved, in the list's order; Tab from Check reaches it
+    await typeAnswer(page, '14.5');
+    expect((await check(page)).text).toContain('Next exercise: When does a lake become a mirror?');
+    await page.focus('.exercise-check');
+    await page.keyboard.press('Tab');
+    expect(await page.evaluate(() => document.activeElement.textContent)).toBe(
+      'Next exercise: When does a lake become a mirror?',
+    );
+    await page.keyboard.press('Enter');
+    await page.waitForFunction(() => globalThis.__shadingLab.exercise?.id === 'lake-mirror');
+    await page.waitForFunction(() => globalThis.__shadingLab.exercise.ready);
+    await page.waitForSelector('#exercise-control-theta');
+
+    // the answer's slider beside Check moves the widget, and the widget's own control moves it back
+    await page.$eval('#exercise-control-theta', (input) => {
+      input.value = '77';
+      input.dispatchEvent(new Event('input', { bubbles: true }));
+    });
+    expect((await getState(page, 'exercise')).theta).toBe(77);
+    await control(page, 'Angle of incidence (°)', 50);
+    await page.waitForFunction(() => document.querySelector('#exercise-control-theta').value === '50');
+    expect(page.errors).toEqual([]);
+    await page.close();
+  }, 90_000);
+
+  it('Which NDF: the question number is in the address and on the page, and a reload shows the same one', async () => {
+    const page = await open(browser, 'exercises.html?seed=77#which-ndf', { width: 1280, height: 1000 });
+    await page.waitForFunction(() => globalThis.__shadingLab?.exercise?.id === 'which-ndf');
+    const hidden = await page.evaluate(() => globalThis.__shadingLab.exercise.hidden);
+    expect(await page.$eval('.exercise-seed', (el) => el.textContent)).toMatch(/^Question 77 \(seed=77 /);
+    await page.click('.exercise-again');
+    await page.waitForFunction(() => !document.querySelector('.exercise-seed').textContent.startsWith('Question 77 '));
+    const seed = new URL(page.url()).searchParams.get('seed');
+    expect(seed).not.toBe('77');
+    const drawn = await page.evaluate(() => globalThis.__shadingLab.exercise.hidden);
+    await page.reload({ waitUntil: 'load' });
+    await page.waitForFunction(() => globalThis.__shadingLab?.exercise?.id === 'which-ndf');
+    expect(await page.evaluate(() => globalThis.__shadingLab.exercise.hidden)).toBe(drawn);
+    expect(await page.$eval('.exercise-seed', (el) => el.textContent)).toContain(`Question ${seed} `);
+    await page.goto(new URL('exercises.html?seed=77#which-ndf', page.url()).href, { waitUntil: 'load' });
+    await page.waitForFunction(() => globalThis.__shadingLab?.exercise?.id === 'which-ndf');
+    expect(await page.evaluate(() => globalThis.__shadingLab.exercise.hidden)).toBe(hidden);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  }, 60_000);
+
   it('shows a bad set’s errors on the page and keeps its good exercises', async () => {
     const set = [
       {

@@ -45,7 +45,7 @@ async function openLab(query) {
 
 /**
  * Linear radiance read back from the canvas (sRGB 8-bit decoded) in panel `panel` (0 approximation, 1 reference)
- * at sphere coordinates [x, y] (x right, y up; the normal there is (x, y, sqrt(1 - x² - y²))).
+ * of the row of three at sphere coordinates [x, y] (x right, y up; the normal there is (x, y, sqrt(1 - x² - y²))).
  */
 async function radianceAt(page, panel, points) {
   await page.addStyleTag({ content: '.lab-captions { display: none; }' });
@@ -54,9 +54,10 @@ async function radianceAt(page, panel, points) {
     page,
     png,
     `(image) => ${JSON.stringify(points)}.map(([x, y]) => {
-    const side = image.height;
+    const side = image.width / 3; // three squares in a row, each under its caption strip
+    const top = image.height - side;
     const px = Math.floor(${panel} * side + (0.5 + x / ${2 * EXTENT}) * side);
-    const py = Math.floor((0.5 - y / ${2 * EXTENT}) * side);
+    const py = Math.floor(top + (0.5 - y / ${2 * EXTENT}) * side);
     return image.data.slice((py * image.width + px) * 4, (py * image.width + px) * 4 + 3);
   })`,
   );

@@ -111,6 +111,28 @@ describe('shader exercises', () => {
     expect(r.details[0]).toMatch(/^Line 3: /);
     expect(await marked()).toEqual([3]);
   }, 60_000);
+
+  it('the three common mistakes get plain words after the parser’s or the compiler’s message', async () => {
+    await choose(page, 'shader-schlick');
+    const F = (...body) => ['vec3 customF(vec3 f0, float lh) {', ...body, '}', ''].join('\n');
+    const cases = [
+      [
+        F('  float m = 1.0 - lh', '  return f0 + (1.0 - f0) * pow(m, 5.0);'),
+        /^Line 3: does not parse: .*\. In plain words: line 2 ends without “;”\./,
+      ],
+      [
+        F('  return f0 + (1.0 - f0) * pow(1.0 - lh, 5);'),
+        /^Line 2: 'pow' : no matching overloaded function found\. In plain words: .* write 5\.0 for 5\.$/,
+      ],
+      [F('  float m = 1.0 - lh;', '  return f0 + m5;'), /^Line 3: .*m5.*In plain words: “m5” is not declared/],
+    ];
+    for (const [code, detail] of cases) {
+      await setCode(page, page, code);
+      const r = await check(page);
+      expect(r.ok).toBe(false);
+      expect(r.details[0]).toMatch(detail);
+    }
+  }, 60_000);
 });
 
 describe('the graded message to a parent page', () => {

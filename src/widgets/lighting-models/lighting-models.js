@@ -69,7 +69,7 @@ export function createLightingModels(container, initialState = {}, { onStateChan
     frame,
     onReset,
   });
-  view.setAspect(MODELS.length + 1);
+  view.setPanels(MODELS.length + 1);
   shell.view.append(table);
   const onChanged = () => view.setDisplay({ exposure: shell.state.exposure, errorScale: shell.state.errorScale });
   const update = shell.connect({ title: 'Lighting models', onChanged, onStateChange });

@@ -44,10 +44,12 @@ export function tableHtml(st, results, samples, resolution) {
     'Sun enlarged to 2° (the real one is 0.27°). ' +
     `Against the reference (${samples} of ${st.refSamples} samples per pixel${converging})`;
   const head = ['Illumination model', `GPU time (${resolution}² px)`, 'RMS error', 'relative', 'Where it fails'];
+  // each cell names its column (data-label): on a phone the rows reflow into blocks that show those names
+  const cell = (i, text) => `<td data-label="${head[i]}">${text}</td>`;
   const row = (r) =>
-    `<tr><th scope="row">${r.name}</th><td>${fmt(r.ms)} ms</td><td>${fmt(r.rms)}</td>` +
-    `<td>${fmt(r.relative * 100)} %</td><td>${r.fails}</td></tr>`;
-  return `<table class="data-table compact"><caption>${caption}</caption>
+    `<tr><th scope="row">${r.name}</th>${cell(1, `${fmt(r.ms)} ms`)}${cell(2, fmt(r.rms))}` +
+    `${cell(3, `${fmt(r.relative * 100)} %`)}${cell(4, r.fails)}</tr>`;
+  return `<table class="data-table compact models-table"><caption>${caption}</caption>
       <thead><tr>${head.map((h) => `<th>${h}</th>`).join('')}</tr></thead><tbody>
       ${results.map(row).join('')}
       </tbody></table>`;

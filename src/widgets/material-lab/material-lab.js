@@ -49,7 +49,7 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
     measured.reupload();
   };
   const view = createLabView(shell.view, { label: 'Material lab', resolution: 192, frame: lab.frame, onReset });
-  view.setAspect(3);
+  view.setPanels(3);
   shell.view.append(readout.element, notes.element, ownBrdf.element); // the user's BRDF's panel under the notes
 
   const onChanged = (changed) => {

@@ -21,6 +21,23 @@ export const ANGLES = Float64Array.from(
 ).sort();
 const NODE_AT = new Map(Array.from(THETA_H_DEG, (deg, i) => [deg, i]));
 
+/** The plots' θh axis. */
+export const THETA_AXIS = {
+  xLabel: 'Angle of the microfacet normal from n, θh (degrees)',
+  x: { min: 0, max: 90 },
+  xValues: (u, t) => t.map((v) => `${v}°`),
+};
+
+/**
+ * The log plot's axes for `curves` (D in 1/sr over θh, down to 1e-7 of the highest peak), and `clip`, which leaves
+ * out the values below that floor. The NDF exercise draws its hidden highlight on these same axes.
+ */
+export function logAxes(curves) {
+  const peak = Math.max(...curves.map((c) => c.values[0]), 1e-3);
+  const clip = (values) => Array.from(values, (v) => (v > peak * 1e-7 ? v : null));
+  return { ...THETA_AXIS, yLabel: 'D (1/sr)', y: { min: peak * 1e-7, max: peak * 2, log: true }, clip };
+}
+
 /** The measured slice on ANGLES: its value at each node, null between nodes and where it is 0 (missing). */
 export const measuredOnAngles = (slice) =>
   Array.from(ANGLES, (deg) => (NODE_AT.has(deg) && slice[NODE_AT.get(deg)] > 0 ? slice[NODE_AT.get(deg)] : null));

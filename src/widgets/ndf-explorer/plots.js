@@ -1,14 +1,9 @@
 // The NDF explorer's two plots: D(θh) on a linear axis, and on a log axis for the tails; with a measured slice
 // the log plot puts every curve over its own peak and adds the measurement.
 import { createPlot } from '../../core/ui/plot.js';
-import { ANGLES, TAIL_DEG, measuredOnAngles, tailsAt } from './model.js';
+import { ANGLES, TAIL_DEG, THETA_AXIS as axis, logAxes, measuredOnAngles, tailsAt } from './model.js';
 import { describeTails } from './words.js';
 
-const axis = {
-  xLabel: 'Angle of the microfacet normal from n, θh (degrees)',
-  x: { min: 0, max: 90 },
-  xValues: (u, t) => t.map((v) => `${v}°`),
-};
 const seriesOf = (curves) => curves.map((c) => ({ label: c.label, stroke: c.stroke, dash: c.dash }));
 
 const linearSpec = (curves) => ({
@@ -24,14 +19,12 @@ const linearSpec = (curves) => ({
 });
 
 function absoluteLogSpec(curves) {
-  const peak = Math.max(...curves.map((c) => c.values[0]), 1e-3);
+  const { clip, ...axes } = logAxes(curves);
   return {
-    ...axis,
+    ...axes,
     title: 'D(θh), log scale: the tails',
-    yLabel: 'D (1/sr)',
-    y: { min: peak * 1e-7, max: peak * 2, log: true },
     series: seriesOf(curves),
-    data: [ANGLES, ...curves.map((c) => c.values.map((v) => (v > peak * 1e-7 ? v : null)))],
+    data: [ANGLES, ...curves.map((c) => clip(c.values))],
     filename: 'ndf-log',
     height: 260,
   };

@@ -1,0 +1,153 @@
+// Pages on a phone: a 390 × 844 viewport with touch (isMobile, hasTouch), as an iPhone 12–15 shows them. No page is
+// wider than the screen (document.documentElement.scrollWidth ≤ 390); the tour's step title is on the first
+// screen; on the exercises page the question, the control that answers it and Check are on the screen together,
+// none under another element (elementFromPoint at their centres); the rendering chapter's captions sit beside the
+// pictures, not over them (the canvas under each caption is unpainted), and its table stays in its box.
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { baseUrl, launchBrowser, settle, shot, untilSteady, widget, withPixels } from './helpers.js';
+import { openPage } from './harness.js';
+
+const PHONE = { width: 390, height: 844, isMobile: true, hasTouch: true, deviceScaleFactor: 1 };
+
+let browser;
+beforeAll(async () => {
+  browser = await launchBrowser();
+});
+afterAll(async () => {
+  await browser?.close();
+});
+
+const openPhone = (path) => openPage(browser, baseUrl(), path, { ...PHONE, beforeLoad: (p) => p.setViewport(PHONE) });
+const pageWidth = (page) => page.evaluate(() => document.documentElement.scrollWidth);
+
+/**
+ * Where each selector's element is on the screen: its box, whether the box is wholly inside the viewport, and
+ * whether the element under the box's centre is that element or inside it (nothing drawn over it).
+ */
+const onScreen = (page, selectors) =>
+  page.evaluate(
+    (list) =>
+      list.map((selector) => {
+        const node = document.querySelector(selector);
+        if (!node) return { selector, missing: true };
+        const r = node.getBoundingClientRect();
+        const inside = r.width > 0 && r.top >= 0 && r.left >= 0 && r.bottom <= innerHeight && r.right <= innerWidth;
+        const hit = document.elementFromPoint(r.left + r.width / 2, r.top + r.height / 2);
+        return { selector, inside, uncovered: Boolean(hit && node.contains(hit)) };
+      }),
+    selectors,
+  );
+
+const allVisible = (boxes) => boxes.map((b) => ({ selector: b.selector, inside: true, uncovered: true }));
+
+describe('on a phone (390 × 844, touch)', () => {
+  it('the tour: no wider than the screen, the step’s title on the first screen', async () => {
+    const page = await openPhone('tour.html');
+    await page.waitForFunction(() => document.querySelector('.tour-title')?.textContent.trim());
+    await untilSteady(page, 'layout');
+    expect(await pageWidth(page)).toBeLessThanOrEqual(390);
+    const boxes = await onScreen(page, ['.tour-title']);
+    expect(boxes).toEqual(allVisible(boxes));
+    expect(page.errors).toEqual([]);
+    await page.close();
+  }, 60_000);
+
+  it('exercises: the list is one folded line; a chosen question, its answer and Check share the screen', async () => {
+    const page = await openPhone('exercises.html');
+    await page.waitForSelector('#exercise-list a');
+    expect(await page.$eval('#exercise-list-box', (d) => [d.open, getComputedStyle(d).position])).toEqual([
+      false,
+      'static',
+    ]);
+    // a number to type, a slider to move (a state exercise), code to write
+    const cases = [
+      ['water-red-depth', '#exercise-answer'],
+      ['lake-mirror', '#exercise-control-theta'],
+      ['shader-schlick', '.exercise-code .cm-content'],
+    ];
+    for (const [id, control] of cases) {
+      await page.tap('#exercise-list-summary');
+      await page.waitForSelector(`#exercise-list a[href="#${id}"]`, { visible: true });
+      await page.tap(`#exercise-list a[href="#${id}"]`);
+      await page.waitForFunction(
+        (i) => globalThis.__shadingLab.exercise?.id === i && globalThis.__shadingLab.exercise.ready,
+        { timeout: 30_000 },
+        id,
+      );
+      await page.waitForSelector(control);
+      await untilSteady(page, 'layout');
+      expect(await page.$eval('#exercise-list-box', (d) => d.open), id).toBe(false); // folded again
+      const boxes = await onScreen(page, ['.exercise-prompt', control, '.exercise-check']);
+      expect(boxes, id).toEqual(allVisible(boxes));
+      expect(await pageWidth(page), id).toBeLessThanOrEqual(390);
+    }
+    // the NDF exercise's widget holds a wide table: it scrolls in its own box
+    await page.evaluate(() => (location.hash = 'which-ndf'));
+    await page.waitForFunction(() => globalThis.__shadingLab.exercise?.id === 'which-ndf');
+    await page.waitForSelector('.exercise-widget .data-table');
+    await untilSteady(page, 'layout');
+    expect(await pageWidth(page)).toBeLessThanOrEqual(390);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  }, 120_000);
+
+  it('rendering: no wider than the screen; captions on unpainted canvas; the table in its box', async () => {
+    const page = await openPhone('rendering.html?lab.refSamples=32&models.refSamples=32');
+    for (const [key, section] of [
+      ['lab', '#lab'],
+      ['models', '#models'],
+    ]) {
+      await page.$eval(section, (s) => s.scrollIntoView());
+      await widget(page, key);
+    }
+    await page.$eval('.widget-lighting-models .lab-view', (v) => v.scrollIntoView());
+    await untilSteady(page, 'drawCalls');
+    expect(await pageWidth(page)).toBeLessThanOrEqual(390);
+
+    for (const root of ['.widget-material-lab', '.widget-lighting-models']) {
+      await page.$eval(`${root} .lab-view`, (v) => v.scrollIntoView());
+      await settle(page, 300);
+      // each caption's box, in the canvas's pixels; then the canvas alone (captions hidden) read under those boxes
+      const boxes = await page.$eval(`${root} .lab-view`, (view) => {
+        const c = view.querySelector('canvas').getBoundingClientRect();
+        return [...view.querySelectorAll('.lab-captions span')].map((s) => {
+          const r = s.getBoundingClientRect();
+          // 4 px in from each side: past the view's rounded corners (6 px) and the rounded edge where the strip
+          // meets the picture under it
+          return [r.left - c.left + 4, r.top - c.top + 4, r.width - 8, r.height - 8].map(Math.round);
+        });
+      });
+      expect(boxes.length, root).toBeGreaterThanOrEqual(3);
+      await page.addStyleTag({ content: '.lab-captions, .save-view { visibility: hidden; }' });
+      const png = await shot(page, `${root} .lab-view canvas`);
+      const painted = await withPixels(
+        page,
+        png,
+        `(image) => ${JSON.stringify(boxes)}.map(([x, y, w, h]) => {
+          let lit = 0;
+          for (let j = Math.max(y, 0); j < Math.min(y + h, image.height); j++)
+            for (let i = Math.max(x, 0); i < Math.min(x + w, image.width); i++) {
+              const k = (j * image.width + i) * 4;
+              if (image.data[k] + image.data[k + 1] + image.data[k + 2] > 30) lit++;
+            }
+          return lit;
+        })`,
+      );
+      expect(Object.values(painted), root).toEqual(boxes.map(() => 0));
+      await page.addStyleTag({ content: '.lab-captions, .save-view { visibility: visible; }' });
+    }
+
+    // the lighting models' table: inside its widget, and "where it fails" in lines of several words
+    // (one evaluate: the widget writes its table anew with each frame it draws)
+    const table = await page.evaluate(() => {
+      const t = document.querySelector('.models-table');
+      const box = t.closest('.widget').getBoundingClientRect();
+      const fails = [...t.querySelectorAll('tbody td:last-child')].map((td) => td.getBoundingClientRect().width);
+      return { right: t.getBoundingClientRect().right, boxRight: box.right, narrowest: Math.min(...fails) };
+    });
+    expect(table.right).toBeLessThanOrEqual(table.boxRight + 0.5);
+    expect(table.narrowest).toBeGreaterThan(250);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  }, 180_000);
+});
