@@ -379,9 +379,9 @@ async function openExercise(exercise, { focus = false } = {}) {
       mine.controls?.sync(state);
     },
   });
-  if (!widget || !schema) return; // it says why in its place, with Retry
+  if (!widget) return; // it says why in its place, with Retry
   if (current !== mine) return widget.dispose(); // another exercise was opened meanwhile
-  if (exercise.locked.length) {
+  if (schema && exercise.locked.length) {
     const names = exercise.locked.map((k) => schema[k].label ?? k);
     slot.prepend(
       el('p', {
@@ -391,7 +391,7 @@ async function openExercise(exercise, { focus = false } = {}) {
     );
   }
   current.widget = widget;
-  if (field.controls) current.controls = answerControls(field.controls, { exercise, grader, schema, widget });
+  if (schema && field.controls) current.controls = answerControls(field.controls, { exercise, grader, schema, widget });
   current.preview?.update(widget.getState());
   publish('exercise', { id: exercise.id, hidden, ready: true });
 }
