@@ -6,7 +6,7 @@ import { reflectionCone } from './model.js';
 function plotSpec(s, profile) {
   const { xs, counts, predicted } = reflectionCone(s, profile);
   return {
-    title: `Where light from ${s.theta}° goes after one reflection (rough surface, α = ${s.alpha})`,
+    title: `Where light from ${s.theta}° goes after one reflection off a microsurface of roughness α = ${s.alpha}`,
     xLabel: 'Outgoing angle (degrees; the mirror direction is −θ)',
     yLabel: 'share per degree',
     x: { min: -90, max: 90 },
