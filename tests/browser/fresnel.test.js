@@ -269,7 +269,7 @@ describe('fresnel-curves and f0-tables', () => {
   it('a material picked in the tables loads into the other widgets of the chapter page', async () => {
     const page = await open(browser, 'fresnel.html');
     await widget(page, 'tables');
-    await page.click('tr[data-material="diamond"] a[aria-label*="fresnel-zones"]');
+    await page.click('tr[data-material="diamond"] a[href*="w=fresnel-zones"]');
     // the page scrolls smoothly to the widget that took the material: the next click waits till it stops
     await page.evaluate(async () => {
       for (let still = 0, y = scrollY; still < 5;) {
@@ -277,7 +277,7 @@ describe('fresnel-curves and f0-tables', () => {
         [still, y] = scrollY === y ? [still + 1, y] : [0, scrollY];
       }
     });
-    await page.click('tr[data-material="iron"] a[aria-label*="fresnel-curves"]');
+    await page.click('tr[data-material="iron"] a[href*="w=fresnel-curves"]');
     await expect.poll(async () => (await getState(page, 'zones')).material, { timeout: 10_000 }).toBe('diamond');
     await expect.poll(async () => (await getState(page, 'curves')).materials, { timeout: 10_000 }).toContain('iron');
     await expect.poll(() => page.url(), { timeout: 10_000 }).toMatch(/zones\.material=diamond/);
