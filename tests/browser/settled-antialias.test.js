@@ -10,7 +10,7 @@ import { baseUrl, launchBrowser } from './helpers.js';
 import { openPage } from './harness.js';
 
 const WIDGET = 'fresnel-zones';
-const PAGE = `embed.html?w=${WIDGET}&shape=teapot&mode=zones-nv&camera=perspective`;
+const PAGE = `embed.html?w=${WIDGET}&shape=teapot&mode=zones-lh&camera=perspective`;
 const DRAG = [0.2, 0.24, 0.28, 0.32, 0.36, 0.4, 0.44, 0.48]; // pointer positions: right of centre, by half-widths
 const LOBE = 'brdf-lobe'; // its 3-D lobe view: a surface patch, two lobes and arrows
 
