@@ -16,8 +16,14 @@ const STEPS = 24;
 // --quick (the bench's test): only that the part runs, on a 2-D widget and one drawn by the render loop
 const QUICK = { steps: 3, widgets: ['fresnel-curves', 'fresnel-zones'] };
 export const TARGET_MS = 50;
-// Light state for software rendering: fewer path-traced samples (as the browser tests do).
-const LIGHT_STATE = { media: '&samples=16', 'material-lab': '&refSamples=128', 'lighting-models': '&refSamples=128' };
+// State each widget opens in: fewer path-traced samples for software rendering (as the browser tests do); the
+// zones of l·h for fresnel-zones, whose light (the dragged control) plays no part in its modes of n·v.
+const LIGHT_STATE = {
+  'fresnel-zones': '&mode=zones-lh',
+  media: '&samples=16',
+  'material-lab': '&refSamples=128',
+  'lighting-models': '&refSamples=128',
+};
 
 /**
  * The control a user would drag, per widget: [key, from, to] (a number swept in STEPS steps) or [key, [values]].
