@@ -211,8 +211,9 @@ describe('embeds in same-origin frames share one context budget', () => {
         },
       });
       const drawn = new Set();
-      const height = await page.evaluate(() => document.body.scrollHeight);
-      for (let y = 0; y < height; y += 400) {
+      // the page grows as it goes: each preview takes its widget's height once that widget is up
+      const height = () => page.evaluate(() => document.body.scrollHeight);
+      for (let y = 0; y < (await height()); y += 400) {
         await page.evaluate((top) => window.scrollTo(0, top), y);
         await settle(page, 300);
         for (const card of await page.$$('.gallery-card')) {
