@@ -168,6 +168,7 @@ export const STRESS_DOMAINS = {
   diffuseOrenNayar: { args: [COS, COS, [-1.5, -1, 0, 1, 1.5], [0, 0.3, 1, 3], SRGB], range: NON_NEGATIVE },
   diffuseOrenNayarQualitative: { args: [COS, COS, [-1.5, -1, 0, 1, 1.5], [0, 0.3, 1, 3], SRGB], range: NON_NEGATIVE },
   punctualRadiance: { args: [[0, 1, 1e8], COS, [0, 1]], range: NON_NEGATIVE },
+  brdfFromPunctualRadiance: { args: [[0, 1, 1e8], COS, [0, 1e-8, 1]], range: NON_NEGATIVE, nullable: true },
   directionFromCos: { args: [COS], range: [-1, 1] },
   directionsFromHalfDiff: { args: [ANGLE, ANGLE, ANGLE], range: [-1, 1] },
   sampleGGXNormal: { args: [[0, 0.5, 1 - 1e-12], [0, 0.5, 1], ALPHA], range: [-1, 1] },

@@ -83,6 +83,15 @@ export function punctualRadiance(f, nl, cLight) {
 }
 
 /**
+ * The BRDF a punctual light's radiance implies, the talk's equation solved for f: f = L_o / (pi c_light (n·l_c)).
+ * Null where no light arrives (c_light (n·l) ≤ 0), where L_o says nothing about f.
+ */
+export function brdfFromPunctualRadiance(radiance, nl, cLight) {
+  const arriving = cLight * Math.max(nl, 0);
+  return arriving > 0 ? radiance / (Math.PI * arriving) : null;
+}
+
+/**
  * The microfacet BRDF with factors switched off for teaching: F·D·G / (4 (n·l)(n·v)) where each factor in
  * `use` ({ F, D, G, denominator }) that is false counts as 1. All on, it equals microfacetBRDF.
  */

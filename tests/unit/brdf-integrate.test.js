@@ -1,5 +1,12 @@
 import { describe, expect, it } from 'vitest';
-import { brdf, microfacetBRDF, punctualRadiance, VISIBILITY_TERMS, NDF_TERMS } from '../../src/math/brdf.js';
+import {
+  brdf,
+  brdfFromPunctualRadiance,
+  microfacetBRDF,
+  punctualRadiance,
+  VISIBILITY_TERMS,
+  NDF_TERMS,
+} from '../../src/math/brdf.js';
 import { albedoGGX, directionFromCos, hemisphereIntegral, reflectanceImportanceGGX } from '../../src/math/integrate.js';
 import { fresnelSchlick } from '../../src/math/fresnel.js';
 
@@ -88,6 +95,18 @@ describe('microfacet BRDF', () => {
     const lambert = () => 1 / Math.PI;
     expect(punctualRadiance(lambert(), 1, 3.5)).toBeCloseTo(3.5, 14);
     expect(punctualRadiance(lambert(), -0.2, 3.5)).toBe(0);
+  });
+  it('reads the BRDF back from a punctual radiance: white Lambert head-on gives 1/π; no light gives none', () => {
+    expect(brdfFromPunctualRadiance(3.5, 1, 3.5)).toBeCloseTo(1 / Math.PI, 15); // L = c_light: the talk's definition
+    expect(brdfFromPunctualRadiance(1.5, 0.5, 3)).toBeCloseTo(1 / Math.PI, 15); // c_light cos 60°
+    for (const [f, nl, c] of [
+      [0.02, 0.3, 2],
+      [5, 0.01, 0.7],
+      [1e-4, 1, 10],
+    ])
+      expect(brdfFromPunctualRadiance(punctualRadiance(f, nl, c), nl, c)).toBeCloseTo(f, 12);
+    expect(brdfFromPunctualRadiance(0, -0.2, 3)).toBeNull();
+    expect(brdfFromPunctualRadiance(0, 0.5, 0)).toBeNull();
   });
 });
 

@@ -4,6 +4,7 @@ import { declareFormula, texNumber, texText } from '../../core/framework/formula
 import { ENVIRONMENTS } from '../../lab/environments.js';
 import { materialOf } from '../../lab/lab-scene.js';
 import { termEntry } from '../../math/catalogue/index.js';
+import { brdfFromPunctualRadiance } from '../../math/brdf.js';
 import { MERL_TEXTURE_BYTES } from '../measured-brdf/texture-size.js';
 import { punctualAlone } from './model.js';
 
@@ -97,7 +98,7 @@ export function centreHtml(st, lights, centre) {
   const nl = lights.punctual.dir[2]; // n = v = z at the centre
   if (!(nl > 1e-6)) return row('Radiance at the sphere’s centre', `${L}: the light is behind it (n·l ≤ 0).`);
   const cnl = st.cLight * nl;
-  const f = cnl > 0 ? centre.map((x) => x / (Math.PI * cnl)) : null;
+  const f = cnl > 0 ? centre.map((x) => brdfFromPunctualRadiance(x, nl, st.cLight)) : null;
   const apart = f
     ? `f = L / (π c_light (n·l)) = ${rgbText(f)} (1/π = 0.318 for a white Lambert surface). Without the π ` +
       `the centre would read L / π = ${rgbText(centre.map((x) => x / Math.PI))}.`
