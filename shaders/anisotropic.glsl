@@ -70,15 +70,25 @@ vec2 anisotropicAlphas(float alpha, float anisotropy, int convention) {
   return vec2(at, (1.0 - a) * at);
 }
 
-// Visible normals from v (Dupuy & Benyoub 2023's spherical caps), u.x in [0, 1) the cap height, u.y the azimuth;
-// the cap's terms in the forms that do not cancel (1 - c.z = u.x (1 + w), c.z + w = (1 - u.x)(1 + w)).
+// Visible normals from v (Dupuy & Benyoub 2023's spherical caps), u.x in [0, 1) the cap height, u.y the azimuth
+// from v''s own; the sums in the forms that do not cancel (see the JS twin), so the GPU's cos(π u.y) enters squared
+// where c + v' nearly vanishes (the rim, u.x -> 1)
 vec3 sampleVisibleNormalGGXAniso(vec3 v, vec2 alpha, vec2 u) {
   vec2 a = clampAlphaAniso(alpha);
   vec3 wi = normalize(vec3(a * v.xy, v.z));
-  float w = wi.z;
-  float sinC = sqrt(u.x * (1.0 + w) * (1.0 - w + (1.0 - u.x) * (1.0 + w)));
-  float phi = 2.0 * PI * u.y;
-  vec3 h = vec3(a * (sinC * vec2(cos(phi), sin(phi)) + wi.xy), (1.0 - u.x) * (1.0 + w));
+  float w1 = 1.0 + wi.z;
+  float rho2 = dot(wi.xy, wi.xy);
+  float rho = sqrt(rho2);
+  vec2 e = rho > 0.0 ? wi.xy / rho : vec2(1.0, 0.0);
+  float sinC = sqrt(u.x * (rho2 + (1.0 - u.x) * w1 * w1));
+  float rs = rho + sinC;
+  float rhoMinusSin = rs > 0.0 ? (1.0 - u.x) * (rho2 - u.x * w1 * w1) / rs : 0.0;
+  float c = cos(PI * u.y);
+  float s = sin(PI * u.y);
+  float cosPsi = (c - s) * (c + s);
+  float along = cosPsi >= 0.0 ? rho + sinC * cosPsi : rhoMinusSin + 2.0 * sinC * c * c;
+  float across = 2.0 * sinC * s * c;
+  vec3 h = vec3(a * (along * e + across * vec2(-e.y, e.x)), (1.0 - u.x) * w1);
   float m = length(h);
   return m > 0.0 ? h / m : vec3(0.0, 0.0, 1.0);
 }

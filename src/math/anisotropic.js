@@ -113,23 +113,37 @@ export const ANISOTROPY_CONVENTIONS = Object.freeze(['burley2012', 'gltf', 'open
 /**
  * A GGX normal drawn from the normals visible from v = (vx, vy, vz), density D_v(m) = G1(v) max(0, v·m) D(m) / vz
  * (Heitz 2018, "Sampling the GGX Distribution of Visible Normals", JCGT 7(4)), by Dupuy & Benyoub 2023 ("Sampling
- * Visible GGX Normals with Spherical Caps"): stretch v to α = 1, where the visible normals are normalize(c + v')
- * for c uniform on the unit sphere's cap c.z >= -v'.z; unstretch. u1 in [0, 1) sets the cap height, u2 the azimuth.
- * For float32 the cap's terms are kept free of cancellation: with w = v'.z and c.z = (1 - u1)(1 + w) - w,
- *   1 - c.z = u1 (1 + w),  1 + c.z = (1 - w) + (1 - u1)(1 + w),  c.z + w = (1 - u1)(1 + w),
- * so sin θc and the normal's z come out to full relative precision at u1 -> 0, u1 -> 1 and grazing v.
- * Only the cap's rim point c = -v' (u1 = 1 at one azimuth) gives m = 0: there n is returned.
+ * Visible GGX Normals with Spherical Caps"): stretch v to α = 1 (v'), where the visible normals are normalize(c + v')
+ * for c uniform on the unit sphere's cap c.z >= -v'.z; unstretch. u1 in [0, 1) sets the cap height, u2 the azimuth,
+ * measured here from v''s own azimuth e (the listing measures it from t: the same density, rotated).
+ * For float32 the sums are kept free of cancellation: 1 - w is never formed (w = v'.z rounds to 1 within 3e-4 rad
+ * of n), ρ² = |v'.xy|² comes from the components, and with c.z = (1 - u1)(1 + w) - w,
+ *   sin²θc = (1 - c.z)(1 + c.z) = u1 (ρ² + (1 - u1)(1 + w)²),  c.z + w = (1 - u1)(1 + w);
+ * along e, where c + v' nearly vanishes near the rim (u1 -> 1, azimuth opposite e), with ψ = 2π u2,
+ *   ρ + sin θc cos ψ = (ρ - sin θc) + 2 sin θc cos²(ψ/2),  ρ - sin θc = (1 - u1)(ρ² - u1 (1 + w)²) / (ρ + sin θc),
+ * used where cos ψ < 0, so an error in cos(ψ/2) (a GPU's cos) enters squared where the terms would cancel; cos ψ
+ * itself is (cos - sin)(cos + sin) of ψ/2. Only the rim's point c = -v'
+ * gives m = 0: there n is returned.
  */
 export function sampleVisibleNormalGGXAniso(vx, vy, vz, alphaX, alphaY, u1, u2) {
   const [ax, ay] = [clampAxis(alphaX), clampAxis(alphaY)];
-  const [sx, sy, sz] = [ax * vx, ay * vy, vz];
-  const len = Math.hypot(sx, sy, sz);
-  const [x, y, w] = [sx / len, sy / len, sz / len];
-  const sinC = Math.sqrt(u1 * (1 + w) * (1 - w + (1 - u1) * (1 + w)));
-  const phi = 2 * Math.PI * u2;
-  const hx = ax * (sinC * Math.cos(phi) + x);
-  const hy = ay * (sinC * Math.sin(phi) + y);
-  const hz = (1 - u1) * (1 + w);
+  const len = Math.hypot(ax * vx, ay * vy, vz);
+  const [x, y, w] = [(ax * vx) / len, (ay * vy) / len, vz / len];
+  const rho2 = x * x + y * y;
+  const rho = Math.sqrt(rho2);
+  const [ex, ey] = rho > 0 ? [x / rho, y / rho] : [1, 0];
+  const w1 = 1 + w;
+  const sinC = Math.sqrt(u1 * (rho2 + (1 - u1) * w1 * w1));
+  const rs = rho + sinC;
+  const rhoMinusSin = rs > 0 ? ((1 - u1) * (rho2 - u1 * w1 * w1)) / rs : 0;
+  const [c, s] = [Math.cos(Math.PI * u2), Math.sin(Math.PI * u2)];
+  const cosPsi = (c - s) * (c + s);
+  // (c + v')·e: directly where nothing cancels (cos ψ >= 0), by the rim's form where it would
+  const along = cosPsi >= 0 ? rho + sinC * cosPsi : rhoMinusSin + 2 * sinC * c * c;
+  const across = 2 * sinC * s * c; // (c + v')·(e rotated by 90°)
+  const hx = ax * (along * ex - across * ey);
+  const hy = ay * (along * ey + across * ex);
+  const hz = (1 - u1) * w1;
   const m = Math.hypot(hx, hy, hz);
   return m > 0 ? [hx / m, hy / m, hz / m] : [0, 0, 1];
 }

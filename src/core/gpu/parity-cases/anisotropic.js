@@ -43,12 +43,9 @@ const DIRECTIONS = [
   [0.6, 0, -0.8],
 ];
 const SAMPLER_DIRECTIONS = DIRECTIONS.slice(0, 7); // v below the horizon has no visible normals
-// The sampler's normal is built from the GPU's sin and cos of 2π u2 (SwiftShader's up to ~1.8e-4 off: the isotropic
-// samplers' rows allow 3e-4), and the map u -> m amplifies their error where it is ill-conditioned: near the cap's
-// rim (u1 -> 1, where m turns perpendicular to v and its density vanishes) the terms c + v' nearly cancel, and a
-// stretch αx ≪ αy then normalises what is left. Measured on SwiftShader: 1.3e-3 at u1 = 0.999 with αx = 1e-4,
-// 4e-2 at u1 = 1 - 1e-6 (not in the grid); everywhere else within 3e-4.
-const SAMPLER_TOLERANCE = { atol: 2e-3, rtol: 1e-4 };
+// the sampler's normal comes from the GPU's sin and cos of π u2 (SwiftShader's up to ~1.8e-4 off: the isotropic
+// samplers' rows allow 3e-4); near the cap's rim (u1 -> 1) its error enters squared (anisotropic.js)
+const SAMPLER_TOLERANCE = { atol: 3e-4, rtol: 1e-4 };
 
 // one direction (a.xyz) and (αx, αy) in (a.w, b.x): the NDFs over half vectors, the G1s over directions
 const directionRow = (name, range) => ({
@@ -100,7 +97,7 @@ export const ANISOTROPIC_PARITY_CASES = [
     js: M.sampleVisibleNormalGGXAniso,
     range: [-1, 1],
     tolerance: SAMPLER_TOLERANCE,
-    args: cartesian(SAMPLER_DIRECTIONS, ALPHA_PAIRS, [0, 1e-6, 0.3, 0.9, 0.999], [0, 0.25, 0.7]).map(
+    args: cartesian(SAMPLER_DIRECTIONS, ALPHA_PAIRS, [0, 1e-6, 0.3, 0.9, 0.999, 1 - 1e-6], [0, 0.25, 0.5, 0.7]).map(
       ([v, [ax, ay], u1, u2]) => [...v, ax, ay, u1, u2, 0],
     ),
   },
