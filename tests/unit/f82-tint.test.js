@@ -4,6 +4,8 @@
 import { describe, expect, it } from 'vitest';
 import {
   F82_MU,
+  conductorIorFromF0EdgeTint,
+  edgeTintFromConductorIor,
   f82TintFromConductor,
   fresnelConductor,
   fresnelF82Tint,
@@ -12,6 +14,7 @@ import {
 import { METALS } from '../../src/math/materials.js';
 import { measuredRgbNk } from '../../src/math/optical-constants.js';
 import { FRESNEL_FAMILY } from '../../src/math/catalogue/fresnel-terms.js';
+import { angleGrid, errorTable } from '../../src/widgets/metal-fresnel/model.js';
 
 const channels = METALS.flatMap((m) => measuredRgbNk(m.key).map(([eta, k], i) => ({ name: `${m.key} ${i}`, eta, k })));
 const mus = Array.from({ length: 201 }, (_, i) => i / 200);
@@ -97,5 +100,32 @@ describe('the catalogue entry', () => {
     expect(entry.js).toBe(fresnelF82Tint);
     expect(entry.evaluate(0.3, { f0: 0.9, tint: 0.8 })).toBe(fresnelF82Tint(0.9, 0.8, 0.3));
     expect(entry.args).toEqual(['f0', 'tint', 'cos']);
+  });
+});
+
+describe('the Fresnel page’s comparison (src/widgets/metal-fresnel/model.js), recomputed here from src/math', () => {
+  const angles = angleGrid();
+  const rows = errorTable(angles);
+  const worstOf = (fn, eta, k) =>
+    Math.max(
+      ...angles.map((deg) =>
+        Math.abs(fn(Math.cos((deg * Math.PI) / 180)) - fresnelConductor(Math.cos((deg * Math.PI) / 180), eta, k)),
+      ),
+    );
+
+  it('has the five metals’ fifteen channels, with each model’s worst error over 0–90° as computed directly', () => {
+    expect(rows).toHaveLength(15);
+    rows.forEach((r, i) => {
+      const { eta, k } = channels[i];
+      const { f0, tint } = f82TintFromConductor(eta, k);
+      expect(Math.abs(r.worst.schlick.value)).toBe(worstOf((mu) => fresnelSchlick(f0, mu), eta, k));
+      expect(Math.abs(r.worst.f82Tint.value)).toBe(worstOf((mu) => fresnelF82Tint(f0, tint, mu), eta, k));
+      const ior = conductorIorFromF0EdgeTint(f0, edgeTintFromConductorIor(eta, k));
+      expect(Math.abs(r.worst.gulbrandsen.value)).toBe(worstOf((mu) => fresnelConductor(mu, ...ior), eta, k));
+    });
+  });
+
+  it('Gulbrandsen’s (F0, g) round trip is the exact curve to rounding (< 1e-13), as the page says', () => {
+    expect(Math.max(...rows.map((r) => Math.abs(r.worst.gulbrandsen.value)))).toBeLessThan(1e-13);
   });
 });
