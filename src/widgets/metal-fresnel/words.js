@@ -23,9 +23,7 @@ export const errorWords = (x) =>
   Math.abs(x) < 1e-12 ? `${Math.abs(x).toExponential(0)} (rounding)` : Math.abs(x).toFixed(4);
 
 /** The table's caption: what its rows are. */
-export const TABLE_CAPTION =
-  'Worst error over 0–90° of each approximation against the exact conductor Fresnel, every channel of the talk’s ' +
-  'five metals (measured n, k)';
+export const TABLE_CAPTION = 'Worst error against the exact curve, 0–90°';
 
 /** Above the table: the worst of each model over all the rows, computed. */
 export function tableSummary(rows) {
@@ -34,7 +32,10 @@ export function tableSummary(rows) {
     const w = r.worst[model];
     return `${METAL_MODELS[model].label} ${errorWords(w.value)} (${r.name} ${CHANNELS[r.channel]})`;
   });
-  return `Largest errors over the five metals: ${worst.join('; ')}.`;
+  return (
+    'The table: each approximation’s worst error over 0–90° against the exact conductor Fresnel (measured n, k), ' +
+    `every channel of the talk’s five metals. Largest: ${worst.join('; ')}.`
+  );
 }
 
 export const TABLE_HEADS = [
