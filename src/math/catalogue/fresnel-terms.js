@@ -99,7 +99,8 @@ export const FRESNEL_FAMILY = {
 // dispatch offers it yet: its tint is not an input of fresnelTerm(f0, lh).
 import { fresnelF82Tint } from '../fresnel.js';
 
-FRESNEL_FAMILY.terms.f82Tint = {
+/** @type {import('./types.js').TermEntry} */
+const F82_TINT = {
   key: 'f82Tint',
   label: 'F82-tint',
   short: 'F82-tint',
@@ -123,3 +124,4 @@ FRESNEL_FAMILY.terms.f82Tint = {
     },
   },
 };
+FRESNEL_FAMILY.terms.f82Tint = F82_TINT;
