@@ -24,6 +24,7 @@ function checkShape(report) {
     'ndf',
     'oren-nayar',
     'multiple-scattering',
+    'fresnel-metal-two-colours',
   ]);
   for (const f of report.families) {
     expect(f).toMatchObject({ title: expect.any(String), domain: expect.any(String), errorOf: expect.any(String) });
