@@ -1,7 +1,7 @@
-// The bench family of a metal's Fresnel from two colours per channel: Schlick (F0 alone, the talk's), Gulbrandsen
-// 2014's edge tint (F0 and g, mapped to (n, k) once per material, then the exact equations per pixel) and F82-tint
-// (F0 and the tint at cos θ = 1/7: Hoffman 2023, OpenPBR's metal), each fitted to the measured (n, k) of the talk's
-// five metals and scored against the exact conductor Fresnel equations with those (n, k).
+// The bench family of a metal's Fresnel from two colours (two numbers per channel): Schlick (F0 alone, the talk's),
+// Gulbrandsen 2014's edge tint (F0 and g, mapped to (n, k) once per material, then the exact equations per pixel) and
+// F82-tint (F0 and the tint at cos θ = 1/7: Hoffman 2023, OpenPBR's metal), each fitted to the measured (n, k) of the
+// talk's five metals and scored against the exact conductor Fresnel equations with those (n, k).
 import * as M from '../src/math/index.js';
 
 const COS = Array.from({ length: 1001 }, (_, i) => i / 1000);
