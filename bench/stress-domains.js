@@ -104,6 +104,7 @@ export const STRESS_DOMAINS = {
     range: NON_NEGATIVE,
   },
   edgeTintFromConductorIor: { args: [[0.01, 0.5, 1, 3, 100], K], range: FINITE },
+  f82TintFromConductor: { args: [ETA, K], range: [0, 2.2], pick: ['f0', 'tint'] }, // tint ≤ 1 / (6/7)⁵ ≈ 2.16
   fresnelZone: { args: [COS], range: [0, 2] },
   sphereZoneFractions: { args: [], range: ZERO_TO_ONE },
   clampAlpha: { args: [ALPHA], range: [1e-4, 1] },

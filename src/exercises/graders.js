@@ -24,6 +24,7 @@ import { FRESNEL_ZONE_BOUNDS_DEG, fresnelZone } from '../math/zones.js';
 import { displayRms, highlightArea, peakOf, sphereRadiance } from './sphere-image.js';
 import { DEG } from '../math/angles.js';
 import { termOptions } from '../math/catalogue/index.js';
+import { F82_GRADERS } from './f82-grader.js';
 
 /** A number for feedback: 3 significant digits, no exponent for everyday sizes. */
 export const fmt = (x, digits = 3) => {
@@ -534,6 +535,7 @@ export const GRADERS = {
       return { ok: false, summary: `${offBy(answer, target, '')}; needs to be within ±${fmt(tolerance)}.`, details };
     },
   },
+  ...F82_GRADERS,
 };
 
 export const isGraderName = (name) => Object.hasOwn(GRADERS, name);

@@ -25,6 +25,7 @@ function checkShape(report) {
     'oren-nayar',
     'multiple-scattering',
     'anisotropy',
+    'fresnel-metal-two-colours',
   ]);
   for (const f of report.families) {
     expect(f).toMatchObject({ title: expect.any(String), domain: expect.any(String), errorOf: expect.any(String) });

@@ -7,6 +7,7 @@ import { termInputs } from '../../math/catalogue/grids.js';
 import { merlCoordinates } from '../../measured/merl.js';
 import { buildAlbedoTableGGX, albedoLossTableGGX } from '../../math/albedo-table.js';
 import { ANISOTROPIC_PARITY_CASES } from './parity-cases/anisotropic.js';
+import { F82_TINT_PARITY_CASES } from './parity-cases/f82-tint.js';
 
 let albedoTable = null; // built on first use (~0.5 s)
 const albedoTableOnce = () => (albedoTable ??= buildAlbedoTableGGX());
@@ -559,4 +560,5 @@ export const PARITY_CASES = [
   },
   ...termParityCases(CATALOGUE),
   ...ANISOTROPIC_PARITY_CASES,
+  ...F82_TINT_PARITY_CASES,
 ];
