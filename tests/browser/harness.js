@@ -43,6 +43,9 @@ export async function buildApp(outDir = join(ROOT, 'dist')) {
   return outDir;
 }
 
+/** A viewport for a test where the page's size is not the claim (SwiftShader draws every pixel on the CPU). */
+export const SMALL_VIEWPORT = { width: 800, height: 600 };
+
 const TYPES = {
   '.html': 'text/html',
   '.js': 'text/javascript',
