@@ -5,22 +5,43 @@
 import { createServer } from 'node:http';
 import { CHROME_HINT, buildApp, findChrome, serveStatic, startChromium } from './harness.js';
 
+/** Closes every incognito context of `browser` (what a file that ended without closing its own left behind). */
+async function disposeContexts(browser) {
+  const session = await browser.target().createCDPSession();
+  try {
+    const { browserContextIds } = await session.send('Target.getBrowserContexts');
+    await Promise.all(
+      browserContextIds.map((id) =>
+        session.send('Target.disposeBrowserContext', { browserContextId: id }).catch(() => {}),
+      ),
+    );
+  } finally {
+    await session.detach();
+  }
+}
+
 /**
- * Serves GET /?worker=N: the DevTools WebSocket address of worker N's Chromium, started on the first ask and again
- * whenever the last one has crashed or been closed. Resolves to { url, close } (close ends every Chromium).
+ * Serves GET /?worker=N&pid=P: the DevTools WebSocket address of worker N's Chromium, started on the first ask and
+ * again whenever the last one has crashed or been closed. Each test file runs in a process of its own (P): asked by
+ * a new one, the broker first closes whatever contexts the worker's last file left open (a file stopped by a timeout
+ * in its hooks, say), so that no page of it goes on drawing beside the next file. Resolves to { url, close }.
  */
 function chromiumBroker() {
   const browsers = new Map(); // worker → Promise<Browser>
-  const forWorker = async (worker) => {
-    const known = await browsers.get(worker)?.catch(() => null);
-    if (known?.connected) return known;
-    const started = startChromium();
-    browsers.set(worker, started);
-    return started;
+  const served = new Map(); // worker → the process it last served
+  const forWorker = async (worker, pid) => {
+    let browser = await browsers.get(worker)?.catch(() => null);
+    if (!browser?.connected) {
+      const started = startChromium();
+      browsers.set(worker, started);
+      browser = await started;
+    } else if (served.get(worker) !== pid) await disposeContexts(browser);
+    served.set(worker, pid);
+    return browser;
   };
   const server = createServer((req, res) => {
-    const worker = new URL(req.url, 'http://x').searchParams.get('worker') ?? '0';
-    forWorker(worker).then(
+    const query = new URL(req.url, 'http://x').searchParams;
+    forWorker(query.get('worker') ?? '0', query.get('pid')).then(
       (browser) => res.writeHead(200).end(browser.wsEndpoint()),
       (error) => res.writeHead(500).end(String(error?.message ?? error)),
     );

@@ -178,14 +178,25 @@ class FileBrowser {
   }
 }
 
+/** The address of the browser tests' Chromium broker (global-setup.js) in a vitest worker; else undefined. */
+async function brokerAddress() {
+  if (!process.env.VITEST) return undefined;
+  try {
+    return (await import('vitest')).inject('chromiumBroker');
+  } catch {
+    return undefined; // a process a test started (the bench), which has the worker's environment but not its state
+  }
+}
+
 /**
  * A browser for a test file. In the suite (the browser tests' global setup keeps one Chromium per worker), the
  * file's own incognito context in its worker's Chromium (FileBrowser); with `extraArgs` (flags of its own) or
  * `{ own: true }`, or outside the suite (the screenshot scripts), a Chromium of its own.
  */
 export async function launchBrowser(extraArgs = [], { own = extraArgs.length > 0 } = {}) {
-  const endpoint = process.env.VITEST && !own ? (await import('vitest')).inject('chromiumBroker') : undefined;
-  return endpoint ? new FileBrowser(`${endpoint}?worker=${process.env.VITEST_POOL_ID ?? 0}`) : startChromium(extraArgs);
+  const endpoint = own ? undefined : await brokerAddress();
+  if (!endpoint) return startChromium(extraArgs);
+  return new FileBrowser(`${endpoint}?worker=${process.env.VITEST_POOL_ID ?? 0}&pid=${process.pid}`);
 }
 
 /**

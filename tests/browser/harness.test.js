@@ -1,6 +1,6 @@
 // The suite's browsers (harness.js, launchBrowser): the files of a worker share one Chromium, each in an incognito
 // context of its own, so that nothing a file stores is seen by the next; a Chromium that went away is replaced.
-import { afterEach, describe, expect, it } from 'vitest';
+import { afterEach, describe, expect, inject, it } from 'vitest';
 import { baseUrl, launchBrowser } from './helpers.js';
 
 const opened = [];
@@ -96,6 +96,14 @@ describe('one Chromium per worker, an incognito context per file', () => {
     expect(await after.evaluate(() => document.readyState)).toBe('complete');
     const later = await landing(await fileBrowser()); // and the next file is given the new one
     expect(later.browser().wsEndpoint()).toBe(after.browser().wsEndpoint());
+  });
+
+  it('what a file left open (it ended without closing) is closed before the next file of its worker', async () => {
+    const page = await landing(await fileBrowser());
+    // the next file is another process: it asks the broker for the worker's Chromium as launchBrowser() does
+    const next = `${inject('chromiumBroker')}?worker=${process.env.VITEST_POOL_ID ?? 0}&pid=next-file`;
+    expect((await fetch(next)).ok).toBe(true);
+    await expect.poll(() => page.isClosed(), { timeout: 10_000 }).toBe(true);
   });
 
   it('a file asking for flags of its own gets a Chromium of its own', async () => {
