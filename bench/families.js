@@ -26,7 +26,10 @@ const measuredChannels = M.METALS.flatMap((m) =>
 // function on the GPU (angles x, y; its parameters from BENCH_GLSL or mid-range).
 const BENCH_GLSL = {
   visibility: { alpha: '0.3' },
-  ndf: { alpha: '0.05 + 0.5 * y', exponent: '10.0 + 100.0 * y', a1: '1.0 + 100.0 * y', a2: '2.5', p: '0.64' },
+  ndf: {
+    ...{ nh: 'x', sin2h: '(1.0 - x) * (1.0 + x)' }, // D over x = n·h (the microfacet input's nh, sin2h)
+    ...{ alpha: '0.05 + 0.5 * y', exponent: '10.0 + 100.0 * y', a1: '1.0 + 100.0 * y', a2: '2.5', p: '0.64' },
+  },
 };
 const glslFloat = (x) => (Number.isInteger(x) ? x.toFixed(1) : String(x));
 const BENCH_ANGLE = {
@@ -77,7 +80,7 @@ function termVariants(family, roles) {
     const reference = Object.keys(roles).find((k) => roles[k].kind === 'reference');
     const { params } = term;
     const glslOf = (arg) =>
-      BENCH_ANGLE[arg] ?? BENCH_GLSL[family][arg] ?? glslFloat((params[arg].min + params[arg].max) / 2);
+      BENCH_GLSL[family][arg] ?? BENCH_ANGLE[arg] ?? glslFloat((params[arg].min + params[arg].max) / 2);
     return {
       key: role.key ?? kebab(term.key),
       label: role.label ?? term.label,

@@ -6,6 +6,7 @@
 // A custom chunk has common.glsl before it (PI, saturate, sin2FromCos), so the starters use PI. The calls of the
 // slots that stand in a family's menu are the catalogue's (src/math/catalogue/custom-terms.js).
 import { CUSTOM_TERMS } from '../../math/catalogue/index.js';
+import { PARAMETERS } from '../../math/catalogue/parameters.js';
 
 /**
  * One argument of a slot's GLSL function.
@@ -29,13 +30,15 @@ import { CUSTOM_TERMS } from '../../math/catalogue/index.js';
  * @property {string} reference the catalogue key (of `family`, or of the diffuse family for 'brdf') the checks
  *   compare with by default
  * @property {string} starter GLSL text, a correct term
- * @property {string} call the expression the widgets and the term dispatch use, over the dispatch's arguments
+ * @property {string} call the expression the widgets and the term dispatch use: for D and V over the fields of the
+ *   microfacet input m (shaders/microfacet-input.glsl), the user's signature unchanged
  * @property {string[]} inputs what one evaluation input holds, in order (gpu-eval.js packs it into a.xyzw, b.xyzw)
  * @property {string} evalCall the call over a and b that evaluates the slot on those inputs
  * @property {1 | 3} outputs floats of the result (a float in .x, a vec3 in .xyz)
  */
 
-const ALPHA_ARG = /** @type {SlotArg} */ ({ name: 'alpha', type: 'float', min: 1e-4, max: 1, unit: '', label: 'α' });
+const { min, max } = PARAMETERS.alpha;
+const ALPHA_ARG = /** @type {SlotArg} */ ({ name: 'alpha', type: 'float', min, max, unit: '', label: 'α' });
 /** @param {string} name @param {string} label @returns {SlotArg} */
 const cosArg = (name, label) => ({ name, type: 'float', min: 0, max: 1, unit: '', label });
 /** @param {string} name @param {string} label @returns {SlotArg} */

@@ -1,0 +1,58 @@
+// @ts-check
+// The parameters several terms share, defined once: range, unit, label, the values the stress grids sweep, the
+// kind (a number, a vec2 such as the roughness pair (αx, αy), an RGB colour) and the uniform that carries each to
+// the GPU. A term names them in its params (and may narrow one, as SGD's α does); its own parameters (Blinn–Phong's
+// exponent, ABC's a1, a2) stay in its entry. The JS functions (ndf.js's clampAlpha) and the GLSL (the generated
+// chunk 'parameters.glsl': ALPHA_MIN, ALPHA_MAX) read the α range from here.
+
+/** @typedef {import('./types.js').TermParam} TermParam */
+
+/** The range of the microfacet roughness α every isotropic D and V term reads, and of each of αx, αy. */
+const ALPHA_RANGE = {
+  min: 1e-4,
+  max: 1,
+  unit: '',
+  clamped: true,
+  delicate: [1e-5, 1e-3, 0.01, 0.1, 0.3, 0.5],
+};
+
+/** The reflectance at normal incidence: Schlick's F0, the diffuse terms' and the compensations'. */
+const F0_RANGE = { min: 0, max: 1, unit: '', delicate: [0.02, 0.04, 0.17, 0.5, 0.95] };
+const CDIFF_RANGE = { min: 0, max: 1, unit: '', clamped: true };
+
+/** @type {Record<string, TermParam>} */
+export const PARAMETERS = {
+  alpha: { ...ALPHA_RANGE, label: 'Roughness α', uniform: 'uAlpha' },
+  // an anisotropic lobe's roughness along the tangent t and the bitangent b: the microfacet input's α pair
+  alphaX: { ...ALPHA_RANGE, label: 'Roughness along the tangent αx' },
+  alphaY: { ...ALPHA_RANGE, label: 'Roughness along the bitangent αy' },
+  roughness: { ...ALPHA_RANGE, kind: 'vec2', label: 'Roughness (αx, αy)' },
+  f0: { ...F0_RANGE, label: 'Reflectance at normal incidence F0', uniform: 'uF0' },
+  f0Colour: { ...F0_RANGE, kind: 'colour', label: 'Reflectance at normal incidence F0 (RGB)' },
+  cdiff: { ...CDIFF_RANGE, label: 'Diffuse colour c_diff', uniform: 'uDiffuse' },
+  diffuseColour: { ...CDIFF_RANGE, kind: 'colour', label: 'Diffuse colour c_diff (RGB)' },
+  sigma: {
+    min: 0,
+    max: Math.PI / 2,
+    unit: 'rad',
+    label: 'Roughness σ',
+    delicate: [0.1, 0.3, 0.6, 1],
+    uniform: 'uSigma',
+  },
+  E: { min: 0, max: 1, unit: '', label: 'Directional albedo E(n·v)' },
+};
+
+/** A number as a GLSL float literal. @param {number} x */
+const glslFloat = (x) => (Number.isInteger(x) ? x.toFixed(1) : String(x));
+
+/**
+ * The generated chunk 'parameters.glsl': the ranges the GLSL clamps to, from the table.
+ * @returns {string}
+ */
+export function parametersGlsl() {
+  return [
+    '// The shared parameters\u2019 ranges, generated from src/math/catalogue/parameters.js.',
+    `#define ALPHA_MIN ${glslFloat(PARAMETERS.alpha.min)}`,
+    `#define ALPHA_MAX ${glslFloat(PARAMETERS.alpha.max)}`,
+  ].join('\n');
+}
