@@ -166,7 +166,7 @@ describe('adding an anisotropic term: one catalogue entry and its two functions,
     );
   });
 
-  it('has parity rows: its function over directions and (αx, αy) from the shared table, and through the dispatch', () => {
+  it('has parity rows: its function over directions and the shared (αx, αy), and through the dispatch', () => {
     const rows = app.parity.PARITY_CASES;
     const d = rows.find((c) => c.name === 'ndfGGXAnisoTest');
     expect(d).toMatchObject({ chunk: 'ndf-aniso-test.glsl', glsl: 'ndfGGXAnisoTest(a.x, a.y, a.z, a.w, b.x)' });

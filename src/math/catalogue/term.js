@@ -13,8 +13,8 @@
 
 import { PARAMETERS } from './parameters.js';
 
-/** The microfacet roughness α every isotropic D and V term reads (the shared table's). */
-export const ALPHA = PARAMETERS.alpha;
+/** The microfacet roughness α every isotropic D and V term reads (the shared table's, which has delicate values). */
+export const ALPHA = /** @type {import('./types.js').TermParam & { delicate: number[] }} */ (PARAMETERS.alpha);
 
 /**
  * A camelCase key in SCREAMING_SNAKE, as defines spell it: 'blinnPhong' → 'BLINN_PHONG', an acronym one word
