@@ -37,8 +37,15 @@ import { PARAMETERS } from '../../math/catalogue/parameters.js';
  * @property {1 | 3} outputs floats of the result (a float in .x, a vec3 in .xyz)
  */
 
-const { min, max } = PARAMETERS.alpha;
-const ALPHA_ARG = /** @type {SlotArg} */ ({ name: 'alpha', type: 'float', min, max, unit: '', label: 'α' });
+const { alpha: ALPHA, f0: F0 } = PARAMETERS;
+const ALPHA_ARG = /** @type {SlotArg} */ ({
+  name: 'alpha',
+  type: 'float',
+  min: ALPHA.min,
+  max: ALPHA.max,
+  unit: '',
+  label: 'α',
+});
 /** @param {string} name @param {string} label @returns {SlotArg} */
 const cosArg = (name, label) => ({ name, type: 'float', min: 0, max: 1, unit: '', label });
 /** @param {string} name @param {string} label @returns {SlotArg} */
@@ -133,7 +140,7 @@ export const SLOTS = {
     fn: 'customF',
     signature: 'vec3 customF(vec3 f0, float lh)',
     returns: 'vec3',
-    args: [{ name: 'f0', type: 'vec3', min: 0, max: 1, unit: '', label: 'F0' }, cosArg('lh', 'l·h')],
+    args: [{ name: 'f0', type: 'vec3', min: F0.min, max: F0.max, unit: '', label: 'F0' }, cosArg('lh', 'l·h')],
     family: 'fresnel',
     reference: 'schlick',
     starter: STARTER_F,
@@ -157,7 +164,7 @@ export const SLOTS = {
     reference: 'lambert',
     starter: STARTER_DIFFUSE,
     call: 'customDiffuse(cdiff, l, v, alpha)',
-    // a grey c_diff: eight floats are what one evaluation carries
+    // a grey c_diff: one float of the evaluation's inputs (eight in all, as the slot's first checks were built)
     inputs: ['cdiff', 'lx', 'ly', 'lz', 'vx', 'vy', 'vz', 'alpha'],
     evalCall: 'customDiffuse(vec3(a.x), a.yzw, b.xyz, b.w)',
     outputs: 3,
