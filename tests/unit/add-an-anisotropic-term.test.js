@@ -86,8 +86,10 @@ beforeAll(async () => {
     parity: await import('../../src/core/gpu/parity-cases.js'),
     harness: await import('../../src/core/gpu/parity.js'),
     stress: (await import('../../bench/stress-domains.js')).STRESS_DOMAINS,
+    families: (await import('../../bench/families.js')).FAMILIES,
+    graders: await import('../../src/exercises/graders.js'),
   };
-});
+}, 60_000); // the app's modules, imported afresh with the two entries
 afterAll(() => {
   vi.doUnmock('../../src/math/catalogue/ndf-terms.js');
   vi.doUnmock('../../src/math/catalogue/visibility-terms.js');
@@ -127,9 +129,15 @@ describe('adding an anisotropic term: one catalogue entry and its two functions,
     expect(ndfGGXAnisoTest(...t, 0.4, 0.1)).toBeGreaterThan(10 * ndfGGXAnisoTest(...b, 0.4, 0.1));
   });
 
-  it('is in the menus and the defines, and the JS dispatch (termAt) reads it off the microfacet input', () => {
-    const { termOptions, termDefines, CATALOGUE } = app.catalogue;
-    expect(termOptions('ndf').ggxAnisoTest).toBe('GGX, anisotropic (test)');
+  it('has its defines and the JS dispatch (termAt) reads it off the microfacet input; no cosine menu offers it', () => {
+    const { termOptions, termDefines, termLabel, CATALOGUE } = app.catalogue;
+    expect(termLabel('ndf', 'ggxAnisoTest')).toBe('GGX, anisotropic (test)');
+    // the menus of the widgets that plot D(n·h) (no widget has αx, αy controls), nor the bench's cosine curves
+    expect(termOptions('ndf')).not.toHaveProperty('ggxAnisoTest');
+    expect(termOptions('ndf')).toHaveProperty('sgd');
+    const ndf = app.families.find((f) => f.key === 'ndf');
+    expect(ndf.variants.map((v) => v.key)).not.toContain('ggx-aniso-test');
+    expect(app.graders.NDF_NAMES).not.toHaveProperty('ggxAnisoTest'); // the which-NDF exercise's choices
     expect(termDefines({ D: 'ggxAnisoTest', V: 'ggxAnisoTest' })).toEqual({
       NDF_GGX_ANISO_TEST: true,
       VIS_GGX_ANISO_TEST: true,
