@@ -9,6 +9,7 @@ import { microfacetInput, termAt } from '../../src/math/catalogue/microfacet-inp
 import { termUniforms } from '../../src/math/catalogue/uniforms.js';
 import { clampAlpha, clampSgd, sgdNormalization } from '../../src/math/ndf.js';
 import { SHADER_CHUNKS } from '../../src/core/gpu/shader-chunks.js';
+import { termCall, termUniformTypes } from '../../src/core/gpu/term-chunks.js';
 import { LAB_TERMS, termsWith } from '../../src/lab/lab-approximations.js';
 import { FIT_MODELS } from '../../src/measured/fit.js';
 import { SLOTS } from '../../src/core/custom/slots.js';
@@ -58,6 +59,23 @@ describe('each uniform bound to its parameter', () => {
       uSgdNorm: sgdNormalization(...clampSgd(m.sgd.alpha, m.sgd.p)),
     });
     expect(cell('ggx')).not.toHaveProperty('uSgdNorm'); // a cell sets the uniforms of its own terms only
+  });
+});
+
+describe('a term’s own parameters: their uniforms, of the parameter’s kind', () => {
+  it('a float, a vec2 (a roughness pair) and an RGB colour each declare their uniform in the dispatch', () => {
+    const term = {
+      ...CATALOGUE.ndf.terms.abc,
+      glsl: 'ndfKinds',
+      args: ['nh', 'a1', 'pair', 'tint'],
+      params: {
+        a1: CATALOGUE.ndf.terms.abc.params.a1,
+        pair: { min: 0, max: 1, unit: '', label: 'pair', kind: 'vec2', uniform: 'uPair' },
+        tint: { min: 0, max: 1, unit: '', label: 'tint', kind: 'colour', uniform: 'uTint' },
+      },
+    };
+    expect(termUniformTypes(term)).toEqual({ uA1: 'float', uPair: 'vec2', uTint: 'vec3' });
+    expect(termCall(term)).toBe('ndfKinds(m.nh, uA1, uPair, uTint)');
   });
 });
 

@@ -1,7 +1,7 @@
 // @ts-check
-// The parameters several terms share, defined once: range, unit, label, the values the stress grids sweep, the
-// kind (a number, a vec2 such as the roughness pair (αx, αy), an RGB colour) and the uniform that carries each to
-// the GPU. A term names them in its params (and may narrow one, as SGD's α does); its own parameters (Blinn–Phong's
+// The parameters several terms share, defined once: range, unit, label, the values the stress grids sweep and the
+// uniform that carries each to the GPU (a parameter's kind, types.js, makes it a vec2 or an RGB colour uniform).
+// A term names them in its params (and may narrow one, as SGD's α does); its own parameters (Blinn–Phong's
 // exponent, ABC's a1, a2) stay in its entry. The JS functions (ndf.js's clampAlpha) and the GLSL (the generated
 // chunk 'parameters.glsl': ALPHA_MIN, ALPHA_MAX) read the α range from here.
 
@@ -16,21 +16,22 @@ const ALPHA_RANGE = {
   delicate: [1e-5, 1e-3, 0.01, 0.1, 0.3, 0.5],
 };
 
-/** The reflectance at normal incidence: Schlick's F0, the diffuse terms' and the compensations'. */
-const F0_RANGE = { min: 0, max: 1, unit: '', delicate: [0.02, 0.04, 0.17, 0.5, 0.95] };
-const CDIFF_RANGE = { min: 0, max: 1, unit: '', clamped: true };
-
 /** @type {Record<string, TermParam>} */
 export const PARAMETERS = {
   alpha: { ...ALPHA_RANGE, label: 'Roughness α', uniform: 'uAlpha' },
   // an anisotropic lobe's roughness along the tangent t and the bitangent b: the microfacet input's α pair
   alphaX: { ...ALPHA_RANGE, label: 'Roughness along the tangent αx' },
   alphaY: { ...ALPHA_RANGE, label: 'Roughness along the bitangent αy' },
-  roughness: { ...ALPHA_RANGE, kind: 'vec2', label: 'Roughness (αx, αy)' },
-  f0: { ...F0_RANGE, label: 'Reflectance at normal incidence F0', uniform: 'uF0' },
-  f0Colour: { ...F0_RANGE, kind: 'colour', label: 'Reflectance at normal incidence F0 (RGB)' },
-  cdiff: { ...CDIFF_RANGE, label: 'Diffuse colour c_diff', uniform: 'uDiffuse' },
-  diffuseColour: { ...CDIFF_RANGE, kind: 'colour', label: 'Diffuse colour c_diff (RGB)' },
+  // the reflectance at normal incidence: Schlick's F0, the diffuse terms' and the compensations'
+  f0: {
+    min: 0,
+    max: 1,
+    unit: '',
+    label: 'Reflectance at normal incidence F0',
+    delicate: [0.02, 0.04, 0.17, 0.5, 0.95],
+    uniform: 'uF0',
+  },
+  cdiff: { min: 0, max: 1, unit: '', label: 'Diffuse colour c_diff', clamped: true, uniform: 'uDiffuse' },
   sigma: {
     min: 0,
     max: Math.PI / 2,
