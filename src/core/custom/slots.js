@@ -164,7 +164,7 @@ export const SLOTS = {
     reference: 'lambert',
     starter: STARTER_DIFFUSE,
     call: 'customDiffuse(cdiff, l, v, alpha)',
-    // a grey c_diff: one float of the evaluation's inputs (eight in all, as the slot's first checks were built)
+    // a grey c_diff: one float, so that c_diff, l, v and α are eight floats, two texels of the harness
     inputs: ['cdiff', 'lx', 'ly', 'lz', 'vx', 'vy', 'vz', 'alpha'],
     evalCall: 'customDiffuse(vec3(a.x), a.yzw, b.xyz, b.w)',
     outputs: 3,
