@@ -15,7 +15,7 @@ const customBrdfChunks = (code) => ({
   'measured.glsl': SHADER_CHUNKS['lab-custom-brdf.glsl'],
 });
 
-/** The fragment source of the lab's program of `defines` with `code` as its BRDF (compileCustom checks it). */
+/** The fragment source of the lab's program of `defines` with `code` as its BRDF (compile-guard.js checks it). */
 export const customBrdfFragment = (defines, code) =>
   fragmentSource(FRAGMENT, { defines, chunks: customBrdfChunks(code) });
 

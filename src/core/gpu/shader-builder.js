@@ -45,3 +45,44 @@ export function buildShader(
 
 /** How many programs of each fragment file have been built so far (what a test reads: one per key). */
 export const shadersBuilt = () => Object.fromEntries(built);
+
+const probe = { quad: null, camera: null, target: null };
+
+/**
+ * Compiles `material` on `renderer` the way a draw would (renderer.compile: the same program three.js then draws
+ * with, so nothing is compiled twice), into a render target when `offscreen` (a target's colour space is part of
+ * the program), and checks that it links. A failure is heard through three.js's own hook
+ * (renderer.debug.onShaderError, in place of its console error): returns the logs then, else null.
+ * @param {THREE.WebGLRenderer} renderer
+ * @param {THREE.ShaderMaterial} material
+ * @param {{ offscreen?: boolean }} [options]
+ * @returns {{ vertex: string, fragment: string, program: string } | null}
+ */
+export function compileShader(renderer, material, { offscreen = false } = {}) {
+  probe.quad ??= Object.assign(new THREE.Mesh(new THREE.PlaneGeometry(2, 2)), { frustumCulled: false });
+  probe.camera ??= new THREE.Camera();
+  probe.target ??= new THREE.WebGLRenderTarget(1, 1);
+  /** @type {{ vertex: string, fragment: string, program: string } | null} */
+  let failed = null;
+  const { debug } = renderer;
+  const [hook, previous] = [debug.onShaderError, renderer.getRenderTarget()];
+  debug.onShaderError = (gl, program, vertex, fragment) => {
+    const log = (/** @type {string | null} */ text) => text ?? '';
+    failed = {
+      vertex: log(gl.getShaderInfoLog(vertex)),
+      fragment: log(gl.getShaderInfoLog(fragment)),
+      program: log(gl.getProgramInfoLog(program)),
+    };
+  };
+  try {
+    probe.quad.material = material;
+    renderer.setRenderTarget(offscreen ? probe.target : null);
+    renderer.compile(probe.quad, probe.camera);
+    renderer.properties.get(material).currentProgram?.getUniforms(); // three.js's link check: the hook on failure
+  } finally {
+    debug.onShaderError = hook;
+    renderer.setRenderTarget(previous);
+    probe.quad.material = null;
+  }
+  return failed;
+}
