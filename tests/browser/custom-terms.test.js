@@ -120,7 +120,7 @@ describe('custom terms on the GPU', () => {
 });
 
 describe('a user-written term is compiled once, by three.js', () => {
-  it('evaluating new code compiles one fragment program, the one three.js draws with (no raw compile beside it)', async () => {
+  it('new code compiles one fragment program, the one three.js draws with (no raw compile beside it)', async () => {
     const code = D(
       '  float a2 = alpha * alpha * 1.000001;\n  float d = nh * nh * (a2 - 1.0) + 1.0;\n  return a2 / (PI * d * d);',
     );
