@@ -55,7 +55,7 @@ export const MULTIPLE_SCATTERING_FAMILY = {
   // what the GPU pass needs besides the default chunks: the table, bound as a texture
   gpu: {
     chunk: 'multiple-scattering.glsl',
-    defines: { ALBEDO_TABLE_GGX: true },
+    defines: { ALBEDO_TABLE_GGX: 1 },
     tables: { uAlbedoTableGGX: tableOnce },
   },
   variants: [

@@ -2,6 +2,7 @@
 // postMessage protocol of src/core/framework/embed-protocol.js with its parent, if the parent's origin is allowed
 // (`origins=`, a comma list; the widget's own origin always is), and tells it the height of its content.
 // `presenter=1`: the presenter view for slides, the widget's views only (no control panel), filling the frame.
+// `locked=KEY,KEY`: settings the reader (and a parent's `set`) cannot change, as an exercise fixes them.
 import '../styles.css';
 import { mountOrExplain } from '../core/framework/widget-failure.js';
 import { connectEmbedProtocol, parseAllowedOrigins } from '../core/framework/embed-protocol.js';
@@ -25,16 +26,18 @@ if (isWidgetName(name)) {
   if (originProblems.length) notices.show(originProblems);
   let link = null;
   // the protocol starts once the widget is up, at the first try or a retry (a failure says so in the frame)
-  const connect = async (instance) => {
+  const connect = (instance, widget) => {
     if (!framed) return;
-    const { widget } = await WIDGETS[name].load();
     const capture = () => snapshotWidget(root.querySelector('.widget'));
     // the presenter view fills whatever frame it is given: no height of its own to report
     const content = presenter ? null : root;
-    link = connectEmbedProtocol({ name, schema: widget.schema, instance, origins, notices, capture, content });
+    const { schema } = widget;
+    link = connectEmbedProtocol({ name, schema, instance, widgetRoot: root, origins, notices, capture, content });
     link.ready();
   };
-  await mountOrExplain(root, name, { widgets: WIDGETS, onStateChange: () => link?.userChanged() }, connect);
+  const locked = (params.get('locked') ?? '').split(',').filter(Boolean);
+  const onStateChange = () => link?.userChanged();
+  await mountOrExplain(root, name, { widgets: WIDGETS, onStateChange, locked }, connect);
 } else {
   const known = Object.keys(WIDGETS).join(', ');
   const what = name ? `There is no widget called ${showValue(name)}.` : 'No widget named.';

@@ -11,6 +11,14 @@ import { watchContext } from '../../src/core/custom/context-watch.js';
 const renderer = new THREE.WebGLRenderer({ canvas: document.getElementById('gl') });
 const check = (slot, code, params = {}, options = {}) => runChecks(renderer, slot, code, params, options);
 const loseContext = renderer.getContext().getExtension('WEBGL_lose_context');
+// every fragment shader the context compiles, counted (three.js's and any other), for the compile-once test
+const gl = renderer.getContext();
+const compileShader = gl.compileShader.bind(gl);
+let fragmentCompiles = 0;
+gl.compileShader = (shader) => {
+  if (gl.getShaderParameter(shader, gl.SHADER_TYPE) === gl.FRAGMENT_SHADER) fragmentCompiles++;
+  compileShader(shader);
+};
 const events = [];
 const watch = watchContext(renderer, {
   onLost: (message, suspect) => events.push({ type: 'lost', message, suspect }),
@@ -21,7 +29,11 @@ const watch = watchContext(renderer, {
 window.__customTerms = {
   SLOTS,
   renderer,
-  compileCustom: (source) => compileCustom(renderer, source),
+  compileCustom: (source) => {
+    const { ok, errors, release } = compileCustom(renderer, source, { vertex: 'sphere-impostor.vert.glsl' });
+    release();
+    return { ok, errors };
+  },
   evaluate: (slot, code, params, inputs) => {
     const out = evaluateCustom(renderer, slot, code, params, inputs);
     return out instanceof Float32Array ? Array.from(out) : out;
@@ -36,6 +48,7 @@ window.__customTerms = {
     return report;
   },
   events,
+  fragmentCompiles: () => fragmentCompiles,
   lose: () => loseContext.loseContext(),
   restore: () => loseContext.restoreContext(),
 };

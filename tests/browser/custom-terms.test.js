@@ -119,10 +119,41 @@ describe('custom terms on the GPU', () => {
   });
 });
 
+describe('a user-written term is compiled once, by three.js', () => {
+  it('new code compiles one fragment program, the one three.js draws with (no raw compile beside it)', async () => {
+    const code = D(
+      '  float a2 = alpha * alpha * 1.000001;\n  float d = nh * nh * (a2 - 1.0) + 1.0;\n  return a2 / (PI * d * d);',
+    );
+    const counted = await page.evaluate((c) => {
+      const t = window.__customTerms;
+      const before = t.fragmentCompiles();
+      const out = t.evaluate('D', c, {}, [[0.9, 0.3]]);
+      return { compiles: t.fragmentCompiles() - before, out };
+    }, code);
+    expect(counted.compiles).toBe(1);
+    // the value itself: GGX at n·h 0.9, α 0.3 (Walter et al. 2007), a2 scaled by 1.000001
+    const a2 = 0.09 * 1.000001;
+    const d = 0.81 * (a2 - 1) + 1;
+    expect(counted.out[0]).toBeCloseTo(a2 / (Math.PI * d * d), 4);
+    const broken = await page.evaluate(
+      (c) => {
+        const t = window.__customTerms;
+        const before = t.fragmentCompiles();
+        const out = t.evaluate('D', c, {}, [[0.9, 0.3]]);
+        return { compiles: t.fragmentCompiles() - before, out };
+      },
+      code.replace('return a2', 'return b2'),
+    );
+    expect(broken.compiles).toBe(1);
+    expect(broken.out.errors[0]).toMatchObject({ line: 4, message: expect.stringMatching(/b2/) });
+    expect(page.errors).toEqual([]);
+  });
+});
+
 describe('custom in a family’s dispatch (the sphere program of the widgets)', () => {
   const sphere = (code) =>
     assembleGlsl(SHADER_CHUNKS['brdf-sphere.frag.glsl'], {
-      defines: termDefines({ F: 'custom', D: 'custom', V: 'smithGGXCorrelated' }),
+      defines: { ...termDefines({ F: 'custom', D: 'custom', V: 'smithGGXCorrelated' }), SPHERE_IMPOSTOR: 1 },
       chunks: withCustomChunk(withCustomChunk(SHADER_CHUNKS, 'F', SLOTS.F.starter), 'D', code),
     });
   it('compiles with a custom D and a custom F; an error in the D lands on its own line', async () => {

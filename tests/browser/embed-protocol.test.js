@@ -116,6 +116,32 @@ describe('postMessage protocol of embed.html', () => {
     },
   );
 
+  it('coerces a set once, where the widget does: a locked key is kept as it is and brings no error', async () => {
+    const page = await open(browser, 'index.html');
+    const src = new URL('embed.html?w=fresnel-zones&locked=alpha,lightTheta&alpha=0.2', baseUrl()).href;
+    const frame = await embedIn(page, src);
+    const own = originOf(baseUrl());
+    await waitForMessage(page, (d) => d.type === 'shading-lab:ready');
+    // alpha 7 and lightTheta 400 would be clamped (an error) were they free; locked, they are left alone, silently
+    await post(
+      page,
+      { type: 'shading-lab:set', id: 'l1', state: { alpha: 7, lightTheta: 400, mode: 'zones-lh' } },
+      own,
+    );
+    const reply = await waitForMessage(page, (d) => d.type === 'shading-lab:state' && d.id === 'l1');
+    expect(reply.state).toMatchObject({ alpha: 0.2, mode: 'zones-lh' });
+    expect(reply.state.lightTheta).toBe((await widgetState(frame)).lightTheta);
+    // a real error of the same set path still comes back: the free key's bad value
+    await post(page, { type: 'shading-lab:set', id: 'l2', state: { alpha: 0.9, shape: 'banana' } }, own);
+    const error = await waitForMessage(page, (d) => d.type === 'shading-lab:error' && d.id === 'l2');
+    expect(error.errors).toHaveLength(1);
+    expect(error.errors[0]).toMatch(/"banana" is not one of/);
+    expect((await inbox(page)).some((m) => m.data.type === 'shading-lab:error' && m.data.id === 'l1')).toBe(false);
+    expect(await widgetState(frame)).toMatchObject({ alpha: 0.2, mode: 'zones-lh', shape: 'sphere' });
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
   it('ignores messages of the wrong shape without a reply, a change or an error', async () => {
     const page = await open(browser, 'index.html');
     const frame = await embedIn(page, new URL('embed.html?w=ndf-explorer', baseUrl()).href);

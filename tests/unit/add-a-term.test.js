@@ -57,7 +57,7 @@ describe('adding an NDF: one catalogue entry, its JS and its GLSL function, no o
     const { termOptions, termDefines } = app.catalogue;
     expect(termOptions('ndf').cosinePower).toBe('Cosine power');
     expect(Object.keys(termOptions('ndf'))).toHaveLength(6);
-    expect(termDefines({ D: 'cosinePower' })).toEqual({ NDF_COSINE_POWER: true });
+    expect(termDefines({ D: 'cosinePower' })).toEqual({ NDF_COSINE_POWER: 1 });
     const p = { F: 'one', D: 'cosinePower', V: 'implicit', exponent: 20 };
     const a = { nl: 0.8, nv: 0.8, nh: 0.9, lh: 0.8, h: null };
     expect(app.brdf.NDF_TERMS.cosinePower(0.9, p)).toBe(ndfCosinePower(0.9, 20));

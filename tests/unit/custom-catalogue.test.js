@@ -23,7 +23,7 @@ describe('custom in the catalogue', () => {
     });
     // the diffuse dispatch is written by hand (shaders/diffuse-term.glsl): its DIFFUSE_CUSTOM branch
     expect(termOptions('diffuse', undefined, { custom: true })).toHaveProperty('custom');
-    expect(termDefines({ diffuse: 'custom' })).toEqual({ DIFFUSE_CUSTOM: true });
+    expect(termDefines({ diffuse: 'custom' })).toEqual({ DIFFUSE_CUSTOM: 1 });
   });
   it('names the slots’ functions, calls and chunks', () => {
     for (const slot of Object.values(SLOTS).filter((s) => CUSTOM_TERMS[s.family])) {
@@ -36,7 +36,7 @@ describe('custom in the catalogue', () => {
   });
   it('picks the user’s D and V in the sphere program, each user’s code once, after #line 1 1', () => {
     const defines = termDefines({ F: 'schlick', D: 'custom', V: 'custom' });
-    expect(defines).toEqual({ F_SCHLICK: true, NDF_CUSTOM: true, VIS_CUSTOM: true });
+    expect(defines).toEqual({ F_SCHLICK: 1, NDF_CUSTOM: 1, VIS_CUSTOM: 1 });
     const chunks = withCustomChunk(withCustomChunk(SHADER_CHUNKS, 'D', SLOTS.D.starter), 'V', SLOTS.V.starter);
     const text = assembleGlsl(SPHERE, { defines, chunks });
     expect(text).toMatch(/float ndfTerm\(MicrofacetInput m\) \{ return customD\(m\.nh, m\.alpha\.x\); \}/);

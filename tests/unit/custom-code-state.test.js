@@ -5,7 +5,7 @@ import { describe, expect, it } from 'vitest';
 import LZString from 'lz-string';
 import { COMPRESSED_PREFIX, MAX_CODE_CHARS, decodeCode, encodeCode } from '../../src/core/custom/code-state.js';
 import { coerceState, defaultState, paramsToObject, stateToParams } from '../../src/core/framework/state.js';
-import { checkIncomingState, parseMessage } from '../../src/core/framework/embed-protocol.js';
+import { parseMessage, unknownKeys } from '../../src/core/framework/embed-protocol.js';
 import { SLOTS } from '../../src/core/custom/slots.js';
 
 const schema = {
@@ -68,8 +68,9 @@ describe('state: the code and params kinds', () => {
   });
   it('takes plain code from a parent frame set message, and reports the state as its query', () => {
     const msg = parseMessage({ type: 'shading-lab:set', state: { code: SLOTS.D.starter, params: 'a:1' } });
-    expect(checkIncomingState(schema, msg.state, state)).toEqual({ invalid: [], unknown: [] });
-    const next = coerceState(schema, msg.state, state).state;
+    expect(unknownKeys(schema, msg.state)).toEqual([]);
+    const { state: next, notices } = coerceState(schema, msg.state, state);
+    expect(notices).toEqual([]);
     expect(next.code).toBe(SLOTS.D.starter);
     expect(next.params).toEqual({ a: 1 });
   });

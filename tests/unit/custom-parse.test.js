@@ -1,7 +1,8 @@
 // The static checks of user-written terms (src/core/custom/parse.js): each refusal names the user's own line, the
 // loop bound is counted exactly (1024 trips pass, 1025 do not), and slider lines become parameters.
 import { describe, expect, it } from 'vitest';
-import { MAX_LOOP_ITERATIONS, parseCustom, tripCount } from '../../src/core/custom/parse.js';
+import { parseCustom } from '../../src/core/custom/parse.js';
+import { MAX_LOOP_ITERATIONS, tripCount } from '../../src/core/custom/parse-loops.js';
 import { SLOTS } from '../../src/core/custom/slots.js';
 import { MAX_CODE_CHARS } from '../../src/core/custom/code-state.js';
 

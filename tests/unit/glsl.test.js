@@ -8,8 +8,8 @@ describe('GLSL assembly', () => {
     const src = ['#ifdef A', 'a', '#elif defined(B)', 'b', '#else', 'c', '#endif', '#ifndef A', 'notA', '#endif'].join(
       '\n',
     );
-    expect(resolveConditionals(src, { A: true }).split('\n')).toEqual(['a']);
-    expect(resolveConditionals(src, { B: true }).split('\n')).toEqual(['b', 'notA']);
+    expect(resolveConditionals(src, { A: 1 }).split('\n')).toEqual(['a']);
+    expect(resolveConditionals(src, { B: 1 }).split('\n')).toEqual(['b', 'notA']);
     expect(resolveConditionals(src, {}).split('\n')).toEqual(['c', 'notA']);
   });
   it('reads || and && of defined() as the C preprocessor does, and refuses other conditions', () => {
@@ -24,7 +24,7 @@ describe('GLSL assembly', () => {
     const frag = SHADER_CHUNKS['fresnel-zones.frag.glsl'];
     const plain = assembleGlsl(frag, { defines: {} });
     const weighted = assembleGlsl(frag, {
-      defines: { ZONE_BY_LH: true, WEIGHTED: true, NDF_GGX: true, VIS_SMITH_GGX_CORRELATED: true },
+      defines: { ZONE_BY_LH: 1, WEIGHTED: 1, NDF_GGX: 1, VIS_SMITH_GGX_CORRELATED: 1 },
     });
     expect(plain).not.toMatch(/ndfGGX|visibilitySmith|fresnelConductor/);
     expect(weighted).toMatch(/float ndfGGX/);

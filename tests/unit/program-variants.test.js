@@ -25,11 +25,11 @@ function sphereVariants() {
   const diffuse = keys('diffuse').map((d) => termDefines({ diffuse: d }));
   return [
     ...specular,
-    ...diffuse.map((d) => ({ SPECULAR_OFF: true, ...d })),
+    ...diffuse.map((d) => ({ SPECULAR_OFF: 1, ...d })),
     ...diffuse.map((d) => ({ ...termDefines({ F: 'schlick', D: 'ggx', V: 'smithGGXCorrelated' }), ...d })),
-    { FURNACE: true },
-    { FURNACE: true, COMPENSATION_KULLA_CONTY: true, ALBEDO_TABLE_GGX: true },
-    { FURNACE: true, COMPENSATION_TURQUIN: true, ALBEDO_TABLE_GGX: true },
+    { FURNACE: 1 },
+    { FURNACE: 1, COMPENSATION_KULLA_CONTY: 1, ALBEDO_TABLE_GGX: 1 },
+    { FURNACE: 1, COMPENSATION_TURQUIN: 1, ALBEDO_TABLE_GGX: 1 },
   ];
 }
 
@@ -100,7 +100,7 @@ describe('every variant of every program assembles, and declares only the unifor
       'env-prefilter.frag.glsl': [termDefines({ D: 'ggx' }), termDefines({ D: 'beckmann' })],
       'fresnel-zones.frag.glsl': [
         {},
-        { ZONE_BY_LH: true, WEIGHTED: true, ...termDefines({ D: 'ggx', V: 'smithGGXCorrelated' }) },
+        { ZONE_BY_LH: 1, WEIGHTED: 1, ...termDefines({ D: 'ggx', V: 'smithGGXCorrelated' }) },
       ],
       'lab-error.frag.glsl': [{}],
       'lab-view.frag.glsl': [{}],

@@ -6,6 +6,13 @@ import LZString from 'lz-string';
 
 /** The longest code a term may have, in characters (a few hundred lines; a URL stays under ~16 kB). */
 export const MAX_CODE_CHARS = 8000;
+/** The most sliders a code declares, and so the most slider values a state's `params` holds (state.js). */
+export const MAX_PARAMS = 16;
+/**
+ * A decimal number as a URL and a slider line write it: 12, -0.5, .5, 1e-3. Not hex, binary, Infinity or other
+ * digits (state.js reads the URL's numbers with it, parse-sliders.js a slider's MIN MAX DEFAULT).
+ */
+export const DECIMAL = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;
 /**
  * The longest encoded form read: never more than the plain text's limit (compression only shortens). lz-string has
  * no output limit of its own: a crafted 8000-character payload decompresses to at most about 10 million characters

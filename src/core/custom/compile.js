@@ -1,22 +1,15 @@
 // @ts-check
-// Compiles a fragment shader that holds a user-written term with raw WebGL2, before three.js ever sees it: three.js
-// prints a failed compile to the console, and a page with user code must stay quiet. The compiler's log lines of
-// source string 1 (the user's code, after `#line 1 1`: assemble.js) are the user's own lines.
+// Compiles a program that holds a user-written term by three.js itself, before a view draws it: its failure is
+// heard through three.js's error hook (shader-builder.js's compileShader), so a page with user code stays quiet,
+// and the program three.js compiled is the one the view's material then draws with (no second compile beside
+// it). The compiler's log lines of source string 1 (the user's code, after `#line 1 1`: assemble.js) are the
+// user's own lines.
+import { buildShader, compileShader } from '../gpu/shader-builder.js';
 import { USER_SOURCE } from './assemble.js';
 
 /** @typedef {{ line: number, message: string }} CompileError  line 0: not in the user's code */
+/** @typedef {{ ok: boolean, errors: CompileError[], release(): void }} Compiled */
 
-// what three.js puts before a GLSL3 ShaderMaterial's fragment code (WebGLProgram.js), as far as the app's programs
-// read it: the precision and the camera uniforms (brdf-sphere.frag.glsl reads isOrthographic)
-const PREFIX = [
-  '#version 300 es',
-  'precision highp float;',
-  'precision highp int;',
-  'uniform mat4 viewMatrix;',
-  'uniform vec3 cameraPosition;',
-  'uniform bool isOrthographic;',
-  '',
-].join('\n');
 // ANGLE and the drivers write 'ERROR: 1:3: message' (source string : line)
 const LOG_LINE = /^\s*(?:ERROR|error)\s*:\s*(\d+)\s*:\s*(\d+)\s*:\s*(.*)$/;
 
@@ -39,23 +32,30 @@ export function logErrors(log) {
     });
 }
 
+const nothing = () => {};
+
 /**
- * Compiles `fragmentSource` (an assembled program, without #version) with the renderer's WebGL2 context.
- * @param {{ getContext(): WebGL2RenderingContext | WebGLRenderingContext }} renderer a THREE.WebGLRenderer
+ * Compiles `fragmentSource` (an assembled program) over the vertex program `vertex` with the renderer, as a view
+ * draws it (`offscreen`: into a render target). `release()` lets the compiled program go (three.js keeps it while
+ * a material of the same source uses it, so call it once the view's own material is made).
+ * @param {any} renderer a THREE.WebGLRenderer
  * @param {string} fragmentSource
- * @returns {{ ok: boolean, errors: CompileError[] }}
+ * @param {{ vertex?: string, offscreen?: boolean }} [options]
+ * @returns {Compiled}
  */
-export function compileCustom(renderer, fragmentSource) {
+export function compileCustom(renderer, fragmentSource, { vertex, offscreen = false } = {}) {
   const gl = renderer.getContext();
-  if (gl.isContextLost()) return { ok: false, errors: [{ line: 0, message: 'the WebGL context is lost' }] };
-  const shader = gl.createShader(gl.FRAGMENT_SHADER);
-  if (!shader) return { ok: false, errors: [{ line: 0, message: 'WebGL could not make a shader' }] };
-  gl.shaderSource(shader, PREFIX + fragmentSource);
-  gl.compileShader(shader);
-  const ok = Boolean(gl.getShaderParameter(shader, gl.COMPILE_STATUS));
-  const log = ok ? '' : (gl.getShaderInfoLog(shader) ?? '');
-  gl.deleteShader(shader);
-  if (ok) return { ok, errors: [] };
-  const errors = logErrors(log);
-  return { ok, errors: errors.length ? errors : [{ line: 0, message: 'the shader does not compile (no log)' }] };
+  if (gl.isContextLost())
+    return { ok: false, errors: [{ line: 0, message: 'the WebGL context is lost' }], release: nothing };
+  const material = buildShader('custom', { source: fragmentSource, vertex });
+  const release = () => material.dispose();
+  const failed = compileShader(renderer, material, { offscreen });
+  if (!failed) return { ok: true, errors: [], release };
+  release();
+  const errors = logErrors(failed.fragment || failed.vertex || failed.program);
+  return {
+    ok: false,
+    errors: errors.length ? errors : [{ line: 0, message: 'the shader does not compile (no log)' }],
+    release: nothing,
+  };
 }

@@ -1,7 +1,8 @@
 // @ts-check
 // Evaluates a user-written term on the GPU, one texel per input, with the parity harness's evaluation
 // (src/core/gpu/parity.js): the same float32 render target, the same read-back. The code passes the static checks
-// (parse.js: no unbounded loop reaches the GPU) and a raw compile (compile.js: no console output) first.
+// (parse.js: no unbounded loop reaches the GPU) and three.js's compile (compile.js: no console output, and the
+// program compiled there is the one the evaluation draws with) first.
 import { evaluateOnGpu, parityFragment } from '../gpu/parity.js';
 import { SHADER_CHUNKS } from '../gpu/shader-chunks.js';
 import { customChunkName, withCustomChunk } from './assemble.js';
@@ -51,7 +52,11 @@ export function evaluateCustom(renderer, slotKey, code, params, inputs) {
   const parsed = parseCustom(slotKey, code);
   if (!parsed.ok) return { errors: parsed.problems };
   const testCase = customCase(slotKey, code, parsed.params, params, inputs);
-  const compiled = compileCustom(renderer, parityFragment(testCase));
+  const compiled = compileCustom(renderer, parityFragment(testCase), { offscreen: true });
   if (!compiled.ok) return { errors: compiled.errors };
-  return evaluateOnGpu(renderer, testCase);
+  try {
+    return evaluateOnGpu(renderer, testCase);
+  } finally {
+    compiled.release(); // after the evaluation's material took the compiled program over
+  }
 }

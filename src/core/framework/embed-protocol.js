@@ -16,7 +16,8 @@
 // `query` is the state as embed URL parameters (only what differs from the defaults). Messages are taken only
 // from the parent window and from an allowed origin; anything else, or of another shape, is ignored. Replies
 // go to the origin that asked, never to '*'.
-import { coerceState, stateToParams } from './state.js';
+import { stateToParams } from './state.js';
+import { STATE_NOTICES } from './notice.js';
 
 export const MESSAGE_PREFIX = 'shading-lab:';
 export const CHANGED_DEBOUNCE_MS = 150;
@@ -72,16 +73,29 @@ function unknownKeysNotice(schema, unknown) {
   return `${named}${more} ${verb} of this widget (it has: ${Object.keys(schema).join(', ')}); ignored.`;
 }
 
-/**
- * What applying `partial` over `current` would report: `invalid` values (the field keeps its value, or a
- * number is clamped) and `unknown` keys (ignored).
- */
-export function checkIncomingState(schema, partial, current) {
+/** The notice for the keys of `partial` that are no setting of the widget (ignored), or none. */
+export function unknownKeys(schema, partial) {
   const unknown = Object.keys(partial).filter((k) => !Object.hasOwn(schema, k));
-  return {
-    invalid: coerceState(schema, partial, current).notices,
-    unknown: unknown.length ? [unknownKeysNotice(schema, unknown)] : [],
-  };
+  return unknown.length ? [unknownKeysNotice(schema, unknown)] : [];
+}
+
+/**
+ * Applies a parent's `partial` through the widget's own update, the one place a state is coerced (locked keys
+ * left out there), and returns what the parent is told: the notices of that coercion (`widgetRoot` sends them,
+ * STATE_NOTICES), then the unknown keys.
+ */
+function applyFromParent({ schema, instance, notices, widgetRoot }, partial) {
+  const unknown = unknownKeys(schema, partial);
+  if (unknown.length) notices.show(unknown); // the widget shows the invalid values itself
+  const invalid = [];
+  const hear = (/** @type {CustomEvent} */ e) => invalid.push(...e.detail);
+  widgetRoot.addEventListener(STATE_NOTICES, hear);
+  try {
+    instance.update(partial);
+  } finally {
+    widgetRoot.removeEventListener(STATE_NOTICES, hear);
+  }
+  return [...invalid, ...unknown];
 }
 
 /** The parent's origin, when the browser tells it (ancestorOrigins, else the referrer). */
@@ -103,8 +117,9 @@ export function contentHeight(content) {
 }
 
 /**
- * Connects a mounted widget to its parent window. `instance` is the widget ({ update, getState }), `notices`
- * a notice area for problems the widget itself does not report (unknown keys), `capture()` the picture it
+ * Connects a mounted widget to its parent window. `instance` is the widget ({ update, getState }), `widgetRoot`
+ * the element that holds it (it hears the widget's STATE_NOTICES there), `notices` a notice area for problems
+ * the widget itself does not report (unknown keys), `capture()` the picture it
  * shows as a PNG data URL (or null), `content` the element whose height the parent is told (`resize`, observed
  * with a ResizeObserver; none when omitted). Returns
  * { ready(), userChanged() (call on every state change), dispose() }.
@@ -113,6 +128,7 @@ export function connectEmbedProtocol({
   name,
   schema,
   instance,
+  widgetRoot,
   origins,
   notices,
   capture = () => null,
@@ -150,15 +166,14 @@ export function connectEmbedProtocol({
     tellHeight(); // a parent heard from first (its browser hid its origin) learns the height now
     if (msg.kind === 'snapshot') return void post('snapshot', e.origin, { id: msg.id, image: capture() });
     if (msg.kind === 'set') {
-      const { invalid, unknown } = checkIncomingState(schema, msg.state, instance.getState());
-      if (unknown.length) notices.show(unknown); // the widget shows the invalid values itself
       fromParent = true;
+      let errors;
       try {
-        instance.update(msg.state);
+        errors = applyFromParent({ schema, instance, notices, widgetRoot }, msg.state);
       } finally {
         fromParent = false;
       }
-      if (invalid.length || unknown.length) post('error', e.origin, { id: msg.id, errors: [...invalid, ...unknown] });
+      if (errors.length) post('error', e.origin, { id: msg.id, errors });
     }
     post('state', e.origin, { id: msg.id });
   };

@@ -1,5 +1,12 @@
 // Visible, dismissible notices for bad input (URL values, files, missing WebGL2). Never thrown at the user.
 
+/**
+ * The event a widget's root sends (bubbling) when an update had values it could not take as they were: its
+ * detail is the notices of that update's one coercion (widget-shell.js; locked keys are left out before it, so
+ * never reported). The embed protocol passes them on to the parent.
+ */
+export const STATE_NOTICES = 'shading-lab:state-notices';
+
 export function createNoticeArea(container) {
   const area = document.createElement('div');
   area.className = 'notices';

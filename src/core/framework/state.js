@@ -12,7 +12,7 @@
 // An enum or set field's `aliases` are old spellings of its options: each is read as its option, silently, so
 // an old link keeps working; the state (and so every URL written from it) holds the option's own key.
 
-import { decodeCode, encodeCode } from '../custom/code-state.js';
+import { DECIMAL, MAX_PARAMS, decodeCode, encodeCode } from '../custom/code-state.js';
 
 /** @typedef {import('./types.js').Schema} Schema */
 /** @typedef {import('./types.js').Field} Field */
@@ -30,7 +30,6 @@ import { decodeCode, encodeCode } from '../custom/code-state.js';
  */
 /** @typedef {Field | CodeField | ParamsField} AnyField */
 
-export const MAX_PARAM_NAMES = 16;
 const PARAM_NAME = /^[A-Za-z_]\w*$/;
 
 /** A value as a new state holds it: lists and records copied. @param {any} v */
@@ -80,8 +79,6 @@ export function optionKey(f, value) {
   return isOption(f.options, key) ? key : undefined;
 }
 
-// A decimal number as a URL carries it: 12, -0.5, .5, 1e-3. Not hex, binary, Infinity or other digits.
-const DECIMAL = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;
 // What a text field may hold: a name to show (a file name), never markup, a URL scheme or control characters.
 const TEXT = /^[\p{L}\p{N} ._()+,-]*$/u;
 
@@ -123,7 +120,7 @@ function coerceParams(raw, bad) {
   else if (raw !== null && typeof raw === 'object' && Object.getPrototypeOf(raw) === Object.prototype)
     entries = Object.entries(raw);
   else return bad(`${fmt(raw)} is not a list of name:value`);
-  if (entries.length > MAX_PARAM_NAMES) return bad(`${entries.length} values; at most ${MAX_PARAM_NAMES}`);
+  if (entries.length > MAX_PARAMS) return bad(`${entries.length} values; at most ${MAX_PARAMS}`);
   /** @type {Record<string, number>} */
   const value = {};
   for (const entry of entries) {

@@ -63,18 +63,19 @@ function showFailure(container, before, title, err, retry) {
 /**
  * Mounts widget `name` like mountWidget; if it fails, shows why in `container` with a Retry button and resolves
  * null. `onMount` hears of every instance that comes up, the first try's or a retry's, so a page that wires
- * widgets together can pick up one that arrived late.
+ * widgets together can pick up one that arrived late; it is handed the widget's module too (its schema: what
+ * the embed protocol checks a parent's keys against), so nothing loads it a second time.
  * @param {HTMLElement} container
  * @param {string} name
  * @param {MountOptions} options
- * @param {(instance: Widget) => void} [onMount]
+ * @param {(instance: Widget, widget: import('./types.js').WidgetContract) => void} [onMount]
  * @returns {Promise<Widget | null>}
  */
 export async function mountOrExplain(container, name, options, onMount) {
   const before = new Set(container.childNodes);
   try {
-    const instance = await mountWidget(container, name, options);
-    onMount?.(instance);
+    const { instance, widget } = await mountWidget(container, name, options);
+    onMount?.(instance, widget);
     return instance;
   } catch (err) {
     console.warn(`Shading Lab: widget ${name} failed:`, err); // the page says it too; this keeps the stack

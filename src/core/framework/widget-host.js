@@ -25,9 +25,9 @@ export function widgetParams(search, prefix) {
   return Object.fromEntries(out);
 }
 
-// Parameters of embed.html that are not widget state: the widget's name, the origins allowed to message it and
-// the presenter view.
-const EMBED_PARAMS = new Set(['w', 'origins', 'presenter']);
+// Parameters of embed.html that are not widget state: the widget's name, the origins allowed to message it, the
+// presenter view and the locked keys.
+const EMBED_PARAMS = new Set(['w', 'origins', 'presenter', 'locked']);
 
 /**
  * The page's URL `href` with a widget's state in it (its keys under `prefix.`, or all but the embed's own).
@@ -69,11 +69,12 @@ function writeUrl(schema, state, prefix) {
  */
 
 /**
- * Creates widget `name` inside `container` with the state found in the URL.
+ * Creates widget `name` inside `container` with the state found in the URL. Returns the instance and the
+ * widget's module (its name, schema and create) it was made from.
  * @param {HTMLElement} container
  * @param {string} name
  * @param {MountOptions} options
- * @returns {Promise<Widget>}
+ * @returns {Promise<{ instance: Widget, widget: import('./types.js').WidgetContract }>}
  */
 export async function mountWidget(
   container,
@@ -97,5 +98,5 @@ export async function mountWidget(
     },
   });
   registerWidget(prefix || name, instance);
-  return instance;
+  return { instance, widget };
 }

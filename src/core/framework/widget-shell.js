@@ -2,7 +2,7 @@
 // The common frame of every widget: its root element, notice area, a view and a control column, and the
 // one state object, validated on every way in (initial state, update(), GUI).
 import { coerceState, defaultState } from './state.js';
-import { createNoticeArea } from './notice.js';
+import { STATE_NOTICES, createNoticeArea } from './notice.js';
 import { createStateGui } from './gui.js';
 import { createLiveRegion, describeCanvas } from './describe.js';
 import { createShareBar, linkChoices, shareLink } from './share.js';
@@ -71,7 +71,7 @@ export function createWidgetShell(
   const apply = (partial) => {
     const free = Object.fromEntries(Object.entries(partial ?? {}).filter(([k]) => !locked.includes(k)));
     const next = coerceState(schema, free, state);
-    if (next.notices.length) notices.show(next.notices);
+    if (next.notices.length) reportNotices(root, notices, next.notices);
     const changed = Object.keys(schema).filter((k) => JSON.stringify(next.state[k]) !== JSON.stringify(state[k]));
     state = next.state;
     return changed;
@@ -130,6 +130,17 @@ export function createWidgetShell(
       root.remove();
     },
   };
+}
+
+/**
+ * Shows an update's notices on the widget and sends them from its root (STATE_NOTICES: a parent frame hears them).
+ * @param {HTMLElement} root
+ * @param {{ show(messages: string[]): void }} area
+ * @param {string[]} notices
+ */
+function reportNotices(root, area, notices) {
+  area.show(notices);
+  root.dispatchEvent(new CustomEvent(STATE_NOTICES, { bubbles: true, detail: notices }));
 }
 
 /**

@@ -82,8 +82,18 @@ export function resolveConditionals(source, defines) {
 }
 
 /**
+ * A define's value as the program reads it: a switch is 1, a value a finite number or GLSL text (a call the
+ * parity harness makes); `true` and the rest are refused, so that every host writes its switches one way.
+ */
+function defineValue(name, value) {
+  if ((typeof value === 'number' && Number.isFinite(value)) || (typeof value === 'string' && value.trim()))
+    return String(value);
+  throw new Error(`glsl: define ${name} is ${JSON.stringify(value)}; a switch is 1, a value a number or GLSL text`);
+}
+
+/**
  * Resolves conditionals and includes of `source` against `chunks` (name -> text), each chunk once.
- * Returns the program text, prefixed with the defines that have values the code may read.
+ * Returns the program text, prefixed with its defines (`#define NAME 1` for a switch, `#define NAME value`).
  * Refuses what it does not know: a define that no directive or token of the program's chunks reads (a misspelt
  * or stale switch would otherwise fall back silently), and an active #error (a term chain without a match).
  */
@@ -117,7 +127,7 @@ export function assembleGlsl(source, { defines = {}, chunks = SHADER_CHUNKS } = 
   const unread = Object.keys(defines).filter((name) => !read.has(name));
   if (unread.length) throw new Error(`glsl: define ${unread.join(', ')} is read by no chunk of this program`);
   const header = Object.entries(defines)
-    .map(([k, v]) => `#define ${k}${v === true || v === '' ? '' : ` ${v}`}`)
+    .map(([k, v]) => `#define ${k} ${defineValue(k, v)}`)
     .join('\n');
   return `${header}\n${out.join('\n')}`;
 }

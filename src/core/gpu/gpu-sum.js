@@ -1,8 +1,7 @@
 // Sums every texel of a float render target on the GPU (4x4 blocks per pass, log4 passes) and reads back
 // one texel: a whole image's statistics for the price of a 1x1 readPixels.
 import * as THREE from 'three';
-import { assembleGlsl } from './glsl.js';
-import { SHADER_CHUNKS } from './shader-chunks.js';
+import { buildShader } from './shader-builder.js';
 import { createFullscreenPass } from './fullscreen-pass.js';
 
 export function floatTarget(width, height, depthBuffer = false) {
@@ -17,11 +16,8 @@ export function floatTarget(width, height, depthBuffer = false) {
 }
 
 export function createGpuSum(renderer) {
-  const material = new THREE.ShaderMaterial({
-    glslVersion: THREE.GLSL3,
+  const material = buildShader('sum4x4.frag.glsl', {
     uniforms: { uSrc: { value: null }, uSrcSize: { value: new THREE.Vector2() } },
-    vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
-    fragmentShader: assembleGlsl(SHADER_CHUNKS['sum4x4.frag.glsl']),
     depthTest: false,
     depthWrite: false,
   });

@@ -14,7 +14,7 @@ let albedoTable = null; // built on first use (~0.5 s)
 const albedoTableOnce = () => (albedoTable ??= buildAlbedoTableGGX());
 const TABLE_CASE = {
   chunk: 'multiple-scattering.glsl',
-  defines: { ALBEDO_TABLE_GGX: true },
+  defines: { ALBEDO_TABLE_GGX: 1 },
   tables: { uAlbedoTableGGX: albedoTableOnce },
 };
 

@@ -35,8 +35,6 @@ export function createCustomArea(container, { slots, chosen, planOf, getRenderer
   let mods = null;
   let loading = null;
   let shownKey = '';
-  /** @type {{ code: string, declared: any[] } | null} the sliders the last code asked about declares */
-  let declared = null;
   /** @type {Record<string, any>} */
   const panels = {};
   /** @type {Record<string, import('../custom/custom-panel-run.js').RunStatus>} */
@@ -103,8 +101,7 @@ export function createCustomArea(container, { slots, chosen, planOf, getRenderer
      */
     sliderValues(slotKey, code, params) {
       if (!mods) return null;
-      if (declared?.code !== code) declared = { code, declared: mods.parse.parseCustom(slotKey, code).params };
-      return mods.run.sliderValues(declared.declared, params);
+      return mods.run.sliderValues(mods.parse.parseCustom(slotKey, code).params, params); // parsed once per code
     },
     /** The panels of the chosen slots, each told how its code ran (after lookups()); unchanged ones are left. */
     showPanels(state) {

@@ -8,7 +8,7 @@ import { sphereFragment } from './sphere-grid.js';
 
 /** @param {() => any} getRenderer  the sphere grid's renderer */
 export function createCustomSphere(getRenderer) {
-  const guard = createCompileGuard(getRenderer);
+  const guard = createCompileGuard(getRenderer, { vertex: 'sphere-impostor.vert.glsl' });
   return {
     /**
      * What a cell of `defines` needs to draw `slotKey`'s code for `state`: { own, uniforms } (sphere-grid.js), or

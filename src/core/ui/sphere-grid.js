@@ -6,12 +6,12 @@
 // probe(angles, n) returns ([[label, text], ...]; n in view space).
 import * as THREE from 'three';
 import { createViewport } from '../gpu/viewport.js';
-import { assembleGlsl } from '../gpu/glsl.js';
+import { buildShader, fragmentSource } from '../gpu/shader-builder.js';
 import { SHADER_CHUNKS } from '../gpu/shader-chunks.js';
-import { createProgramCache, definesKey } from '../gpu/program-cache.js';
+import { createProgramCache, definesKey, programKey } from '../gpu/program-cache.js';
 import { angleText, probeAngles, showProbeRows } from './probe.js';
 import { drawSideBySide } from './side-by-side.js';
-import { HALF_SIZE, IMPOSTOR_VERTEX, createImpostorView } from './sphere-impostor.js';
+import { HALF_SIZE, createImpostorView } from './sphere-impostor.js';
 import { termUniformDefaults } from '../../math/catalogue/uniforms.js';
 
 const ALPHA_DEFAULT = 0.3;
@@ -37,48 +37,28 @@ const UNIFORM_DEFAULTS = {
 /** The names of the uniforms the sphere grid feeds brdf-sphere.frag.glsl (the program-variants test checks them). */
 export const SPHERE_UNIFORMS = Object.keys(UNIFORM_DEFAULTS);
 
+const withImpostor = (defines) => ({ ...defines, SPHERE_IMPOSTOR: 1 });
+
 /** The sphere's fragment program for `defines`, with `chunks` (the app's, or those with a user's term). */
 export const sphereFragment = (defines, chunks = SHADER_CHUNKS) =>
-  assembleGlsl(chunks['brdf-sphere.frag.glsl'], { defines: { ...defines, SPHERE_IMPOSTOR: true }, chunks });
+  fragmentSource('brdf-sphere.frag.glsl', { defines: withImpostor(defines), chunks });
 
-/** The program of one set of #define switches, its uniforms set to the defaults (and `extra`'s: a user's sliders). */
-const sphereMaterial = (defines, chunks = SHADER_CHUNKS, extra = {}) =>
-  new THREE.ShaderMaterial({
-    glslVersion: THREE.GLSL3,
+/**
+ * The program of one set of #define switches, its uniforms set to the defaults; a cell with a term of the user's
+ * brings its chunks and its sliders (`own`: { key, chunks, uniforms }).
+ */
+const sphereMaterial = (defines, own) =>
+  buildShader('brdf-sphere.frag.glsl', {
+    vertex: 'sphere-impostor.vert.glsl',
+    defines: withImpostor(defines),
+    chunks: own?.chunks,
     uniforms: Object.fromEntries(
-      Object.entries({ ...extra, ...UNIFORM_DEFAULTS }).map(([k, v]) => [
+      Object.entries({ ...own?.uniforms, ...UNIFORM_DEFAULTS }).map(([k, v]) => [
         k,
         { value: Array.isArray(v) ? new THREE.Vector3(...v) : v },
       ]),
     ),
-    vertexShader: IMPOSTOR_VERTEX,
-    fragmentShader: sphereFragment(defines, chunks),
   });
-
-/** Programs of cells with chunks of their own: made on first use, let go once no cell draws them (keep(cells)). */
-function createOwnPrograms() {
-  const programs = new Map();
-  const keyOf = (cell) => `${cell.own.key}\u0000${definesKey(cell.defines)}`;
-  return {
-    get(cell) {
-      const key = keyOf(cell);
-      if (!programs.has(key)) programs.set(key, sphereMaterial(cell.defines, cell.own.chunks, cell.uniforms));
-      return programs.get(key);
-    },
-    keep(cells) {
-      const used = new Set(cells.filter((c) => c.own).map(keyOf));
-      for (const [key, program] of programs)
-        if (!used.has(key)) {
-          program.dispose();
-          programs.delete(key);
-        }
-    },
-    dispose() {
-      programs.forEach((p) => p.dispose());
-      programs.clear();
-    },
-  };
-}
 
 const sameValue = (a, b) => a === b || (Array.isArray(a) && Array.isArray(b) && a.every((x, i) => x === b[i]));
 
@@ -96,7 +76,7 @@ function sameDrawing(cells, next) {
 function drawCells(renderer, cells, programs, view) {
   drawSideBySide(renderer, cells.length, (i) => {
     const cell = cells[i];
-    const material = cell.own ? programs.own.get(cell) : programs.get(cell.defines);
+    const material = programs.get(cell.defines, cell.own && { ...cell.own, uniforms: cell.uniforms });
     const uniforms = { ...UNIFORM_DEFAULTS, uBackground: view.background, ...cell.uniforms };
     for (const [k, v] of Object.entries(uniforms)) {
       if (Array.isArray(v)) material.uniforms[k].value.set(...v);
@@ -188,7 +168,7 @@ function attachProbe(container, viewport, cellsNow) {
 export function createSphereGrid(container, { label = 'Spheres', aspectPerCell = 1, background = '#16181d' } = {}) {
   let cells = [];
   let drawnOnce = false;
-  const programs = Object.assign(createProgramCache(sphereMaterial), { own: createOwnPrograms() });
+  const programs = createProgramCache(sphereMaterial);
   const view = createImpostorView(background);
   const labels = document.createElement('div');
   labels.className = 'sphere-labels';
@@ -211,7 +191,8 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
     setCells(next) {
       const redraw = !drawnOnce || !sameDrawing(cells, next);
       [cells, drawnOnce] = [next, true];
-      programs.own.keep(cells);
+      const drawn = new Set(cells.filter((c) => c.own).map((c) => programKey(c.defines, c.own)));
+      programs.keepOnly((key) => drawn.has(key)); // a user's programs of code no cell draws go
       labels.replaceChildren(
         ...cells.map((c) => Object.assign(document.createElement('span'), { textContent: c.label })),
       );
@@ -231,7 +212,6 @@ export function createSphereGrid(container, { label = 'Spheres', aspectPerCell =
     dispose() {
       removeProbe();
       programs.dispose();
-      programs.own.dispose();
       view.dispose();
       viewport?.dispose();
     },

@@ -2,13 +2,9 @@
 // (with sphere-impostor.glsl) ray-traces the sphere under each pixel and blends its silhouette over the background
 // by the part of the pixel it covers, so its view draws without multisampling (createViewport's antialias: false).
 import * as THREE from 'three';
-import { SHADER_CHUNKS } from '../gpu/shader-chunks.js';
 
 /** The camera's half extent in the sphere's units: the unit sphere fills 1/1.08 of its cell. */
 export const HALF_SIZE = 1.08;
-
-/** The quad's vertex program: it hands each fragment its point in the sphere's units. */
-export const IMPOSTOR_VERTEX = SHADER_CHUNKS['sphere-impostor.vert.glsl'];
 
 /**
  * A scene that clears a cell to `background` and covers it with the quad, whose material a draw sets; and the

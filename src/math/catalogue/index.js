@@ -97,21 +97,21 @@ export { CUSTOM_KEY, CUSTOM_TERMS };
 const FAMILY_OF_CHOICE = Object.fromEntries(Object.values(CATALOGUE).map((f) => [f.choice, f.family]));
 
 /**
- * The #defines that select a choice of terms in GLSL, for the families given only: { NDF_GGX: true, … }.
+ * The #defines that select a choice of terms in GLSL, for the families given only: { NDF_GGX: 1, … }.
  * A term without a define is the absence of a switch where the family has no dispatch (no compensation); where
  * it has one, no shader can draw the term, and this throws.
  * @param {TermChoice} choice
- * @returns {Record<string, true>}
+ * @returns {Record<string, 1>}
  */
 export function termDefines(choice) {
-  /** @type {Record<string, true>} */
+  /** @type {Record<string, 1>} */
   const defines = {};
   for (const [slot, key] of Object.entries(choice)) {
     if (key === undefined) continue;
     const family = FAMILY_OF_CHOICE[slot];
     if (!family) throw new Error(`catalogue: '${slot}' is no term family (F, D, V, diffuse, compensation)`);
     const { define } = termEntry(family, key);
-    if (define) defines[define] = true;
+    if (define) defines[define] = 1;
     else if (CATALOGUE[family].glslDispatch) throw new Error(`catalogue: no GLSL dispatch offers ${family} '${key}'`);
   }
   return defines;

@@ -5,7 +5,7 @@
 import { createWidgetShell } from '../../core/framework/widget-shell.js';
 import { DEG } from '../../math/angles.js';
 import { schema } from './schema.js';
-import { brdfSpecs, customSlots, lobeScene } from './model.js';
+import { customSlots, lobeScene } from './model.js';
 import { createPolarPlot } from './polar-plot.js';
 import { createLobeView } from './lobe-view.js';
 import { createHalfDiffPair } from './half-diff-pair.js';
@@ -44,7 +44,7 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange, lo
   const polar = createPolarPlot(top, { onDrag: update });
   const lobe3d = createLobeView(row(top, 'lobe-3d'), { onContextChange: () => render(null) });
   const images = createHalfDiffPair(bottom);
-  const albedo = createAlbedoPlot(bottom, brdfSpecs(shell.state));
+  let albedo = null; // made at the first render, from its specs (an albedo curve costs 512 samples an angle)
   const readout = createReadout(shell.view);
   const custom = createCustomArea(shell.view, {
     slots: CUSTOM_SLOTS,
@@ -75,8 +75,9 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange, lo
     drawPolar(s, scene);
     drawLobe3d(s, scene);
     if (!changed || changed.some((k) => !LIGHT_AND_VIEW.includes(k))) images.draw(s, scene);
-    if (!changed || changed.some((k) => ALBEDO_KEYS.includes(k) || CODE_KEYS.includes(k)))
-      albedo.draw(brdfSpecs(s, lookups));
+    const specs = scene.B ? [scene.A, scene.B] : [scene.A]; // the scene's: the specs are built once a render
+    if (!albedo) albedo = createAlbedoPlot(bottom, specs);
+    else if (!changed || changed.some((k) => ALBEDO_KEYS.includes(k) || CODE_KEYS.includes(k))) albedo.draw(specs);
     readout.draw(s, scene);
     custom.showPanels(s);
   };
@@ -90,7 +91,7 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange, lo
       polar.dispose();
       lobe3d.dispose();
       images.dispose();
-      albedo.dispose();
+      albedo?.dispose();
       custom.dispose();
       shell.dispose();
     },

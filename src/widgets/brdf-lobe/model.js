@@ -70,7 +70,7 @@ const LAMBERT_STAND_IN = {
 };
 
 /** [A] or, with the overlay, [A, B]. */
-export const brdfSpecs = (state, custom = {}) => [
+const brdfSpecs = (state, custom = {}) => [
   brdfSpec(state, 'A', custom),
   ...(state.compare ? [brdfSpec(state, 'B', custom)] : []),
 ];

@@ -7,7 +7,7 @@ import { CUSTOM, cosPhiDiff, diffuseAt, paramsOf, radianceAt } from './model.js'
 const VIEW = [0, 0, 1];
 
 /** A diffuse model's sphere program: the diffuse term only. */
-export const cellDefines = (key) => ({ SPECULAR_OFF: true, ...termDefines({ diffuse: key }) });
+export const cellDefines = (key) => ({ SPECULAR_OFF: 1, ...termDefines({ diffuse: key }) });
 
 const uniformsOf = (state, l) => ({
   uLightDir: l,

@@ -11,9 +11,9 @@ import { termDefines } from '../../math/catalogue/index.js';
 
 /** The furnace's shader variant: a compensation's own switch and, with one, the albedo-loss table it reads. */
 export const furnaceDefines = (compensation) => ({
-  FURNACE: true,
+  FURNACE: 1,
   ...termDefines({ compensation }),
-  ...(compensation === 'none' ? {} : { ALBEDO_TABLE_GGX: true }),
+  ...(compensation === 'none' ? {} : { ALBEDO_TABLE_GGX: 1 }),
 });
 
 /** The probe's rows at a sphere point: E(n·v), the energy lost and, compensated, the albedo with it put back. */

@@ -35,13 +35,13 @@ export function sphereLights(n) {
  */
 export function programDefines(state, stats) {
   const d = {};
-  if (zonesByLh(state)) d.ZONE_BY_LH = true;
-  if (isWeighted(state)) Object.assign(d, { WEIGHTED: true }, termDefines(WEIGHT_TERMS));
-  if (stats) d.STATS_PASS = true;
+  if (zonesByLh(state)) d.ZONE_BY_LH = 1;
+  if (isWeighted(state)) Object.assign(d, { WEIGHTED: 1 }, termDefines(WEIGHT_TERMS));
+  if (stats) d.STATS_PASS = 1;
   else if (state.mode === 'fresnel-nv') {
-    d.SHOW_FRESNEL = true;
-    if (state.fresnel === 'schlick') d.FRESNEL_SCHLICK = true;
-    if (fresnelParams(state.material).metal) d.METAL = true;
+    d.SHOW_FRESNEL = 1;
+    if (state.fresnel === 'schlick') d.FRESNEL_SCHLICK = 1;
+    if (fresnelParams(state.material).metal) d.METAL = 1;
   }
   return d;
 }

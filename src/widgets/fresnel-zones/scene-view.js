@@ -1,9 +1,8 @@
 // fresnel-zones, the 3-D view: the shape under the light, drawn by one program per set of switches (made on
 // first use and kept), seen by an orthographic or a perspective camera that keeps the unit sphere in frame.
 import * as THREE from 'three';
-import { assembleGlsl } from '../../core/gpu/glsl.js';
 import { createProgramCache } from '../../core/gpu/program-cache.js';
-import { SHADER_CHUNKS } from '../../core/gpu/shader-chunks.js';
+import { buildShader } from '../../core/gpu/shader-builder.js';
 import { DEG, TO_DEGREES } from '../../math/angles.js';
 import { programDefines, uniformValues } from './model.js';
 import { createShapeGeometry } from './shapes.js';
@@ -59,14 +58,8 @@ function setUniforms(uniforms, values) {
 /** The view of the state `getState()` returns: `render` draws the picture, `renderStats` the zones to sum. */
 export function createZonesScene(getState) {
   const uniforms = createUniforms();
-  const programs = createProgramCache(
-    (defines) =>
-      new THREE.ShaderMaterial({
-        glslVersion: THREE.GLSL3,
-        uniforms,
-        vertexShader: SHADER_CHUNKS['surface.vert.glsl'],
-        fragmentShader: assembleGlsl(SHADER_CHUNKS['fresnel-zones.frag.glsl'], { defines }),
-      }),
+  const programs = createProgramCache((defines) =>
+    buildShader('fresnel-zones.frag.glsl', { vertex: 'surface.vert.glsl', uniforms, defines }),
   );
   const scene = new THREE.Scene();
   scene.background = new THREE.Color('#22252b');

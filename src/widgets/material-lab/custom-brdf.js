@@ -26,7 +26,7 @@ export function createCustomBrdf({ view, getState, update }) {
     chosen: (s) => (s.brdfSource === 'custom' ? ['brdf'] : []),
     planOf: () => VET,
   });
-  const guard = createCompileGuard(getRenderer);
+  const guard = createCompileGuard(getRenderer, { offscreen: true }); // the lab draws into its targets
 
   /** The fragment sources of the lab's two programs (approximation, reference) for the state, with `code`. */
   const sources = (state) => (code) => {

@@ -4,9 +4,8 @@
 import * as THREE from 'three';
 import { createViewport } from '../../core/gpu/viewport.js';
 import { drawSideBySide } from '../../core/ui/side-by-side.js';
-import { assembleGlsl } from '../../core/gpu/glsl.js';
-import { SHADER_CHUNKS } from '../../core/gpu/shader-chunks.js';
-import { IMPOSTOR_VERTEX, createImpostorView } from '../../core/ui/sphere-impostor.js';
+import { buildShader } from '../../core/gpu/shader-builder.js';
+import { createImpostorView } from '../../core/ui/sphere-impostor.js';
 import { MERL_DIMS } from '../../measured/merl.js';
 
 /** A table (RGBA half floats, MERL order) as the 3-D texture measured.glsl reads. */
@@ -32,16 +31,14 @@ const BACKGROUND = '#16181d';
 export function createMeasuredSpheres(container, { label }) {
   const slots = [null, null]; // { texture, name }
   const view = createImpostorView(BACKGROUND);
-  const material = new THREE.ShaderMaterial({
-    glslVersion: THREE.GLSL3,
+  const material = buildShader('measured-sphere.frag.glsl', {
+    vertex: 'sphere-impostor.vert.glsl',
     uniforms: {
       uMeasured: { value: null },
       uLightDir: { value: new THREE.Vector3(0, 0, 1) },
       uExposure: { value: 1 },
       uBackground: { value: new THREE.Vector3(...view.background) },
     },
-    vertexShader: IMPOSTOR_VERTEX,
-    fragmentShader: assembleGlsl(SHADER_CHUNKS['measured-sphere.frag.glsl'], { defines: {} }),
   });
   view.mesh.material = material;
   const names = document.createElement('div');

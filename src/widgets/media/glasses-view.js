@@ -5,16 +5,15 @@ import { createViewport } from '../../core/gpu/viewport.js';
 import { createFullscreenPass } from '../../core/gpu/fullscreen-pass.js';
 import { createProgramCache } from '../../core/gpu/program-cache.js';
 import { floatTarget } from '../../core/gpu/gpu-sum.js';
-import { assembleGlsl } from '../../core/gpu/glsl.js';
-import { SHADER_CHUNKS } from '../../core/gpu/shader-chunks.js';
+import { buildShader } from '../../core/gpu/shader-builder.js';
 import { cellLayout, cellsFor } from './model.js';
 
 const TRACE_MAX_WIDTH = 480; // pixels across that are path traced; the display scales them up
 
 /** The tracer for CELLS_X × CELLS_Y glasses, one σa and σs uniform per glass. */
 const makeTracer = (defines) =>
-  new THREE.ShaderMaterial({
-    glslVersion: THREE.GLSL3,
+  buildShader('media-tracer.frag.glsl', {
+    defines,
     uniforms: {
       uPrev: { value: null },
       uSize: { value: new THREE.Vector2() },
@@ -22,16 +21,11 @@ const makeTracer = (defines) =>
       uSigmaA: { value: Array.from({ length: defines.CELLS }, () => new THREE.Vector3()) },
       uSigmaS: { value: Array.from({ length: defines.CELLS }, () => new THREE.Vector3()) },
     },
-    vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
-    fragmentShader: assembleGlsl(SHADER_CHUNKS['media-tracer.frag.glsl'], { defines }),
   });
 
 const makeDisplay = () =>
-  new THREE.ShaderMaterial({
-    glslVersion: THREE.GLSL3,
+  buildShader('media-display.frag.glsl', {
     uniforms: { uSum: { value: null }, uSize: { value: new THREE.Vector2() } },
-    vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
-    fragmentShader: assembleGlsl(SHADER_CHUNKS['media-display.frag.glsl']),
   });
 
 /** The running sum's two targets (read one, write the other), at the traced size, filtered when scaled up. */
