@@ -139,8 +139,8 @@ describe('adding an anisotropic term: one catalogue entry and its two functions,
     expect(ndf.variants.map((v) => v.key)).not.toContain('ggx-aniso-test');
     expect(app.graders.NDF_NAMES).not.toHaveProperty('ggxAnisoTest'); // the which-NDF exercise's choices
     expect(termDefines({ D: 'ggxAnisoTest', V: 'ggxAnisoTest' })).toEqual({
-      NDF_GGX_ANISO_TEST: true,
-      VIS_GGX_ANISO_TEST: true,
+      NDF_GGX_ANISO_TEST: 1,
+      VIS_GGX_ANISO_TEST: 1,
     });
     const [l, v] = [unit(0.5, 0.2, 0.8), unit(-0.3, 0.6, 0.5)];
     const m = app.input.microfacetInput(l, v, [0.4, 0.1]);
@@ -157,7 +157,7 @@ describe('adding an anisotropic term: one catalogue entry and its two functions,
     const defines = termDefines({ F: 'schlick', D: 'ggxAnisoTest', V: 'ggxAnisoTest' });
     const chunks = { ...app.chunks, ...CHUNKS };
     const text = app.glsl.assembleGlsl(app.chunks['brdf-sphere.frag.glsl'], {
-      defines: { ...defines, SPHERE_IMPOSTOR: true },
+      defines: { ...defines, SPHERE_IMPOSTOR: 1 },
       chunks,
     });
     expect(text).toContain(
