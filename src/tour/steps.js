@@ -6,7 +6,7 @@
 //
 // To extend the tour, append steps; nothing else changes. A step whose widget is not registered yet is left
 // out, and a section without steps is shown as "coming".
-import { CHAPTERS } from '../pages/chapters.js';
+import { CHAPTERS } from '../widgets/chapters.js';
 
 /** The talk's sections the tour walks through, in order (the performance chapter is not part of the talk). */
 export const TOUR_SECTIONS = CHAPTERS.filter((c) => c.key !== 'performance').map(({ key, title }) => ({ key, title }));
