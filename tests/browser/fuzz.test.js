@@ -1,6 +1,6 @@
 // Seeded, bounded fuzz of every entry point a crafted link or a hostile page reaches: every registered widget by
 // URL and by postMessage `set` from an allowed parent on another origin, the material lab's environment drop,
-// and exercise sets (?src= and dropped files). The rules checked are in tests/hostile-values.js.
+// and exercise sets (?src= and dropped files). The rules checked are in tests/support/hostile-values.js.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { WIDGETS } from '../../src/widgets/registry.js';
 import { defaultState } from '../../src/core/framework/state.js';
@@ -16,7 +16,7 @@ import {
   reviveNumbers,
   seededRandom,
   stateProblems,
-} from '../hostile-values.js';
+} from '../support/hostile-values.js';
 import { baseUrl, launchBrowser, open, openForeignParent, otherOrigin, settle, untilSteady } from './helpers.js';
 
 const SEED = 17;

@@ -2,8 +2,8 @@
 // from the chapter's main widget in a telling state, cropped to 16:9 and encoded by Chromium as WebP.
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { ROOT, buildApp, launchBrowser, openPage, serveStatic, settle } from './harness.js';
-import { CHAPTER_PICTURE_SIZE as SIZE } from '../../src/pages/chapter-pictures.js';
+import { ROOT, buildApp, launchBrowser, openPage, serveStatic, settle } from '../tests/browser/harness.js';
+import { CHAPTER_PICTURE_SIZE as SIZE } from '../src/pages/chapter-pictures.js';
 
 const QUALITY = 0.78;
 // chapter key → the page shot, the element pictured (default: the first canvas of the widget's view), how it fits
