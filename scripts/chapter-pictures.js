@@ -24,12 +24,7 @@ const SHOTS = {
     'contain',
     420,
   ],
-  diffuse: [
-    'embed.html?w=diffuse-explorer&models=lambert,orenNayar&sigma=60',
-    '.sphere-grid canvas',
-    'contain',
-    420,
-  ],
+  diffuse: ['embed.html?w=diffuse-explorer&models=lambert,orenNayar&sigma=60', '.sphere-grid canvas', 'contain', 420],
   rendering: ['embed.html?w=material-lab&material=gold&alpha=0.25', '.widget-view canvas', 'contain'],
   performance: ['performance.html', '.uplot .u-wrap', 'contain', 560],
 };

@@ -15,8 +15,8 @@
 // One file per grader in graders/ (its helpers beside it, the feedback's wording in graders/feedback.js); this
 // module lists them by the name an exercise file gives.
 import { fmt } from './graders/feedback.js';
-import { depthForTransmittance, grader as transmittanceDepth } from './graders/transmittance-depth.js';
-import { interfaceReflectance, grader as fresnelReflectanceAngle } from './graders/fresnel-reflectance-angle.js';
+import { grader as transmittanceDepth } from './graders/transmittance-depth.js';
+import { grader as fresnelReflectanceAngle } from './graders/fresnel-reflectance-angle.js';
 import { materialSphere, grader as sphereMatch } from './graders/sphere-match.js';
 import { grader as smithG1 } from './graders/smith-g1.js';
 import { grader as albedoLoss } from './graders/albedo-loss.js';
@@ -24,7 +24,7 @@ import { grader as multipleScatteringGain } from './graders/multiple-scattering-
 import { grader as lightZone } from './graders/light-zone.js';
 import { schlickWorstAngle, grader as schlickWorstAngleGrader } from './graders/schlick-worst-angle.js';
 import { NDF_NAMES, highlightSphere, ndfProfiles, profileFactor, grader as ndfProfile } from './graders/ndf-profile.js';
-import { VISIBILITY_NAMES, visibilityAtMirror, grader as visibilityRatio } from './graders/visibility-ratio.js';
+import { grader as visibilityRatio } from './graders/visibility-ratio.js';
 import { grader as lambertRadiance } from './graders/lambert-radiance.js';
 
 export const GRADERS = {
@@ -43,16 +43,4 @@ export const GRADERS = {
 
 export const isGraderName = (name) => Object.hasOwn(GRADERS, name);
 
-export {
-  fmt,
-  depthForTransmittance,
-  interfaceReflectance,
-  materialSphere,
-  schlickWorstAngle,
-  NDF_NAMES,
-  highlightSphere,
-  ndfProfiles,
-  profileFactor,
-  VISIBILITY_NAMES,
-  visibilityAtMirror,
-};
+export { fmt, materialSphere, schlickWorstAngle, NDF_NAMES, highlightSphere, ndfProfiles, profileFactor };
