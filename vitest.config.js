@@ -1,6 +1,7 @@
 import { defineConfig } from 'vitest/config';
 
-// The browser tests run two files at a time, each with its own Chromium: much of a browser test is waiting (idle
+// The browser tests run two files at a time (one Chromium a worker, a browser context a file: harness.js
+// launchBrowser, kept by tests/browser/global-setup.js): much of a browser test is waiting (idle
 // windows, loads, convergence), so two share the 2 cores (the suite of 2026-11-30 in 13 to 14 min, against about
 // 17 min one at a time). Three at a time was about 5 % faster, but a material-lab test failed under that load: not
 // yet understood.

@@ -60,9 +60,11 @@ const row = (v, m) => {
   );
 };
 
-function familyLines(f) {
+function familyLines(f, measuredAlone) {
   const others = f.variants.filter((v) => v.kind === 'difference');
-  const note = f.referenceNote ? ` (${esc(f.referenceNote)})` : '';
+  const alone = measuredAlone && `measured alone on ${measuredAlone.slice(0, 10)}, \`--family ${f.key}\``;
+  const notes = [f.referenceNote && esc(f.referenceNote), alone].filter(Boolean);
+  const note = notes.length ? ` (${notes.join('; ')})` : '';
   const lines = [
     `**${f.title}** — ${esc(f.errorOf)} over ${esc(f.domain)}${note}`,
     '',
@@ -121,6 +123,6 @@ function restLines(report) {
 /** The measured part of docs/performance.md, line by line. */
 export const measuredLines = (report) => [
   ...headLines(report),
-  ...report.families.flatMap(familyLines),
+  ...report.families.flatMap((f) => familyLines(f, report.familyMeasured?.[f.key])),
   ...restLines(report),
 ];

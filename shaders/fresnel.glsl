@@ -63,3 +63,29 @@ vec3 fresnelConductor(float cosThetaI, vec3 eta, vec3 k) {
   return vec3(fresnelConductor(cosThetaI, eta.r, k.r), fresnelConductor(cosThetaI, eta.g, k.g),
               fresnelConductor(cosThetaI, eta.b, k.b));
 }
+
+// F82-tint (Hoffman 2023; OpenPBR Surface's metal): Schlick minus b μ (1 − μ)⁶, with b such that
+// F(1/7) = tint · Schlick(f0, 1/7). F82_NORM = 1 / (μ̄ (1 − μ̄)⁶) = 7⁷ / 6⁶. Clamped to [0, 1] (src/math/fresnel.js).
+const float F82_MU = 1.0 / 7.0;
+const float F82_NORM = 823543.0 / 46656.0;
+float fresnelF82Tint(float f0, float tint, float cosTheta) {
+  float f = saturate(f0);
+  float c = saturate(cosTheta);
+  float m = 1.0 - c;
+  float m3 = m * m * m;
+  float b = fresnelSchlick(f, F82_MU) * (1.0 - saturate(tint)) * F82_NORM;
+  return saturate(fresnelSchlick(f, c) - b * c * m3 * m3);
+}
+vec3 fresnelF82Tint(vec3 f0, vec3 tint, float cosTheta) {
+  vec3 f = clamp(f0, 0.0, 1.0);
+  float c = saturate(cosTheta);
+  float m = 1.0 - c;
+  float m3 = m * m * m;
+  vec3 b = fresnelSchlick(f, F82_MU) * (1.0 - clamp(tint, 0.0, 1.0)) * F82_NORM;
+  return clamp(fresnelSchlick(f, c) - b * c * m3 * m3, 0.0, 1.0);
+}
+// (f0, tint) of F82-tint fitted to a conductor: exact at θ = 0 and at acos(1/7)
+vec2 f82TintFromConductor(float eta, float k) {
+  float f0 = fresnelConductor(1.0, eta, k);
+  return vec2(f0, fresnelConductor(F82_MU, eta, k) / fresnelSchlick(f0, F82_MU));
+}

@@ -26,6 +26,7 @@ import { schlickWorstAngle, grader as schlickWorstAngleGrader } from './graders/
 import { NDF_NAMES, highlightSphere, ndfProfiles, profileFactor, grader as ndfProfile } from './graders/ndf-profile.js';
 import { grader as visibilityRatio } from './graders/visibility-ratio.js';
 import { grader as lambertRadiance } from './graders/lambert-radiance.js';
+import { grader as f82SchlickGap } from './graders/f82-schlick-gap.js';
 
 export const GRADERS = {
   'transmittance-depth': transmittanceDepth,
@@ -39,6 +40,7 @@ export const GRADERS = {
   'ndf-profile': ndfProfile,
   'visibility-ratio': visibilityRatio,
   'lambert-radiance': lambertRadiance,
+  'f82-schlick-gap': f82SchlickGap,
 };
 
 export const isGraderName = (name) => Object.hasOwn(GRADERS, name);

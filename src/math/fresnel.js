@@ -112,3 +112,40 @@ export function edgeTintFromConductorIor(n, k) {
   const span = nMax(r) - nMin(r);
   return span > 0 ? (nMax(r) - n) / span : 0; // r = 0 (n = 1, k = 0): every tint maps to n = 1
 }
+
+// F82-tint: Schlick with a dip near grazing, as metals have it. Hoffman 2019, "Fresnel Equations Considered
+// Harmful" (Eurographics MAM workshop) and Hoffman 2023, "Generalization of Adobe's Fresnel Model"; the metal
+// Fresnel of Adobe's Standard Material (Kutz, Hašan & Edmondson 2021) and of OpenPBR Surface (ASWF 2024, "Metal"):
+//   F(μ) = Schlick(f0, μ) − b μ (1 − μ)⁶,   b = Schlick(f0, μ̄)(1 − tint) / (μ̄ (1 − μ̄)⁶),   μ̄ = 1/7,
+// so F(μ̄) = tint · Schlick(f0, μ̄): the tint (OpenPBR's specular_color for a metal) is the share of Schlick's
+// value kept at θ = acos(1/7) ≈ 81.8°, near where a metal's curve dips most below Schlick's.
+
+/** μ̄ = cos θ̄ = 1/7, θ̄ ≈ 81.8°: the angle at which F82-tint's tint is defined. */
+export const F82_MU = 1 / 7;
+const F82_NORM = 7 ** 7 / 6 ** 6; // 1 / (μ̄ (1 − μ̄)⁶), exactly 823543 / 46656
+
+/**
+ * F82-tint Fresnel of one channel. f0 and tint are clamped to [0, 1] (MaterialX's mx_init_fresnel_schlick does the
+ * same). Departure: the result is clamped to [0, 1]. With a small tint the formula dips below 0 around μ̄ and at mid
+ * angles (tint below 0.51 at f0 = 0, below 0.03 at f0 = 0.5; down to −0.127 at f0 = tint = 0); MaterialX leaves it
+ * negative. The metals of the talk's table have tints of 0.77 and more.
+ */
+export function fresnelF82Tint(f0, tint, cosTheta) {
+  const f = clamp01(f0);
+  const c = clamp01(cosTheta);
+  const m = 1 - c;
+  const m3 = m * m * m;
+  const b = fresnelSchlick(f, F82_MU) * (1 - clamp01(tint)) * F82_NORM;
+  return clamp01(fresnelSchlick(f, c) - b * c * m3 * m3);
+}
+
+/**
+ * { f0, tint } of F82-tint fitted to a conductor (eta + i k, relative to the outside) with the exact Fresnel
+ * equations: f0 = F(1) and tint = F(μ̄) / Schlick(f0, μ̄), so F82-tint meets the exact curve at θ = 0 and at
+ * θ = acos(1/7). The tint may exceed 1 for an interface whose curve rises above Schlick's at 81.8°; then F82-tint,
+ * whose tint is a colour in [0, 1], cannot follow it.
+ */
+export function f82TintFromConductor(eta, k) {
+  const f0 = fresnelConductor(1, eta, k);
+  return { f0, tint: fresnelConductor(F82_MU, eta, k) / fresnelSchlick(f0, F82_MU) };
+}

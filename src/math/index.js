@@ -19,3 +19,4 @@ export * from './multiple-scattering.js';
 export * from './random-walk.js';
 export * from './albedo-table.js';
 export * from './radiometry.js';
+export * from './anisotropic.js';

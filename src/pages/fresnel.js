@@ -23,3 +23,4 @@ await mount('f0-tables', 'tables', {
     return true;
   },
 });
+await mount('metal-fresnel', 'metals');

@@ -16,6 +16,11 @@ export const WIDGETS = {
     summary: 'Normal-incidence reflectance of metals and non-metals, linear and sRGB, with swatches.',
     load: () => import('./f0-tables/f0-tables.js'),
   },
+  'metal-fresnel': {
+    title: 'Metals near grazing: F82-tint',
+    summary: 'A metal’s exact Fresnel per channel beside Schlick, Gulbrandsen’s edge tint and F82-tint (OpenPBR).',
+    load: () => import('./metal-fresnel/metal-fresnel.js'),
+  },
   media: {
     title: 'Light in media',
     summary:

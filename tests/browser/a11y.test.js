@@ -12,6 +12,7 @@ const CHANGES = {
   'fresnel-curves': { materials: ['gold', 'water'] },
   'fresnel-zones': { lightTheta: 100 },
   'f0-tables': { selected: 'silver' },
+  'metal-fresnel': { metal: 'gold' },
   media: { medium: 'red' },
   surfaces: { theta: 60 },
   'subsurface-scale': { sigmaS: 5 },

@@ -24,6 +24,8 @@ function checkShape(report) {
     'ndf',
     'oren-nayar',
     'multiple-scattering',
+    'anisotropy',
+    'fresnel-metal-two-colours',
   ]);
   for (const f of report.families) {
     expect(f).toMatchObject({ title: expect.any(String), domain: expect.any(String), errorOf: expect.any(String) });

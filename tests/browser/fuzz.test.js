@@ -1,26 +1,29 @@
 // Seeded, bounded fuzz of every entry point a crafted link or a hostile page reaches: every registered widget by
 // URL and by postMessage `set` from an allowed parent on another origin, the material lab's environment drop,
-// and exercise sets (?src= and dropped files). The rules checked are in tests/support/hostile-values.js.
+// and exercise sets (?src= and dropped files). The rules checked are in tests/support/hostile-values.js; the same
+// rules over many more values, on the functions the embed calls, are tests/unit/fuzz-messages.test.js (Node): here
+// a few of each kind go through the page, for what only the page shows (notices, replies, nothing injected, the
+// picture).
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { WIDGETS } from '../../src/widgets/registry.js';
 import { defaultState } from '../../src/core/framework/state.js';
 import {
   PROTOTYPE_NAMES,
-  candidates,
   encodeNumbers,
   goodPartial,
-  hostilePartial,
-  isRefused,
+  hostileQuery,
   oddButValid,
   prototypeNames,
+  refusedPartial,
   reviveNumbers,
   seededRandom,
   stateProblems,
 } from '../support/hostile-values.js';
 import { baseUrl, launchBrowser, open, openForeignParent, otherOrigin, settle, untilSteady } from './helpers.js';
+import { SMALL_VIEWPORT } from './harness.js';
 
 const SEED = 17;
-const SETS_PER_WIDGET = 40;
+const SETS_PER_WIDGET = 8; // 200 a widget in Node
 const schemas = Object.fromEntries(
   await Promise.all(Object.entries(WIDGETS).map(async ([n, w]) => [n, (await w.load()).widget.schema])),
 );
@@ -39,26 +42,6 @@ afterAll(async () => {
   console.log(`fuzz: ${counts.widgets} widgets, ${counts.inputs} inputs tried, ${counts.refusals} refusals reported`);
   await browser?.close();
 });
-
-/** A partial state of refused values only (so the state must not move), seeded; prototype keys now and then. */
-function refusedPartial(schema, random, typed) {
-  for (;;) {
-    const partial = hostilePartial(schema, random, typed);
-    const fields = Object.keys(partial).filter((k) => Object.hasOwn(schema, k));
-    if (fields.every((k) => isRefused(schema[k], partial[k]))) return partial;
-  }
-}
-
-/** One refused URL value for every field (text, rotating through its candidates), plus prototype-named keys. */
-function hostileQuery(schema, random) {
-  const params = new URLSearchParams();
-  for (const [key, f] of Object.entries(schema)) {
-    const refused = candidates(f, false).filter((v) => isRefused(f, v));
-    params.set(key, refused[Math.floor(random() * refused.length)]);
-  }
-  for (const name of PROTOTYPE_NAMES) params.set(name, 'pwned');
-  return params;
-}
 
 /** Replaces the parent's body with an iframe of `src` and waits for its widget; returns the frame. */
 async function embed(src) {
@@ -277,7 +260,7 @@ describe('fuzz: files dropped and fetched', () => {
     'the material lab refuses empty, truncated, ' +
       'wrong-magic and gigapixel .hdr / .exr files by name, keeping its environment',
     async () => {
-      const page = await open(browser, 'embed.html?w=material-lab&environment=sky&refSamples=128');
+      const page = await open(browser, 'embed.html?w=material-lab&environment=sky&refSamples=128', SMALL_VIEWPORT);
       await page.waitForFunction(() => globalThis.__shadingLab?.widgets?.['material-lab'], { timeout: 45_000 });
       const hdrHead = (w, h) => text(`#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y ${h} +X ${w}\n`);
       const files = {
@@ -319,7 +302,7 @@ describe('fuzz: files dropped and fetched', () => {
     'measured-brdf refuses empty, short-header, 2 GB-claiming, ' +
       'wrong-dimension and oversized .binary files by name, keeping the last table',
     async () => {
-      const page = await open(browser, 'embed.html?w=measured-brdf');
+      const page = await open(browser, 'embed.html?w=measured-brdf', SMALL_VIEWPORT);
       await page.waitForFunction(() => document.querySelector('.measured-source')?.textContent, { timeout: 60_000 });
       const source = await page.$eval('.measured-source', (el) => el.textContent);
       const protoNames = () => page.evaluate(() => Object.getOwnPropertyNames(Object.prototype).sort().join(','));
@@ -366,7 +349,7 @@ describe('fuzz: files dropped and fetched', () => {
     'an unknown widget name and tour step of 5,000 characters are quoted ' + 'cut to 60 characters (showValue)',
     async () => {
       const long = 'x'.repeat(5000);
-      const embed = await open(browser, `embed.html?w=${long}`);
+      const embed = await open(browser, `embed.html?w=${long}`, SMALL_VIEWPORT);
       await embed.waitForSelector('.blocking-message');
       expect(await embed.$eval('.blocking-message', (el) => el.textContent)).toContain(
         `"${'x'.repeat(59)}… (5002 characters)`,
@@ -374,7 +357,7 @@ describe('fuzz: files dropped and fetched', () => {
       expect(await embed.$eval('.blocking-message', (el) => el.textContent.length)).toBeLessThan(1000);
       expect(embed.errors).toEqual([]);
       await embed.close();
-      const tour = await open(browser, `tour.html#${long}`);
+      const tour = await open(browser, `tour.html#${long}`, SMALL_VIEWPORT);
       await tour.waitForFunction(
         () => [...document.querySelectorAll('.notice')].some((x) => x.textContent.includes('There is no step')),
         { timeout: 45_000 },
@@ -471,7 +454,7 @@ describe('the three links of issue 17 that crashed a widget', () => {
   };
   for (const [name, [query, keys]] of Object.entries(LINKS)) {
     it(`embed.html?w=${name}&${query}: mounts with its defaults, says what it refused, draws, no error`, async () => {
-      const page = await open(browser, `embed.html?w=${name}&${query}`);
+      const page = await open(browser, `embed.html?w=${name}&${query}`, SMALL_VIEWPORT);
       await page.waitForFunction((n) => globalThis.__shadingLab?.widgets?.[n], { timeout: 45_000 }, name);
       await settle(page, 500);
       const state = await page.evaluate((n) => globalThis.__shadingLab.widgets[n].getState(), name);

@@ -43,6 +43,9 @@ export async function buildApp(outDir = join(ROOT, 'dist')) {
   return outDir;
 }
 
+/** A viewport for a test where the page's size is not the claim (SwiftShader draws every pixel on the CPU). */
+export const SMALL_VIEWPORT = { width: 800, height: 600 };
+
 const TYPES = {
   '.html': 'text/html',
   '.js': 'text/javascript',
@@ -72,7 +75,8 @@ export function serveStatic(dir) {
   });
 }
 
-export async function launchBrowser(extraArgs = []) {
+/** Starts a Chromium of its own (software WebGL, no network chatter); its profile folder goes when it exits. */
+export async function startChromium(extraArgs = []) {
   const executablePath = findChrome();
   if (!executablePath) throw new Error(CHROME_HINT);
   const userDataDir = mkdtempSync(join(tmpdir(), 'shading-lab-chrome-'));
@@ -99,6 +103,100 @@ export async function launchBrowser(extraArgs = []) {
     }
   });
   return browser;
+}
+
+/**
+ * What a test file gets from launchBrowser() in the suite: a Chromium shared by the files of its worker (kept by the
+ * global setup, which starts it again if it crashed), and in it an incognito context of the file's own, so that no
+ * localStorage, cache, cookie or service worker passes from one file to the next. It answers what the tests ask of
+ * a browser; close() closes the file's contexts and leaves the Chromium to the next file.
+ */
+class FileBrowser {
+  #endpoint;
+  #browser = null;
+  #context = null;
+  #contexts = [];
+
+  constructor(endpoint) {
+    this.#endpoint = endpoint;
+  }
+
+  /** The worker's Chromium, connected again (a new one asked for) if the last one went away. */
+  async #chromium() {
+    if (this.#browser?.connected) return this.#browser;
+    this.#context = null;
+    for (let tries = 1; ; tries++) {
+      const res = await fetch(this.#endpoint);
+      if (!res.ok) throw new Error(`no shared Chromium: ${await res.text()}`);
+      try {
+        this.#browser = await puppeteer.connect({ browserWSEndpoint: await res.text() });
+        return this.#browser;
+      } catch (error) {
+        // a Chromium that has just gone away may still be handed out, until the broker sees its connection drop
+        if (tries === 5) throw error;
+        await new Promise((r) => setTimeout(r, 200 * tries));
+      }
+    }
+  }
+
+  /** The file's context (a fresh one, should its Chromium have been replaced). */
+  async #main() {
+    const chromium = await this.#chromium();
+    if (!this.#context || this.#context.closed) this.#context = await this.createBrowserContext(chromium);
+    return this.#context;
+  }
+
+  /** Another incognito context (a second device: its own storage and service worker), closed with the file's. */
+  async createBrowserContext(chromium) {
+    const context = await (chromium ?? (await this.#chromium())).createBrowserContext();
+    this.#contexts.push(context);
+    return context;
+  }
+
+  async newPage() {
+    return (await this.#main()).newPage();
+  }
+
+  async pages() {
+    return (await this.#main()).pages();
+  }
+
+  async waitForTarget(predicate, options) {
+    return (await this.#main()).waitForTarget(predicate, options);
+  }
+
+  async userAgent() {
+    return (await this.#chromium()).userAgent();
+  }
+
+  async close() {
+    await Promise.all(this.#contexts.map((c) => (c.closed ? null : c.close().catch(() => {}))));
+    this.#contexts = [];
+    this.#context = null;
+    await this.#browser?.disconnect();
+    this.#browser = null;
+  }
+}
+
+/** The address of the browser tests' Chromium broker (global-setup.js) in a vitest worker; else undefined. */
+async function brokerAddress() {
+  if (!process.env.VITEST) return undefined;
+  try {
+    return (await import('vitest')).inject('chromiumBroker');
+  } catch {
+    return undefined; // a process a test started (the bench), which has the worker's environment but not its state
+  }
+}
+
+/**
+ * A browser for a test file. In the suite (the browser tests' global setup keeps one Chromium per worker), the
+ * file's own incognito context in its worker's Chromium (FileBrowser); with `extraArgs` (flags of its own) or
+ * `{ own: true }`, or outside the suite (the screenshot scripts), a Chromium of its own.
+ */
+export async function launchBrowser(extraArgs = [], { own = extraArgs.length > 0 } = {}) {
+  const endpoint = own ? undefined : await brokerAddress();
+  if (!endpoint) return startChromium(extraArgs);
+  return new FileBrowser(`${endpoint}?worker=${process.env.VITEST_POOL_ID ?? 0}&pid=${process.pid}`);
 }
 
 /**

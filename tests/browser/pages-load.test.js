@@ -1,10 +1,11 @@
 // Pages load cleanly: the landing page, the Fresnel chapter and its embeds with no console error, no page error
 // and no failed request; the BRDF, microfacet, NDF, visibility and performance pages with their widgets mounted
 // and their views drawn; the landing page links every live page. Every built page opening under the
-// Content-Security-Policy with none of these (and idle pages drawing nothing) is in csp.test.js: this file is the
+// Content-Security-Policy with none of these (and idle pages drawing nothing) is in axe.test.js: this file is the
 // quick check of the edit loop (npm run test:quick).
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { distinctColors, launchBrowser, open, settle, shot, widget } from './helpers.js';
+import { SMALL_VIEWPORT } from './harness.js';
 
 let browser;
 beforeAll(async () => {
@@ -25,7 +26,7 @@ describe('pages load cleanly', () => {
     'embed.html?w=f0-tables',
   ]) {
     it(path, async () => {
-      const page = await open(browser, path);
+      const page = await open(browser, path, SMALL_VIEWPORT);
       if (path.includes('w=')) await widget(page, new URL(path, 'http://x').searchParams.get('w'));
       else await settle(page, 1500);
       expect(await page.$('h1, .widget')).not.toBeNull();
@@ -40,7 +41,7 @@ describe('pages load cleanly', () => {
   }
 
   it('the landing page links every live page and widget', async () => {
-    const page = await open(browser, 'index.html');
+    const page = await open(browser, 'index.html', SMALL_VIEWPORT);
     await settle(page);
     const links = await page.$$eval('#chapters a', (as) => as.map((a) => a.getAttribute('href')));
     expect(links).toEqual(
@@ -69,7 +70,7 @@ describe('pages load cleanly', () => {
   const pagerTitle =
     'each chapter page ends with links to the chapters one before and one after it (as their headers number them)';
   it(pagerTitle, async () => {
-    const page = await open(browser, 'index.html');
+    const page = await open(browser, 'index.html', SMALL_VIEWPORT);
     const files = await page.$$eval('#chapters a.chapter-title', (as) => as.map((a) => a.getAttribute('href')));
     const pages = await page.evaluate(async (list) => {
       const read = async (file) => new DOMParser().parseFromString(await (await fetch(file)).text(), 'text/html');
@@ -100,7 +101,7 @@ describe('pages load cleanly', () => {
   });
 
   it('an unknown widget gets a message, not a blank page', async () => {
-    const page = await open(browser, 'embed.html?w=nope');
+    const page = await open(browser, 'embed.html?w=nope', SMALL_VIEWPORT);
     await settle(page);
     expect(await page.$eval('.blocking-message', (el) => el.textContent)).toMatch(/no widget called/);
     expect(page.errors).toEqual([]);
@@ -117,7 +118,7 @@ describe('chapter pages load cleanly', () => {
     ['performance.html', []],
   ]) {
     it(path, async () => {
-      const page = await open(browser, path);
+      const page = await open(browser, path, SMALL_VIEWPORT);
       for (const k of keys) await widget(page, k);
       for (const canvas of await page.$$('canvas')) {
         if (!(await canvas.boundingBox())) continue; // hidden (e.g. the second BRDF's image when there is none)

@@ -89,6 +89,19 @@ const said = (where, value, yours, reference) =>
  * id → { correct, mistakes: [{ name, code, summary (RegExp), detail? (RegExp) }] }. `starter: true` stands for
  * the exercise's own starter code.
  */
+// F82-tint with t = 0.871: b = Schlick(F0, 1/7)(1 − t) / ((1/7)(6/7)⁶)
+const F82_TINT = `vec3 customF(vec3 f0, float lh) {
+  float mu = clamp(lh, 0.0, 1.0);
+  float m = 1.0 - mu;
+  float m2 = m * m;
+  vec3 tint = vec3(0.871);
+  float mBar = 6.0 / 7.0;
+  vec3 schlickBar = f0 + (1.0 - f0) * (mBar * mBar * mBar * mBar * mBar);
+  vec3 b = schlickBar * (1.0 - tint) / ((1.0 / 7.0) * pow(mBar, 6.0));
+  return f0 + (1.0 - f0) * (m2 * m2 * m) - b * mu * (m2 * m2 * m2);
+}
+`;
+
 export const SHADER_SOLUTIONS = {
   'shader-schlick': {
     correct: SCHLICK,
@@ -125,6 +138,24 @@ export const SHADER_SOLUTIONS = {
         code: EXACT('1.0'),
         summary: /your F is 2; the reference is 1\.$/,
         detail: /your F is 2× the reference\. Is a factor of 2 missing or extra\?/,
+      },
+    ],
+  },
+  'shader-f82-tint': {
+    correct: F82_TINT,
+    mistakes: [
+      {
+        // the dip b μ(1 − μ)⁶ left out: in tolerances largest where F82-tint is small, F0 = 0, μ = 0.4
+        // (0.078 against 0.058; next μ = 0.35, 2% fewer tolerances)
+        name: 'Schlick alone',
+        code: SCHLICK,
+        summary: said('F0 = 0, l·h = 0.4', 'F', '0.078', '0.058'),
+      },
+      {
+        // b = (1 − t)/(μ̄(1 − μ̄)⁶) without Schlick(F0, 1/7): the dip 1/Schlick(0, 1/7) ≈ 2.2× too deep at F0 = 0
+        name: 'tint not relative to Schlick',
+        code: F82_TINT.replace('vec3 b = schlickBar * (1.0 - tint)', 'vec3 b = (1.0 - tint)'),
+        summary: said('F0 = 0, l·h = 0.4', 'F', '0.035', '0.058'),
       },
     ],
   },

@@ -44,7 +44,7 @@ describe('Share', () => {
           return { label: button?.textContent, above: !!bar && bar.bottom <= body.top };
         }),
       );
-      expect(bars.length).toBe(3);
+      expect(bars.length).toBe(4);
       for (const bar of bars) expect(bar).toEqual({ label: 'Share: this chapter at this state', above: true });
       await setControl(page, 'Mode', 'Zones of l·h', '.widget-fresnel-zones');
       await setControl(page, 'Shape', 'Torus knot', '.widget-fresnel-zones');

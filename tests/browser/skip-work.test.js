@@ -1,5 +1,5 @@
 // Skip what a scene does not need, measured: WebGL draw calls are counted in the page itself. That an idle page draws
-// nothing is checked where every page is loaded under the policy (csp.test.js).
+// nothing is checked where every page is loaded under the policy (axe.test.js).
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { launchBrowser, open, settle, untilSteady, widget } from './helpers.js';
 

@@ -1,5 +1,5 @@
 // Pages opened under the app's Content-Security-Policy with every violation recorded: the built pages, and what
-// each page does on load to wait for. Used by csp.test.js.
+// each page does on load to wait for. Used by csp.test.js and axe.test.js.
 import { readdirSync } from 'node:fs';
 import { join } from 'node:path';
 import { baseUrl, countDrawCalls, settle } from './helpers.js';

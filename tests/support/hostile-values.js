@@ -180,6 +180,26 @@ export function isRefused(f, raw) {
   return items === null || !items.some((v) => isClean(f, [v]));
 }
 
+/** A partial state of refused values only (so the state must not move), seeded; prototype keys now and then. */
+export function refusedPartial(schema, random, typed) {
+  for (;;) {
+    const partial = hostilePartial(schema, random, typed);
+    const fields = Object.keys(partial).filter((k) => Object.hasOwn(schema, k));
+    if (fields.every((k) => isRefused(schema[k], partial[k]))) return partial;
+  }
+}
+
+/** One refused URL value for every field (text, rotating through its candidates), plus prototype-named keys. */
+export function hostileQuery(schema, random) {
+  const params = new URLSearchParams();
+  for (const [key, f] of Object.entries(schema)) {
+    const refused = candidates(f, false).filter((v) => isRefused(f, v));
+    params.set(key, refused[Math.floor(random() * refused.length)]);
+  }
+  for (const name of PROTOTYPE_NAMES) params.set(name, 'pwned');
+  return params;
+}
+
 /** A valid state change for `schema`: its first two fields moved off their defaults. */
 export function goodPartial(schema) {
   const out = {};

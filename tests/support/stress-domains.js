@@ -2,6 +2,7 @@
 // Every export is listed: a new function without an entry fails the stress test until it is classified.
 import { CATALOGUE } from '../../src/math/catalogue/index.js';
 import { paramStress } from '../../src/math/catalogue/grids.js';
+import { ANISOTROPIC_STRESS_DOMAINS } from './stress-domains-anisotropic.js';
 
 const COS = [-1, -0.5, 0, 1e-7, 1e-4, 0.5, 1 - 1e-7, 1, 1 + 1e-7, 1.5];
 const ALPHA = [0, 1e-5, 1e-4, 1e-2, 0.3, 1, 2];
@@ -88,6 +89,7 @@ const termDomains = () =>
  */
 export const STRESS_DOMAINS = {
   ...termDomains(),
+  ...ANISOTROPIC_STRESS_DOMAINS,
   srgbToLinear: { args: [SRGB], range: ZERO_TO_ONE },
   linearToSrgb: { args: [SRGB], range: ZERO_TO_ONE },
   fresnelSchlickSG: { args: [F0, COS], range: ZERO_TO_ONE },
@@ -102,6 +104,7 @@ export const STRESS_DOMAINS = {
     range: NON_NEGATIVE,
   },
   edgeTintFromConductorIor: { args: [[0.01, 0.5, 1, 3, 100], K], range: FINITE },
+  f82TintFromConductor: { args: [ETA, K], range: [0, 2.2], pick: ['f0', 'tint'] }, // tint ≤ 1 / (6/7)⁵ ≈ 2.16
   fresnelZone: { args: [COS], range: [0, 2] },
   sphereZoneFractions: { args: [], range: ZERO_TO_ONE },
   clampAlpha: { args: [ALPHA], range: [1e-4, 1] },

@@ -6,6 +6,8 @@ import { CATALOGUE, termDefines } from '../../math/catalogue/index.js';
 import { termInputs } from '../../math/catalogue/grids.js';
 import { merlCoordinates } from '../../measured/merl.js';
 import { buildAlbedoTableGGX, albedoLossTableGGX } from '../../math/albedo-table.js';
+import { ANISOTROPIC_PARITY_CASES } from './parity-cases/anisotropic.js';
+import { F82_TINT_PARITY_CASES } from './parity-cases/f82-tint.js';
 
 let albedoTable = null; // built on first use (~0.5 s)
 const albedoTableOnce = () => (albedoTable ??= buildAlbedoTableGGX());
@@ -557,4 +559,6 @@ export const PARITY_CASES = [
     args: cartesian(GRAZING, GRAZING, [-1, -0.7, -0.2], [0.2, 0.5, 1, Math.PI / 2], [0.3, 1]),
   },
   ...termParityCases(CATALOGUE),
+  ...ANISOTROPIC_PARITY_CASES,
+  ...F82_TINT_PARITY_CASES,
 ];

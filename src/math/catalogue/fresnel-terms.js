@@ -94,3 +94,34 @@ export const FRESNEL_FAMILY = {
     },
   },
 };
+
+// F82-tint, appended on its own (issue 29): a metal's Fresnel with a second colour at θ = acos(1/7) ≈ 81.8°. No
+// dispatch offers it yet: its tint is not an input of fresnelTerm(f0, lh).
+import { fresnelF82Tint } from '../fresnel.js';
+
+/** @type {import('./types.js').TermEntry} */
+const F82_TINT = {
+  key: 'f82Tint',
+  label: 'F82-tint',
+  short: 'F82-tint',
+  cite: 'Hoffman 2023',
+  js: fresnelF82Tint,
+  evaluate: (c, p) => fresnelF82Tint(p.f0, p.tint, c),
+  glsl: 'fresnelF82Tint',
+  chunk: 'fresnel.glsl',
+  define: null,
+  args: ['f0', 'tint', 'cos'],
+  params: {
+    f0: { ...f0, clamped: true },
+    tint: {
+      min: 0,
+      max: 1,
+      unit: '',
+      label: 'Tint at 81.8° (OpenPBR specular_color)',
+      clamped: true,
+      // the talk's metals (0.77 to 0.99), 0.51 (where clamping to 0 starts at f0 = 0) and no tint
+      delicate: [0.3, 0.51, 0.77, 0.9, 0.99],
+    },
+  },
+};
+FRESNEL_FAMILY.terms.f82Tint = F82_TINT;
