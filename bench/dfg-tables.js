@@ -3,17 +3,17 @@
 // sweep, and one adaptive evaluation. Wall-clock on this machine; the figures vary with its load.
 import { computeDfgTable, dfgTableData } from '../src/lab/dfg-table.js';
 import { DFG_TABLE_SIZE, albedoGGX, averageAlbedo } from '../src/math/integrate.js';
+import { termsWith } from '../src/lab/lab-approximations.js';
 
 const time = (fn) => {
   const t0 = performance.now();
   fn();
   return performance.now() - t0;
 };
-const LAB_VISIBILITY = ['smithGGXCorrelated', 'smithGGXSeparable', 'schlickGGX', 'kelemen', 'cookTorrance', 'implicit'];
 
 console.log(`DFG table (${DFG_TABLE_SIZE} x ${DFG_TABLE_SIZE}), ms to build (npm run dfg-tables) / to decode (page):`);
-for (const ndf of ['ggx', 'beckmann']) {
-  for (const visibility of LAB_VISIBILITY) {
+for (const ndf of termsWith('ndf', 'dfgTable')) {
+  for (const visibility of termsWith('visibility', 'dfgTable')) {
     const build = time(() => computeDfgTable({ ndf, visibility }));
     const decode = time(() => dfgTableData({ ndf, visibility }));
     console.log(`  ${`${ndf} / ${visibility}`.padEnd(32)}${build.toFixed(0)} / ${decode.toFixed(1)}`);

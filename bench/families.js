@@ -28,7 +28,10 @@ const measuredChannels = M.METALS.flatMap((m) =>
 // function on the GPU (angles x, y; its parameters from BENCH_GLSL or mid-range).
 const BENCH_GLSL = {
   visibility: { alpha: '0.3' },
-  ndf: { alpha: '0.05 + 0.5 * y', exponent: '10.0 + 100.0 * y', a1: '1.0 + 100.0 * y', a2: '2.5', p: '0.64' },
+  ndf: {
+    ...{ nh: 'x', sin2h: '(1.0 - x) * (1.0 + x)' }, // D over x = n·h (the microfacet input's nh, sin2h)
+    ...{ alpha: '0.05 + 0.5 * y', exponent: '10.0 + 100.0 * y', a1: '1.0 + 100.0 * y', a2: '2.5', p: '0.64' },
+  },
 };
 const glslFloat = (x) => (Number.isInteger(x) ? x.toFixed(1) : String(x));
 const BENCH_ANGLE = {
@@ -73,23 +76,26 @@ const normaliserOf = ({ normaliser, args, params }) =>
 
 /** One variant per term of a catalogue family, the reference first. */
 function termVariants(family, roles) {
-  const variants = Object.values(CATALOGUE[family].terms).map((term) => {
-    const role = roles[term.key] ?? {};
-    const model = role.model ?? MODEL_OF[term.key] ?? kebab(term.key);
-    const reference = Object.keys(roles).find((k) => roles[k].kind === 'reference');
-    const { params } = term;
-    const glslOf = (arg) =>
-      BENCH_ANGLE[arg] ?? BENCH_GLSL[family][arg] ?? glslFloat((params[arg].min + params[arg].max) / 2);
-    return {
-      key: role.key ?? kebab(term.key),
-      label: role.label ?? term.label,
-      kind: role.kind ?? 'difference',
-      ...(role.kind === 'reference' ? {} : { against: role.against ?? roles[reference].key ?? kebab(reference) }),
-      model,
-      js: FAMILY_OF[family](term, role.params),
-      glsl: role.glsl ?? `${term.glsl}(${[...term.args.map(glslOf), ...normaliserOf(term)].join(', ')})`,
-    };
-  });
+  // the terms with a curve over the bench's two cosines (not a lobe that reads the whole microfacet input)
+  const variants = Object.values(CATALOGUE[family].terms)
+    .filter((term) => term.evaluate)
+    .map((term) => {
+      const role = roles[term.key] ?? {};
+      const model = role.model ?? MODEL_OF[term.key] ?? kebab(term.key);
+      const reference = Object.keys(roles).find((k) => roles[k].kind === 'reference');
+      const { params } = term;
+      const glslOf = (arg) =>
+        BENCH_GLSL[family][arg] ?? BENCH_ANGLE[arg] ?? glslFloat((params[arg].min + params[arg].max) / 2);
+      return {
+        key: role.key ?? kebab(term.key),
+        label: role.label ?? term.label,
+        kind: role.kind ?? 'difference',
+        ...(role.kind === 'reference' ? {} : { against: role.against ?? roles[reference].key ?? kebab(reference) }),
+        model,
+        js: FAMILY_OF[family](term, role.params),
+        glsl: role.glsl ?? `${term.glsl}(${[...term.args.map(glslOf), ...normaliserOf(term)].join(', ')})`,
+      };
+    });
   return [...variants.filter((v) => v.kind === 'reference'), ...variants.filter((v) => v.kind !== 'reference')];
 }
 

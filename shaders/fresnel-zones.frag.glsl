@@ -56,8 +56,9 @@ void main() {
 #ifdef WEIGHTED
   float nl = dot(n, l);
   float nh = dot(n, h);
-  float d = ndfTerm(nh, sin2FromCos(min(nh, 1.0)), uAlpha); // sin²θh from n·h as ndfGGX has it (no local frame)
-  weight = PI * d * visibilityTerm(nl, nv, nh, dot(l, h), uAlpha) / 4.0 * max(nl, 0.0);
+  // sin²θh from n·h as ndfGGX has it (no local frame)
+  MicrofacetInput mi = microfacetInputFromCosines(nl, nv, nh, dot(l, h), sin2FromCos(min(nh, 1.0)), vec2(uAlpha));
+  weight = PI * ndfTerm(mi) * visibilityTerm(mi) / 4.0 * max(nl, 0.0);
 #endif
 #ifdef STATS_PASS
   fragColor = vec4(zone == 0 ? weight : 0.0, zone == 1 ? weight : 0.0, zone == 2 ? weight : 0.0, 1.0);

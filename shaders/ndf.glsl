@@ -1,7 +1,7 @@
 // Normal distribution functions, mirrors src/math/ndf.js (see there for the derivations).
 #include "common.glsl"
-#define ALPHA_MIN 1e-4
-float clampAlpha(float alpha) { return clamp(alpha, ALPHA_MIN, 1.0); }
+#include "parameters.glsl"
+float clampAlpha(float alpha) { return clamp(alpha, ALPHA_MIN, ALPHA_MAX); }
 
 float ndfGGXFromSin2(float cosThetaM, float sin2ThetaM, float alpha) {
   if (!(cosThetaM > 0.0)) return 0.0;

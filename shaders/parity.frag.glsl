@@ -1,11 +1,10 @@
 // Evaluates one function per texel for the parity harness: arguments in, results out (float32 targets).
-// CALL is defined by the harness as the expression under test, wrapped to a vec4.
-// Up to eight arguments: a = the first four, b = the next four.
-uniform sampler2D uArgs;
-uniform sampler2D uArgs2;
+// CALL is defined by the harness as the expression under test, wrapped to a vec4, over a = the first four
+// floats of the input, b = the next four and arg(i) any one (parity-args.glsl).
+#include "parity-args.glsl"
 out vec4 fragColor;
 void main() {
-  vec4 a = texelFetch(uArgs, ivec2(gl_FragCoord.xy), 0);
-  vec4 b = texelFetch(uArgs2, ivec2(gl_FragCoord.xy), 0);
+  vec4 a = argTexel(0);
+  vec4 b = argTexel(1);
   fragColor = CALL;
 }

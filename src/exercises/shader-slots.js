@@ -95,7 +95,7 @@ export const channelsOf = (slotKey) => SLOTS[slotKey].outputs;
 export const GRADED_SLOT_KEYS = Object.keys(GRADED_SLOTS);
 
 /** What a term reads beyond its parameters, per family's calling convention, that a slot cannot give. */
-const ANGLES_OF = { ndf: ['cos', 'sin2'], fresnel: ['cos'], diffuse: ['nl', 'nv', 'cosPhi'] };
+const ANGLES_OF = { ndf: ['nh', 'sin2h'], fresnel: ['cos'], diffuse: ['nl', 'nv', 'cosPhi'] };
 
 /**
  * Why the catalogue term `key` cannot be graded in `slotKey` with the fixed `params`, as a list of messages

@@ -3,23 +3,30 @@
 // no form for a term, what stands in for it. The sentences the lab shows under its images come from here, so
 // the error image is read as the method's error and not as a difference between two models.
 import { SIGMA_MODELLED_DEG, sigmaExtrapolated, sigmaText } from '../core/ui/sigma-range.js';
-import { termEntry, termOptions } from '../math/catalogue/index.js';
+import { CATALOGUE, termEntry, termOptions } from '../math/catalogue/index.js';
 
 /**
- * The terms the lab offers, by family, with the catalogue's labels: the ones its approximations have tables for
- * (GGX and Beckmann: their DFG tables and prefilters) and that its program draws.
+ * The keys of a family's terms that the catalogue says have the capability (src/math/catalogue/types.js), in
+ * menu order.
+ * @param {'ndf' | 'visibility'} family
+ * @param {'sampler' | 'dfgTable' | 'measuredFit'} capability
+ */
+export const termsWith = (family, capability) =>
+  Object.values(CATALOGUE[family].terms)
+    .filter((term) => term.capabilities?.[capability])
+    .map((term) => term.key);
+
+/**
+ * The terms the lab offers, by family, with the catalogue's labels: the D and V its approximations have tables
+ * for (their DFG tables; the NDFs also an importance sampler, for the prefilters) and that its program draws.
  */
 export const LAB_TERMS = {
   fresnel: termOptions('fresnel', ['schlick', 'one']),
-  ndf: termOptions('ndf', ['ggx', 'beckmann']),
-  visibility: termOptions('visibility', [
-    'smithGGXCorrelated',
-    'smithGGXSeparable',
-    'schlickGGX',
-    'kelemen',
-    'cookTorrance',
-    'implicit',
-  ]),
+  ndf: termOptions(
+    'ndf',
+    termsWith('ndf', 'dfgTable').filter((key) => termsWith('ndf', 'sampler').includes(key)),
+  ),
+  visibility: termOptions('visibility', termsWith('visibility', 'dfgTable')),
   diffuse: termOptions('diffuse', [
     'lambert',
     'fresnelWeighted',

@@ -34,9 +34,11 @@ const MATCHED_HERE = { ggx: 1, beckmann: 1, blinnPhong: 1, abc: 1, sgd: 1 };
 
 /**
  * Any other NDF of the catalogue: its width parameter (its first) solved for, the others at mid-range. The search
- * runs over the parameter's range on a log scale (from 1e-6 when the range starts at 0).
+ * runs over the parameter's range on a log scale (from 1e-6 when the range starts at 0). An NDF without one reads
+ * its width from the microfacet input's (αx, αy) (an anisotropic lobe): {}, GGX's α for both.
  */
 function matchWidthParam(term, hwhmDeg) {
+  if (!Object.keys(term.params).length) return {};
   const [[name, range], ...others] = Object.entries(term.params);
   const fixed = Object.fromEntries(others.map(([key, p]) => [key, (p.min + p.max) / 2]));
   const width = (x) => ndfHalfWidthDeg((c) => term.evaluate(c, { ...fixed, [name]: x }));

@@ -2,10 +2,11 @@
 // Each is a density of microfacet normals normalised so that ∫ D(m)(n·m) dω = 1 over the hemisphere,
 // and is 0 for n·m <= 0. tan² and sin² are formed as (1 - c)(1 + c) [/ c²], never as 1 - c², so nothing
 // cancels near c = 1 in float32; exponentials that underflow return 0 before 0·Inf can make a NaN.
+import { PARAMETERS } from './catalogue/parameters.js';
 
-/** Smallest roughness the functions accept; alpha is clamped to [ALPHA_MIN, 1]. */
-export const ALPHA_MIN = 1e-4;
-export const clampAlpha = (alpha) => Math.min(Math.max(alpha, ALPHA_MIN), 1);
+/** Smallest roughness the functions accept; alpha is clamped to [ALPHA_MIN, 1] (the shared parameter table's). */
+export const ALPHA_MIN = PARAMETERS.alpha.min;
+export const clampAlpha = (alpha) => Math.min(Math.max(alpha, ALPHA_MIN), PARAMETERS.alpha.max);
 
 const sin2 = (c) => (1 - c) * (1 + c);
 

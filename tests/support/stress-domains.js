@@ -1,7 +1,7 @@
 // What `npm run stress` feeds every exported function of src/math, and the range each result must lie in.
 // Every export is listed: a new function without an entry fails the stress test until it is classified.
 import { CATALOGUE } from '../../src/math/catalogue/index.js';
-import { paramStress } from '../../src/math/catalogue/grids.js';
+import { argGroups, argParam, paramStress, termInputs } from '../../src/math/catalogue/grids.js';
 import { ANISOTROPIC_STRESS_DOMAINS } from './stress-domains-anisotropic.js';
 
 const COS = [-1, -0.5, 0, 1e-7, 1e-4, 0.5, 1 - 1e-7, 1, 1 + 1e-7, 1.5];
@@ -32,8 +32,14 @@ const DIRS = [
 ];
 const PAIRS = DIRS.flatMap((l) => [...DIRS.map((v) => [l, v]), [l, l.map((x) => -x)]]);
 
-const D_KINDS = Object.keys(CATALOGUE.ndf.terms);
-const V_KINDS = Object.keys(CATALOGUE.visibility.terms);
+// the terms microfacetBRDF of src/math evaluates from the cosines (a term that reads the whole microfacet input,
+// an anisotropic lobe, is swept alone, through termStress)
+const cosineTerms = (family) =>
+  Object.values(family.terms)
+    .filter((t) => t.evaluate)
+    .map((t) => t.key);
+const D_KINDS = cosineTerms(CATALOGUE.ndf);
+const V_KINDS = cosineTerms(CATALOGUE.visibility);
 const BRDF_PARAMS = D_KINDS.flatMap((D) =>
   V_KINDS.flatMap((V) =>
     [0, 1e-4, 0.3, 1].map((alpha) => ({ F: 'schlick', D, V, alpha, f0: 0.04, exponent: 1e4, a1: 1e4, a2: 3, p: 1.9 })),
@@ -52,7 +58,7 @@ const FINITE = [-Infinity, Infinity]; // only NaN and ±Inf are failures
 
 const TERM_ANGLES = {
   cos: COS,
-  sin2: [0, 1e-12, 0.5, 1],
+  sin2h: [0, 1e-12, 0.5, 1],
   nl: COS,
   nv: COS,
   nh: COS,
@@ -60,6 +66,20 @@ const TERM_ANGLES = {
   cosPhi: [-1.5, -1, 0, 1, 1.5],
 };
 const TERM_RANGE = { fresnel: ZERO_TO_ONE, ndf: NON_NEGATIVE, visibility: NON_NEGATIVE, diffuse: NON_NEGATIVE };
+
+/**
+ * A term's stress inputs: each argument over its list, or, for a term that reads directions of the microfacet
+ * input (an anisotropic lobe's hx … vz), the tuples of the directions above (DIRS, unit) and its other arguments.
+ * @param {import('../src/math/catalogue/types.js').TermEntry} term
+ */
+function termStress(term) {
+  const values = (arg) => {
+    const param = argParam(term, arg);
+    return param ? paramStress(param) : TERM_ANGLES[arg];
+  };
+  if (!argGroups(term.args).some((g) => g.kind.startsWith('dir:'))) return { args: term.args.map(values) };
+  return { tuples: termInputs(term, (kind) => (kind.startsWith('dir:') ? DIRS : values(kind))) };
+}
 
 /**
  * The function of every catalogue term (fn, by its name), its angles over the lists above and its parameters over
@@ -71,14 +91,7 @@ const termDomains = () =>
     Object.values(CATALOGUE).flatMap((family) =>
       Object.values(family.terms)
         .filter((term) => term.js)
-        .map((term) => [
-          term.glsl,
-          {
-            fn: term.js,
-            args: term.args.map((arg) => (arg in term.params ? paramStress(term.params[arg]) : TERM_ANGLES[arg])),
-            range: TERM_RANGE[family.family],
-          },
-        ]),
+        .map((term) => [term.glsl, { fn: term.js, ...termStress(term), range: TERM_RANGE[family.family] }]),
     ),
   );
 

@@ -18,10 +18,8 @@ const ENTRY = {
   glsl: 'ndfCosinePower',
   chunk: 'ndf-cosine-power.glsl',
   define: 'NDF_COSINE_POWER',
-  glslCall: 'ndfCosinePower(nh, uExponent)',
-  uniforms: { uExponent: 'float' },
-  args: ['cos', 'exponent'],
-  params: { exponent: { min: 0, max: 1e4, unit: '', label: 'Exponent n', clamped: false } },
+  args: ['nh', 'exponent'],
+  params: { exponent: { min: 0, max: 1e4, unit: '', label: 'Exponent n', clamped: false, uniform: 'uExponent' } },
 };
 
 let app;
@@ -78,7 +76,7 @@ describe('adding an NDF: one catalogue entry, its JS and its GLSL function, no o
     const defines = termDefines({ F: 'schlick', D: 'cosinePower', V: 'smithGGXCorrelated' });
     const chunks = { ...app.chunks, 'ndf-cosine-power.glsl': GLSL };
     const text = assembleGlsl(app.chunks['brdf-sphere.frag.glsl'], { defines, chunks });
-    expect(text).toContain('return ndfCosinePower(nh, uExponent);');
+    expect(text).toContain('return ndfCosinePower(m.nh, uExponent);');
     expect(text).toContain('float ndfCosinePower(float c, float n)');
     expect(text).toMatch(/uniform float uExponent;/);
     expect(text).not.toMatch(/uniform float uA1;|float ndfTerm\(.*ndf(ABC|GGX)/);

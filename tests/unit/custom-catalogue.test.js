@@ -39,12 +39,12 @@ describe('custom in the catalogue', () => {
     expect(defines).toEqual({ F_SCHLICK: true, NDF_CUSTOM: true, VIS_CUSTOM: true });
     const chunks = withCustomChunk(withCustomChunk(SHADER_CHUNKS, 'D', SLOTS.D.starter), 'V', SLOTS.V.starter);
     const text = assembleGlsl(SPHERE, { defines, chunks });
-    expect(text).toMatch(/float ndfTerm\(float nh, float sin2h, float alpha\) \{ return customD\(nh, alpha\); \}/);
-    expect(text).toMatch(/\{ return customV\(nl, nv, alpha\); \}/);
+    expect(text).toMatch(/float ndfTerm\(MicrofacetInput m\) \{ return customD\(m\.nh, m\.alpha\.x\); \}/);
+    expect(text).toMatch(/\{ return customV\(m\.nl, m\.nv, m\.alpha\.x\); \}/);
     expect(text.split('#line 1 1')).toHaveLength(3);
     expect(text).toContain(SLOTS.D.starter);
     expect(text).toContain(SLOTS.V.starter);
-    expect(text).not.toMatch(/ndfGGXFromSin2\(nh, sin2h, alpha\)/); // the catalogue's terms are not compiled in
+    expect(text).not.toMatch(/ndfGGXFromSin2\(m\.nh/); // the catalogue's terms are not compiled in
   });
   it('refuses a custom define without the user’s code, naming the missing chunk', () => {
     const defines = termDefines({ F: 'custom', D: 'ggx', V: 'smithGGXCorrelated' });

@@ -1,6 +1,7 @@
 // The slots of issue 13 (src/core/custom/slots.js) against the signatures the issue fixes, word for word, and the
 // catalogue terms they are compared with.
 import { describe, expect, it } from 'vitest';
+import { FIELDS } from '../../src/math/catalogue/microfacet-input.js';
 import { SLOTS, slotOf } from '../../src/core/custom/slots.js';
 import { CATALOGUE } from '../../src/math/catalogue/index.js';
 import { smithG1GGX } from '../../src/math/visibility.js';
@@ -18,7 +19,9 @@ describe('SLOTS', () => {
     const slot = slotOf(key);
     expect(slot.signature).toBe(sig);
     expect(`${slot.returns} ${slot.fn}(${slot.args.map((a) => `${a.type} ${a.name}`).join(', ')})`).toBe(sig);
-    expect(slot.call).toBe(`${slot.fn}(${slot.args.map((a) => a.name).join(', ')})`);
+    // D and V: the dispatch passes the user's function the microfacet input's fields (m.nh, m.alpha.x, …)
+    const passed = (name) => (slot.family === 'ndf' || slot.family === 'visibility' ? FIELDS[name].glsl : name);
+    expect(slot.call).toBe(`${slot.fn}(${slot.args.map((a) => passed(a.name)).join(', ')})`);
     expect(slot.outputs).toBe(slot.returns === 'vec3' ? 3 : 1);
     expect(slot.inputs.length).toBeLessThanOrEqual(8); // what one texel pair carries
   });

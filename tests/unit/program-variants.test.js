@@ -71,13 +71,13 @@ describe('every variant of every program assembles, and declares only the unifor
       for (const u of declaredUniforms(source)) expect(SPHERE_UNIFORMS, JSON.stringify(defines)).toContain(u);
     }
   });
-  it('parity.frag.glsl: every parity row; uniforms ⊆ uArgs, uArgs2 and the row’s tables', () => {
+  it('parity.frag.glsl: every parity row; uniforms ⊆ uArgs, the row’s tables and its uniforms', () => {
     for (const c of PARITY_CASES) {
       const wrap = `vec4(${c.glsl}${', 0.0'.repeat(4 - c.outputs)})`;
       const source = assembleGlsl(`#include "${c.chunk}"\n${SHADER_CHUNKS['parity.frag.glsl']}`, {
         defines: { ...c.defines, CALL: wrap },
       });
-      const fed = ['uArgs', 'uArgs2', ...Object.keys(c.tables ?? {})];
+      const fed = ['uArgs', ...Object.keys(c.tables ?? {}), ...Object.keys(c.uniforms ?? {})];
       for (const u of declaredUniforms(source)) expect(fed, c.name).toContain(u);
     }
   });

@@ -6,6 +6,7 @@
 // A custom chunk has common.glsl before it (PI, saturate, sin2FromCos), so the starters use PI. The calls of the
 // slots that stand in a family's menu are the catalogue's (src/math/catalogue/custom-terms.js).
 import { CUSTOM_TERMS } from '../../math/catalogue/index.js';
+import { PARAMETERS } from '../../math/catalogue/parameters.js';
 
 /**
  * One argument of a slot's GLSL function.
@@ -29,13 +30,22 @@ import { CUSTOM_TERMS } from '../../math/catalogue/index.js';
  * @property {string} reference the catalogue key (of `family`, or of the diffuse family for 'brdf') the checks
  *   compare with by default
  * @property {string} starter GLSL text, a correct term
- * @property {string} call the expression the widgets and the term dispatch use, over the dispatch's arguments
+ * @property {string} call the expression the widgets and the term dispatch use: for D and V over the fields of the
+ *   microfacet input m (shaders/microfacet-input.glsl), the user's signature unchanged
  * @property {string[]} inputs what one evaluation input holds, in order (gpu-eval.js packs it into a.xyzw, b.xyzw)
  * @property {string} evalCall the call over a and b that evaluates the slot on those inputs
  * @property {1 | 3} outputs floats of the result (a float in .x, a vec3 in .xyz)
  */
 
-const ALPHA_ARG = /** @type {SlotArg} */ ({ name: 'alpha', type: 'float', min: 1e-4, max: 1, unit: '', label: 'α' });
+const { alpha: ALPHA, f0: F0 } = PARAMETERS;
+const ALPHA_ARG = /** @type {SlotArg} */ ({
+  name: 'alpha',
+  type: 'float',
+  min: ALPHA.min,
+  max: ALPHA.max,
+  unit: '',
+  label: 'α',
+});
 /** @param {string} name @param {string} label @returns {SlotArg} */
 const cosArg = (name, label) => ({ name, type: 'float', min: 0, max: 1, unit: '', label });
 /** @param {string} name @param {string} label @returns {SlotArg} */
@@ -130,7 +140,7 @@ export const SLOTS = {
     fn: 'customF',
     signature: 'vec3 customF(vec3 f0, float lh)',
     returns: 'vec3',
-    args: [{ name: 'f0', type: 'vec3', min: 0, max: 1, unit: '', label: 'F0' }, cosArg('lh', 'l·h')],
+    args: [{ name: 'f0', type: 'vec3', min: F0.min, max: F0.max, unit: '', label: 'F0' }, cosArg('lh', 'l·h')],
     family: 'fresnel',
     reference: 'schlick',
     starter: STARTER_F,
@@ -154,7 +164,7 @@ export const SLOTS = {
     reference: 'lambert',
     starter: STARTER_DIFFUSE,
     call: 'customDiffuse(cdiff, l, v, alpha)',
-    // a grey c_diff: eight floats are what one evaluation carries
+    // a grey c_diff: one float, so that c_diff, l, v and α are eight floats, two texels of the harness
     inputs: ['cdiff', 'lx', 'ly', 'lz', 'vx', 'vy', 'vz', 'alpha'],
     evalCall: 'customDiffuse(vec3(a.x), a.yzw, b.xyz, b.w)',
     outputs: 3,

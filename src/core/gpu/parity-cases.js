@@ -4,6 +4,7 @@
 import * as M from '../../math/index.js';
 import { CATALOGUE, termDefines } from '../../math/catalogue/index.js';
 import { termInputs } from '../../math/catalogue/grids.js';
+import { dispatchParityCases } from './parity-cases/dispatch-cases.js';
 import { merlCoordinates } from '../../measured/merl.js';
 import { buildAlbedoTableGGX, albedoLossTableGGX } from '../../math/albedo-table.js';
 import { ANISOTROPIC_PARITY_CASES } from './parity-cases/anisotropic.js';
@@ -81,15 +82,29 @@ const cartesian = (...lists) => lists.reduce((acc, list) => acc.flatMap((a) => l
 // Each term of the catalogue with a JS and a GLSL function is one row, named by its GLSL function: its
 // parameters swept over their stress values (src/math/catalogue/grids.js), its angles over these.
 const THETA_SIN2 = [0, 1e-9, 1e-6, 1e-4, 0.01, 0.3, 1, 1.5, Math.PI / 2]; // half vectors: (cos θ, sin²θ)
+// directions of the microfacet input (an anisotropic term's h, l, v): along n, near it, oblique, grazing, at
+// azimuths along t, along b and between; l and v also below the horizon
+const DIR_THETAS = [0, 1e-4, 0.3, 0.7854, 1.2, 1.5707];
+const DIR_PHIS = [0, 0.5, Math.PI / 2, 2.5];
+const directions = (thetas, phis, below) => [
+  ...cartesian(thetas, phis).map(([t, p]) => spherical(t, p)),
+  ...(below ? [unitDir(0.6, 0.2, -0.3)] : []),
+];
 const termAngles = (kind, dims) => {
   if (kind === 'theta') return THETA_SIN2;
   if (kind === 'cosPhi') return [-1, -0.5, 0, 0.5, 1];
+  if (kind.startsWith('dir:')) {
+    const coarse = dims > 3;
+    return directions(coarse ? [0, 0.3, 1.2, 1.5707] : DIR_THETAS, coarse ? [0, 1] : DIR_PHIS, kind !== 'dir:h');
+  }
   return dims > 3 ? GRIDS.cosCoarse : GRIDS.cos;
 };
 const GRAZING = [1e-7, 3e-7, 1e-6, 1e-5, 1e-4, 1e-3, 0.01, 0.05];
 const BITS_U = 'uniformFromBits((uint(a.x) << 16u) | uint(a.y))';
 const TINY_COS = [1e-9, 1e-12, 1e-15, 1e-20, 1e-30];
 const SLOTS = ['a.x', 'a.y', 'a.z', 'a.w', 'b.x', 'b.y', 'b.z', 'b.w'];
+/** The first n inputs of a row in GLSL: a.xyzw, b.xyzw, then arg(8), arg(9), … (parity.frag.glsl). */
+const slots = (n) => Array.from({ length: n }, (_, i) => SLOTS[i] ?? `arg(${i})`);
 const FAMILY_RANGE = { fresnel: [0, 1], ndf: [0, Infinity], visibility: [0, Infinity], diffuse: [0, Infinity] };
 /** Tighter bounds some terms keep (a diffuse albedo at most c, the implicit V at most 1). */
 const TERM_RANGE = {
@@ -116,7 +131,7 @@ export function termParityCases(catalogue) {
       .map((term) => ({
         name: term.glsl,
         chunk: term.chunk,
-        glsl: `${term.glsl}(${SLOTS.slice(0, term.args.length + (term.normaliser ? 1 : 0)).join(', ')})`,
+        glsl: `${term.glsl}(${slots(term.args.length + (term.normaliser ? 1 : 0)).join(', ')})`,
         outputs: 1,
         js: term.js,
         range: TERM_RANGE[term.glsl] ?? FAMILY_RANGE[family.family],
@@ -126,7 +141,10 @@ export function termParityCases(catalogue) {
   );
 }
 
-/** { name, chunk, glsl (expression over a.xyzw), outputs, js(...args) -> number | number[], range, args } */
+/**
+ * { name, chunk, glsl (expression over a.xyzw, b.xyzw and arg(i) for any input i), outputs, js(...args) -> number |
+ * number[], range, args (tuples of any length), prelude? (GLSL after the chunk: helpers the expression calls) }
+ */
 export const PARITY_CASES = [
   {
     name: 'srgbToLinear',
@@ -503,7 +521,7 @@ export const PARITY_CASES = [
     return {
       name: `${fn} (cos down to 1e-30)`,
       chunk: 'ndf.glsl',
-      glsl: `${fn}(${SLOTS.slice(0, 1 + params.length + (term.normaliser ? 1 : 0)).join(', ')})`,
+      glsl: `${fn}(${slots(1 + params.length + (term.normaliser ? 1 : 0)).join(', ')})`,
       outputs: 1,
       js: M[fn],
       range: [0, Infinity],
@@ -561,4 +579,5 @@ export const PARITY_CASES = [
   ...termParityCases(CATALOGUE),
   ...ANISOTROPIC_PARITY_CASES,
   ...F82_TINT_PARITY_CASES,
+  ...dispatchParityCases(CATALOGUE, termAngles, FAMILY_RANGE),
 ];

@@ -17,34 +17,51 @@ function tableTexture({ size, data }) {
   return t;
 }
 
+/** Floats per input of a case: its longest tuple, in whole texels, at least two (a and b). */
+const texelsOf = (testCase) => Math.max(2, Math.ceil(Math.max(0, ...testCase.args.map((a) => a.length)) / 4));
+
+/** Rows of one texel layer: one texel per input, WIDTH to a row. */
+const rowsOf = (testCase) => Math.max(1, Math.ceil(testCase.args.length / WIDTH));
+
 /**
- * The fragment shader that evaluates a case's expression once per texel: its chunk, then parity.frag.glsl with
- * CALL, the expression padded to a vec4. `testCase.chunks` (name → text) stands in for the shader chunks: a
- * user-written term brings its own (src/core/custom/assemble.js).
+ * The fragment shader that evaluates a case's expression once per texel: its chunk, its prelude (helpers the
+ * expression calls), then parity.frag.glsl with CALL, the expression padded to a vec4, and ARG_ROWS, the rows of
+ * one texel layer of the inputs. `testCase.chunks` (name → text) stands in for the shader chunks: a user-written
+ * term brings its own (src/core/custom/assemble.js).
  */
 export function parityFragment(testCase) {
   const wrap = `vec4(${testCase.glsl}${', 0.0'.repeat(4 - testCase.outputs)})`; // pad to vec4
-  return assembleGlsl(`#include "${testCase.chunk}"\n${SHADER_CHUNKS['parity.frag.glsl']}`, {
-    defines: { ...testCase.defines, CALL: wrap },
+  const prelude = testCase.prelude ? `${testCase.prelude}\n` : '';
+  return assembleGlsl(`#include "${testCase.chunk}"\n${prelude}${SHADER_CHUNKS['parity.frag.glsl']}`, {
+    defines: { ...testCase.defines, CALL: wrap, ARG_ROWS: rowsOf(testCase) },
     chunks: testCase.chunks ?? SHADER_CHUNKS,
   });
 }
 
 /**
- * Evaluates a case on the GPU: one texel per tuple of `testCase.args` (up to eight floats: a.xyzw, b.xyzw), read
- * back as 4 floats per tuple. `testCase.uniforms` (name → number) are further uniforms its code reads.
+ * The inputs as one float texture: layer k (rows k·rows … (k + 1)·rows - 1) holds floats 4k … 4k + 3 of every
+ * tuple, one texel per tuple.
+ */
+function inputTexture(testCase) {
+  const rows = rowsOf(testCase);
+  const layers = texelsOf(testCase);
+  const data = new Float32Array(WIDTH * rows * layers * 4);
+  testCase.args.forEach((args, i) =>
+    args.forEach((x, j) => (data[(Math.floor(j / 4) * rows * WIDTH + i) * 4 + (j % 4)] = x)),
+  );
+  const t = new THREE.DataTexture(data, WIDTH, rows * layers, THREE.RGBAFormat, THREE.FloatType);
+  t.needsUpdate = true;
+  return t;
+}
+
+/**
+ * Evaluates a case on the GPU: one texel per tuple of `testCase.args` (any number of floats: a.xyzw, b.xyzw,
+ * arg(i)), read back as 4 floats per tuple. `testCase.uniforms` (name → number) are further uniforms its code reads.
  */
 export function evaluateOnGpu(renderer, testCase) {
   const n = testCase.args.length;
-  const height = Math.max(1, Math.ceil(n / WIDTH));
-  const texture = (first) => {
-    const data = new Float32Array(WIDTH * height * 4);
-    testCase.args.forEach((args, i) => args.slice(first, first + 4).forEach((x, j) => (data[i * 4 + j] = x)));
-    const t = new THREE.DataTexture(data, WIDTH, height, THREE.RGBAFormat, THREE.FloatType);
-    t.needsUpdate = true;
-    return t;
-  };
-  const [input, input2] = [texture(0), texture(4)];
+  const height = rowsOf(testCase);
+  const input = inputTexture(testCase);
   const tables = Object.entries(testCase.tables ?? {}).map(([name, table]) => [name, tableTexture(table())]);
   const extra = Object.entries(testCase.uniforms ?? {}).map(([name, value]) => [name, { value }]);
   const material = new THREE.ShaderMaterial({
@@ -52,7 +69,6 @@ export function evaluateOnGpu(renderer, testCase) {
     uniforms: {
       ...Object.fromEntries(extra),
       uArgs: { value: input },
-      uArgs2: { value: input2 },
       ...Object.fromEntries(tables.map(([name, t]) => [name, { value: t }])),
     },
     vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
@@ -63,7 +79,7 @@ export function evaluateOnGpu(renderer, testCase) {
   pass.render(renderer, material, target);
   const out = new Float32Array(WIDTH * height * 4);
   renderer.readRenderTargetPixels(target, 0, 0, WIDTH, height, out);
-  [pass, input, input2, ...tables.map(([, t]) => t), material, target].forEach((x) => x.dispose());
+  [pass, input, ...tables.map(([, t]) => t), material, target].forEach((x) => x.dispose());
   return out.subarray(0, n * 4);
 }
 

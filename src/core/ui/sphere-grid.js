@@ -12,19 +12,20 @@ import { createProgramCache, definesKey } from '../gpu/program-cache.js';
 import { angleText, probeAngles, showProbeRows } from './probe.js';
 import { drawSideBySide } from './side-by-side.js';
 import { HALF_SIZE, IMPOSTOR_VERTEX, createImpostorView } from './sphere-impostor.js';
-import { NDF_FAMILY } from '../../math/catalogue/ndf-terms.js';
+import { termUniformDefaults } from '../../math/catalogue/uniforms.js';
 
-/** Every uniform a cell's program may read, with its value when the cell gives none (brdf-sphere.frag.glsl). */
+const ALPHA_DEFAULT = 0.3;
+
+/**
+ * Every uniform a cell's program may read, with its value when the cell gives none (brdf-sphere.frag.glsl): the
+ * terms' from the catalogue (each bound to its parameter; a cell gives its own with termUniforms).
+ */
 const UNIFORM_DEFAULTS = {
   uLightDir: [0, 0, 1],
   uLightIntensity: 1,
   uExposure: 1,
-  uAlpha: 0.3,
-  uExponent: 40,
-  uA1: 20,
-  uA2: 2.5,
-  uSgdP: 0.64,
-  uSgdNorm: null, // from uAlpha and uSgdP (withDerived)
+  uAlpha: ALPHA_DEFAULT,
+  ...termUniformDefaults({ alpha: ALPHA_DEFAULT }),
   uF0: 1,
   uDiffuse: 0.5,
   uSigma: 0,
@@ -91,16 +92,13 @@ function sameDrawing(cells, next) {
   return cells.length === next.length && cells.every((c, i) => same(c, next[i]));
 }
 
-/** The uniforms with those computed from others once per draw: the SGD normaliser Γ(1 - p, alpha) (ndf.glsl). */
-const withDerived = (u) => ({ ...u, uSgdNorm: NDF_FAMILY.terms.sgd.normaliser?.(u.uAlpha, u.uSgdP) });
-
 /** Draws each cell in its own square viewport, side by side across the canvas, with its program and uniforms. */
 function drawCells(renderer, cells, programs, view) {
   drawSideBySide(renderer, cells.length, (i) => {
     const cell = cells[i];
     const material = cell.own ? programs.own.get(cell) : programs.get(cell.defines);
     const uniforms = { ...UNIFORM_DEFAULTS, uBackground: view.background, ...cell.uniforms };
-    for (const [k, v] of Object.entries(withDerived(uniforms))) {
+    for (const [k, v] of Object.entries(uniforms)) {
       if (Array.isArray(v)) material.uniforms[k].value.set(...v);
       else material.uniforms[k].value = v;
     }

@@ -5,8 +5,9 @@
 // are null; the functions are multipleScatteringKullaConty and energyCompensationTurquin, which the hosts (the
 // material lab, the energy widget's furnace) combine with the lobe themselves.
 
-const alpha = { min: 1e-4, max: 1, unit: '', label: 'Roughness α' };
-const f0 = { min: 0, max: 1, unit: '', label: 'Reflectance at normal incidence F0' };
+import { PARAMETERS } from './parameters.js';
+
+const { alpha, f0, E } = PARAMETERS;
 
 /** @type {import('./types.js').TermFamily} */
 export const COMPENSATION_FAMILY = {
@@ -54,7 +55,7 @@ export const COMPENSATION_FAMILY = {
       chunk: 'multiple-scattering.glsl',
       define: 'COMPENSATION_TURQUIN',
       args: ['f0', 'E'],
-      params: { alpha, f0, E: { min: 0, max: 1, unit: '', label: 'Directional albedo E(n·v)' } },
+      params: { alpha, f0, E },
     },
   },
 };

@@ -5,13 +5,16 @@
 // `<PREFIX>_CUSTOM` in the family's generated dispatch (src/core/gpu/term-chunks.js). Not in a family's `terms`:
 // menus offer it only when asked (termOptions(family, keys, { custom: true })), as a widget must bring the code.
 
+import { FIELDS } from './microfacet-input.js';
+
 export const CUSTOM_KEY = 'custom';
 
 /**
  * @param {string} definePrefix
  * @param {string} slot the slot's key in src/core/custom/slots.js
  * @param {string} glsl the user's function
- * @param {string} glslCall its call over the family dispatch's arguments
+ * @param {string | null} glslCall its call over the family dispatch's arguments; null: its function over args, the
+ *   microfacet input's fields (a D or V slot: the user's signature stays, the dispatch passes it m's fields)
  * @param {string[]} args
  * @returns {import('./types.js').TermEntry}
  */
@@ -25,7 +28,7 @@ const custom = (definePrefix, slot, glsl, glslCall, args) => ({
   glsl,
   chunk: `custom-${slot}.glsl`,
   define: `${definePrefix}_CUSTOM`,
-  glslCall,
+  glslCall: glslCall ?? `${glsl}(${args.map((arg) => FIELDS[arg].glsl).join(', ')})`,
   args,
   params: {},
 });
@@ -36,8 +39,8 @@ const custom = (definePrefix, slot, glsl, glslCall, args) => ({
  * @type {Partial<Record<import('./types.js').FamilyName, import('./types.js').TermEntry>>}
  */
 export const CUSTOM_TERMS = {
-  ndf: custom('NDF', 'D', 'customD', 'customD(nh, alpha)', ['nh', 'alpha']),
-  visibility: custom('VIS', 'V', 'customV', 'customV(nl, nv, alpha)', ['nl', 'nv', 'alpha']),
+  ndf: custom('NDF', 'D', 'customD', null, ['nh', 'alpha']),
+  visibility: custom('VIS', 'V', 'customV', null, ['nl', 'nv', 'alpha']),
   fresnel: custom('F', 'F', 'customF', 'customF(f0, lh)', ['f0', 'lh']),
   diffuse: custom('DIFFUSE', 'diffuse', 'customDiffuse', 'customDiffuse(cdiff, l, v, alpha)', [
     'cdiff',

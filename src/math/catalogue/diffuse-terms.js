@@ -8,11 +8,10 @@ import {
   diffuseOrenNayar,
   diffuseOrenNayarQualitative,
 } from '../diffuse.js';
+import { PARAMETERS } from './parameters.js';
 import { terms } from './term.js';
 
-const cdiff = { min: 0, max: 1, unit: '', label: 'Diffuse colour c_diff', clamped: true };
-const f0 = { min: 0, max: 1, unit: '', label: 'Reflectance at normal incidence F0', delicate: [0.04, 0.5] };
-const sigma = { min: 0, max: Math.PI / 2, unit: 'rad', label: 'Roughness σ', delicate: [0.1, 0.3, 0.6, 1] };
+const { cdiff, f0, sigma } = PARAMETERS;
 /** @param {number} nl @param {number} nv */
 const above = (nl, nv) => nl > 0 && nv > 0;
 

@@ -1,14 +1,9 @@
 // @ts-check
 // The Fresnel terms F(l·h) of the microfacet BRDF. Parameters: f0 (Schlick), eta (and k) for the exact forms.
 import { fresnelConductor, fresnelDielectric, fresnelSchlick } from '../fresnel.js';
+import { PARAMETERS } from './parameters.js';
 
-const f0 = {
-  min: 0,
-  max: 1,
-  unit: '',
-  label: 'Reflectance at normal incidence F0',
-  delicate: [0.02, 0.04, 0.17, 0.5, 0.95],
-};
+const { f0 } = PARAMETERS;
 
 /** @type {import('./types.js').TermFamily} */
 export const FRESNEL_FAMILY = {

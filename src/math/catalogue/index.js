@@ -68,14 +68,25 @@ export function termEntry(family, key) {
 export const termLabel = (family, key) => termEntry(family, key).label;
 
 /**
- * { key: label } of a family, in menu order, or of the given keys in their order (for enum and set options);
- * `custom: true` adds the user-written term last, in a family that has one (see CUSTOM_TERMS).
+ * The keys a family's menus offer by default: every term, but in a D or V family those without a function of the
+ * cosines (`evaluate`: the curves and the JS BRDF read it), such as an anisotropic lobe that reads the whole
+ * microfacet input, which no widget has the controls for (it stays in the catalogue: dispatch, parity, stress).
+ * @param {FamilyName} family
+ */
+const menuKeys = (family) =>
+  Object.values(CATALOGUE[family].terms)
+    .filter((term) => term.evaluate || !CATALOGUE[family].microfacetInput)
+    .map((term) => term.key);
+
+/**
+ * { key: label } of a family, in menu order (menuKeys), or of the given keys in their order (for enum and set
+ * options); `custom: true` adds the user-written term last, in a family that has one (see CUSTOM_TERMS).
  * @param {FamilyName} family
  * @param {string[]} [keys]
  * @param {{ custom?: boolean }} [options]
  * @returns {Record<string, string>}
  */
-export function termOptions(family, keys = Object.keys(CATALOGUE[family].terms), { custom = false } = {}) {
+export function termOptions(family, keys = menuKeys(family), { custom = false } = {}) {
   const withCustom = custom && CUSTOM_TERMS[family] ? [...keys, CUSTOM_KEY] : keys;
   return Object.fromEntries(withCustom.map((key) => [key, termLabel(family, key)]));
 }

@@ -1,6 +1,7 @@
 // @ts-check
 // The normal distributions D(n·h) of the microfacet BRDF. evaluate(c, p, s2): s2 = sin²θh when known from the
 // half vector itself (h.x² + h.y², precise near n), else taken from c. The ranges are the ones ndf.js clamps to.
+// args are fields of the microfacet input (microfacet-input.js) or parameters, each read from its uniform.
 import {
   ndfABC,
   ndfBeckmannFromSin2,
@@ -33,7 +34,8 @@ export const NDF_FAMILY = {
   choice: 'D',
   definePrefix: NDF.definePrefix,
   glslDispatch: 'ndfTerm',
-  glslSignature: 'float ndfTerm(float nh, float sin2h, float alpha)',
+  glslSignature: 'float ndfTerm(MicrofacetInput m)',
+  microfacetInput: true,
   defaultKey: 'ggx',
   terms: terms(NDF, {
     ggx: {
@@ -42,9 +44,9 @@ export const NDF_FAMILY = {
       js: ndfGGXFromSin2,
       evaluate: (c, p, s2 = sin2(c)) => ndfGGXFromSin2(c, s2, p.alpha),
       glsl: 'ndfGGXFromSin2',
-      glslCall: 'ndfGGXFromSin2(nh, sin2h, alpha)',
-      args: ['cos', 'sin2', 'alpha'],
+      args: ['nh', 'sin2h', 'alpha'],
       params: { alpha },
+      capabilities: { sampler: 'sampleGGXNormal', dfgTable: true, measuredFit: true },
     },
     beckmann: {
       label: 'Beckmann',
@@ -52,9 +54,9 @@ export const NDF_FAMILY = {
       js: ndfBeckmannFromSin2,
       evaluate: (c, p, s2 = sin2(c)) => ndfBeckmannFromSin2(c, s2, p.alpha),
       glsl: 'ndfBeckmannFromSin2',
-      glslCall: 'ndfBeckmannFromSin2(nh, sin2h, alpha)',
-      args: ['cos', 'sin2', 'alpha'],
+      args: ['nh', 'sin2h', 'alpha'],
       params: { alpha },
+      capabilities: { sampler: 'sampleBeckmannNormal', dfgTable: true, measuredFit: true },
     },
     blinnPhong: {
       label: 'Blinn–Phong',
@@ -62,9 +64,8 @@ export const NDF_FAMILY = {
       js: ndfBlinnPhongFromSin2,
       evaluate: (c, p, s2 = sin2(c)) => ndfBlinnPhongFromSin2(c, s2, p.exponent),
       glsl: 'ndfBlinnPhongFromSin2',
-      glslCall: 'ndfBlinnPhongFromSin2(nh, sin2h, uExponent)',
-      uniforms: { uExponent: 'float' },
-      args: ['cos', 'sin2', 'exponent'],
+      args: ['nh', 'sin2h', 'exponent'],
+      capabilities: { measuredFit: true },
       // 1e30: ndf.glsl's clamp
       params: {
         exponent: {
@@ -74,6 +75,8 @@ export const NDF_FAMILY = {
           label: 'Exponent p',
           // not `clamped`: the GLSL clamps at 1e30, the JS at the largest double, so they part past 1e30
           delicate: [1, 10, 100, 1e3, 1e4, 1e6, 2e6, 2e8, 1e12],
+          uniform: 'uExponent',
+          default: 40,
         },
       },
     },
@@ -83,12 +86,20 @@ export const NDF_FAMILY = {
       js: ndfABC,
       evaluate: (c, p) => ndfABC(c, p.a1, p.a2),
       glsl: 'ndfABC',
-      glslCall: 'ndfABC(nh, uA1, uA2)',
-      uniforms: { uA1: 'float', uA2: 'float' },
-      args: ['cos', 'a1', 'a2'],
+      args: ['nh', 'a1', 'a2'],
+      capabilities: { measuredFit: true },
       params: {
-        a1: { min: 0.01, max: 1e4, unit: '', label: 'ABC sharpness a1', clamped: true },
-        a2: { min: 0.05, max: 20, unit: '', label: 'ABC shape a2', clamped: true, delicate: [0.5, 1, 1.5, 2, 3, 10] },
+        a1: { min: 0.01, max: 1e4, unit: '', label: 'ABC sharpness a1', clamped: true, uniform: 'uA1', default: 20 },
+        a2: {
+          min: 0.05,
+          max: 20,
+          unit: '',
+          label: 'ABC shape a2',
+          clamped: true,
+          delicate: [0.5, 1, 1.5, 2, 3, 10],
+          uniform: 'uA2',
+          default: 2.5,
+        },
       },
     },
     sgd: {
@@ -98,14 +109,24 @@ export const NDF_FAMILY = {
       js: ndfSGD,
       evaluate: (c, p) => ndfSGD(c, p.alpha, p.p, sgdNormaliser(p.alpha, p.p)),
       glsl: 'ndfSGD',
-      glslCall: 'ndfSGD(nh, alpha, uSgdP, uSgdNorm)',
-      uniforms: { uSgdP: 'float', uSgdNorm: 'float' },
-      args: ['cos', 'alpha', 'p'],
-      // the GLSL's last argument, from the parameters (args after cos): computed once per draw, not per pixel
+      args: ['nh', 'alpha', 'p'],
+      // the GLSL's last argument, from the parameters (args after n·h): computed once per draw, not per pixel
       normaliser: sgdNormaliser,
+      normaliserUniform: 'uSgdNorm',
+      capabilities: { measuredFit: true },
       params: {
-        alpha: { min: 0.01, max: 2, unit: '', label: 'SGD width α', clamped: true, delicate: [0.05, 0.2, 0.5, 1] },
-        p: { min: 0, max: 1.9, unit: '', label: 'SGD shape p', clamped: true, delicate: [0.3, 0.64, 1, 1.5] },
+        // the shared α (its uniform, its field of the input) over SGD's own, wider range
+        alpha: { ...alpha, min: 0.01, max: 2, label: 'SGD width α', delicate: [0.05, 0.2, 0.5, 1] },
+        p: {
+          min: 0,
+          max: 1.9,
+          unit: '',
+          label: 'SGD shape p',
+          clamped: true,
+          delicate: [0.3, 0.64, 1, 1.5],
+          uniform: 'uSgdP',
+          default: 0.64,
+        },
       },
     },
   }),

@@ -11,15 +11,10 @@
  *   Partial<Pick<TermEntry, 'short' | 'chunk' | 'define'>>} OwnTerm
  */
 
-/** The microfacet roughness α every D and V term reads: its range, and the delicate values the stress grids sweep. */
-export const ALPHA = {
-  min: 1e-4,
-  max: 1,
-  unit: '',
-  label: 'Roughness α',
-  clamped: true,
-  delicate: [1e-5, 1e-3, 0.01, 0.1, 0.3, 0.5],
-};
+import { PARAMETERS } from './parameters.js';
+
+/** The microfacet roughness α every isotropic D and V term reads (the shared table's, which has delicate values). */
+export const ALPHA = /** @type {import('./types.js').TermParam & { delicate: number[] }} */ (PARAMETERS.alpha);
 
 /**
  * A camelCase key in SCREAMING_SNAKE, as defines spell it: 'blinnPhong' → 'BLINN_PHONG', an acronym one word

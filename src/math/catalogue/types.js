@@ -11,6 +11,11 @@
  * @property {boolean} [clamped] the functions clamp the value to [min, max] (stress inputs go beyond it)
  * @property {number[]} [delicate] the values inside the range where the functions are delicate, swept by the
  *   stress tests (without them, the range's decades or quarters)
+ * @property {'float' | 'vec2' | 'colour'} [kind] 'float' when absent; a vec2 (the roughness pair) or an RGB colour
+ *   has the range on each component
+ * @property {string} [uniform] the GLSL uniform that carries it (a term's dispatch declares it when the term reads
+ *   it; termUniforms fills it from the parameter's value)
+ * @property {number} [default] the value a view draws with when it gives none
  */
 
 /** @typedef {(...args: any[]) => number} TermFunction */
@@ -30,14 +35,26 @@
  * @property {string | null} chunk the shaders/ file that defines it
  * @property {string | null} define the #define that picks it in the family's dispatch, `<PREFIX>_<KEY>`; null
  *   when no dispatch offers it
- * @property {string | null} [glslCall] the dispatch's expression for it, over the dispatch's arguments
- * @property {Record<string, string>} [uniforms] the uniforms that expression reads (name → GLSL type), declared
- *   by the dispatch under the term's define only
- * @property {string[]} args the arguments of js and of the GLSL function, in order: an angle ('cos', 'sin2', 'nl',
- *   'nv', 'nh', 'lh', 'cosPhi') or a key of params
- * @property {(...params: number[]) => number} [normaliser] a factor of the parameters alone (args after cos), which
- *   js takes optionally and the GLSL function as its last argument: computed once per draw, not per pixel
+ * @property {string | null} [glslCall] the dispatch's expression for it, over the dispatch's arguments, when it is
+ *   not its function over its args (which a D or V term's dispatch derives: src/core/gpu/term-chunks.js)
+ * @property {string[]} args the arguments of js and of the GLSL function, in order: for a D or V term each a field
+ *   of the microfacet input (src/math/catalogue/microfacet-input.js: 'nl', 'nv', 'nh', 'lh', 'sin2h', 'hx' … 'vz',
+ *   'alpha', 'alphaX', 'alphaY') or a key of params (read from its uniform); for F and diffuse an angle ('cos',
+ *   'nl', 'nv', 'cosPhi') or a key of params
+ * @property {(...params: number[]) => number} [normaliser] a factor of the parameters alone (args after the
+ *   first), which js takes optionally and the GLSL function as its last argument: computed once per draw
+ * @property {string} [normaliserUniform] the uniform that carries the normaliser to the GPU
+ * @property {TermCapabilities} [capabilities] what the hosts have for it beyond its two functions
  * @property {Record<string, TermParam>} params for an NDF the first is its width (ndf-width.js matches it)
+ */
+
+/**
+ * What the app has for a term beyond its functions, read by the hosts instead of lists of keys.
+ * @typedef {object} TermCapabilities
+ * @property {string} [sampler] its importance sampler, a function of integrate.js and integrate.glsl of the same
+ *   name (u, alpha) → m: the lab's sampled lighting and prefilter draw from it (ndf-sampler.glsl)
+ * @property {boolean} [dfgTable] the lab's split-sum DFG tables are built for it (npm run dfg-tables)
+ * @property {boolean} [measuredFit] the measured-BRDF fit (src/measured/fit.js) fits a model with it
  */
 
 /**
@@ -54,6 +71,7 @@
  * @property {string} definePrefix every define of the family is `<definePrefix>_<KEY IN SCREAMING_SNAKE>`
  * @property {string | null} glslDispatch the GLSL function that dispatches on the defines
  * @property {string | null} [glslSignature] its declaration, when it is generated from the catalogue
+ * @property {boolean} [microfacetInput] its dispatch takes the microfacet input (its terms' args are its fields)
  * @property {string} defaultKey
  * @property {Record<string, TermEntry>} terms in menu order
  */

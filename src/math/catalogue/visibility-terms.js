@@ -1,5 +1,6 @@
 // @ts-check
-// The visibility terms V = G / ((n·l)(n·v)) of the microfacet BRDF. evaluate(a, p): a = { nl, nv, nh, lh }.
+// The visibility terms V = G / ((n·l)(n·v)) of the microfacet BRDF. evaluate(a, p): a = { nl, nv, nh, lh }. args
+// are fields of the microfacet input (microfacet-input.js).
 import {
   visibilityCookTorrance,
   visibilityImplicit,
@@ -18,9 +19,10 @@ import { ALPHA as alpha } from './term.js';
  * @param {{ key: string, label: string, short: string, cite: string, define: string }} names
  * @param {(nl: number, nv: number, alpha: number) => number} js
  * @param {string} glsl
+ * @param {import('./types.js').TermCapabilities} [capabilities]
  * @returns {import('./types.js').TermEntry}
  */
-const smithLike = ({ key, label, short, cite, define }, js, glsl) => ({
+const smithLike = ({ key, label, short, cite, define }, js, glsl, capabilities) => ({
   key,
   label,
   short,
@@ -30,9 +32,9 @@ const smithLike = ({ key, label, short, cite, define }, js, glsl) => ({
   glsl,
   chunk: 'visibility.glsl',
   define,
-  glslCall: `${glsl}(nl, nv, alpha)`,
   args: ['nl', 'nv', 'alpha'],
   params: { alpha },
+  ...(capabilities ? { capabilities } : {}),
 });
 
 /** @type {import('./types.js').TermFamily} */
@@ -42,7 +44,8 @@ export const VISIBILITY_FAMILY = {
   choice: 'V',
   definePrefix: 'VIS',
   glslDispatch: 'visibilityTerm',
-  glslSignature: 'float visibilityTerm(float nl, float nv, float nh, float lh, float alpha)',
+  glslSignature: 'float visibilityTerm(MicrofacetInput m)',
+  microfacetInput: true,
   defaultKey: 'smithGGXCorrelated',
   terms: {
     implicit: {
@@ -55,9 +58,9 @@ export const VISIBILITY_FAMILY = {
       glsl: 'visibilityImplicit',
       chunk: 'visibility.glsl',
       define: 'VIS_IMPLICIT',
-      glslCall: 'visibilityImplicit(nl, nv)',
       args: ['nl', 'nv'],
       params: {},
+      capabilities: { dfgTable: true },
     },
     cookTorrance: {
       key: 'cookTorrance',
@@ -69,9 +72,9 @@ export const VISIBILITY_FAMILY = {
       glsl: 'visibilityCookTorrance',
       chunk: 'visibility.glsl',
       define: 'VIS_COOK_TORRANCE',
-      glslCall: 'visibilityCookTorrance(nl, nv, nh, lh)',
       args: ['nl', 'nv', 'nh', 'lh'],
       params: {},
+      capabilities: { dfgTable: true, measuredFit: true },
     },
     kelemen: {
       key: 'kelemen',
@@ -84,9 +87,10 @@ export const VISIBILITY_FAMILY = {
       glsl: 'visibilityKelemen',
       chunk: 'visibility.glsl',
       define: 'VIS_KELEMEN',
-      glslCall: 'aboveHorizon(nl, nv) ? visibilityKelemen(lh) : 0.0',
+      glslCall: 'aboveHorizon(m.nl, m.nv) ? visibilityKelemen(m.lh) : 0.0',
       args: ['lh'],
       params: {},
+      capabilities: { dfgTable: true },
     },
     smithGGXSeparable: smithLike(
       {
@@ -98,6 +102,7 @@ export const VISIBILITY_FAMILY = {
       },
       visibilitySmithGGXSeparable,
       'visibilitySmithGGXSeparable',
+      { dfgTable: true },
     ),
     smithGGXCorrelated: smithLike(
       {
@@ -109,6 +114,7 @@ export const VISIBILITY_FAMILY = {
       },
       visibilitySmithGGXCorrelated,
       'visibilitySmithGGXCorrelated',
+      { dfgTable: true, measuredFit: true },
     ),
     smithGGXCorrelatedFast: smithLike(
       {
@@ -131,6 +137,7 @@ export const VISIBILITY_FAMILY = {
       },
       visibilitySchlickGGX,
       'visibilitySchlickGGX',
+      { dfgTable: true },
     ),
     smithBeckmannSeparable: smithLike(
       {
@@ -142,6 +149,7 @@ export const VISIBILITY_FAMILY = {
       },
       visibilitySmithBeckmannSeparable,
       'visibilitySmithBeckmannSeparable',
+      { measuredFit: true },
     ),
   },
 };

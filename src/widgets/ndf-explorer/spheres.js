@@ -4,6 +4,7 @@ import { createSphereGrid } from '../../core/ui/sphere-grid.js';
 import { lightDirFromAngles } from '../../math/angles.js';
 import { NDF_TERMS, microfacetBRDFAt, punctualRadiance } from '../../math/brdf.js';
 import { termDefines, termEntry } from '../../math/catalogue/index.js';
+import { sharedUniforms, termUniforms } from '../../math/catalogue/uniforms.js';
 import { DEG } from '../../math/angles.js';
 import { ANGLES } from './model.js';
 
@@ -18,14 +19,8 @@ export function sphereCell(c, state) {
   return {
     label: termEntry('ndf', c.key).short,
     defines: termDefines(terms),
-    uniforms: {
-      ...lightUniforms(state),
-      uAlpha: c.p.alpha ?? 0.3,
-      uExponent: c.p.exponent ?? 1,
-      uA1: c.p.a1 ?? 1,
-      uA2: c.p.a2 ?? 1,
-      uSgdP: c.p.p ?? 0,
-    },
+    // each uniform from its parameter (the catalogue binds them; SGD's normaliser computed there too)
+    uniforms: { ...lightUniforms(state), ...sharedUniforms(c.p), ...termUniforms(terms, c.p) },
     probe: (a) => [
       ['D(n·h)', `${NDF_TERMS[c.key](a.nh, c.p).toPrecision(4)} /sr`],
       ['radiance π·D/4·(n·l)', radiance(a).toPrecision(4)],
@@ -48,7 +43,7 @@ function customCell(c, state) {
     label: 'Yours',
     defines: termDefines(cellTerms(c.key)),
     own: c.cell.own,
-    uniforms: { ...c.cell.uniforms, ...lightUniforms(state), uAlpha: c.p.alpha },
+    uniforms: { ...c.cell.uniforms, ...lightUniforms(state), ...sharedUniforms({ alpha: c.p.alpha }) },
     probe: (a) => [
       ['D(n·h), your code', `${D(a.nh).toPrecision(4)} /sr`],
       ['radiance π·D/4·(n·l)', punctualRadiance(D(a.nh) / 4, a.nl, 1).toPrecision(4)],
