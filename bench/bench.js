@@ -1,6 +1,7 @@
 // npm run bench: for every family of terms, each variant's error against the float64 reference over a
 // documented domain, its CPU cost (tinybench, ns per evaluation) and its GPU cost (a full-screen pass in
-// headless Chromium). Prints a table and writes JSON (bench/results/latest.json, or --out FILE).
+// headless Chromium). Prints a table and writes JSON (bench/results/latest.json, published to the app by
+// publish-report.js; or --out FILE).
 // --quick: a tiny budget, for the test suite.
 // --family KEY: that family alone, errors and costs (CPU and GPU), merged into the existing JSON.
 // --only families: only the term families' errors (Node, seconds), merged into the existing JSON; every cost
@@ -22,6 +23,7 @@ import { measureIbl } from './ibl.js';
 import { measureMeasured, printMeasured } from './measured.js';
 import { measureLatency, printLatency, saveLatency } from './latency.js';
 import { measureCustomTerms, printCustomTerms } from './custom-terms.js';
+import { REPORT, publishReport } from './publish-report.js';
 import { ROOT, launchBrowser, openPage, serveStatic } from '../tests/browser/harness.js';
 
 const args = process.argv.slice(2);
@@ -34,7 +36,7 @@ if (only !== null && !PARTS.includes(only))
 const familyKey = args.includes('--family') ? args[args.indexOf('--family') + 1] : null;
 if (familyKey && !FAMILIES.some((f) => f.key === familyKey))
   throw new Error(`--family ${familyKey}: families are ${FAMILIES.map((f) => f.key).join(', ')}`);
-const out = args.includes('--out') ? resolve(args[args.indexOf('--out') + 1]) : join(ROOT, 'bench/results/latest.json');
+const out = args.includes('--out') ? resolve(args[args.indexOf('--out') + 1]) : REPORT;
 const CPU_SAMPLE = 2048; // inputs per timed call
 const cpuModel = () => cpus()[0]?.model ?? 'unknown';
 
@@ -200,6 +202,7 @@ const report = familyKey
           : await everything();
 mkdirSync(dirname(out), { recursive: true });
 writeFileSync(out, `${JSON.stringify(report, null, 1)}\n`);
+if (out === REPORT) publishReport();
 if (report.latency && !quick && (only === null || only === 'latency')) saveLatency(report.latency);
 
 if (only === 'measured') {

@@ -1,6 +1,6 @@
 // npm run bench:latency [-- --widget NAME …]: for every widget, the time from a state change to the changed frame, over
 // a scripted drag (a slider swept in small steps, one change after the previous frame is done, a pointer held on the
-// widget meanwhile as on a slider: src/core/ui/held-input.js): median and worst. "Done" is: the render loop's next
+// widget meanwhile as on a slider: framework/held-input.js): median and worst. "Done" is: the render loop's next
 // animation frame has run (it draws what changed), every canvas of the widget has finished its GPU work (a one-pixel
 // read-back), and the browser reached the following frame. A widget that keeps drawing a second after the drag (a Monte
 // Carlo reference converging) is progressive and is reported apart: its number is the time to its first changed frame.

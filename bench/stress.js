@@ -1,6 +1,6 @@
 // npm run stress: every JS function of src/math and every GLSL function of shaders/ over extreme inputs.
 // Prints a table; exits non-zero if any result is NaN, Inf or outside its documented range.
-import { sweepJs } from './stress-sweep.js';
+import { sweepJs } from '../tests/support/stress-sweep.js';
 import { buildApp, launchBrowser, openPage, serveStatic } from '../tests/browser/harness.js';
 
 const { rows, unclassified } = sweepJs();
@@ -13,7 +13,7 @@ for (const r of rows)
   );
 const jsBad = rows.reduce((s, r) => s + r.nan + r.inf + r.outside, 0);
 if (unclassified.length)
-  console.log(`\nUnclassified exports (add them to bench/stress-domains.js): ${unclassified.join(', ')}`);
+  console.log(`\nUnclassified exports (add them to tests/support/stress-domains.js): ${unclassified.join(', ')}`);
 
 // GLSL: the parity grids are stress grids; count what the GPU returned outside the range
 const server = await serveStatic(await buildApp());

@@ -1,4 +1,4 @@
-// How a shader exercise grades each slot of user code (CUSTOM-API.md's SLOTS): the axes of its input grid, the
+// How a shader exercise grades each slot of user code (SLOTS, core/custom/slots.js): the axes of its input grid, the
 // slot's arguments for one grid point (rounded to float32, as the GPU receives them), and the catalogue term's
 // float64 value at exactly those rounded inputs. Pure: loads in Node.
 import { CATALOGUE, termEntry } from '../math/catalogue/index.js';

@@ -1,6 +1,6 @@
 // Checks an exercise file (parsed JSON) against the format in docs/exercises.md. Never throws: returns
 // { exercise, errors }, each error naming the field and what is wrong, so a lecturer can fix the file.
-import { CHAPTERS } from '../pages/chapters.js';
+import { CHAPTERS } from '../widgets/chapters.js';
 import { coerceState, defaultState, optionKey, showValue } from '../core/framework/state.js';
 import { GRADERS, isGraderName } from './graders.js';
 import { SHADER_FIELDS, shaderProblems } from './validate-shader.js';

@@ -4,7 +4,7 @@
 // the lab renderer, each environment's maps and each DFG table, made when first asked for and kept for switching
 // back.
 import * as THREE from 'three';
-import { createViewport } from '../core/gpu/viewport.js';
+import { createViewport } from '../core/framework/viewport.js';
 import { createFullscreenPass } from '../core/gpu/fullscreen-pass.js';
 import { createDfgTexture, createEnvironmentMaps } from './environment-maps.js';
 import { fullscreenMaterial } from './fullscreen-material.js';

@@ -3,7 +3,7 @@
 import '../styles.css';
 import { mountOrExplain } from '../core/framework/widget-failure.js';
 import { WIDGETS } from '../widgets/registry.js';
-import { typesetFormulas } from '../core/ui/formulas.js';
+import { typesetFormulas } from '../core/framework/formulas.js';
 
 typesetFormulas();
 

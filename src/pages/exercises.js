@@ -16,7 +16,7 @@ import { createPreview } from '../exercises/previews.js';
 import { hashId } from '../core/framework/url-hash.js';
 import { onFileDrop } from '../core/ui/file-drop.js';
 import { setInlineTex } from '../core/ui/inline-tex.js';
-import { typesetFormulas } from '../core/ui/formulas.js';
+import { typesetFormulas } from '../core/framework/formulas.js';
 import { publish, unregisterWidget } from '../core/framework/debug-hooks.js';
 import { createGradedLink } from '../exercises/graded-message.js';
 import { startPackageMode } from '../exercises/scorm/package-mode.js';

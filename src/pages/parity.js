@@ -4,7 +4,7 @@ import * as THREE from 'three';
 import { PARITY_CASES, TOLERANCE } from '../core/gpu/parity-cases.js';
 import { runParity } from '../core/gpu/parity.js';
 import { parityReport, rendererInfo } from '../core/gpu/parity-report.js';
-import { download } from '../core/ui/export.js';
+import { download } from '../core/framework/download.js';
 import { showBlockingMessage } from '../core/framework/notice.js';
 import { publish } from '../core/framework/debug-hooks.js';
 

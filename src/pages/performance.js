@@ -1,7 +1,8 @@
-// performance.html: cost against accuracy for every family of terms, from bench/results/latest.json
-// (written by `npm run bench`): a Pareto chart per family and the full table.
+// performance.html: cost against accuracy for every family of terms, from the bench's report (written by `npm run
+// bench` to bench/results/latest.json and published here by bench/publish-report.js): a Pareto chart per family and
+// the full table.
 import '../styles.css';
-import report from '../../bench/results/latest.json';
+import report from './data/bench-report.json';
 import { iblStaleNote } from './ibl-note.js';
 import { createPlot } from '../core/ui/plot.js';
 import { SERIES_COLORS } from '../core/ui/palettes.js';

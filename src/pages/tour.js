@@ -11,7 +11,7 @@ import { WIDGETS, isWidgetName } from '../widgets/registry.js';
 import { tourPlan } from '../tour/steps.js';
 import { hashId } from '../core/framework/url-hash.js';
 import { setInlineTex } from '../core/ui/inline-tex.js';
-import { typesetFormulas } from '../core/ui/formulas.js';
+import { typesetFormulas } from '../core/framework/formulas.js';
 
 const { steps, sections } = tourPlan(isWidgetName);
 const root = document.getElementById('tour');

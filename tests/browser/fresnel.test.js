@@ -13,7 +13,7 @@ import {
   withPixels,
 } from './helpers.js';
 import { sphereZoneFractions } from '../../src/math/zones.js';
-import { weightedSphereShares } from '../unit/zone-shares.js';
+import { weightedSphereShares } from '../support/zone-shares.js';
 
 let browser;
 beforeAll(async () => {

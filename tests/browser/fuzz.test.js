@@ -1,8 +1,9 @@
 // Seeded, bounded fuzz of every entry point a crafted link or a hostile page reaches: every registered widget by
 // URL and by postMessage `set` from an allowed parent on another origin, the material lab's environment drop,
-// and exercise sets (?src= and dropped files). The rules checked are in tests/hostile-values.js; the same rules over
-// many more values, on the functions the embed calls, are tests/unit/fuzz-messages.test.js (Node): here a few of
-// each kind go through the page, for what only the page shows (notices, replies, nothing injected, the picture).
+// and exercise sets (?src= and dropped files). The rules checked are in tests/support/hostile-values.js; the same
+// rules over many more values, on the functions the embed calls, are tests/unit/fuzz-messages.test.js (Node): here
+// a few of each kind go through the page, for what only the page shows (notices, replies, nothing injected, the
+// picture).
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { WIDGETS } from '../../src/widgets/registry.js';
 import { defaultState } from '../../src/core/framework/state.js';
@@ -17,7 +18,7 @@ import {
   reviveNumbers,
   seededRandom,
   stateProblems,
-} from '../hostile-values.js';
+} from '../support/hostile-values.js';
 import { baseUrl, launchBrowser, open, openForeignParent, otherOrigin, settle, untilSteady } from './helpers.js';
 import { SMALL_VIEWPORT } from './harness.js';
 

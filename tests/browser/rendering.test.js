@@ -12,7 +12,7 @@ import { fresnelSchlick } from '../../src/math/fresnel.js';
 import { dfgSplitSum } from '../../src/math/integrate.js';
 import { ndfBeckmann, ndfGGX } from '../../src/math/ndf.js';
 import { dfgTableData } from '../../src/lab/dfg-table.js';
-import { sampleDfgTable } from '../unit/dfg-lookup.js';
+import { sampleDfgTable } from '../support/dfg-lookup.js';
 
 const EXTENT = 1.1; // the lab's view half width (src/lab/lab-renderer.js)
 const RES = 192; // the lab's image size (src/widgets/material-lab/material-lab.js)

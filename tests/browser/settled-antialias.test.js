@@ -1,4 +1,4 @@
-// Multisampling once a gesture ends (src/core/gpu/settled-antialias.js, src/core/ui/held-input.js), in fresnel-zones
+// Multisampling once a gesture ends (src/core/framework: settled-antialias.js, held-input.js), in fresnel-zones
 // (its own shader) and the 3-D lobe of brdf-lobe (three.js's built-in materials, colour-managed by three.js): the
 // tests drive input as a reader does (a pointer pressed, moved, released; a key held) and WebGL itself tells how each
 // draw call was sampled (the SAMPLES of the framebuffer it draws into); each frame is read back in the task that

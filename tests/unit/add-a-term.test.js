@@ -37,7 +37,7 @@ beforeAll(async () => {
     parity: await import('../../src/core/gpu/parity-cases.js'),
     graders: await import('../../src/exercises/graders.js'),
     families: (await import('../../bench/families.js')).FAMILIES,
-    stress: (await import('../../bench/stress-domains.js')).STRESS_DOMAINS,
+    stress: (await import('../support/stress-domains.js')).STRESS_DOMAINS,
     widths: await import('../../src/math/ndf-width.js'),
   };
 });

@@ -85,7 +85,7 @@ beforeAll(async () => {
     chunks: (await import('../../src/core/gpu/shader-chunks.js')).SHADER_CHUNKS,
     parity: await import('../../src/core/gpu/parity-cases.js'),
     harness: await import('../../src/core/gpu/parity.js'),
-    stress: (await import('../../bench/stress-domains.js')).STRESS_DOMAINS,
+    stress: (await import('../support/stress-domains.js')).STRESS_DOMAINS,
     families: (await import('../../bench/families.js')).FAMILIES,
     graders: await import('../../src/exercises/graders.js'),
   };
@@ -211,8 +211,8 @@ describe('adding an anisotropic term: one catalogue entry and its two functions,
         new Set([0, 1e-5, 1e-4, 1e-3, 0.01, 0.1, 0.3, 0.5, 1, 2]),
       );
     }
-    // the stress sweep (bench/stress-sweep.js, tests/unit/stress.test.js) runs every domain; every tuple of these
-    // is finite and non-negative
+    // the stress sweep (tests/support/stress-sweep.js, tests/unit/stress.test.js) runs every domain; every tuple of
+    // these is finite and non-negative
     for (const [name, fn, count] of [
       ['ndfGGXAnisoTest', ndfGGXAnisoTest, 8 * 100],
       ['visibilityGGXAnisoTest', visibilityGGXAnisoTest, 8 * 8 * 100],

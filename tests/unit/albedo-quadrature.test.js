@@ -4,7 +4,7 @@
 import { describe, expect, it } from 'vitest';
 import { microfacetBRDF, VISIBILITY_TERMS } from '../../src/math/brdf.js';
 import { albedoGGX, dfgSplitSum, directionFromCos } from '../../src/math/integrate.js';
-import { albedoOverLight } from './integration-helpers.js';
+import { albedoOverLight } from '../support/integration-helpers.js';
 import { DEG } from '../../src/math/angles.js';
 
 /** [scale, bias] by the light-direction quadrature: scale + bias with F = 1, bias with Schlick F0 = 0. */

@@ -7,7 +7,7 @@ import {
 } from '../../src/math/albedo-table.js';
 import { compensatedAlbedoGGX } from '../../src/math/multiple-scattering.js';
 import { averageAlbedo } from '../../src/math/integrate.js';
-import { albedoGGXQuadrature } from './integration-helpers.js';
+import { albedoGGXQuadrature } from '../support/integration-helpers.js';
 
 const exact = (mu, alpha) => albedoGGXQuadrature(mu, alpha, 8); // within 2e-7 of the converged value
 const table = buildAlbedoTableGGX(ALBEDO_TABLE_SIZE, (mu, alpha) => [exact(mu, alpha), 0]);

@@ -5,7 +5,7 @@ import { DFG_TABLE_SIZE, dfgSplitSum, dfgTableUv } from '../../src/math/integrat
 import { dfgTableData, dfgTexel } from '../../src/lab/dfg-table.js';
 import { DFG_TABLES } from '../../src/lab/dfg-tables.data.js';
 import { LAB_TERMS } from '../../src/lab/lab-approximations.js';
-import { sampleDfgTable } from './dfg-lookup.js';
+import { sampleDfgTable } from '../support/dfg-lookup.js';
 
 // probes between and on texel centres, denser toward grazing view and low roughness
 const MUS = [1e-3, 0.002, 0.004, 0.007, 0.012, 0.02, 0.03, 0.04, 0.065, 0.1, 0.3, 0.75, 1];

@@ -6,7 +6,7 @@ import {
   diffuseOrenNayar,
   diffuseOrenNayarQualitative,
 } from '../../src/math/diffuse.js';
-import { projectedNdfIntegral } from './integration-helpers.js';
+import { projectedNdfIntegral } from '../support/integration-helpers.js';
 
 // albedo of a diffuse term at view cosine nv: ∫ f (n·l) dω over l, for terms that depend on n·l (and n·v)
 // only, = 2 pi ∫_0^1 f(c) c dc (the Oren-Nayar azimuth is averaged separately below)

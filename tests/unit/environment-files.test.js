@@ -36,7 +36,7 @@ async function goodExr() {
 
 /** parseEnvironmentFile over `cases` in a worker; rejects if it takes longer than `ms` (a loader in a loop). */
 function parseAll(cases, ms = 20_000) {
-  const worker = new Worker(new URL('./env-file-worker.js', import.meta.url), { workerData: cases });
+  const worker = new Worker(new URL('../support/env-file-worker.js', import.meta.url), { workerData: cases });
   return new Promise((resolve, reject) => {
     const timer = setTimeout(
       () => (worker.terminate(), reject(new Error(`still parsing after ${ms} ms: a loader hangs`))),

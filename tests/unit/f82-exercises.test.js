@@ -4,7 +4,7 @@ import { describe, expect, it } from 'vitest';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { GRADERS } from '../../src/exercises/graders.js';
-import { f82SchlickGap } from '../../src/exercises/f82-grader.js';
+import { f82SchlickGap } from '../../src/exercises/graders/f82-schlick-gap.js';
 import { fresnelConductor } from '../../src/math/fresnel.js';
 import { measuredRgbNk } from '../../src/math/optical-constants.js';
 

@@ -2,7 +2,7 @@
 // a link's query through coerceState, a parent's `set` through what the embed replies (the widget's coerceState
 // notices, then unknownKeys) and the state coerceState keeps. The browser fuzz sends fewer of them and checks what
 // only a page shows: notices, replies over postMessage from another origin, nothing injected, the picture kept.
-// Rules: tests/hostile-values.js.
+// Rules: tests/support/hostile-values.js.
 import { describe, expect, it } from 'vitest';
 import { unknownKeys } from '../../src/core/framework/embed-protocol.js';
 import { coerceState, defaultState, paramsToObject } from '../../src/core/framework/state.js';
@@ -14,7 +14,7 @@ import {
   refusedPartial,
   seededRandom,
   stateProblems,
-} from '../hostile-values.js';
+} from '../support/hostile-values.js';
 
 const SEED = 17;
 const SETS_PER_WIDGET = 200;

@@ -15,7 +15,7 @@ import { GRADERS } from '../../src/exercises/graders.js';
 import { isOption } from '../../src/core/framework/state.js';
 import { hashId } from '../../src/core/framework/url-hash.js';
 import { WIDGETS } from '../../src/widgets/registry.js';
-import { PROTOTYPE_NAMES, prototypeNames } from '../hostile-values.js';
+import { PROTOTYPE_NAMES, prototypeNames } from '../support/hostile-values.js';
 
 const DIR = join(import.meta.dirname, '../../public/exercises');
 const schemaOf = async (name) => (Object.hasOwn(WIDGETS, name) ? (await WIDGETS[name].load()).widget.schema : null);

@@ -1,6 +1,7 @@
 // Hostile values through the one coercion function (src/core/framework/state.js) and the embed protocol's checks:
 // one test per class of crash seen (an enum or list value naming an inherited property, numbers that are not plain
-// decimals), then a seeded fuzz of every registered widget's schema against the rules in tests/hostile-values.js.
+// decimals), then a seeded fuzz of every registered widget's schema against the rules in
+// tests/support/hostile-values.js.
 import { describe, expect, it } from 'vitest';
 import { coerceState, defaultState } from '../../src/core/framework/state.js';
 import { parseMessage, unknownKeys } from '../../src/core/framework/embed-protocol.js';
@@ -14,7 +15,7 @@ import {
   prototypeNames,
   seededRandom,
   stateProblems,
-} from '../hostile-values.js';
+} from '../support/hostile-values.js';
 
 const schemas = Object.fromEntries(
   await Promise.all(Object.entries(WIDGETS).map(async ([name, w]) => [name, (await w.load()).widget.schema])),

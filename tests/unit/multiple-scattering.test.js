@@ -10,7 +10,7 @@ import {
   multipleScatteringFromLoss,
   multipleScatteringKullaConty,
 } from '../../src/math/multiple-scattering.js';
-import { albedoGGXQuadrature, integrateGL } from './integration-helpers.js';
+import { albedoGGXQuadrature, integrateGL } from '../support/integration-helpers.js';
 
 const ALPHAS = [0.05, 0.2, 0.5, 0.8, 1];
 const MUS = [0.05, 0.2, 0.5, 0.8, 1];

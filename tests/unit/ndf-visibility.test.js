@@ -14,7 +14,7 @@ import { integrate } from '../../src/math/quadrature.js';
 import { matchNdfWidths, ndfHalfWidthDeg } from '../../src/math/ndf-width.js';
 import * as V from '../../src/math/visibility.js';
 import { erf, erfc } from '../../src/math/special.js';
-import { projectedNdfIntegral as projectedIntegral } from './integration-helpers.js';
+import { projectedNdfIntegral as projectedIntegral } from '../support/integration-helpers.js';
 
 const { visibilitySmithGGXCorrelated } = V;
 const cosGrid = [1e-7, 1e-4, 0.01, 0.05, 0.1, 0.2, 0.3, 0.5, 0.7, 0.9, 0.99, 1];

@@ -8,12 +8,12 @@ import { transmittance } from '../../src/math/media.js';
 import { microfacetBRDF } from '../../src/math/brdf.js';
 import { MEDIA } from '../../src/widgets/media/schema.js';
 import { schema as LOBE } from '../../src/widgets/brdf-lobe/brdf-lobe.js';
-import { weightedSphereShares } from './zone-shares.js';
+import { weightedSphereShares } from '../support/zone-shares.js';
 import { DEG } from '../../src/math/angles.js';
 import { ndfABC } from '../../src/math/ndf.js';
 import { LIGHTS, SURFACES, blackBody, colours, coloursOf } from '../../src/widgets/radiance/model.js';
 import { schema as RADIANCE } from '../../src/widgets/radiance/schema.js';
-import { quoted, reads, stepText } from './quoted-text.js';
+import { quoted, reads, stepText } from '../support/quoted-text.js';
 
 /** A page's words as a reader sees them: tags dropped (a typeset formula reads as its plain fallback). */
 const text = (file) =>

@@ -9,7 +9,7 @@ import { microfacetBRDF } from '../../src/math/brdf.js';
 import { ndfGGX } from '../../src/math/ndf.js';
 import { seededRandom } from '../../src/math/microsurface.js';
 import { METALS } from '../../src/math/materials.js';
-import { albedoGGXQuadrature } from './integration-helpers.js';
+import { albedoGGXQuadrature } from '../support/integration-helpers.js';
 
 const GRID = [
   [1, 1],

@@ -1,6 +1,6 @@
-// createSettledTask (core/gpu/render-loop.js): figures computed once a drag pauses, against a scripted clock.
+// createSettledTask (core/framework/render-loop.js): figures computed once a drag pauses, against a scripted clock.
 import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
-import { createSettledTask } from '../../src/core/gpu/render-loop.js';
+import { createSettledTask } from '../../src/core/framework/render-loop.js';
 
 beforeEach(() => vi.useFakeTimers({ toFake: ['setTimeout', 'clearTimeout', 'performance'] }));
 afterEach(() => vi.useRealTimers());

@@ -1,7 +1,7 @@
 // The test-suite version of `npm run stress` (JS half; the GLSL half is the parity test's invalid count):
 // every export of src/math is classified, and none returns NaN, Inf or a value outside its range.
 import { describe, expect, it } from 'vitest';
-import { sweepJs } from '../../bench/stress-sweep.js';
+import { sweepJs } from '../support/stress-sweep.js';
 
 describe('numerical stress (JS)', () => {
   const { rows, unclassified } = sweepJs({ limit: 400 });

@@ -4,7 +4,7 @@
 // height-correlated Smith, Schlick), the white furnace with Kulla–Conty's compensation and the random walk on the
 // Smith microsurface, and Oren–Nayar (1994) against Lambert on a sphere lit from the viewer.
 import { describe, expect, it } from 'vitest';
-import { quoted, reads, stepText as step } from './quoted-text.js';
+import { quoted, reads, stepText as step } from '../support/quoted-text.js';
 import { transmittance } from '../../src/math/media.js';
 import { MEDIA } from '../../src/widgets/media/schema.js';
 import { fresnelDielectric } from '../../src/math/fresnel.js';

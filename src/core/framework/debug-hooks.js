@@ -29,7 +29,7 @@
  * @property {ExerciseHook} [exercise]
  * @property {object[]} [parity]  the parity page's rows (src/core/gpu/parity.js results)
  * @property {object} [parityReport]  the parity page's GPU (vendor, renderer) and its report's text
- * @property {object} [performance]  the performance page's report (bench/results)
+ * @property {object} [performance]  the performance page's report (published from bench/results)
  * @property {{ ready: boolean, announced: boolean }} [offline]  the build is saved on the device; whether this
  *   page said so (only the first time on a device)
  */

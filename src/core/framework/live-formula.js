@@ -4,7 +4,7 @@
 // only when the TeX changes, so a drag costs one string per step. Each \sym{key}{…} symbol is tied to the
 // control of state key `key`: hovering or focusing either lights both up; Enter on a symbol focuses its control.
 import { FORMULA_MACROS } from './formula-registry.js';
-import { loadKatex, typeset } from '../ui/formulas.js';
+import { loadKatex, typeset } from './formulas.js';
 
 const LIT = 'is-lit';
 const SYMBOL_URL = '#sym:';
@@ -53,7 +53,7 @@ export function createLiveFormula(anchor, texOf) {
   /** @type {import('./types.js').State | null} */
   let latest = null;
   let frame = 0;
-  /** @type {import('../ui/formulas.js').Katex | null} */
+  /** @type {import('./formulas.js').Katex | null} */
   let katex = null;
   let disposed = false;
 

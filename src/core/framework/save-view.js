@@ -3,7 +3,7 @@
 // positioning, styles.css `.save-view`), reached by Tab right after the canvas, named for what the view shows.
 // A WebGL view keeps no frame after it is shown, so the still is taken by snapshot.js, which redraws it first.
 import { stillOf } from './snapshot.js';
-import { download } from '../ui/export.js';
+import { download } from './download.js';
 
 const MAX_NAME = 60; // characters of the view's description that name its button and its file
 const buttons = new WeakMap(); // canvas → its save button

@@ -3,7 +3,7 @@
 // their description redrawn on every change. The table (figures only) follows once a drag pauses: its numbers
 // may cost more than a frame (ndf-explorer's integrals), and the spheres' frame should not wait for them.
 import { createWidgetShell } from '../framework/widget-shell.js';
-import { createSettledTask } from '../gpu/render-loop.js';
+import { createSettledTask } from '../framework/render-loop.js';
 
 /**
  * @param {HTMLElement} container

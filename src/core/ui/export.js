@@ -1,15 +1,5 @@
 // Save what a view shows: an image as PNG, its data as CSV.
-
-export function download(filename, blob) {
-  const url = URL.createObjectURL(blob);
-  const a = document.createElement('a');
-  a.href = url;
-  a.download = filename;
-  document.body.append(a);
-  a.click();
-  a.remove();
-  setTimeout(() => URL.revokeObjectURL(url), 1000);
-}
+import { download } from '../framework/download.js';
 
 export function canvasToPng(canvas, filename) {
   canvas.toBlob((blob) => blob && download(filename, blob), 'image/png');

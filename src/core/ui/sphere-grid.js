@@ -5,7 +5,7 @@
 // program is kept while a cell draws it. Hovering a sphere probes it: the angles there, and the rows the cell's
 // probe(angles, n) returns ([[label, text], ...]; n in view space).
 import * as THREE from 'three';
-import { createViewport } from '../gpu/viewport.js';
+import { createViewport } from '../framework/viewport.js';
 import { buildShader, fragmentSource } from '../gpu/shader-builder.js';
 import { SHADER_CHUNKS } from '../gpu/shader-chunks.js';
 import { createProgramCache, definesKey, programKey } from '../gpu/program-cache.js';

@@ -3,7 +3,7 @@
 // orbit. n, l, v, h and the mirror direction are drawn as arrows.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { createViewport } from '../../core/gpu/viewport.js';
+import { createViewport } from '../../core/framework/viewport.js';
 import { describeCanvas } from '../../core/framework/describe.js';
 
 const THETA_STEPS = 45;

@@ -3,8 +3,8 @@
 // of covered pixels (or of reflected light) in each zone summed on the GPU: after the frame, once a drag pauses
 // (a GPU read-back that the picture need not wait for; the shares of the last state are exact).
 import { createWidgetShell } from '../../core/framework/widget-shell.js';
-import { createViewport } from '../../core/gpu/viewport.js';
-import { createSettledTask } from '../../core/gpu/render-loop.js';
+import { createViewport } from '../../core/framework/viewport.js';
+import { createSettledTask } from '../../core/framework/render-loop.js';
 import { schema, TERMS_USED } from './schema.js';
 import { ABOUT, TITLE, describeView } from './words.js';
 import { createZonesScene } from './scene-view.js';

@@ -2,7 +2,7 @@
 // the same way, each a 3-D texture (90 θh × 90 θd × 180 φd texels, RGBA half floats) read by measured.glsl, on a
 // ray-traced impostor (sphere-impostor.js).
 import * as THREE from 'three';
-import { createViewport } from '../../core/gpu/viewport.js';
+import { createViewport } from '../../core/framework/viewport.js';
 import { drawSideBySide } from '../../core/ui/side-by-side.js';
 import { buildShader } from '../../core/gpu/shader-builder.js';
 import { createImpostorView } from '../../core/ui/sphere-impostor.js';

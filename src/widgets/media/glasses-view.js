@@ -1,7 +1,7 @@
 // media's picture: glasses of a medium in front of a chequered wall, path traced on the GPU (media-tracer.frag)
 // one sample per pixel a frame into a running sum that the display pass shows, until the samples asked for.
 import * as THREE from 'three';
-import { createViewport } from '../../core/gpu/viewport.js';
+import { createViewport } from '../../core/framework/viewport.js';
 import { createFullscreenPass } from '../../core/gpu/fullscreen-pass.js';
 import { createProgramCache } from '../../core/gpu/program-cache.js';
 import { floatTarget } from '../../core/gpu/gpu-sum.js';

@@ -3,7 +3,7 @@
 // and the measured share of shadowed microfacets against Smith's G1. The ray-traced figures (the table, the
 // description, the G1 sweep) follow once a drag pauses: the cut is drawn first.
 import { createWidgetShell } from '../../core/framework/widget-shell.js';
-import { createSettledTask } from '../../core/gpu/render-loop.js';
+import { createSettledTask } from '../../core/framework/render-loop.js';
 import { createPlot } from '../../core/ui/plot.js';
 import { DEG } from '../../math/angles.js';
 import { measuredG1 } from '../../math/microsurface.js';

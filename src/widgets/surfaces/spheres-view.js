@@ -2,7 +2,7 @@
 // RoomEnvironment, prefiltered once per context), each its own draw in a quarter of the canvas.
 import * as THREE from 'three';
 import { RoomEnvironment } from 'three/addons/environments/RoomEnvironment.js';
-import { createViewport } from '../../core/gpu/viewport.js';
+import { createViewport } from '../../core/framework/viewport.js';
 import { drawSideBySide } from '../../core/ui/side-by-side.js';
 
 const SPHERE_ROUGHNESS = [0.05, 0.2, 0.4, 0.7];

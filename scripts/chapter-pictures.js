@@ -2,8 +2,8 @@
 // from the chapter's main widget in a telling state, cropped to 16:9 and encoded by Chromium as WebP.
 import { mkdirSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { ROOT, buildApp, launchBrowser, openPage, serveStatic, settle } from './harness.js';
-import { CHAPTER_PICTURE_SIZE as SIZE } from '../../src/pages/chapter-pictures.js';
+import { ROOT, buildApp, launchBrowser, openPage, serveStatic, settle } from '../tests/browser/harness.js';
+import { CHAPTER_PICTURE_SIZE as SIZE } from '../src/pages/chapter-pictures.js';
 
 const QUALITY = 0.78;
 // chapter key → the page shot, the element pictured (default: the first canvas of the widget's view), how it fits
@@ -24,12 +24,7 @@ const SHOTS = {
     'contain',
     420,
   ],
-  diffuse: [
-    'embed.html?w=diffuse-explorer&models=lambert,orenNayar&sigma=60',
-    '.sphere-grid canvas',
-    'contain',
-    420,
-  ],
+  diffuse: ['embed.html?w=diffuse-explorer&models=lambert,orenNayar&sigma=60', '.sphere-grid canvas', 'contain', 420],
   rendering: ['embed.html?w=material-lab&material=gold&alpha=0.25', '.widget-view canvas', 'contain'],
   performance: ['performance.html', '.uplot .u-wrap', 'contain', 560],
 };

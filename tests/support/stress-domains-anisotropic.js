@@ -1,7 +1,7 @@
 // The stress domains of the anisotropic functions (src/math/anisotropic.js), spread into STRESS_DOMAINS
 // (stress-domains.js): unit directions with the degenerate ones (along t and b, grazing, below the horizon) and
 // roughness pairs past both clamps, the pairs outermost so that the test suite's first 400 inputs see several.
-import { ANISOTROPY_CONVENTIONS } from '../src/math/anisotropic.js';
+import { ANISOTROPY_CONVENTIONS } from '../../src/math/anisotropic.js';
 
 const spherical = (theta, phi) => [Math.sin(theta) * Math.cos(phi), Math.sin(theta) * Math.sin(phi), Math.cos(theta)];
 const DIRS = [

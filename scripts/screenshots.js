@@ -1,7 +1,7 @@
 // npm run screenshots: builds the app and writes a screenshot of every page to docs/screenshots/.
 import { mkdirSync } from 'node:fs';
 import { join } from 'node:path';
-import { ROOT, buildApp, launchBrowser, openPage, serveStatic, settle } from './harness.js';
+import { ROOT, buildApp, launchBrowser, openPage, serveStatic, settle } from '../tests/browser/harness.js';
 
 const SHOTS = [
   ['landing', 'index.html', { fullPage: true }],

@@ -10,7 +10,7 @@
 // stands for the display): its own colours (a scene's background, its built-in materials) are encoded and tone
 // mapped there as on the canvas, not left in the working colour space as in a render target read as a texture.
 import * as THREE from 'three';
-import { watchHeldInput } from '../ui/held-input.js';
+import { watchHeldInput } from './held-input.js';
 
 const SAMPLES = 4; // what a WebGL context's own multisampling gives (Chromium, SwiftShader included)
 

@@ -1,6 +1,6 @@
 // The JS half of `npm run stress`: every exported function of src/math over the inputs of
 // stress-domains.js, counting NaN, Inf and values outside the documented range.
-import * as M from '../src/math/index.js';
+import * as M from '../../src/math/index.js';
 import { STRESS_DOMAINS } from './stress-domains.js';
 
 const cartesian = (lists) => lists.reduce((acc, list) => acc.flatMap((a) => list.map((x) => [...a, x])), [[]]);

@@ -11,11 +11,11 @@
 // accumulation buffer) is gone with the context; drop it so that draw() builds it again.
 import * as THREE from 'three';
 import { createRenderLoop } from './render-loop.js';
-import { createBudgetedContext } from './gl-context.js';
+import { createBudgetedContext } from '../gpu/gl-context.js';
 import { createSettledAntialias } from './settled-antialias.js';
-import { showBlockingMessage } from '../framework/notice.js';
-import { registerRedraw } from '../framework/snapshot.js';
-import { describeCanvas } from '../framework/describe.js';
+import { showBlockingMessage } from './notice.js';
+import { registerRedraw } from './snapshot.js';
+import { describeCanvas } from './describe.js';
 
 /** In place of the view: why there is none. Returns null, the viewport that could not be made. */
 function noWebGl2(holder, canvas) {

@@ -6,7 +6,7 @@
 // createSettledTask: work a change needs but no frame waits for (figures shown as words and numbers), done once
 // the changes pause, so that a drag's frames come first and the last state's figures are still exact.
 
-import { countFrame } from '../framework/debug-hooks.js';
+import { countFrame } from './debug-hooks.js';
 
 export function createRenderLoop(element, draw, ready = () => true) {
   let dirty = false;

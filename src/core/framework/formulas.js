@@ -3,7 +3,7 @@
 // KaTeX, which the browser draws and screen readers read; its text content is the plain fallback shown until then
 // (and to a browser without MathML). KaTeX is loaded only on a page that has a formula. No CSS or fonts needed.
 
-import { TALK_MACROS } from '../framework/formula-registry.js';
+import { TALK_MACROS } from './formula-registry.js';
 
 /** @typedef {typeof import('katex').default} Katex */
 

@@ -1,7 +1,7 @@
 // What `npm run stress` feeds every exported function of src/math, and the range each result must lie in.
 // Every export is listed: a new function without an entry fails the stress test until it is classified.
-import { CATALOGUE } from '../src/math/catalogue/index.js';
-import { argGroups, argParam, paramStress, termInputs } from '../src/math/catalogue/grids.js';
+import { CATALOGUE } from '../../src/math/catalogue/index.js';
+import { argGroups, argParam, paramStress, termInputs } from '../../src/math/catalogue/grids.js';
 import { ANISOTROPIC_STRESS_DOMAINS } from './stress-domains-anisotropic.js';
 
 const COS = [-1, -0.5, 0, 1e-7, 1e-4, 0.5, 1 - 1e-7, 1, 1 + 1e-7, 1.5];
