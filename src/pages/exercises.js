@@ -40,6 +40,8 @@ const scorm = pageParams.get('scorm') === '1' ? startPackageMode({ place: proble
 // the author page's preview (?preview=1) is answered as a student would, without touching the lecturer's progress
 const preview = pageParams.get('preview') === '1';
 let progress = createProgress(preview ? memoryStorage() : undefined); // in package mode replaced by useSet
+// the preview shows the exercise, not the page's introduction or the student's own sections
+if (preview) for (const part of document.querySelectorAll('.exercise-own, main > h1, main > .lede')) part.hidden = true;
 if (scorm?.lms)
   document.getElementById('exercise-progress-where').textContent =
     'Your progress goes to your course’s learning management system (LMS), which keeps it for your next visit.';
