@@ -28,8 +28,9 @@ export async function appFiles(base = location.href) {
   if (!res?.ok || !/javascript/.test(type))
     throw new Error('this page is not the built app (npm run build), whose service worker lists its files');
   const worker = await res.text();
-  const urls = [...worker.matchAll(/\{url:"([^"]+)",revision:/g)].map((m) => m[1]);
-  const runtime = [...worker.matchAll(/"\.\/(workbox-[\w-]+)"/g)].map((m) => `${m[1]}.js`);
+  // minified or not: {url:"a.html",revision:"…"} or { "url": "a.html", "revision": "…" }
+  const urls = [...worker.matchAll(/\{\s*"?url"?:\s*"([^"]+)",\s*"?revision"?:/g)].map((m) => m[1]);
+  const runtime = [...worker.matchAll(/["']\.\/(workbox-[\w-]+)["']/g)].map((m) => `${m[1]}.js`);
   if (!urls.length) throw new Error('the service worker lists no files');
   return [...new Set([...urls, 'sw.js', ...runtime])].sort();
 }
