@@ -133,10 +133,10 @@ describe('the author page', { timeout: 240_000 }, () => {
     await expect.poll(() => page.$eval('#author-status', (s) => s.textContent)).toContain('3 exercises, ready');
 
     // reorder with the arrows (the focus stays on the moved exercise's arrow), title and pass mark
-    await page.click('[aria-label="Move “A lake at 25%” up"]');
+    await page.click('[aria-label="Up: move “A lake at 25%” up"]');
     await expect.poll(() => itemNames(page)).toEqual(['Where is Schlick worst?', 'A lake at 25%', 'A lit wall']);
     expect(await page.evaluate(() => document.activeElement.getAttribute('aria-label'))).toBe(
-      'Move “A lake at 25%” up',
+      'Up: move “A lake at 25%” up',
     );
     await page.type('[data-field="title"] input:not(#author-form *)', 'Week 3');
     await page.type('[data-field="passMark"] input', '60');

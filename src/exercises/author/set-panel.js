@@ -65,11 +65,11 @@ export function createSetPanel(parent, on) {
             className: `author-item-meta${errors.length ? ' bad' : ''}`,
             textContent: ` ${points} point${points === 1 ? '' : 's'} · ${status}`,
           });
-          const up = button('↑', `Move “${name}” up`, () => on.move(i, -1));
-          const down = button('↓', `Move “${name}” down`, () => on.move(i, 1));
+          const up = button('Up', `Up: move “${name}” up`, () => on.move(i, -1));
+          const down = button('Down', `Down: move “${name}” down`, () => on.move(i, 1));
           up.disabled = i === 0;
           down.disabled = i === items.length - 1;
-          const remove = button('Remove', `Remove “${name}”`, () => on.remove(i));
+          const remove = button('Remove', `Remove “${name}”`, () => on.remove(i)); // the visible word first
           return el('li', {}, pick, meta, el('span', { className: 'author-item-tools' }, up, down, remove));
         }),
       );
