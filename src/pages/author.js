@@ -75,6 +75,7 @@ function pick(i, { focus = false } = {}) {
     preview.clear();
     return;
   }
+  preview.clear(); // the frame showed another exercise
   form.edit(items[i].raw, kindOf(items[i].raw));
   check();
   if (focus) /** @type {HTMLElement} */ ($('author-form').querySelector('input, select, textarea'))?.focus();

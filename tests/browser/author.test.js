@@ -5,7 +5,7 @@
 // package whose bytes are unzipped with fflate: the manifest checked against the SCORM 1.2 structure, the set
 // against the validator, the app's files byte-for-byte those of dist/.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { existsSync, mkdtempSync, readFileSync, readdirSync, rmSync, statSync } from 'node:fs';
+import { existsSync, mkdtempSync, readFileSync, readdirSync, rmSync, statSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { strFromU8, unzipSync } from 'fflate';
@@ -14,6 +14,7 @@ import { ROOT } from './harness.js';
 import { readExerciseSet } from '../../src/exercises/load.js';
 import { WIDGETS } from '../../src/widgets/registry.js';
 import { DEG } from '../../src/math/angles.js';
+import { createProgress, memoryStorage, progressFile } from '../../src/exercises/progress.js';
 
 const schemaOf = async (name) => (Object.hasOwn(WIDGETS, name) ? (await WIDGETS[name].load()).widget.schema : null);
 const field = (path) => `#author-form [data-field="${path}"]`;
@@ -132,6 +133,19 @@ describe('the author page', { timeout: 240_000 }, () => {
     await fill(page, 'params.target', '0.25');
     await expect.poll(() => page.$eval('#author-status', (s) => s.textContent)).toContain('3 exercises, ready');
 
+    // a shader exercise: a grid's messages beside that axis's field; then removed from the set
+    await page.select('#author-new-kind', 'shader');
+    await page.click('#author-new');
+    await fill(page, 'domain.nh.steps', '500');
+    await expect
+      .poll(() => messages(page, field('domain.nh.steps')))
+      .toEqual(['domain.nh.steps: 500 is not a whole number within 2…101']);
+    expect(await messages(page, field('sources'))).toEqual([
+      'sources: missing (a list of sources, each its authors and year, e.g. "Schlick 1994")',
+    ]);
+    expect(await messages(page, field('domain.nh'))).toEqual([]);
+    await page.click('[aria-label="Remove “exercise-4”"]');
+
     // reorder with the arrows (the focus stays on the moved exercise's arrow), title and pass mark
     await page.click('[aria-label="Up: move “A lake at 25%” up"]');
     await expect.poll(() => itemNames(page)).toEqual(['Where is Schlick worst?', 'A lake at 25%', 'A lit wall']);
@@ -190,6 +204,21 @@ describe('the author page', { timeout: 240_000 }, () => {
         .sort(),
     ).toEqual(app.sort());
     for (const f of app) expect(Buffer.from(zip[f]).equals(readFileSync(join(dist, f))), f).toBe(true);
+
+    // a student's progress file, as the exercises page saves it: 2 of 2 + 1 points solved, against the pass mark 60
+    const student = join(downloads, 'ada.json');
+    const done = createProgress(memoryStorage());
+    done.record('lake', true, 'x');
+    done.record('wall-light', false, 'y');
+    const two = [
+      { id: 'lake', title: 'A lake at 25%', points: 2 },
+      { id: 'wall-light', title: 'A lit wall', points: 1 },
+    ];
+    writeFileSync(student, JSON.stringify(progressFile({ name: 'Ada', exercises: two, progress: done })));
+    await (await page.$('#author-student-file')).uploadFile(student);
+    await expect
+      .poll(() => page.$eval('#author-student-view', (v) => v.textContent))
+      .toContain('Score 66.67% (1 of 2 solved; pass mark 60%): passed.');
 
     // opened again from the saved file: the same set, to edit
     await page.reload({ waitUntil: 'load' });

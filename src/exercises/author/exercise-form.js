@@ -152,7 +152,7 @@ export function createExerciseForm(parent, { schemaOf, onInput }) {
           }
         : null;
     }
-    const boxes = fields.map((f) => f.box);
+    const boxes = fields.filter((f) => !f.inside).map((f) => f.box);
     if (setup) boxes.push(setup.stateBox, setup.lockBox);
     form.replaceChildren(...boxes);
   }

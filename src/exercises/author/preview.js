@@ -29,7 +29,9 @@ export function createPreview(parent) {
     },
     stale() {
       clearTimeout(timer);
-      if (shown) note.textContent = 'The preview shows the last version without problems: fix those beside the fields.';
+      note.textContent = shown
+        ? 'The preview shows the last version without problems: fix those beside the fields.'
+        : 'The preview appears once this exercise has no problems: each is said beside its field.';
     },
     clear() {
       clearTimeout(timer);

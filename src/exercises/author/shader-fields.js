@@ -52,7 +52,8 @@ function axisFields(name, axis, spec = {}) {
     ...parts.map((p) => p.box),
   );
   box.dataset.field = at;
-  return [{ path: at, box, read: () => undefined }, ...parts];
+  // the parts are read with the others, but shown inside the axis's box
+  return [{ path: at, box, read: () => undefined }, ...parts.map((p) => ({ ...p, inside: true }))];
 }
 
 /** The fixed parameters of the reference term that are not axes of the slot (F's η comes from F0 unless fixed). */
