@@ -60,7 +60,8 @@ const filesUnder = (dir) =>
     .filter((f) => statSync(join(dir, f)).isFile())
     .map((f) => f.split('\\').join('/'));
 
-describe('the author page', { timeout: 240_000 }, () => {
+// one long story (each step needs the set the last one built); software WebGL on a loaded machine takes minutes
+describe('the author page', { timeout: 600_000 }, () => {
   it('builds, previews, reorders, saves, opens, shares and exports a set with no JSON typed', async () => {
     const page = await open(browser, 'author.html', { width: 1280, height: 900 });
     const cdp = await page.createCDPSession();
