@@ -24,12 +24,13 @@ export function createSetPanel(parent, on) {
     ),
   ];
   for (const f of head) f.control.addEventListener('input', on.change);
+  const others = el('ul', { className: 'author-errors' }); // the set's messages that name neither field
   const list = el('ol', { className: 'author-items' });
   const empty = el('p', {
     className: 'author-empty',
     textContent: 'No exercises yet: add a built-in one or a new one.',
   });
-  parent.append(...head.map((f) => f.box), empty, list);
+  parent.append(...head.map((f) => f.box), others, empty, list);
 
   const button = (text, label, act) => {
     const b = el('button', { type: 'button', textContent: text, onclick: act });
@@ -48,11 +49,10 @@ export function createSetPanel(parent, on) {
     /** items: [{ raw, errors }]; selected: the index edited; setErrors: the set's own messages. */
     render(items, selected, setErrors) {
       empty.hidden = items.length > 0;
-      for (const f of head)
-        showErrors(
-          f.box,
-          setErrors.filter((e) => e.startsWith(`${f.path}: `)),
-        );
+      const mine = (f) => (e) => e.startsWith(`${f.path}: `);
+      for (const f of head) showErrors(f.box, setErrors.filter(mine(f)));
+      const rest = setErrors.filter((e) => !head.some((f) => mine(f)(e)));
+      others.replaceChildren(...rest.map((e) => el('li', { textContent: e })));
       list.replaceChildren(
         ...items.map(({ raw, errors }, i) => {
           const name = raw.title || raw.id || `exercise ${i + 1}`;
