@@ -1,7 +1,8 @@
 // A SCORM package from `npm run scorm` in a real SCORM 1.2 runtime: the unzipped package in an iframe of an
 // LMS-like page whose window.API is scorm-again's Scorm12API (its browser build, from node_modules). A right and
 // a wrong answer and a shader exercise's GLSL (worth 2 points) reach scorm-again as score (points solved of all),
-// status and suspend data; a relaunch with that suspend data shows the progress; corrupt suspend data starts afresh; an API that refuses and throws is reported, answers still graded.
+// status and suspend data; a relaunch with that suspend data shows the progress; corrupt suspend data starts
+// afresh; an API that refuses and throws is reported, answers still graded.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { copyFileSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
