@@ -16,7 +16,7 @@ export function createProgressPanel(doc, { state, onLoaded, lms }) {
     const { exercises, progress, title } = state();
     const name = /** @type {HTMLInputElement} */ (doc.getElementById('progress-name')).value;
     const file = progressFile({ name, title, exercises, progress });
-    const stem = (name.trim() || 'my').replace(/[^\p{L}\p{N}]+/gu, '-').toLowerCase();
+    const stem = (name.replace(/[^\p{L}\p{N}]+/gu, '-').replace(/^-+|-+$/g, '') || 'my').toLowerCase();
     download(
       `${stem}-shading-lab-progress.json`,
       new Blob([JSON.stringify(file, null, 2)], { type: 'application/json' }),

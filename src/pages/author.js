@@ -124,7 +124,11 @@ const say = (text, bad = false) => {
   out.className = bad ? 'notice notice-error' : 'notice';
   out.replaceChildren(...[text].flat());
 };
-const stem = () => (currentSet().title ?? 'exercise-set').replace(/[^\p{L}\p{N}]+/gu, '-').toLowerCase() || 'set';
+const stem = () =>
+  (currentSet().title ?? 'exercise-set')
+    .replace(/[^\p{L}\p{N}]+/gu, '-')
+    .replace(/^-+|-+$/g, '')
+    .toLowerCase() || 'exercise-set';
 
 $('author-new').addEventListener('click', () => add(newExercise($('author-new-kind').value, items.length + 1)));
 $('author-new-kind').replaceWith(Object.assign(select(KINDS, 'number'), { id: 'author-new-kind' }));
