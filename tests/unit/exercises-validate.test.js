@@ -92,8 +92,8 @@ describe('validator messages', () => {
       'unknown field',
       { answer: 14 },
       [
-        'answer: unknown field (fields: id, chapter, title, prompt, widget, state, locked, grader, params, tolerance, ' +
-          'points)',
+        'answer: unknown field (fields: id, chapter, title, prompt, widget, state, locked, grader, params, ' +
+          'tolerance, points)',
       ],
     ],
   ];
