@@ -64,6 +64,12 @@ const filesUnder = (dir) =>
 describe('the author page', { timeout: 600_000 }, () => {
   it('builds, previews, reorders, saves, opens, shares and exports a set with no JSON typed', async () => {
     const page = await open(browser, 'author.html', { width: 1280, height: 900 });
+    // a preview frame sent elsewhere (another exercise picked, a newer version) aborts what it was still loading
+    const aborted = new Set();
+    page.on('requestfailed', (r) => {
+      if (r.frame() !== page.mainFrame() && r.failure()?.errorText === 'net::ERR_ABORTED')
+        aborted.add(`request failed: ${r.url()}`);
+    });
     const cdp = await page.createCDPSession();
     await cdp.send('Browser.setDownloadBehavior', { behavior: 'allow', downloadPath: downloads });
     await page.waitForSelector('.author-library-list button');
@@ -145,10 +151,11 @@ describe('the author page', { timeout: 600_000 }, () => {
       'sources: missing (a list of sources, each its authors and year, e.g. "Schlick 1994")',
     ]);
     expect(await messages(page, field('domain.nh'))).toEqual([]);
-    await page.click('[aria-label="Remove “exercise-4”"]');
+    // the set's list is drawn again after each check: a button is pressed in one step, not found and then clicked
+    await page.$eval('[aria-label="Remove “exercise-4”"]', (b) => b.click());
 
     // reorder with the arrows (the focus stays on the moved exercise's arrow), title and pass mark
-    await page.click('[aria-label="Up: move “A lake at 25%” up"]');
+    await page.$eval('[aria-label="Up: move “A lake at 25%” up"]', (b) => b.click());
     await expect.poll(() => itemNames(page)).toEqual(['Where is Schlick worst?', 'A lake at 25%', 'A lit wall']);
     expect(await page.evaluate(() => document.activeElement.getAttribute('aria-label'))).toBe(
       'Up: move “A lake at 25%” up',
@@ -228,7 +235,7 @@ describe('the author page', { timeout: 600_000 }, () => {
     await chooser.uploadFile(join(downloads, 'week-3.json'));
     await expect.poll(() => itemNames(page)).toEqual(['Where is Schlick worst?', 'A lake at 25%', 'A lit wall']);
     expect(await page.$eval('[data-field="passMark"] input', (i) => i.value)).toBe('60');
-    expect(page.errors).toEqual([]);
+    expect(page.errors.filter((e) => !aborted.has(e))).toEqual([]);
     await page.close();
   });
 });
