@@ -19,6 +19,7 @@ const pages = [
   'performance',
   'parity',
   'exercises',
+  'author',
   'tour',
   'gallery',
   'wall',

@@ -5,13 +5,10 @@
 import { existsSync, readFileSync, readdirSync, statSync, writeFileSync } from 'node:fs';
 import { basename, join, resolve } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
-import { zipSync } from 'fflate';
-import { launchPage, scormManifest } from '../src/exercises/scorm/manifest.js';
-import { setFingerprint } from '../src/exercises/scorm/suspend.js';
+import { LAUNCH, SET_PATH, buildPackage, packageTitle, rawList } from '../src/exercises/scorm/package.js';
 
 const ROOT = resolve(import.meta.dirname, '..');
-export const SET_PATH = 'set/exercises.json';
-export const LAUNCH = 'scorm-launch.html';
+export { LAUNCH, SET_PATH };
 
 const filesUnder = (dir) =>
   readdirSync(dir, { recursive: true })
@@ -33,25 +30,6 @@ function fileLoader(raws) {
   };
 }
 
-/** The set's exercises as raw objects, in order, from what was read (an index's file names replaced by files). */
-function rawList(json, baseUrl, raws) {
-  const list = Array.isArray(json) ? json : Array.isArray(json?.exercises) ? json.exercises : [json];
-  return list.map((item) => (typeof item === 'string' ? raws.get(new URL(item, baseUrl).href) : item));
-}
-
-/** Problems with the package's own fields (title, passMark) of an index. */
-function packageFields(json) {
-  const index = json && typeof json === 'object' && !Array.isArray(json) && Array.isArray(json.exercises);
-  const title = index && typeof json.title === 'string' && json.title.trim() ? json.title.trim() : null;
-  const mark = index ? json.passMark : undefined;
-  const bad = mark !== undefined && !(typeof mark === 'number' && mark >= 0 && mark <= 100);
-  return {
-    title,
-    mastery: mark ?? null,
-    errors: bad ? [`passMark: ${JSON.stringify(mark)} is not a percentage 0…100`] : [],
-  };
-}
-
 /**
  * Writes the package. validate: { readExerciseSet, schemaOf } (src/exercises/load.js and the widgets' schemas).
  * Returns { errors } (nothing written) or { bytes, files, exercises }.
@@ -66,31 +44,22 @@ export async function packageSet({ setFile, outFile, dist, validate }) {
   }
   const baseUrl = pathToFileURL(resolve(setFile)).href;
   const raws = new Map();
-  const { exercises, problems } = await validate.readExerciseSet(json, {
+  const got = await validate.readExerciseSet(json, {
     source,
     baseUrl,
     schemaOf: validate.schemaOf,
     load: fileLoader(raws),
   });
-  const fields = packageFields(json);
-  const errors = [...problems.flatMap((p) => p.errors.map((e) => `${p.source}: ${e}`)), ...fields.errors];
+  const { exercises, problems, title, passMark } = got;
+  const errors = problems.flatMap((p) => p.errors.map((e) => `${p.source}: ${e}`));
   if (!exercises.length && !errors.length) errors.push(`${source} holds no exercises`);
   if (errors.length) return { errors };
-  const title = fields.title ?? (exercises.length === 1 ? exercises[0].title : 'Shading Lab exercises');
-  const set = { title, exercises: rawList(json, baseUrl, raws) };
-  const entries = {};
-  for (const f of filesUnder(dist)) entries[f] = readFileSync(join(dist, f));
-  const text = (s) => new TextEncoder().encode(s);
-  entries[SET_PATH] = text(JSON.stringify(set, null, 2));
-  entries[LAUNCH] = text(launchPage({ title, set: SET_PATH }));
-  const identifier = `shading-lab-${setFingerprint(exercises.map((e) => e.id))}`;
-  const files = Object.keys(entries).sort();
-  entries['imsmanifest.xml'] = text(
-    scormManifest({ identifier, title, launch: LAUNCH, files, mastery: fields.mastery }),
-  );
-  const zip = zipSync(entries, { level: 6 });
+  const app = {};
+  for (const f of filesUnder(dist)) app[f] = readFileSync(join(dist, f));
+  const raw = rawList(json, baseUrl, raws);
+  const { zip, files } = buildPackage({ app, exercises, raw, title: packageTitle(title, exercises), passMark });
   writeFileSync(outFile, zip);
-  return { bytes: zip.length, files: files.length + 1, exercises: exercises.length };
+  return { bytes: zip.length, files, exercises: exercises.length };
 }
 
 /** Validation through Vite's module runner: the widgets' schemas import CSS, which plain Node cannot. */

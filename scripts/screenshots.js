@@ -39,6 +39,7 @@ const SHOTS = [
   ['rendering-page', 'rendering.html', { fullPage: true }],
   ['performance-page', 'performance.html', { fullPage: true }],
   ['exercises-page', 'exercises.html#match-sphere', { fullPage: true }],
+  ['author-page', 'author.html', { fullPage: true }],
   ['tour-fresnel-zones-lh', 'tour.html#fresnel-zones-lh'],
   ['tour-media-grid', 'tour.html#media-grid', { fullPage: true }],
   ['gallery-page', 'gallery.html', { fullPage: true }],

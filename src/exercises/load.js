@@ -2,7 +2,7 @@
 // relative to the index, or objects] }, from a URL or from a dropped file's text. Never throws: every
 // problem comes back as { source, errors } next to the exercises that are fine.
 import { showValue } from '../core/framework/state.js';
-import { validateExercise } from './validate.js';
+import { validateExercise, validateSetFields } from './validate.js';
 
 // An exercise file is a few kB; a set is refused past these, before it is read into memory.
 export const MAX_SET_BYTES = 1024 * 1024;
@@ -86,10 +86,11 @@ async function entriesOf(json, source, baseUrl, load) {
   return [{ source, raw: json }];
 }
 
-/** Validates every entry; ids must be unique across the set. Returns { exercises, problems }. */
+/** Validates every entry; ids must be unique across the set. Returns { exercises, problems, title, passMark }. */
 export async function readExerciseSet(json, { source, baseUrl = null, schemaOf, load = fetchJson }) {
   const exercises = [];
-  const problems = [];
+  const { title, passMark, errors: setErrors } = validateSetFields(json);
+  const problems = setErrors.length ? [{ source, errors: setErrors }] : [];
   const seen = new Map();
   for (const entry of await entriesOf(json, source, baseUrl, load)) {
     if (entry.error) {
@@ -105,7 +106,7 @@ export async function readExerciseSet(json, { source, baseUrl = null, schemaOf, 
       exercises.push({ ...exercise, source: entry.source });
     }
   }
-  return { exercises, problems };
+  return { exercises, problems, title, passMark };
 }
 
 /** A set from a URL (resolved against the page). */

@@ -16,7 +16,11 @@ export const FIELDS = [
   'grader',
   'params',
   'tolerance',
+  'points',
 ];
+/** The fields of a set that is an index: { title, passMark, exercises: [...] }. */
+export const SET_FIELDS = ['title', 'passMark', 'exercises'];
+export const MAX_POINTS = 100;
 
 const show = showValue;
 const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
@@ -77,6 +81,31 @@ function sharedProblems(raw, fields, errors) {
   }
   requiredText(raw, 'title', errors);
   requiredText(raw, 'prompt', errors);
+  const p = raw.points;
+  if (p !== undefined && !(typeof p === 'number' && p > 0 && p <= MAX_POINTS))
+    errors.push(`points: ${show(p)} is not a number of points above 0 and at most ${MAX_POINTS}`);
+}
+
+/**
+ * The set's own fields, when it is an index ({ "exercises": [...] }, docs/exercises.md): an optional title and a
+ * pass mark in percent. Returns { title (null if none), passMark (null if none), errors }.
+ */
+export function validateSetFields(json) {
+  const index = isObject(json) && Array.isArray(json.exercises);
+  if (!index) return { title: null, passMark: null, errors: [] };
+  const errors = [];
+  for (const key of Object.keys(json))
+    if (!SET_FIELDS.includes(key)) errors.push(`${key}: unknown field of a set (fields: ${SET_FIELDS.join(', ')})`);
+  const { title, passMark } = json;
+  if (title !== undefined && (typeof title !== 'string' || !title.trim()))
+    errors.push(`title: ${show(title)} is not a non-empty string`);
+  const markOk = passMark === undefined || (typeof passMark === 'number' && passMark >= 0 && passMark <= 100);
+  if (!markOk) errors.push(`passMark: ${show(passMark)} is not a percentage 0…100`);
+  return {
+    title: typeof title === 'string' && title.trim() ? title.trim() : null,
+    passMark: markOk && passMark !== undefined ? passMark : null,
+    errors,
+  };
 }
 
 /** The fields of a widget exercise that stand alone: the shared ones and tolerance. */
@@ -168,9 +197,9 @@ export async function validateExercise(raw, { schemaOf }) {
   }
 
   if (errors.length) return { exercise: null, errors };
-  const { id, chapter, title, prompt, tolerance } = raw;
+  const { id, chapter, title, prompt, tolerance, points = 1 } = raw;
   const exercise = { id, chapter, title, prompt, widget: raw.widget ?? null, state, locked, grader: raw.grader };
-  return { exercise: { ...exercise, params, tolerance }, errors };
+  return { exercise: { ...exercise, params, tolerance, points }, errors };
 }
 
 /** An exercise of another kind than a widget's: "shader" (validate-shader.js) is the one so far. */
@@ -180,11 +209,11 @@ function validateOtherKind(raw) {
     errors.push(`kind: unknown kind ${show(raw.kind)} (kinds: shader; without "kind", a widget exercise)`);
     return { exercise: null, errors };
   }
-  sharedProblems(raw, SHADER_FIELDS, errors);
+  sharedProblems(raw, [...SHADER_FIELDS, 'points'], errors);
   const fields = shaderProblems(raw, errors);
   if (errors.length) return { exercise: null, errors };
-  const { id, chapter, title, prompt } = raw;
-  return { exercise: { id, chapter, title, prompt, ...fields }, errors };
+  const { id, chapter, title, prompt, points = 1 } = raw;
+  return { exercise: { id, chapter, title, prompt, points, ...fields }, errors };
 }
 
 /** The grader's params from raw.params, with its defaults filled in; each problem goes to `errors`. */

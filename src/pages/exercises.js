@@ -10,7 +10,8 @@ import { isOption } from '../core/framework/state.js';
 import { WIDGETS, isWidgetName } from '../widgets/registry.js';
 import { GRADERS } from '../exercises/graders.js';
 import { loadExerciseSet, readExerciseFile } from '../exercises/load.js';
-import { createProgress } from '../exercises/progress.js';
+import { createProgress, memoryStorage } from '../exercises/progress.js';
+import { createProgressPanel } from '../exercises/progress-panel.js';
 import { parseNumberAnswer } from '../exercises/answer.js';
 import { createPreview } from '../exercises/previews.js';
 import { hashId } from '../core/framework/url-hash.js';
@@ -36,7 +37,15 @@ const problemsEl = document.getElementById('exercise-problems');
 const pageParams = new URLSearchParams(location.search);
 // in a SCORM package (?scorm=1) progress goes to the LMS, once the set's ids are known (useSet)
 const scorm = pageParams.get('scorm') === '1' ? startPackageMode({ place: problemsEl }) : null;
-let progress = createProgress(); // replaced in package mode by useSet, before anything is shown
+// the author page's preview (?preview=1) is answered as a student would, without touching the lecturer's progress
+const preview = pageParams.get('preview') === '1';
+let progress = createProgress(preview ? memoryStorage() : undefined); // in package mode replaced by useSet
+// the preview shows the exercise, not the page's introduction or the student's own sections
+if (preview) for (const part of document.querySelectorAll('.exercise-own, main > h1, main > .lede')) part.hidden = true;
+if (scorm?.lms)
+  document.getElementById('exercise-progress-where').textContent =
+    'Your progress goes to your course’s learning management system (LMS), which keeps it for your next visit.';
+let setTitle = null;
 const gradedLink = createGradedLink(pageParams);
 
 const schemaOf = async (name) => (isWidgetName(name) ? (await WIDGETS[name].load()).widget.schema : null);
@@ -413,15 +422,32 @@ function route(event) {
   openExercise(exercise, { focus: event?.type === 'hashchange' });
 }
 
-function useSet({ exercises: list, problems }) {
+function useSet({ exercises: list, problems, title = null, passMark = null }) {
   exercises = list;
-  if (scorm) progress = createProgress(scorm.storageFor(list.map((e) => e.id)));
+  setTitle = title;
+  const points = Object.fromEntries(list.map((e) => [e.id, e.points]));
+  if (scorm)
+    progress = createProgress(
+      scorm.storageFor(
+        list.map((e) => e.id),
+        { points, passMark },
+      ),
+    );
   showProblems(problems);
   closeCurrent();
   route();
 }
 
 window.addEventListener('hashchange', route);
+
+createProgressPanel(document, {
+  state: () => ({ exercises, progress, title: setTitle }),
+  onLoaded: () => {
+    renderList();
+    if (current) renderStatus();
+  },
+  lms: Boolean(scorm?.lms),
+});
 
 // A lecturer's own file, chosen or dropped: it replaces the list shown.
 const readFile = async (file) => useSet(await readExerciseFile(file, { schemaOf }));

@@ -1,7 +1,8 @@
 // A SCORM package from `npm run scorm` in a real SCORM 1.2 runtime: the unzipped package in an iframe of an
 // LMS-like page whose window.API is scorm-again's Scorm12API (its browser build, from node_modules). A right and
-// a wrong answer reach scorm-again as score, status and suspend data; a relaunch with that suspend data shows the
-// progress; corrupt suspend data starts afresh; an API that refuses and throws is reported, answers still graded.
+// a wrong answer and a shader exercise's GLSL (worth 2 points) reach scorm-again as score (points solved of all),
+// status and suspend data; a relaunch with that suspend data shows the progress; corrupt suspend data starts
+// afresh; an API that refuses and throws is reported, answers still graded.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { copyFileSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -11,6 +12,7 @@ import { ROOT, launchBrowser, openPage, serveStatic } from './harness.js';
 import { readExerciseSet } from '../../src/exercises/load.js';
 import { WIDGETS } from '../../src/widgets/registry.js';
 import { packageSet } from '../../scripts/scorm.js';
+import { SHADER_SOLUTIONS } from './shader-solutions.js';
 
 const EXERCISES = join(ROOT, 'public/exercises');
 const schemaOf = async (name) => (Object.hasOwn(WIDGETS, name) ? (await WIDGETS[name].load()).widget.schema : null);
@@ -42,10 +44,11 @@ let dir;
 beforeAll(async () => {
   dir = mkdtempSync(join(tmpdir(), 'scorm-lms-'));
   const setFile = join(dir, 'two.json');
-  const two = ['schlick-worst.json', 'lambert-brightness.json'].map((f) =>
+  const three = ['schlick-worst.json', 'lambert-brightness.json', 'shader-schlick.json'].map((f) =>
     JSON.parse(readFileSync(join(EXERCISES, f))),
   );
-  writeFileSync(setFile, JSON.stringify({ title: 'Two exercises', exercises: two }));
+  three[2].points = 2;
+  writeFileSync(setFile, JSON.stringify({ title: 'Three exercises', exercises: three }));
   const got = await packageSet({
     setFile,
     outFile: join(dir, 'two.zip'),
@@ -103,6 +106,25 @@ async function answer(frame, id, text) {
   return frame.$eval('.exercise-feedback', (el) => el.className.includes('ok'));
 }
 
+/** Answers the shader exercise with its correct GLSL, typed into its editor as a student would. */
+async function answerShader(page, frame, id) {
+  await frame.click(`#exercise-list a[href="#${id}"]`);
+  await frame.waitForFunction(
+    (i) => globalThis.__shadingLab.exercise?.id === i && globalThis.__shadingLab.exercise.ready,
+    { timeout: 30_000 },
+    id,
+  );
+  await frame.click('.exercise-code .cm-content');
+  await page.keyboard.down('Control');
+  await page.keyboard.press('a');
+  await page.keyboard.up('Control');
+  await page.keyboard.press('Backspace');
+  await page.keyboard.sendCharacter(SHADER_SOLUTIONS[id].correct);
+  await frame.click('.exercise-check');
+  await frame.waitForSelector('.exercise-feedback.ok, .exercise-feedback.wrong', { timeout: 60_000 });
+  return frame.$eval('.exercise-feedback', (el) => el.className.includes('ok'));
+}
+
 // scorm-again's data model as it would send it to a server (its JSON export, which may read write-only elements)
 const cmi = (page) =>
   page.evaluate(() => {
@@ -124,12 +146,15 @@ describe('a SCORM package in scorm-again’s SCORM 1.2 runtime', { timeout: 60_0
   it('sends score, status and suspend data, finishes on leaving, and resumes from that suspend data', async () => {
     const first = await launch();
     expect(await notice(first.frame)).toContain('Connected to your course’s LMS');
+    const where = (frame) => frame.$eval('#exercise-progress-where', (el) => el.textContent);
+    expect(await where(first.frame)).toMatch(/^Your progress goes to your course’s learning management system/);
     expect(await answer(first.frame, 'schlick-worst', '85')).toBe(true);
     expect(await answer(first.frame, 'lambert-brightness', '4.712')).toBe(false);
+    expect(await answerShader(first.page, first.frame, 'shader-schlick')).toBe(true);
     const sent = await cmi(first.page);
-    // one of two solved: 50 of 100; not every exercise solved and no pass mark: incomplete
-    expect(sent).toMatchObject({ raw: '50', max: '100', status: 'incomplete', finished: false });
-    expect(sent.suspend).toMatch(/^SL1:[0-9a-z]+:s1\.u1$/);
+    // 1 + 2 of the 1 + 1 + 2 points solved: 75 of 100; not every exercise solved and no pass mark: incomplete
+    expect(sent).toMatchObject({ raw: '75', max: '100', status: 'incomplete', finished: false });
+    expect(sent.suspend).toMatch(/^SL1:[0-9a-z]+:s1\.u1\.s1$/);
     expect(sent.time).toMatch(/^\d{2,4}:\d\d:\d\d(\.\d\d)?$/);
     await first.page.$eval('iframe', (f) => (f.src = 'about:blank')); // leaving: pagehide → LMSFinish
     await expect.poll(async () => (await cmi(first.page)).finished).toBe(true);
@@ -141,7 +166,7 @@ describe('a SCORM package in scorm-again’s SCORM 1.2 runtime', { timeout: 60_0
     await first.page.close();
 
     const again = await launch(`?suspend=${encodeURIComponent(sent.suspend)}`);
-    expect(await solvedLine(again.frame)).toBe('1 of 2 solved');
+    expect(await solvedLine(again.frame)).toBe('2 of 3 solved');
     expect(await again.frame.$eval('a[href="#lambert-brightness"]', (a) => a.parentElement.textContent)).toContain(
       '1 attempt',
     );
@@ -153,8 +178,8 @@ describe('a SCORM package in scorm-again’s SCORM 1.2 runtime', { timeout: 60_0
   it('starts afresh from corrupt suspend data and says so', async () => {
     const { page, frame } = await launch('?suspend=%7B%22solved%22%3A%5B1%5D%7D');
     expect(await notice(frame)).toContain('could not be read, so you start afresh');
-    expect(await solvedLine(frame)).toBe('0 of 2 solved');
-    expect((await cmi(page)).suspend).toMatch(/^SL1:[0-9a-z]+:\.$/);
+    expect(await solvedLine(frame)).toBe('0 of 3 solved');
+    expect((await cmi(page)).suspend).toMatch(/^SL1:[0-9a-z]+:\.\.$/);
     await page.close();
   });
 
@@ -164,7 +189,7 @@ describe('a SCORM package in scorm-again’s SCORM 1.2 runtime', { timeout: 60_0
     const text = await notice(frame);
     expect(text).toContain('The LMS refused LMSSetValue("cmi.core.score.min", "0"): error 405');
     expect(text).toContain('The LMS failed on LMSCommit(""): the LMS is unreachable.');
-    expect(await solvedLine(frame)).toBe('1 of 2 solved');
+    expect(await solvedLine(frame)).toBe('1 of 3 solved');
     await page.close();
   });
 
@@ -175,9 +200,12 @@ describe('a SCORM package in scorm-again’s SCORM 1.2 runtime', { timeout: 60_0
     const own = join(dir, 'own.json');
     writeFileSync(own, readFileSync(join(EXERCISES, 'lake-mirror.json')));
     await (await frame.$('#exercise-file')).uploadFile(own);
-    await frame.waitForFunction(() => globalThis.__shadingLab.exercise?.id === 'lake-mirror');
+    await frame.waitForFunction(() => globalThis.__shadingLab.exercise?.id === 'lake-mirror', {
+      timeout: 60_000, // the surfaces widget mounts in software WebGL on a loaded machine
+      polling: 500,
+    });
     expect(await notice(frame)).toContain('loaded yourself are checked here, but not sent to the LMS');
-    expect(await cmi(page)).toMatchObject({ raw: '50', suspend: before.suspend });
+    expect(await cmi(page)).toMatchObject({ raw: '25', suspend: before.suspend });
     await page.close();
   });
 
@@ -185,7 +213,8 @@ describe('a SCORM package in scorm-again’s SCORM 1.2 runtime', { timeout: 60_0
     const page = await openPage(browser, server.url, 'package/scorm-launch.html');
     await page.waitForFunction(() => globalThis.__shadingLab?.exercise?.ready, { timeout: 30_000 });
     expect(await page.$eval('.scorm-notice', (el) => el.textContent)).toContain('grades are not being recorded');
-    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 2 solved');
+    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 3 solved');
+    expect(await page.$eval('#exercise-progress-where', (el) => el.textContent)).toMatch(/stays in this browser/);
     expect(page.errors).toEqual([]);
     await page.close();
   });

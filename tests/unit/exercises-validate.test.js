@@ -91,7 +91,10 @@ describe('validator messages', () => {
     [
       'unknown field',
       { answer: 14 },
-      ['answer: unknown field (fields: id, chapter, title, prompt, widget, state, locked, grader, params, tolerance)'],
+      [
+        'answer: unknown field (fields: id, chapter, title, prompt, widget, state, locked, grader, params, ' +
+          'tolerance, points)',
+      ],
     ],
   ];
   for (const [what, change, expected] of cases) {

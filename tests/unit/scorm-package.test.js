@@ -84,7 +84,7 @@ describe('npm run scorm’s package', { timeout: 60_000 }, () => {
       'bad.json #1: chapter: "nope" is not a chapter (chapters: ' +
         'media, surfaces, brdf, microfacets, fresnel, ndf, visibility, diffuse, rendering, performance)',
     );
-    expect(got.errors).toContain('passMark: 120 is not a percentage 0…100');
+    expect(got.errors).toContain('bad.json: passMark: 120 is not a percentage 0…100'); // the validator's format
     expect(existsSync(outFile)).toBe(false);
   });
 });

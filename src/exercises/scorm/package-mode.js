@@ -5,6 +5,7 @@ import { findLmsApi } from './api.js';
 import { createLmsSession } from './session.js';
 import { decodeProgress, encodeProgress } from './suspend.js';
 import { lessonStatus, masteryOf, scoreOf } from './status.js';
+import { memoryStorage } from '../progress.js';
 
 const NO_LMS =
   'Package mode, but no learning management system (LMS) was found: your answers are checked here, and your ' +
@@ -16,13 +17,10 @@ const AFRESH = {
   corrupt: 'The progress your LMS kept for this package could not be read, so you start afresh.',
 };
 
-/** A set the student loads into the page is theirs: kept in memory, never sent over the package's grades. */
-function memoryStorage() {
-  let json = '{}';
-  return { getItem: () => json, setItem: (_key, text) => void (json = text), removeItem: () => void (json = '{}') };
-}
-
-/** Shows the mode's notices in a box put before `place`. Returns { storageFor(ids) } for createProgress. */
+/**
+ * Shows the mode's notices in a box put before `place`. Returns { storageFor(ids, { points, passMark }) } for
+ * createProgress: points per id, and the set's pass mark for an LMS that gives no mastery score.
+ */
 export function startPackageMode({ win = window, place }) {
   const box = Object.assign(win.document.createElement('div'), { className: 'notice scorm-notice' });
   box.setAttribute('role', 'status');
@@ -35,7 +33,7 @@ export function startPackageMode({ win = window, place }) {
   const api = findLmsApi(win);
   if (!api) {
     say(NO_LMS);
-    return { storageFor: () => win.localStorage };
+    return { lms: false, storageFor: () => win.localStorage };
   }
   say(CONNECTED);
   const session = createLmsSession(api, {
@@ -46,10 +44,11 @@ export function startPackageMode({ win = window, place }) {
   win.addEventListener('pagehide', () => session.finish());
   let restored = false;
   return {
-    storageFor(ids) {
+    lms: true,
+    storageFor(ids, { points = {}, passMark = null } = {}) {
       if (!ids.length) return memoryStorage(); // a set that failed to load must not overwrite the kept progress
       if (restored) {
-        say(NOT_SENT);
+        say(NOT_SENT); // a set the student loads is theirs: kept in memory, never sent over the package's grades
         return memoryStorage();
       }
       restored = true; // only the set the package opened with goes to the LMS
@@ -57,8 +56,9 @@ export function startPackageMode({ win = window, place }) {
       if (got.problem) say(AFRESH[got.problem], 'scorm-problem');
       let progress = got.progress;
       const save = () => {
-        const score = scoreOf(ids, progress);
-        session.save({ raw: score.raw, status: lessonStatus(score, mastery), suspend: encodeProgress(ids, progress) });
+        const score = scoreOf(ids, progress, points);
+        const status = lessonStatus(score, mastery ?? passMark);
+        session.save({ raw: score.raw, status, suspend: encodeProgress(ids, progress) });
       };
       save();
       return {

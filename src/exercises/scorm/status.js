@@ -1,13 +1,19 @@
-// What a SCORM 1.2 LMS is told about a set's progress: the score (percent of exercises solved, 0–100, the scale
-// of cmi.student_data.mastery_score) and the lesson status.
+// What a SCORM 1.2 LMS is told about a set's progress: the score (percent of the set's points earned, 0–100, the
+// scale of cmi.student_data.mastery_score) and the lesson status.
 
-/** progress: { [id]: { solved, attempts } }. Returns { solved, attempted, total, raw }. */
-export function scoreOf(ids, progress) {
+/**
+ * progress: { [id]: { solved, attempts } }; points: { [id]: points } (1 for an id not in it). Returns
+ * { solved, attempted, total, raw }: raw is the solved exercises' points as a percentage of all, to 0.01.
+ */
+export function scoreOf(ids, progress, points = {}) {
   const of = (id) => (Object.hasOwn(progress, id) ? progress[id] : null);
-  const solved = ids.filter((id) => of(id)?.solved).length;
+  const worth = (id) => (Object.hasOwn(points, id) ? points[id] : 1);
+  const solved = ids.filter((id) => of(id)?.solved);
   const attempted = ids.filter((id) => of(id)?.solved || of(id)?.attempts > 0).length;
-  const raw = ids.length ? Math.round((10000 * solved) / ids.length) / 100 : 0;
-  return { solved, attempted, total: ids.length, raw };
+  const all = ids.reduce((sum, id) => sum + worth(id), 0);
+  const earned = solved.reduce((sum, id) => sum + worth(id), 0);
+  const raw = all ? Math.round((10000 * earned) / all) / 100 : 0;
+  return { solved: solved.length, attempted, total: ids.length, raw };
 }
 
 /**
