@@ -2,7 +2,7 @@
 // exercise shares, then a widget exercise's grader, parameters, tolerance and widget (with the widget itself to set
 // up the state and the locks), or a shader exercise's fields (shader-fields.js). The form is rebuilt from the
 // exercise when its shape changes (another kind, grader, widget, slot or term); typing only reads it.
-import { CHAPTERS } from '../../pages/chapters.js';
+import { CHAPTERS } from '../../widgets/chapters.js';
 import { GRADERS } from '../graders.js';
 import { WIDGETS } from '../../widgets/registry.js';
 import {

@@ -1,6 +1,6 @@
 // The built-in exercises on the author page (public/exercises, read as exercises.html reads them), filtered by
 // chapter and kind, each to add to the set as a copy to edit.
-import { CHAPTERS } from '../../pages/chapters.js';
+import { CHAPTERS } from '../../widgets/chapters.js';
 import { fetchJson, loadExerciseSet } from '../load.js';
 import { rawList } from '../scorm/package.js';
 import { KINDS, kindOf } from './draft.js';
