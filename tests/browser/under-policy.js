@@ -24,6 +24,7 @@ const READY = {
   'parity.html': () => globalThis.__shadingLab?.parity,
   'performance.html': () => globalThis.__shadingLab?.performance,
   'wall.html': () => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length > 0,
+  'author.html': () => document.querySelector('.author-library-list li'), // the built-in exercises listed
 };
 const oneWidget = () => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 1;
 const chapterReady = () =>
