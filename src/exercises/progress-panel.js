@@ -1,7 +1,7 @@
 // The exercises page's "Your progress as a file": save the progress on the set shown to a file, or load one saved
 // before. In an LMS package the LMS keeps the progress and grades: loading a file there is refused, as it would
 // send solved exercises to the gradebook that were not solved here.
-import { download } from '../core/ui/export.js';
+import { download } from '../core/framework/download.js';
 import { onFileDrop } from '../core/ui/file-drop.js';
 import { progressFile, readProgressFile } from './progress.js';
 

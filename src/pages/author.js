@@ -8,7 +8,7 @@ import '../exercises/author/author.css';
 import { WIDGETS, isWidgetName } from '../widgets/registry.js';
 import { parseJson, readExerciseSet } from '../exercises/load.js';
 import { onFileDrop } from '../core/ui/file-drop.js';
-import { download } from '../core/ui/export.js';
+import { download } from '../core/framework/download.js';
 import { rawList, packageTitle } from '../exercises/scorm/package.js';
 import { KINDS, newExercise, kindOf } from '../exercises/author/draft.js';
 import { el, select } from '../exercises/author/fields.js';
