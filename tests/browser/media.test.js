@@ -1,6 +1,6 @@
 // The media chapter in a real Chromium: absorption over distance, scattering, the grid, progressive rendering.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { launchBrowser, open, setControl, settle, shot, widget } from './helpers.js';
+import { afterFrames, launchBrowser, open, setControl, shot, untilIdle, widget } from './helpers.js';
 import { transmittance, waterAbsorptionRgb } from '../../src/math/media.js';
 
 let browser;
@@ -63,9 +63,9 @@ describe('media', () => {
     await page.waitForFunction(() => globalThis.__shadingLab.widgets.media.getProgress().frame >= 16, {
       timeout: 60_000,
     });
-    await settle(page, 500);
+    await untilIdle(page); // its last frame drawn, and no frame asked for after it
     const before = await page.evaluate(() => window.__drawCalls);
-    await settle(page, 1500);
+    await afterFrames(page, 30);
     expect(await page.evaluate(() => window.__drawCalls)).toBe(before);
     // milk: high scattering, low absorption: bright and without colour
     await page.evaluate(() => globalThis.__shadingLab.widgets.media.update({ view: 'one', medium: 'milk' }));

@@ -1,6 +1,6 @@
 // The surfaces chapter in a real Chromium: the subsurface-scale widget.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { getState, launchBrowser, open, setControl, settle, shot, widget } from './helpers.js';
+import { getState, launchBrowser, open, setControl, shot, untilIdle, widget } from './helpers.js';
 
 let browser;
 beforeAll(async () => {
@@ -41,7 +41,7 @@ describe('subsurface-scale', () => {
     await widget(page, 'subsurface-scale');
     const clear = await page.evaluate(() => globalThis.__shadingLab.widgets['subsurface-scale'].getStatistics());
     await page.evaluate(() => globalThis.__shadingLab.widgets['subsurface-scale'].update({ sigmaA: 1 }));
-    await settle(page, 300);
+    await untilIdle(page);
     const dark = await page.evaluate(() => globalThis.__shadingLab.widgets['subsurface-scale'].getStatistics());
     console.log(
       `subsurface: σa 0 → reflectance ${clear.reflectance.toFixed(3)}, ` +

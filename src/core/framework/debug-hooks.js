@@ -24,6 +24,8 @@
 /**
  * @typedef {object} ShadingLabHooks
  * @property {number} frames  frames the render loops have drawn, all views together
+ * @property {number} [maxSamples]  a cap on the samples progressive views refine to (sampleTarget), seeded by a
+ *   test before the page loads where it needs a picture drawn, not converged
  * @property {number} pending  work asked for and not yet done: animation frames the render loops requested and
  *   the app's timed pauses (requestFrame, later); 0 when the page is idle (a test waits for it instead of a time)
  * @property {Record<string, import('./types.js').Widget>} widgets  mounted widgets, by prefix or else name
@@ -122,7 +124,7 @@ export function cancelFrame(id) {
  * @returns {number}
  */
 export function later(callback, ms) {
-  const id = window.setTimeout(() => {
+  const id = setTimeout(() => {
     waiting.timers.delete(id);
     publishPending();
     callback();
@@ -138,4 +140,13 @@ export function cancelLater(id) {
   clearTimeout(id);
   waiting.timers.delete(id);
   publishPending();
+}
+
+/**
+ * The samples a progressive view refines to: `wanted`, or `maxSamples` if a test seeded a lower cap.
+ * @param {number} wanted
+ */
+export function sampleTarget(wanted) {
+  const cap = hooks().maxSamples;
+  return typeof cap === 'number' && cap > 0 ? Math.min(wanted, cap) : wanted;
 }
