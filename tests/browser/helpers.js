@@ -23,9 +23,23 @@ export function countDrawCalls() {
   }
 }
 
-/** Opens a page of the served app with its draw calls counted. */
-export const open = (browser, path, size = {}) =>
-  openPage(browser, baseUrl(), path, { ...size, beforeLoad: (page) => page.evaluateOnNewDocument(countDrawCalls) });
+/** Caps the samples progressive views refine to (sampleTarget in src/core/framework/debug-hooks.js). */
+function capSamples(n) {
+  globalThis.__shadingLab = { ...globalThis.__shadingLab, maxSamples: n };
+}
+
+/**
+ * Opens a page of the served app with its draw calls counted. `maxSamples` caps its progressive views, for a test
+ * that reads a picture exact from its first samples and would otherwise wait (untilIdle) for it to converge.
+ */
+export const open = (browser, path, { maxSamples, ...size } = {}) =>
+  openPage(browser, baseUrl(), path, {
+    ...size,
+    beforeLoad: async (page) => {
+      await page.evaluateOnNewDocument(countDrawCalls);
+      if (maxSamples) await page.evaluateOnNewDocument(capSamples, maxSamples);
+    },
+  });
 
 /** The app under a second name (localhost for 127.0.0.1): another origin, as a site embedding a widget is. */
 export const otherOrigin = () => baseUrl().replace('127.0.0.1', 'localhost');

@@ -45,7 +45,7 @@ const openTour = (browser, hash = '') =>
 async function onStep(page, id) {
   await page.waitForFunction(
     (id) => globalThis.__shadingLab?.tour?.ready && globalThis.__shadingLab.tour.id === id,
-    { timeout: 45_000 },
+    { timeout: 120_000 }, // a widget's first set-up took 57 s (surfaces-flat) under a load average of 40
     id,
   );
 }
