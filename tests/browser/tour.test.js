@@ -170,7 +170,7 @@ describe('guided tour', () => {
     expect(contexts.live).toBe(contexts.mounted);
     expect(page.errors).toEqual([]);
     await page.close();
-  }, 480_000); // 46 steps took 265 s on two cores shared by eight sessions (load 30); 300 s timed out once
+  }, 480_000); // 46 steps: 277 s with samples capped, 468 s without (load average 43, two cores, eight sessions)
 
   it('opens a step URL directly on that step, with the state it has when walked to', async () => {
     // a step that follows another of the same widget: whatever the walk left behind must not leak into it
