@@ -88,9 +88,10 @@ let idleWaits = 0;
  * asked for and no timed pause of the app (the edit's pause, the figures after a drag) still to come, as the app
  * counts them in __shadingLab.pending (src/core/framework/debug-hooks.js). Counted in frames, not milliseconds:
  * a loaded machine only takes longer to get there. A progressive view in sight asks for frames until it has its
- * samples, so this also waits for it to converge. Rejects after `timeout`.
+ * samples, so this also waits for it to converge. Rejects after `timeout` (long: the test's own time budget is what
+ * bounds a wait on a loaded machine).
  */
-export async function untilIdle(target, { frames = 2, timeout = 60_000 } = {}) {
+export async function untilIdle(target, { frames = 2, timeout = 300_000 } = {}) {
   const token = ++idleWaits; // each wait counts its own calm frames, from 0
   await target.waitForFunction(
     (token, frames) => {
