@@ -2,11 +2,14 @@
 // for each slot the widget offers, drawn as the term predicts (the truth: the JS reference terms of src/math, and
 // the polar plot's geometry); compile errors on the user's line with the last picture kept; the loop check; the
 // URL and postMessage carrying the code; code from a link waiting for a click; a lost context and its recovery.
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { baseUrl, getState, launchBrowser, open, settle, shot, typeCode, widget, withPixels } from './helpers.js';
+import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
+import { baseUrl, getState, launchBrowser, open, shot, typeCode, untilIdle, widget, withPixels } from './helpers.js';
 import { defaultState } from '../../src/core/framework/state.js';
 import { schema } from '../../src/widgets/brdf-lobe/schema.js';
 import { lobePeak, lobeScene } from '../../src/widgets/brdf-lobe/model.js';
+
+// each test types code that is compiled in software WebGL, some twice: one took over 60 s under a load average of 44
+vi.setConfig({ testTimeout: 180_000 });
 
 let browser;
 beforeAll(async () => {
@@ -34,7 +37,7 @@ async function openLobe(query) {
   const page = await open(browser, `embed.html?w=${KEY}&${query}`, { width: 1100, height: 1400 });
   await widget(page, KEY);
   await page.waitForSelector('.custom-panel .cm-content', { timeout: 30_000 });
-  await settle(page, 600);
+  await untilIdle(page);
   return page;
 }
 
@@ -177,7 +180,7 @@ describe('custom terms in brdf-lobe: errors, safety, sharing', () => {
     expect(await page.$eval('.custom-consent', (el) => !el.hidden)).toBe(true);
     expect((await polarPeaks(page)).A / jsPeak({})).toBeCloseTo(1, 2); // the starter draws meanwhile
     await page.click('.custom-run');
-    await settle(page, 800);
+    await untilIdle(page);
     expect((await polarPeaks(page)).A / (2 * jsPeak({}))).toBeCloseTo(1, 2);
     expect(await page.$eval('.custom-consent', (el) => el.hidden)).toBe(true);
     const again = await openLobe(`D=custom&${WITH_B}&codeD=${encodeURIComponent(code)}`);
@@ -192,7 +195,7 @@ describe('custom terms in brdf-lobe: errors, safety, sharing', () => {
     const typed = `${unique()}${D_TWICE_GGX}`;
     await typeCode(page, 'D', typed);
     const state = await getState(page, KEY);
-    await settle(page, 300);
+    await untilIdle(page);
     const url = page.url();
     expect(new URL(url).searchParams.has('codeD')).toBe(true);
     const reopened = await openLobe(url.slice(url.indexOf('embed.html')).replace(/^embed\.html\?w=brdf-lobe&?/, ''));
@@ -222,7 +225,7 @@ describe('custom terms in brdf-lobe: errors, safety, sharing', () => {
       .waitForFunction(() => window.__inbox.find((d) => d.type === 'shading-lab:state' && d.id === 'g'))
       .then((h) => h.jsonValue());
     expect(got.state.codeD).toBe(sent);
-    await settle(frame, 600);
+    await untilIdle(frame);
     expect(await frame.$eval('.custom-consent', (el) => !el.hidden)).toBe(true);
     expect(await frame.$eval('.cm-content', (el) => el.textContent)).toContain(sent.split('\n')[0].slice(3));
     expect(parent.errors).toEqual([]);
@@ -240,12 +243,13 @@ describe('custom terms in brdf-lobe: errors, safety, sharing', () => {
       window.__lose = gl.getExtension('WEBGL_lose_context');
       window.__lose.loseContext();
     });
-    await settle(page, 600);
-    expect(await panelText(page, 'D', '.custom-status')).toMatch(/WebGL context away; it comes back by itself/);
+    const status = () => panelText(page, 'D', '.custom-status');
+    await expect.poll(status, { timeout: 30_000 }).toMatch(/WebGL context away; it comes back by itself/); // an event
+    await untilIdle(page);
     expect(await shot(page, '.polar-plot canvas')).toBe(good);
     await page.evaluate(() => window.__lose.restoreContext());
-    await settle(page, 1500);
-    expect(await panelText(page, 'D', '.custom-status')).toMatch(/Running your code/);
+    await expect.poll(status, { timeout: 30_000 }).toMatch(/Running your code/);
+    await untilIdle(page);
     expect(await shot(page, '.polar-plot canvas')).toBe(good);
     await typeCode(page, 'D', D_TWICE_GGX.replace('2.0 * a2', 'a2'));
     expect((await polarPeaks(page)).A / jsPeak({})).toBeCloseTo(1, 2);
@@ -271,14 +275,15 @@ describe('custom terms in brdf-lobe: errors, safety, sharing', () => {
     expect((await polarPeaks(page)).A / (3 * jsPeak({}))).toBeCloseTo(1, 2); // it ran once, before the hang
     await page.evaluate(() => (window.__hangOnce = true));
     await typeCode(page, 'D', D_TWICE_GGX.replace('2.0 * a2', '4.0 * a2'));
-    expect(await panelText(page, 'D', '.custom-status')).toMatch(/while your new code was drawing/);
+    const status = () => panelText(page, 'D', '.custom-status');
+    await expect.poll(status, { timeout: 30_000 }).toMatch(/while your new code was drawing/);
     await page.evaluate(() => window.__lose.restoreContext());
-    await settle(page, 1500);
-    expect(await panelText(page, 'D', '.custom-status')).toMatch(/Your code was running when the GPU took/);
+    await expect.poll(status, { timeout: 30_000 }).toMatch(/Your code was running when the GPU took/);
+    await untilIdle(page);
     expect((await polarPeaks(page)).A / (3 * jsPeak({}))).toBeCloseTo(1, 2); // the code before it
     await page.click('.custom-panel[data-slot="D"] .cm-content');
     await page.keyboard.press('Enter'); // an edit: the code may run again
-    await settle(page, 1200);
+    await untilIdle(page);
     expect((await polarPeaks(page)).A / (4 * jsPeak({}))).toBeCloseTo(1, 2);
     expect(page.errors.filter((e) => !/CONTEXT_LOST/i.test(e))).toEqual([]);
     await page.close();

@@ -1,7 +1,7 @@
 // The diffuse chapter in a real Chromium: the rendered spheres read back and compared with src/math, the plots'
 // data against the JS terms, the URL state.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { getState, launchBrowser, open, setControl, settle, shot, widget, withPixels } from './helpers.js';
+import { getState, launchBrowser, open, setControl, shot, untilIdle, widget, withPixels } from './helpers.js';
 import {
   diffuseFresnelWeighted,
   diffuseLambert,
@@ -102,7 +102,7 @@ describe('diffuse chapter page', () => {
     // the probe at the centre of the fourth sphere (full Oren–Nayar; defaults sigma 40°, c 0.8, light at the viewer)
     const box = await (await page.$('.sphere-grid canvas')).boundingBox();
     await page.mouse.move(box.x + box.width * 0.7, box.y + box.height * 0.5);
-    await settle(page, 200);
+    await untilIdle(page);
     const ratio = diffuseOrenNayar(1, 1, 1, 40 * DEG, 0.8) / diffuseLambert(0.8);
     expect(await page.$eval('.widget-diffuse-explorer .probe', (el) => el.textContent)).toContain(
       `f / Lambert${ratio.toFixed(4)}`,
@@ -127,7 +127,7 @@ describe('diffuse-explorer spheres, read back from the canvas', () => {
     const disc = findDisc(lambert, 0, 1);
     for (const model of ['orenNayar', 'orenNayarQualitative']) {
       await page.evaluate((m) => globalThis.__shadingLab.widgets['diffuse-explorer'].update({ models: [m] }), model);
-      await settle(page, 400);
+      await untilIdle(page);
       const img = await readSpheres(page);
       expect([img.width, img.height]).toEqual([lambert.width, lambert.height]);
       let [worst, lit] = [0, 0];
@@ -269,7 +269,7 @@ describe('diffuse-explorer plots and state', () => {
       await setControl(page, 'Light from view (°)', 20);
       await page.focus('.light-pad canvas');
       await page.keyboard.press('ArrowDown');
-      await settle(page, 300);
+      await untilIdle(page);
       expect((await getState(page, 'diffuse')).lightTheta).toBe(25);
       const url = page.url();
       expect(url).toMatch(/diffuse\.lightTheta=25/);

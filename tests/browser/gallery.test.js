@@ -2,7 +2,7 @@
 // scrolled to, a snippet that follows the preview's state and is as tall as the widget.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { WIDGETS } from '../../src/widgets/registry.js';
-import { baseUrl, launchBrowser, open, setControl, settle } from './helpers.js';
+import { baseUrl, launchBrowser, open, setControl, untilIdle } from './helpers.js';
 
 let browser;
 beforeAll(async () => {
@@ -23,7 +23,7 @@ describe('gallery.html', () => {
     'has a card with an embed snippet for every registered widget, ' + 'and loads previews only when scrolled to',
     async () => {
       const page = await open(browser, 'gallery.html');
-      await settle(page, 500);
+      await untilIdle(page);
       for (const name of Object.keys(WIDGETS)) {
         expect(await snippetSrc(page, name)).toBe(new URL(`embed.html?w=${name}`, baseUrl()).href);
         expect(await page.$eval(`[data-widget="${name}"] h2`, (h) => h.textContent)).toBe(WIDGETS[name].title);
@@ -47,7 +47,7 @@ describe('gallery.html', () => {
       const handle = await page.waitForSelector('[data-widget="fresnel-zones"] iframe');
       const frame = await handle.contentFrame();
       await frame.waitForFunction(() => globalThis.__shadingLab?.widgets?.['fresnel-zones'], { timeout: 30_000 });
-      await settle(frame, 400);
+      await untilIdle(frame);
       await setControl(frame, 'Shape', 'Torus knot');
       await setControl(frame, 'Mode', 'Zones of l·h');
       await page.waitForFunction(

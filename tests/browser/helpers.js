@@ -23,9 +23,23 @@ export function countDrawCalls() {
   }
 }
 
-/** Opens a page of the served app with its draw calls counted. */
-export const open = (browser, path, size = {}) =>
-  openPage(browser, baseUrl(), path, { ...size, beforeLoad: (page) => page.evaluateOnNewDocument(countDrawCalls) });
+/** Caps the samples progressive views refine to (sampleTarget in src/core/framework/debug-hooks.js). */
+function capSamples(n) {
+  globalThis.__shadingLab = { ...globalThis.__shadingLab, maxSamples: n };
+}
+
+/**
+ * Opens a page of the served app with its draw calls counted. `maxSamples` caps its progressive views, for a test
+ * that reads a picture exact from its first samples and would otherwise wait (untilIdle) for it to converge.
+ */
+export const open = (browser, path, { maxSamples, ...size } = {}) =>
+  openPage(browser, baseUrl(), path, {
+    ...size,
+    beforeLoad: async (page) => {
+      await page.evaluateOnNewDocument(countDrawCalls);
+      if (maxSamples) await page.evaluateOnNewDocument(capSamples, maxSamples);
+    },
+  });
 
 /** The app under a second name (localhost for 127.0.0.1): another origin, as a site embedding a widget is. */
 export const otherOrigin = () => baseUrl().replace('127.0.0.1', 'localhost');
@@ -67,24 +81,61 @@ export async function untilSteady(target, watch, { quietMs = 500, timeout = 30_0
   );
 }
 
-/** Waits for a widget instance to be registered under `key` (its name, or its prefix on a page). */
+let idleWaits = 0;
+
+/**
+ * Resolves once the page (or frame) `target` is idle for `frames` animation frames in a row: no frame a render loop
+ * asked for and no timed pause of the app (the edit's pause, the figures after a drag) still to come, as the app
+ * counts them in __shadingLab.pending (src/core/framework/debug-hooks.js). Counted in frames, not milliseconds:
+ * a loaded machine only takes longer to get there. A progressive view in sight asks for frames until it has its
+ * samples, so this also waits for it to converge. Rejects after `timeout` (long: the test's own time budget is what
+ * bounds a wait on a loaded machine).
+ */
+export async function untilIdle(target, { frames = 2, timeout = 300_000 } = {}) {
+  const token = ++idleWaits; // each wait counts its own calm frames, from 0
+  await target.waitForFunction(
+    (token, frames) => {
+      const calm = window.__idle?.token === token ? window.__idle.calm : 0;
+      const idle = globalThis.__shadingLab?.pending === 0;
+      window.__idle = { token, calm: idle ? calm + 1 : 0 };
+      return idle && calm + 1 >= frames;
+    },
+    { timeout, polling: 'raf' },
+    token,
+    frames,
+  );
+}
+
+/** Resolves after `n` more animation frames of `target`: "nothing happens meanwhile" counted in frames, not ms. */
+export const afterFrames = (target, n) =>
+  target.evaluate(
+    (n) =>
+      new Promise((done) =>
+        requestAnimationFrame(function tick() {
+          --n > 0 ? requestAnimationFrame(tick) : done();
+        }),
+      ),
+    n,
+  );
+
+/** Waits for a widget instance to be registered under `key` (its name, or its prefix on a page), then for idle. */
 export async function widget(page, key) {
-  await page.waitForFunction((k) => globalThis.__shadingLab?.widgets?.[k], { timeout: 30_000 }, key);
-  await settle(page, 400);
+  await page.waitForFunction((k) => globalThis.__shadingLab?.widgets?.[k], { timeout: 60_000 }, key);
+  await untilIdle(page);
 }
 
 /**
  * Replaces the text of a custom term's editor (the panel of `slot`) by typing, as a user does (select all, type),
- * then waits `wait` ms for the edit's pause, the compile and the redraw.
+ * then waits for idle: the edit's pause, the compile, the redraw and the checks after it.
  */
-export async function typeCode(page, slot, text, wait = 1500) {
+export async function typeCode(page, slot, text) {
   await page.click(`.custom-panel[data-slot="${slot}"] .cm-content`);
   await page.keyboard.down('Control');
   await page.keyboard.press('a');
   await page.keyboard.up('Control');
   await page.keyboard.press('Backspace');
   await page.keyboard.type(text);
-  await settle(page, wait);
+  await untilIdle(page);
 }
 
 export const getState = (page, key) => page.evaluate((k) => globalThis.__shadingLab.widgets[k].getState(), key);
@@ -121,7 +172,7 @@ export async function setControl(page, label, value, root = 'body') {
     root,
   );
   if (!ok) throw new Error(`no control "${label}" with value "${value}"`);
-  await settle(page, 400);
+  await untilIdle(page);
 }
 
 /** A screenshot of an element, as a base64 PNG. */

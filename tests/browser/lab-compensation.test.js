@@ -23,6 +23,10 @@ afterAll(async () => {
   await browser?.close();
 });
 
+// the converged reference is the claim: 128 samples a pixel in software WebGL took over a minute under a load
+// average of 26 (the wait for it below has 90 s)
+const CONVERGE_MS = 180_000;
+
 async function furnaceLab(compensation) {
   const query =
     'lab.punctual=0&lab.environment=furnace&lab.layers=specular&lab.fresnel=one&lab.alpha=1' +
@@ -70,13 +74,18 @@ describe('material lab: multiple-scattering compensation in the white furnace', 
         expect(page.errors).toEqual([]);
         await page.close();
       },
+      CONVERGE_MS,
     );
   }
 
-  it('none: the sphere stays below 1 (E = 1 − ln 2 = 0.307 head-on, in both images)', async () => {
-    const { page, approx, reference } = await furnaceLab('none');
-    expect(Math.abs(approx[0] - (1 - Math.LN2))).toBeLessThan(1e-2);
-    expect(Math.abs(reference[0] - (1 - Math.LN2))).toBeLessThan(3e-2);
-    await page.close();
-  });
+  it(
+    'none: the sphere stays below 1 (E = 1 − ln 2 = 0.307 head-on, in both images)',
+    async () => {
+      const { page, approx, reference } = await furnaceLab('none');
+      expect(Math.abs(approx[0] - (1 - Math.LN2))).toBeLessThan(1e-2);
+      expect(Math.abs(reference[0] - (1 - Math.LN2))).toBeLessThan(3e-2);
+      await page.close();
+    },
+    CONVERGE_MS,
+  );
 });

@@ -8,7 +8,7 @@ import { mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { launchBrowser, open, settle, widget } from './helpers.js';
+import { launchBrowser, open, untilIdle, widget } from './helpers.js';
 import { writeMerl } from '../../src/measured/merl.js';
 import { modelBRDF } from '../../src/measured/fit.js';
 import { EXAMPLES } from '../../src/widgets/measured-brdf/model.js';
@@ -64,7 +64,7 @@ const readReference = () =>
   );
 const setAndConverge = async (state) => {
   await page.evaluate((s) => globalThis.__shadingLab.widgets.lab.update(s), state);
-  await settle(page, 1000);
+  await untilIdle(page);
   await converged();
 };
 
@@ -142,7 +142,7 @@ describe('material lab: a measured BRDF (a MERL file written from GGX) against t
 
   it('the split sum says it has no form for a table; no console errors', async () => {
     await page.evaluate(() => globalThis.__shadingLab.widgets.lab.update({ envMethod: 'split-sum' }));
-    await settle(page, 1500);
+    await untilIdle(page);
     const notes = await page.$eval('.lab-notes', (e) => e.textContent);
     expect(notes).toMatch(/Measured BRDF \(synthetic-ggx\.binary\): the reference integrates the table itself/);
     expect(notes).toMatch(/The split sum has no form for a table/);

@@ -6,7 +6,7 @@ import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { getState, launchBrowser, open, settle, shot, widget, withPixels } from './helpers.js';
+import { getState, launchBrowser, open, shot, untilIdle, widget, withPixels } from './helpers.js';
 import { parseMerl, writeMerl } from '../../src/measured/merl.js';
 import { modelBRDF } from '../../src/measured/fit.js';
 import { EXAMPLES, THETA_H_DEG, measuredNdfSlice } from '../../src/widgets/measured-brdf/model.js';
@@ -69,7 +69,7 @@ describe('a synthetic MERL file picked on the BRDF page', () => {
   );
 
   it('the lobe plot shows the three measured channels and the overlaid fit', async () => {
-    await settle(page, 500);
+    await untilIdle(page);
     const label = await page.$$eval('.widget-measured-brdf figure.plot', (figs) =>
       figs.map((f) => f.querySelector('canvas')?.getAttribute('aria-label') ?? ''),
     );
@@ -103,7 +103,7 @@ describe('a synthetic MERL file picked on the BRDF page', () => {
       // no channel clips
       await page.evaluate(() => globalThis.__shadingLab.widgets.measured.update({ exposure: 0.05 }));
       await page.$eval('.measured-spheres', (e) => e.scrollIntoView());
-      await settle(page, 1500);
+      await untilIdle(page);
       await page.addStyleTag({ content: '.measured-spheres .sphere-labels { display: none; }' });
       const png = await shot(page, '.measured-spheres canvas');
       const brightest = await withPixels(page, png, (image) => {
@@ -127,7 +127,7 @@ describe('a synthetic MERL file picked on the BRDF page', () => {
 
   it('"load this fit into BRDF lobe" sets brdf-lobe to ABC with Cook-Torrance V and the mean f0', async () => {
     await page.click('.measured-fits button[data-model="abc"][data-target="lobe"]');
-    await settle(page, 800);
+    await untilIdle(page);
     const lobe = await getState(page, 'lobe');
     expect(lobe.D).toBe('abc');
     expect(lobe.V).toBe('cookTorrance');

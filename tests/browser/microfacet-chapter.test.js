@@ -6,8 +6,8 @@ import {
   open,
   redAt,
   setControl,
-  settle,
   shot,
+  untilIdle,
   untilSteady,
   widget,
   withPixels,
@@ -83,7 +83,7 @@ describe('ndf-explorer', () => {
     // the probe: hover the middle of the third sphere (GGX)
     const box = await (await page.$('.sphere-grid canvas')).boundingBox();
     await page.mouse.move(box.x + box.width * 0.5, box.y + box.height * 0.5);
-    await settle(page, 200);
+    await untilIdle(page);
     expect(await page.$eval('.widget-ndf-explorer .probe', (el) => el.textContent)).toMatch(
       /GGX.*n·v1\.0000.*D\(n·h\)/s,
     );
@@ -140,7 +140,7 @@ describe('visibility-explorer, the axes and the spheres’ note', () => {
     const changed = await shot(page, plotCanvas);
     const fresh = await open(browser, 'embed.html?w=visibility-explorer&config=mirror');
     await widget(fresh, 'visibility-explorer');
-    await settle(fresh, 400);
+    await untilIdle(fresh);
     expect(changed).toBe(await shot(fresh, plotCanvas));
     expect(await page.$eval('.widget-visibility-explorer .rim-note', (el) => el.textContent)).toMatch(
       /^What to look for: the lit side.*Cook–Torrance \+\d+%/,

@@ -1,8 +1,8 @@
 // The rendering chapter in a real Chromium: the material lab's images read back from the canvas against the
 // talk's definitions (c_light, the white furnace), importance sampling converging on the reference, and
 // environment files checked before they are used.
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { baseUrl, getState, launchBrowser, open, settle, shot, widget, withPixels } from './helpers.js';
+import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
+import { baseUrl, getState, launchBrowser, open, shot, untilIdle, widget, withPixels } from './helpers.js';
 import { openPage } from './harness.js';
 import { linearToSrgb, srgbToLinear } from '../../src/math/color.js';
 import { diffuseOrenNayar } from '../../src/math/diffuse.js';
@@ -19,6 +19,9 @@ const RES = 192; // the lab's image size (src/widgets/material-lab/material-lab.
 /** The centre of the lab texel that holds sphere point [x, y]: the image shows each texel's own normal. */
 const texelCentre = (points) =>
   points.map((p) => p.map((c) => ((Math.floor((c / (2 * EXTENT) + 0.5) * RES) + 0.5) / RES - 0.5) * 2 * EXTENT));
+// the lab's Monte Carlo references converge in software WebGL: over 60 s a test under a load average of 28
+vi.setConfig({ testTimeout: 240_000 });
+
 let browser;
 beforeAll(async () => {
   browser = await launchBrowser();
@@ -214,7 +217,7 @@ describe('material lab', () => {
       );
       const errorOf = async (method) => {
         await page.evaluate((m) => globalThis.__shadingLab.widgets.lab.update({ areaMethod: m }), method);
-        await settle(page, 600);
+        await untilIdle(page);
         return page.evaluate(() => globalThis.__shadingLab.widgets.lab.getStats().relative);
       };
       const representative = await errorOf('representative');
@@ -347,7 +350,7 @@ describe('material lab', () => {
       const albedo = ([a, b], f0) => (f0 === null ? a + b : f0 * a + b);
       for (const c of cases) {
         await page.evaluate((s) => globalThis.__shadingLab.widgets.lab.update(s), c.state);
-        await settle(page, 300);
+        await untilIdle(page);
         await converged(page);
         const got = await texels(page, 'approx', spots);
         nvs.forEach((nv, k) => {
@@ -412,7 +415,7 @@ describe('material lab', () => {
       const shown = {};
       for (const ndf of ['ggx', 'beckmann']) {
         await page.evaluate((ndf) => globalThis.__shadingLab.widgets.lab.update({ ndf }), ndf);
-        await settle(page, 300);
+        await untilIdle(page);
         await converged(page);
         const got = await texels(page, 'approx', spots);
         shown[ndf] = spots.map((spot, k) => {
@@ -473,7 +476,7 @@ describe('material lab', () => {
       await page.$eval('[data-prefix="models"]', (el) => el.scrollIntoView());
       await done('models');
       await page.evaluate(() => window.scrollTo(0, 0));
-      await settle(page, 500);
+      await untilIdle(page);
       await converged(page);
       const [centre] = await radianceAt(page, 0, texelCentre([[0, 0]]));
       for (const c of centre) expect(Math.abs(c - 0.5)).toBeLessThanOrEqual(step(0.5) + 1e-3);

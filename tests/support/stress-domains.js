@@ -70,7 +70,7 @@ const TERM_RANGE = { fresnel: ZERO_TO_ONE, ndf: NON_NEGATIVE, visibility: NON_NE
 /**
  * A term's stress inputs: each argument over its list, or, for a term that reads directions of the microfacet
  * input (an anisotropic lobe's hx … vz), the tuples of the directions above (DIRS, unit) and its other arguments.
- * @param {import('../src/math/catalogue/types.js').TermEntry} term
+ * @param {import('../../src/math/catalogue/types.js').TermEntry} term
  */
 function termStress(term) {
   const values = (arg) => {

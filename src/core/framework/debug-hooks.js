@@ -24,6 +24,10 @@
 /**
  * @typedef {object} ShadingLabHooks
  * @property {number} frames  frames the render loops have drawn, all views together
+ * @property {number} [maxSamples]  a cap on the samples progressive views refine to (sampleTarget), seeded by a
+ *   test before the page loads where it needs a picture drawn, not converged
+ * @property {number} pending  work asked for and not yet done: animation frames the render loops requested and
+ *   the app's timed pauses (requestFrame, later); 0 when the page is idle (a test waits for it instead of a time)
  * @property {Record<string, import('./types.js').Widget>} widgets  mounted widgets, by prefix or else name
  * @property {TourHook} [tour]
  * @property {ExerciseHook} [exercise]
@@ -39,6 +43,7 @@ function hooks() {
   const global = /** @type {{ __shadingLab?: Partial<ShadingLabHooks> }} */ (globalThis);
   const lab = (global.__shadingLab ??= {});
   lab.frames ??= 0;
+  lab.pending ??= 0;
   lab.widgets ??= {};
   return /** @type {ShadingLabHooks} */ (lab);
 }
@@ -80,4 +85,68 @@ export function mountedWidget(key) {
  */
 export function publish(name, value) {
   hooks()[name] = value;
+}
+
+// Work under way, by kind: the ids of requestAnimationFrame and setTimeout are counted apart (they may coincide).
+const waiting = { frames: new Set(), timers: new Set() };
+const publishPending = () => {
+  hooks().pending = waiting.frames.size + waiting.timers.size;
+};
+
+/**
+ * requestAnimationFrame, counted in `pending` until the callback runs (a render loop's next frame).
+ * @param {FrameRequestCallback} callback
+ * @returns {number}
+ */
+export function requestFrame(callback) {
+  const id = requestAnimationFrame((time) => {
+    waiting.frames.delete(id);
+    publishPending();
+    callback(time);
+  });
+  waiting.frames.add(id);
+  publishPending();
+  return id;
+}
+
+/** @param {number} id  from requestFrame */
+export function cancelFrame(id) {
+  cancelAnimationFrame(id);
+  waiting.frames.delete(id);
+  publishPending();
+}
+
+/**
+ * setTimeout, counted in `pending` until the callback runs: a pause the app waits out before it acts (an edit's
+ * pause in typing, the figures after a drag), which a test waits out through `pending` rather than by a time.
+ * @param {() => void} callback
+ * @param {number} ms
+ * @returns {number}
+ */
+export function later(callback, ms) {
+  const id = setTimeout(() => {
+    waiting.timers.delete(id);
+    publishPending();
+    callback();
+  }, ms);
+  waiting.timers.add(id);
+  publishPending();
+  return id;
+}
+
+/** @param {number | undefined} id  from later */
+export function cancelLater(id) {
+  if (id === undefined) return;
+  clearTimeout(id);
+  waiting.timers.delete(id);
+  publishPending();
+}
+
+/**
+ * The samples a progressive view refines to: `wanted`, or `maxSamples` if a test seeded a lower cap.
+ * @param {number} wanted
+ */
+export function sampleTarget(wanted) {
+  const cap = hooks().maxSamples;
+  return typeof cap === 'number' && cap > 0 ? Math.min(wanted, cap) : wanted;
 }

@@ -3,6 +3,7 @@
 // aria-label that is rewritten whenever the picture changes; each widget also has one visually hidden
 // live region that reads out a short summary after the state settles (not on every step of a drag).
 import { offerSave } from './save-view.js';
+import { cancelLater, later } from './debug-hooks.js';
 
 /**
  * Marks `canvas` as an image, sets its text description and offers to save it as PNG (save-view.js), unless
@@ -30,7 +31,7 @@ export function createLiveRegion(parent) {
   region.setAttribute('role', 'status');
   region.setAttribute('aria-live', 'polite');
   parent.append(region);
-  /** @type {ReturnType<typeof setTimeout> | undefined} */
+  /** @type {number | undefined} */
   let timer;
   /** @type {string | null} */
   let pending = null;
@@ -44,13 +45,13 @@ export function createLiveRegion(parent) {
         region.textContent = text; // the first description is there at once (read with the widget)
         return;
       }
-      clearTimeout(timer);
-      timer = setTimeout(() => {
+      cancelLater(timer);
+      timer = later(() => {
         if (region.textContent !== pending) region.textContent = pending;
       }, SETTLE_MS);
     },
     dispose() {
-      clearTimeout(timer);
+      cancelLater(timer);
     },
   };
 }

@@ -6,7 +6,7 @@
 // createSettledTask: work a change needs but no frame waits for (figures shown as words and numbers), done once
 // the changes pause, so that a drag's frames come first and the last state's figures are still exact.
 
-import { countFrame } from './debug-hooks.js';
+import { cancelFrame, cancelLater, countFrame, later, requestFrame } from './debug-hooks.js';
 
 export function createRenderLoop(element, draw, ready = () => true) {
   let dirty = false;
@@ -22,7 +22,7 @@ export function createRenderLoop(element, draw, ready = () => true) {
     draw();
   };
   const schedule = () => {
-    if (dirty && !scheduled && canDraw()) scheduled = requestAnimationFrame(frame);
+    if (dirty && !scheduled && canDraw()) scheduled = requestFrame(frame);
   };
 
   const observer = new IntersectionObserver((entries) => {
@@ -39,7 +39,7 @@ export function createRenderLoop(element, draw, ready = () => true) {
     },
     /** Draws a pending frame at once (a resize clears the canvas: redrawn before it is painted, never blank). */
     drawNow() {
-      if (scheduled) cancelAnimationFrame(scheduled);
+      if (scheduled) cancelFrame(scheduled);
       frame();
     },
     get inView() {
@@ -48,7 +48,7 @@ export function createRenderLoop(element, draw, ready = () => true) {
     dispose() {
       observer.disconnect();
       document.removeEventListener('visibilitychange', schedule);
-      if (scheduled) cancelAnimationFrame(scheduled);
+      if (scheduled) cancelFrame(scheduled);
     },
   };
 }
@@ -59,10 +59,10 @@ export function createRenderLoop(element, draw, ready = () => true) {
  * @param {() => void} run
  */
 export function createSettledTask(run, { quietMs = 120, maxWaitMs = 500 } = {}) {
-  let timer = 0;
+  let timer;
   let pendingSince = null; // when the oldest change not yet run came
   const fire = () => {
-    clearTimeout(timer);
+    cancelLater(timer);
     pendingSince = null;
     run();
   };
@@ -70,14 +70,14 @@ export function createSettledTask(run, { quietMs = 120, maxWaitMs = 500 } = {}) 
     schedule() {
       const now = performance.now();
       pendingSince ??= now;
-      clearTimeout(timer);
-      timer = setTimeout(fire, Math.max(0, Math.min(quietMs, pendingSince + maxWaitMs - now)));
+      cancelLater(timer);
+      timer = later(fire, Math.max(0, Math.min(quietMs, pendingSince + maxWaitMs - now)));
     },
     flush() {
       if (pendingSince !== null) fire();
     },
     cancel() {
-      clearTimeout(timer);
+      cancelLater(timer);
       pendingSince = null;
     },
   };

@@ -3,7 +3,7 @@
 // widgets can share one page), and exposes it for tests and parent pages. The widgets come from the registry
 // the page hands in (src/widgets/registry.js): the framework itself imports no widget.
 import { stateToParams } from './state.js';
-import { registerWidget } from './debug-hooks.js';
+import { cancelLater, later, registerWidget } from './debug-hooks.js';
 
 /** @typedef {import('./types.js').WidgetRegistry} WidgetRegistry */
 /** @typedef {import('./types.js').Widget} Widget */
@@ -85,7 +85,7 @@ export async function mountWidget(
   const { widget } = await widgets[name].load();
   // the page's URL carries this widget's state (under this prefix): its Share can link to the page as it is
   if (syncUrl) container.dataset.stateInUrl = prefix;
-  /** @type {ReturnType<typeof setTimeout> | undefined} */
+  /** @type {number | undefined} */
   let timer;
   const instance = widget.create(container, state ?? { ...initialState, ...widgetParams(location.search, prefix) }, {
     ...options,
@@ -93,8 +93,8 @@ export async function mountWidget(
     onStateChange(next) {
       onStateChange?.(next);
       if (!syncUrl) return;
-      clearTimeout(timer);
-      timer = setTimeout(() => writeUrl(widget.schema, next, prefix), 120);
+      cancelLater(timer);
+      timer = later(() => writeUrl(widget.schema, next, prefix), 120);
     },
   });
   registerWidget(prefix || name, instance);

@@ -12,6 +12,7 @@ import { sliderValues } from '../custom/custom-panel-run.js';
 import { EDIT_DELAY_MS } from '../custom/custom-panel-delay.js';
 import { createSliders } from './custom-panel-sliders.js';
 import { createChecksView } from './custom-panel-checks.js';
+import { cancelLater, later } from '../framework/debug-hooks.js';
 
 /** @typedef {import('../custom/custom-panel-run.js').RunStatus} RunStatus */
 
@@ -104,8 +105,8 @@ export function createCustomPanel(container, { slotKey, code, title, getRenderer
     doc: code,
     label: `${title}: GLSL of ${slot.signature}`,
     onChange: (text) => {
-      clearTimeout(pendingEdit);
-      pendingEdit = window.setTimeout(() => {
+      cancelLater(pendingEdit);
+      pendingEdit = later(() => {
         pendingEdit = 0;
         lastSent = text;
         trustCode(text); // typed here: runs at once, and again after a reload of this link
@@ -131,8 +132,8 @@ export function createCustomPanel(container, { slotKey, code, title, getRenderer
     const key = JSON.stringify([ran, values, checks.reference]);
     if (key === checksKey && !force) return;
     checksKey = key;
-    clearTimeout(checksTimer);
-    checksTimer = window.setTimeout(() => {
+    cancelLater(checksTimer);
+    checksTimer = later(() => {
       const renderer = getRenderer();
       if (!renderer || renderer.getContext().isContextLost()) return checks.show('No graphics context: no checks.');
       checks.show(runChecks(renderer, slotKey, ran, values, { reference: checks.reference }));
@@ -159,8 +160,8 @@ export function createCustomPanel(container, { slotKey, code, title, getRenderer
     },
     focus: () => editor.focus(),
     dispose() {
-      clearTimeout(pendingEdit);
-      clearTimeout(checksTimer);
+      cancelLater(pendingEdit);
+      cancelLater(checksTimer);
       editor.destroy();
       checks.dispose();
       root.remove();

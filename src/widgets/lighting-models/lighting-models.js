@@ -9,6 +9,7 @@ import { createLabView } from '../../lab/lab-view.js';
 import { METHODS, MODELS, TERMS, sky, sunSphere } from './model.js';
 import { schema } from './schema.js';
 import { ABOUT, TERMS_USED, description, tableHtml } from './words.js';
+import { sampleTarget } from '../../core/framework/debug-hooks.js';
 
 export { MODELS, schema };
 
@@ -42,7 +43,7 @@ export function createLightingModels(container, initialState = {}, { onStateChan
       lab.resetReference();
       refKey = key;
     }
-    if (lab.batches * REFERENCE_BATCH < Number(st.refSamples)) {
+    if (lab.batches * REFERENCE_BATCH < sampleTarget(Number(st.refSamples))) {
       lab.accumulate(scene({ env: sky, sphere: sunSphere }, 'sky-no-sun'));
       again();
     }
@@ -79,7 +80,7 @@ export function createLightingModels(container, initialState = {}, { onStateChan
     update,
     getState: () => shell.state,
     getResults: () => results.map(({ key, name, rms, relative, ms }) => ({ key, name, rms, relative, ms })),
-    getProgress: () => ({ frame: samples, target: Number(shell.state.refSamples) }),
+    getProgress: () => ({ frame: samples, target: sampleTarget(Number(shell.state.refSamples)) }),
     get canvas() {
       return view.canvas;
     },

@@ -4,6 +4,7 @@
 // asked for in each frame: the code that last ran well, with its sliders.
 import { REFERENCE_BATCH } from '../../lab/lab-renderer.js';
 import { sceneOf } from './model.js';
+import { sampleTarget } from '../../core/framework/debug-hooks.js';
 
 /**
  * `state()` the widget's state, `measured()` the measured table in use or null, `custom(state)` the user's BRDF
@@ -39,7 +40,7 @@ export function createLabFrame({ state, measured, custom, file, show }) {
       lab.resetReference();
       refKey = keys.reference;
     }
-    const target = Number(st.refSamples);
+    const target = sampleTarget(Number(st.refSamples));
     if (lab.batches < target / REFERENCE_BATCH) {
       lab.accumulate(scene);
       again();

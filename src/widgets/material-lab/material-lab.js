@@ -15,6 +15,7 @@ import { WHITE_LAMBERT_HEAD_ON, missingFile } from './model.js';
 import { schema } from './schema.js';
 import { createReadout } from './views.js';
 import { ABOUT, NOTICES, TERMS_USED, captions, description, readoutHtml } from './words.js';
+import { sampleTarget } from '../../core/framework/debug-hooks.js';
 
 export { schema };
 
@@ -81,7 +82,7 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
     getStats: () => lab.stats,
     /** The measured table in use ({ name, fit }: fit null until the GGX fit is in), or null. */
     getMeasured: () => (measured.current ? { name: measured.current.name, fit: measured.current.fit } : null),
-    getProgress: () => ({ frame: lab.stats?.samples ?? 0, target: Number(shell.state.refSamples) }),
+    getProgress: () => ({ frame: lab.stats?.samples ?? 0, target: sampleTarget(Number(shell.state.refSamples)) }),
     /** Renders the approximation `runs` times and keeps the median time (stats.timingRuns says when it is done). */
     remeasure(runs) {
       lab.remeasure(runs);

@@ -7,6 +7,7 @@ import { createProgramCache } from '../../core/gpu/program-cache.js';
 import { floatTarget } from '../../core/gpu/gpu-sum.js';
 import { buildShader } from '../../core/gpu/shader-builder.js';
 import { cellLayout, cellsFor } from './model.js';
+import { sampleTarget } from '../../core/framework/debug-hooks.js';
 
 const TRACE_MAX_WIDTH = 480; // pixels across that are path traced; the display scales them up
 
@@ -99,7 +100,8 @@ export function createGlassesView(container, getState) {
     display.uniforms.uSize.value.copy(canvasSize);
     pass.render(renderer, display, null);
     frame++;
-    if (frame < Number(getState().samples)) viewport.invalidate(); // a running animation: refine until done, then idle
+    // a running animation: refine until done, then idle
+    if (frame < sampleTarget(Number(getState().samples))) viewport.invalidate();
   };
   const viewport = createViewport(container, {
     label: 'Glasses of a medium in front of a chequered wall',

@@ -7,6 +7,7 @@ import { schema, TERMS_USED } from './schema.js';
 import { ABOUT, TITLE, describeMedia } from './words.js';
 import { createGlassesView } from './glasses-view.js';
 import { createTransmittancePlot } from './transmittance-plot.js';
+import { sampleTarget } from '../../core/framework/debug-hooks.js';
 
 export { schema };
 
@@ -41,7 +42,7 @@ export function create(container, initialState = {}, { onStateChange, locked } =
   return {
     update,
     getState: () => shell.state,
-    getProgress: () => ({ frame: glasses.frames(), target: Number(shell.state.samples) }),
+    getProgress: () => ({ frame: glasses.frames(), target: sampleTarget(Number(shell.state.samples)) }),
     dispose() {
       plot.dispose();
       glasses.dispose();
