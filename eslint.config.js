@@ -35,9 +35,6 @@ const refuse = ({ room, may }) => ({
     },
   ],
 });
-// Let off until merlCoordinates (index arithmetic, no file) moves from src/measured/merl.js to src/math: the parity
-// cases' MERL rows read it.
-const GPU_READS_MEASURED = 'src/core/gpu/parity-cases.js';
 
 export default [
   { ignores: ['dist/**', 'node_modules/**', 'public/**', 'docs/**', 'bench/results/**', '**/*.data.js'] },
@@ -72,13 +69,8 @@ export default [
   },
   ...ROOMS.slice(1).map((r) => ({
     files: [`${r.files}/**/*.js`],
-    ignores: r.room === 'gpu' ? [GPU_READS_MEASURED] : [],
     rules: { 'no-restricted-imports': ['error', refuse(r)] },
   })),
-  {
-    files: [GPU_READS_MEASURED],
-    rules: { 'no-restricted-imports': ['error', refuse({ room: 'gpu', may: ['math', 'measured'] })] },
-  },
   {
     // the test hooks have one owner; the rest of the app calls its functions
     files: ['src/**/*.js'],

@@ -8,29 +8,15 @@
 // (BRDFRead.cpp truncates): theta_h = (i/90)² · 90°, theta_d = j°, phi_d = k°. phi_d covers [0°, 180°)
 // only: reciprocity makes f(phi_d + 180°) = f(phi_d).
 import { directionsFromHalfDiff, halfDiffFromDirections } from '../math/half-diff.js';
+import { MERL_DIMS, MERL_SAMPLES, merlCoordinates, merlIndex, merlNodeAngles } from '../math/merl-coordinates.js';
 
-export const MERL_DIMS = Object.freeze([90, 90, 180]);
+export { MERL_DIMS, MERL_SAMPLES, merlCoordinates, merlIndex, merlNodeAngles };
+
 export const MERL_SCALE = Object.freeze([1 / 1500, 1.15 / 1500, 1.66 / 1500]);
-export const MERL_SAMPLES = MERL_DIMS[0] * MERL_DIMS[1] * MERL_DIMS[2];
 const HEADER_BYTES = 12;
 export const MERL_BYTES = HEADER_BYTES + 3 * 8 * MERL_SAMPLES; // 34,992,012
 const [NH, ND, NP] = MERL_DIMS;
-const HALF_PI = Math.PI / 2;
 const BIG_CLAIM = 2 ** 30; // a header claiming more than this many bytes is refused before anything else
-
-/** The table index of node (i, j, k): theta_h, theta_d, phi_d. */
-export const merlIndex = (i, j, k) => (i * ND + j) * NP + k;
-
-/** The angles (radians) of node (i, j, k). */
-export function merlNodeAngles(i, j, k) {
-  return { thetaH: (i / NH) ** 2 * HALF_PI, thetaD: (j / ND) * HALF_PI, phiD: (k / NP) * Math.PI };
-}
-
-/** Continuous node coordinates of (theta_h, theta_d, phi_d): the reference's indices before truncation. */
-export function merlCoordinates(thetaH, thetaD, phiD) {
-  const p = phiD < 0 ? phiD + Math.PI : phiD; // reciprocity, as BRDFRead.cpp
-  return [Math.sqrt(Math.max(thetaH, 0) / HALF_PI) * NH, (thetaD / HALF_PI) * ND, (p / Math.PI) * NP];
-}
 
 const GB = (bytes) => `${(bytes / 1e9).toFixed(1)} GB`;
 

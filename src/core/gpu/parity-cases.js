@@ -5,7 +5,7 @@ import * as M from '../../math/index.js';
 import { CATALOGUE, termDefines } from '../../math/catalogue/index.js';
 import { termInputs } from '../../math/catalogue/grids.js';
 import { dispatchParityCases } from './parity-cases/dispatch-cases.js';
-import { merlCoordinates } from '../../measured/merl.js';
+import { merlCoordinates } from '../../math/merl-coordinates.js';
 import { buildAlbedoTableGGX, albedoLossTableGGX } from '../../math/albedo-table.js';
 import { ANISOTROPIC_PARITY_CASES } from './parity-cases/anisotropic.js';
 import { F82_TINT_PARITY_CASES } from './parity-cases/f82-tint.js';
