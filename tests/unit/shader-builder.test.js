@@ -42,11 +42,11 @@ describe('the shader builder', () => {
       );
   });
 
-  it('is the only place in src that makes a three.js ShaderMaterial (parity.js: its harness, to move)', () => {
+  it('is the only place in src that makes a three.js ShaderMaterial (the parity harness too)', () => {
     const makers = sources('src')
       .filter((file) => /new THREE\.(Raw)?ShaderMaterial\(/.test(readFileSync(file, 'utf8')))
       .map((file) => file.replaceAll('\\', '/'));
-    expect(makers.sort()).toEqual(['src/core/gpu/parity.js', 'src/core/gpu/shader-builder.js']);
+    expect(makers).toEqual(['src/core/gpu/shader-builder.js']);
   });
 });
 

@@ -6,6 +6,7 @@ import { assembleGlsl } from './glsl.js';
 import { SHADER_CHUNKS } from './shader-chunks.js';
 import { floatTarget } from './gpu-sum.js';
 import { createFullscreenPass } from './fullscreen-pass.js';
+import { buildShader } from './shader-builder.js';
 import { TOLERANCE } from './parity-cases.js';
 
 const WIDTH = 256;
@@ -64,15 +65,13 @@ export function evaluateOnGpu(renderer, testCase) {
   const input = inputTexture(testCase);
   const tables = Object.entries(testCase.tables ?? {}).map(([name, table]) => [name, tableTexture(table())]);
   const extra = Object.entries(testCase.uniforms ?? {}).map(([name, value]) => [name, { value }]);
-  const material = new THREE.ShaderMaterial({
-    glslVersion: THREE.GLSL3,
+  const material = buildShader('parity.frag.glsl', {
+    source: parityFragment(testCase),
     uniforms: {
       ...Object.fromEntries(extra),
       uArgs: { value: input },
       ...Object.fromEntries(tables.map(([name, t]) => [name, { value: t }])),
     },
-    vertexShader: SHADER_CHUNKS['fullscreen.vert.glsl'],
-    fragmentShader: parityFragment(testCase),
   });
   const target = floatTarget(WIDTH, height);
   const pass = createFullscreenPass();
