@@ -5,7 +5,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { launchBrowser, open } from './helpers.js';
+import { allowDownloads, launchBrowser, open } from './helpers.js';
 import { readProgressFile } from '../../src/exercises/progress.js';
 
 // Lo = π (cdiff/π) c_light cos θ = 2 · cos 60° = 1 (docs/exercises.md, lambert-radiance)
@@ -40,8 +40,7 @@ describe('a progress file on the exercises page', { timeout: 120_000 }, () => {
   it('saves the progress to a file, and brings it back after a reset', async () => {
     const src = encodeURIComponent(`data:application/json,${JSON.stringify(SET)}`);
     const page = await open(browser, `exercises.html?src=${src}`);
-    const cdp = await page.createCDPSession();
-    await cdp.send('Browser.setDownloadBehavior', { behavior: 'allow', downloadPath: dir });
+    await allowDownloads(page, dir);
     await page.waitForFunction(() => globalThis.__shadingLab?.exercise?.ready, { timeout: 30_000 });
     await page.type('#exercise-answer', '1');
     await page.click('.exercise-check');

@@ -213,3 +213,17 @@ export function redAt(page, png, points) {
       `fy]) => image.data[(Math.round(image.height * fy) * image.width + Math.round(image.width * fx)) * 4])`,
   );
 }
+
+/**
+ * Lets `page` download into `dir`. A test file's pages live in a browser context of their own (harness.js), and
+ * Chromium applies a download behaviour to the default context unless it is named.
+ */
+export async function allowDownloads(page, dir) {
+  const cdp = await page.createCDPSession();
+  const browserContextId = page.browserContext().id;
+  await cdp.send('Browser.setDownloadBehavior', {
+    behavior: 'allow',
+    downloadPath: dir,
+    ...(browserContextId ? { browserContextId } : {}),
+  });
+}

@@ -6,7 +6,7 @@ import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { launchBrowser, open, settle, widget } from './helpers.js';
+import { allowDownloads, launchBrowser, open, settle, widget } from './helpers.js';
 
 let browser;
 let page;
@@ -15,8 +15,7 @@ beforeAll(async () => {
   browser = await launchBrowser();
   dir = mkdtempSync(join(tmpdir(), 'shading-lab-save-'));
   page = await open(browser, 'embed.html?w=brdf-lobe');
-  const cdp = await page.createCDPSession();
-  await cdp.send('Browser.setDownloadBehavior', { behavior: 'allow', downloadPath: dir });
+  await allowDownloads(page, dir);
   await widget(page, 'brdf-lobe');
   await settle(page, 1500);
 });
