@@ -1,5 +1,5 @@
 // Helpers for the browser tests: pick lil-gui controls by label, read a widget, count WebGL draw calls.
-import { inject } from 'vitest';
+import { expect, inject } from 'vitest';
 import { launchBrowser, openPage, settle } from './harness.js';
 
 export const baseUrl = () => inject('baseUrl');
@@ -226,4 +226,17 @@ export async function allowDownloads(page, dir) {
     downloadPath: dir,
     ...(browserContextId ? { browserContextId } : {}),
   });
+}
+
+/**
+ * The page that `click()` opens (a new tab whose address holds `fragment`), found among the context's pages by
+ * polling: no target event to miss while the tab is created and then navigates.
+ */
+export async function pageOpenedBy(browser, click, fragment, { timeout = 60_000 } = {}) {
+  const before = new Set(await browser.pages());
+  await click();
+  let opened;
+  const find = async () => (opened = (await browser.pages()).find((p) => !before.has(p) && p.url().includes(fragment)));
+  await expect.poll(find, { timeout, interval: 250 }).toBeTruthy();
+  return /** @type {import('puppeteer-core').Page} */ (opened);
 }
