@@ -46,7 +46,10 @@ ${list}
 `;
 }
 
-/** The launch page: it opens the set in exercises.html in package mode (no script: the app's CSP allows none). */
+/**
+ * The launch page: it opens the set in exercises.html in package mode (no script: the app's CSP allows none). Its
+ * icon is the package's own: without one the browser asks the server's root for /favicon.ico, outside the package.
+ */
 export function launchPage({ title, set }) {
   const url = `exercises.html?scorm=1&src=${encodeURIComponent(set)}`;
   return `<!doctype html>
@@ -55,6 +58,7 @@ export function launchPage({ title, set }) {
     <meta charset="utf-8" />
     <meta http-equiv="Content-Security-Policy" content="default-src 'self'" />
     <meta http-equiv="refresh" content="0; url=${escapeXml(url)}" />
+    <link rel="icon" href="favicon.svg" type="image/svg+xml" />
     <title>${escapeXml(title)}</title>
   </head>
   <body>
