@@ -129,7 +129,9 @@ class FileBrowser {
       const res = await fetch(this.#endpoint);
       if (!res.ok) throw new Error(`no shared Chromium: ${await res.text()}`);
       try {
-        this.#browser = await puppeteer.connect({ browserWSEndpoint: await res.text() });
+        // a wait in the page (waitForFunction: a reference converging) is one DevTools call: on a loaded machine it
+        // outlasts puppeteer's 180 s for a call, and the test's own time budget is what should bound it
+        this.#browser = await puppeteer.connect({ browserWSEndpoint: await res.text(), protocolTimeout: 600_000 });
         return this.#browser;
       } catch (error) {
         // a Chromium that has just gone away may still be handed out, until the broker sees its connection drop

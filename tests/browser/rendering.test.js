@@ -3,7 +3,7 @@
 // environment files checked before they are used.
 import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
 import { baseUrl, getState, launchBrowser, open, shot, untilIdle, widget, withPixels } from './helpers.js';
-import { openPage } from './harness.js';
+import { openPage, SMALL_VIEWPORT } from './harness.js';
 import { linearToSrgb, srgbToLinear } from '../../src/math/color.js';
 import { diffuseOrenNayar } from '../../src/math/diffuse.js';
 import { lightDirFromAngles } from '../../src/math/angles.js';
@@ -30,6 +30,10 @@ afterAll(async () => {
   await browser?.close();
 });
 
+const FIRST_BATCH = { maxSamples: 8 }; // REFERENCE_BATCH of src/lab/lab-renderer.js
+/** Scrolls the lab into view, where it draws (in a small window the chapter's opening words fill the first screen). */
+const showLab = (page) =>
+  page.waitForSelector('.widget-material-lab').then((lab) => lab.evaluate((el) => el.scrollIntoView()));
 const converged = (page) =>
   page.waitForFunction(
     () => {
@@ -39,8 +43,15 @@ const converged = (page) =>
     { timeout: 90_000 },
   );
 
-async function openLab(query) {
-  const page = await open(browser, `rendering.html?${query}`, { width: 1200, height: 900 });
+/**
+ * Opens the lab on the rendering page and waits for its reference to have its samples. The lab's images are
+ * 192 × 192 whatever the window, so a small one (SwiftShader draws the display's pixels on the CPU). A test that
+ * reads only the approximation, or a reference that is exact from its first batch, passes FIRST_BATCH: the
+ * reference then stops at one batch (sampleTarget in debug-hooks.js) instead of converging for nothing.
+ */
+async function openLab(query, { maxSamples } = {}) {
+  const page = await open(browser, `rendering.html?${query}`, { ...SMALL_VIEWPORT, maxSamples });
+  await showLab(page);
   await widget(page, 'lab');
   await converged(page);
   return page;
@@ -133,6 +144,7 @@ describe('material lab', () => {
       const page = await openLab(
         `lab.env=0&lab.punctual=1&lab.lightTheta=0&lab.cLight=${cLight}` +
           '&lab.layers=diffuse&lab.diffuse=ffffff&lab.refSamples=128',
+        FIRST_BATCH, // a punctual light alone: the reference is exact from its first batch (lab-reference.glsl)
       );
       const points = texelCentre([
         [0, 0],
@@ -240,6 +252,7 @@ describe('material lab', () => {
       const page = await openLab(
         `lab.env=0&lab.punctual=1&lab.lightTheta=${theta}&lab.lightPhi=${phi}&lab.cLight=1&lab.layers=diffuse` +
           `&lab.diffuseModel=oren-nayar&lab.sigma=${sigmaDeg}&lab.diffuse=${hex.slice(1)}&lab.refSamples=128`,
+        FIRST_BATCH, // the approximation is read
       );
       const rho = hexToRgb(hex).map(srgbToLinear);
       const l = lightDirFromAngles(theta, phi);
@@ -289,6 +302,7 @@ describe('material lab', () => {
       const page = await openLab(
         `lab.punctual=0&lab.environment=furnace&lab.layers=specular&lab.f0=0.04&lab.alpha=${alpha}` +
           '&lab.envMethod=mirror&lab.refSamples=128',
+        FIRST_BATCH, // the approximation is read: no case needs its reference converged
       );
       const spots = [
         [110, 96],
@@ -388,6 +402,7 @@ describe('material lab', () => {
       const page = await openLab(
         `lab.punctual=0&lab.layers=specular&lab.fresnel=one&lab.alpha=${alpha}&lab.envMethod=split-sum` +
           '&lab.refSamples=128',
+        FIRST_BATCH, // the approximation is read
       );
       await dropFile(
         page,
@@ -453,12 +468,16 @@ describe('material lab', () => {
         'rendering.html?lab.env=0&lab.punctual=1&lab.lightTheta=0&lab.cLight=0.5&lab.layers=diffuse' +
           '&lab.diffuse=ffffff&lab.refSamples=128&models.refSamples=128',
         {
-          width: 1200,
-          height: 900,
+          ...SMALL_VIEWPORT,
+          // one context for both labs; the approximation is read, so the references stop at their first batch
           beforeLoad: (p) =>
-            p.evaluateOnNewDocument(() => (window.__shadingLabGl = { limit: 1, views: [], clock: 0, peak: 0 })),
+            p.evaluateOnNewDocument(() => {
+              window.__shadingLabGl = { limit: 1, views: [], clock: 0, peak: 0 };
+              globalThis.__shadingLab = { maxSamples: 8 };
+            }),
         },
       );
+      await showLab(page);
       await widget(page, 'lab');
       await converged(page);
       await page.$eval('.widget-material-lab canvas', (c) =>
@@ -475,7 +494,7 @@ describe('material lab', () => {
         );
       await page.$eval('[data-prefix="models"]', (el) => el.scrollIntoView());
       await done('models');
-      await page.evaluate(() => window.scrollTo(0, 0));
+      await showLab(page); // back to the lab
       await untilIdle(page);
       await converged(page);
       const [centre] = await radianceAt(page, 0, texelCentre([[0, 0]]));
@@ -492,6 +511,7 @@ describe('material lab', () => {
     async () => {
       const page = await openLab(
         'lab.punctual=0&lab.environment=sky&lab.layers=diffuse&lab.diffuse=ffffff&lab.refSamples=128&lab.exposure=0.5',
+        FIRST_BATCH, // the approximation is read
       );
       const drop = (name, bytes) => dropFile(page, name, bytes);
       const notices = () => page.$$eval('.widget-material-lab .notice', (els) => els.map((e) => e.textContent));
