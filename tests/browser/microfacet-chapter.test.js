@@ -3,12 +3,11 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import {
   getState,
   launchBrowser,
-  open,
+  open as openSized,
   redAt,
   setControl,
   shot,
   untilIdle,
-  untilSteady,
   widget,
   withPixels,
 } from './helpers.js';
@@ -17,6 +16,10 @@ import { albedoGGX } from '../../src/math/integrate.js';
 import { DEG } from '../../src/math/angles.js';
 import { termLabel } from '../../src/math/catalogue/index.js';
 import { ndfCurves, tailsAt } from '../../src/widgets/ndf-explorer/model.js';
+import { SMALL_VIEWPORT } from './harness.js';
+
+/** A page in a small window unless a test's pixels need a size (software WebGL's cost grows with the pixels). */
+const open = (browser, path, size = SMALL_VIEWPORT) => openSized(browser, path, size);
 
 let browser;
 beforeAll(async () => {
@@ -155,8 +158,7 @@ describe('energy (white furnace)', () => {
     // samples and sampleCount were removed: an old URL with them still loads
     const url = 'embed.html?w=energy&alphas=0.05,1.0&samples=256&sampleCount=4096';
     const page = await open(browser, url, { width: 900, height: 900 });
-    await widget(page, 'energy');
-    await untilSteady(page, 'drawCalls'); // the spheres drawn, nothing more to come
+    await widget(page, 'energy'); // and idle: the spheres drawn, no frame more asked for
     const albedos = await page.evaluate(() => globalThis.__shadingLab.widgets['energy'].getAlbedos());
     console.log(
       'albedo: ' +
@@ -182,8 +184,7 @@ describe('energy (white furnace)', () => {
       "85° (E 0.872, not 64 samples' 0.959)",
     async () => {
       const page = await open(browser, 'embed.html?w=energy&alphas=0.5', { width: 900, height: 900 });
-      await widget(page, 'energy');
-      await untilSteady(page, 'drawCalls'); // the spheres drawn, nothing more to come
+      await widget(page, 'energy'); // and idle: the spheres drawn, no frame more asked for
       const rim = rimAgainstAlbedo(await centreRow(page, await shot(page, '.sphere-grid canvas')), 0.5);
       const { at85, worst } = rim;
       console.log(
