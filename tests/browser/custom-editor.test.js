@@ -33,8 +33,9 @@ float d = nh * nh * (a2 - 1.0) + 1.0;
 return 2.0 * a2 / (PI * d * d);
 }`;
 
+/** The widget alone, in a window just wider than where its row of views folds to one column (900 px, styles.css). */
 async function openLobe(query) {
-  const page = await open(browser, `embed.html?w=${KEY}&${query}`, { width: 1100, height: 1400 });
+  const page = await open(browser, `embed.html?w=${KEY}&${query}`, { width: 960, height: 1400 });
   await widget(page, KEY);
   await page.waitForSelector('.custom-panel .cm-content', { timeout: 30_000 });
   await untilIdle(page);

@@ -1,7 +1,14 @@
 // Typeset formulas in Chromium: every chapter's formulas become MathML that the browser lays out, and a widget's
 // live formula shows the model's numbers (recomputed here from the closed form) and lights up with its controls.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { launchBrowser, open, setControl, settle, widget } from './helpers.js';
+import { afterFrames, launchBrowser, open as openLarge, setControl, untilIdle, widget } from './helpers.js';
+import { SMALL_VIEWPORT } from './harness.js';
+
+/**
+ * A page in a small window, its progressive views (the lab's reference, the media's path tracer) stopped at one batch
+ * of 8 samples (sampleTarget in debug-hooks.js): the claims here are the formulas' MathML, not the pictures.
+ */
+const open = (browser, path) => openLarge(browser, path, { ...SMALL_VIEWPORT, maxSamples: 8 });
 
 let browser;
 beforeAll(async () => {
@@ -38,7 +45,7 @@ describe('formulas', () => {
   it('visibility.html: the talk鈥檚 f = F G D / (4 (n路l)(n路v)) and V = G / ((n路l)(n路v)) as laid-out MathML', async () => {
     const page = await open(browser, 'visibility.html');
     await typeset(page);
-    await settle(page, 300);
+    await untilIdle(page);
     const first = await page.$eval('p.formula math', (m) => {
       const fracs = [...m.querySelectorAll('mfrac')];
       const text = (el) => el.textContent.replace(/\s+/g, '');
@@ -66,7 +73,7 @@ describe('formulas', () => {
   it.each(CHAPTERS)('%s.html: every formula and every widget鈥檚 live formula is laid-out MathML', async (name) => {
     const page = await open(browser, `${name}.html`);
     await typeset(page);
-    await settle(page, 300);
+    await untilIdle(page);
     const report = await formulaReport(page);
     expect(report.count).toBeGreaterThan(1);
     expect(report.refused).toEqual([]);
@@ -190,7 +197,7 @@ describe('formulas in data: a tour step鈥檚 text and an exercise鈥檚 prompt ($鈥
     expect(seen.html).toBe(0); // no element made from the prompt's text
     expect(seen.links).toEqual([]); // KaTeX, untrusted, draws \\href as an error mark, not a link
     await page.click('.exercise-prompt [data-tex]');
-    await settle(page, 200);
+    await afterFrames(page, 4); // what a click on a link would do, counted in frames
     expect(await page.evaluate(() => globalThis.__pwned)).toBeUndefined();
     expect(page.errors).toEqual([]);
     await page.close();
