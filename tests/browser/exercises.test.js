@@ -5,7 +5,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { getState, launchBrowser, open, setControl, settle } from './helpers.js';
+import { getState, launchBrowser, open, setControl, untilIdle } from './helpers.js';
 import { DEG } from '../../src/math/angles.js';
 
 let browser;
@@ -16,6 +16,19 @@ afterAll(async () => {
   await browser?.close();
 });
 
+/**
+ * Opens the exercises page in a small desktop window, just wide enough for the list beside the exercise (narrower,
+ * exercise-list.css folds it away): what is read is the grading and the controls, not the size. Every
+ * answer is typed or read from a control, none from a converged picture: the media's path tracer and the lab's
+ * reference stop at one batch of 8 samples (sampleTarget in debug-hooks.js), so that waiting for idle does not
+ * wait for them to converge.
+ */
+async function openExercises(path) {
+  const page = await open(browser, path, { width: 860, height: 640, maxSamples: 8 });
+  page.setDefaultTimeout(120_000); // each wait is for a condition; a widget's set-up can take over 30 s under load
+  return page;
+}
+
 /** Opens an exercise from the list, as a reader would, and waits for its widget (if any). */
 async function choose(page, id, { keyboard = false } = {}) {
   if (keyboard) {
@@ -24,10 +37,10 @@ async function choose(page, id, { keyboard = false } = {}) {
   } else await page.click(`#exercise-list a[href="#${id}"]`);
   await page.waitForFunction(
     (i) => globalThis.__shadingLab.exercise?.id === i && globalThis.__shadingLab.exercise.ready,
-    { timeout: 30_000 },
+    { timeout: 120_000 }, // lake-mirror's surfaces widget took over 30 s to set up under a load average of 50
     id,
   );
-  await settle(page, 300);
+  await untilIdle(page);
 }
 
 async function typeAnswer(page, text) {
@@ -49,7 +62,7 @@ const control = (page, label, value) => setControl(page, label, value, '.exercis
 
 describe('exercises', () => {
   it('solves each exercise through its controls, and grades a wrong answer wrong with what is off', async () => {
-    const page = await open(browser, 'exercises.html', { width: 1280, height: 1000 });
+    const page = await openExercises('exercises.html');
     await page.waitForSelector('#exercise-list a');
     expect(await page.$$eval('#exercise-list a', (as) => as.length)).toBe(21); // public/exercises/index.json
 
@@ -165,8 +178,7 @@ describe('exercises', () => {
     );
     page.once('dialog', (d) => d.accept());
     await page.click('.exercise-reset');
-    await settle(page, 100);
-    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 21 solved');
+    await expect.poll(() => page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 21 solved');
     await page.reload({ waitUntil: 'load' });
     await page.waitForSelector('#exercise-list a');
     expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 21 solved');
@@ -175,7 +187,7 @@ describe('exercises', () => {
   }, 240_000);
 
   it('one attempt per answer; the depth in metres; Next exercise by keyboard; the sliders beside Check', async () => {
-    const page = await open(browser, 'exercises.html', { width: 1280, height: 1000 });
+    const page = await openExercises('exercises.html');
     await page.waitForSelector('#exercise-list a');
     await choose(page, 'water-red-depth');
     const status = () => page.$eval('.exercise-meta', (el) => el.textContent);
@@ -221,7 +233,7 @@ describe('exercises', () => {
   }, 90_000);
 
   it('Which NDF: the question number is in the address and on the page, and a reload shows the same one', async () => {
-    const page = await open(browser, 'exercises.html?seed=77#which-ndf', { width: 1280, height: 1000 });
+    const page = await openExercises('exercises.html?seed=77#which-ndf');
     await page.waitForFunction(() => globalThis.__shadingLab?.exercise?.id === 'which-ndf');
     const hidden = await page.evaluate(() => globalThis.__shadingLab.exercise.hidden);
     expect(await page.$eval('.exercise-seed', (el) => el.textContent)).toMatch(/^Question 77 \(seed=77 /);
@@ -254,8 +266,7 @@ describe('exercises', () => {
       },
       { id: 'bad', chapter: 'media', title: 'Bad', prompt: 'x', widget: 'media', state: { depth: 1 }, grader: 'guess' },
     ];
-    const page = await open(
-      browser,
+    const page = await openExercises(
       `exercises.html?src=${encodeURIComponent(`data:application/json,${JSON.stringify(set)}`)}`,
     );
     await page.waitForSelector('.notice-error');

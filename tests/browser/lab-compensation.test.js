@@ -32,7 +32,8 @@ beforeAll(async () => {
   page = await open(browser, `rendering.html?${query}`, SMALL_VIEWPORT);
   // in view (in a small window the chapter's opening words fill the first screen), and mounted; its reference
   // converges in the first test, within that test's time
-  await (await page.waitForSelector('.widget-material-lab')).evaluate((el) => el.scrollIntoView());
+  const lab = await page.waitForSelector('.widget-material-lab', { timeout: 120_000 });
+  await lab.evaluate((el) => el.scrollIntoView());
   await page.waitForFunction(() => globalThis.__shadingLab?.widgets?.lab, { timeout: 120_000 });
 }, CONVERGE_MS);
 afterAll(async () => {

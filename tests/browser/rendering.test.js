@@ -33,7 +33,9 @@ afterAll(async () => {
 const FIRST_BATCH = { maxSamples: 8 }; // REFERENCE_BATCH of src/lab/lab-renderer.js
 /** Scrolls the lab into view, where it draws (in a small window the chapter's opening words fill the first screen). */
 const showLab = (page) =>
-  page.waitForSelector('.widget-material-lab').then((lab) => lab.evaluate((el) => el.scrollIntoView()));
+  page
+    .waitForSelector('.widget-material-lab', { timeout: 120_000 })
+    .then((lab) => lab.evaluate((el) => el.scrollIntoView()));
 const converged = (page) =>
   page.waitForFunction(
     () => {
@@ -468,7 +470,10 @@ describe('material lab', () => {
         'rendering.html?lab.env=0&lab.punctual=1&lab.lightTheta=0&lab.cLight=0.5&lab.layers=diffuse' +
           '&lab.diffuse=ffffff&lab.refSamples=128&models.refSamples=128',
         {
-          ...SMALL_VIEWPORT,
+          // the window of a reader who scrolls from one lab to the other: at the top of the page the first is in
+          // view and the second is not
+          width: 1200,
+          height: 900,
           // one context for both labs; the approximation is read, so the references stop at their first batch
           beforeLoad: (p) =>
             p.evaluateOnNewDocument(() => {
@@ -477,7 +482,6 @@ describe('material lab', () => {
             }),
         },
       );
-      await showLab(page);
       await widget(page, 'lab');
       await converged(page);
       await page.$eval('.widget-material-lab canvas', (c) =>
@@ -494,7 +498,7 @@ describe('material lab', () => {
         );
       await page.$eval('[data-prefix="models"]', (el) => el.scrollIntoView());
       await done('models');
-      await showLab(page); // back to the lab
+      await page.evaluate(() => window.scrollTo(0, 0));
       await untilIdle(page);
       await converged(page);
       const [centre] = await radianceAt(page, 0, texelCentre([[0, 0]]));
