@@ -65,6 +65,7 @@ async function openLab(query, { maxSamples } = {}) {
  */
 async function radianceAt(page, panel, points) {
   await page.addStyleTag({ content: '.lab-captions { display: none; }' });
+  await untilIdle(page); // whatever the change of style redraws
   const png = await shot(page, '.lab-view canvas');
   const bytes = await withPixels(
     page,
