@@ -3,7 +3,7 @@
 // environment files checked before they are used.
 import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
 import { baseUrl, getState, launchBrowser, open, shot, untilIdle, widget, withPixels } from './helpers.js';
-import { openPage, SMALL_VIEWPORT } from './harness.js';
+import { openPage } from './harness.js';
 import { linearToSrgb, srgbToLinear } from '../../src/math/color.js';
 import { diffuseOrenNayar } from '../../src/math/diffuse.js';
 import { lightDirFromAngles } from '../../src/math/angles.js';
@@ -47,12 +47,14 @@ const converged = (page) =>
 
 /**
  * Opens the lab on the rendering page and waits for its reference to have its samples. The lab's images are
- * 192 × 192 whatever the window, so a small one (SwiftShader draws the display's pixels on the CPU). A test that
+ * 192 × 192 whatever the window, so a smaller one than a desktop's (SwiftShader draws the display's pixels on the
+ * CPU), wide enough that the lab's three panels stay in one row (radianceAt reads them so): at 800 px the lab is
+ * 428 px wide, within a scrollbar of folding to two columns (140 px each at least, lab-view.js). A test that
  * reads only the approximation, or a reference that is exact from its first batch, passes FIRST_BATCH: the
  * reference then stops at one batch (sampleTarget in debug-hooks.js) instead of converging for nothing.
  */
 async function openLab(query, { maxSamples } = {}) {
-  const page = await open(browser, `rendering.html?${query}`, { ...SMALL_VIEWPORT, maxSamples });
+  const page = await open(browser, `rendering.html?${query}`, { width: 960, height: 720, maxSamples });
   await showLab(page);
   await widget(page, 'lab');
   await converged(page);
