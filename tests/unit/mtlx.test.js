@@ -132,6 +132,11 @@ describe('refusing a .mtlx file, in words that name what was refused', () => {
     ['a non-finite value', doc(node('<input name="specular_ior" type="float" value="1e999" />')), /no float value/],
     ['no shader', doc(''), /holds 0 open_pbr_surface nodes/],
     ['two shaders', doc(node('', 'a') + node('', 'b')), /holds 2 open_pbr_surface nodes/],
+    [
+      'a node of another type',
+      doc('<open_pbr_surface name="p" type="color3" />'),
+      /has type “color3”, not surfaceshader/,
+    ],
     ['an input given twice', doc(node('<input name="coat_weight" type="float" value="1" />'.repeat(2))), /given twice/],
     [
       'sRGB colours',

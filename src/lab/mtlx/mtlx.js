@@ -84,6 +84,11 @@ function documentNodes(root) {
   if (materials.length > 1) throw new Error(`it holds ${materials.length} surfacematerial nodes; one is read`);
   const [shader] = shaders;
   const [material] = materials;
+  if ((shader.attributes.type ?? 'surfaceshader') !== 'surfaceshader') {
+    throw new Error(
+      `its open_pbr_surface (line ${shader.line}) has type “${shader.attributes.type}”, not surfaceshader`,
+    );
+  }
   if (material) {
     const inputs = material.children;
     const uses = inputs.length === 1 && inputs[0].attributes.name === 'surfaceshader' ? inputs[0] : null;
