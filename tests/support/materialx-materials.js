@@ -68,8 +68,8 @@ export const MATERIALX_MATERIALS = [
   },
   {
     name: 'fuzz',
-    source: 'velvet: a dark base under fuzz',
-    inputs: { base_color: [0.1, 0.02, 0.05], specular_roughness: 0.6, fuzz_weight: 1, fuzz_color: [0.8, 0.3, 0.5] },
+    source: 'velvet: fuzz over a dark base (roughness 0.3)',
+    inputs: { base_color: [0.1, 0.02, 0.05], fuzz_weight: 1, fuzz_color: [0.8, 0.3, 0.5], fuzz_roughness: 0.5 },
     layers: ['fuzz'],
   },
 ];
