@@ -6,7 +6,7 @@ import { execFileSync } from 'node:child_process';
 import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { afterAll, describe, expect, it } from 'vitest';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { readMtlx, writeMtlx } from '../../src/lab/mtlx/mtlx.js';
 import { LAB_MATERIAL_KEYS, OPENPBR_GEOMETRY_INPUTS, OPENPBR_NODE_INPUTS } from '../../src/lab/mtlx/openpbr-inputs.js';
 import { MATERIALX_MATERIALS } from '../support/materialx-materials.js';
@@ -21,8 +21,11 @@ const run = (...args) =>
 const float32 = (x) => (Array.isArray(x) ? x.map(Math.fround) : typeof x === 'number' ? Math.fround(x) : x);
 
 describe.skipIf(!python)('.mtlx files as MaterialX 1.39.5 reads and writes them', () => {
-  const dir = mkdtempSync(join(tmpdir(), 'mtlx-'));
-  afterAll(() => rmSync(dir, { recursive: true, force: true }));
+  let dir;
+  beforeAll(() => {
+    dir = mkdtempSync(join(tmpdir(), 'mtlx-'));
+  });
+  afterAll(() => dir && rmSync(dir, { recursive: true, force: true }));
 
   it("the input table is open_pbr_surface's node definition (ND_open_pbr_surface_surfaceshader 1.1.1)", () => {
     const { version, inputs } = run('nodedef');
