@@ -64,8 +64,14 @@ function clampParam(key, x) {
   return Math.min(Math.max(x, LOWER[key] ?? 0), UPPER[key] ?? 1);
 }
 
-/** The material with every key of the subset: defaults filled in, values clamped, colours as [r, g, b]. */
+const FILLED = new WeakSet(); // materials openPbrMaterial made: passed through as they are
+
+/**
+ * The material with every key of the subset: defaults filled in, values clamped, colours as [r, g, b]; frozen.
+ * Passing its result again costs nothing (a renderer or a quadrature fills a material once).
+ */
 export function openPbrMaterial(material = {}) {
+  if (FILLED.has(material)) return material;
   const unknown = Object.keys(material).filter((k) => !(k in OPENPBR_DEFAULTS));
   if (unknown.length) throw new Error(`openPbrMaterial: unknown parameter ${unknown.join(', ')}`);
   const out = {};
@@ -74,9 +80,10 @@ export function openPbrMaterial(material = {}) {
     if (Array.isArray(fallback)) {
       const rgb = typeof value === 'number' ? [value, value, value] : value;
       if (!Array.isArray(rgb) || rgb.length !== 3) throw new Error(`openPbrMaterial: ${key} is not [r, g, b]`);
-      out[key] = rgb.map((c) => clampParam(key, c));
+      out[key] = Object.freeze(rgb.map((c) => clampParam(key, c)));
     } else out[key] = clampParam(key, value);
   }
+  FILLED.add(Object.freeze(out));
   return out;
 }
 
