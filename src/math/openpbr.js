@@ -22,14 +22,15 @@
 // GGX with height-correlated Smith, α = roughness² and the specification's anisotropy mapping; the base's roughness
 // widened by the coat's (its "Roughening"); F_d the exact dielectric Fresnel at the specification's modulated
 // index (specular_weight scales F0; specular_ior over coat_ior where coated, inverted above 1 against total
-// internal reflection); Δ the coat's darkening (1 − K)/(1 − E_b K) with the reference graph's K and E_b;
+// internal reflection); Δ the coat's darkening (1 − K)/(1 − E_b K) with the specification's recommended K and the
+// reference graph's E_b;
 // T = coat_color^((1/μt_l + 1/μt_v)/2), the specification's view-dependent absorption along the refracted paths.
 // Single scattering in every microfacet lobe (the talk's model); see docs/openpbr.md for what that loses.
 import { fresnelDielectric, fresnelF82Tint } from './fresnel.js';
 import { anisotropicAlphas, ndfGGXAniso, visibilitySmithGGXCorrelatedAniso } from './anisotropic.js';
 import { diffuseEON } from './openpbr-diffuse.js';
 import { albedoFuzzZeltner, fuzzZeltner } from './openpbr-fuzz.js';
-import { openPbrDielectricAlbedo } from './openpbr-albedo.js';
+import { fresnelDielectricAverage, openPbrDielectricAlbedo } from './openpbr-albedo.js';
 
 const GREY = (x) => Object.freeze([x, x, x]);
 /** The specification's defaults (v1.1.1, "Parameter reference") for the keys of the subset. */
@@ -96,10 +97,15 @@ function ggxLobe(l, v, h, alphas) {
   return (d * visibilitySmithGGXCorrelatedAniso(...l, ...v, alphas[0], alphas[1])) / 4;
 }
 
-/** The specification's ηs: specular_ior over the coat's where coated (inverted above 1), then modulated. */
-export function openPbrSpecularEta(m) {
+/** The specification's ηs before specular_weight: specular_ior over the coat's where coated, inverted below 1. */
+function openPbrUnmodulatedEta(m) {
   const coated = m.specular_ior / m.coat_ior;
-  const eta = lerp(m.specular_ior, coated > 1 ? coated : 1 / coated, m.coat_weight);
+  return lerp(m.specular_ior, coated > 1 ? coated : 1 / coated, m.coat_weight);
+}
+
+/** The specification's ηs, modulated by specular_weight (F0 scaled by it, eq. "modulated_ior"). */
+export function openPbrSpecularEta(m) {
+  const eta = openPbrUnmodulatedEta(m);
   const f0 = ((eta - 1) / (eta + 1)) ** 2;
   const eps = Math.sign(eta - 1) * Math.sqrt(Math.min(Math.max(m.specular_weight * f0, 0), 0.99999));
   return (1 + eps) / (1 - eps);
@@ -109,10 +115,25 @@ export function openPbrSpecularEta(m) {
 export const openPbrBaseRoughness = (m) =>
   lerp(m.specular_roughness, Math.min(1, m.specular_roughness ** 4 + 2 * m.coat_roughness ** 4) ** 0.25, m.coat_weight);
 
-/** Δ = (1 − K)/(1 − E_b K), K = 1 − (1 − F0_c)/η_c², E_b = lerp(base_color, specular_weight·base_color, M). */
-export function openPbrCoatDarkening(m) {
-  const f0 = ((m.coat_ior - 1) / (m.coat_ior + 1)) ** 2;
-  const k = 1 - (1 - f0) / (m.coat_ior * m.coat_ior);
+/**
+ * The coat's darkening of the base, lerp(1, Δ, coat_weight·coat_darkening) per channel, Δ = (1 − K)/(1 − E_b K)
+ * (the specification's "Darkening"), at n·v = nv. K, the share of the light leaving the base that the coat sends
+ * back: the specification's recommendation lerp(K_s, K_r, r_b), K_s = F(n·v, η_c) for a smooth base,
+ * K_r = 1 − (1 − F̄(η_c))/η_c² for a Lambertian one, r_b = lerp(lerp(1, r, ξ F_s), r, M) the base's roughness. With
+ * `referenceGraph`, the simpler K = 1 − (1 − F0(η_c))/η_c² of its MaterialX graph (for every base; the tests
+ * measure both against the random walk). E_b = lerp(base_color, specular_weight·base_color, M), as the graph has it.
+ */
+export function openPbrCoatDarkening(m, nv, referenceGraph = false) {
+  const eta = m.coat_ior;
+  const f0 = ((eta - 1) / (eta + 1)) ** 2;
+  let k = 1 - (1 - f0) / (eta * eta);
+  if (!referenceGraph) {
+    const etaS = openPbrUnmodulatedEta(m);
+    const fs = Math.min(Math.max(m.specular_weight * ((etaS - 1) / (etaS + 1)) ** 2, 0), 1);
+    const r = m.specular_roughness;
+    const rb = lerp(lerp(1, r, fs), r, m.base_metalness);
+    k = lerp(fresnelDielectric(nv, eta), 1 - (1 - fresnelDielectricAverage(eta)) / (eta * eta), rb);
+  }
   return m.base_color.map((c) => {
     const eb = lerp(c, c * m.specular_weight, m.base_metalness);
     return lerp(1, (1 - k) / (1 - eb * k), m.coat_weight * m.coat_darkening);
@@ -145,7 +166,7 @@ export function openPbrLayers(l, v, material) {
   const cAlpha = m.coat_roughness * m.coat_roughness;
   const coatAlbedo = openPbrDielectricAlbedo(nv, cAlpha, m.coat_ior);
   const path = 0.5 * (1 / refractedCos(l[2], m.coat_ior) + 1 / refractedCos(nv, m.coat_ior));
-  const darkening = openPbrCoatDarkening(m);
+  const darkening = openPbrCoatDarkening(m, nv);
   const fuzzAlbedo = albedoFuzzZeltner(nv, m.fuzz_roughness);
   const above = 1 - m.fuzz_weight * fuzzAlbedo;
   const below = m.coat_color.map((t, c) => above * lerp(1, t ** path * (1 - coatAlbedo), m.coat_weight) * darkening[c]);

@@ -120,7 +120,7 @@ describe('reciprocity', () => {
     expect(swapError(MATERIALS.brushed)).toBeLessThan(1e-13);
     expect(swapError({ base_color: 0, specular_roughness: 0.5 })).toBeLessThan(1e-13);
   });
-  it('departs, elsewhere, by what its albedo scaling predicts: f_d(l, v)(E(n·l) − E(n·v)) for the glossy diffuse', () => {
+  it('departs elsewhere by what its albedo scaling predicts: f_d(l, v)(E(n·l) − E(n·v)), glossy diffuse', () => {
     const m = openPbrMaterial(MATERIALS.plastic);
     const alpha = m.specular_roughness ** 2;
     const eta = openPbrSpecularEta(m);
