@@ -7,6 +7,7 @@
 // rule in JS and in GLSL (openPbrDielectricAlbedo in shaders/openpbr-albedo.glsl) so the two agree node for node.
 import { dfgSplitSum } from './integrate.js';
 import { fresnelDielectric } from './fresnel.js';
+import { gaussLegendre } from './quadrature.js';
 import { OPENPBR_ALBEDO_BASE64 } from './openpbr-albedo.data.js';
 
 /**
@@ -66,21 +67,18 @@ export function openPbrAlbedoTable() {
 }
 
 /**
- * The hemispherical average of the exact dielectric Fresnel, F̄(η) = 2∫F(μ, η) μ dμ, η ≥ 1, in closed form (the
- * integral done term by term; the tests check it against quadrature to 1e-14). Its terms cancel as η → 1 (each
- * grows like 1/(η − 1)): below η = 1 + 1e-3, where F̄ < 1e-4, it is taken as 0.
+ * The hemispherical average of the exact dielectric Fresnel, F̄(η) = 2∫F(μ, η) μ dμ = 4∫F(s², η) s³ ds, by the
+ * 16-point Gauss–Legendre rule in s that the GLSL twin uses (its closed form cancels in float32 near η = 1; the
+ * rule is within 2e-10 of it for η in (1, 10], 4e-9 at 100, tested).
  */
 export function fresnelDielectricAverage(eta) {
-  const n = eta;
-  if (!(n > 1.001)) return 0;
-  const [n2, n4] = [n * n, n ** 4];
-  return (
-    0.5 +
-    ((n - 1) * (3 * n + 1)) / (6 * (n + 1) ** 2) +
-    ((n2 * (n2 - 1) ** 2) / (n2 + 1) ** 3) * Math.log((n - 1) / (n + 1)) -
-    (2 * n ** 3 * (n2 + 2 * n - 1)) / ((n2 + 1) * (n4 - 1)) +
-    ((8 * n4 * (n4 + 1)) / ((n2 + 1) * (n4 - 1) ** 2)) * Math.log(n)
-  );
+  const { x, w } = gaussLegendre(16);
+  let sum = 0;
+  for (let i = 0; i < x.length; i++) {
+    const s = 0.5 * (1 + x[i]);
+    sum += 2 * w[i] * fresnelDielectric(s * s, eta) * s * s * s;
+  }
+  return sum;
 }
 
 /** Cell index and fraction of t in [0, 1] on n nodes. */
