@@ -74,7 +74,10 @@ describe('the layered random walk', () => {
     for (const mu of MUS) {
       const got = modelAlbedo({ coat_weight: 1, specular_weight: 0, base_color: [1, 0.5, 0.2] }, mu);
       const F = fresnelDielectric(mu, eta);
-      [1, 0.5, 0.2].forEach((r, c) => expect(got[c]).toBeCloseTo(F + ((1 - F) * r * (1 - K)) / (1 - r * K), 2));
+      // within the albedo table's error at α = 1e-4 (measured 6.7e-4)
+      [1, 0.5, 0.2].forEach((r, c) =>
+        expect(Math.abs(got[c] - F - ((1 - F) * r * (1 - K)) / (1 - r * K))).toBeLessThan(1.5e-3),
+      );
     }
   });
 });

@@ -70,6 +70,7 @@ describe('openPbrBRDF with coat and fuzz off', () => {
           expect(err).toBeLessThanOrEqual(1e-12 * Math.abs(want[c]) + 1.5e-3 * diffuse[c]);
         });
       }
+      console.log(`${name}: largest relative difference ${worst.toExponential(2)}`);
       expect(worst).toBeLessThan(1.5e-3);
     });
   }
