@@ -1,6 +1,6 @@
-// OpenPBR's dielectric albedo table E(μ, α, η) and the dielectric Fresnel's hemispherical average, mirrors src/math/openpbr-albedo.js: the
-// float64 table (src/math/openpbr-albedo.data.js, 64 × 128 RGBA float, bound as uOpenPbrAlbedo by whoever draws)
-// read by the same trilinear rule with texelFetch, so the two agree node for node.
+// OpenPBR's dielectric albedo table E(μ, α, η) and the dielectric Fresnel's hemispherical average, mirrors
+// src/math/openpbr-albedo.js: the float64 table (src/math/openpbr-albedo.data.js, 64 × 128 RGBA float, bound as
+// uOpenPbrAlbedo by whoever draws) read by the same trilinear rule with texelFetch, so the two agree node for node.
 #include "fresnel.glsl"
 uniform sampler2D uOpenPbrAlbedo;
 #define OPENPBR_ALBEDO_NODES 32
@@ -44,7 +44,8 @@ float fresnelDielectricAverage(float eta) {
   for (int i = 0; i < 8; i++) {
     float s0 = 0.5 * (1.0 + GL16_X[i]);
     float s1 = 0.5 * (1.0 - GL16_X[i]);
-    sum += 2.0 * GL16_W[i] * (fresnelDielectric(s0 * s0, eta) * s0 * s0 * s0 + fresnelDielectric(s1 * s1, eta) * s1 * s1 * s1);
+    float f0 = fresnelDielectric(s0 * s0, eta) * s0 * s0 * s0;
+    sum += 2.0 * GL16_W[i] * (f0 + fresnelDielectric(s1 * s1, eta) * s1 * s1 * s1);
   }
   return sum;
 }

@@ -38,6 +38,7 @@ float diffuseEON(float nl, float nv, float lv, float roughness, float rho) {
   float a = 1.0 / (1.0 + FUJII_C1 * r);
   float avg = a * (1.0 + FUJII_C2 * r);
   float rhoMs = p * p * avg / (1.0 - p * (1.0 - avg));
-  float ms = rhoMs * a * r * (FUJII_C1 - fujiiAlbedoG(nl)) * (FUJII_C1 - fujiiAlbedoG(nv)) / (PI * (FUJII_C1 - FUJII_C2));
+  float lossL = FUJII_C1 - fujiiAlbedoG(nl);
+  float ms = rhoMs * a * r * lossL * (FUJII_C1 - fujiiAlbedoG(nv)) / (PI * (FUJII_C1 - FUJII_C2));
   return p * diffuseFujiiOrenNayar(nl, nv, lv, r) + ms;
 }
