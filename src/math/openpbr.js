@@ -12,8 +12,8 @@
 //   specular_ior 1.5, coat_weight 0, coat_color [1, 1, 1], coat_roughness 0, coat_roughness_anisotropy 0,
 //   coat_ior 1.6, coat_darkening 1, fuzz_weight 0, fuzz_color [1, 1, 1], fuzz_roughness 0.5.
 //
-// The composition (the specification's "Model" and its albedo-scaling reduction to a mixture of lobes, as its
-// MaterialX reference graph open_pbr_surface builds it), with E the directional albedo at v:
+// The composition: the specification's "Model", reduced to a sum of lobes by the albedo scaling it describes (where
+// its MaterialX reference graph open_pbr_surface differs, docs/openpbr.md says how), E the directional albedo at v:
 //   dielectric = specular_color·F_d D V/4 + (1 − E_d(n·v)) base_weight·EON(base_color, base_diffuse_roughness)
 //   metal      = specular_weight·F82-tint(base_weight·base_color, specular_color) D V/4
 //   base       = lerp(dielectric, metal, base_metalness) · lerp(1, Δ, coat_weight·coat_darkening)
