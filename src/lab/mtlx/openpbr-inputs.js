@@ -4,6 +4,8 @@
 // the table against that definition as MaterialX reads it. The four geometry vectors (normals and tangents) come
 // from the geometry and are left out.
 
+import { OPENPBR_DEFAULTS } from '../../math/openpbr.js';
+
 const F = (value, min = 0, max = 1) => ({ type: 'float', value, min, max });
 const C = (value) => ({ type: 'color3', value, min: 0, max: 1 });
 const grey = (x) => [x, x, x];
@@ -61,23 +63,4 @@ export const OPENPBR_GEOMETRY_INPUTS = Object.freeze([
  * The inputs a material of the lab has (the subset src/math/openpbr.js evaluates: base, specular, coat and fuzz).
  * A file's other inputs are read, and reported when they differ from their defaults, but not kept.
  */
-export const LAB_MATERIAL_KEYS = Object.freeze([
-  'base_weight',
-  'base_color',
-  'base_metalness',
-  'base_diffuse_roughness',
-  'specular_weight',
-  'specular_color',
-  'specular_roughness',
-  'specular_roughness_anisotropy',
-  'specular_ior',
-  'coat_weight',
-  'coat_color',
-  'coat_roughness',
-  'coat_roughness_anisotropy',
-  'coat_ior',
-  'coat_darkening',
-  'fuzz_weight',
-  'fuzz_color',
-  'fuzz_roughness',
-]);
+export const LAB_MATERIAL_KEYS = Object.freeze(Object.keys(OPENPBR_DEFAULTS));
