@@ -137,7 +137,7 @@ export const afterFrames = (target, n) =>
 
 /** Waits for a widget instance to be registered under `key` (its name, or its prefix on a page), then for idle. */
 export async function widget(page, key) {
-  await page.waitForFunction((k) => globalThis.__shadingLab?.widgets?.[k], { timeout: 60_000 }, key);
+  await page.waitForFunction((k) => globalThis.__shadingLab?.widgets?.[k], { timeout: WAIT_MS }, key);
   await untilIdle(page);
 }
 
