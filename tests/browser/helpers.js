@@ -33,7 +33,7 @@ export function countDrawCalls() {
 }
 
 /** Caps the samples progressive views refine to (sampleTarget in src/core/framework/debug-hooks.js). */
-function capSamples(n) {
+export function capSamples(n) {
   globalThis.__shadingLab = { ...globalThis.__shadingLab, maxSamples: n };
 }
 
