@@ -70,31 +70,32 @@ export const openForeignParent = (browser) =>
 let steadyWaits = 0;
 
 /**
- * Resolves once what `watch` names has held in the page (or frame) `target` for `quietFrames` animation frames and
- * at least `quietMs`: 'drawCalls', its WebGL draw count (countDrawCalls), or 'layout', its height and words. Counted
- * in frames as well as milliseconds, so that a loaded machine, which draws fewer frames in the same time, waits the
- * longer for it. Rejects after `timeout`.
+ * Resolves once what `watch` names has held in the page (or frame) `target` for `quietChecks` checks in a row (100
+ * ms apart) and at least `quietMs`: 'drawCalls', its WebGL draw count (countDrawCalls), or 'layout', its height and
+ * words. Counted in the page's own checks as well as in milliseconds: a loaded machine runs the page's timers late,
+ * so it waits the longer. (Checked on a timer, not per animation frame: a frame out of sight gets few frames.)
+ * Rejects after `timeout`.
  */
-export async function untilSteady(target, watch, { quietMs = 500, quietFrames = 20, timeout = 30_000 } = {}) {
+export async function untilSteady(target, watch, { quietMs = 500, quietChecks = 5, timeout = 30_000 } = {}) {
   const token = ++steadyWaits; // each wait keeps its own record in the page, started afresh
   await target.waitForFunction(
-    (watch, token, quietMs, quietFrames) => {
+    (watch, token, quietMs, quietChecks) => {
       const value =
         watch === 'drawCalls' ? window.__drawCalls : `${document.body.scrollHeight} ${document.body.innerText}`;
       const now = performance.now();
       const seen = window.__steady;
       if (seen?.token !== token || seen.value !== value) {
-        window.__steady = { token, value, since: now, frames: 0 };
+        window.__steady = { token, value, since: now, checks: 0 };
         return false;
       }
-      seen.frames++;
-      return seen.frames >= quietFrames && now - seen.since >= quietMs;
+      seen.checks++;
+      return seen.checks >= quietChecks && now - seen.since >= quietMs;
     },
-    { timeout, polling: 'raf' },
+    { timeout, polling: 100 },
     watch,
     token,
     quietMs,
-    quietFrames,
+    quietChecks,
   );
 }
 
