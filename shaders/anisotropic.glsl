@@ -83,8 +83,8 @@ vec3 sampleVisibleNormalGGXAniso(vec3 v, vec2 alpha, vec2 u) {
   float sinC = sqrt(u.x * (rho2 + (1.0 - u.x) * w1 * w1));
   float rs = rho + sinC;
   float rhoMinusSin = rs > 0.0 ? (1.0 - u.x) * (rho2 - u.x * w1 * w1) / rs : 0.0;
-  float c = cos(PI * u.y);
-  float s = sin(PI * u.y);
+  float c = sin(PI * (0.5 - u.y)); // cos(π u.y), exactly 0 at u.y = 0.5 (see the JS twin)
+  float s = sin(PI * min(u.y, 1.0 - u.y));
   float cosPsi = (c - s) * (c + s);
   float along = cosPsi >= 0.0 ? rho + sinC * cosPsi : rhoMinusSin + 2.0 * sinC * c * c;
   float across = 2.0 * sinC * s * c;

@@ -136,7 +136,10 @@ export function sampleVisibleNormalGGXAniso(vx, vy, vz, alphaX, alphaY, u1, u2) 
   const sinC = Math.sqrt(u1 * (rho2 + (1 - u1) * w1 * w1));
   const rs = rho + sinC;
   const rhoMinusSin = rs > 0 ? ((1 - u1) * (rho2 - u1 * w1 * w1)) / rs : 0;
-  const [c, s] = [Math.cos(Math.PI * u2), Math.sin(Math.PI * u2)];
+  // cos and sin of ψ/2 = π u2 as sines of arguments within π/2 of 0, where a float32 sine is relatively exact: c is
+  // then exactly 0 at u2 = 1/2 (cos(π u2) would give float32 π's 4e-8, the rim's 0.33 at grazing v, αx = 4)
+  const c = Math.sin(Math.PI * (0.5 - u2));
+  const s = Math.sin(Math.PI * Math.min(u2, 1 - u2));
   const cosPsi = (c - s) * (c + s);
   // (c + v')·e: directly where nothing cancels (cos ψ >= 0), by the rim's form where it would
   const along = cosPsi >= 0 ? rho + sinC * cosPsi : rhoMinusSin + 2 * sinC * c * c;
