@@ -122,9 +122,10 @@ describe('the microfacet input', () => {
       [1e-4, 0, 1e-4, Math.PI],
     ]) {
       const m = microfacetInput(spherical(tl, pl), spherical(tv, pv), params.alpha);
-      for (const term of Object.values(CATALOGUE.ndf.terms))
+      // the anisotropic lobes have no function of the cosines (tests/unit/catalogue-anisotropic.test.js)
+      for (const term of Object.values(CATALOGUE.ndf.terms).filter((t) => t.evaluate))
         expect(termAt(term, m, params) / term.evaluate(m.nh, params, m.sin2h), term.key).toBeCloseTo(1, 12);
-      for (const term of Object.values(CATALOGUE.visibility.terms))
+      for (const term of Object.values(CATALOGUE.visibility.terms).filter((t) => t.evaluate))
         expect(termAt(term, m, params), term.key).toBeCloseTo(term.evaluate(m, params), 12);
     }
   });
