@@ -29,7 +29,8 @@ const { ndf, visibility } = CATALOGUE;
 describe('the anisotropic entries of the catalogue', () => {
   it('at αx = αy each is its isotropic closed form (GGX, Beckmann, Smith GGX height-correlated)', () => {
     for (const [l, v] of PAIRS)
-      for (const a of [0.2, 0.5, 0.8]) { // (Beckmann cuts its far tail below e^-80 to 0)
+      for (const a of [0.2, 0.5, 0.8]) {
+        // (Beckmann cuts its far tail below e^-80 to 0)
         const m = microfacetInput(l, v, [a, a]);
         expect(termAt(ndf.terms.ggxAniso, m, {}) / ggx(m.nh, a)).toBeCloseTo(1, 11);
         expect(termAt(ndf.terms.beckmannAniso, m, {}) / beckmann(m.nh, a)).toBeCloseTo(1, 11);
