@@ -50,11 +50,11 @@ describe('each uniform bound to its parameter', () => {
     const m = matchNdfWidths(12);
     const state = { lightTheta: 30, exposure: 1 };
     const cell = (key) => sphereCell({ key, p: m[key], cell: undefined }, state).uniforms;
-    expect(cell('ggx')).toMatchObject({ uAlpha: m.ggx.alpha });
+    expect(cell('ggx')).toMatchObject({ uAlphaPair: [m.ggx.alpha, m.ggx.alpha] });
     expect(cell('blinnPhong')).toMatchObject({ uExponent: m.blinnPhong.exponent });
     expect(cell('abc')).toMatchObject({ uA1: m.abc.a1, uA2: m.abc.a2 });
     expect(cell('sgd')).toMatchObject({
-      uAlpha: m.sgd.alpha,
+      uAlphaPair: [m.sgd.alpha, m.sgd.alpha],
       uSgdP: m.sgd.p,
       uSgdNorm: sgdNormalization(...clampSgd(m.sgd.alpha, m.sgd.p)),
     });
