@@ -68,7 +68,9 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange, lo
   const drawLobe3d = (s, scene) => {
     const { l, v, a, fA, fB, max } = scene;
     const directions = { n: [0, 0, 1], l, v, h: a.h, mirror: [-l[0], 0, l[2]] };
-    lobe3d.update({ fA, fB, max, directions, phi: s.phi, description: describeLobe3d(s, scene) });
+    // an anisotropic lobe may peak out of the plane of incidence: scale to its largest value over the hemisphere
+    const top = scene.A.aniso ? Math.max(max, ...lobe3d.directions.map(fA).filter(Number.isFinite)) : max;
+    lobe3d.update({ fA, fB, max: top, directions, phi: s.phi, description: describeLobe3d(s, { ...scene, max: top }) });
   };
   const render = (changed) => {
     const s = shell.state;
