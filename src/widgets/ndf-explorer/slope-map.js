@@ -3,6 +3,7 @@
 // anisotropic lobe is an ellipse stretched along the tangent's axis.
 import { viridis } from '../../core/ui/palettes.js';
 import { describeCanvas } from '../../core/framework/describe.js';
+import { squareImageAxes } from '../../core/ui/canvas2d.js';
 import { slopeExtent, slopeMapValues } from './model.js';
 
 const N = 96;
@@ -21,26 +22,15 @@ function paint(cell, values, peak) {
 }
 
 /** The axes: ticks at -extent, 0 and extent on both, and their names. */
-function axes(ctx, extent) {
-  ctx.fillStyle = '#333';
-  ctx.font = '11px system-ui, sans-serif';
-  ctx.textAlign = 'center';
-  for (const [f, x] of [
-    [0, -extent],
-    [0.5, 0],
-    [1, extent],
-  ]) {
-    const text = `${Number(x.toPrecision(3))}`;
-    ctx.fillText(text, X0 + f * SIZE, Y0 + SIZE + 13);
-    ctx.fillText(text, X0 - 18, Y0 + SIZE - f * SIZE + 4);
-  }
-  ctx.fillText('slope along the tangent, hx/hz', X0 + SIZE / 2, Y0 + SIZE + 27);
-  ctx.save();
-  ctx.translate(10, Y0 + SIZE / 2);
-  ctx.rotate(-Math.PI / 2);
-  ctx.fillText('slope along the bitangent, hy/hz', 0, 0);
-  ctx.restore();
-}
+const axes = (ctx, extent) =>
+  squareImageAxes(ctx, {
+    x0: X0,
+    y0: Y0,
+    size: SIZE,
+    ticks: [-extent, 0, extent].map((x, i) => [i / 2, `${Number(x.toPrecision(3))}`]),
+    xLabel: 'slope along the tangent, hx/hz',
+    yLabel: 'slope along the bitangent, hy/hz',
+  });
 
 /** One map in a figure of its own; draw(lobe) paints it and describes it. */
 function createMap(container) {
