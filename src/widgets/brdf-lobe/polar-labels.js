@@ -110,7 +110,7 @@ export function layOutLabels(words, g, spec) {
     const boxes = places.map(([x, y]) => ({ ...label, x: x - label.w / 2, y: y - label.h / 2 }));
     const fits = (b) => b.x >= 0 && b.y >= 0 && b.x + b.w <= g.w && b.y + b.h <= g.h;
     const free = boxes.find((b) => fits(b) && !taken.some((t) => meets(t, b)));
-    const box = free ?? (optional ? null : (boxes.find(fits) ?? boxes[0]));
+    const box = free ?? (optional ? null : boxes.find(fits) ?? boxes[0]);
     if (!box) continue;
     taken.push(box);
     placed.push(box);
