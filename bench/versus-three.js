@@ -26,7 +26,7 @@ export function compareWithMeshStandard({ size = 512, frames = 9 } = {}) {
       uLightDir: { value: lightDir },
       uLightIntensity: { value: 1 },
       uExposure: { value: 1 },
-      uAlpha: { value: alpha },
+      uAlphaPair: { value: new THREE.Vector2(alpha, alpha) },
       uF0: { value: 0.04 },
       uDiffuse: { value: 0.5 },
       uSigma: { value: 0 },

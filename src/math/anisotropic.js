@@ -5,13 +5,14 @@
 // Smith's Λ with the roughness projected on the direction's azimuth, α(φ)² = cos²φ αx² + sin²φ αy².
 // Twins in shaders/anisotropic.glsl (held to these by the parity rows in src/core/gpu/parity-cases/anisotropic.js).
 import { ALPHA_MIN } from './ndf.js';
+import { ALPHA_ANISO_MAX } from './catalogue/parameters.js';
 import { erfc } from './special.js';
 
 /**
  * Largest roughness per axis the anisotropic functions take: Burley's mapping reaches α/√0.1 ≈ 3.2 α and OpenPBR's
  * √2 α, and the isotropic clamp at 1 would change their models. alphaX and alphaY are clamped to [ALPHA_MIN, 4].
  */
-export const ALPHA_ANISO_MAX = 4;
+export { ALPHA_ANISO_MAX };
 const clampAxis = (a) => Math.min(Math.max(a, ALPHA_MIN), ALPHA_ANISO_MAX);
 
 /** hx²/αx² + hy²/αy²: the squared slope of m in the stretched space, times hz² (tan² of the stretched normal). */

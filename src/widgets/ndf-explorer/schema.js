@@ -3,6 +3,7 @@
 // code and its sliders' values), drawn when `custom` is among the NDFs.
 import { termOptions } from '../../math/catalogue/index.js';
 import { SLOTS } from '../../core/custom/slots.js';
+import { CONVENTION_LABELS } from './words.js';
 
 /** The talk's five NDFs (catalogue keys), in the order the talk shows them: menu, legend and colour order. */
 export const NDF_KEYS = ['blinnPhong', 'beckmann', 'ggx', 'abc', 'sgd'];
@@ -25,4 +26,13 @@ export const schema = {
   measuredName: { type: 'text', maxLength: 80, default: '', label: 'Measured file' },
   codeD: { type: 'code', slot: 'D', default: SLOTS.D.starter, label: 'Your D (GLSL)' },
   params: { type: 'params', default: {}, label: 'Sliders of your code' },
+  // beyond the talk (issue 28): GGX and Beckmann stretched along the tangent, (α, anisotropy) → (αx, αy) by one
+  // of three published conventions
+  anisotropy: { type: 'number', min: 0, max: 1, step: 0.01, default: 0, label: 'Anisotropy (GGX, Beckmann)' },
+  convention: {
+    type: 'enum',
+    options: CONVENTION_LABELS,
+    default: 'burley2012',
+    label: 'Anisotropy convention',
+  },
 };

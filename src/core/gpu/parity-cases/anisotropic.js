@@ -48,9 +48,15 @@ const SAMPLER_DIRECTIONS = DIRECTIONS.slice(0, 7); // v below the horizon has no
 // squared, and cos(π u2) is a sine that is exactly 0 at u2 = 1/2 (anisotropic.js)
 const SAMPLER_TOLERANCE = { atol: 3e-4, rtol: 1e-4 };
 
+// the forms of the catalogue's entries (ggxAniso, …) have their rows of the catalogue's grids too: these are named
+// apart, by their own stress inputs
+const VEC_FORM = ' (vec3 form, α pairs to 1e-4 : 1)';
+const CATALOGUED = new Set(['ndfGGXAniso', 'ndfBeckmannAniso', 'visibilitySmithGGXCorrelatedAniso']);
+const rowName = (name) => (CATALOGUED.has(name) ? `${name}${VEC_FORM}` : name);
+
 // one direction (a.xyz) and (αx, αy) in (a.w, b.x): the NDFs over half vectors, the G1s over directions
 const directionRow = (name, range) => ({
-  name,
+  name: rowName(name),
   chunk: 'anisotropic.glsl',
   glsl: `${name}(a.xyz, vec2(a.w, b.x))`,
   outputs: 1,
@@ -61,7 +67,7 @@ const directionRow = (name, range) => ({
 
 // two directions, a.xyz (l or v) and b.xyz (v or m), with αx in a.w and αy in b.w
 const pairRow = (name, seconds) => ({
-  name,
+  name: rowName(name),
   chunk: 'anisotropic.glsl',
   glsl: `${name}(a.xyz, b.xyz, vec2(a.w, b.w))`,
   outputs: 1,
