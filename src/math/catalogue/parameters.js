@@ -20,8 +20,10 @@ const ALPHA_RANGE = {
 export const PARAMETERS = {
   alpha: { ...ALPHA_RANGE, label: 'Roughness α', uniform: 'uAlpha' },
   // an anisotropic lobe's roughness along the tangent t and the bitangent b: the microfacet input's α pair
-  alphaX: { ...ALPHA_RANGE, label: 'Roughness along the tangent αx' },
-  alphaY: { ...ALPHA_RANGE, label: 'Roughness along the bitangent αy' },
+  alphaX: { ...ALPHA_RANGE, label: 'Roughness along the tangent αx', uniform: 'uAlphaX' },
+  alphaY: { ...ALPHA_RANGE, label: 'Roughness along the bitangent αy', uniform: 'uAlphaY' },
+  // the strength a of an anisotropic model (anisotropicAlphas maps α and a to the pair; the bent reflection reads a)
+  anisotropy: { min: 0, max: 1, unit: '', label: 'Anisotropy a', clamped: true, uniform: 'uAnisotropy' },
   // the reflectance at normal incidence: Schlick's F0, the diffuse terms' and the compensations'
   f0: {
     min: 0,

@@ -129,6 +129,7 @@ export const NOTICES = {
   noFile: 'No environment file has been dropped yet: drop an .hdr or .exr panorama on the widget. Kept the studio.',
   dropText: 'Load an .hdr / .exr environment or a MERL .binary BRDF…',
   headOn: 'Check the π: a white Lambert sphere lit head-on by the punctual light alone',
+  brushed: 'Brushed aluminium: an anisotropic GGX lobe on a machined disc, its brushing lines shown',
 };
 
 const short = (family, key) => texText(termEntry(family, key).short);
