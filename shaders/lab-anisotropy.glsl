@@ -1,9 +1,9 @@
 // The material lab's specular lobe in its frame. With ANISOTROPIC (src/lab/lab-anisotropy.js decides it): GGX
 // stretched by the pair (uAlphaX, uAlphaY) along the tangent field's t and b (lab-tangent.glsl), the
 // height-correlated Smith V in its anisotropic form when that V is chosen (any other V keeps its isotropic form at
-// α), and the reflected direction the approximations read the light in bent as Filament's and three.js's IBL bend
-// it. Without it every function here is the isotropic lab's own (microfacetBRDF at α, the frame around n, the
-// mirror direction).
+// α), and with BENT_REFLECTION the reflected direction the approximations read the light in bent as Filament's
+// and three.js's IBL bend it (else the mirror direction, to compare). Without ANISOTROPIC every function here is
+// the isotropic lab's own (microfacetBRDF at α, the frame around n, the mirror direction).
 #ifdef ANISOTROPIC
 #include "anisotropic.glsl"
 #include "lab-tangent.glsl"
@@ -39,11 +39,18 @@ vec3 lobeBRDF(vec3 l, vec3 v, vec3 f0) {
 #endif
   return fresnelTerm(f0, dot(l, h)) * (ndfGGXAniso(h, alphaPair()) * vis / 4.0);
 }
+#else
+#ifndef MEASURED
+vec3 lobeBRDF(vec3 l, vec3 v, vec3 f0) { return microfacetBRDF(l, v, uAlpha, f0); }
+#endif
+#endif
 
 // The bent reflection vector (Filament's IBL, in three.js's weighting): the normal v would see if the surface had
 // no slope across the axis of least roughness (v with its part along that axis removed), mixed into n with weight
 // 1 - (1 - a (1 - √α))⁴, and v mirrored about the result. A lookup direction, not a lobe: the stretched highlight
 // of a prefiltered map or a sphere light is drawn by moving one direction, which is what the error image measures.
+// (BENT_REFLECTION comes with ANISOTROPIC only: src/lab/lab-defines.js)
+#ifdef BENT_REFLECTION
 vec3 lobeReflection(vec3 v) {
   vec3 grain = uAlphaX >= uAlphaY ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
   vec3 across = v - dot(v, grain) * grain;
@@ -54,8 +61,5 @@ vec3 lobeReflection(vec3 v) {
   return reflect(-v, bent);
 }
 #else
-#ifndef MEASURED
-vec3 lobeBRDF(vec3 l, vec3 v, vec3 f0) { return microfacetBRDF(l, v, uAlpha, f0); }
-#endif
-vec3 lobeReflection(vec3 v) { return reflect(-v, vec3(0.0, 0.0, 1.0)); }
+vec3 lobeReflection(vec3 v) { return reflect(-v, vec3(0.0, 0.0, 1.0)); } // the mirror direction
 #endif

@@ -38,6 +38,7 @@ export const ANISOTROPIC_V = 'smithGGXCorrelated';
  * @property {string} model  a key of ANISOTROPY_MODELS
  * @property {number[]} alpha  [αx, αy]
  * @property {TangentField} field
+ * @property {boolean} bent  the approximations read the bent reflection vector (else the mirror direction)
  */
 
 /**
@@ -55,7 +56,7 @@ export const tangentFieldOf = (state) => ({
  * The anisotropic lobe of a lab state, or null when its anisotropy is 0 (or the state has none: the lab's other
  * widgets).
  * @param {{ alpha: number, anisotropy?: number, anisotropyModel?: string, tangentField?: string,
- *   tangentTheta?: number, tangentPhi?: number, tangentRotation?: number }} state
+ *   tangentTheta?: number, tangentPhi?: number, tangentRotation?: number, bentReflection?: boolean }} state
  * @returns {LabAnisotropy | null}
  */
 export function anisotropyOf(state) {
@@ -67,6 +68,7 @@ export function anisotropyOf(state) {
     model,
     alpha: anisotropicAlphas(state.alpha, strength, model),
     field: tangentFieldOf(state),
+    bent: state.bentReflection ?? true,
   };
 }
 

@@ -198,9 +198,12 @@ export function customNotes({ lights, methods, material }) {
   return notes;
 }
 
-const BENT =
-  'the map is read along the bent reflection vector of Filament and three.js (n bent towards the normal v sees ' +
-  'across the grain), which moves the highlight but cannot stretch it: the error image shows what that costs.';
+/** Where an approximation reads the light for an anisotropic lobe: the bent reflection vector, or the mirror. */
+const readAlong = (a) =>
+  a.bent
+    ? 'the bent reflection vector of Filament and three.js (n bent towards the normal v sees across the grain), ' +
+      'which moves the highlight but cannot stretch it'
+    : 'the mirror direction, as if the lobe were isotropic (the bent reflection vector is off)';
 
 /** What each method does with an anisotropic lobe (lab-anisotropy.js): the forms that have none, and what stands in. */
 export function anisotropyNotes(scene) {
@@ -226,13 +229,13 @@ export function anisotropyNotes(scene) {
   if (env === 'split-sum') {
     notes.push(
       `Split sum, anisotropic: the prefiltered map and the DFG table are the isotropic lobe’s at α = ` +
-        `${scene.material.alpha}; ${BENT}`,
+        `${scene.material.alpha}, read along ${readAlong(a)}: the error image shows what that costs.`,
     );
   }
   if (lights.sphere && methods.area !== 'centre') {
     notes.push(
-      'Sphere light, anisotropic: the representative point is the disc’s point nearest the bent reflection ' +
-        'vector, with Karis’s energy factor at α; the stretched lobe is evaluated at that one point.',
+      `Sphere light, anisotropic: the representative point is the disc’s point nearest ${readAlong(a)}, with ` +
+        'Karis’s energy factor at α; the stretched lobe is evaluated at that one point.',
     );
   }
   if (lights.ambient) notes.push('Ambient, anisotropic: the DFG table’s albedo is the isotropic lobe’s at α.');

@@ -44,6 +44,7 @@ function modelDefines(scene, reference) {
   if (stretchesLobe(scene)) {
     flag('ANISOTROPIC'); // lab-anisotropy.glsl: GGX stretched along the tangent field
     if (scene.anisotropy.field.mode === 'along') flag('TANGENT_ALONG');
+    if (scene.anisotropy.bent && !reference) flag('BENT_REFLECTION');
   }
   if (scene.terms.layers === 'specular') flag('DIFFUSE_OFF');
   const { punctual, sphere, env, ambient } = scene.lights;

@@ -119,6 +119,13 @@ export const schema = {
     unit: '°',
   },
   showTangents: { group: 'Anisotropy', type: 'bool', default: false, label: 'Show the brushing lines' },
+  bentReflection: {
+    group: 'Anisotropy',
+    type: 'bool',
+    default: true,
+    label: 'Bent reflection vector',
+    hint: 'The split sum and the sphere light read the light along the bent vector (Filament, three.js), else the mirror.',
+  },
   brdfSource: {
     group: 'BRDF terms',
     type: 'enum',
