@@ -27,7 +27,7 @@ describe('the anisotropic D slot', () => {
     expect(Object.keys(referenceOptions('DAniso'))).toEqual(['ggxAniso', 'beckmannAniso']);
   });
 
-  it('the quadrature: unit h in the upper hemisphere; a lobe’s ∫ g (n·h) dω against a 2000 × 4000 midpoint rule', () => {
+  it('the quadrature: unit h above the horizon; a lobe’s ∫ g (n·h) dω against a 2000 × 4000 midpoint rule', () => {
     for (const pair of ANISOTROPIC_PAIRS)
       for (const { h } of anisotropicNormalisationNodes(pair)) {
         expect(Math.hypot(...h)).toBeCloseTo(1, 12);

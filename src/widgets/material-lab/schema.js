@@ -124,7 +124,7 @@ export const schema = {
     type: 'bool',
     default: true,
     label: 'Bent reflection vector',
-    hint: 'The split sum and the sphere light read the light along the bent vector (Filament, three.js), else the mirror.',
+    hint: 'The split sum and sphere light read the light along the bent vector (Filament, three.js), or the mirror.',
   },
   brdfSource: {
     group: 'BRDF terms',
