@@ -101,13 +101,14 @@ export const LAMBDA_LABELS = { ggxAniso: 'GGX’s Λ', beckmannAniso: 'Beckmann�
  * Heitz's (2014) weak white furnace of an anisotropic D with the Λ of the reference `key`: at each view v of
  * WEAK_FURNACE_VIEWS_DEG, G1(v) ∫ D(h) ⟨v·h⟩ dω_h / (n·v), which is 1 for every v when D and Λ agree, over the
  * normalisation's nodes (a node's weight over hz weighs D alone). `worst` is the value farthest from 1.
- * @param {NonNullable<ReturnType<typeof import('./check-inputs.js').checkPlan>['normalisation']>} parts
+ * @param {{ alpha: number[], weights: number[], directions: number[][], start: number }[]} parts the anisotropic
+ *   D's normalisation parts (check-inputs.js)
  * @param {Float32Array} values @param {string} key
  */
 export function weakFurnaceReport(parts, values, key) {
   const g1 = G1_OF_REFERENCE[/** @type {keyof typeof G1_OF_REFERENCE} */ (key)] ?? smithG1GGXAniso;
   const views = WEAK_FURNACE_VIEWS_DEG.map(([t, p]) => [t, p, ...direction(t * DEG, p * DEG)]);
-  const byView = parts.flatMap(({ alpha, weights, directions = [], start }) =>
+  const byView = parts.flatMap(({ alpha, weights, directions, start }) =>
     views.map(([thetaV, phiV, vx, vy, vz]) => {
       const projected = weights.reduce((sum, w, i) => {
         const [hx, hy, hz] = directions[i];
@@ -203,7 +204,13 @@ export function checkReport(plan, values, reference) {
     ...(plan.normalisation ? { normalisation: normalisationReport(plan.normalisation, values) } : {}),
     ...(slot.key === 'V' ? { gRange: gRangeReport(slot, stress, values, plan.stress.start) } : {}),
     ...(slot.key === 'DAniso' && plan.normalisation
-      ? { weakFurnace: weakFurnaceReport(plan.normalisation, values, key) }
+      ? {
+          weakFurnace: weakFurnaceReport(
+            /** @type {Parameters<typeof weakFurnaceReport>[0]} */ (plan.normalisation),
+            values,
+            key,
+          ),
+        }
       : {}),
     ...(plan.reciprocity
       ? { reciprocity: reciprocityReport(slot, slice(plan.reciprocity), values, plan.reciprocity.start) }
