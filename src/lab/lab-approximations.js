@@ -248,8 +248,9 @@ export function anisotropyNotes(scene) {
 
 /** The sentences under the lab's images: for each light on, how its approximation treats the chosen terms. */
 export function approximationNotes(scene) {
-  if (scene.measured) return measuredNotes(scene);
-  if (scene.custom) return customNotes(scene);
+  const whole = scene.anisotropy ? ['Anisotropy: not applied here; the whole BRDF is drawn as it is.'] : [];
+  if (scene.measured) return [...measuredNotes(scene), ...whole];
+  if (scene.custom) return [...customNotes(scene), ...whole];
   const { specular, diffuse } = has(scene.terms);
   const notes = specular ? [...specularNotes(scene), ...anisotropyNotes(scene)] : [];
   const surround = diffuse ? diffuseUnderSurround(scene) : null;

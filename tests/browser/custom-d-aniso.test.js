@@ -3,34 +3,14 @@
 // src/math/anisotropic.js over the stress grid; its normalisation over the 2-D hemisphere is 1 and Heitz's (2014)
 // weak furnace with GGX's Λ is 1 at every view; the same D without its π integrates to π, and anisotropic Beckmann
 // (a normalised D) fails the weak furnace with GGX's Λ but passes with Beckmann's.
-import { mkdtempSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join } from 'node:path';
-import { build } from 'vite';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { ROOT, launchBrowser, openPage, serveStatic } from './harness.js';
+import { openCustomTermsPage } from './custom-terms-open.js';
 
 let browser;
 let server;
 let page;
 beforeAll(async () => {
-  const outDir = mkdtempSync(join(tmpdir(), 'shading-lab-custom-d-aniso-'));
-  await build({
-    root: ROOT,
-    configFile: false,
-    base: './',
-    logLevel: 'warn',
-    build: {
-      outDir,
-      emptyOutDir: true,
-      chunkSizeWarningLimit: 4000, // three.js in one chunk: a test page, not a page of the app
-      rollupOptions: { input: join(ROOT, 'tests/browser/custom-terms.html') },
-    },
-  });
-  server = await serveStatic(outDir);
-  browser = await launchBrowser();
-  page = await openPage(browser, server.url, 'tests/browser/custom-terms.html');
-  await page.waitForFunction(() => window.__customTerms, { timeout: 30_000 });
+  ({ browser, server, page } = await openCustomTermsPage());
 }, 180_000);
 afterAll(async () => {
   await browser?.close();
