@@ -77,14 +77,14 @@ const REST = { f0: [0, 0, 0], diffuse: [0, 0, 0], alpha: 0.3, sigma: 0, anisotro
 
 /**
  * A lab material's values by parameter name (parameters.js): α, the pair (αx, αy) (equal to α when the lobe is
- * isotropic), the anisotropy a, F0, c_diff and σ; and a term's own parameter the material carries.
- * @param {{ f0: number[], diffuse: number[], alpha: number, sigma: number, exponent?: number,
+ * isotropic), the anisotropy a, F0, c_diff and σ. A term's own parameters (Blinn–Phong's exponent, …) are not the
+ * material's: termUniforms gives them their entries' defaults.
+ * @param {{ f0: number[], diffuse: number[], alpha: number, sigma: number,
  *   anisotropy?: import('./lab-anisotropy.js').LabAnisotropy | null }} material
  */
-function materialParams({ f0, diffuse, alpha, sigma, exponent, anisotropy }) {
+function materialParams({ f0, diffuse, alpha, sigma, anisotropy }) {
   const [alphaX, alphaY] = anisotropy?.alpha ?? [alpha, alpha];
-  const params = { alpha, alphaX, alphaY, anisotropy: anisotropy?.strength ?? 0, f0, cdiff: diffuse, sigma };
-  return exponent === undefined ? params : { ...params, exponent };
+  return { alpha, alphaX, alphaY, anisotropy: anisotropy?.strength ?? 0, f0, cdiff: diffuse, sigma };
 }
 
 /** `{ name: value }` as three.js uniforms (arrays copied: a uniform's value is its own). */
