@@ -45,8 +45,8 @@ vec3 lobeBRDF(vec3 l, vec3 v, vec3 f0) { return microfacetBRDF(l, v, uAlpha, f0)
 #endif
 #endif
 
-// The bent reflection vector (Filament's IBL, in three.js's weighting): the normal v would see if the surface had
-// no slope across the axis of least roughness (v with its part along that axis removed), mixed into n with weight
+// The bent reflection vector (Filament's IBL, in three.js's weighting): Filament's "anisotropic normal", v with its
+// part along the grain removed (the grain: the axis of the smaller α, the brushing lines), mixed into n with weight
 // 1 - (1 - a (1 - √α))⁴, and v mirrored about the result. A lookup direction, not a lobe: the stretched highlight
 // of a prefiltered map or a sphere light is drawn by moving one direction, which is what the error image measures.
 // (BENT_REFLECTION comes with ANISOTROPIC only: src/lab/lab-defines.js)

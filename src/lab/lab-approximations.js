@@ -201,7 +201,7 @@ export function customNotes({ lights, methods, material }) {
 /** Where an approximation reads the light for an anisotropic lobe: the bent reflection vector, or the mirror. */
 const readAlong = (a) =>
   a.bent
-    ? 'the bent reflection vector of Filament and three.js (n bent towards the normal v sees across the grain), ' +
+    ? 'the bent reflection vector of Filament and three.js (n bent towards v less its part along the brushing), ' +
       'which moves the highlight but cannot stretch it'
     : 'the mirror direction, as if the lobe were isotropic (the bent reflection vector is off)';
 
