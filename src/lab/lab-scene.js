@@ -6,6 +6,7 @@ import { srgbToLinear } from '../math/color.js';
 import { lightDirFromAngles } from '../math/angles.js';
 import { hexToRgb } from '../core/ui/palettes.js';
 import { DEG } from '../math/angles.js';
+import { anisotropyOf } from './lab-anisotropy.js';
 
 /**
  * @typedef {object} LabMaterialState  the material fields (MATERIAL_FIELDS) of a lab widget's state
@@ -53,6 +54,7 @@ import { DEG } from '../math/angles.js';
  * @property {LabLights} lights
  * @property {{ env: string, area: string, samples: number }} methods
  * @property {string} [measured]  the measured table's name, when a MERL file stands in for the model
+ * @property {import('./lab-anisotropy.js').LabAnisotropy | null} [anisotropy]  the lobe's stretch, when set
  */
 
 export const MATERIAL_OPTIONS = {
@@ -100,6 +102,7 @@ export function labScene(state, lights) {
     },
     lights,
     methods: { env: state.envMethod, area: state.areaMethod, samples: state.samples },
+    anisotropy: anisotropyOf(state),
   };
 }
 

@@ -36,6 +36,8 @@ export const PARAMETERS = {
     label: 'Roughness pair (αx, αy)',
     uniform: 'uAlphaPair',
   },
+  // the strength a of an anisotropic model (anisotropicAlphas maps α and a to the pair; the bent reflection reads a)
+  anisotropy: { min: 0, max: 1, unit: '', label: 'Anisotropy a', clamped: true, uniform: 'uAnisotropy' },
   // the reflectance at normal incidence: Schlick's F0, the diffuse terms' and the compensations'
   f0: {
     min: 0,

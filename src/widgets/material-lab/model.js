@@ -83,5 +83,26 @@ export const WHITE_LAMBERT_HEAD_ON = {
   ambient: false,
 };
 
+/**
+ * A starting point for anisotropy: aluminium (the talk's F0 table) brushed in circles around a pole tilted 50°
+ * up, as a turned disc is, Burley's mapping at a = 0.8 (αx = 0.472, αy = 0.132 from α = 0.25), the lines drawn.
+ */
+export const BRUSHED_ALUMINIUM = {
+  material: 'aluminum',
+  alpha: 0.25,
+  layers: 'both',
+  ndf: 'ggx',
+  visibility: 'smithGGXCorrelated',
+  compensation: 'none',
+  brdfSource: 'model',
+  anisotropy: 0.8,
+  anisotropyModel: 'burley2012',
+  tangentField: 'around',
+  tangentTheta: 50,
+  tangentPhi: 90,
+  tangentRotation: 0,
+  showTangents: true,
+};
+
 /** Whether the punctual light is the only light on (then the centre's radiance is π f c_light (n·l) alone). */
 export const punctualAlone = (lights) => Boolean(lights.punctual && !lights.sphere && !lights.env && !lights.ambient);

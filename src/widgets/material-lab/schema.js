@@ -8,6 +8,7 @@ import { LAB_TERMS } from '../../lab/lab-approximations.js';
 import { TERM_ALIASES } from '../../math/catalogue/index.js';
 import { SIGMA_HINT } from '../../core/ui/sigma-range.js';
 import { SLOTS } from '../../core/custom/slots.js';
+import { ANISOTROPY_MODELS, TANGENT_FIELDS } from '../../lab/lab-anisotropy.js';
 
 export const ENV_METHODS = {
   'split-sum': 'Split sum (prefiltered + DFG)',
@@ -60,6 +61,70 @@ export const schema = {
     label: 'Oren-Nayar σ',
     unit: '°',
     hint: SIGMA_HINT,
+  },
+  // the anisotropic lobe (issue 28): off at 0, the talk's isotropic lobe; src/lab/lab-anisotropy.js reads these
+  anisotropy: {
+    group: 'Anisotropy',
+    closed: true,
+    type: 'number',
+    min: 0,
+    max: 1,
+    step: 0.01,
+    default: 0,
+    label: 'Anisotropy a',
+    hint: 'Stretches the GGX lobe along the tangent t; 0 is the isotropic lobe.',
+  },
+  anisotropyModel: {
+    group: 'Anisotropy',
+    type: 'enum',
+    options: ANISOTROPY_MODELS,
+    default: 'burley2012',
+    label: 'From α and a to (αx, αy)',
+  },
+  tangentField: {
+    group: 'Anisotropy',
+    type: 'enum',
+    options: TANGENT_FIELDS,
+    default: 'around',
+    label: 'Tangent field',
+  },
+  tangentTheta: {
+    group: 'Anisotropy',
+    type: 'number',
+    min: 0,
+    max: 180,
+    step: 1,
+    default: 50,
+    label: 'Pole or axis θ from view',
+    unit: '°',
+  },
+  tangentPhi: {
+    group: 'Anisotropy',
+    type: 'number',
+    min: -180,
+    max: 180,
+    step: 1,
+    default: 90,
+    label: 'Pole or axis φ',
+    unit: '°',
+  },
+  tangentRotation: {
+    group: 'Anisotropy',
+    type: 'number',
+    min: -90,
+    max: 90,
+    step: 1,
+    default: 0,
+    label: 'Tangent rotation',
+    unit: '°',
+  },
+  showTangents: { group: 'Anisotropy', type: 'bool', default: false, label: 'Show the brushing lines' },
+  bentReflection: {
+    group: 'Anisotropy',
+    type: 'bool',
+    default: true,
+    label: 'Bent reflection vector',
+    hint: 'The split sum and sphere light read the light along the bent vector (Filament, three.js), or the mirror.',
   },
   brdfSource: {
     group: 'BRDF terms',

@@ -7,6 +7,7 @@ import { termEntry } from '../../math/catalogue/index.js';
 import { brdfFromPunctualRadiance } from '../../math/brdf.js';
 import { MERL_TEXTURE_BYTES } from '../measured-brdf/texture-size.js';
 import { punctualAlone } from './model.js';
+import { anisotropyOf, stretchesLobe } from '../../lab/lab-anisotropy.js';
 
 export const ABOUT =
   'A shading model becomes a picture only with an illumination model. The left sphere is rendered the way a ' +
@@ -129,15 +130,17 @@ export const NOTICES = {
   noFile: 'No environment file has been dropped yet: drop an .hdr or .exr panorama on the widget. Kept the studio.',
   dropText: 'Load an .hdr / .exr environment or a MERL .binary BRDF…',
   headOn: 'Check the π: a white Lambert sphere lit head-on by the punctual light alone',
+  brushed: 'Brushed aluminium: an anisotropic GGX lobe on a machined disc, its brushing lines shown',
 };
 
 const short = (family, key) => texText(termEntry(family, key).short);
 
 /**
  * The lab's BRDF as TeX: the diffuse and specular layers with their terms named (each tied to the control of
- * `keys`, the state key that chooses it, when the widget has one), then α and F0 of `material` (materialOf).
+ * `keys`, the state key that chooses it, when the widget has one), then α and F0 of `material` (materialOf), and
+ * the pair (αx, αy) of an `anisotropy` the lobe is stretched by (lab-anisotropy.js).
  */
-export function brdfTex(terms, material, keys = {}) {
+export function brdfTex(terms, material, keys = {}, anisotropy = null) {
   const tie = (key, tex) => (keys[key] ? `\\sym{${keys[key]}}{${tex}}` : tex);
   const F = tie('F', terms.F === 'one' ? '1' : `F_{${short('fresnel', terms.F)}}`);
   const D = tie('D', `D_{${short('ndf', terms.D)}}`);
@@ -154,7 +157,11 @@ export function brdfTex(terms, material, keys = {}) {
     ? texNumber(material.f0[0])
     : `(${material.f0.map((x) => texNumber(x)).join(',\\ ')})`;
   const params = `${tie('alpha', `\\alpha = ${texNumber(material.alpha, 3)}`)},\\ ${tie('f0', `F_0 = ${f0}`)}`;
-  return `${tie('layers', 'f(\\mathbf{l},\\mathbf{v})')} = ${layers},\\quad ${params}`;
+  const pair = anisotropy
+    ? `,\\ ${tie('anisotropy', `a = ${texNumber(anisotropy.strength, 2)}`)}:\\ (\\alpha_x, \\alpha_y) = ` +
+      `(${anisotropy.alpha.map((x) => texNumber(x, 3)).join(',\\ ')})`
+    : '';
+  return `${tie('layers', 'f(\\mathbf{l},\\mathbf{v})')} = ${layers},\\quad ${params}${pair}`;
 }
 
 export const PUNCTUAL =
@@ -188,7 +195,11 @@ export const FORMULA = declareFormula('material-lab', (state) => {
     layers: state.layers,
     compensation: state.compensation,
   };
-  const f = SOURCE_TEX[state.brdfSource] ?? brdfTex(terms, materialOf(state), { ...KEYS, f0: F0_KEY(state) });
+  const scene = { anisotropy: anisotropyOf(state), terms: { D: state.ndf, layers: state.layers } };
+  const stretch = stretchesLobe(scene) ? scene.anisotropy : null;
+  const f =
+    SOURCE_TEX[state.brdfSource] ??
+    brdfTex(terms, materialOf(state), { ...KEYS, f0: F0_KEY(state), anisotropy: 'anisotropy' }, stretch);
   if (!state.punctual) return f;
   const light =
     `${PUNCTUAL},\\quad \\sym{cLight}{\\mathbf{c}_{\\text{light}} = ${texNumber(state.cLight, 2)}},\\ ` +
