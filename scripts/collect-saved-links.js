@@ -85,13 +85,16 @@ const BY_HAND = {
   'fresnel-curves': [{ materials: ['custom', 'gold'], ior: 1.7 }],
 };
 
+/** Where the first other option opens no view: a measured BRDF needs a dropped file, which no link carries. */
+const OTHER = { 'material-lab': { brdfSource: 'custom' } };
+
 const links = [];
 const names = readdirSync(join(root, 'src/widgets')).filter((d) =>
   existsSync(join(root, 'src/widgets', d, 'schema.js')),
 );
 for (const name of names.sort()) {
   const { schema } = await load(`src/widgets/${name}/schema.js`);
-  const every = Object.fromEntries(Object.entries(schema).map(([k, f]) => [k, otherValue(f)]));
+  const every = { ...Object.fromEntries(Object.entries(schema).map(([k, f]) => [k, otherValue(f)])), ...OTHER[name] };
   links.push(
     ...linksOf(name, schema, defaultState(schema), 'defaults'),
     ...linksOf(name, schema, every, 'every field'),

@@ -1,45 +1,14 @@
 // Every link saved from the build before one name per idea (b048b6b: tests/support/saved-links.json, made by
 // scripts/collect-saved-links.js from that tree) opens the same view in this one: a share link, a chapter page's
 // link and an embed `set` of each widget, every field set, and that build's widget exercises. "The same view" is
-// the state that build opened the link at, with the renames below (this test's own table, not the schemas').
+// the state that build opened the link at, with the renames of tests/support/saved-links.js (not the schemas').
 import { describe, expect, it } from 'vitest';
-import { readFileSync } from 'node:fs';
-import { join } from 'node:path';
 import { coerceState, defaultState, stateToParams } from '../../src/core/framework/state.js';
 import { widgetParams } from '../../src/core/framework/widget-host.js';
 import { unknownKeys } from '../../src/core/framework/embed-protocol.js';
 import { validateExercise } from '../../src/exercises/validate.js';
 import { WIDGETS } from '../../src/widgets/registry.js';
-
-const SAVED = JSON.parse(readFileSync(join(import.meta.dirname, '../support/saved-links.json'), 'utf8'));
-
-/** Old key → new key, by widget: a term's choice under the catalogue's name (F, D, V, diffuse, compensation). */
-const RENAMED_KEYS = {
-  'ndf-explorer': { ndfs: 'D' },
-  'visibility-explorer': { terms: 'V' },
-  'diffuse-explorer': { models: 'diffuse' },
-  'material-lab': { fresnel: 'F', ndf: 'D', visibility: 'V', diffuseModel: 'diffuse', diffuse: 'cdiff' },
-  'lighting-models': { diffuse: 'cdiff' },
-};
-/** New key → { old option: new option }: a material set by hand is `manual`; `custom` is the user's own GLSL. */
-const RENAMED_OPTIONS = {
-  'material-lab': { material: { custom: 'manual' } },
-  'lighting-models': { material: { custom: 'manual' } },
-  'fresnel-curves': { materials: { custom: 'manual' } },
-};
-
-/** The old build's state under this build's names. */
-function renamed(widget, state) {
-  const keys = RENAMED_KEYS[widget] ?? {};
-  const options = RENAMED_OPTIONS[widget] ?? {};
-  return Object.fromEntries(
-    Object.entries(state).map(([k, v]) => {
-      const key = keys[k] ?? k;
-      const to = (x) => options[key]?.[x] ?? x;
-      return [key, Array.isArray(v) ? v.map(to) : to(v)];
-    }),
-  );
-}
+import { RENAMED_KEYS, SAVED, renamed } from '../support/saved-links.js';
 
 const schemaOf = async (name) => (Object.hasOwn(WIDGETS, name) ? (await WIDGETS[name].load()).widget.schema : null);
 

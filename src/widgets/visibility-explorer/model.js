@@ -51,7 +51,7 @@ export function visibilityCurves(state, customG = null) {
     return {
       key,
       label: termLabel('visibility', key),
-      ...seriesStyle(Object.keys(schema.terms.options).indexOf(key)),
+      ...seriesStyle(Object.keys(schema.V.options).indexOf(key)),
       G,
       error,
       worst: Math.max(...within.map(Math.abs)),
