@@ -218,7 +218,8 @@ describe('diffuse-explorer plots and state', () => {
     const query = Object.entries(s)
       .map(([k, v]) => `${k}=${v}`)
       .join('&');
-    const page = await open(browser, `embed.html?w=diffuse-explorer&diffuse=lambert,fresnelWeighted,orenNayar&${query}`);
+    const chosen = 'diffuse=lambert,fresnelWeighted,orenNayar';
+    const page = await open(browser, `embed.html?w=diffuse-explorer&${chosen}&${query}`);
     await widget(page, 'diffuse-explorer');
     const plots = await page.evaluate(() => globalThis.__shadingLab.widgets['diffuse-explorer'].getPlots());
     const l = lightFrom(s.lightTheta, s.lightPhi);

@@ -53,7 +53,8 @@ describe('the old link draws what the new link draws', () => {
     it(`${name}: the spheres of its by-hand link, old names against the names written now`, async () => {
       const saved = SAVED.links.find((l) => l.widget === name && l.what === 'by hand 1' && l.form === 'share');
       const schema = await schemaOf(name);
-      const now = `embed.html?${new URLSearchParams([['w', name], ...stateToParams(schema, renamed(name, saved.state))])}`;
+      const params = stateToParams(schema, renamed(name, saved.state));
+      const now = `embed.html?${new URLSearchParams([['w', name], ...params])}`;
       expect(now).not.toBe(saved.link); // the names differ …
       expect(await picture(saved.link)).toBe(await picture(now)); // … the pixels do not
     }, 240_000);
