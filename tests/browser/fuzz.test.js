@@ -446,7 +446,7 @@ describe('fuzz: files dropped and fetched', () => {
 describe('the three links of issue 17 that crashed a widget', () => {
   const LINKS = {
     'brdf-lobe': ['F=__proto__', ['F']],
-    'visibility-explorer': ['terms=__proto__', ['terms']],
+    'visibility-explorer': ['V=__proto__', ['V']],
     'fresnel-zones': [
       'shape=__proto__&camera=constructor&palette=toString&mode=hasOwnProperty',
       ['shape', 'camera', 'palette', 'mode'],

@@ -29,7 +29,7 @@ const CONVERGE_MS = 180_000;
 
 async function furnaceLab(compensation) {
   const query =
-    'lab.punctual=0&lab.environment=furnace&lab.layers=specular&lab.fresnel=one&lab.alpha=1' +
+    'lab.punctual=0&lab.environment=furnace&lab.layers=specular&lab.F=one&lab.alpha=1' +
     `&lab.compensation=${compensation}&lab.refSamples=128`;
   const page = await open(browser, `rendering.html?${query}`, { width: 1200, height: 900 });
   await widget(page, 'lab');

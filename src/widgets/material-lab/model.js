@@ -70,10 +70,10 @@ export function missingFile(changed, state, has) {
 
 /** One click to the talk's check of the π: a white Lambert sphere under the punctual light alone, head-on. */
 export const WHITE_LAMBERT_HEAD_ON = {
-  material: 'custom',
-  diffuse: '#ffffff',
+  material: 'manual',
+  cdiff: '#ffffff',
   layers: 'diffuse',
-  diffuseModel: 'lambert',
+  diffuse: 'lambert',
   brdfSource: 'model',
   punctual: true,
   lightTheta: 0,
@@ -91,8 +91,8 @@ export const BRUSHED_ALUMINIUM = {
   material: 'aluminum',
   alpha: 0.25,
   layers: 'both',
-  ndf: 'ggx',
-  visibility: 'smithGGXCorrelated',
+  D: 'ggx',
+  V: 'smithGGXCorrelated',
   compensation: 'none',
   brdfSource: 'model',
   anisotropy: 0.8,

@@ -27,11 +27,27 @@ export const schema = {
     default: 'both',
     label: 'Layers',
   },
-  fresnel: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.fresnel, default: 'schlick', label: 'Fresnel F' },
-  ndf: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.ndf, default: 'ggx', label: 'Distribution D' },
-  visibility: {
+  // the terms under the catalogue's names for a choice (F, D, V, diffuse, compensation); `formerly`: old links' names
+  F: {
     group: 'BRDF terms',
     type: 'enum',
+    formerly: ['fresnel'],
+    options: LAB_TERMS.fresnel,
+    default: 'schlick',
+    label: 'Fresnel F',
+  },
+  D: {
+    group: 'BRDF terms',
+    type: 'enum',
+    formerly: ['ndf'],
+    options: LAB_TERMS.ndf,
+    default: 'ggx',
+    label: 'Distribution D',
+  },
+  V: {
+    group: 'BRDF terms',
+    type: 'enum',
+    formerly: ['visibility'],
     options: LAB_TERMS.visibility,
     default: 'smithGGXCorrelated',
     label: 'Visibility V',
@@ -43,9 +59,10 @@ export const schema = {
     default: 'none',
     label: 'Multiple scattering',
   },
-  diffuseModel: {
+  diffuse: {
     group: 'BRDF terms',
     type: 'enum',
+    formerly: ['diffuseModel'], // and `diffuse` was the colour, now `cdiff`: the value tells which is meant
     options: LAB_TERMS.diffuse,
     aliases: TERM_ALIASES.diffuse, // the spellings of old links: 'oren-nayar', …
     default: 'lambert',

@@ -117,7 +117,7 @@ export function description(st, lights, stats, measuredName) {
     stats.samples < stats.target
       ? 'The reference is still converging.'
       : `RMS error ${fmt(stats.rms, 3)}, ${fmt(stats.relative * 100, 3)} % relative; ${fmt(stats.ms, 3)} ms.`;
-  const model = st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material;
+  const model = st.material === 'manual' ? `F0 ${st.f0}, diffuse ${st.cdiff}` : st.material;
   const what = measuredName ? `the measured BRDF ${measuredName}` : `${model}, roughness α ${st.alpha}`;
   return (
     `Material lab. A sphere (${what}) lit by ${methodText(st, lights)}; beside it the Monte Carlo reference ` +
@@ -166,17 +166,11 @@ export function brdfTex(terms, material, keys = {}, anisotropy = null) {
 
 export const PUNCTUAL =
   'L_o = \\pi f(\\mathbf{l}_c,\\mathbf{v}) \\otimes \\mathbf{c}_{\\text{light}}(\\mathbf{n}\\cdot\\mathbf{l}_c)';
-const KEYS = {
-  F: 'fresnel',
-  D: 'ndf',
-  V: 'visibility',
-  diffuse: 'diffuseModel',
-  layers: 'layers',
-  compensation: 'compensation',
-  alpha: 'alpha',
-};
+// the terms' names in the state are the catalogue's choice (F, D, V, diffuse, compensation): each ties to its own key
+const TERM_KEYS = ['F', 'D', 'V', 'diffuse', 'layers', 'compensation'];
+const KEYS = Object.fromEntries([...TERM_KEYS, 'alpha'].map((k) => [k, k]));
 
-const F0_KEY = (state) => (state.material === 'custom' ? 'f0' : 'material');
+const F0_KEY = (state) => (state.material === 'manual' ? 'f0' : 'material');
 /** A BRDF that is not the model's terms: named, not written out. */
 const SOURCE_TEX = {
   measured: '\\sym{brdfSource}{f(\\mathbf{l}, \\mathbf{v}) = f_{\\text{measured}}\\ \\text{(a MERL table)}}',
@@ -187,15 +181,8 @@ const SOURCE_TEX = {
 
 /** The lab's BRDF and, with the punctual light on, the talk's punctual-light equation with its c_light. */
 export const FORMULA = declareFormula('material-lab', (state) => {
-  const terms = {
-    F: state.fresnel,
-    D: state.ndf,
-    V: state.visibility,
-    diffuse: state.diffuseModel,
-    layers: state.layers,
-    compensation: state.compensation,
-  };
-  const scene = { anisotropy: anisotropyOf(state), terms: { D: state.ndf, layers: state.layers } };
+  const terms = Object.fromEntries(TERM_KEYS.map((k) => [k, state[k]]));
+  const scene = { anisotropy: anisotropyOf(state), terms: { D: state.D, layers: state.layers } };
   const stretch = stretchesLobe(scene) ? scene.anisotropy : null;
   const f =
     SOURCE_TEX[state.brdfSource] ??

@@ -103,25 +103,23 @@ export const measuredOnAngles = (slice) =>
  */
 export function ndfCurves(state) {
   const params = matchNdfWidths(state.hwhm, { abcA2: state.abcA2, sgdP: state.sgdP });
-  return state.ndfs
-    .filter((key) => NDF_KEYS.includes(key))
-    .map((key) => {
-      const p = params[key];
-      const D = (c) => NDF_TERMS[key](c, p);
-      let integral = null;
-      return {
-        key,
-        p,
-        aniso: anisotropicLobe(key, p, state),
-        ...withStyle(key),
-        values: ANGLES.map((deg) => D(Math.cos(deg * DEG))),
-        /** Computed when first read: only the table shows it, and it costs more than a frame while dragging. */
-        get integral() {
-          integral ??= ndfProjectedIntegral(D);
-          return integral;
-        },
-      };
-    });
+  return state.D.filter((key) => NDF_KEYS.includes(key)).map((key) => {
+    const p = params[key];
+    const D = (c) => NDF_TERMS[key](c, p);
+    let integral = null;
+    return {
+      key,
+      p,
+      aniso: anisotropicLobe(key, p, state),
+      ...withStyle(key),
+      values: ANGLES.map((deg) => D(Math.cos(deg * DEG))),
+      /** Computed when first read: only the table shows it, and it costs more than a frame while dragging. */
+      get integral() {
+        integral ??= ndfProjectedIntegral(D);
+        return integral;
+      },
+    };
+  });
 }
 
 /** Where the tails are compared: beyond every matched width (1°–40°), short of grazing. One of ANGLES. */

@@ -12,7 +12,7 @@ import { ABOUT, TERMS_USED, TITLE, describeSpheres } from './words.js';
 
 export { schema };
 
-const CURVE_KEYS = ['hwhm', 'abcA2', 'sgdP', 'ndfs', 'codeD', 'params', 'anisotropy', 'convention'];
+const CURVE_KEYS = ['hwhm', 'abcA2', 'sgdP', 'D', 'codeD', 'params', 'anisotropy', 'convention'];
 const LOG_KEYS = [...CURVE_KEYS, 'measured', 'measuredName'];
 
 export function createNdfExplorer(container, initialState = {}, { onStateChange, locked } = {}) {

@@ -156,10 +156,10 @@ const NDF_TEX = {
 
 /** The first chosen NDF, with the parameters that give it the matched half width. */
 export const FORMULA = declareFormula('ndf-explorer', (state) => {
-  const key = state.ndfs[0];
-  if (!key) return '\\sym{ndfs}{\\text{no distribution chosen}}';
+  const key = state.D[0];
+  if (!key) return '\\sym{D}{\\text{no distribution chosen}}';
   const [D, params] = NDF_TEX[key](state, state.hwhm * DEG);
   const width =
     `D(\\theta_{1/2}) = \\tfrac{1}{2}D(0),\\quad \\sym{hwhm}{\\theta_{1/2} =` + ` ${texNumber(state.hwhm, 1)}^\\circ}`;
-  return `\\begin{gathered}\\sym{ndfs}{${D}},\\quad ${params}\\\\ ${width}\\end{gathered}`;
+  return `\\begin{gathered}\\sym{D}{${D}},\\quad ${params}\\\\ ${width}\\end{gathered}`;
 });

@@ -15,8 +15,9 @@ export const schema = {
     label: 'Directions',
   },
   viewTheta: { type: 'number', min: 0, max: 85, step: 1, default: 60, label: 'View angle (view fixed)', unit: '°' },
-  terms: {
+  V: {
     type: 'set',
+    formerly: ['terms'],
     options: termOptions('visibility', undefined, { custom: true }),
     default: [
       'implicit',

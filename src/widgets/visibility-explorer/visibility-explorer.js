@@ -12,7 +12,7 @@ import { ABOUT, TERMS_USED, TITLE, describeSpheres } from './words.js';
 
 export { schema };
 
-const CURVE_KEYS = ['alpha', 'config', 'viewTheta', 'terms', 'codeV', 'params', 'anisotropy', 'convention'];
+const CURVE_KEYS = ['alpha', 'config', 'viewTheta', 'V', 'codeV', 'params', 'anisotropy', 'convention'];
 
 export function createVisibilityExplorer(container, initialState = {}, { onStateChange, locked } = {}) {
   let explorer = null; // made below: the custom V's hooks run only once it is

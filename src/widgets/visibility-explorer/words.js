@@ -101,11 +101,11 @@ const V_TEX = {
 
 /** V = G / ((n·l)(n·v)) and the first chosen term, with the state's α. */
 export const FORMULA = declareFormula('visibility-explorer', (state) => {
-  const key = state.terms[0];
+  const key = state.V[0];
   const a = `\\sym{alpha}{${texNumber(state.alpha, 2)}}`;
   const a2 = `${texNumber(state.alpha ** 2)}`;
   const k = texNumber(state.alpha / 2);
   const V = 'V(\\mathbf{l},\\mathbf{v}) = \\frac{G(\\mathbf{l},\\mathbf{v},\\mathbf{h})}{\\nl \\nv }';
-  const term = key ? `\\sym{terms}{${V_TEX[key](a2, a, k)}}` : '\\sym{terms}{\\text{no term chosen}}';
+  const term = key ? `\\sym{V}{${V_TEX[key](a2, a, k)}}` : '\\sym{V}{\\text{no term chosen}}';
   return `\\begin{gathered}${V},\\quad \\alpha = ${a},\\ \\alpha^2 = ${a2}\\\\ ${term}\\end{gathered}`;
 });
