@@ -42,7 +42,9 @@ const highlightExtent = (page, png, i, count) =>
 describe('ndf-explorer, anisotropy', () => {
   it('stretches GGX’s highlight along the tangent (left to right); states the half widths of src/math', async () => {
     // the light at the view: the isotropic highlight is a round spot at the sphere's centre
-    const page = await open(browser, 'embed.html?w=ndf-explorer&exposure=0.5&lightTheta=0');
+    // five spheres in one row, the highlight's shape measured per cell: a size the claim needs
+    const size = { width: 1280, height: 900 };
+    const page = await open(browser, 'embed.html?w=ndf-explorer&exposure=0.5&lightTheta=0', size);
     await widget(page, 'ndf-explorer');
     const sphere = '.widget-ndf-explorer .sphere-grid canvas';
     const [w0, h0] = await highlightExtent(page, await shot(page, sphere), 2, 5); // GGX, third of five

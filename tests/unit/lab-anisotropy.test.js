@@ -37,7 +37,7 @@ describe('the lab’s anisotropic lobe', () => {
   it('stretches GGX only, with the specular layer on, and not a measured table', () => {
     const on = { anisotropy: 0.5 };
     expect(stretchesLobe(sceneOf(on))).toBe(true);
-    expect(stretchesLobe(sceneOf({ ...on, ndf: 'beckmann' }))).toBe(false);
+    expect(stretchesLobe(sceneOf({ ...on, D: 'beckmann' }))).toBe(false);
     expect(stretchesLobe(sceneOf({ ...on, layers: 'diffuse' }))).toBe(false);
     expect(stretchesLobe({ ...sceneOf(on), measured: 'a table' })).toBe(false);
     expect(sceneDefines(sceneOf(on), false)).toMatchObject({ ANISOTROPIC: 1, BENT_REFLECTION: 1 });
@@ -45,7 +45,7 @@ describe('the lab’s anisotropic lobe', () => {
     expect(sceneDefines(sceneOf({ ...on, tangentField: 'along' }), true)).toMatchObject({ TANGENT_ALONG: 1 });
     expect(sceneDefines(sceneOf({ ...on, bentReflection: false }), false)).not.toHaveProperty('BENT_REFLECTION');
     expect(sceneDefines(sceneOf({}), false)).not.toHaveProperty('ANISOTROPIC');
-    const beckmann = approximationNotes(sceneOf({ ...on, ndf: 'beckmann' }));
+    const beckmann = approximationNotes(sceneOf({ ...on, D: 'beckmann' }));
     expect(beckmann.join(' ')).toMatch(/stretches GGX only.*Beckmann stays isotropic/);
   });
 
@@ -60,7 +60,7 @@ describe('the lab’s anisotropic lobe', () => {
     expect(uniforms.uDiffuse.value).toEqual([0, 0, 0]); // a metal
     expect(uniforms.uTangentAxis.value).toEqual(scene.anisotropy.field.axis);
     // isotropic: the pair is α twice, a is 0; Blinn–Phong's exponent from its entry's default
-    const iso = { ...sceneOf({ alpha: 0.4, sigma: 30, ndf: 'ggx' }), maps: MAPS };
+    const iso = { ...sceneOf({ alpha: 0.4, sigma: 30, D: 'ggx' }), maps: MAPS };
     setSceneUniforms(uniforms, iso, { reference: true, dfg: () => null });
     expect([uniforms.uAlphaPair.value, uniforms.uAnisotropy.value]).toEqual([[0.4, 0.4], 0]);
     expect(uniforms.uSigma.value).toBeCloseTo((30 * Math.PI) / 180, 14);
