@@ -1,8 +1,12 @@
 // Embedding, the WebGL context budget: a page of twenty 3-D widgets (wall.html) and a gallery of same-origin
-// frames held within the browser's cap on live contexts, and slots given back by a removed frame.
+// frames held within the browser's cap on live contexts, and slots given back by a removed frame. The wall, its
+// twenty tiles mounted and scrolled through, is also where it is checked under the policy and by axe-core (as
+// every other page is in axe.test.js): mounting them is most of the time either takes.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { baseUrl, distinctColors, launchBrowser, open, settle } from './helpers.js';
 import { openPage } from './harness.js';
+import { recordViolations } from './under-policy.js';
+import { axeViolations } from './axe-run.js';
 
 let browser;
 beforeAll(async () => {
@@ -144,9 +148,13 @@ describe('twenty 3-D widgets on one page (wall.html)', () => {
   });
 
   it(
-    'draws every widget when it is in view, ' + 'never holds more contexts than the budget, and loses none unplanned',
+    'draws every widget when it is in view, never holds more contexts than the budget, and loses none ' +
+      'unplanned; under the policy with no violation, and axe finds no violation (WCAG 2.2 A and AA)',
     async () => {
-      const page = await openCounted('wall.html', { on: own });
+      const page = await openCounted('wall.html', {
+        on: own,
+        beforeLoad: (p) => p.evaluateOnNewDocument(recordViolations),
+      });
       await page.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 20, {
         timeout: 120_000,
         polling: 500,
@@ -185,11 +193,13 @@ describe('twenty 3-D widgets on one page (wall.html)', () => {
       expect(gl.restored).toBeGreaterThan(0); // ...and taken back
       expect(gl.most).toBeLessThanOrEqual(limit);
       expect(await page.evaluate(() => window.__shadingLabGl.peak)).toBeLessThanOrEqual(limit);
+      expect(await axeViolations(page), 'axe over the wall, its twenty tiles up').toEqual([]);
+      expect(await page.evaluate(() => window.__csp ?? []), 'policy violations').toEqual([]);
       expect(page.glWarnings).toEqual([]);
       expect(page.errors).toEqual([]);
       await page.close();
     },
-    240_000,
+    300_000,
   );
 });
 
