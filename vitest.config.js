@@ -8,7 +8,8 @@ import { configDefaults, defineConfig } from 'vitest/config';
 // A unit test gets 30 s, not vitest's 5 s: on this 2-core machine shared with other work (load average 20 to 28)
 // the heaviest Node cases (tests/unit/measured-model.test.js) took 10 and 13 s; after they wrote less of their MERL
 // files, 4 and 2 s, but 16 and 12 s with two CPU hogs and a browser test beside them. 30 s is about twice the
-// worst seen, and a test that hangs still fails within half a minute.
+// worst seen, and a test that hangs still fails within half a minute. A hook gets the same (a beforeAll that imports
+// the app with a module mocked took over vitest's 10 s at a load average of about 40).
 // The unit files share their worker's modules (isolate: false): isolated, each of the 96 files imported the app's
 // modules afresh (three.js and every widget, for the files that load the registry), 366 s of import in a run at a
 // load average of about 30; eight of those files took 91 s isolated and 39 s shared, back to back. The files that
@@ -65,6 +66,7 @@ export default defineConfig({
           environment: 'node',
           isolate: false,
           testTimeout: 30_000,
+          hookTimeout: 30_000,
           maxWorkers: 2,
         },
       },
@@ -75,6 +77,7 @@ export default defineConfig({
           include: ISOLATED_UNIT,
           environment: 'node',
           testTimeout: 30_000,
+          hookTimeout: 30_000,
           maxWorkers: 2,
         },
       },
