@@ -31,7 +31,7 @@ afterAll(async () => {
   await browser?.close();
 });
 
-/** Scrolls through the page a screen at a time (lazy parts load, views draw their first frame), back to the top. */
+/** Scrolls through the page a screen at a time (lazy parts load, views draw their first frame). */
 async function visitAll(page) {
   const [height, screen] = await page.evaluate(() => [document.body.scrollHeight, innerHeight]);
   for (let y = screen; y < height; y += screen) {
