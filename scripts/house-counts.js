@@ -1,7 +1,7 @@
 // The counts of issue 27's note, from a command: `node scripts/house-counts.js [DIR]` (DIR: a checkout, default
 // this one; run it on two checkouts for before and after). Each line says what it counts.
 import { execFileSync } from 'node:child_process';
-import { readFileSync, readdirSync } from 'node:fs';
+import { existsSync, readFileSync, readdirSync } from 'node:fs';
 import { join, relative, resolve } from 'node:path';
 import { ESLint } from 'eslint';
 
@@ -21,11 +21,14 @@ const code = tracked;
 
 // files a new anisotropic term needs: the test's family modules (its vi.doMock targets) and the GLSL files of its
 // functions (its CHUNKS), beside the JS functions it writes in place of a src/math file
-const addTest = text('tests/unit/add-an-anisotropic-term.test.js');
-const mocked = [...new Set([...addTest.matchAll(/vi\.doMock\('([^']+)'/g)].map((m) => m[1]))];
-const glsl = [...new Set([...addTest.matchAll(/'([\w-]+\.glsl)':/g)].map((m) => m[1]))];
-console.log(`files to add an anisotropic D and V (the test's): ${mocked.length + glsl.length + 1}`);
-console.log(`  ${[...mocked, ...glsl, 'one src/math file for the two JS functions'].join(', ')}`);
+const ADD_TEST = 'tests/unit/add-an-anisotropic-term.test.js';
+if (existsSync(join(root, ADD_TEST))) {
+  const addTest = text(ADD_TEST);
+  const mocked = [...new Set([...addTest.matchAll(/vi\.doMock\('([^']+)'/g)].map((m) => m[1]))];
+  const glsl = [...new Set([...addTest.matchAll(/'([\w-]+\.glsl)':/g)].map((m) => m[1]))];
+  console.log(`files to add an anisotropic D and V (the test's): ${mocked.length + glsl.length + 1}`);
+  console.log(`  ${[...mocked, ...glsl, 'one src/math file for the two JS functions'].join(', ')}`);
+} else console.log(`files to add an anisotropic D and V: no ${ADD_TEST} in this tree to show it`);
 
 const lines = code.filter((f) => f.startsWith('src/')).map((f) => [f, text(f).split('\n').length - 1]);
 const [bigFile, bigLines] = lines.sort((a, b) => b[1] - a[1])[0];
