@@ -1,7 +1,11 @@
 // The GPU half of `npm run bench`: each variant's GLSL expression evaluated LOOPS times per pixel over a
 // full-screen pass; each frame is drained (a 1-pixel readPixels waits for the GPU), the median frame kept.
+// Each program goes through the app's one shader builder (src/core/gpu/shader-builder.js) and is checked by its
+// compileShader, as every view's is.
+import * as THREE from 'three';
 import { FAMILIES } from './families.js';
-import { assembleGlsl } from '../src/core/gpu/glsl.js';
+import { SHADER_CHUNKS } from '../src/core/gpu/shader-chunks.js';
+import { buildShader, compileShader } from '../src/core/gpu/shader-builder.js';
 import { compareWithMeshStandard } from './versus-three.js';
 
 const params = new URLSearchParams(location.search);
@@ -10,15 +14,17 @@ const SIZE = 256;
 const LOOPS = 16;
 
 const canvas = document.createElement('canvas');
-canvas.width = canvas.height = SIZE;
-const gl = canvas.getContext('webgl2', { antialias: false, preserveDrawingBuffer: false });
+const renderer = new THREE.WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: false });
+renderer.setPixelRatio(1);
+renderer.setSize(SIZE, SIZE, false);
+const gl = renderer.getContext();
+const pass = Object.assign(new THREE.Mesh(new THREE.PlaneGeometry(2, 2)), { frustumCulled: false });
+const scene = new THREE.Scene().add(pass);
+const camera = new THREE.Camera();
 
-const VERT = `#version 300 es
-in vec2 position;
-void main() { gl_Position = vec4(position, 0.0, 1.0); }`;
-
+/** The bench's fragment program: `expr` evaluated LOOPS times per pixel, after the term chunks it calls. */
 function fragment(expr, setup = {}) {
-  const body = `#include "fresnel.glsl"
+  return `#include "fresnel.glsl"
 #include "visibility.glsl"
 #include "diffuse.glsl"
 ${setup.chunk ? `#include "${setup.chunk}"` : ''}
@@ -34,64 +40,44 @@ void main() {
   }
   fragColor = vec4(acc);
 }`;
-  return (
-    `#version 300 es\nprecision highp float;\nprecision highp ` +
-    `int;\n${assembleGlsl(body, { defines: setup.defines ?? {} })}`
+}
+
+/** A family's square RGBA float tables ({ size, data }) as sampler uniforms. */
+function tableUniforms(tables = {}) {
+  return Object.fromEntries(
+    Object.entries(tables).map(([name, table]) => {
+      const { size, data } = table();
+      const texture = new THREE.DataTexture(data, size, size, THREE.RGBAFormat, THREE.FloatType);
+      texture.minFilter = texture.magFilter = THREE.NearestFilter;
+      texture.needsUpdate = true;
+      return [name, { value: texture }];
+    }),
   );
 }
 
-function program(expr, setup) {
-  const p = gl.createProgram();
-  for (const [type, src] of [
-    [gl.VERTEX_SHADER, VERT],
-    [gl.FRAGMENT_SHADER, fragment(expr, setup)],
-  ]) {
-    const s = gl.createShader(type);
-    gl.shaderSource(s, src);
-    gl.compileShader(s);
-    if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) throw new Error(`${expr}: ${gl.getShaderInfoLog(s)}`);
-    gl.attachShader(p, s);
-  }
-  gl.bindAttribLocation(p, 0, 'position');
-  gl.linkProgram(p);
-  if (!gl.getProgramParameter(p, gl.LINK_STATUS)) throw new Error(gl.getProgramInfoLog(p));
-  return p;
+/** The program of `expr` with a family's setup (its chunk, defines and tables), compiled; throws if it fails. */
+function program(expr, setup = {}) {
+  const chunks = { ...SHADER_CHUNKS, 'gpu-bench.frag.glsl': fragment(expr, setup) };
+  const uniforms = tableUniforms(setup.tables);
+  const material = buildShader('gpu-bench.frag.glsl', { chunks, defines: setup.defines ?? {}, uniforms });
+  const failed = compileShader(renderer, material);
+  if (failed) throw new Error(`${expr}: ${failed.fragment || failed.vertex || failed.program}`);
+  return material;
 }
 
-const buffer = gl.createBuffer();
-gl.bindBuffer(gl.ARRAY_BUFFER, buffer);
-gl.bufferData(gl.ARRAY_BUFFER, new Float32Array([-1, -1, 3, -1, -1, 3]), gl.STATIC_DRAW);
-gl.enableVertexAttribArray(0);
-gl.vertexAttribPointer(0, 2, gl.FLOAT, false, 0, 0);
 const pixel = new Uint8Array(4);
 
-function timeFrames(p) {
-  gl.useProgram(p);
+function timeFrames(material) {
+  pass.material = material;
   const times = [];
   for (let i = 0; i < FRAMES + 2; i++) {
     const t0 = performance.now();
-    gl.drawArrays(gl.TRIANGLES, 0, 3);
+    renderer.render(scene, camera);
     gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel); // waits for the frame
     if (i >= 2) times.push(performance.now() - t0); // the first two warm up (compilation, caches)
   }
   times.sort((a, b) => a - b);
   return times[Math.floor(times.length / 2)];
-}
-
-/** Binds a family's square RGBA float tables ({ size, data }) to its program's samplers, units 0, 1, … */
-function bindTables(p, tables = {}) {
-  gl.useProgram(p);
-  Object.entries(tables).forEach(([name, table], unit) => {
-    const { size, data } = table();
-    const t = gl.createTexture();
-    gl.activeTexture(gl.TEXTURE0 + unit);
-    gl.bindTexture(gl.TEXTURE_2D, t);
-    gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, size, size, 0, gl.RGBA, gl.FLOAT, data);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
-    gl.uniform1i(gl.getUniformLocation(p, name), unit);
-  });
-  return p;
 }
 
 // a program that does not compile throws: say so at once (bench.js stops waiting) instead of never being done
@@ -102,7 +88,7 @@ const results = {};
 for (const family of FAMILIES.filter((f) => !only || f.key === only)) {
   results[family.key] = {};
   for (const v of family.variants.filter((w) => w.glsl))
-    results[family.key][v.key] = timeFrames(bindTables(program(v.glsl, family.gpu), family.gpu?.tables));
+    results[family.key][v.key] = timeFrames(program(v.glsl, family.gpu));
 }
 window.__gpuBench = {
   done: true,

@@ -5,9 +5,9 @@ import { buildApp, launchBrowser, openPage, serveStatic, settle } from '../tests
 
 const CASES = [
   { environment: 'studio', material: 'gold', alpha: 0.1 },
-  { environment: 'studio', material: 'custom', alpha: 0.35 },
+  { environment: 'studio', material: 'manual', alpha: 0.35 },
   { environment: 'sky', material: 'iron', alpha: 0.5 },
-  { environment: 'sky', material: 'custom', alpha: 0.1 },
+  { environment: 'sky', material: 'manual', alpha: 0.1 },
 ];
 const METHODS = [['mirror', 1], ['split-sum', 1], ['pmrem', 1], ...[4, 16, 64, 256].map((n) => ['importance', n])];
 

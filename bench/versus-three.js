@@ -2,8 +2,7 @@
 // Schlick with F0 = 0.04, Lambert, one punctual light) against MeshStandardMaterial itself: same mesh,
 // same resolution, same light; each frame drained with a 1-pixel readPixels, the median kept.
 import * as THREE from 'three';
-import { assembleGlsl } from '../src/core/gpu/glsl.js';
-import { SHADER_CHUNKS } from '../src/core/gpu/shader-chunks.js';
+import { buildShader } from '../src/core/gpu/shader-builder.js';
 import { termDefines } from '../src/math/catalogue/index.js';
 
 const MESH_STANDARD_TERMS = termDefines({ F: 'schlick', D: 'ggx', V: 'smithGGXCorrelated', diffuse: 'lambert' });
@@ -20,19 +19,18 @@ export function compareWithMeshStandard({ size = 512, frames = 9 } = {}) {
   const lightDir = new THREE.Vector3(0.4, 0.5, 0.77).normalize(); // view space = world space here
   const alpha = 0.25;
 
-  const ours = new THREE.ShaderMaterial({
-    glslVersion: THREE.GLSL3,
+  const ours = buildShader('brdf-sphere.frag.glsl', {
+    vertex: 'surface.vert.glsl',
+    defines: MESH_STANDARD_TERMS,
     uniforms: {
       uLightDir: { value: lightDir },
       uLightIntensity: { value: 1 },
       uExposure: { value: 1 },
-      uAlpha: { value: alpha },
+      uAlphaPair: { value: new THREE.Vector2(alpha, alpha) },
       uF0: { value: 0.04 },
       uDiffuse: { value: 0.5 },
       uSigma: { value: 0 },
     },
-    vertexShader: SHADER_CHUNKS['surface.vert.glsl'],
-    fragmentShader: assembleGlsl(SHADER_CHUNKS['brdf-sphere.frag.glsl'], { defines: MESH_STANDARD_TERMS }),
   });
   // three's roughness r gives alpha = r²; F0 = 0.04 for metalness 0
   const theirs = new THREE.MeshStandardMaterial({

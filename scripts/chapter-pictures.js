@@ -17,14 +17,14 @@ const SHOTS = {
   brdf: ['embed.html?w=brdf-lobe&lightTheta=50&alpha=0.3', '.lobe-3d canvas'],
   microfacets: ['embed.html?w=microfacets&lightTheta=60&rays=24'],
   fresnel: ['embed.html?w=fresnel-zones&mode=zones-lh&shape=torusknot&lightTheta=140'],
-  ndf: ['embed.html?w=ndf-explorer&hwhm=12&ndfs=ggx,beckmann', '.sphere-grid canvas', 'contain', 420],
+  ndf: ['embed.html?w=ndf-explorer&hwhm=12&D=ggx,beckmann', '.sphere-grid canvas', 'contain', 420],
   visibility: [
-    'embed.html?w=visibility-explorer&alpha=0.9&lightTheta=60&terms=implicit,smithGGXCorrelated',
+    'embed.html?w=visibility-explorer&alpha=0.9&lightTheta=60&V=implicit,smithGGXCorrelated',
     '.sphere-grid canvas',
     'contain',
     420,
   ],
-  diffuse: ['embed.html?w=diffuse-explorer&models=lambert,orenNayar&sigma=60', '.sphere-grid canvas', 'contain', 420],
+  diffuse: ['embed.html?w=diffuse-explorer&diffuse=lambert,orenNayar&sigma=60', '.sphere-grid canvas', 'contain', 420],
   rendering: ['embed.html?w=material-lab&material=gold&alpha=0.25', '.widget-view canvas', 'contain'],
   performance: ['performance.html', '.uplot .u-wrap', 'contain', 560],
 };

@@ -55,6 +55,19 @@ float visibilitySmithGGXCorrelatedAniso(vec3 l, vec3 v, vec2 alpha) {
   return 2.0 / (v.z * ggxAnisoRoot(l, a) + l.z * ggxAnisoRoot(v, a));
 }
 
+// The catalogue's forms (src/math/catalogue: ggxAniso, beckmannAniso, smithGGXCorrelatedAniso): the same functions
+// over the components, as the JS twins and the dispatch (ndfTerm, visibilityTerm) pass them
+float ndfGGXAniso(float hx, float hy, float hz, float ax, float ay) {
+  return ndfGGXAniso(vec3(hx, hy, hz), vec2(ax, ay));
+}
+float ndfBeckmannAniso(float hx, float hy, float hz, float ax, float ay) {
+  return ndfBeckmannAniso(vec3(hx, hy, hz), vec2(ax, ay));
+}
+float visibilitySmithGGXCorrelatedAniso(
+  float lx, float ly, float lz, float vx, float vy, float vz, float ax, float ay) {
+  return visibilitySmithGGXCorrelatedAniso(vec3(lx, ly, lz), vec3(vx, vy, vz), vec2(ax, ay));
+}
+
 // the conventions of anisotropicAlphas (JS: 'burley2012', 'gltf', 'openpbr'); alpha = r² of each model
 #define ANISOTROPY_BURLEY2012 0
 #define ANISOTROPY_GLTF 1
@@ -83,8 +96,8 @@ vec3 sampleVisibleNormalGGXAniso(vec3 v, vec2 alpha, vec2 u) {
   float sinC = sqrt(u.x * (rho2 + (1.0 - u.x) * w1 * w1));
   float rs = rho + sinC;
   float rhoMinusSin = rs > 0.0 ? (1.0 - u.x) * (rho2 - u.x * w1 * w1) / rs : 0.0;
-  float c = cos(PI * u.y);
-  float s = sin(PI * u.y);
+  float c = sin(PI * (0.5 - u.y)); // cos(π u.y), exactly 0 at u.y = 0.5 (see the JS twin)
+  float s = sin(PI * min(u.y, 1.0 - u.y));
   float cosPsi = (c - s) * (c + s);
   float along = cosPsi >= 0.0 ? rho + sinC * cosPsi : rhoMinusSin + 2.0 * sinC * c * c;
   float across = 2.0 * sinC * s * c;

@@ -22,7 +22,7 @@ uniform vec3 uLightDir;
 uniform vec3 uEta;
 uniform vec3 uK;
 uniform vec3 uF0;
-uniform float uAlpha;
+uniform vec2 uAlphaPair; // (αx, αy), equal here: the zones are isotropic
 uniform float uExposure;
 uniform vec3 uZoneColors[3];
 out vec4 fragColor;
@@ -57,7 +57,7 @@ void main() {
   float nl = dot(n, l);
   float nh = dot(n, h);
   // sin²θh from n·h as ndfGGX has it (no local frame)
-  MicrofacetInput mi = microfacetInputFromCosines(nl, nv, nh, dot(l, h), sin2FromCos(min(nh, 1.0)), vec2(uAlpha));
+  MicrofacetInput mi = microfacetInputFromCosines(nl, nv, nh, dot(l, h), sin2FromCos(min(nh, 1.0)), uAlphaPair);
   weight = PI * ndfTerm(mi) * visibilityTerm(mi) / 4.0 * max(nl, 0.0);
 #endif
 #ifdef STATS_PASS

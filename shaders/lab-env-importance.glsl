@@ -2,7 +2,7 @@
 // pattern on every pixel (hammersley), every term evaluated at each. A model's lobe and its diffuse term are
 // sampled apart; a measured table (MEASURED), which has no diffuse part to sample alone, by both at once.
 #include "lab-surround.glsl"
-#include "ndf-sampling.glsl"
+#include "lab-lobe-sampling.glsl"
 
 #ifdef MEASURED
 // A table's f under the map: one direction from the fitted lobe and one by cosine per sample, each weighted by
@@ -10,7 +10,7 @@
 vec3 balancedSample(vec3 l, vec3 v, mat3 toWorld) {
   if (l.z <= 0.0) return vec3(0.0);
   vec3 h = normalize(l + v);
-  float pdf = reflectedPdf(h, dot(v, h), uAlpha) + l.z / PI;
+  float pdf = lobeReflectedPdf(v, h) + l.z / PI;
   return specularBRDF(l, v) * l.z * envMap(toWorld * l, 0.0) / max(pdf, 1e-30);
 }
 
@@ -18,7 +18,7 @@ vec3 evaluateEnvironment(vec3 n, mat3 toWorld, vec3 v) {
   vec3 sum = vec3(0.0);
   for (int i = 0; i < uSamples; i++) {
     vec2 u = hammersley(i, uSamples);
-    vec3 m = sampleLobeNormal(u, uAlpha);
+    vec3 m = lobeNormal(v, u);
     sum += balancedSample(2.0 * dot(v, m) * m - v, v, toWorld) + balancedSample(sampleCosine(u), v, toWorld);
   }
   return sum / float(uSamples);
@@ -30,11 +30,11 @@ vec3 evaluateEnvironment(vec3 n, mat3 toWorld, vec3 v) {
   int count = uSamples;
   for (int i = 0; i < count; i++) {
     vec2 u = hammersley(i, count);
-    vec3 m = sampleLobeNormal(u, uAlpha);
+    vec3 m = lobeNormal(v, u);
     float vm = dot(v, m);
     vec3 l = 2.0 * vm * m - v;
     if (vm > 0.0 && l.z > 0.0) {
-      sum += specularBRDF(l, v) * l.z / max(reflectedPdf(m, vm, uAlpha), 1e-30) * envMap(toWorld * l, 0.0);
+      sum += specularBRDF(l, v) * l.z / max(lobeReflectedPdf(v, m), 1e-30) * envMap(toWorld * l, 0.0);
     }
     vec3 ld = sampleCosine(u);
     sum += diffuseBRDF(ld, v) * PI * envMap(toWorld * ld, 0.0);

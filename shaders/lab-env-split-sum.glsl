@@ -18,7 +18,11 @@ vec3 prefiltered(vec3 r, float alpha) {
 }
 
 vec3 evaluateEnvironment(vec3 n, mat3 toWorld, vec3 v) {
+#ifdef ANISOTROPIC
+  vec3 rWorld = toWorld * lobeReflection(v); // the bent reflection vector: the prefilter has no anisotropic form
+#else
   vec3 rWorld = reflect(-vec3(0.0, 0.0, 1.0), n);
+#endif
   vec3 specular = prefiltered(rWorld, uAlpha) * dfgAlbedo(v.z);
   vec3 irradiance = envIrradiance(n);
   specular += multipleAlbedo(v.z) * irradiance;

@@ -9,7 +9,7 @@ vec3 evaluateSphereLight(mat3 toLocal, vec3 v) {
 #ifdef AREA_CENTRE
   return punctualRadiance(d, v, cLight);
 #else
-  vec3 lRep = sphereLightRepresentativeDir(reflect(-v, vec3(0.0, 0.0, 1.0)), d, uSphereSin);
+  vec3 lRep = sphereLightRepresentativeDir(lobeReflection(v), d, uSphereSin);
   vec3 specular = PI * specularBRDF(lRep, v) * cLight * max(lRep.z, 0.0) * sphereLightNormalization(uAlpha, uSphereSin);
   return specular + PI * diffuseBRDF(d, v) * cLight * max(d.z, 0.0);
 #endif

@@ -15,9 +15,10 @@
 #endif
 
 uniform vec3 uF0;
-uniform vec3 uDiffuseColor;
+uniform vec3 uDiffuse;
 uniform float uAlpha;
 uniform float uSigma;
+#include "lab-anisotropy.glsl"
 
 #ifdef SPECULAR_OFF
 const float specularOn = 0.0;
@@ -27,7 +28,7 @@ const float specularOn = 1.0;
 #ifdef DIFFUSE_OFF
 const vec3 diffuseColor = vec3(0.0);
 #else
-#define diffuseColor uDiffuseColor
+#define diffuseColor uDiffuse
 #endif
 
 #ifdef F_ONE
@@ -48,7 +49,7 @@ vec3 specularBRDF(vec3 l, vec3 v) {
 #ifdef MEASURED
   return measuredBRDF(vec3(0.0, 0.0, 1.0), l, v);
 #else
-  vec3 f = microfacetBRDF(l, v, uAlpha, uF0);
+  vec3 f = lobeBRDF(l, v, uF0);
 #if defined(COMPENSATION_TURQUIN)
   f *= energyCompensationTurquin(F0_BOUNCES, 1.0 - albedoLossTableGGX(v.z, uAlpha).x);
 #elif defined(COMPENSATION_KULLA_CONTY)

@@ -2,7 +2,7 @@
 // one batch, each pixel's pattern shifted (uJitter plus a hash), the batches averaged into a running mean
 // (uPrevious, weighted uWeight). The punctual light needs no samples: it is exact in both images.
 #include "lab-surround.glsl"
-#include "ndf-sampling.glsl"
+#include "lab-lobe-sampling.glsl"
 #include "env-sampling.glsl"
 #include "lab-light-sphere-pars.glsl"
 
@@ -41,7 +41,7 @@ vec3 evaluateReferenceSphereLight(mat3 toLocal, vec3 v, vec2 shift) {
 vec3 referenceSample(vec3 l, vec3 v, mat3 toWorld) {
   if (l.z <= 0.0) return vec3(0.0);
   vec3 h = normalize(l + v);
-  float pdf = reflectedPdf(h, dot(v, h), uAlpha) + l.z / PI;
+  float pdf = lobeReflectedPdf(v, h) + l.z / PI;
   vec3 dWorld = toWorld * l;
   if (uEnvSampling) pdf += environmentMapPdf(dWorld);
   return brdfTotal(l, v) * l.z * surroundRadiance(dWorld) / max(pdf, 1e-30);
@@ -53,7 +53,7 @@ vec3 evaluateReferenceSurround(mat3 toWorld, mat3 toLocal, vec3 v, vec2 shift) {
   vec3 sum = vec3(0.0);
   for (int i = 0; i < n; i++) {
     vec2 u = fract(hammersley(i, n) + shift);
-    vec3 m = sampleLobeNormal(u, uAlpha);
+    vec3 m = lobeNormal(v, u);
     sum += referenceSample(2.0 * dot(v, m) * m - v, v, toWorld);
     sum += referenceSample(sampleCosine(u.yx), v, toWorld);
     if (uEnvSampling) sum += referenceSample(toLocal * sampleEnvironmentMap(u), v, toWorld);

@@ -44,7 +44,7 @@ void main() {
     return;
   }
   vec3 n = vec3(p, sqrt(1.0 - r2));
-  mat3 toWorld = frameAround(n);
+  mat3 toWorld = shadingFrame(n);
   mat3 toLocal = transpose(toWorld);
   vec3 v = toLocal * vec3(0.0, 0.0, 1.0);
 #ifdef REFERENCE

@@ -36,7 +36,7 @@ function sphereFigure(parent, caption) {
 
 /** The hidden NDF's plot: its D(θh) among the explorer's five curves at this width, on its log plot's axes. */
 export function hiddenNdfPlot(params, hidden) {
-  const curves = ndfCurves({ hwhm: params.hwhm, abcA2: params.abcA2, sgdP: params.sgdP, ndfs: NDF_KEYS });
+  const curves = ndfCurves({ hwhm: params.hwhm, abcA2: params.abcA2, sgdP: params.sgdP, D: NDF_KEYS });
   const { clip, ...axes } = logAxes(curves);
   return {
     ...axes,

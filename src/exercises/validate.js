@@ -1,7 +1,7 @@
 // Checks an exercise file (parsed JSON) against the format in docs/exercises.md. Never throws: returns
 // { exercise, errors }, each error naming the field and what is wrong, so a lecturer can fix the file.
 import { CHAPTERS } from '../widgets/chapters.js';
-import { coerceState, defaultState, optionKey, showValue } from '../core/framework/state.js';
+import { coerceState, currentNames, defaultState, fieldOf, optionKey, showValue } from '../core/framework/state.js';
 import { GRADERS, isGraderName } from './graders.js';
 import { SHADER_FIELDS, shaderProblems } from './validate-shader.js';
 
@@ -61,6 +61,10 @@ export function fieldProblem(f, value) {
       return `unknown field type ${f.type}`;
   }
 }
+
+/** A valid value with an enum's or a set's old spellings (`aliases`) as their options' keys. */
+const ownOptions = (f, value) =>
+  f.type === 'enum' ? optionKey(f, value) : f.type === 'set' ? value.map((v) => optionKey(f, v)) : value;
 
 function requiredText(raw, key, errors) {
   if (typeof raw[key] !== 'string' || !raw[key].trim()) errors.push(`${key}: missing (a non-empty string)`);
@@ -134,8 +138,12 @@ async function widgetProblems(raw, grader, errors, schemaOf) {
   const widgetFits = !grader?.widget || raw.widget === grader.widget;
   if (!widgetFits)
     errors.push(`widget: grader "${raw.grader}" reads the "${grader.widget}" widget, not ${show(raw.widget ?? null)}`);
-  const state = raw.state ?? {};
-  const locked = raw.locked ?? [];
+  // an old file's keys under their fields' current names (a field's `formerly`), as a link's are
+  const state = schema && isObject(raw.state) ? currentNames(schema, raw.state) : (raw.state ?? {});
+  const locked =
+    schema && Array.isArray(raw.locked)
+      ? raw.locked.map((k) => (typeof k === 'string' ? fieldOf(schema, k, raw.state?.[k]) : k))
+      : (raw.locked ?? []);
   if (!isObject(state)) errors.push('state: not an object of widget state keys');
   else if (Object.keys(state).length && !schema && raw.widget == null) errors.push('state: given without a widget');
   else if (schema) {
@@ -145,6 +153,7 @@ async function widgetProblems(raw, grader, errors, schemaOf) {
       else {
         const why = fieldProblem(schema[key], value);
         if (why) errors.push(`state.${key}: ${why}`);
+        else state[key] = ownOptions(schema[key], value);
       }
     }
   }

@@ -4,6 +4,7 @@
 // the error image is read as the method's error and not as a difference between two models.
 import { SIGMA_MODELLED_DEG, sigmaExtrapolated, sigmaText } from '../core/ui/sigma-range.js';
 import { CATALOGUE, termEntry, termOptions } from '../math/catalogue/index.js';
+import { ANISOTROPIC_V, ANISOTROPY_MODELS, stretchesLobe } from './lab-anisotropy.js';
 
 /**
  * The keys of a family's terms that the catalogue says have the capability (src/math/catalogue/types.js), in
@@ -197,12 +198,61 @@ export function customNotes({ lights, methods, material }) {
   return notes;
 }
 
+/** Where an approximation reads the light for an anisotropic lobe: the bent reflection vector, or the mirror. */
+const readAlong = (a) =>
+  a.bent
+    ? 'the bent reflection vector of Filament and three.js (n bent towards v less its part along the brushing), ' +
+      'which moves the highlight but cannot stretch it'
+    : 'the mirror direction, as if the lobe were isotropic (the bent reflection vector is off)';
+
+/** What each method does with an anisotropic lobe (lab-anisotropy.js): the forms that have none, and what stands in. */
+export function anisotropyNotes(scene) {
+  const { anisotropy: a, terms, lights, methods } = scene;
+  if (!a || terms.layers === 'diffuse') return [];
+  if (!stretchesLobe(scene)) {
+    return [
+      `Anisotropy: the lab stretches GGX only (its visible-normal sampler, Dupuy & Benyoub 2023, is GGX’s); ` +
+        `${LAB_TERMS.ndf[terms.D]} stays isotropic at α.`,
+    ];
+  }
+  const [ax, ay] = a.alpha.map((x) => x.toFixed(3));
+  const v =
+    terms.V === ANISOTROPIC_V
+      ? 'height-correlated Smith with the roughness projected on each direction’s azimuth (Heitz 2014)'
+      : `${LAB_TERMS.visibility[terms.V]}, which has no anisotropic form here, at α`;
+  const notes = [
+    `Anisotropy a = ${a.strength} by ${ANISOTROPY_MODELS[a.model].split(':')[0]}: αx = ${ax} across the brushing ` +
+      `(along t), αy = ${ay} along it (b); GGX stretched by the pair, V ${v}. The reference and importance ` +
+      'sampling draw the visible normals of the stretched lobe (Dupuy & Benyoub 2023).',
+  ];
+  const env = lights.env ? methods.env : null;
+  if (env === 'split-sum') {
+    notes.push(
+      `Split sum, anisotropic: the prefiltered map and the DFG table are the isotropic lobe’s at α = ` +
+        `${scene.material.alpha}, read along ${readAlong(a)}: the error image shows what that costs.`,
+    );
+  }
+  if (lights.sphere && methods.area !== 'centre') {
+    notes.push(
+      `Sphere light, anisotropic: the representative point is the disc’s point nearest ${readAlong(a)}, with ` +
+        'Karis’s energy factor at α; the stretched lobe is evaluated at that one point.',
+    );
+  }
+  if (lights.ambient) notes.push('Ambient, anisotropic: the DFG table’s albedo is the isotropic lobe’s at α.');
+  if (env === 'pmrem') notes.push('three.js PMREM: its material here is isotropic.');
+  if (terms.compensation && terms.compensation !== 'none') {
+    notes.push('Multiple scattering, anisotropic: its tables are the isotropic lobe’s, read at α.');
+  }
+  return notes;
+}
+
 /** The sentences under the lab's images: for each light on, how its approximation treats the chosen terms. */
 export function approximationNotes(scene) {
-  if (scene.measured) return measuredNotes(scene);
-  if (scene.custom) return customNotes(scene);
+  const whole = scene.anisotropy ? ['Anisotropy: not applied here; the whole BRDF is drawn as it is.'] : [];
+  if (scene.measured) return [...measuredNotes(scene), ...whole];
+  if (scene.custom) return [...customNotes(scene), ...whole];
   const { specular, diffuse } = has(scene.terms);
-  const notes = specular ? specularNotes(scene) : [];
+  const notes = specular ? [...specularNotes(scene), ...anisotropyNotes(scene)] : [];
   const surround = diffuse ? diffuseUnderSurround(scene) : null;
   if (surround) notes.push(surround);
   if (scene.lights.env && scene.methods.env === 'pmrem') notes.push(PMREM_NOTE);

@@ -1,26 +1,27 @@
 // @ts-check
-// From a lab widget's state to the renderer's scene: the material (from the talk's F0 tables or custom), the
+// From a lab widget's state to the renderer's scene: the material (from the talk's F0 tables or set by hand), the
 // terms, the lights that are on (directions in view space: z towards the viewer, y up) and the methods.
 import { METALS, NON_METALS, materialByKey, isMetal } from '../math/materials.js';
 import { srgbToLinear } from '../math/color.js';
 import { lightDirFromAngles } from '../math/angles.js';
 import { hexToRgb } from '../core/ui/palettes.js';
 import { DEG } from '../math/angles.js';
+import { anisotropyOf } from './lab-anisotropy.js';
 
 /**
  * @typedef {object} LabMaterialState  the material fields (MATERIAL_FIELDS) of a lab widget's state
- * @property {string} material  'custom' or a key of the talk's F0 tables
- * @property {number} f0  the custom F0
- * @property {string} diffuse  the custom diffuse colour, sRGB '#rrggbb'
+ * @property {string} material  'manual' or a key of the talk's F0 tables
+ * @property {number} f0  F0 set by hand
+ * @property {string} cdiff  the diffuse colour set by hand, sRGB '#rrggbb'
  * @property {number} alpha  roughness α
  * @property {number} [sigma]  Oren–Nayar σ in degrees, where the widget has it
  */
 
 /**
  * @typedef {LabMaterialState & {
- *   fresnel: string, ndf: string, visibility: string, diffuseModel: string, layers: string,
+ *   F: string, D: string, V: string, diffuse: string, layers: string,
  *   compensation?: string, envMethod: string, areaMethod: string, samples: number
- * }} LabState  what labScene reads of the material lab's state (catalogue keys for the terms)
+ * }} LabState  what labScene reads of the material lab's state (the catalogue's choice: names and keys)
  */
 
 /**
@@ -53,10 +54,11 @@ import { DEG } from '../math/angles.js';
  * @property {LabLights} lights
  * @property {{ env: string, area: string, samples: number }} methods
  * @property {string} [measured]  the measured table's name, when a MERL file stands in for the model
+ * @property {import('./lab-anisotropy.js').LabAnisotropy | null} [anisotropy]  the lobe's stretch, when set
  */
 
 export const MATERIAL_OPTIONS = {
-  custom: 'Custom (F0 and diffuse below)',
+  manual: 'Custom (F0 and diffuse below)',
   ...Object.fromEntries(
     [...METALS, ...NON_METALS].map((m) => [m.key, `${m.name} (${isMetal(m.key) ? 'metal' : 'non-metal'})`]),
   ),
@@ -64,9 +66,17 @@ export const MATERIAL_OPTIONS = {
 
 /** The material fields every lab widget's schema shares. */
 export const MATERIAL_FIELDS = {
-  material: { type: 'enum', options: MATERIAL_OPTIONS, default: 'custom', label: 'Material' },
+  // `manual`, not `custom`, which names the user's own GLSL; old links' `custom` reads as `manual`
+  material: {
+    type: 'enum',
+    options: MATERIAL_OPTIONS,
+    aliases: { custom: 'manual' },
+    default: 'manual',
+    label: 'Material',
+  },
   f0: { type: 'number', min: 0, max: 1, step: 0.01, default: 0.04, label: 'Custom F0' },
-  diffuse: { type: 'color', default: '#b5532e', label: 'Diffuse colour' },
+  // c_diff, as the diffuse explorer names it; `diffuse` now names the diffuse term
+  cdiff: { type: 'color', formerly: ['diffuse'], default: '#b5532e', label: 'Diffuse colour' },
   alpha: { type: 'number', min: 0, max: 1, step: 0.005, default: 0.25, label: 'Roughness α' },
 };
 
@@ -76,9 +86,9 @@ export const MATERIAL_FIELDS = {
  * @returns {LabMaterial}
  */
 export function materialOf(state) {
-  const table = state.material !== 'custom' ? materialByKey(state.material) : null;
+  const table = state.material !== 'manual' ? materialByKey(state.material) : null;
   const f0 = table ? table.linear : [state.f0, state.f0, state.f0];
-  const diffuse = table && isMetal(state.material) ? [0, 0, 0] : hexToRgb(state.diffuse).map(srgbToLinear);
+  const diffuse = table && isMetal(state.material) ? [0, 0, 0] : hexToRgb(state.cdiff).map(srgbToLinear);
   return { f0, diffuse, alpha: state.alpha, sigma: (state.sigma ?? 0) * DEG };
 }
 
@@ -91,15 +101,16 @@ export function labScene(state, lights) {
   return {
     material: materialOf(state),
     terms: {
-      F: state.fresnel,
-      D: state.ndf,
-      V: state.visibility,
-      diffuse: state.diffuseModel,
+      F: state.F,
+      D: state.D,
+      V: state.V,
+      diffuse: state.diffuse,
       layers: state.layers,
       compensation: state.compensation ?? 'none',
     },
     lights,
     methods: { env: state.envMethod, area: state.areaMethod, samples: state.samples },
+    anisotropy: anisotropyOf(state),
   };
 }
 

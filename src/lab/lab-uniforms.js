@@ -1,7 +1,10 @@
 // The uniforms of the material lab's program (lab-shade.frag.glsl and its chunks), one set shared by every variant,
-// and how a scene fills them.
+// and how a scene fills them. The material's parameters (α and the pair (αx, αy), the anisotropy, F0, c_diff, σ)
+// and the chosen terms' own (Blinn–Phong's exponent, …) go by the catalogue's binding of each uniform to its
+// parameter (src/math/catalogue/uniforms.js), not by names written here.
 import * as THREE from 'three';
 import { createAlbedoTableTexture } from '../core/gpu/albedo-table-texture.js';
+import { sharedUniforms, termUniformDefaults, termUniforms } from '../math/catalogue/uniforms.js';
 import { PREFILTER_LEVELS } from './environment-maps.js';
 import { approximationInputs } from './lab-approximations.js';
 
@@ -12,14 +15,10 @@ export function createLabUniforms(res) {
   return {
     uSize: { value: new THREE.Vector2(res, res) },
     uExtent: { value: EXTENT },
-    uF0: { value: new THREE.Vector3() },
-    uDiffuseColor: { value: new THREE.Vector3() },
-    uAlpha: { value: 0.3 },
-    uSigma: { value: 0 },
-    uExponent: { value: 40 },
-    uA1: { value: 20 },
-    uA2: { value: 2.5 },
-    uSgdP: { value: 0.64 },
+    ...asUniforms(sharedUniforms(materialParams(REST))),
+    ...asUniforms(termUniformDefaults({ alpha: REST.alpha })),
+    uTangentAxis: { value: [0, 0, 1] },
+    uTangentRotation: { value: 0 },
     uPunctualDir: { value: new THREE.Vector3(0, 0, 1) },
     uPunctualCLight: { value: new THREE.Vector3() },
     uSphereDir: { value: new THREE.Vector3(0, 0, 1) },
@@ -54,11 +53,11 @@ export function setSceneUniforms(uniforms, scene, { reference, dfg }) {
   if (scene.terms.compensation !== 'none') uniforms.uAlbedoTableGGX.value ??= createAlbedoTableTexture();
   setMaps(uniforms, scene, { reference, dfg });
   const { material, lights } = scene;
-  uniforms.uF0.value.set(...material.f0);
-  uniforms.uDiffuseColor.value.set(...material.diffuse);
-  uniforms.uAlpha.value = material.alpha;
-  uniforms.uSigma.value = material.sigma;
-  uniforms.uExponent.value = material.exponent ?? 40;
+  const params = materialParams({ ...material, anisotropy: scene.anisotropy });
+  const { F, D, V, diffuse } = scene.terms;
+  setValues(uniforms, { ...sharedUniforms(params), ...termUniforms({ F, D, V, diffuse }, params) });
+  const field = scene.anisotropy?.field;
+  if (field) setValues(uniforms, { uTangentAxis: field.axis, uTangentRotation: field.rotation });
   if (lights.punctual) {
     uniforms.uPunctualDir.value.set(...lights.punctual.dir);
     uniforms.uPunctualCLight.value.set(...lights.punctual.cLight);
@@ -71,6 +70,30 @@ export function setSceneUniforms(uniforms, scene, { reference, dfg }) {
   uniforms.uEnvIntensity.value = lights.env?.intensity ?? 0;
   uniforms.uEnvSampling.value = Boolean(lights.env) && scene.maps.sampling.usable;
   uniforms.uAmbient.value.set(...(lights.ambient ?? [0, 0, 0]));
+}
+
+/** A material at rest, for the uniforms' first values. */
+const REST = { f0: [0, 0, 0], diffuse: [0, 0, 0], alpha: 0.3, sigma: 0, anisotropy: null };
+
+/**
+ * A lab material's values by parameter name (parameters.js): α, the pair (αx, αy) (equal to α when the lobe is
+ * isotropic), the anisotropy a, F0, c_diff and σ. A term's own parameters (Blinn–Phong's exponent, …) are not the
+ * material's: termUniforms gives them their entries' defaults.
+ * @param {{ f0: number[], diffuse: number[], alpha: number, sigma: number,
+ *   anisotropy?: import('./lab-anisotropy.js').LabAnisotropy | null }} material
+ */
+function materialParams({ f0, diffuse, alpha, sigma, anisotropy }) {
+  const [alphaX, alphaY] = anisotropy?.alpha ?? [alpha, alpha];
+  return { alpha, alphaPair: [alphaX, alphaY], anisotropy: anisotropy?.strength ?? 0, f0, cdiff: diffuse, sigma };
+}
+
+/** `{ name: value }` as three.js uniforms (arrays copied: a uniform's value is its own). */
+const asUniforms = (values) =>
+  Object.fromEntries(Object.entries(values).map(([name, v]) => [name, { value: Array.isArray(v) ? [...v] : v }]));
+
+/** Sets the values of the uniforms named, each one the lab declares. */
+function setValues(uniforms, values) {
+  for (const [name, v] of Object.entries(values)) uniforms[name].value = Array.isArray(v) ? [...v] : v;
 }
 
 function setMaps(uniforms, scene, { reference, dfg }) {

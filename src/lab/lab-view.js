@@ -9,6 +9,7 @@ import { createFullscreenPass } from '../core/gpu/fullscreen-pass.js';
 import { createDfgTexture, createEnvironmentMaps } from './environment-maps.js';
 import { fullscreenMaterial } from './fullscreen-material.js';
 import { createLabRenderer } from './lab-renderer.js';
+import { EXTENT } from './lab-uniforms.js';
 import { FURNACE, skyPixels } from './environments.js';
 
 const viewMaterial = (defines) =>
@@ -20,6 +21,9 @@ const viewMaterial = (defines) =>
       uRect: { value: new THREE.Vector4() },
       uExposure: { value: 1 },
       uErrorScale: { value: 0.1 },
+      uExtent: { value: EXTENT },
+      uTangentAxis: { value: [0, 0, 1] },
+      uTangentRotation: { value: 0 },
     },
   });
 
@@ -32,7 +36,8 @@ const BUILT_IN = {
 
 /**
  * frame({ lab, environment, again }) runs in each drawn frame and returns the panels to show: [{ image:
- * 'approx' | 'reference' | 'error', slot, caption }]. environment(key, pixels?) gives the maps of a built-in
+ * 'approx' | 'reference' | 'error', slot, caption, tangents }] (tangents: a tangent field, lab-anisotropy.js, whose
+ * brushing lines are drawn over the image). environment(key, pixels?) gives the maps of a built-in
  * environment or of pixels (a file) under `key`; again() asks for another frame (a converging reference).
  * onReset(): the GPU content is gone (the context was given up): the widget must render everything again.
  */
@@ -138,6 +143,18 @@ function createLayout(captions) {
 function createPanels(layout) {
   const tone = viewMaterial({});
   const error = viewMaterial({ ERROR_VIEW: 1 });
+  const overlays = {
+    around: viewMaterial({ TANGENT_OVERLAY: 1 }),
+    along: viewMaterial({ TANGENT_OVERLAY: 1, TANGENT_ALONG: 1 }),
+  };
+  const materialOf = (panel) => {
+    if (panel.image === 'error') return error;
+    if (!panel.tangents) return tone;
+    const m = overlays[panel.tangents.mode];
+    m.uniforms.uTangentAxis.value = panel.tangents.axis;
+    m.uniforms.uTangentRotation.value = panel.tangents.rotation;
+    return m;
+  };
   const pass = createFullscreenPass();
   const size = new THREE.Vector2();
   let settings = { exposure: 1, errorScale: 0.1 };
@@ -149,7 +166,7 @@ function createPanels(layout) {
       panels.forEach((panel, i) => {
         const { x: left, y: top, side } = layout.cell(i, size.x, size.y);
         const rect = [left, size.y - top - side, side, side]; // GL counts y from the bottom
-        const m = panel.image === 'error' ? error : tone;
+        const m = materialOf(panel);
         m.uniforms.uImage.value = panel.image === 'reference' ? lab.reference : lab.approx(panel.slot ?? 0);
         m.uniforms.uOther.value = lab.reference;
         m.uniforms.uRect.value.set(...rect.map((x) => x * pr));
@@ -165,7 +182,7 @@ function createPanels(layout) {
       settings = { ...settings, ...next };
     },
     dispose() {
-      [tone, error, pass].forEach((x) => x.dispose());
+      [tone, error, overlays.around, overlays.along, pass].forEach((x) => x.dispose());
     },
   };
 }

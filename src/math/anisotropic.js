@@ -5,13 +5,14 @@
 // Smith's Λ with the roughness projected on the direction's azimuth, α(φ)² = cos²φ αx² + sin²φ αy².
 // Twins in shaders/anisotropic.glsl (held to these by the parity rows in src/core/gpu/parity-cases/anisotropic.js).
 import { ALPHA_MIN } from './ndf.js';
+import { ALPHA_ANISO_MAX } from './catalogue/parameters.js';
 import { erfc } from './special.js';
 
 /**
  * Largest roughness per axis the anisotropic functions take: Burley's mapping reaches α/√0.1 ≈ 3.2 α and OpenPBR's
  * √2 α, and the isotropic clamp at 1 would change their models. alphaX and alphaY are clamped to [ALPHA_MIN, 4].
  */
-export const ALPHA_ANISO_MAX = 4;
+export { ALPHA_ANISO_MAX };
 const clampAxis = (a) => Math.min(Math.max(a, ALPHA_MIN), ALPHA_ANISO_MAX);
 
 /** hx²/αx² + hy²/αy²: the squared slope of m in the stretched space, times hz² (tan² of the stretched normal). */
@@ -136,7 +137,10 @@ export function sampleVisibleNormalGGXAniso(vx, vy, vz, alphaX, alphaY, u1, u2) 
   const sinC = Math.sqrt(u1 * (rho2 + (1 - u1) * w1 * w1));
   const rs = rho + sinC;
   const rhoMinusSin = rs > 0 ? ((1 - u1) * (rho2 - u1 * w1 * w1)) / rs : 0;
-  const [c, s] = [Math.cos(Math.PI * u2), Math.sin(Math.PI * u2)];
+  // cos and sin of ψ/2 = π u2 as sines of arguments within π/2 of 0, where a float32 sine is relatively exact: c is
+  // then exactly 0 at u2 = 1/2 (cos(π u2) would give float32 π's 4e-8, the rim's 0.33 at grazing v, αx = 4)
+  const c = Math.sin(Math.PI * (0.5 - u2));
+  const s = Math.sin(Math.PI * Math.min(u2, 1 - u2));
   const cosPsi = (c - s) * (c + s);
   // (c + v')·e: directly where nothing cancels (cos ψ >= 0), by the rim's form where it would
   const along = cosPsi >= 0 ? rho + sinC * cosPsi : rhoMinusSin + 2 * sinC * c * c;

@@ -184,7 +184,7 @@ function kinkAngles(kinks, nv, sv, theta2) {
  * φ = hi - Δ(1 - s)³, for at φmax n·l -> 0 and V (n·l) turns over in a layer as thin as the lesser of n·v
  * and alpha.
  */
-function phiIntegral({ nv, sv, vis, kinks, params, integrate }, cm, sm, phiMax, tol) {
+function phiIntegral({ nv, sv, vis, kinks, params, integrate, fresnel }, cm, sm, phiMax, tol) {
   const angles = { nl: 0, nv, nh: cm, lh: 0 };
   const y = [0, 0]; // reused: the integrators read it before the next call
   const integrand = (phi, weight) => {
@@ -193,8 +193,8 @@ function phiIntegral({ nv, sv, vis, kinks, params, integrate }, cm, sm, phiMax, 
     angles.nl = nl;
     angles.lh = vm;
     const w = (vis(angles, params) * nl * vm * weight) / cm;
-    const fc = (1 - vm) ** 5;
-    y[0] = (1 - fc) * w;
+    const fc = fresnel ? 0 : (1 - vm) ** 5;
+    y[0] = (fresnel ? fresnel(vm) : 1 - fc) * w;
     y[1] = fc * w;
     return y;
   };
@@ -235,9 +235,10 @@ function phiIntegral({ nv, sv, vis, kinks, params, integrate }, cm, sm, phiMax, 
  * in the variable r above (even in φ). l is above the horizon iff cos φ > cot θv (tan²θm - 1)/(2 tan θm), so
  * φmax is π for θm < θ1 = (π/2 - θv)/2, 0 beyond θ2 = (π/2 + θv)/2, and acos of that between: the r integral
  * is cut at θ1 and θ2 (and at the kinks of V), where it has kinks, and each piece goes to Gauss-Kronrod. No
- * cap: terms that do not conserve energy (e.g. a V that does not match the D) may give more than 1.
+ * cap: terms that do not conserve energy (e.g. a V that does not match the D) may give more than 1. `fresnel`
+ * (a function of v·h) in place of the split gives [∫ F f_(F=1) (n·l) dω, 0]: the albedo with that Fresnel.
  */
-export function dfgSplitSum(mu, alpha, terms = {}, { nodes = 0 } = {}) {
+export function dfgSplitSum(mu, alpha, terms = {}, { nodes = 0, fresnel = null } = {}) {
   const { ndf, visibility } = { ...DFG_DEFAULT_TERMS, ...terms };
   const tan2 = NDF_TAN2[ndf];
   const vis = VISIBILITY_TERMS[visibility];
@@ -248,7 +249,7 @@ export function dfgSplitSum(mu, alpha, terms = {}, { nodes = 0 } = {}) {
   const sv = Math.sqrt((1 - nv) * (1 + nv));
   const kinks = VISIBILITY_KINKS[visibility] ?? [];
   const integrate = nodes ? (f, lo, hi, tol, dim) => gaussLegendreVector(f, lo, hi, nodes, dim) : integrateVector;
-  const context = { nv, sv, vis, kinks, params: { alpha: a }, integrate };
+  const context = { nv, sv, vis, kinks, params: { alpha: a }, integrate, fresnel };
   const overPhi = (r) => {
     // r = 0 is θm = 90°, where the weight 2r vanishes; Beckmann's cuts underflow to r = 0 at small alpha
     if (!(r > 0)) return [0, 0];

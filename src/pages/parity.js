@@ -53,6 +53,9 @@ function resultsTable(results) {
   }
   const scroll = document.createElement('div');
   scroll.className = 'table-scroll';
+  scroll.tabIndex = 0; // a scrolling region is reachable by keyboard (narrower than the table, it scrolls)
+  scroll.setAttribute('role', 'region');
+  scroll.setAttribute('aria-label', 'Each function on the GPU against float64');
   scroll.append(table);
   return scroll;
 }

@@ -1,8 +1,8 @@
 // Accessibility of every registered widget in a real Chromium: each canvas says in words what it shows and
 // says something new when the state changes, every control is reachable by Tab, the interactive canvases
 // answer the keyboard, and the words carry the numbers (checked against closed forms and the F0 table).
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { getState, launchBrowser, open, settle, shot, widget } from './helpers.js';
+import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
+import { TEST_BUDGET_MS, WAIT_MS, getState, launchBrowser, open, shot, untilIdle, widget } from './helpers.js';
 import { WIDGETS } from '../../src/widgets/registry.js';
 import { sphereZoneFractions } from '../../src/math/zones.js';
 import { materialByKey } from '../../src/math/materials.js';
@@ -30,6 +30,8 @@ const CHANGES = {
 /** Extra URL state to keep software rendering quick (fewer path-traced samples). */
 const QUICK = { media: '&samples=16', 'material-lab': '&refSamples=128', 'lighting-models': '&refSamples=128' };
 const STATIC_PICTURE = /^Four metal spheres/; // the surfaces widget's room reflections do not depend on its state
+
+vi.setConfig({ testTimeout: TEST_BUDGET_MS });
 
 let browser;
 beforeAll(async () => {
@@ -68,8 +70,9 @@ describe('every widget describes its canvases and is usable by keyboard', () => 
       expect(before.live.length).toBeGreaterThan(30);
 
       await page.evaluate((n, change) => globalThis.__shadingLab.widgets[n].update(change), name, CHANGES[name]);
-      // the live region speaks once changes settle (500 ms after the last, describe.js), and a canvas may be
-      // described later still (after work off the main thread): wait until all of them have new words
+      // the live region speaks once changes settle (its pause is in the app's pending work, describe.js), and a
+      // canvas may be described later still (after work off the main thread, which `pending` does not count):
+      // wait for idle, then until all of them have new words
       const changed = (was, staticPicture) => {
         const now = [...document.querySelectorAll('.widget canvas')].filter((c) => c.getClientRects().length);
         const label = (c) => c.getAttribute('aria-label') ?? '';
@@ -79,7 +82,8 @@ describe('every widget describes its canvases and is usable by keyboard', () => 
         );
       };
       // (words that never change fail below, with the words in the message)
-      await page.waitForFunction(changed, { timeout: 30_000 }, before, STATIC_PICTURE.source).catch(() => {});
+      await untilIdle(page);
+      await page.waitForFunction(changed, { timeout: WAIT_MS }, before, STATIC_PICTURE.source).catch(() => {});
       const after = await readWords(page);
       expect(after.canvases.length).toBe(before.canvases.length);
       after.canvases.forEach((c, i) => {
@@ -130,7 +134,7 @@ describe('interactive canvases answer the keyboard', () => {
     await page.keyboard.down('Shift');
     await page.keyboard.press('ArrowLeft');
     await page.keyboard.up('Shift');
-    await settle(page, 300);
+    await untilIdle(page);
     const after = await getState(page, 'fresnel-zones');
     expect(after.lightTheta).toBeCloseTo(before.lightTheta + 5, 6);
     expect(after.lightPhi).toBeCloseTo(before.lightPhi + 1, 6);
@@ -144,13 +148,13 @@ describe('interactive canvases answer the keyboard', () => {
     await page.focus('.polar-plot canvas');
     await page.keyboard.press('ArrowDown');
     await page.keyboard.press('ArrowLeft');
-    await settle(page, 300);
+    await untilIdle(page);
     const after = await getState(page, 'brdf-lobe');
     expect([after.lightTheta, after.viewTheta]).toEqual([before.lightTheta + 5, before.viewTheta - 5]);
     const lobe = await shot(page, '.lobe-3d canvas');
     await page.focus('.lobe-3d canvas');
     await page.keyboard.press('ArrowLeft');
-    await settle(page, 300);
+    await untilIdle(page); // the orbit's frame drawn
     expect(await shot(page, '.lobe-3d canvas')).not.toBe(lobe);
     expect(await getState(page, 'brdf-lobe')).toEqual(after); // orbiting is a view, not state
     expect(page.errors).toEqual([]);
@@ -195,10 +199,7 @@ describe('interactive canvases answer the keyboard', () => {
     const page = await openWidget('f0-tables');
     await page.focus('tr[data-material="copper"]');
     await page.keyboard.press('Enter');
-    // the live region speaks once changes settle (500 ms after the last, describe.js)
-    await page
-      .waitForFunction(() => /Copper/.test(document.querySelector('.widget-live')?.textContent), { timeout: 30_000 })
-      .catch(() => {}); // other words fail below, with the words in the message
+    await untilIdle(page); // the live region speaks once changes settle (a pause in the app's pending work)
     expect((await getState(page, 'f0-tables')).selected).toBe('copper');
     expect(await page.evaluate(() => document.activeElement.dataset.material)).toBe('copper');
     expect(await page.$eval('.widget-live', (el) => el.textContent)).toMatch(
@@ -215,7 +216,7 @@ describe('the words carry the numbers', () => {
     // the shares are measured once the first frames pause (a GPU read-back), then described
     await page
       .waitForFunction(() => /goes rapidly to 1 [\d.]+%/.test(document.querySelector('.viewport canvas').ariaLabel), {
-        timeout: 30_000,
+        timeout: WAIT_MS,
       })
       .catch(() => {}); // other words fail below, with the words in the message
     const label = await page.$eval('.viewport canvas', (c) => c.getAttribute('aria-label'));

@@ -39,7 +39,7 @@ afterAll(async () => {
 describe('a progress file on the exercises page', { timeout: 120_000 }, () => {
   it('saves the progress to a file, and brings it back after a reset', async () => {
     const src = encodeURIComponent(`data:application/json,${JSON.stringify(SET)}`);
-    const page = await open(browser, `exercises.html?src=${src}`);
+    const page = await open(browser, `exercises.html?src=${src}`, { width: 1280, height: 900 });
     await allowDownloads(page, dir);
     await page.waitForFunction(() => globalThis.__shadingLab?.exercise?.ready, { timeout: 30_000 });
     await page.type('#exercise-answer', '1');

@@ -1,8 +1,12 @@
 // Embedding, the WebGL context budget: a page of twenty 3-D widgets (wall.html) and a gallery of same-origin
-// frames held within the browser's cap on live contexts, and slots given back by a removed frame.
+// frames held within the browser's cap on live contexts, and slots given back by a removed frame. The wall, its
+// twenty tiles mounted and scrolled through, is also where it is checked under the policy and by axe-core (as
+// every other page is in axe.test.js): mounting them is most of the time either takes.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { baseUrl, distinctColors, launchBrowser, open, settle } from './helpers.js';
+import { afterFrames, baseUrl, distinctColors, launchBrowser, open } from './helpers.js';
 import { openPage } from './harness.js';
+import { recordViolations } from './under-policy.js';
+import { axeViolations } from './axe-run.js';
 
 let browser;
 beforeAll(async () => {
@@ -144,11 +148,15 @@ describe('twenty 3-D widgets on one page (wall.html)', () => {
   });
 
   it(
-    'draws every widget when it is in view, ' + 'never holds more contexts than the budget, and loses none unplanned',
+    'draws every widget when it is in view, never holds more contexts than the budget, and loses none ' +
+      'unplanned; under the policy with no violation, and axe finds no violation (WCAG 2.2 A and AA)',
     async () => {
-      const page = await openCounted('wall.html', { on: own });
+      const page = await openCounted('wall.html', {
+        on: own,
+        beforeLoad: (p) => p.evaluateOnNewDocument(recordViolations),
+      });
       await page.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 20, {
-        timeout: 120_000,
+        timeout: 240_000, // one after another, on software WebGL: 201 s seen at a load average of 16
         polling: 500,
       });
       const limit = await page.evaluate(() => window.__shadingLabGl.limit);
@@ -160,7 +168,7 @@ describe('twenty 3-D widgets on one page (wall.html)', () => {
       for (let y = 0; y < height; y += 450) {
         // less than a screen minus a view: each view is once wholly in sight
         await page.evaluate((top) => window.scrollTo(0, top), y);
-        await settle(page, 300);
+        await afterFrames(page, 2); // the views now in sight have asked for a context (expectDrawn waits for it)
         for (const { index, handle } of await viewsInSight(page, '.wall-tile')) {
           if (drawn.has(index)) continue;
           await expectDrawn(page, handle, `tile ${index + 1} at scroll ${y}`);
@@ -175,7 +183,7 @@ describe('twenty 3-D widgets on one page (wall.html)', () => {
 
       // back to the top: the first tiles gave their contexts up on the way down and draw again
       await page.evaluate(() => window.scrollTo(0, 0));
-      await settle(page, 300);
+      await afterFrames(page, 2); // the views now in sight have asked for a context (expectDrawn waits for it)
       const top = await viewsInSight(page, '.wall-tile');
       expect(top.length).toBeGreaterThan(0);
       for (const { index, handle } of top) await expectDrawn(page, handle, `tile ${index + 1} back at the top`);
@@ -185,11 +193,13 @@ describe('twenty 3-D widgets on one page (wall.html)', () => {
       expect(gl.restored).toBeGreaterThan(0); // ...and taken back
       expect(gl.most).toBeLessThanOrEqual(limit);
       expect(await page.evaluate(() => window.__shadingLabGl.peak)).toBeLessThanOrEqual(limit);
+      expect(await axeViolations(page), 'axe over the wall, its twenty tiles up').toEqual([]);
+      expect(await page.evaluate(() => window.__csp ?? []), 'policy violations').toEqual([]);
       expect(page.glWarnings).toEqual([]);
       expect(page.errors).toEqual([]);
       await page.close();
     },
-    240_000,
+    420_000,
   );
 });
 
@@ -218,7 +228,7 @@ describe('embeds in same-origin frames share one context budget', () => {
       const height = () => page.evaluate(() => document.body.scrollHeight);
       for (let y = 0; y < (await height()); y += 400) {
         await page.evaluate((top) => window.scrollTo(0, top), y);
-        await settle(page, 300);
+        await afterFrames(page, 2); // the views now in sight have asked for a context (expectDrawn waits for it)
         for (const card of await page.$$('.gallery-card')) {
           const name = await card.evaluate((c) => c.dataset.widget);
           const iframe = await card.$('iframe');
@@ -254,7 +264,7 @@ describe('embeds in same-origin frames share one context budget', () => {
 
       // back to the first 3-D preview, which gave its context up on the way down: drawn again
       await page.$eval('[data-widget="fresnel-zones"] .gallery-preview', (el) => el.scrollIntoView());
-      await settle(page, 300);
+      await afterFrames(page, 2); // the views now in sight have asked for a context (expectDrawn waits for it)
       const frame = await (await page.$('[data-widget="fresnel-zones"] iframe')).contentFrame();
       await expectDrawn(page, await frame.$('.viewport > canvas'), 'fresnel-zones preview back in sight');
 

@@ -54,8 +54,8 @@ describe('Content-Security-Policy', () => {
     async () => {
       const page = await openUnderPolicy(browser, 'embed.html?w=fresnel-zones');
       // (eval called here directly would pass: DevTools runs this function outside the page's policy)
-      const ran = await page.evaluate(async () => {
-        const ran = [];
+      await page.evaluate(() => {
+        const ran = (window.__ranList = []);
         window.__ran = (what) => ran.push(what);
         document.body.append(
           Object.assign(document.createElement('script'), { textContent: 'window.__ran("script")' }),
@@ -68,10 +68,21 @@ describe('Content-Security-Policy', () => {
         const link = Object.assign(document.createElement('a'), { href: 'javascript:window.__ran("link")' });
         document.body.append(link);
         link.click();
-        await new Promise((r) => setTimeout(r, 400));
-        return ran;
       });
-      expect(ran).toEqual([]);
+      // the browser has refused all four (the script and the link, the handler, the timer's eval) once it has
+      // reported them: then none of them can still run
+      const refused = () =>
+        page.evaluate(() => {
+          const seen = (window.__csp ?? []).join('\n');
+          return (
+            seen.match(/script-src-elem: inline/g)?.length >= 2 && /script-src-attr/.test(seen) && /eval/.test(seen)
+          );
+        });
+      await expect
+        .poll(refused, { timeout: 60_000 })
+        .toBe(true)
+        .catch(() => {});
+      expect(await page.evaluate(() => window.__ranList)).toEqual([]);
       const violations = (await page.evaluate(() => window.__csp ?? [])).join('\n');
       expect(violations).toMatch(/script-src-elem: inline/); // the script, and the javascript: link
       expect(violations).toMatch(/script-src-attr: inline/);

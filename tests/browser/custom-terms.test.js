@@ -2,12 +2,8 @@
 // (tests/browser/custom-terms.html, built here): every starter against its float64 catalogue term; the checks'
 // numbers against closed forms (a normalised GGX integrates to 1, without its 1/π to π; Lambert's albedo is its
 // c; V = 2/((n·l)(n·v)) puts G = 2 outside [0, 1]); an Inf found at its input; a compile error on the user's line.
-import { mkdtempSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { join } from 'node:path';
-import { build } from 'vite';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { ROOT, launchBrowser, openPage, serveStatic } from './harness.js';
+import { openCustomTermsPage } from './custom-terms-open.js';
 import { CHECK_ALPHAS } from '../../src/core/custom/check-inputs.js';
 import { GRIDS } from '../../src/core/gpu/parity-cases.js';
 import { withCustomChunk } from '../../src/core/custom/assemble.js';
@@ -20,23 +16,7 @@ let browser;
 let server;
 let page;
 beforeAll(async () => {
-  const outDir = mkdtempSync(join(tmpdir(), 'shading-lab-custom-terms-'));
-  await build({
-    root: ROOT,
-    configFile: false,
-    base: './',
-    logLevel: 'warn',
-    build: {
-      outDir,
-      emptyOutDir: true,
-      chunkSizeWarningLimit: 4000, // three.js in one chunk: a test page, not a page of the app
-      rollupOptions: { input: join(ROOT, 'tests/browser/custom-terms.html') },
-    },
-  });
-  server = await serveStatic(outDir);
-  browser = await launchBrowser();
-  page = await openPage(browser, server.url, 'tests/browser/custom-terms.html');
-  await page.waitForFunction(() => window.__customTerms, { timeout: 30_000 });
+  ({ browser, server, page } = await openCustomTermsPage());
 }, 180_000);
 afterAll(async () => {
   await browser?.close();

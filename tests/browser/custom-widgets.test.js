@@ -96,7 +96,7 @@ async function compileErrorAndUrl({ key, query, slot, codeKey, schema, fn, body,
 const withinFloat32 = (value, reference) => Math.abs(value - reference) <= 1e-5 + 1e-4 * Math.abs(reference);
 
 describe('ndf-explorer: your D beside the five', () => {
-  const QUERY = 'ndfs=ggx,custom&hwhm=8';
+  const QUERY = 'D=ggx,custom&hwhm=8';
   const alpha = matchNdfWidths(8, {}).ggx.alpha;
   const jsGgx = Array.from(NDF_ANGLES, (deg) => ndfGGX(Math.cos((deg * Math.PI) / 180), alpha));
   const curves = (page) => page.evaluate(() => globalThis.__shadingLab.widgets['ndf-explorer'].getCurves());
@@ -190,8 +190,8 @@ return vec3(${rho.toFixed(7)} / PI);
         globalThis.__shadingLab.widgets['material-lab'].update({
           brdfSource: 'model',
           layers: 'diffuse',
-          diffuseModel: 'lambert',
-          diffuse: grey,
+          diffuse: 'lambert',
+          cdiff: grey,
         }),
       GREY,
     );
@@ -255,7 +255,7 @@ return vec3(${rho.toFixed(7)} / PI);
 });
 
 describe('visibility-explorer: your V beside the catalogue’s', () => {
-  const QUERY = 'terms=smithGGXCorrelated,implicit,custom&alpha=0.5&config=view-fixed&viewTheta=60';
+  const QUERY = 'V=smithGGXCorrelated,implicit,custom&alpha=0.5&config=view-fixed&viewTheta=60';
   const curves = (page) => page.evaluate(() => globalThis.__shadingLab.widgets['visibility-explorer'].getCurves());
 
   it('the starter draws height-correlated Smith’s JS curve and sphere; V = 1 typed draws the implicit G', async () => {

@@ -119,14 +119,14 @@ describe('diffuse-explorer spheres, read back from the canvas', () => {
     // one sphere at a time in the same cell, so every model is rasterised at exactly the same pixels
     const page = await open(
       browser,
-      'embed.html?w=diffuse-explorer&models=lambert&sigma=0&lightTheta=50&lightPhi=30',
+      'embed.html?w=diffuse-explorer&diffuse=lambert&sigma=0&lightTheta=50&lightPhi=30',
       W,
     );
     await widget(page, 'diffuse-explorer');
     const lambert = await readSpheres(page);
     const disc = findDisc(lambert, 0, 1);
     for (const model of ['orenNayar', 'orenNayarQualitative']) {
-      await page.evaluate((m) => globalThis.__shadingLab.widgets['diffuse-explorer'].update({ models: [m] }), model);
+      await page.evaluate((m) => globalThis.__shadingLab.widgets['diffuse-explorer'].update({ diffuse: [m] }), model);
       await untilIdle(page);
       const img = await readSpheres(page);
       expect([img.width, img.height]).toEqual([lambert.width, lambert.height]);
@@ -152,7 +152,7 @@ describe('diffuse-explorer spheres, read back from the canvas', () => {
     const [theta, phi, c] = [40, 20, 0.8];
     const page = await open(
       browser,
-      `embed.html?w=diffuse-explorer&models=lambert&lightTheta=${theta}&lightPhi=${phi}&cdiff=${c}`,
+      `embed.html?w=diffuse-explorer&diffuse=lambert&lightTheta=${theta}&lightPhi=${phi}&cdiff=${c}`,
       W,
     );
     await widget(page, 'diffuse-explorer');
@@ -173,7 +173,7 @@ describe('diffuse-explorer spheres, read back from the canvas', () => {
     const [sigma, c] = [60, 0.8];
     const page = await open(
       browser,
-      'embed.html?w=diffuse-explorer&models=lambert,orenNayar,orenNayarQualitative' +
+      'embed.html?w=diffuse-explorer&diffuse=lambert,orenNayar,orenNayarQualitative' +
         `&sigma=${sigma}&lightTheta=0&cdiff=${c}`,
       W,
     );
@@ -218,7 +218,8 @@ describe('diffuse-explorer plots and state', () => {
     const query = Object.entries(s)
       .map(([k, v]) => `${k}=${v}`)
       .join('&');
-    const page = await open(browser, `embed.html?w=diffuse-explorer&models=lambert,fresnelWeighted,orenNayar&${query}`);
+    const chosen = 'diffuse=lambert,fresnelWeighted,orenNayar';
+    const page = await open(browser, `embed.html?w=diffuse-explorer&${chosen}&${query}`);
     await widget(page, 'diffuse-explorer');
     const plots = await page.evaluate(() => globalThis.__shadingLab.widgets['diffuse-explorer'].getPlots());
     const l = lightFrom(s.lightTheta, s.lightPhi);
@@ -260,11 +261,11 @@ describe('diffuse-explorer plots and state', () => {
     async () => {
       const page = await open(
         browser,
-        'diffuse.html?diffuse.sigma=55&diffuse.models=lambert,orenNayar&diffuse.cdiff=banana',
+        'diffuse.html?diffuse.sigma=55&diffuse.diffuse=lambert,orenNayar&diffuse.cdiff=banana',
       );
       await widget(page, 'diffuse');
       const state = await getState(page, 'diffuse');
-      expect([state.sigma, state.models, state.cdiff]).toEqual([55, ['lambert', 'orenNayar'], 0.8]);
+      expect([state.sigma, state.diffuse, state.cdiff]).toEqual([55, ['lambert', 'orenNayar'], 0.8]);
       expect(await page.$eval('.notice', (el) => el.textContent)).toMatch(/banana/);
       await setControl(page, 'Light from view (°)', 20);
       await page.focus('.light-pad canvas');

@@ -1,7 +1,16 @@
 // Embedding, the postMessage protocol between a parent page and embed.html: ready, get, set through validation,
 // bad messages ignored, other origins refused unless listed, the content's height told to allowed origins only.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { baseUrl, launchBrowser, open, openForeignParent, otherOrigin, setControl } from './helpers.js';
+import {
+  afterFrames,
+  baseUrl,
+  launchBrowser,
+  open,
+  openForeignParent,
+  otherOrigin,
+  setControl,
+  untilIdle,
+} from './helpers.js';
 
 let browser;
 beforeAll(async () => {
@@ -11,7 +20,6 @@ afterAll(async () => {
   await browser?.close();
 });
 
-const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
 const originOf = (url) => new URL(url).origin;
 
 /**
@@ -163,7 +171,10 @@ describe('postMessage protocol of embed.html', () => {
     for (const m of bad) await post(page, m, own);
     await post(page, { type: 'shading-lab:get', id: 'last' }, own);
     await waitForMessage(page, (d) => d.id === 'last');
-    await sleep(300); // a window for replies that must not come: it cannot fail a widget that keeps silent
+    // a window for replies that must not come, in frames of the widget once it is idle: it cannot fail a widget that
+    // keeps silent
+    await untilIdle(frame);
+    await afterFrames(frame, 20);
     const unasked = new Set(['shading-lab:ready', 'shading-lab:resize']);
     const replies = (await inbox(page)).filter((m) => !unasked.has(m.data?.type));
     expect(replies.map((m) => m.data.id)).toEqual(['last']);
@@ -183,7 +194,8 @@ describe('postMessage protocol of embed.html', () => {
     const before = await widgetState(frame);
     await post(page, { type: 'shading-lab:set', id: 's', state: { mode: 'zones-lh' } }, widgetOrigin);
     await post(page, { type: 'shading-lab:get', id: 'g' }, '*');
-    await sleep(800); // a window for what must not come, as above
+    await untilIdle(frame); // a window for what must not come, as above
+    await afterFrames(frame, 30);
     expect(await inbox(page)).toEqual([]); // not even `ready` or `resize`: nothing goes to an origin not allowed
     expect(await widgetState(frame)).toEqual(before);
 

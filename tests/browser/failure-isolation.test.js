@@ -2,10 +2,12 @@
 // redeploy under an open page) or whose create throws says so in its own place with Retry, and the page's other
 // widgets still mount; a language tag Intl rejects (WebKitGTK under LANG=C) does not stop the plots; embed.html
 // says what to do when its scripts are refused (a sandboxed frame without CORS), with no script of its own.
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
 import { openPage } from './harness.js';
-import { baseUrl, launchBrowser, otherOrigin } from './helpers.js';
+import { TEST_BUDGET_MS, WAIT_MS, baseUrl, launchBrowser, otherOrigin } from './helpers.js';
 import { WIDGETS } from '../../src/widgets/registry.js';
+
+vi.setConfig({ testTimeout: TEST_BUDGET_MS });
 
 let browser;
 // each page in a context of its own: no service worker of an earlier page serves the chunk that is to be aborted
@@ -38,13 +40,13 @@ const mounted = (page) => page.evaluate(() => Object.keys(globalThis.__shadingLa
 const untilMounted = (page, keys) =>
   page.waitForFunction(
     (keys) => keys.every((k) => globalThis.__shadingLab?.widgets?.[k]),
-    { timeout: 60_000, polling: 250 },
+    { timeout: WAIT_MS, polling: 250 },
     keys,
   );
 
 /** The failure box in `selector`: its words, once it is there. */
 async function failureIn(page, selector) {
-  const box = await page.waitForSelector(`${selector} .widget-failure`, { timeout: 60_000 });
+  const box = await page.waitForSelector(`${selector} .widget-failure`, { timeout: WAIT_MS });
   return box.evaluate((el) => el.innerText);
 }
 
@@ -89,7 +91,7 @@ describe('a widget that fails stays in its box', () => {
     });
     const slots = await page.$$eval('[data-slot]', (s) => s.map((e) => e.dataset.prefix || e.dataset.slot));
     expect(slots.length).toBeGreaterThan(1);
-    await page.waitForSelector('.widget-failure', { timeout: 60_000 });
+    await page.waitForSelector('.widget-failure', { timeout: WAIT_MS });
     await untilMounted(page, slots.slice(1));
     const boxes = await page.$$eval('.widget-failure', (b) => b.map((e) => e.innerText));
     expect(boxes).toHaveLength(1);
@@ -106,10 +108,10 @@ describe('a widget that fails stays in its box', () => {
     expect(otherErrors(page, 'fresnel-zones')).toEqual([]);
     allow();
     await page.click('.tour-stage .widget-failure button');
-    await page.waitForFunction(() => globalThis.__shadingLab.widgets.tour, { timeout: 60_000 });
+    await page.waitForFunction(() => globalThis.__shadingLab.widgets.tour, { timeout: WAIT_MS });
     await page.click('.tour-next');
     await page.waitForFunction(() => globalThis.__shadingLab.tour?.ready && location.hash !== '#fresnel-zones-nv', {
-      timeout: 60_000,
+      timeout: WAIT_MS,
     });
     expect(await page.$('.tour-stage .widget-failure')).toBeNull();
     await page.close();
@@ -137,7 +139,7 @@ describe('a widget that fails stays in its box', () => {
         const tiles = [...document.querySelectorAll('.wall-tile')];
         return tiles.length >= 20 && tiles.every((t) => t.querySelector('[data-widget], .widget-failure'));
       },
-      { timeout: 120_000, polling: 250 },
+      { timeout: WAIT_MS, polling: 250 },
     );
     const titles = await page.$$eval('.wall-tile h2', (h) => h.map((e) => e.textContent));
     const names = titles.map((t) => Object.keys(WIDGETS).find((n) => t.includes(`${WIDGETS[n].title}:`)));
@@ -147,7 +149,7 @@ describe('a widget that fails stays in its box', () => {
     expect(await mounted(page)).toEqual(up.sort());
     expect(await page.$$eval('.wall-tile .widget-failure', (b) => b.length)).toBe(titles.length - up.length);
     await page.close();
-  }, 150_000);
+  });
 });
 
 describe('a library that throws as it loads cannot take the app down', () => {
@@ -172,7 +174,7 @@ describe('embed.html when its scripts are refused', () => {
         const box = document.getElementById('embed-fallback');
         return box && getComputedStyle(box).visibility === 'visible' ? box.innerText : null;
       });
-    await expect.poll(words, { timeout: 30_000, interval: 250 }).toBeTruthy();
+    await expect.poll(words, { timeout: WAIT_MS, interval: 250 }).toBeTruthy();
     return words();
   }
 

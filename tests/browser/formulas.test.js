@@ -83,7 +83,7 @@ describe('formulas', () => {
   });
 
   it('fresnel-curves: F0 = ((n − 1)/(n + 1))² follows the IOR control, and its symbol lights up with it', async () => {
-    const page = await open(browser, 'embed.html?w=fresnel-curves&materials=custom');
+    const page = await open(browser, 'embed.html?w=fresnel-curves&materials=manual');
     await widget(page, 'fresnel-curves');
     await typeset(page);
     const formulaText = () => page.$eval('.widget-formula math', (m) => m.textContent);

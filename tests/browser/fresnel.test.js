@@ -1,19 +1,23 @@
 // The Fresnel chapter in a real Chromium: widgets, URL state, notices, zone shares, idling, no WebGL2.
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
 import {
+  TEST_BUDGET_MS,
+  WAIT_MS,
+  afterFrames,
   distinctColors,
   getState,
   launchBrowser,
   open,
   setControl,
-  settle,
   shot,
-  untilSteady,
+  untilIdle,
   widget,
   withPixels,
 } from './helpers.js';
 import { sphereZoneFractions } from '../../src/math/zones.js';
 import { weightedSphereShares } from '../support/zone-shares.js';
+
+vi.setConfig({ testTimeout: TEST_BUDGET_MS });
 
 let browser;
 beforeAll(async () => {
@@ -141,8 +145,8 @@ describe('fresnel-zones', () => {
     await page.mouse.up();
     expect((await getState(page, 'fresnel-zones')).lightTheta).toBeLessThan(1);
     await page.mouse.move(box.x + box.width / 2 + 20, box.y + box.height / 2 + 10);
-    await settle(page);
-    expect(await page.$eval('.probe', (el) => el.textContent)).toMatch(/n·v.*n·l.*n·h.*l·h.*F\(n·v\) exact/s);
+    const probe = () => page.$eval('.probe', (el) => el.textContent);
+    await expect.poll(probe, { timeout: WAIT_MS }).toMatch(/n·v.*n·l.*n·h.*l·h.*F\(n·v\) exact/s);
     expect(page.errors).toEqual([]);
     await page.close();
   });
@@ -174,17 +178,16 @@ describe('fresnel-zones', () => {
       page.$$eval('.probe tr', (trs) =>
         Number.parseFloat(trs.find((tr) => tr.cells[0].textContent === 'n·l').cells[1].textContent),
       );
-    await expect.poll(nl).toBeCloseTo(Math.cos((60 * Math.PI) / 180), 3);
+    await expect.poll(nl, { timeout: WAIT_MS }).toBeCloseTo(Math.cos((60 * Math.PI) / 180), 3);
     await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].update({ lightTheta: 65 }));
-    await expect.poll(nl).toBeCloseTo(Math.cos((65 * Math.PI) / 180), 3);
+    await expect.poll(nl, { timeout: WAIT_MS }).toBeCloseTo(Math.cos((65 * Math.PI) / 180), 3);
     expect(page.errors).toEqual([]);
     await page.close();
   });
 
   it('the Fresnel picture outlines the zones of n·v at sin 45° and sin 75° of the sphere radius', async () => {
     const page = await open(browser, 'embed.html?w=fresnel-zones&mode=fresnel-nv&shape=sphere&camera=orthographic');
-    await widget(page, 'fresnel-zones');
-    await settle(page, 500);
+    await widget(page, 'fresnel-zones'); // and idle: the settled frame drawn
     // along the row through the centre, rightwards: the radius (in sphere radii) of the first yellow and red pixels
     const radii = await withPixels(
       page,
@@ -211,12 +214,14 @@ describe('fresnel-zones', () => {
     const page = await open(browser, 'fresnel.html');
     await widget(page, 'zones');
     await page.$eval('[data-slot="fresnel-zones"]', (el) => el.scrollIntoView());
-    await untilSteady(page, 'drawCalls'); // its first frames and its zone shares' read-back done
-    const before = await page.evaluate(() => [window.__drawCalls, globalThis.__shadingLab.frames]);
-    await new Promise((r) => setTimeout(r, 2000)); // a window for what must not come: it cannot fail an idle page
-    const after = await page.evaluate(() => [window.__drawCalls, globalThis.__shadingLab.frames]);
+    await untilIdle(page); // its first frames and its zone shares' read-back done: nothing more asked for
+    const count = () => page.evaluate(() => [window.__drawCalls, globalThis.__shadingLab.frames]);
+    const before = await count();
+    // a window for what must not come, counted in the page's frames (60: a second at 60 Hz, longer when loaded)
+    await afterFrames(page, 60);
     expect(before[0]).toBeGreaterThan(0);
-    expect(after).toEqual(before);
+    expect(await count()).toEqual(before);
+    expect(await page.evaluate(() => globalThis.__shadingLab.pending), 'work asked for while idle').toBe(0);
     await page.close();
   });
 
@@ -278,9 +283,9 @@ describe('fresnel-curves and f0-tables', () => {
       }
     });
     await page.click('tr[data-material="iron"] a[href*="w=fresnel-curves"]');
-    await expect.poll(async () => (await getState(page, 'zones')).material, { timeout: 10_000 }).toBe('diamond');
-    await expect.poll(async () => (await getState(page, 'curves')).materials, { timeout: 10_000 }).toContain('iron');
-    await expect.poll(() => page.url(), { timeout: 10_000 }).toMatch(/zones\.material=diamond/);
+    await expect.poll(async () => (await getState(page, 'zones')).material, { timeout: WAIT_MS }).toBe('diamond');
+    await expect.poll(async () => (await getState(page, 'curves')).materials, { timeout: WAIT_MS }).toContain('iron');
+    await expect.poll(() => page.url(), { timeout: WAIT_MS }).toMatch(/zones\.material=diamond/);
     expect(page.errors).toEqual([]);
     await page.close();
   });

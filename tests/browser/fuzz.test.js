@@ -19,7 +19,16 @@ import {
   seededRandom,
   stateProblems,
 } from '../support/hostile-values.js';
-import { baseUrl, launchBrowser, open, openForeignParent, otherOrigin, settle, untilSteady } from './helpers.js';
+import {
+  baseUrl,
+  launchBrowser,
+  open,
+  openForeignParent,
+  otherOrigin,
+  settle,
+  untilIdle,
+  untilSteady,
+} from './helpers.js';
 import { SMALL_VIEWPORT } from './harness.js';
 
 const SEED = 17;
@@ -81,7 +90,7 @@ async function postAll(messages, last) {
  * Waits for the widget's picture to settle (a Monte Carlo reference: until it has all its samples), its notices
  * dismissed first (read before this: they push the view down, out of the frame, where it stops drawing), and for
  * its page to keep its height and words for 500 ms (work that comes late: a user-written term's editor, loaded on
- * demand, and its checks).
+ * demand, and its checks), then for nothing pending in it.
  */
 async function settled(frame) {
   await frame.$$eval('.notice-close', (buttons) => buttons.forEach((b) => b.click()));
@@ -93,6 +102,9 @@ async function settled(frame) {
     { timeout: 90_000 },
   );
   await untilSteady(frame, 'layout', { timeout: 60_000 });
+  await untilIdle(frame); // its last frame drawn and its pauses over, counted by the app (debug-hooks.js)
+  // and 300 ms more: waited for by the pending work alone, measured-brdf's picture was once seen to change by 2.4 %
+  // after it (not traced; its fits run in a Web Worker, which no hook counts)
   await settle(frame, 300);
 }
 
@@ -446,7 +458,7 @@ describe('fuzz: files dropped and fetched', () => {
 describe('the three links of issue 17 that crashed a widget', () => {
   const LINKS = {
     'brdf-lobe': ['F=__proto__', ['F']],
-    'visibility-explorer': ['terms=__proto__', ['terms']],
+    'visibility-explorer': ['V=__proto__', ['V']],
     'fresnel-zones': [
       'shape=__proto__&camera=constructor&palette=toString&mode=hasOwnProperty',
       ['shape', 'camera', 'palette', 'mode'],
@@ -456,7 +468,7 @@ describe('the three links of issue 17 that crashed a widget', () => {
     it(`embed.html?w=${name}&${query}: mounts with its defaults, says what it refused, draws, no error`, async () => {
       const page = await open(browser, `embed.html?w=${name}&${query}`, SMALL_VIEWPORT);
       await page.waitForFunction((n) => globalThis.__shadingLab?.widgets?.[n], { timeout: 45_000 }, name);
-      await settle(page, 500);
+      await untilIdle(page);
       const state = await page.evaluate((n) => globalThis.__shadingLab.widgets[n].getState(), name);
       const defaults = defaultState(schemas[name]);
       for (const key of keys) expect(state[key], key).toEqual(defaults[key]);

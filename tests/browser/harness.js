@@ -43,7 +43,11 @@ export async function buildApp(outDir = join(ROOT, 'dist')) {
   return outDir;
 }
 
-/** A viewport for a test where the page's size is not the claim (SwiftShader draws every pixel on the CPU). */
+/**
+ * The browser tests' viewport where the page's size is not the claim (SwiftShader draws every pixel on the CPU):
+ * helpers.js open() opens every page at it unless the test names a size. openPage's own default (1280 × 900) is
+ * the scripts' and the benchmark's, whose pictures and figures are of a desktop window.
+ */
 export const SMALL_VIEWPORT = { width: 800, height: 600 };
 
 const TYPES = {
@@ -217,7 +221,10 @@ export async function openPage(browser, baseUrl, path, { width = 1280, height = 
   return page;
 }
 
-/** Waits until the page has drawn and then been idle for a few animation frames. */
+/**
+ * Two animation frames, then a fixed pause of `ms`: for the screenshot scripts and the benchmark. A test waits for
+ * a condition instead (helpers.js: untilIdle, afterFrames, untilSteady), which a loaded machine cannot outrun.
+ */
 export async function settle(page, ms = 300) {
   await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
   await new Promise((r) => setTimeout(r, ms));

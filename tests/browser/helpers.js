@@ -1,9 +1,18 @@
 // Helpers for the browser tests: pick lil-gui controls by label, read a widget, count WebGL draw calls.
 import { expect, inject } from 'vitest';
-import { launchBrowser, openPage, settle } from './harness.js';
+import { SMALL_VIEWPORT, launchBrowser, openPage, settle } from './harness.js';
 
 export const baseUrl = () => inject('baseUrl');
 export { launchBrowser, settle };
+
+/**
+ * A browser test's time budget where a file sets its own (vi.setConfig({ testTimeout })), and the bound of one wait
+ * for a condition inside it, below the budget so that the wait's own message comes first. Waits are for conditions,
+ * never for a time (untilIdle, afterFrames, expect.poll), so these bound only what a loaded machine takes: with two
+ * CPU hogs beside the suite a test took up to ~3 times as long as on an idle machine.
+ */
+export const TEST_BUDGET_MS = 240_000;
+export const WAIT_MS = 180_000;
 
 /** Counts every WebGL draw call of the page in window.__drawCalls. */
 export function countDrawCalls() {
@@ -24,16 +33,19 @@ export function countDrawCalls() {
 }
 
 /** Caps the samples progressive views refine to (sampleTarget in src/core/framework/debug-hooks.js). */
-function capSamples(n) {
+export function capSamples(n) {
   globalThis.__shadingLab = { ...globalThis.__shadingLab, maxSamples: n };
 }
 
 /**
- * Opens a page of the served app with its draw calls counted. `maxSamples` caps its progressive views, for a test
- * that reads a picture exact from its first samples and would otherwise wait (untilIdle) for it to converge.
+ * Opens a page of the served app with its draw calls counted, at SMALL_VIEWPORT unless `width` and `height` say
+ * otherwise (a test whose claim is about a size or a layout names it). `maxSamples` caps its progressive views,
+ * for a test that reads a picture exact from its first samples and would otherwise wait (untilIdle) for it to
+ * converge.
  */
 export const open = (browser, path, { maxSamples, ...size } = {}) =>
   openPage(browser, baseUrl(), path, {
+    ...SMALL_VIEWPORT,
     ...size,
     beforeLoad: async (page) => {
       await page.evaluateOnNewDocument(countDrawCalls);
@@ -51,33 +63,39 @@ export const otherOrigin = () => baseUrl().replace('127.0.0.1', 'localhost');
  */
 export const openForeignParent = (browser) =>
   openPage(browser, baseUrl(), new URL('index.html', otherOrigin()).href, {
+    ...SMALL_VIEWPORT,
     beforeLoad: (page) => page.setBypassCSP(true),
   });
 
 let steadyWaits = 0;
 
 /**
- * Resolves once what `watch` names has held for `quietMs` in the page (or frame) `target`: 'drawCalls', its WebGL
- * draw count (countDrawCalls), or 'layout', its height and words. Rejects after `timeout`.
+ * Resolves once what `watch` names has held in the page (or frame) `target` for `quietChecks` checks in a row (100
+ * ms apart) and at least `quietMs`: 'drawCalls', its WebGL draw count (countDrawCalls), or 'layout', its height and
+ * words. Counted in the page's own checks as well as in milliseconds: a loaded machine runs the page's timers late,
+ * so it waits the longer. (Checked on a timer, not per animation frame: a frame out of sight gets few frames.)
+ * Rejects after `timeout`.
  */
-export async function untilSteady(target, watch, { quietMs = 500, timeout = 30_000 } = {}) {
+export async function untilSteady(target, watch, { quietMs = 500, quietChecks = 5, timeout = 30_000 } = {}) {
   const token = ++steadyWaits; // each wait keeps its own record in the page, started afresh
   await target.waitForFunction(
-    (watch, token, quietMs) => {
+    (watch, token, quietMs, quietChecks) => {
       const value =
         watch === 'drawCalls' ? window.__drawCalls : `${document.body.scrollHeight} ${document.body.innerText}`;
       const now = performance.now();
       const seen = window.__steady;
       if (seen?.token !== token || seen.value !== value) {
-        window.__steady = { token, value, since: now };
+        window.__steady = { token, value, since: now, checks: 0 };
         return false;
       }
-      return now - seen.since >= quietMs;
+      seen.checks++;
+      return seen.checks >= quietChecks && now - seen.since >= quietMs;
     },
     { timeout, polling: 100 },
     watch,
     token,
     quietMs,
+    quietChecks,
   );
 }
 
@@ -120,7 +138,7 @@ export const afterFrames = (target, n) =>
 
 /** Waits for a widget instance to be registered under `key` (its name, or its prefix on a page), then for idle. */
 export async function widget(page, key) {
-  await page.waitForFunction((k) => globalThis.__shadingLab?.widgets?.[k], { timeout: 60_000 }, key);
+  await page.waitForFunction((k) => globalThis.__shadingLab?.widgets?.[k], { timeout: WAIT_MS }, key);
   await untilIdle(page);
 }
 

@@ -27,7 +27,7 @@ let page;
 beforeAll(async () => {
   browser = await launchBrowser();
   const query =
-    'lab.punctual=0&lab.environment=furnace&lab.layers=specular&lab.fresnel=one&lab.alpha=1' +
+    'lab.punctual=0&lab.environment=furnace&lab.layers=specular&lab.F=one&lab.alpha=1' +
     '&lab.compensation=kullaConty&lab.refSamples=128';
   page = await open(browser, `rendering.html?${query}`, SMALL_VIEWPORT);
   // in view (in a small window the chapter's opening words fill the first screen), and mounted; its reference

@@ -27,7 +27,7 @@ const texelOf = ([x, y]) => [x, y].map((c) => Math.floor((c / (2 * EXTENT) + 0.5
 const TRUTH = EXAMPLES.ggx.params; // α 0.2, f0 0.04, c_diff 0.3
 // c_diff 0.3 linear as the lab's sRGB colour field takes it: 0.3005 back in linear (0.2 % off, far below the noise)
 const QUERY =
-  'lab.punctual=0&lab.alpha=0.2&lab.f0=0.04&lab.diffuse=959595&lab.envMethod=importance&lab.samples=256' +
+  'lab.punctual=0&lab.alpha=0.2&lab.f0=0.04&lab.cdiff=959595&lab.envMethod=importance&lab.samples=256' +
   '&lab.refSamples=512';
 
 let browser;

@@ -31,10 +31,10 @@ afterAll(async () => {
 
 describe('chapter page state', () => {
   it('round-trips through the URL under its prefix, and bad values give notices', async () => {
-    const page = await open(browser, 'ndf.html?ndf.hwhm=12.5&ndf.ndfs=ggx,beckmann&ndf.exposure=banana');
+    const page = await open(browser, 'ndf.html?ndf.hwhm=12.5&ndf.D=ggx,beckmann&ndf.exposure=banana');
     await widget(page, 'ndf');
     const state = await getState(page, 'ndf');
-    expect([state.hwhm, state.ndfs]).toEqual([12.5, ['ggx', 'beckmann']]);
+    expect([state.hwhm, state.D]).toEqual([12.5, ['ggx', 'beckmann']]);
     expect(await page.$eval('.notice', (el) => el.textContent)).toMatch(/banana/);
     await setControl(page, 'Light from view (°)', 50);
     const url = page.url();
@@ -122,7 +122,7 @@ describe('ndf-explorer, the log plot', () => {
 
 describe('visibility-explorer', () => {
   it('roughness changes the Smith curves but not the implicit term', async () => {
-    const page = await open(browser, 'embed.html?w=visibility-explorer&terms=implicit,smithGGXCorrelated');
+    const page = await open(browser, 'embed.html?w=visibility-explorer&V=implicit,smithGGXCorrelated');
     await widget(page, 'visibility-explorer');
     const errs1 = await page.evaluate(() => globalThis.__shadingLab.widgets['visibility-explorer'].getWorstErrors());
     await setControl(page, 'Roughness α', 0.1);

@@ -4,8 +4,9 @@
 // Content-Security-Policy with none of these (and idle pages drawing nothing) is in axe.test.js: this file is the
 // quick check of the edit loop (npm run test:quick).
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { distinctColors, launchBrowser, open, settle, shot, widget } from './helpers.js';
+import { afterFrames, distinctColors, launchBrowser, open, shot, widget } from './helpers.js';
 import { SMALL_VIEWPORT } from './harness.js';
+import { untilCalm } from './idle.js';
 
 let browser;
 beforeAll(async () => {
@@ -16,6 +17,12 @@ afterAll(async () => {
 });
 
 const CANVAS = '.widget-fresnel-zones canvas';
+
+/** Waits for the page's work to be done (its views' frames drawn, the app's pauses over): counted in frames. */
+async function settled(page) {
+  await afterFrames(page, 2); // a view just scrolled into sight asks for its frame by then
+  await untilCalm(page);
+}
 
 describe('pages load cleanly', () => {
   for (const path of [
@@ -28,12 +35,14 @@ describe('pages load cleanly', () => {
     it(path, async () => {
       const page = await open(browser, path, SMALL_VIEWPORT);
       if (path.includes('w=')) await widget(page, new URL(path, 'http://x').searchParams.get('w'));
-      else await settle(page, 1500);
+      else await settled(page);
       expect(await page.$('h1, .widget')).not.toBeNull();
       if (path.includes('zones') || path === 'fresnel.html') {
         await page.$eval(CANVAS, (el) => el.scrollIntoView()); // out of view it draws nothing, by design
-        await settle(page, 800);
-        expect(await distinctColors(page, await shot(page, CANVAS))).toBeGreaterThan(20);
+        await settled(page);
+        // polled: a view waits for what it draws with (its context, its textures) with nothing pending meanwhile
+        const colors = async () => distinctColors(page, await shot(page, CANVAS));
+        await expect.poll(colors, { timeout: 60_000, interval: 250 }).toBeGreaterThan(20);
       }
       expect(page.errors).toEqual([]);
       await page.close();
@@ -42,7 +51,6 @@ describe('pages load cleanly', () => {
 
   it('the landing page links every live page and widget', async () => {
     const page = await open(browser, 'index.html', SMALL_VIEWPORT);
-    await settle(page);
     const links = await page.$$eval('#chapters a', (as) => as.map((a) => a.getAttribute('href')));
     expect(links).toEqual(
       expect.arrayContaining([
@@ -102,7 +110,7 @@ describe('pages load cleanly', () => {
 
   it('an unknown widget gets a message, not a blank page', async () => {
     const page = await open(browser, 'embed.html?w=nope', SMALL_VIEWPORT);
-    await settle(page);
+    await page.waitForSelector('.blocking-message');
     expect(await page.$eval('.blocking-message', (el) => el.textContent)).toMatch(/no widget called/);
     expect(page.errors).toEqual([]);
     await page.close();
@@ -122,8 +130,8 @@ describe('chapter pages load cleanly', () => {
       for (const k of keys) await widget(page, k);
       for (const canvas of await page.$$('canvas')) {
         if (!(await canvas.boundingBox())) continue; // hidden (e.g. the second BRDF's image when there is none)
-        const png = await canvas.screenshot({ encoding: 'base64' });
-        expect(await distinctColors(page, png)).toBeGreaterThan(8);
+        const colors = async () => distinctColors(page, await canvas.screenshot({ encoding: 'base64' }));
+        await expect.poll(colors, { timeout: 60_000, interval: 250 }).toBeGreaterThan(8);
       }
       expect(page.errors).toEqual([]);
       await page.close();

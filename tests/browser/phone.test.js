@@ -3,11 +3,24 @@
 // screen; on the exercises page the question, the control that answers it and Check are on the screen together,
 // none under another element (elementFromPoint at their centres); the rendering chapter's captions sit beside the
 // pictures, not over them (the canvas under each caption is unpainted), and its table stays in its box.
-import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { baseUrl, launchBrowser, settle, shot, untilSteady, widget, withPixels } from './helpers.js';
+import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
+import {
+  TEST_BUDGET_MS,
+  WAIT_MS,
+  baseUrl,
+  capSamples,
+  launchBrowser,
+  shot,
+  untilIdle,
+  untilSteady,
+  widget,
+  withPixels,
+} from './helpers.js';
 import { openPage } from './harness.js';
 
 const PHONE = { width: 390, height: 844, isMobile: true, hasTouch: true, deviceScaleFactor: 1 };
+
+vi.setConfig({ testTimeout: TEST_BUDGET_MS });
 
 let browser;
 beforeAll(async () => {
@@ -17,7 +30,19 @@ afterAll(async () => {
   await browser?.close();
 });
 
-const openPhone = (path) => openPage(browser, baseUrl(), path, { ...PHONE, beforeLoad: (p) => p.setViewport(PHONE) });
+/**
+ * Opens `path` on the phone, puppeteer's waits bounded by WAIT_MS; `maxSamples` caps its progressive views, for
+ * a claim about a picture drawn, not converged.
+ */
+const openPhone = (path, { maxSamples } = {}) =>
+  openPage(browser, baseUrl(), path, {
+    ...PHONE,
+    beforeLoad: async (p) => {
+      await p.setViewport(PHONE);
+      p.setDefaultTimeout(WAIT_MS);
+      if (maxSamples) await p.evaluateOnNewDocument(capSamples, maxSamples);
+    },
+  });
 const pageWidth = (page) => page.evaluate(() => document.documentElement.scrollWidth);
 
 /**
@@ -44,13 +69,13 @@ describe('on a phone (390 × 844, touch)', () => {
   it('the tour: no wider than the screen, the step’s title on the first screen', async () => {
     const page = await openPhone('tour.html');
     await page.waitForFunction(() => document.querySelector('.tour-title')?.textContent.trim());
-    await untilSteady(page, 'layout');
+    await untilSteady(page, 'layout', { timeout: WAIT_MS });
     expect(await pageWidth(page)).toBeLessThanOrEqual(390);
     const boxes = await onScreen(page, ['.tour-title']);
     expect(boxes).toEqual(allVisible(boxes));
     expect(page.errors).toEqual([]);
     await page.close();
-  }, 60_000);
+  });
 
   it('exercises: the list is one folded line; a chosen question, its answer and Check share the screen', async () => {
     const page = await openPhone('exercises.html');
@@ -71,11 +96,11 @@ describe('on a phone (390 × 844, touch)', () => {
       await page.tap(`#exercise-list a[href="#${id}"]`);
       await page.waitForFunction(
         (i) => globalThis.__shadingLab.exercise?.id === i && globalThis.__shadingLab.exercise.ready,
-        { timeout: 30_000 },
+        { timeout: WAIT_MS },
         id,
       );
       await page.waitForSelector(control);
-      await untilSteady(page, 'layout');
+      await untilSteady(page, 'layout', { timeout: WAIT_MS });
       expect(await page.$eval('#exercise-list-box', (d) => d.open), id).toBe(false); // folded again
       const boxes = await onScreen(page, ['.exercise-prompt', control, '.exercise-check']);
       expect(boxes, id).toEqual(allVisible(boxes));
@@ -85,14 +110,15 @@ describe('on a phone (390 × 844, touch)', () => {
     await page.evaluate(() => (location.hash = 'which-ndf'));
     await page.waitForFunction(() => globalThis.__shadingLab.exercise?.id === 'which-ndf');
     await page.waitForSelector('.exercise-widget .data-table');
-    await untilSteady(page, 'layout');
+    await untilSteady(page, 'layout', { timeout: WAIT_MS });
     expect(await pageWidth(page)).toBeLessThanOrEqual(390);
     expect(page.errors).toEqual([]);
     await page.close();
-  }, 120_000);
+  });
 
   it('rendering: no wider than the screen; captions on unpainted canvas; the table in its box', async () => {
-    const page = await openPhone('rendering.html?lab.refSamples=32&models.refSamples=32');
+    // the captions' places and the canvas under them need a picture, not a converged one: 4 samples
+    const page = await openPhone('rendering.html?lab.refSamples=32&models.refSamples=32', { maxSamples: 4 });
     for (const [key, section] of [
       ['lab', '#lab'],
       ['models', '#models'],
@@ -101,12 +127,12 @@ describe('on a phone (390 × 844, touch)', () => {
       await widget(page, key);
     }
     await page.$eval('.widget-lighting-models .lab-view', (v) => v.scrollIntoView());
-    await untilSteady(page, 'drawCalls');
+    await untilSteady(page, 'drawCalls', { timeout: WAIT_MS });
     expect(await pageWidth(page)).toBeLessThanOrEqual(390);
 
     for (const root of ['.widget-material-lab', '.widget-lighting-models']) {
       await page.$eval(`${root} .lab-view`, (v) => v.scrollIntoView());
-      await settle(page, 300);
+      await untilIdle(page, { frames: 3 }); // in sight: drawn there (a frame the scroll asked for, then its samples)
       // each caption's box, in the canvas's pixels; then the canvas alone (captions hidden) read under those boxes
       const boxes = await page.$eval(`${root} .lab-view`, (view) => {
         const c = view.querySelector('canvas').getBoundingClientRect();
@@ -149,5 +175,5 @@ describe('on a phone (390 × 844, touch)', () => {
     expect(table.narrowest).toBeGreaterThan(250);
     expect(page.errors).toEqual([]);
     await page.close();
-  }, 180_000);
+  });
 });

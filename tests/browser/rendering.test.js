@@ -148,7 +148,7 @@ describe('material lab', () => {
       const cLight = 0.5;
       const page = await openLab(
         `lab.env=0&lab.punctual=1&lab.lightTheta=0&lab.cLight=${cLight}` +
-          '&lab.layers=diffuse&lab.diffuse=ffffff&lab.refSamples=128',
+          '&lab.layers=diffuse&lab.cdiff=ffffff&lab.refSamples=128',
         FIRST_BATCH, // a punctual light alone: the reference is exact from its first batch (lab-reference.glsl)
       );
       const points = texelCentre([
@@ -180,7 +180,7 @@ describe('material lab', () => {
 
   it('shows 1 for a white Lambertian sphere in the white furnace: approximation and converged reference', async () => {
     const page = await openLab(
-      'lab.punctual=0&lab.environment=furnace&lab.layers=diffuse&lab.diffuse=ffffff&lab.refSamples=128' +
+      'lab.punctual=0&lab.environment=furnace&lab.layers=diffuse&lab.cdiff=ffffff&lab.refSamples=128' +
         '&lab.exposure=0.5',
     );
     const points = texelCentre([
@@ -256,7 +256,7 @@ describe('material lab', () => {
       const [theta, phi, sigmaDeg, hex] = [60, 0, 60, '#959595']; // linear ρ = 0.30
       const page = await openLab(
         `lab.env=0&lab.punctual=1&lab.lightTheta=${theta}&lab.lightPhi=${phi}&lab.cLight=1&lab.layers=diffuse` +
-          `&lab.diffuseModel=oren-nayar&lab.sigma=${sigmaDeg}&lab.diffuse=${hex.slice(1)}&lab.refSamples=128`,
+          `&lab.diffuse=oren-nayar&lab.sigma=${sigmaDeg}&lab.cdiff=${hex.slice(1)}&lab.refSamples=128`,
         FIRST_BATCH, // the approximation is read
       );
       const rho = hexToRgb(hex).map(srgbToLinear);
@@ -319,7 +319,7 @@ describe('material lab', () => {
       const nvs = spots.map((s) => normalAt(s)[2]); // v = z: n·v is the normal's z
       const cases = [
         { name: 'mirror, Schlick', state: {}, want: (nv) => fresnelSchlick(0.04, nv) },
-        { name: 'mirror, F = 1', state: { fresnel: 'one' }, want: () => 1 },
+        { name: 'mirror, F = 1', state: { F: 'one' }, want: () => 1 },
         {
           name: 'split sum, F = 1, GGX + height-correlated Smith',
           state: { envMethod: 'split-sum' },
@@ -328,13 +328,13 @@ describe('material lab', () => {
         },
         {
           name: 'split sum, F = 1, Beckmann + Kelemen',
-          state: { ndf: 'beckmann', visibility: 'kelemen' },
+          state: { D: 'beckmann', V: 'kelemen' },
           terms: { ndf: 'beckmann', visibility: 'kelemen' },
           f0: null,
         },
         {
           name: 'split sum, Schlick, Beckmann + Cook-Torrance',
-          state: { fresnel: 'schlick', visibility: 'cookTorrance' },
+          state: { F: 'schlick', V: 'cookTorrance' },
           terms: { ndf: 'beckmann', visibility: 'cookTorrance' },
           f0: 0.04,
         },
@@ -346,7 +346,7 @@ describe('material lab', () => {
         },
         {
           name: 'ambient, F = 1, GGX + Schlick-GGX',
-          state: { fresnel: 'one', ndf: 'ggx', visibility: 'schlickGGX' },
+          state: { F: 'one', D: 'ggx', V: 'schlickGGX' },
           terms: { ndf: 'ggx', visibility: 'schlickGGX' },
           f0: null,
         },
@@ -358,8 +358,8 @@ describe('material lab', () => {
             env: true,
             envMethod: 'importance',
             samples: 256,
-            ndf: 'beckmann',
-            visibility: 'kelemen',
+            D: 'beckmann',
+            V: 'kelemen',
           },
           terms: { ndf: 'beckmann', visibility: 'kelemen' },
           f0: null,
@@ -405,7 +405,7 @@ describe('material lab', () => {
     async () => {
       const alpha = 0.0625; // a layer of the prefiltered map: no blend between layers
       const page = await openLab(
-        `lab.punctual=0&lab.layers=specular&lab.fresnel=one&lab.alpha=${alpha}&lab.envMethod=split-sum` +
+        `lab.punctual=0&lab.layers=specular&lab.F=one&lab.alpha=${alpha}&lab.envMethod=split-sum` +
           '&lab.refSamples=128',
         FIRST_BATCH, // the approximation is read
       );
@@ -471,7 +471,7 @@ describe('material lab', () => {
         browser,
         baseUrl(),
         'rendering.html?lab.env=0&lab.punctual=1&lab.lightTheta=0&lab.cLight=0.5&lab.layers=diffuse' +
-          '&lab.diffuse=ffffff&lab.refSamples=128&models.refSamples=128',
+          '&lab.cdiff=ffffff&lab.refSamples=128&models.refSamples=128',
         {
           // the window of a reader who scrolls from one lab to the other: at the top of the page the first is in
           // view and the second is not
@@ -517,7 +517,7 @@ describe('material lab', () => {
     'takes a dropped .hdr, and refuses a broken or wrongly shaped one with a ' + 'message, keeping the environment',
     async () => {
       const page = await openLab(
-        'lab.punctual=0&lab.environment=sky&lab.layers=diffuse&lab.diffuse=ffffff&lab.refSamples=128&lab.exposure=0.5',
+        'lab.punctual=0&lab.environment=sky&lab.layers=diffuse&lab.cdiff=ffffff&lab.refSamples=128&lab.exposure=0.5',
         FIRST_BATCH, // the approximation is read
       );
       const drop = (name, bytes) => dropFile(page, name, bytes);

@@ -6,7 +6,7 @@ import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { allowDownloads, launchBrowser, open, settle, widget } from './helpers.js';
+import { allowDownloads, launchBrowser, open, widget } from './helpers.js';
 
 let browser;
 let page;
@@ -16,8 +16,7 @@ beforeAll(async () => {
   dir = mkdtempSync(join(tmpdir(), 'shading-lab-save-'));
   page = await open(browser, 'embed.html?w=brdf-lobe');
   await allowDownloads(page, dir);
-  await widget(page, 'brdf-lobe');
-  await settle(page, 1500);
+  await widget(page, 'brdf-lobe'); // and idle: every view drawn
 });
 afterAll(async () => {
   await browser?.close();
@@ -76,8 +75,9 @@ async function saveView(name) {
   await button.focus();
   await page.keyboard.press('Enter');
   const file = join(dir, `brdf-lobe-${name.toLowerCase().replace(/[^\p{L}\p{N}]+/gu, '-')}.png`);
-  for (let i = 0; i < 100 && !existsSync(file); i++) await new Promise((r) => setTimeout(r, 100));
-  expect(existsSync(file), `${file} downloaded`).toBe(true);
+  await expect
+    .poll(() => existsSync(file), { message: `${file} downloaded`, timeout: 60_000, interval: 100 })
+    .toBe(true);
   return { bytes: readFileSync(file), canvasSize, shown };
 }
 

@@ -34,7 +34,7 @@ describe('Share', () => {
     'every widget of a chapter has one at its top, whose label says it links to the chapter at this state; ' +
       'its QR code decodes to that link, and the dialog offers the widget alone too',
     async () => {
-      const page = await open(browser, 'fresnel.html');
+      const page = await open(browser, 'fresnel.html', { width: 1280, height: 900 }); // the QR code's size is a claim
       await widget(page, 'zones');
       const bars = await page.$$eval('.widget', (ws) =>
         ws.map((w) => {

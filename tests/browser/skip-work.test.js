@@ -1,7 +1,7 @@
 // Skip what a scene does not need, measured: WebGL draw calls are counted in the page itself. That an idle page draws
 // nothing is checked where every page is loaded under the policy (axe.test.js).
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { launchBrowser, open, settle, untilSteady, widget } from './helpers.js';
+import { afterFrames, launchBrowser, open, untilIdle, untilSteady, widget } from './helpers.js';
 
 let browser;
 beforeAll(async () => {
@@ -25,7 +25,10 @@ describe('views out of sight draw nothing', () => {
     await untilSteady(page, 'drawCalls');
     const before = await draws(page);
     await page.evaluate(() => globalThis.__shadingLab.widgets.zones.update({ mode: 'zones-lh' }));
-    await settle(page, 800); // (a wait for what must not come: it can let a wrong draw through, never fail a right one)
+    // (a window for what must not come, counted in frames once the app has nothing asked for: it can let a wrong
+    // draw through, never fail a right one)
+    await untilIdle(page);
+    await afterFrames(page, 30);
     expect(await draws(page)).toBe(before);
     await page.$eval('[data-slot="fresnel-zones"]', (el) => el.scrollIntoView());
     await untilDrawsAfter(page, before);
@@ -44,7 +47,8 @@ describe('views out of sight draw nothing', () => {
     await setHidden(true);
     const before = await draws(page);
     await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].update({ lightTheta: 20 }));
-    await settle(page, 600); // (a wait for what must not come, as above)
+    await untilIdle(page); // (a window for what must not come, as above)
+    await afterFrames(page, 30);
     expect(await draws(page)).toBe(before);
     await setHidden(false);
     await untilDrawsAfter(page, before);

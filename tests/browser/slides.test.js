@@ -3,10 +3,12 @@
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { gzipSync } from 'node:zlib';
-import { afterAll, beforeAll, describe, expect, it, onTestFinished } from 'vitest';
-import { ROOT, openPage, settle } from './harness.js';
+import { afterAll, beforeAll, describe, expect, it, onTestFinished, vi } from 'vitest';
+import { ROOT, openPage } from './harness.js';
 import { longDeck, serveDecks } from './decks.js';
-import { baseUrl, launchBrowser, withPixels } from './helpers.js';
+import { TEST_BUDGET_MS, WAIT_MS, afterFrames, baseUrl, launchBrowser, untilIdle, withPixels } from './helpers.js';
+
+vi.setConfig({ testTimeout: TEST_BUDGET_MS });
 
 let browser;
 let decks;
@@ -40,7 +42,7 @@ async function openDeck(path, { width = 1200, height = 800 } = {}) {
 // timeout of its own, for the frame's JavaScript context, which never comes for a frame that reveal.js has removed
 // or that is still turning from the parent's blank document into the widget's process. Only the element test goes
 // into its frame, once the widget has said ready there, each call bounded.
-const ANSWER_MS = 10_000;
+const ANSWER_MS = 30_000;
 
 /** `promise`, or a clear failure naming `what` if it does not settle within ANSWER_MS. */
 function within(promise, what) {
@@ -62,7 +64,7 @@ async function waitForState(page, expected, selector = '.present shading-lab-wid
         const state = document.querySelector(sel)?.state;
         return state && Object.entries(want).every(([k, v]) => state[k] === v);
       },
-      { timeout: 30_000 },
+      { timeout: WAIT_MS },
       selector,
       expected,
     );
@@ -133,20 +135,38 @@ async function snapshotCoverage(page) {
   return coverage(page, image.split(',')[1]);
 }
 
-/** Waits until the current slide's widget shows a picture (reveal's slide transition over, the frame drawn). */
+/**
+ * Waits until the current slide's widget shows a picture (reveal's slide transition over, the frame drawn), or
+ * WAIT_MS have passed; returns the share of it that is not background.
+ */
 async function waitForPicture(page) {
   let share = 0;
-  for (let i = 0; i < 40 && share <= 0.2; i++) {
-    await settle(page, 250);
+  const picture = async () => {
     const element = await page.$('.present shading-lab-widget'); // absent for a moment while reveal swaps slides
     if (element) share = await coverage(page, await onScreen(element));
-  }
+    return share;
+  };
+  await expect
+    .poll(picture, { timeout: WAIT_MS, interval: 250 })
+    .toBeGreaterThan(0.2)
+    .catch(() => {});
   return share;
 }
 
+/** Where the deck is: the current slide's place and how many of its fragments are shown (reveal's classes). */
+const deckPlace = (page) =>
+  page.evaluate(() => {
+    const slides = [...document.querySelectorAll('.reveal .slides > section')];
+    const current = slides.find((s) => s.classList.contains('present'));
+    return `${slides.indexOf(current)} ${current?.querySelectorAll('.fragment.visible').length}`;
+  });
+
+/** Presses `key` and waits until the deck has moved (a slide or a fragment) and the page has drawn since. */
 const press = async (page, key) => {
+  const was = await deckPlace(page);
   await page.keyboard.press(key);
-  await settle(page, 200);
+  await expect.poll(() => deckPlace(page), { timeout: WAIT_MS, interval: 50 }).not.toBe(was);
+  await afterFrames(page, 2);
 };
 
 describe('<shading-lab-widget> on another origin', () => {
@@ -178,7 +198,7 @@ describe('<shading-lab-widget> on another origin', () => {
       // the page's button calls set(); the state and the widget inside the frame follow
       await page.click('#weighted');
       await page.waitForFunction(() => document.getElementById('now').value === 'mode=zones-lh-weighted', {
-        timeout: 15_000,
+        timeout: WAIT_MS,
       });
       expect((await stateInFrame(frame)).mode).toBe('zones-lh-weighted');
 
@@ -201,8 +221,10 @@ describe('<shading-lab-widget> on another origin', () => {
       expect((await changed).state.mode).toBe('zones-nv');
       expect(await page.$eval('#zones', (z) => z.query)).toContain('mode=zones-nv');
 
-      // a snapshot is the picture the browser shows in the frame's canvas (the compositor's screenshot of it)
-      await settle(page, 500);
+      // a snapshot is the picture the browser shows in the frame's canvas (the compositor's screenshot of it), once
+      // the widget has drawn the new mode and the page has been composited since
+      await untilIdle(frame, { timeout: WAIT_MS });
+      await afterFrames(page, 2);
       const image = await page.$eval('#zones', (z) => z.snapshot());
       expect(image).toMatch(/^data:image\/png;base64,/);
       const shown = await onScreen(await frame.$('canvas'));
@@ -218,7 +240,7 @@ describe('<shading-lab-widget> on another origin', () => {
 describe('reveal.js plugin (reveal.js 6 from node_modules, the app on another origin)', () => {
   it('keyboard through slides and fragments: the widget follows its slide and fragments, back and forth', async () => {
     const page = await openDeck(`/examples/deck/index.html?lab=${lab()}`);
-    await page.waitForFunction(() => document.querySelector('.reveal.ready'), { timeout: 30_000 });
+    await page.waitForFunction(() => document.querySelector('.reveal.ready'), { timeout: WAIT_MS });
     expect(await page.$$eval('shading-lab-widget', (els) => els.length)).toBe(1); // the next slide's, preloaded
 
     await press(page, 'ArrowRight');
@@ -232,7 +254,7 @@ describe('reveal.js plugin (reveal.js 6 from node_modules, the app on another or
     // the slot the plugin added takes the widget's height, as far as the 700 px slide has room for it
     const slot = () =>
       page.$eval('.present [data-shading-lab-slot]', (s) => ({ height: s.offsetHeight, room: 700 - s.offsetTop }));
-    await expect.poll(slot, { timeout: 15_000 }).toSatisfy(({ height, room }) => height === room && height > 480);
+    await expect.poll(slot, { timeout: WAIT_MS }).toSatisfy(({ height, room }) => height === room && height > 480);
     await press(page, 'ArrowRight'); // first fragment
     await waitForState(page, { mode: 'zones-lh-weighted', shape: 'sphere' });
     await press(page, 'ArrowRight'); // second fragment
@@ -258,12 +280,12 @@ describe('reveal.js plugin (reveal.js 6 from node_modules, the app on another or
     expect(page.errors).toEqual([]);
     expect(page.warnings).toEqual([]);
     await page.close();
-  }, 180_000);
+  });
 
   it('a 40-slide deck: at most three live widgets, each current one draws, no context lost', async () => {
     const page = await openDeck(`/long-deck.html?lab=${lab()}`);
     onTestFinished(() => page.close().catch(() => {}));
-    await page.waitForFunction(() => document.querySelector('.reveal.ready'), { timeout: 30_000 });
+    await page.waitForFunction(() => document.querySelector('.reveal.ready'), { timeout: WAIT_MS });
     let most = 0;
     for (let i = 0; i < 40; i++) {
       await waitForState(page, { lightTheta: 40 + 3 * i });
@@ -274,17 +296,17 @@ describe('reveal.js plugin (reveal.js 6 from node_modules, the app on another or
         await press(page, 'ArrowRight'); // its fragment
         await waitForState(page, { mode: 'zones-nv' });
       }
-      await press(page, 'ArrowRight');
+      if (i < 39) await press(page, 'ArrowRight'); // (the last slide has no next)
     }
     expect(most).toBeLessThanOrEqual(3);
     expect(await waitForPicture(page)).toBeGreaterThan(0.2);
     expect(page.errors).toEqual([]);
     expect(page.warnings).toEqual([]);
-  }, 150_000);
+  }, 480_000); // twice TEST_BUDGET_MS: 54 key presses and 40 snapshots
 
   it('print view (?print-pdf): each widget is a still image in the state of its printed page', async () => {
     const page = await openDeck(`/examples/deck/index.html?print-pdf&lab=${lab()}`);
-    await page.waitForSelector('.reveal[data-shading-lab-printed]', { timeout: 120_000 });
+    await page.waitForSelector('.reveal[data-shading-lab-printed]', { timeout: WAIT_MS });
     expect(await page.$$eval('shading-lab-widget', (els) => els.length)).toBe(0); // no live widget left
     const stills = await page.$$eval('.pdf-page img[src^="data:image/png"]', (imgs) =>
       imgs.map((i) => ({ src: i.src, alt: i.alt })),
@@ -311,5 +333,5 @@ describe('reveal.js plugin (reveal.js 6 from node_modules, the app on another or
     expect(pdf.length).toBeGreaterThan(10_000);
     expect(page.errors).toEqual([]);
     await page.close();
-  }, 200_000);
+  });
 });

@@ -52,7 +52,7 @@ function pixelIntegral(toSphere, px, py) {
 async function readSphere() {
   const page = await open(
     browser,
-    `embed.html?w=diffuse-explorer&models=lambert&cdiff=${CDIFF}&lightTheta=60&lightPhi=30&exposure=1`,
+    `embed.html?w=diffuse-explorer&diffuse=lambert&cdiff=${CDIFF}&lightTheta=60&lightPhi=30&exposure=1`,
     { width: 900, height: 900 },
   );
   await widget(page, 'diffuse-explorer');

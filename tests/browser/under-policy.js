@@ -6,7 +6,7 @@ import { baseUrl, countDrawCalls, settle } from './helpers.js';
 import { ROOT, openPage } from './harness.js';
 
 /** Every violation in the page and its same-origin frames, in window.top.__csp (installed before any script). */
-function recordViolations() {
+export function recordViolations() {
   document.addEventListener('securitypolicyviolation', (e) => {
     (window.top.__csp ??= []).push(
       `${e.violatedDirective}: ${e.blockedURI || e.sample || '(inline)'} in ${location.pathname}`,
@@ -55,16 +55,19 @@ export const POLICY_PAGES = [
 ];
 
 /**
- * Opens `path` with its violations recorded (window.__csp) and its draw calls counted (window.__drawCalls), and
- * waits until it has done what it does on load (an embed with a widget: that widget mounted).
+ * Opens `path` with its violations recorded (window.__csp), its draw calls counted (window.__drawCalls) and its
+ * progressive views capped at `maxSamples` if given, and waits until it has done what it does on load (an embed
+ * with a widget: that widget mounted).
  */
-export async function openUnderPolicy(browser, path, { width = 1100, height = 800 } = {}) {
+export async function openUnderPolicy(browser, path, { width = 1100, height = 800, maxSamples } = {}) {
   const page = await openPage(browser, baseUrl(), path, {
     width,
     height,
     beforeLoad: async (p) => {
       await p.evaluateOnNewDocument(recordViolations);
       await p.evaluateOnNewDocument(countDrawCalls);
+      // a cap on progressive views' samples (debug-hooks.js sampleTarget), seeded before the app makes its hooks
+      if (maxSamples) await p.evaluateOnNewDocument((n) => (globalThis.__shadingLab = { maxSamples: n }), maxSamples);
     },
   });
   const ready = path.startsWith('embed.html?w=') ? oneWidget : (READY[path.split('?')[0]] ?? chapterReady);

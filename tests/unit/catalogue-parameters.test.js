@@ -50,11 +50,11 @@ describe('each uniform bound to its parameter', () => {
     const m = matchNdfWidths(12);
     const state = { lightTheta: 30, exposure: 1 };
     const cell = (key) => sphereCell({ key, p: m[key], cell: undefined }, state).uniforms;
-    expect(cell('ggx')).toMatchObject({ uAlpha: m.ggx.alpha });
+    expect(cell('ggx')).toMatchObject({ uAlphaPair: [m.ggx.alpha, m.ggx.alpha] });
     expect(cell('blinnPhong')).toMatchObject({ uExponent: m.blinnPhong.exponent });
     expect(cell('abc')).toMatchObject({ uA1: m.abc.a1, uA2: m.abc.a2 });
     expect(cell('sgd')).toMatchObject({
-      uAlpha: m.sgd.alpha,
+      uAlphaPair: [m.sgd.alpha, m.sgd.alpha],
       uSgdP: m.sgd.p,
       uSgdNorm: sgdNormalization(...clampSgd(m.sgd.alpha, m.sgd.p)),
     });
@@ -122,9 +122,10 @@ describe('the microfacet input', () => {
       [1e-4, 0, 1e-4, Math.PI],
     ]) {
       const m = microfacetInput(spherical(tl, pl), spherical(tv, pv), params.alpha);
-      for (const term of Object.values(CATALOGUE.ndf.terms))
+      // the anisotropic lobes have no function of the cosines (tests/unit/catalogue-anisotropic.test.js)
+      for (const term of Object.values(CATALOGUE.ndf.terms).filter((t) => t.evaluate))
         expect(termAt(term, m, params) / term.evaluate(m.nh, params, m.sin2h), term.key).toBeCloseTo(1, 12);
-      for (const term of Object.values(CATALOGUE.visibility.terms))
+      for (const term of Object.values(CATALOGUE.visibility.terms).filter((t) => t.evaluate))
         expect(termAt(term, m, params), term.key).toBeCloseTo(term.evaluate(m, params), 12);
     }
   });

@@ -26,9 +26,10 @@ describe('SLOTS', () => {
     expect(slot.inputs.length).toBeLessThanOrEqual(8); // what one texel pair carries
   });
   it('compares each with a term of the catalogue', () => {
-    for (const slot of Object.values(SLOTS))
+    for (const slot of Object.values(SLOTS).filter((s) => s.key !== 'DAniso'))
       expect(CATALOGUE[slot.family ?? 'diffuse'].terms).toHaveProperty(slot.reference);
-    expect(Object.keys(SLOTS)).toEqual(Object.keys(ISSUE_13));
+    // issue 28's anisotropic D, beside them: compared with src/math/anisotropic.js (custom-d-aniso.test.js)
+    expect(Object.keys(SLOTS).filter((k) => k !== 'DAniso')).toEqual(Object.keys(ISSUE_13));
     expect(() => slotOf('toString')).toThrow(/no slot/);
   });
   it('the V starter names its root r(x) = x (1 + 2Λ(x)), not Λ: Heitz 2014’s Λ in closed form, G1 = 1/(1 + Λ)', () => {

@@ -15,9 +15,9 @@ import { sceneOf } from '../../src/widgets/material-lab/model.js';
 import { sceneDefines } from '../../src/lab/lab-defines.js';
 
 const WIDGETS = [
-  { name: 'ndf-explorer', schema: ndf, menu: 'ndfs', codeKey: 'codeD', slot: 'D' },
-  { name: 'visibility-explorer', schema: visibility, menu: 'terms', codeKey: 'codeV', slot: 'V' },
-  { name: 'diffuse-explorer', schema: diffuse, menu: 'models', codeKey: 'codeDiffuse', slot: 'diffuse' },
+  { name: 'ndf-explorer', schema: ndf, menu: 'D', codeKey: 'codeD', slot: 'D' },
+  { name: 'visibility-explorer', schema: visibility, menu: 'V', codeKey: 'codeV', slot: 'V' },
+  { name: 'diffuse-explorer', schema: diffuse, menu: 'diffuse', codeKey: 'codeDiffuse', slot: 'diffuse' },
   { name: 'material-lab', schema: lab, menu: 'brdfSource', codeKey: 'codeBRDF', slot: 'brdf' },
 ];
 const CODE = 'float x; // a long line to make lz-string worth it '.repeat(40);

@@ -17,7 +17,7 @@ import { hemisphereIntegral } from '../../src/math/integrate.js';
 
 const ALL = ['lambert', 'fresnelWeighted', 'ashikhminShirley', 'orenNayar', 'orenNayarQualitative'];
 const state = (over = {}) => ({
-  models: ALL,
+  diffuse: ALL,
   sigma: 40,
   cdiff: 0.8,
   f0: 0.04,

@@ -107,8 +107,8 @@ describe('validator messages', () => {
 
   it('checks a colour field of the widget', async () => {
     const lambert = JSON.parse(readFileSync(join(DIR, 'lambert-brightness.json'), 'utf8'));
-    expect(await errorsOf({ ...lambert, state: { ...lambert.state, diffuse: 'white' } })).toEqual([
-      'state.diffuse: "white" is not a colour like "#rrggbb"',
+    expect(await errorsOf({ ...lambert, state: { ...lambert.state, cdiff: 'white' } })).toEqual([
+      'state.cdiff: "white" is not a colour like "#rrggbb"',
     ]);
   });
 

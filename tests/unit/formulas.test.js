@@ -186,9 +186,9 @@ describe('live formulas', () => {
       expect(tex, slot).not.toContain(name);
     }
     // the three explorers name theirs the same way
-    expect(texOf('ndf-explorer', { ndfs: ['custom'] })).toContain('D_{\\text{yours}}(\\nm ');
-    expect(texOf('visibility-explorer', { terms: ['custom'] })).toContain('V_{\\text{yours}}(\\nl, \\nv, \\alpha)');
-    expect(texOf('diffuse-explorer', { models: ['custom'] })).toContain('f_{\\text{yours}}(');
+    expect(texOf('ndf-explorer', { D: ['custom'] })).toContain('D_{\\text{yours}}(\\nm ');
+    expect(texOf('visibility-explorer', { V: ['custom'] })).toContain('V_{\\text{yours}}(\\nl, \\nv, \\alpha)');
+    expect(texOf('diffuse-explorer', { diffuse: ['custom'] })).toContain('f_{\\text{yours}}(');
   });
 
   it('brdf-lobe: a whole custom BRDF has no F·D·G/(4 (n·l)(n·v)) and no Lambert 1/π (the starter’s)', async () => {
@@ -239,8 +239,8 @@ describe('live formulas', () => {
     const c = Math.cos(t);
     const ggx = bisect((a) => (a * a) ** 2 / (a * a * c * c + 1 - c * c) ** 2); // D(t)/D(0), rising in α
     const beckmann = bisect((a) => Math.exp(-(1 - c * c) / (c * c * a * a)) / c ** 4);
-    shows(texOf('ndf-explorer', { hwhm: 10, ndfs: ['ggx'] }), ggx);
-    shows(texOf('ndf-explorer', { hwhm: 10, ndfs: ['beckmann'] }), beckmann);
+    shows(texOf('ndf-explorer', { hwhm: 10, D: ['ggx'] }), ggx);
+    shows(texOf('ndf-explorer', { hwhm: 10, D: ['beckmann'] }), beckmann);
   });
 
   it('media: Beer–Lambert T = exp(−σt d) for clean water at 10 m', async () => {
@@ -251,9 +251,9 @@ describe('live formulas', () => {
   });
 
   it('diffuse-explorer: Lambert’s c_diff/π, and Oren–Nayar’s A and B from σ in radians', () => {
-    shows(texOf('diffuse-explorer', { models: ['lambert'], cdiff: 0.6 }), 0.6 / Math.PI);
+    shows(texOf('diffuse-explorer', { diffuse: ['lambert'], cdiff: 0.6 }), 0.6 / Math.PI);
     const s2 = ((30 * Math.PI) / 180) ** 2;
-    const tex = texOf('diffuse-explorer', { models: ['orenNayarQualitative'], sigma: 30 });
+    const tex = texOf('diffuse-explorer', { diffuse: ['orenNayarQualitative'], sigma: 30 });
     shows(tex, 1 - (0.5 * s2) / (s2 + 0.33));
     shows(tex, (0.45 * s2) / (s2 + 0.09));
   });

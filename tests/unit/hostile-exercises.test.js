@@ -55,7 +55,7 @@ describe('an exercise file that names inherited properties', () => {
     const errors = await errorsOf({ ...worst, state: { ...worst.state, materials: [['water']] } });
     expect(errors).toEqual([
       'state.materials: ["water"] not among gold, silver, copper, iron, aluminum, water, ' +
-        'glass-low, plastic-high, glass-high, diamond, custom',
+        'glass-low, plastic-high, glass-high, diamond, manual',
     ]);
   });
 

@@ -27,11 +27,17 @@ function* scenes() {
       for (const area of ['representative', 'centre']) {
         const methods = { env, area, samples: 4 };
         for (const t of termSets) yield { terms: t, lights: lightsOf(on), methods };
+        // the anisotropic lobe (lab-anisotropy.js) with each visibility term, in both tangent fields
+        for (const mode of ['around', 'along'])
+          for (const V of Object.keys(LAB_TERMS.visibility))
+            yield { terms: { ...termSets[0], V }, lights: lightsOf(on), methods, anisotropy: anisotropic(mode) };
         yield { terms: termSets[0], lights: lightsOf(on), methods, measured: 'a MERL table' };
       }
     }
   }
 }
+
+const anisotropic = (mode) => ({ strength: 0.5, model: 'burley2012', alpha: [0.4, 0.1], field: { mode } });
 
 const UNIFORM = /^\s*uniform\s+(?:highp\s+|mediump\s+|lowp\s+)?\w+\s+(\w+)/gm;
 
@@ -64,5 +70,8 @@ describe('material lab programs', () => {
       }
     }
     expect(seen.size).toBeGreaterThan(100);
+    const stretched = [...seen.keys()].filter((key) => key.includes('"ANISOTROPIC"'));
+    expect(stretched.some((key) => key.includes('TANGENT_ALONG'))).toBe(true);
+    expect(stretched.some((key) => key.includes('REFERENCE'))).toBe(true);
   }, 60_000);
 });

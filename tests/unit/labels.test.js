@@ -22,8 +22,8 @@ describe('fitted (n, k) flag of the Fresnel curves', () => {
     });
     expect(measuredSource('gold')).toBeTruthy();
   });
-  it('leaves dielectrics and a custom n unflagged', () => {
-    const specs = curveSpecs({ materials: ['water', 'custom'], conductor: 'f0-tint', ior: 1.5 });
+  it('leaves dielectrics and an n set by hand unflagged', () => {
+    const specs = curveSpecs({ materials: ['water', 'manual'], conductor: 'f0-tint', ior: 1.5 });
     expect(specs.map((s) => Boolean(s.fitted))).toEqual([false, false]);
   });
 });

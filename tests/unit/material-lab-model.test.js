@@ -12,14 +12,14 @@ const OLD_DIFFUSE = ['fresnel-weighted', 'ashikhmin-shirley', 'oren-nayar', 'ore
 describe('material lab: schema and model', () => {
   it('reads every old diffuse spelling as the catalogue key TERM_ALIASES names, without a notice', () => {
     for (const old of OLD_DIFFUSE) {
-      const { state, notices } = coerceState(schema, { diffuseModel: old });
-      expect(state.diffuseModel).toBe(TERM_ALIASES.diffuse[old]);
-      expect(CATALOGUE.diffuse.terms[state.diffuseModel].key).toBe(state.diffuseModel);
+      const { state, notices } = coerceState(schema, { diffuse: old });
+      expect(state.diffuse).toBe(TERM_ALIASES.diffuse[old]);
+      expect(CATALOGUE.diffuse.terms[state.diffuse].key).toBe(state.diffuse);
       expect(notices).toEqual([]);
     }
   });
   it('gives each program one define of each term family, the catalogue entry’s (no silent GGX default)', () => {
-    const state = { ...defaultState(schema), diffuseModel: 'orenNayar', ndf: 'beckmann', visibility: 'kelemen' };
+    const state = { ...defaultState(schema), diffuse: 'orenNayar', D: 'beckmann', V: 'kelemen' };
     const { scene } = sceneOf(state, null, 'studio');
     for (const reference of [false, true]) {
       const defines = sceneDefines(scene, reference);

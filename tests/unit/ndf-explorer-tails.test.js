@@ -22,7 +22,7 @@ const D = {
 function longestByNdf(state) {
   const params = matchNdfWidths(state.hwhm, state);
   const c = Math.cos((60 * Math.PI) / 180);
-  const ratios = state.ndfs.map((key) => [key, D[key](c, params[key]) / D[key](1, params[key])]);
+  const ratios = state.D.map((key) => [key, D[key](c, params[key]) / D[key](1, params[key])]);
   return ratios.reduce((best, r) => (r[1] > best[1] ? r : best));
 }
 
@@ -33,7 +33,7 @@ describe('the longest tail, said under the log plot', () => {
     { hwhm: 40 },
     { hwhm: 8, abcA2: 0.5 },
     { hwhm: 20, sgdP: 1.9 },
-    { hwhm: 8, ndfs: ['beckmann', 'blinnPhong', 'sgd'] },
+    { hwhm: 8, D: ['beckmann', 'blinnPhong', 'sgd'] },
   ];
   for (const change of cases) {
     it(`is the NDF src/math/ndf.js gives the largest D(60°)/D(0) at ${JSON.stringify(change)}`, () => {

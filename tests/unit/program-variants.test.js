@@ -65,7 +65,8 @@ function labScenes() {
 describe('every variant of every program assembles, and declares only the uniforms its host feeds', () => {
   it('brdf-sphere.frag.glsl: every sphere-grid and furnace variant; uniforms ⊆ the sphere grid’s', () => {
     const variants = sphereVariants();
-    expect(variants.length).toBe(2 * 5 * 8 + 5 + 5 + 3);
+    // 2 F × 7 D (5 isotropic, 2 anisotropic) × 9 V (8 and 1), the diffuse terms alone and added, the furnaces
+    expect(variants.length).toBe(2 * 7 * 9 + 5 + 5 + 3);
     for (const defines of variants) {
       const source = sphereFragment(defines); // as the grid assembles it: the impostor's
       for (const u of declaredUniforms(source)) expect(SPHERE_UNIFORMS, JSON.stringify(defines)).toContain(u);

@@ -1,7 +1,8 @@
 // @ts-check
 // Where the live checks evaluate a slot's code: the parity grid of its family (stress inputs included: cos = 0,
 // 1e-7, 1, just above 1, below the horizon, α down to 1e-4), the quadrature nodes of the integrals (D's
-// normalisation, a BRDF's white furnace), the swapped pairs of reciprocity and the points of the plotted curve.
+// normalisation, over the 2-D hemisphere for the anisotropic D, whose nodes also give Heitz's weak furnace; a
+// BRDF's white furnace), the swapped pairs of reciprocity and the points of the plotted curve.
 // Pure: one list of inputs for one GPU evaluation, and where each check's part of it starts.
 import { GRIDS } from '../gpu/parity-cases.js';
 import { ALPHA } from '../../math/catalogue/term.js';
@@ -24,6 +25,30 @@ const NORMALISATION_RULE = { nodes: 32, panels: 8 };
  */
 export const FURNACE_VIEWS_DEG = [0, 30, 60, 80, 89];
 const FURNACE_RULE = { cosNodes: 32, azimuths: 64 };
+/**
+ * The anisotropic D's (αx, αy): round, stretched along t and along b, and past α = 1 on one axis (the anisotropic
+ * forms take up to ALPHA_ANISO_MAX). At least 0.05: h is float32, and its rounding moves a sharper peak's integral.
+ */
+export const ANISOTROPIC_PAIRS = [
+  [0.1, 0.1],
+  [0.05, 0.5],
+  [0.3, 0.1],
+  [1, 0.3],
+  [2, 0.2],
+];
+/**
+ * The 2-D rule over h (slope space): u = 1 - (1 - t)² in panels of Gauss–Legendre in t, evenly spaced azimuths.
+ * For GGX and Beckmann the normalisation comes out within 1e-14 and the weak furnace within 1e-3 (unit test).
+ */
+const ANISOTROPIC_RULE = { nodes: 16, panels: 4, azimuths: 32 };
+/** The views of the weak furnace, [θv, φv] in degrees: n, then three elevations at three azimuths from t. */
+export const WEAK_FURNACE_VIEWS_DEG = [[0, 0], ...[40, 70, 85].flatMap((t) => [0, 60, 90].map((p) => [t, p]))];
+/** The anisotropic D's stress directions: h from n to below the horizon, along t, along b and between. */
+const H_THETAS = [0, 1e-3, 0.2, 0.6, 1, 1.4, 1.55, Math.PI / 2, 1.9];
+const H_PHIS = [0, Math.PI / 4, Math.PI / 2, 2, Math.PI, 4.5];
+/** The curve of the anisotropic D: along t, at this pair. */
+const ANISOTROPIC_CURVE_PAIR = [0.3, 0.1];
+
 /** The angles of the direction pairs: GRIDS.theta (n to grazing) and one below the horizon. */
 const PAIR_THETAS = [...GRIDS.theta, 1.9];
 const PAIR_PHIS = [0, 1, Math.PI / 2, 3, Math.PI];
@@ -54,6 +79,17 @@ const pairInput = (key, l, v, cdiff, alpha) => (key === 'diffuse' ? [cdiff, ...l
  */
 export function stressInputs(key) {
   if (key === 'D') return cartesian(GRIDS.cos, CHECK_ALPHAS);
+  if (key === 'DAniso') {
+    const pairs = [
+      ...CHECK_ALPHAS.map((a) => [a, a]),
+      [1e-4, 1],
+      [1, 1e-4],
+      [0.01, 0.5],
+      [4, 0.1],
+      ...ANISOTROPIC_PAIRS,
+    ];
+    return cartesian(H_THETAS, H_PHIS).flatMap(([t, p]) => pairs.map((pair) => [...direction(t, p), ...pair]));
+  }
   if (key === 'V') return cartesian(GRIDS.cosCoarse, GRIDS.cosCoarse, CHECK_ALPHAS);
   if (key === 'F') return cartesian(GRIDS.f0, GRIDS.cos).map(([f0, lh]) => [f0, 0.5 * f0, 1 - f0, lh]);
   if (key === 'diffuse')
@@ -87,6 +123,38 @@ export function normalisationNodes(alpha) {
 }
 
 /**
+ * The anisotropic D's normalisation ∫ D(h)(n·h) dω = ∫ D hz⁴ d²s over the slopes s = (hx, hy)/hz (dω = hz³ d²s),
+ * with s = (αx r cos φ, αy r sin φ) and r² = u/(1 − u): a GGX D is then flat in (u, φ), and u = 1 − (1 − t)²
+ * leaves the weak furnace's tail, which grows as 1/√(1 − u) towards the horizon, smooth in t. Nodes h, weights w
+ * with Σ w D(h) = ∫ D(h)(n·h) dω; w / hz weighs D alone (the weak furnace).
+ * @param {number[]} pair [αx, αy]
+ * @returns {{ h: number[], weight: number }[]}
+ */
+export function anisotropicNormalisationNodes([ax, ay]) {
+  const { nodes: n, panels, azimuths } = ANISOTROPIC_RULE;
+  const { x, w } = gaussLegendre(n);
+  const dPhi = (2 * Math.PI) / azimuths;
+  const out = [];
+  for (let p = 0; p < panels; p++) {
+    for (let i = 0; i < n; i++) {
+      const t = (p + (1 + x[i]) / 2) / panels;
+      const u = 1 - (1 - t) ** 2;
+      const r = Math.sqrt(u / (1 - u));
+      // dt → du → r dr: w/(2 panels) · 2(1 − t) · 1/(2 (1 − u)²), times αx αy hz⁴ below
+      const radial = (w[i] / (2 * panels)) * ((1 - t) / (1 - u) ** 2);
+      for (let k = 0; k < azimuths; k++) {
+        const phi = (k + 0.5) * dPhi;
+        const [sx, sy] = [ax * r * Math.cos(phi), ay * r * Math.sin(phi)];
+        const len = Math.hypot(sx, sy, 1);
+        const hz = 1 / len;
+        out.push({ h: [sx * hz, sy * hz, hz], weight: radial * dPhi * ax * ay * hz ** 4 });
+      }
+    }
+  }
+  return out;
+}
+
+/**
  * The white furnace at view angle θv: albedo(v) = ∫ f(l, v)(n·l) dω_l, as nodes l with weights (n·l included).
  * @param {number} thetaV radians
  * @returns {{ l: number[], v: number[], weight: number }[]}
@@ -113,6 +181,15 @@ export function furnaceNodes(thetaV) {
  */
 export function curveInputs(key) {
   const { alpha, cdiff, f0, lightDeg } = CURVE_AT;
+  if (key === 'DAniso') {
+    const x = Array.from({ length: 91 }, (_, i) => i);
+    const [ax, ay] = ANISOTROPIC_CURVE_PAIR;
+    return {
+      x,
+      xLabel: `θh (°) along t, (αx, αy) = (${ax}, ${ay})`,
+      inputs: x.map((d) => [...direction(d * DEG, 0), ax, ay]),
+    };
+  }
   if (key === 'D' || key === 'V' || key === 'F') {
     const x = Array.from({ length: 91 }, (_, i) => i);
     const c = (/** @type {number} */ deg) => Math.cos(deg * DEG);
@@ -151,7 +228,13 @@ export function checkPlan(slotKey) {
           const nodes = normalisationNodes(alpha);
           return { alpha, weights: nodes.map((n) => n.weight), ...part(nodes.map((n) => [n.nh, alpha])) };
         })
-      : null;
+      : key === 'DAniso'
+        ? ANISOTROPIC_PAIRS.map((alpha) => {
+            const nodes = anisotropicNormalisationNodes(alpha);
+            const [weights, directions] = [nodes.map((n) => n.weight), nodes.map((n) => n.h)];
+            return { alpha, weights, directions, ...part(nodes.map((n) => [...n.h, ...alpha])) };
+          })
+        : null;
   const pairs = directionPairs();
   const swapped = (/** @type {number} */ c, /** @type {number} */ a) => [
     ...pairs.map(([l, v]) => pairInput(key, l, v, c, a)),

@@ -6,6 +6,8 @@
 import { TOLERANCE } from '../gpu/parity-cases.js';
 import { referenceFunction, referenceOptions } from './references.js';
 import { slotOf } from './slots.js';
+import { WEAK_FURNACE_VIEWS_DEG } from './check-inputs.js';
+import { smithG1BeckmannAniso, smithG1GGXAniso } from '../../math/anisotropic.js';
 
 /** G may pass 1 by float32's rounding of a correct V, not more. */
 export const G_ALLOWANCE = 1e-5;
@@ -91,6 +93,43 @@ export function normalisationReport(parts, values) {
   return { worst, byAlpha, alphaMin: parts[0].alpha };
 }
 
+/** Smith's G1 of the Λ a reference anisotropic D is paired with (the weak furnace holds only when they agree). */
+const G1_OF_REFERENCE = { ggxAniso: smithG1GGXAniso, beckmannAniso: smithG1BeckmannAniso };
+export const LAMBDA_LABELS = { ggxAniso: 'GGX’s Λ', beckmannAniso: 'Beckmann’s Λ' };
+
+/**
+ * Heitz's (2014) weak white furnace of an anisotropic D with the Λ of the reference `key`: at each view v of
+ * WEAK_FURNACE_VIEWS_DEG, G1(v) ∫ D(h) ⟨v·h⟩ dω_h / (n·v), which is 1 for every v when D and Λ agree, over the
+ * normalisation's nodes (a node's weight over hz weighs D alone). `worst` is the value farthest from 1.
+ * @param {{ alpha: number[], weights: number[], directions: number[][], start: number }[]} parts the anisotropic
+ *   D's normalisation parts (check-inputs.js)
+ * @param {Float32Array} values @param {string} key
+ */
+export function weakFurnaceReport(parts, values, key) {
+  const g1 = G1_OF_REFERENCE[/** @type {keyof typeof G1_OF_REFERENCE} */ (key)] ?? smithG1GGXAniso;
+  const views = WEAK_FURNACE_VIEWS_DEG.map(([t, p]) => [t, p, ...direction(t * DEG, p * DEG)]);
+  const byView = parts.flatMap(({ alpha, weights, directions, start }) =>
+    views.map(([thetaV, phiV, vx, vy, vz]) => {
+      const projected = weights.reduce((sum, w, i) => {
+        const [hx, hy, hz] = directions[i];
+        return sum + ((w * values[(start + i) * 4]) / hz) * Math.max(vx * hx + vy * hy + vz * hz, 0);
+      }, 0);
+      return { alpha, thetaV, phiV, value: (g1(vx, vy, vz, alpha[0], alpha[1]) * projected) / vz };
+    }),
+  );
+  const worst = byView.reduce((a, b) => (Math.abs(b.value - 1) > Math.abs(a.value - 1) ? b : a));
+  return {
+    worst: worst.value,
+    at: worst,
+    byView,
+    lambda: LAMBDA_LABELS[/** @type {keyof typeof LAMBDA_LABELS} */ (key)],
+  };
+}
+
+const DEG = Math.PI / 180;
+/** @param {number} theta @param {number} phi */
+const direction = (theta, phi) => [Math.sin(theta) * Math.cos(phi), Math.sin(theta) * Math.sin(phi), Math.cos(theta)];
+
 /**
  * G = V (n·l)(n·v) over V's stress grid: its range, and how many values leave [0, 1] (or are not finite).
  * @param {import('./slots.js').Slot} slot @param {number[][]} inputs @param {Float32Array} values @param {number} at
@@ -164,6 +203,15 @@ export function checkReport(plan, values, reference) {
     nonFinite: nonFiniteReport(slot, stress, values, plan.stress.start),
     ...(plan.normalisation ? { normalisation: normalisationReport(plan.normalisation, values) } : {}),
     ...(slot.key === 'V' ? { gRange: gRangeReport(slot, stress, values, plan.stress.start) } : {}),
+    ...(slot.key === 'DAniso' && plan.normalisation
+      ? {
+          weakFurnace: weakFurnaceReport(
+            /** @type {Parameters<typeof weakFurnaceReport>[0]} */ (plan.normalisation),
+            values,
+            key,
+          ),
+        }
+      : {}),
     ...(plan.reciprocity
       ? { reciprocity: reciprocityReport(slot, slice(plan.reciprocity), values, plan.reciprocity.start) }
       : {}),

@@ -6,6 +6,7 @@
 // radians for Oren–Nayar, F0 = 0.04), a whole BRDF by l and v (the diffuse terms at c_diff = 1, σ = 0.3, F0 = 0.04).
 import { CATALOGUE } from '../../math/catalogue/index.js';
 import { blinnPhongExponentFromBeckmannAlpha } from '../../math/ndf.js';
+import { ndfBeckmannAniso, ndfGGXAniso } from '../../math/anisotropic.js';
 import { slotOf } from './slots.js';
 
 /** @typedef {(input: number[]) => number[]} ReferenceFunction  one input of the slot (float32-rounded) → 1 or 3 */
@@ -40,6 +41,10 @@ const BY_SLOT = {
       evaluator(NDF.blinnPhong)(nh, { exponent: blinnPhongExponentFromBeckmannAlpha(alpha) }),
     ],
   },
+  DAniso: {
+    ggxAniso: ([hx, hy, hz, ax, ay]) => [ndfGGXAniso(hx, hy, hz, ax, ay)],
+    beckmannAniso: ([hx, hy, hz, ax, ay]) => [ndfBeckmannAniso(hx, hy, hz, ax, ay)],
+  },
   V: Object.fromEntries(
     Object.values(CATALOGUE.visibility.terms)
       .filter((t) => t.args.every((a) => ['nl', 'nv', 'alpha'].includes(a)))
@@ -71,6 +76,9 @@ const BY_SLOT = {
   ),
 };
 
+/** The anisotropic NDFs of src/math/anisotropic.js (not yet catalogue entries), with the Λ each is paired with. */
+const ANISOTROPIC_NDF_LABELS = { ggxAniso: 'GGX, anisotropic', beckmannAniso: 'Beckmann, anisotropic' };
+
 const FAMILY_LABEL = { brdf: ' (c_diff = 1, σ = 0.3, F0 = 0.04)', diffuse: ' (σ = α, F0 = 0.04)' };
 
 /**
@@ -80,6 +88,7 @@ const FAMILY_LABEL = { brdf: ' (c_diff = 1, σ = 0.3, F0 = 0.04)', diffuse: ' (�
  */
 export function referenceOptions(slotKey) {
   const slot = slotOf(slotKey);
+  if (slot.key === 'DAniso') return ANISOTROPIC_NDF_LABELS;
   const family = CATALOGUE[slot.family ?? 'diffuse'];
   const suffix = /** @type {Record<string, string>} */ (FAMILY_LABEL)[slot.key] ?? '';
   return Object.fromEntries(Object.keys(BY_SLOT[slot.key]).map((key) => [key, family.terms[key].label + suffix]));

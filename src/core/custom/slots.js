@@ -7,12 +7,13 @@
 // slots that stand in a family's menu are the catalogue's (src/math/catalogue/custom-terms.js).
 import { CUSTOM_TERMS } from '../../math/catalogue/index.js';
 import { PARAMETERS } from '../../math/catalogue/parameters.js';
+import { ALPHA_ANISO_MAX } from '../../math/anisotropic.js';
 
 /**
  * One argument of a slot's GLSL function.
  * @typedef {object} SlotArg
  * @property {string} name as the signature spells it
- * @property {'float' | 'vec3'} type
+ * @property {'float' | 'vec2' | 'vec3'} type
  * @property {number} min the documented domain (a direction's components: -1…1)
  * @property {number} max
  * @property {string} unit '' for a pure number
@@ -21,14 +22,15 @@ import { PARAMETERS } from '../../math/catalogue/parameters.js';
 
 /**
  * @typedef {object} Slot
- * @property {'D' | 'V' | 'F' | 'diffuse' | 'brdf'} key
+ * @property {'D' | 'DAniso' | 'V' | 'F' | 'diffuse' | 'brdf'} key
  * @property {string} fn the GLSL function the user writes
  * @property {string} signature its declaration
  * @property {'float' | 'vec3'} returns
  * @property {SlotArg[]} args
  * @property {'ndf' | 'visibility' | 'fresnel' | 'diffuse' | null} family the catalogue family it stands beside
- * @property {string} reference the catalogue key (of `family`, or of the diffuse family for 'brdf') the checks
- *   compare with by default
+ *   (null: none, for a whole BRDF and for the anisotropic D, whose references are src/math/anisotropic.js's)
+ * @property {string} reference the catalogue key (of `family`, or of the diffuse family for 'brdf'; for 'DAniso' a
+ *   key of references.js's anisotropic NDFs) the checks compare with by default
  * @property {string} starter GLSL text, a correct term
  * @property {string} call the expression the widgets and the term dispatch use: for D and V over the fields of the
  *   microfacet input m (shaders/microfacet-input.glsl), the user's signature unchanged
@@ -61,6 +63,18 @@ float customD(float nh, float alpha) {
   float d = a * a * c * c + (1.0 - c) * (1.0 + c);
   float t = a / d; // a² / d² overflows float32 sooner
   return t * t / PI;
+}
+`;
+
+const STARTER_D_ANISO = `// Anisotropic GGX (Heitz 2014), in 1/sr, h in the tangent frame (x = t, y = b, z = n):
+// D(h) = 1 / (π αx αy (hx²/αx² + hy²/αy² + hz²)²). Every part of the sum is positive: nothing cancels,
+// and sin²θ never comes from 1 - hz², so the peak of a small α stays sharp in float32.
+float customDAniso(vec3 h, vec2 alpha) {
+  if (!(h.z > 0.0)) return 0.0;
+  vec2 a = clamp(alpha, 1e-4, 4.0);
+  vec2 s = h.xy / a;
+  float d = dot(s, s) + h.z * h.z;
+  return 1.0 / (PI * a.x * a.y * d * d);
 }
 `;
 
@@ -119,6 +133,23 @@ export const SLOTS = {
     call: catalogueCall('ndf'),
     inputs: ['nh', 'alpha'],
     evalCall: 'customD(a.x, a.y)',
+    outputs: 1,
+  },
+  DAniso: {
+    key: 'DAniso',
+    fn: 'customDAniso',
+    signature: 'float customDAniso(vec3 h, vec2 alpha)',
+    returns: 'float',
+    args: [
+      dirArg('h', 'h'),
+      { name: 'alpha', type: 'vec2', min: ALPHA.min, max: ALPHA_ANISO_MAX, unit: '', label: '(αx, αy)' },
+    ],
+    family: null, // no menu of the catalogue offers an anisotropic D yet
+    reference: 'ggxAniso',
+    starter: STARTER_D_ANISO,
+    call: 'customDAniso(m.h, m.alpha)',
+    inputs: ['hx', 'hy', 'hz', 'alphaX', 'alphaY'],
+    evalCall: 'customDAniso(a.xyz, vec2(a.w, b.x))',
     outputs: 1,
   },
   V: {

@@ -16,7 +16,7 @@
 // `query` is the state as embed URL parameters (only what differs from the defaults). Messages are taken only
 // from the parent window and from an allowed origin; anything else, or of another shape, is ignored. Replies
 // go to the origin that asked, never to '*'.
-import { stateToParams } from './state.js';
+import { fieldOf, stateToParams } from './state.js';
 import { STATE_NOTICES } from './notice.js';
 
 export const MESSAGE_PREFIX = 'shading-lab:';
@@ -75,7 +75,7 @@ function unknownKeysNotice(schema, unknown) {
 
 /** The notice for the keys of `partial` that are no setting of the widget (ignored), or none. */
 export function unknownKeys(schema, partial) {
-  const unknown = Object.keys(partial).filter((k) => !Object.hasOwn(schema, k));
+  const unknown = Object.keys(partial).filter((k) => !Object.hasOwn(schema, fieldOf(schema, k, partial[k])));
   return unknown.length ? [unknownKeysNotice(schema, unknown)] : [];
 }
 

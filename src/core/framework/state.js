@@ -11,6 +11,9 @@
 // and its sliders' values (`params`).
 // An enum or set field's `aliases` are old spellings of its options: each is read as its option, silently, so
 // an old link keeps working; the state (and so every URL written from it) holds the option's own key.
+// A field's `formerly` are its old names, read the same way by currentNames, the one place they are known. A name
+// may be both a field and the old name of another (the lab's `diffuse` was the colour, is now the term): the value
+// decides, as the field that takes it without a notice.
 
 import { DECIMAL, MAX_PARAMS, decodeCode, encodeCode } from '../custom/code-state.js';
 
@@ -215,7 +218,47 @@ function coerceField(key, f, raw, fallback) {
 }
 
 /**
- * Applies `input` (partial, strings or typed) on top of `base`.
+ * The fields a name in an input may stand for: itself, if a field, then the fields that formerly had the name.
+ * @param {Schema} schema
+ * @param {string} name
+ */
+const fieldsNamed = (schema, name) => [
+  ...(Object.hasOwn(schema, name) ? [name] : []),
+  ...Object.keys(schema).filter((k) => schema[k].formerly?.includes(name)),
+];
+
+/**
+ * The field a name in an input stands for, given its value (a name both a field and a former name: the field that
+ * takes the value without a notice; without a value, the field of that name); a name of no field is itself.
+ * @param {Schema} schema
+ * @param {string} name
+ * @param {unknown} [raw]
+ */
+export function fieldOf(schema, name, raw) {
+  const fields = fieldsNamed(schema, name);
+  if (fields.length < 2) return fields[0] ?? name;
+  return fields.find((k) => !coerceField(k, schema[k], raw, schema[k].default).notice) ?? fields[0];
+}
+
+/**
+ * `input` with every key under its field's current name (a field's `formerly`); other keys as they are. Where an
+ * old name and the current one are both given, the current one wins.
+ * @param {Schema} schema
+ * @param {Partial<Record<string, unknown>> | null} [input]
+ * @returns {Record<string, unknown>}
+ */
+export function currentNames(schema, input) {
+  const old = new Map();
+  const current = new Map(); // Maps, not objects: a key named __proto__ stays a key like any other
+  for (const [name, raw] of Object.entries(input ?? {})) {
+    const field = fieldOf(schema, name, raw);
+    (field === name ? current : old).set(field, raw);
+  }
+  return Object.fromEntries([...old, ...current]);
+}
+
+/**
+ * Applies `input` (partial, strings or typed, old field names read as their fields) on top of `base`.
  * @param {Schema} schema
  * @param {Partial<Record<string, unknown>> | null} [input]
  * @param {State} [base]
@@ -224,7 +267,7 @@ function coerceField(key, f, raw, fallback) {
 export function coerceState(schema, input, base = defaultState(schema)) {
   const state = { ...base };
   const notices = [];
-  for (const [key, raw] of Object.entries(input ?? {})) {
+  for (const [key, raw] of Object.entries(currentNames(schema, input))) {
     if (!Object.hasOwn(schema, key) || raw === undefined) continue;
     const { value, notice } = coerceField(key, schema[key], raw, base[key]);
     state[key] = value;

@@ -64,6 +64,7 @@
  * @property {boolean} [closed]  on a group's first field: its folder starts closed (a long panel stays short)
  * @property {string} [hint]  the control's tooltip
  * @property {string} [unit]  shown after the label (a number's unit)
+ * @property {string[]} [formerly]  the field's old names: read as this field (old links work), never written
  */
 
 /** @typedef {NumberField | EnumField | SetField | BoolField | ColorField | SamplesField | TextField} FieldKind */

@@ -2,7 +2,7 @@
 // Mounts a widget by name and keeps its state in the page URL (optionally under a prefix, so several
 // widgets can share one page), and exposes it for tests and parent pages. The widgets come from the registry
 // the page hands in (src/widgets/registry.js): the framework itself imports no widget.
-import { stateToParams } from './state.js';
+import { currentNames, stateToParams } from './state.js';
 import { cancelLater, later, registerWidget } from './debug-hooks.js';
 
 /** @typedef {import('./types.js').WidgetRegistry} WidgetRegistry */
@@ -87,7 +87,10 @@ export async function mountWidget(
   if (syncUrl) container.dataset.stateInUrl = prefix;
   /** @type {number | undefined} */
   let timer;
-  const instance = widget.create(container, state ?? { ...initialState, ...widgetParams(location.search, prefix) }, {
+  // old names under current ones before the two merge: a link's old key still overrides the page's current one
+  const named = (/** @type {Partial<Record<string, unknown>>} */ input) => currentNames(widget.schema, input);
+  const first = state ?? { ...named(initialState), ...named(widgetParams(location.search, prefix)) };
+  const instance = widget.create(container, first, {
     ...options,
     locked,
     onStateChange(next) {

@@ -1,7 +1,7 @@
 // @ts-check
 // The common frame of every widget: its root element, notice area, a view and a control column, and the
 // one state object, validated on every way in (initial state, update(), GUI).
-import { coerceState, defaultState } from './state.js';
+import { coerceState, currentNames, defaultState, fieldOf } from './state.js';
 import { STATE_NOTICES, createNoticeArea } from './notice.js';
 import { createStateGui } from './gui.js';
 import { createLiveRegion, describeCanvas } from './describe.js';
@@ -30,7 +30,8 @@ export function createWidgetShell(
   container,
   { name, schema, initialState, locked: lockedKeys = [], about, terms = [] },
 ) {
-  const locked = lockedKeys.filter((k) => Object.hasOwn(schema, k));
+  // a locked old name goes where its value in the initial state went (the lab's old `diffuse`, a colour: cdiff)
+  const locked = lockedKeys.map((k) => fieldOf(schema, k, initialState?.[k])).filter((k) => Object.hasOwn(schema, k));
   const root = document.createElement('section');
   root.className = `widget widget-${name}`;
   root.dataset.widget = name;
@@ -69,7 +70,7 @@ export function createWidgetShell(
    * @param {Partial<Record<string, unknown>> | undefined} partial
    */
   const apply = (partial) => {
-    const free = Object.fromEntries(Object.entries(partial ?? {}).filter(([k]) => !locked.includes(k)));
+    const free = Object.fromEntries(Object.entries(currentNames(schema, partial)).filter(([k]) => !locked.includes(k)));
     const next = coerceState(schema, free, state);
     if (next.notices.length) reportNotices(root, notices, next.notices);
     const changed = Object.keys(schema).filter((k) => JSON.stringify(next.state[k]) !== JSON.stringify(state[k]));

@@ -9,6 +9,7 @@ import { merlCoordinates } from '../../math/merl-coordinates.js';
 import { buildAlbedoTableGGX, albedoLossTableGGX } from '../../math/albedo-table.js';
 import { ANISOTROPIC_PARITY_CASES } from './parity-cases/anisotropic.js';
 import { F82_TINT_PARITY_CASES } from './parity-cases/f82-tint.js';
+import { OPENPBR_PARITY_CASES } from './parity-cases/openpbr.js';
 
 let albedoTable = null; // built on first use (~0.5 s)
 const albedoTableOnce = () => (albedoTable ??= buildAlbedoTableGGX());
@@ -579,5 +580,6 @@ export const PARITY_CASES = [
   ...termParityCases(CATALOGUE),
   ...ANISOTROPIC_PARITY_CASES,
   ...F82_TINT_PARITY_CASES,
+  ...OPENPBR_PARITY_CASES,
   ...dispatchParityCases(CATALOGUE, termAngles, FAMILY_RANGE),
 ];

@@ -11,9 +11,9 @@ import { TOLERANCE } from './parity-cases.js';
 
 const WIDTH = 256;
 
-/** A square RGBA float table ({ size, data }) as a texture the shader reads with texelFetch. */
-function tableTexture({ size, data }) {
-  const t = new THREE.DataTexture(data, size, size, THREE.RGBAFormat, THREE.FloatType);
+/** An RGBA float table ({ size, data } square, or { width, height, data }) as a texture read with texelFetch. */
+function tableTexture({ size, width = size, height = size, data }) {
+  const t = new THREE.DataTexture(data, width, height, THREE.RGBAFormat, THREE.FloatType);
   t.needsUpdate = true;
   return t;
 }

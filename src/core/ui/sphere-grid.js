@@ -24,7 +24,8 @@ const UNIFORM_DEFAULTS = {
   uLightDir: [0, 0, 1],
   uLightIntensity: 1,
   uExposure: 1,
-  uAlpha: ALPHA_DEFAULT,
+  uAlphaPair: [ALPHA_DEFAULT, ALPHA_DEFAULT], // the microfacet input's (αx, αy): a cell gives it by sharedUniforms
+  uTangent: [1, 0, 0], // the view-space axis the tangent runs along: across the picture
   ...termUniformDefaults({ alpha: ALPHA_DEFAULT }),
   uF0: 1,
   uDiffuse: 0.5,
@@ -55,7 +56,7 @@ const sphereMaterial = (defines, own) =>
     uniforms: Object.fromEntries(
       Object.entries({ ...own?.uniforms, ...UNIFORM_DEFAULTS }).map(([k, v]) => [
         k,
-        { value: Array.isArray(v) ? new THREE.Vector3(...v) : v },
+        { value: Array.isArray(v) ? new (v.length === 2 ? THREE.Vector2 : THREE.Vector3)(...v) : v },
       ]),
     ),
   });

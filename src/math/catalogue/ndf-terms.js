@@ -11,6 +11,7 @@ import {
   clampSgd,
   sgdNormalization,
 } from '../ndf.js';
+import { ndfBeckmannAniso, ndfGGXAniso } from '../anisotropic.js';
 import { ALPHA as alpha, terms } from './term.js';
 
 /** @param {number} c */
@@ -128,6 +129,29 @@ export const NDF_FAMILY = {
           default: 0.64,
         },
       },
+    },
+    // the anisotropic lobes read the whole input (h in the tangent frame, the α pair): no curve of n·h alone
+    ggxAniso: {
+      label: 'GGX, anisotropic',
+      short: 'GGX aniso.',
+      cite: 'Heitz 2014; Burley 2012',
+      js: ndfGGXAniso,
+      evaluate: null,
+      glsl: 'ndfGGXAniso',
+      chunk: 'anisotropic.glsl',
+      args: ['hx', 'hy', 'hz', 'alphaX', 'alphaY'],
+      params: {}, // αx, αy: the input's fields, over the shared parameters' ranges
+    },
+    beckmannAniso: {
+      label: 'Beckmann, anisotropic',
+      short: 'Beckmann aniso.',
+      cite: 'Heitz 2014',
+      js: ndfBeckmannAniso,
+      evaluate: null,
+      glsl: 'ndfBeckmannAniso',
+      chunk: 'anisotropic.glsl',
+      args: ['hx', 'hy', 'hz', 'alphaX', 'alphaY'],
+      params: {}, // αx, αy: the input's fields, over the shared parameters' ranges
     },
   }),
 };

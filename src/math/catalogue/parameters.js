@@ -16,12 +16,28 @@ const ALPHA_RANGE = {
   delicate: [1e-5, 1e-3, 0.01, 0.1, 0.3, 0.5],
 };
 
+/**
+ * Largest roughness per axis the anisotropic functions take (src/math/anisotropic.js clamps each of αx, αy to
+ * [α's min, this]): Burley's mapping reaches α/√0.1 ≈ 3.2 α and OpenPBR's √2 α.
+ */
+export const ALPHA_ANISO_MAX = 4;
+
 /** @type {Record<string, TermParam>} */
 export const PARAMETERS = {
   alpha: { ...ALPHA_RANGE, label: 'Roughness α', uniform: 'uAlpha' },
   // an anisotropic lobe's roughness along the tangent t and the bitangent b: the microfacet input's α pair
   alphaX: { ...ALPHA_RANGE, label: 'Roughness along the tangent αx' },
   alphaY: { ...ALPHA_RANGE, label: 'Roughness along the bitangent αy' },
+  // the pair itself, as the hosts' programs read it (the microfacet input's alpha; isotropic terms read αx)
+  alphaPair: {
+    ...ALPHA_RANGE,
+    max: ALPHA_ANISO_MAX,
+    kind: 'vec2',
+    label: 'Roughness pair (αx, αy)',
+    uniform: 'uAlphaPair',
+  },
+  // the strength a of an anisotropic model (anisotropicAlphas maps α and a to the pair; the bent reflection reads a)
+  anisotropy: { min: 0, max: 1, unit: '', label: 'Anisotropy a', clamped: true, uniform: 'uAnisotropy' },
   // the reflectance at normal incidence: Schlick's F0, the diffuse terms' and the compensations'
   f0: {
     min: 0,

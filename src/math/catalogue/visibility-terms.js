@@ -11,6 +11,7 @@ import {
   visibilitySmithGGXCorrelatedFast,
   visibilitySmithGGXSeparable,
 } from '../visibility.js';
+import { visibilitySmithGGXCorrelatedAniso } from '../anisotropic.js';
 import { ALPHA as alpha } from './term.js';
 
 /**
@@ -151,5 +152,19 @@ export const VISIBILITY_FAMILY = {
       'visibilitySmithBeckmannSeparable',
       { measuredFit: true },
     ),
+    // Λ with the roughness projected on each direction's azimuth: reads l and v in the tangent frame
+    smithGGXCorrelatedAniso: {
+      key: 'smithGGXCorrelatedAniso',
+      label: 'Smith GGX, height-correlated, anisotropic',
+      short: 'Smith GGX corr. aniso.',
+      cite: 'Heitz 2014',
+      js: visibilitySmithGGXCorrelatedAniso,
+      evaluate: null,
+      glsl: 'visibilitySmithGGXCorrelatedAniso',
+      chunk: 'anisotropic.glsl',
+      define: 'VIS_SMITH_GGX_CORRELATED_ANISO',
+      args: ['lx', 'ly', 'lz', 'vx', 'vy', 'vz', 'alphaX', 'alphaY'],
+      params: {}, // αx, αy: the input's fields, over the shared parameters' ranges
+    },
   },
 };

@@ -4,7 +4,7 @@ export const STEPS = [
     id: 'diffuse-lambert',
     widget: 'diffuse-explorer',
     title: 'Lambert: the same from every direction',
-    state: { models: ['lambert'], lightTheta: 50, lightPhi: 30 },
+    state: { diffuse: ['lambert'], lightTheta: 50, lightPhi: 30 },
     text:
       'Light that enters a non-metal, scatters inside and comes out again close to where it went in is seen from ' +
       'afar as diffuse reflection. Lambert’s model makes it a constant, ' +
@@ -15,7 +15,7 @@ export const STEPS = [
     id: 'diffuse-tradeoff',
     widget: 'diffuse-explorer',
     title: 'The diffuse–specular trade-off',
-    state: { models: ['lambert', 'fresnelWeighted', 'ashikhminShirley'], lightTheta: 70, lightPhi: 0 },
+    state: { diffuse: ['lambert', 'fresnelWeighted', 'ashikhminShirley'], lightTheta: 70, lightPhi: 0 },
     text:
       'Light reflected at the surface never enters it, so it cannot come back out as diffuse. Where Fresnel ' +
       'reflects more, at grazing angles, there must be less diffuse. Plain Lambert ignores this; the ' +
@@ -25,7 +25,7 @@ export const STEPS = [
     id: 'diffuse-full-moon',
     widget: 'diffuse-explorer',
     title: 'Rough diffuse: the full moon',
-    state: { models: ['lambert', 'orenNayar', 'orenNayarQualitative'], sigma: 40, lightTheta: 0, lightPhi: 0 },
+    state: { diffuse: ['lambert', 'orenNayar', 'orenNayarQualitative'], sigma: 40, lightTheta: 0, lightPhi: 0 },
     text:
       'When the surface is rough on a scale larger than the distance light travels inside it, the bumps ' +
       'themselves shade each other. Lit from behind the viewer, a rough sphere looks flatter, towards the look ' +

@@ -10,7 +10,7 @@ export const STEPS = [
       lightTheta: 0,
       cLight: 1,
       layers: 'diffuse',
-      diffuse: '#ffffff',
+      cdiff: '#ffffff',
       refSamples: '128',
     },
     text:

@@ -33,7 +33,7 @@ export const STEPS = [
     id: 'visibility-smith',
     widget: 'visibility-explorer',
     title: 'The Smith family',
-    state: { alpha: 0.8, terms: ['smithGGXSeparable', 'smithGGXCorrelated', 'smithGGXCorrelatedFast', 'schlickGGX'] },
+    state: { alpha: 0.8, V: ['smithGGXSeparable', 'smithGGXCorrelated', 'smithGGXCorrelatedFast', 'schlickGGX'] },
     text:
       'Smith’s terms are derived from the NDF itself. The height-correlated form is the more accurate; the ' +
       'separable form shadows a little too much. The error plot shows how closely the cheaper approximations ' +

@@ -18,7 +18,9 @@ import { ABOUT, TERMS_USED, TITLE, describeLobe3d, describePolar } from './words
 export { schema };
 
 const LIGHT_AND_VIEW = ['lightTheta', 'viewTheta'];
-const ALBEDO_KEYS = ['D', 'V', 'F', 'alpha', 'f0', 'compare', 'D2', 'V2', 'alpha2', 'brdf', 'params'];
+const ALBEDO_KEYS = ['D', 'V', 'F', 'alpha', 'f0', 'compare', 'D2', 'V2', 'alpha2', 'brdf', 'params'].concat(
+  ['anisotropy', 'convention', 'phi'], // an anisotropic A's albedo depends on the view's azimuth
+);
 const CODE_KEYS = ['codeD', 'codeV', 'codeF', 'codeBRDF'];
 /** A's slots that can be the user's: the state key of each one's code, and its panel's title. */
 const CUSTOM_SLOTS = {
@@ -66,7 +68,9 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange, lo
   const drawLobe3d = (s, scene) => {
     const { l, v, a, fA, fB, max } = scene;
     const directions = { n: [0, 0, 1], l, v, h: a.h, mirror: [-l[0], 0, l[2]] };
-    lobe3d.update({ fA, fB, max, directions, description: describeLobe3d(s, scene) });
+    // an anisotropic lobe may peak out of the plane of incidence: scale to its largest value over the hemisphere
+    const top = scene.A.aniso ? Math.max(max, ...lobe3d.directions.map(fA).filter(Number.isFinite)) : max;
+    lobe3d.update({ fA, fB, max: top, directions, phi: s.phi, description: describeLobe3d(s, { ...scene, max: top }) });
   };
   const render = (changed) => {
     const s = shell.state;

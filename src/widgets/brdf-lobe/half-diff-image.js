@@ -2,6 +2,7 @@
 // log-scaled viridis colours. Specular peaks lie along theta_h = 0; Fresnel brightens towards theta_d = 90°.
 import { viridis } from '../../core/ui/palettes.js';
 import { describeCanvas } from '../../core/framework/describe.js';
+import { squareImageAxes } from '../../core/ui/canvas2d.js';
 
 const N = 90;
 const DECADES = 4; // colour range: the top of the scale down to 1e-4 of it
@@ -50,19 +51,14 @@ export function createHalfDiffImage(container, title) {
       const [x0, y0, size] = [40, 8, 180];
       ctx.imageSmoothingEnabled = false;
       ctx.drawImage(cell, x0, y0, size, size);
-      ctx.fillStyle = '#333';
-      ctx.font = '11px system-ui, sans-serif';
-      ctx.textAlign = 'center';
-      for (const deg of [0, 30, 60, 90]) {
-        ctx.fillText(`${deg}°`, x0 + (deg / 90) * size, y0 + size + 13);
-        ctx.fillText(`${deg}°`, x0 - 16, y0 + size - (deg / 90) * size + 4);
-      }
-      ctx.fillText('θh (half vector from n)', x0 + size / 2, y0 + size + 27);
-      ctx.save();
-      ctx.translate(10, y0 + size / 2);
-      ctx.rotate(-Math.PI / 2);
-      ctx.fillText('θd (l from h)', 0, 0);
-      ctx.restore();
+      squareImageAxes(ctx, {
+        x0,
+        y0,
+        size,
+        ticks: [0, 30, 60, 90].map((deg) => [deg / 90, `${deg}°`]),
+        xLabel: 'θh (half vector from n)',
+        yLabel: 'θd (l from h)',
+      });
       const top = `${max.toPrecision(3)}${sharedMax ? '' : ' per steradian (99th percentile)'}`;
       describeCanvas(
         canvas,

@@ -1,6 +1,8 @@
 // The BRDF as a 3-D lobe over a surface patch: for the current light, each direction v is pushed out by
 // f(l, v) (scaled to the largest value); A is solid orange, B a green wire grid, as in the polar plot. Drag to
-// orbit. n, l, v, h and the mirror direction are drawn as arrows.
+// orbit. n, l, v, h and the mirror direction are drawn as arrows, in the plane of incidence (a translucent pane);
+// the plane turns by φ about n from the tangent t (a dark red arrow fixed on the patch), and everything in it turns
+// with it (the model computes in the plane's frame: an anisotropic lobe reads l and v turned by φ).
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { createViewport } from '../../core/framework/viewport.js';
@@ -49,6 +51,18 @@ function wireIndex() {
 }
 
 const ARROW_COLORS = { n: '#333333', l: '#e6a700', v: '#0072b2', h: '#cc79a7', mirror: '#888888' };
+const TANGENT_COLOR = '#8b1a1a';
+
+/** The plane of incidence: a translucent pane through n along x (the plane's frame), above the patch. */
+function incidencePlane() {
+  const pane = new THREE.Mesh(
+    new THREE.PlaneGeometry(2.5, 1.25),
+    new THREE.MeshBasicMaterial({ color: '#0072b2', transparent: true, opacity: 0.12, side: THREE.DoubleSide }),
+  );
+  pane.rotation.x = Math.PI / 2; // the xy pane stood up into xz
+  pane.position.z = 0.625;
+  return pane;
+}
 
 /** The scene: lights, the surface patch, lobe A (solid) and B (wireframe) over `dirs`, and the arrows. */
 function createLobeScene(dirs) {
@@ -81,13 +95,17 @@ function createLobeScene(dirs) {
     wire,
     new THREE.LineBasicMaterial({ color: '#009e73', transparent: true, opacity: 0.7 }),
   );
-  local.add(patch, lobeA, lobeB);
+  const plane = new THREE.Group(); // the plane of incidence's frame, turned by φ about n
+  const pane = incidencePlane();
+  plane.add(lobeA, lobeB, pane);
+  const tangent = new THREE.ArrowHelper(new THREE.Vector3(1, 0, 0), new THREE.Vector3(), 1.45, TANGENT_COLOR, 0.1);
+  local.add(patch, plane, tangent);
   const arrows = {};
   for (const [key, color] of Object.entries(ARROW_COLORS)) {
     arrows[key] = new THREE.ArrowHelper(new THREE.Vector3(0, 0, 1), new THREE.Vector3(), 1.3, color, 0.1, 0.06);
-    local.add(arrows[key]);
+    plane.add(arrows[key]);
   }
-  return { scene, patch, lobeA, lobeB, arrows };
+  return { scene, patch, lobeA, lobeB, arrows, plane, pane, tangent };
 }
 
 /** The keyboard orbits as a drag does: ←/→ around the normal, ↑/↓ up and down (Shift: finer). */
@@ -123,7 +141,7 @@ function fillLobe(mesh, dirs, f, max) {
 export function createLobeView(container, { onContextChange } = {}) {
   const dirs = hemisphereDirections();
   let lost = false;
-  const { scene, patch, lobeA, lobeB, arrows } = createLobeScene(dirs);
+  const { scene, patch, lobeA, lobeB, arrows, plane, pane, tangent } = createLobeScene(dirs);
   const camera = new THREE.PerspectiveCamera(35, 1, 0.1, 50);
   camera.position.set(2.6, 2.2, 3.2);
   let controls = null;
@@ -164,10 +182,12 @@ export function createLobeView(container, { onContextChange } = {}) {
     renderer: viewport?.renderer ?? null,
     /**
      * fA(v), fB(v) | null: the lobes for the current light; directions: { n, l, v, h, mirror } as arrays (h may
-     * be null); description: the view in words.
+     * be null), in the plane of incidence's frame; phi: its azimuth from the tangent (degrees); description: the
+     * view in words.
      */
-    update({ fA, fB, max, directions, description }) {
+    update({ fA, fB, max, directions, phi = 0, description }) {
       describeCanvas(viewport?.canvas, description);
+      plane.rotation.z = (phi * Math.PI) / 180;
       fillLobe(lobeA, dirs, fA, max);
       lobeB.visible = Boolean(fB);
       if (fB) fillLobe(lobeB, dirs, fB, max);
@@ -180,11 +200,11 @@ export function createLobeView(container, { onContextChange } = {}) {
     dispose() {
       controls?.dispose();
       viewport?.canvas.removeEventListener('keydown', orbitByKey);
-      [patch, lobeA, lobeB].forEach((m) => {
+      [patch, lobeA, lobeB, pane].forEach((m) => {
         m.geometry.dispose();
         m.material.dispose();
       });
-      Object.values(arrows).forEach((a) => a.dispose());
+      [...Object.values(arrows), tangent].forEach((a) => a.dispose());
       viewport?.dispose();
     },
   };

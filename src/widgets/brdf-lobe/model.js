@@ -10,6 +10,29 @@ import { directionsFromHalfDiff } from '../../math/half-diff.js';
 import { DEG } from '../../math/angles.js';
 import { termEntry, termLabel } from '../../math/catalogue/index.js';
 import { WALK_ANGLES, hasMultipleLobe, kullaContyLobe, walkMultiplePart } from './multiple-lobe.js';
+import { anisotropicAlphas } from '../../math/anisotropic.js';
+import { microfacetInput, termAt } from '../../math/catalogue/microfacet-input.js';
+
+/** The anisotropic form of an NDF, and of a visibility term, in the catalogue. */
+const ANISOTROPIC_D = { ggx: 'ggxAniso', beckmann: 'beckmannAniso' };
+const ANISOTROPIC_V = { smithGGXCorrelated: 'smithGGXCorrelatedAniso' };
+
+/**
+ * A's anisotropic lobe, when its anisotropy is above 0 and its D has an anisotropic form: { D, V (null: V stays
+ * isotropic at α), pair [αx, αy], phi (the plane of incidence's azimuth from the tangent, radians) }; else null.
+ */
+export function anisotropyOf(state, D, V) {
+  if (!(state.anisotropy > 0) || !ANISOTROPIC_D[D]) return null;
+  return {
+    D: ANISOTROPIC_D[D],
+    V: ANISOTROPIC_V[V] ?? null,
+    pair: anisotropicAlphas(state.alpha, state.anisotropy, state.convention),
+    phi: state.phi * DEG,
+  };
+}
+
+/** w of the plane of incidence's frame (x in the plane) in the tangent frame: turned by φ about n. */
+const toTangent = ([x, y, z], phi) => [x * Math.cos(phi) - y * Math.sin(phi), x * Math.sin(phi) + y * Math.cos(phi), z];
 
 /** The light at θl on the left of n, the view at θv (+: the mirror side), in the plane of incidence (x, z). */
 export const lightDir = (deg) => [-Math.sin(deg * DEG), 0, Math.cos(deg * DEG)];
@@ -50,6 +73,7 @@ export function brdfSpec(state, which, custom = {}) {
           .filter(([, f]) => f),
       );
   const F = B && state.F === 'custom' ? SLOTS.F.reference : state.F;
+  const aniso = B || state.brdf === 'custom' ? null : anisotropyOf(state, D, V);
   return {
     D: standIn('D', D),
     V: standIn('V', V),
@@ -57,8 +81,9 @@ export function brdfSpec(state, which, custom = {}) {
     f0: state.f0,
     ...ndfParamsMatchingGGX(standIn('D', D), alpha),
     samplingAlpha: alpha,
+    aniso,
     custom: !B && state.brdf === 'custom' ? { brdf: own.brdf ?? LAMBERT_STAND_IN } : own,
-    label: specLabel(state, which, D, V),
+    label: aniso ? specLabel(state, which, aniso.D, aniso.V ?? V) : specLabel(state, which, D, V),
   };
 }
 
@@ -75,11 +100,17 @@ const brdfSpecs = (state, custom = {}) => [
   ...(state.compare ? [brdfSpec(state, 'B', custom)] : []),
 ];
 
-/** F, D, V at the cosines a (with a.h), each from its lookup when the user wrote it, else from the catalogue. */
-function termsAt(a, p) {
+/**
+ * F, D, V at (l, v) with cosines a (and a.h), each from its lookup when the user wrote it, else from the catalogue;
+ * an anisotropic D and V read l and v turned into the tangent frame.
+ */
+function termsAt(l, v, a, p) {
   const c = p.custom ?? {};
-  const D = c.D ? c.D(a) : NDF_TERMS[p.D](a.nh, p, a.h[0] * a.h[0] + a.h[1] * a.h[1]);
-  const V = c.V ? c.V(a) : VISIBILITY_TERMS[p.V](a, p);
+  const m = p.aniso && microfacetInput(toTangent(l, p.aniso.phi), toTangent(v, p.aniso.phi), p.aniso.pair);
+  const isoD = () => NDF_TERMS[p.D](a.nh, p, a.h[0] * a.h[0] + a.h[1] * a.h[1]);
+  const D = c.D ? c.D(a) : m ? termAt(termEntry('ndf', p.aniso.D), m, {}) : isoD();
+  const anisoV = m && p.aniso.V;
+  const V = c.V ? c.V(a) : anisoV ? termAt(termEntry('visibility', anisoV), m, {}) : VISIBILITY_TERMS[p.V](a, p);
   return { F: c.F ? c.F(a) : FRESNEL_TERMS[p.F](a.lh, p), D, V, G: V * a.nl * a.nv };
 }
 
@@ -93,7 +124,7 @@ export function factorsOf(l, v, p, use = ALL_FACTORS) {
   if (p.custom?.brdf) return p.custom.brdf.atView(v);
   const a = brdfAngles(l, v);
   if (!(a.nl > 0 && a.nv > 0) || !a.h) return 0;
-  const t = termsAt(a, p);
+  const t = termsAt(l, v, a, p);
   return ((use.F ? t.F : 1) * (use.D ? t.D : 1) * (use.G ? t.G : 1)) / (use.denominator ? 4 * a.nl * a.nv : 1);
 }
 
@@ -175,6 +206,6 @@ export const albedoCurve = (p) =>
  */
 export function factorsAt(l, v, a, p) {
   if (p.custom?.brdf) return { F: null, D: null, G: null, f: factorsOf(l, v, p) };
-  const terms = a.h && a.nl > 0 && a.nv > 0 ? termsAt(a, p) : { F: 1, D: 1, G: 1 };
+  const terms = a.h && a.nl > 0 && a.nv > 0 ? termsAt(l, v, a, p) : { F: 1, D: 1, G: 1 };
   return { F: p.F === 'one' ? 1 : terms.F, D: terms.D, G: terms.G, f: factorsOf(l, v, p) };
 }

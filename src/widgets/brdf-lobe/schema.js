@@ -3,6 +3,7 @@
 // and F, or A as a whole, can be the user's own GLSL (`custom`): its code and its sliders' values are fields too.
 import { termOptions } from '../../math/catalogue/index.js';
 import { SLOTS } from '../../core/custom/slots.js';
+import { CONVENTION_LABELS } from '../ndf-explorer/words.js';
 
 const ndfOptions = termOptions('ndf');
 const visOptions = termOptions('visibility');
@@ -52,4 +53,14 @@ export const schema = {
   codeF: code('F', 'A: your F (GLSL)'),
   codeBRDF: code('brdf', 'A: your BRDF (GLSL)'),
   params: { type: 'params', default: {}, label: 'Sliders of your code' },
+  // beyond the talk (issue 28): the plane of incidence at any azimuth from the tangent, and A's GGX or Beckmann
+  // stretched along the tangent
+  phi: { type: 'number', min: 0, max: 180, step: 1, default: 0, label: 'Plane of incidence φ from t', unit: '°' },
+  anisotropy: { type: 'number', min: 0, max: 1, step: 0.01, default: 0, label: 'A: anisotropy (GGX, Beckmann)' },
+  convention: {
+    type: 'enum',
+    options: CONVENTION_LABELS,
+    default: 'burley2012',
+    label: 'A: anisotropy convention',
+  },
 };

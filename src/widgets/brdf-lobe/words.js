@@ -24,7 +24,11 @@ export const ABOUT =
   'Multiple scattering adds, dotted, the light that bounces between microfacets before it leaves (Kulla & ' +
   'Conty 2017), nearly diffuse in shape, with dots from the random walk on the microsurface (Heitz et al. ' +
   '2016) that it approximates. Choose Custom in A’s D, V or F menu, or as A’s whole BRDF, to draw a term ' +
-  'you write in GLSL: it is checked on the GPU beside the editor, and B stays a catalogue term to compare with.';
+  'you write in GLSL: it is checked on the GPU beside the editor, and B stays a catalogue term to compare with. ' +
+  'Beyond the talk, whose BRDFs are isotropic: the plane of incidence turns to any azimuth φ from the surface’s ' +
+  'tangent, and A’s anisotropy stretches GGX or Beckmann along that tangent (Heitz 2014’s forms; (αx, αy) by ' +
+  'Burley 2012, glTF’s KHR_materials_anisotropy or OpenPBR 1.1), with height-correlated Smith GGX then ' +
+  'anisotropic too. Turn φ: an isotropic lobe stays the same, an anisotropic one is widest along the tangent.';
 
 /** The functions behind the pictures, linked to their rows on the parity page. */
 export const TERMS_USED = [
@@ -38,6 +42,10 @@ export const TERMS_USED = [
   'visibilitySmithGGXCorrelated',
   'multipleScatteringKullaConty',
   'fresnelMultipleScatteringKullaConty',
+  'ndfGGXAniso',
+  'ndfBeckmannAniso',
+  'visibilitySmithGGXCorrelatedAniso',
+  'anisotropicAlphas',
 ];
 
 /** The multiple-scattering lobe in words (empty when it is off). */
@@ -81,7 +89,12 @@ export function describeLobe3d(state, scene) {
   return (
     `3-D lobe of ${A.label}${B ? ` (solid) and ${B.label} (wireframe)` : ''} over the hemisphere, light ` +
     `${state.lightTheta}° from n; each direction's distance from the centre is ${state.cosine ? 'f × n·v' : 'f'}, ` +
-    `scaled to ${max.toPrecision(3)}. Arrows: n, l, v, h and the mirror direction.`
+    `scaled to ${max.toPrecision(3)}. Arrows: n, l, v, h and the mirror direction, in the plane of incidence ` +
+    `(the blue pane), ${state.phi}° about n from the tangent t (the dark red arrow).` +
+    (A.aniso
+      ? ` A is anisotropic, (αx, αy) = (${A.aniso.pair.map((x) => x.toPrecision(3)).join(', ')}): its lobe ` +
+        `stretches along t${A.aniso.V ? '' : `; its V stays isotropic at α ${state.alpha}`}.`
+      : '')
   );
 }
 
@@ -90,7 +103,9 @@ export const describeImage = (state, p, alpha) => `${p.label}, α ${alpha}, F0 $
 
 let memo = { key: '', spec: null }; // BRDF A's matched parameters: a root search for an NDF other than GGX
 function specA(state) {
-  const key = `${state.D}|${state.V}|${state.F}|${state.f0}|${state.alpha}`;
+  const key = [state.D, state.V, state.F, state.f0, state.alpha, state.anisotropy, state.convention, state.phi].join(
+    '|',
+  );
   if (memo.key !== key) memo = { key, spec: brdfSpec(state, 'A') };
   return memo.spec;
 }

@@ -18,7 +18,7 @@ function readsOf(state) {
     seen.set(keyOf(nl, nv, cosPhi), [nl, nv, cosPhi]);
     return 0;
   };
-  const only = { ...state, models: [CUSTOM] };
+  const only = { ...state, diffuse: [CUSTOM] };
   profile(only, lightDirFromAngles(state.lightTheta, state.lightPhi), record);
   lightSweep(only, record);
   tradeOff(only, record);
@@ -51,7 +51,7 @@ export function createCustomDiffuse(container, io) {
   const area = createCustomArea(container, {
     ...io,
     slots: SLOTS,
-    chosen: (s) => (s.models.includes(CUSTOM) ? ['diffuse'] : []),
+    chosen: (s) => (s.diffuse.includes(CUSTOM) ? ['diffuse'] : []),
     planOf: (_, s) => planDiffuse(s),
   });
   const sphere = createCustomSphere(io.getRenderer);

@@ -17,7 +17,7 @@ import { createCustomDiffuse } from './custom.js';
 export { schema };
 
 const LIGHT_KEYS = ['lightTheta', 'lightPhi'];
-const MODEL_KEYS = ['models', 'sigma', 'cdiff', 'f0', 'codeDiffuse', 'params'];
+const MODEL_KEYS = ['diffuse', 'sigma', 'cdiff', 'f0', 'codeDiffuse', 'params'];
 
 export function createDiffuseExplorer(container, initialState = {}, { onStateChange, locked } = {}) {
   const shell = createWidgetShell(container, {

@@ -22,7 +22,7 @@ const AZIMUTH_FREE = new Set(['lambert', 'fresnelWeighted', 'ashikhminShirley'])
 
 /** A model's colour in every plot and table, by its place in the menu. */
 export const modelColor = (key) =>
-  SERIES_COLORS[Object.keys(schema.models.options).indexOf(key) % SERIES_COLORS.length];
+  SERIES_COLORS[Object.keys(schema.diffuse.options).indexOf(key) % SERIES_COLORS.length];
 
 const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 
@@ -65,7 +65,7 @@ export function profile(state, lightDir, custom) {
   const p = paramsOf(state, custom);
   const phi = state.lightPhi * DEG;
   const normalAt = (s) => [s * Math.cos(phi), s * Math.sin(phi), Math.sqrt(Math.max(1 - s * s, 0))];
-  return state.models.map((m) => PROFILE_XS.map((s) => radianceAt(m, normalAt(s), lightDir, [0, 0, 1], p)));
+  return state.diffuse.map((m) => PROFILE_XS.map((s) => radianceAt(m, normalAt(s), lightDir, [0, 0, 1], p)));
 }
 
 export const SWEEP_XS = Float64Array.from({ length: 361 }, (_, i) => -90 + i / 2);
@@ -78,7 +78,7 @@ export function lightSweep(state, custom) {
   const p = paramsOf(state, custom);
   const tv = state.viewTheta * DEG;
   const v = [Math.sin(tv), 0, Math.cos(tv)];
-  return state.models.map((m) =>
+  return state.diffuse.map((m) =>
     SWEEP_XS.map((deg) => radianceAt(m, [0, 0, 1], [Math.sin(deg * DEG), 0, Math.cos(deg * DEG)], v, p)),
   );
 }
@@ -108,7 +108,7 @@ export function diffuseAlbedo(model, nv, params, n = 32) {
 export function tradeOff(state, custom) {
   const p = paramsOf(state, custom);
   const specular = TRADE_XS.map((deg) => fresnelSchlick(p.f0, Math.cos(deg * DEG)));
-  const totals = state.models.map((m) =>
+  const totals = state.diffuse.map((m) =>
     TRADE_XS.map((deg, i) => specular[i] + diffuseAlbedo(m, Math.cos(deg * DEG), p)),
   );
   return { specular, totals };

@@ -6,7 +6,7 @@ import { termLabel } from '../../math/catalogue/index.js';
 import { PROFILE_XS, SWEEP_XS, TRADE_XS, modelColor } from './model.js';
 
 const degValues = (u, ticks) => ticks.map((t) => `${t}°`);
-const seriesOf = (state) => state.models.map((k) => ({ label: termLabel('diffuse', k), stroke: modelColor(k) }));
+const seriesOf = (state) => state.diffuse.map((k) => ({ label: termLabel('diffuse', k), stroke: modelColor(k) }));
 
 const profileSpec = (state, profile) => ({
   title: `Brightness across the sphere, through the side the light is on (${sigmaText(state.sigma)})`,

@@ -6,8 +6,9 @@ import { termOptions } from '../../math/catalogue/index.js';
 import { SLOTS } from '../../core/custom/slots.js';
 
 export const schema = {
-  models: {
+  diffuse: {
     type: 'set',
+    formerly: ['models'],
     options: termOptions('diffuse', undefined, { custom: true }),
     default: Object.keys(termOptions('diffuse')),
     label: 'Diffuse models',

@@ -51,7 +51,7 @@ export function createDiffuseSpheres(container) {
     /** One sphere per chosen model, lit from l; the user's (custom.js's cell) once its code compiled there. */
     draw: (state, l, own) =>
       grid.setCells(
-        state.models.filter((k) => k !== CUSTOM || own).map((k) => sphereCell(k, state, l, k === CUSTOM ? own : null)),
+        state.diffuse.filter((k) => k !== CUSTOM || own).map((k) => sphereCell(k, state, l, k === CUSTOM ? own : null)),
       ),
     get renderer() {
       return grid.renderer;

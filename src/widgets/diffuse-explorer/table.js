@@ -26,7 +26,7 @@ export function createFlatnessTable(container) {
       table.innerHTML =
         `<table class="data-table compact"><caption>${CAPTION}</caption>` +
         '<thead><tr><th>Model</th><th>centre</th><th>at 0.9 R</th><th>rim / centre</th></tr></thead>' +
-        `<tbody>${state.models.map((k, i) => row(k, profile[i])).join('')}</tbody></table>`;
+        `<tbody>${state.diffuse.map((k, i) => row(k, profile[i])).join('')}</tbody></table>`;
     },
   };
 }

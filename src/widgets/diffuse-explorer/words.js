@@ -34,7 +34,7 @@ export const TERMS_USED = [
 /** The spheres in words: the parameters, the light and the models shown. */
 export const describeSpheres = (state) =>
   `Spheres with a diffuse term only (c_diff ${state.cdiff}, F0 ${state.f0}, ${sigmaText(state.sigma)}), light ` +
-  `${state.lightTheta}° from the view: ${state.models.map((k) => termLabel('diffuse', k)).join(', ')}.`;
+  `${state.lightTheta}° from the view: ${state.diffuse.map((k) => termLabel('diffuse', k)).join(', ')}.`;
 
 const C = '\\sym{cdiff}{\\mathbf{c}_{\\text{diff}}}';
 const HALF5 = (x) => `\\left(1 - \\left(1 - \\tfrac{\\mathbf{n}\\cdot\\mathbf{${x}}}{2}\\right)^5\\right)`;
@@ -68,10 +68,10 @@ const DIFFUSE_TEX = {
 
 /** The first chosen diffuse model, with c_diff, F0 and σ (in radians, as the model reads it) substituted. */
 export const FORMULA = declareFormula('diffuse-explorer', (state) => {
-  const key = state.models[0];
-  if (!key) return '\\sym{models}{\\text{no model chosen}}';
+  const key = state.diffuse[0];
+  if (!key) return '\\sym{diffuse}{\\text{no model chosen}}';
   const sigma = state.sigma * DEG;
-  const line = `\\sym{models}{${DIFFUSE_TEX[key](state, sigma * sigma)}}`;
+  const line = `\\sym{diffuse}{${DIFFUSE_TEX[key](state, sigma * sigma)}}`;
   if (!key.startsWith('orenNayar')) return `${line},\\quad ${C} = ${texNumber(state.cdiff, 2)}`;
   const on =
     `\\alpha = \\max(\\theta_l, \\theta_v),\\ \\beta = \\min(\\theta_l, \\theta_v),\\ ` +

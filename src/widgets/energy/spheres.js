@@ -8,6 +8,7 @@ import { createAlbedoTableTexture, albedoTableOnce } from '../../core/gpu/albedo
 import { albedoGGX } from '../../math/integrate.js';
 import { specularAlbedoFromTable } from '../../math/albedo-table.js';
 import { termDefines } from '../../math/catalogue/index.js';
+import { sharedUniforms } from '../../math/catalogue/uniforms.js';
 
 /** The furnace's shader variant: a compensation's own switch and, with one, the albedo-loss table it reads. */
 export const furnaceDefines = (compensation) => ({
@@ -74,7 +75,7 @@ export function createFurnaceSpheres(container) {
         sweep.map((d) => ({
           label: `α = ${d.alpha}`,
           defines: furnaceDefines(compensation),
-          uniforms: { uAlpha: d.alpha, uDfg: dfg, uAlbedoTableGGX: lossTable },
+          uniforms: { ...sharedUniforms({ alphaPair: [d.alpha, d.alpha] }), uDfg: dfg, uAlbedoTableGGX: lossTable },
           probe: (a) => probeRows(a, d.alpha, compensation, compensationLabel),
         })),
       );

@@ -20,7 +20,7 @@ export function angleGrid(step = ANGLE_STEP_DEG) {
 export function curveSpecs({ materials, conductor, ior }) {
   const specs = [];
   for (const key of materials) {
-    if (key === 'custom') {
+    if (key === 'manual') {
       specs.push({ key, name: `Dielectric n = ${ior.toFixed(2)}`, metal: false, channel: null, eta: ior, k: 0 });
       continue;
     }

@@ -5,13 +5,14 @@ import { CONDUCTOR_MODELS, METALS, NON_METALS } from '../../math/materials.js';
 const MATERIAL_OPTIONS = Object.fromEntries([
   ...METALS.map((m) => [m.key, m.name]),
   ...NON_METALS.map((m) => [m.key, m.name]),
-  ['custom', 'Custom dielectric (IOR below)'],
+  ['manual', 'Custom dielectric (IOR below)'],
 ]);
 
 export const schema = {
   materials: {
     type: 'set',
     options: MATERIAL_OPTIONS,
+    aliases: { custom: 'manual' }, // `custom` names the user's own GLSL elsewhere; old links' `custom` is read
     default: ['copper', 'aluminum', 'glass-low', 'diamond'],
     label: 'Materials',
   },

@@ -45,15 +45,15 @@ export function describeCurves(curves) {
 
 const rgb = (values) => `(${values.map((x) => texNumber(x)).join(',\\ ')})`;
 
-/** F0 of the first chosen curve: the custom n's, or the first material's (per channel for a metal). */
+/** F0 of the first chosen curve: the n set by hand, or the first material's (per channel for a metal). */
 function firstF0(state) {
-  if (state.materials.includes('custom')) return [f0FromIor(state.ior)];
+  if (state.materials.includes('manual')) return [f0FromIor(state.ior)];
   return state.materials.length ? fresnelParams(state.materials[0], state.conductor).f0 : [];
 }
 
-/** F0 of the first chosen curve: from the custom n in closed form, or the material's own (per channel). */
+/** F0 of the first chosen curve: from the n set by hand, in closed form, or the material's own (per channel). */
 function f0Line(state) {
-  if (state.materials.includes('custom')) {
+  if (state.materials.includes('manual')) {
     const n = texNumber(state.ior, 2);
     const f0 = texNumber(f0FromIor(state.ior));
     const N = `\\sym{ior}{${n}}`;

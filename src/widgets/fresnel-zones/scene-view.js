@@ -39,7 +39,7 @@ function createUniforms() {
     uEta: { value: new THREE.Vector3() },
     uK: { value: new THREE.Vector3() },
     uF0: { value: new THREE.Vector3() },
-    uAlpha: { value: 0.3 },
+    uAlphaPair: { value: new THREE.Vector2(0.3, 0.3) },
     uExposure: { value: 1 },
     uZoneColors: { value: [new THREE.Color(), new THREE.Color(), new THREE.Color()] },
   };
@@ -50,7 +50,7 @@ function setUniforms(uniforms, values) {
   uniforms.uEta.value.set(...values.eta);
   uniforms.uK.value.set(...values.k);
   uniforms.uF0.value.set(...values.f0);
-  uniforms.uAlpha.value = values.alpha;
+  uniforms.uAlphaPair.value.set(values.alpha, values.alpha); // the microfacet input's α pair, isotropic
   uniforms.uExposure.value = values.exposure;
   values.zoneColors.forEach((rgb, i) => uniforms.uZoneColors.value[i].setRGB(...rgb));
 }

@@ -24,6 +24,9 @@ export function createLightingModels(container, initialState = {}, { onStateChan
   });
   const table = document.createElement('div');
   table.className = 'lab-readout';
+  table.tabIndex = 0; // a scrolling region is reachable by keyboard (narrower than its table, it scrolls)
+  table.setAttribute('role', 'region');
+  table.setAttribute('aria-label', 'Each illumination model: its cost and its error against the reference');
   let results = [];
   let samples = 0;
   let approxKey = '';

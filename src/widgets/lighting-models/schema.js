@@ -5,7 +5,7 @@ import { MATERIAL_FIELDS } from '../../lab/lab-scene.js';
 export const schema = {
   ...MATERIAL_FIELDS,
   // a dark, fairly smooth dielectric by default: the sun's highlight is where the models differ most
-  diffuse: { ...MATERIAL_FIELDS.diffuse, default: '#2f4f7f' },
+  cdiff: { ...MATERIAL_FIELDS.cdiff, default: '#2f4f7f' },
   alpha: { ...MATERIAL_FIELDS.alpha, default: 0.1 },
   show: { type: 'enum', options: { images: 'Images', errors: 'Error images' }, default: 'images', label: 'Show' },
   refSamples: {

@@ -57,7 +57,7 @@ export function tableHtml(st, results, samples, resolution) {
 
 /** What the canvas shows, for a screen reader. */
 export function description(st, results, samples) {
-  const material = st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material;
+  const material = st.material === 'manual' ? `F0 ${st.f0}, diffuse ${st.cdiff}` : st.material;
   const errors =
     samples < Number(st.refSamples)
       ? 'The reference is still converging.'
@@ -73,7 +73,7 @@ const GENERAL =
 
 /** The BRDF every image shares, the reference's integral and the punctual sun that replaces its disc. */
 export const FORMULA = declareFormula('lighting-models', (state) => {
-  const keys = { alpha: 'alpha', f0: state.material === 'custom' ? 'f0' : 'material' };
+  const keys = { alpha: 'alpha', f0: state.material === 'manual' ? 'f0' : 'material' };
   const f = brdfTex(TERMS, materialOf(state), keys);
   const lines = [f, `${GENERAL}\\quad\\text{(reference)}`, `${PUNCTUAL}\\quad\\text{(the sun as a point)}`];
   return `\\begin{gathered}${lines.join('\\\\ ')}\\end{gathered}`;

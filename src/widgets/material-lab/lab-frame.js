@@ -5,6 +5,7 @@
 import { REFERENCE_BATCH } from '../../lab/lab-renderer.js';
 import { sceneOf } from './model.js';
 import { sampleTarget } from '../../core/framework/debug-hooks.js';
+import { tangentFieldOf } from '../../lab/lab-anisotropy.js';
 
 /**
  * `state()` the widget's state, `measured()` the measured table in use or null, `custom(state)` the user's BRDF
@@ -47,7 +48,9 @@ export function createLabFrame({ state, measured, custom, file, show }) {
     }
     stats = { ...lab.error(), ms, timingRuns, samples: lab.batches * REFERENCE_BATCH, target };
     Object.assign(stats, { samplesN: st.samples, method: st.envMethod, centre });
-    return show(st, lights, scene, stats);
+    const panels = show(st, lights, scene, stats);
+    const tangents = st.showTangents ? tangentFieldOf(st) : null; // drawn over the two renders, not the error
+    return tangents ? panels.map((p) => (p.image === 'error' ? p : { ...p, tangents })) : panels;
   };
 
   return {

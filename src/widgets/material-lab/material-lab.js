@@ -11,7 +11,7 @@ import { attachEnvironmentDrop } from './environment-drop.js';
 import { createMeasuredMaterial } from './measured-material.js';
 import { createLabFrame } from './lab-frame.js';
 import { createCustomBrdf } from './custom-brdf.js';
-import { WHITE_LAMBERT_HEAD_ON, missingFile } from './model.js';
+import { BRUSHED_ALUMINIUM, WHITE_LAMBERT_HEAD_ON, missingFile } from './model.js';
 import { schema } from './schema.js';
 import { createReadout } from './views.js';
 import { ABOUT, NOTICES, TERMS_USED, captions, description, readoutHtml } from './words.js';
@@ -28,7 +28,10 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
     about: ABOUT,
     terms: TERMS_USED,
   });
-  const readout = createReadout(NOTICES.headOn, () => update(WHITE_LAMBERT_HEAD_ON));
+  const readout = createReadout([
+    { text: NOTICES.headOn, className: 'lab-head-on', onClick: () => update(WHITE_LAMBERT_HEAD_ON) },
+    { text: NOTICES.brushed, className: 'lab-brushed', onClick: () => update(BRUSHED_ALUMINIUM) },
+  ]);
   const notes = createNotesList(); // under the images: how each light's approximation treats the chosen terms
   const file = { key: '', pixels: null }; // a new key for every file taken: a second file of the same name is used too
   const measured = createMeasuredMaterial({

@@ -70,10 +70,10 @@ export function missingFile(changed, state, has) {
 
 /** One click to the talk's check of the π: a white Lambert sphere under the punctual light alone, head-on. */
 export const WHITE_LAMBERT_HEAD_ON = {
-  material: 'custom',
-  diffuse: '#ffffff',
+  material: 'manual',
+  cdiff: '#ffffff',
   layers: 'diffuse',
-  diffuseModel: 'lambert',
+  diffuse: 'lambert',
   brdfSource: 'model',
   punctual: true,
   lightTheta: 0,
@@ -81,6 +81,27 @@ export const WHITE_LAMBERT_HEAD_ON = {
   area: false,
   env: false,
   ambient: false,
+};
+
+/**
+ * A starting point for anisotropy: aluminium (the talk's F0 table) brushed in circles around a pole tilted 50°
+ * up, as a turned disc is, Burley's mapping at a = 0.8 (αx = 0.472, αy = 0.132 from α = 0.25), the lines drawn.
+ */
+export const BRUSHED_ALUMINIUM = {
+  material: 'aluminum',
+  alpha: 0.25,
+  layers: 'both',
+  D: 'ggx',
+  V: 'smithGGXCorrelated',
+  compensation: 'none',
+  brdfSource: 'model',
+  anisotropy: 0.8,
+  anisotropyModel: 'burley2012',
+  tangentField: 'around',
+  tangentTheta: 50,
+  tangentPhi: 90,
+  tangentRotation: 0,
+  showTangents: true,
 };
 
 /** Whether the punctual light is the only light on (then the centre's radiance is π f c_light (n·l) alone). */

@@ -8,6 +8,7 @@ import { LAB_TERMS } from '../../lab/lab-approximations.js';
 import { TERM_ALIASES } from '../../math/catalogue/index.js';
 import { SIGMA_HINT } from '../../core/ui/sigma-range.js';
 import { SLOTS } from '../../core/custom/slots.js';
+import { ANISOTROPY_MODELS, TANGENT_FIELDS } from '../../lab/lab-anisotropy.js';
 
 export const ENV_METHODS = {
   'split-sum': 'Split sum (prefiltered + DFG)',
@@ -26,11 +27,27 @@ export const schema = {
     default: 'both',
     label: 'Layers',
   },
-  fresnel: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.fresnel, default: 'schlick', label: 'Fresnel F' },
-  ndf: { group: 'BRDF terms', type: 'enum', options: LAB_TERMS.ndf, default: 'ggx', label: 'Distribution D' },
-  visibility: {
+  // the terms under the catalogue's names for a choice (F, D, V, diffuse, compensation); `formerly`: old links' names
+  F: {
     group: 'BRDF terms',
     type: 'enum',
+    formerly: ['fresnel'],
+    options: LAB_TERMS.fresnel,
+    default: 'schlick',
+    label: 'Fresnel F',
+  },
+  D: {
+    group: 'BRDF terms',
+    type: 'enum',
+    formerly: ['ndf'],
+    options: LAB_TERMS.ndf,
+    default: 'ggx',
+    label: 'Distribution D',
+  },
+  V: {
+    group: 'BRDF terms',
+    type: 'enum',
+    formerly: ['visibility'],
     options: LAB_TERMS.visibility,
     default: 'smithGGXCorrelated',
     label: 'Visibility V',
@@ -42,9 +59,10 @@ export const schema = {
     default: 'none',
     label: 'Multiple scattering',
   },
-  diffuseModel: {
+  diffuse: {
     group: 'BRDF terms',
     type: 'enum',
+    formerly: ['diffuseModel'], // and `diffuse` was the colour, now `cdiff`: the value tells which is meant
     options: LAB_TERMS.diffuse,
     aliases: TERM_ALIASES.diffuse, // the spellings of old links: 'oren-nayar', …
     default: 'lambert',
@@ -60,6 +78,70 @@ export const schema = {
     label: 'Oren-Nayar σ',
     unit: '°',
     hint: SIGMA_HINT,
+  },
+  // the anisotropic lobe (issue 28): off at 0, the talk's isotropic lobe; src/lab/lab-anisotropy.js reads these
+  anisotropy: {
+    group: 'Anisotropy',
+    closed: true,
+    type: 'number',
+    min: 0,
+    max: 1,
+    step: 0.01,
+    default: 0,
+    label: 'Anisotropy a',
+    hint: 'Stretches the GGX lobe along the tangent t; 0 is the isotropic lobe.',
+  },
+  anisotropyModel: {
+    group: 'Anisotropy',
+    type: 'enum',
+    options: ANISOTROPY_MODELS,
+    default: 'burley2012',
+    label: 'From α and a to (αx, αy)',
+  },
+  tangentField: {
+    group: 'Anisotropy',
+    type: 'enum',
+    options: TANGENT_FIELDS,
+    default: 'around',
+    label: 'Tangent field',
+  },
+  tangentTheta: {
+    group: 'Anisotropy',
+    type: 'number',
+    min: 0,
+    max: 180,
+    step: 1,
+    default: 50,
+    label: 'Pole or axis θ from view',
+    unit: '°',
+  },
+  tangentPhi: {
+    group: 'Anisotropy',
+    type: 'number',
+    min: -180,
+    max: 180,
+    step: 1,
+    default: 90,
+    label: 'Pole or axis φ',
+    unit: '°',
+  },
+  tangentRotation: {
+    group: 'Anisotropy',
+    type: 'number',
+    min: -90,
+    max: 90,
+    step: 1,
+    default: 0,
+    label: 'Tangent rotation',
+    unit: '°',
+  },
+  showTangents: { group: 'Anisotropy', type: 'bool', default: false, label: 'Show the brushing lines' },
+  bentReflection: {
+    group: 'Anisotropy',
+    type: 'bool',
+    default: true,
+    label: 'Bent reflection vector',
+    hint: 'The split sum and sphere light read the light along the bent vector (Filament, three.js), or the mirror.',
   },
   brdfSource: {
     group: 'BRDF terms',

@@ -7,6 +7,7 @@ import { termEntry } from '../../math/catalogue/index.js';
 import { brdfFromPunctualRadiance } from '../../math/brdf.js';
 import { MERL_TEXTURE_BYTES } from '../measured-brdf/texture-size.js';
 import { punctualAlone } from './model.js';
+import { anisotropyOf, stretchesLobe } from '../../lab/lab-anisotropy.js';
 
 export const ABOUT =
   'A shading model becomes a picture only with an illumination model. The left sphere is rendered the way a ' +
@@ -116,7 +117,7 @@ export function description(st, lights, stats, measuredName) {
     stats.samples < stats.target
       ? 'The reference is still converging.'
       : `RMS error ${fmt(stats.rms, 3)}, ${fmt(stats.relative * 100, 3)} % relative; ${fmt(stats.ms, 3)} ms.`;
-  const model = st.material === 'custom' ? `F0 ${st.f0}, diffuse ${st.diffuse}` : st.material;
+  const model = st.material === 'manual' ? `F0 ${st.f0}, diffuse ${st.cdiff}` : st.material;
   const what = measuredName ? `the measured BRDF ${measuredName}` : `${model}, roughness α ${st.alpha}`;
   return (
     `Material lab. A sphere (${what}) lit by ${methodText(st, lights)}; beside it the Monte Carlo reference ` +
@@ -129,15 +130,17 @@ export const NOTICES = {
   noFile: 'No environment file has been dropped yet: drop an .hdr or .exr panorama on the widget. Kept the studio.',
   dropText: 'Load an .hdr / .exr environment or a MERL .binary BRDF…',
   headOn: 'Check the π: a white Lambert sphere lit head-on by the punctual light alone',
+  brushed: 'Brushed aluminium: an anisotropic GGX lobe on a machined disc, its brushing lines shown',
 };
 
 const short = (family, key) => texText(termEntry(family, key).short);
 
 /**
  * The lab's BRDF as TeX: the diffuse and specular layers with their terms named (each tied to the control of
- * `keys`, the state key that chooses it, when the widget has one), then α and F0 of `material` (materialOf).
+ * `keys`, the state key that chooses it, when the widget has one), then α and F0 of `material` (materialOf), and
+ * the pair (αx, αy) of an `anisotropy` the lobe is stretched by (lab-anisotropy.js).
  */
-export function brdfTex(terms, material, keys = {}) {
+export function brdfTex(terms, material, keys = {}, anisotropy = null) {
   const tie = (key, tex) => (keys[key] ? `\\sym{${keys[key]}}{${tex}}` : tex);
   const F = tie('F', terms.F === 'one' ? '1' : `F_{${short('fresnel', terms.F)}}`);
   const D = tie('D', `D_{${short('ndf', terms.D)}}`);
@@ -154,22 +157,20 @@ export function brdfTex(terms, material, keys = {}) {
     ? texNumber(material.f0[0])
     : `(${material.f0.map((x) => texNumber(x)).join(',\\ ')})`;
   const params = `${tie('alpha', `\\alpha = ${texNumber(material.alpha, 3)}`)},\\ ${tie('f0', `F_0 = ${f0}`)}`;
-  return `${tie('layers', 'f(\\mathbf{l},\\mathbf{v})')} = ${layers},\\quad ${params}`;
+  const pair = anisotropy
+    ? `,\\ ${tie('anisotropy', `a = ${texNumber(anisotropy.strength, 2)}`)}:\\ (\\alpha_x, \\alpha_y) = ` +
+      `(${anisotropy.alpha.map((x) => texNumber(x, 3)).join(',\\ ')})`
+    : '';
+  return `${tie('layers', 'f(\\mathbf{l},\\mathbf{v})')} = ${layers},\\quad ${params}${pair}`;
 }
 
 export const PUNCTUAL =
   'L_o = \\pi f(\\mathbf{l}_c,\\mathbf{v}) \\otimes \\mathbf{c}_{\\text{light}}(\\mathbf{n}\\cdot\\mathbf{l}_c)';
-const KEYS = {
-  F: 'fresnel',
-  D: 'ndf',
-  V: 'visibility',
-  diffuse: 'diffuseModel',
-  layers: 'layers',
-  compensation: 'compensation',
-  alpha: 'alpha',
-};
+// the terms' names in the state are the catalogue's choice (F, D, V, diffuse, compensation): each ties to its own key
+const TERM_KEYS = ['F', 'D', 'V', 'diffuse', 'layers', 'compensation'];
+const KEYS = Object.fromEntries([...TERM_KEYS, 'alpha'].map((k) => [k, k]));
 
-const F0_KEY = (state) => (state.material === 'custom' ? 'f0' : 'material');
+const F0_KEY = (state) => (state.material === 'manual' ? 'f0' : 'material');
 /** A BRDF that is not the model's terms: named, not written out. */
 const SOURCE_TEX = {
   measured: '\\sym{brdfSource}{f(\\mathbf{l}, \\mathbf{v}) = f_{\\text{measured}}\\ \\text{(a MERL table)}}',
@@ -180,15 +181,12 @@ const SOURCE_TEX = {
 
 /** The lab's BRDF and, with the punctual light on, the talk's punctual-light equation with its c_light. */
 export const FORMULA = declareFormula('material-lab', (state) => {
-  const terms = {
-    F: state.fresnel,
-    D: state.ndf,
-    V: state.visibility,
-    diffuse: state.diffuseModel,
-    layers: state.layers,
-    compensation: state.compensation,
-  };
-  const f = SOURCE_TEX[state.brdfSource] ?? brdfTex(terms, materialOf(state), { ...KEYS, f0: F0_KEY(state) });
+  const terms = Object.fromEntries(TERM_KEYS.map((k) => [k, state[k]]));
+  const scene = { anisotropy: anisotropyOf(state), terms: { D: state.D, layers: state.layers } };
+  const stretch = stretchesLobe(scene) ? scene.anisotropy : null;
+  const f =
+    SOURCE_TEX[state.brdfSource] ??
+    brdfTex(terms, materialOf(state), { ...KEYS, f0: F0_KEY(state), anisotropy: 'anisotropy' }, stretch);
   if (!state.punctual) return f;
   const light =
     `${PUNCTUAL},\\quad \\sym{cLight}{\\mathbf{c}_{\\text{light}} = ${texNumber(state.cLight, 2)}},\\ ` +

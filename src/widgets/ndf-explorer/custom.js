@@ -43,7 +43,7 @@ export function createCustomD(container, io) {
   const area = createCustomArea(container, {
     ...io,
     slots: SLOTS,
-    chosen: (s) => (s.ndfs.includes(CUSTOM) ? ['D'] : []),
+    chosen: (s) => (s.D.includes(CUSTOM) ? ['D'] : []),
     planOf: (_, s) => planD(s),
   });
   const sphere = createCustomSphere(io.getRenderer);

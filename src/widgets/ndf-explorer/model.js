@@ -6,8 +6,62 @@ import { ndfProjectedIntegral } from '../../math/integrate.js';
 import { DEG } from '../../math/angles.js';
 import { SERIES_DASHES, seriesStyle } from '../../core/ui/palettes.js';
 import { THETA_H_DEG } from '../measured-brdf/model.js';
-import { termLabel } from '../../math/catalogue/index.js';
+import { CATALOGUE, termLabel } from '../../math/catalogue/index.js';
+import { anisotropicAlphas } from '../../math/anisotropic.js';
+import { ndfHalfWidthsAlongAxes } from '../../math/anisotropic-width.js';
 import { NDF_KEYS } from './schema.js';
+
+/** The NDFs with an anisotropic form, and its catalogue key. */
+export const ANISOTROPIC_KEYS = { ggx: 'ggxAniso', beckmann: 'beckmannAniso' };
+
+/**
+ * An NDF's anisotropic lobe at its matched α: { key (the catalogue's), label, D (its float64 function of h in the
+ * tangent frame and the α pair), pair [αx, αy] by the state's convention, widths [along t, along b] in degrees },
+ * or null for an NDF without one. At anisotropy 0 every convention gives αx = αy = α.
+ */
+export function anisotropicLobe(key, p, state) {
+  const aniso = ANISOTROPIC_KEYS[key];
+  if (!aniso) return null;
+  const entry = CATALOGUE.ndf.terms[aniso];
+  const pair = anisotropicAlphas(p.alpha, state.anisotropy, state.convention);
+  let widths = null;
+  return {
+    key: aniso,
+    label: entry.label,
+    D: entry.js,
+    pair,
+    /** Computed when first read: two bisections. */
+    get widths() {
+      widths ??= ndfHalfWidthsAlongAxes(entry.js, ...pair);
+      return widths;
+    },
+  };
+}
+
+/** Whether the spheres draw an NDF's anisotropic lobe: it has one and the anisotropy is above 0. */
+export const drawsAnisotropic = (c, state) => Boolean(c.aniso) && state.anisotropy > 0;
+
+/**
+ * D over slope space for the slope map: n × n values at slopes (x, y) = (hx/hz, hy/hz) from -extent to extent (row
+ * j = 0 at y = -extent), the microfacet normal h = normalize(x, y, 1); D in 1/sr.
+ */
+export function slopeMapValues(lobe, n, extent) {
+  const out = new Float64Array(n * n);
+  for (let j = 0; j < n; j++)
+    for (let i = 0; i < n; i++) {
+      const [x, y] = [(((i + 0.5) / n) * 2 - 1) * extent, (((j + 0.5) / n) * 2 - 1) * extent];
+      const len = Math.hypot(x, y, 1);
+      out[j * n + i] = lobe.D(x / len, y / len, 1 / len, ...lobe.pair);
+    }
+  return out;
+}
+
+/** The slope map's half extent: 2.5 times the wider α, at a round value (the lobe, and the tail's start). */
+export function slopeExtent(pair) {
+  const raw = Math.min(Math.max(2.5 * Math.max(...pair), 0.05), 8);
+  const step = 10 ** Math.floor(Math.log10(raw));
+  return Number((Math.ceil(raw / step) * step).toPrecision(6));
+}
 
 /** A curve's label and series style: the five NDFs in the talk's order, then the user's, dashed (over GGX's). */
 export const withStyle = (key) =>
@@ -49,24 +103,23 @@ export const measuredOnAngles = (slice) =>
  */
 export function ndfCurves(state) {
   const params = matchNdfWidths(state.hwhm, { abcA2: state.abcA2, sgdP: state.sgdP });
-  return state.ndfs
-    .filter((key) => NDF_KEYS.includes(key))
-    .map((key) => {
-      const p = params[key];
-      const D = (c) => NDF_TERMS[key](c, p);
-      let integral = null;
-      return {
-        key,
-        p,
-        ...withStyle(key),
-        values: ANGLES.map((deg) => D(Math.cos(deg * DEG))),
-        /** Computed when first read: only the table shows it, and it costs more than a frame while dragging. */
-        get integral() {
-          integral ??= ndfProjectedIntegral(D);
-          return integral;
-        },
-      };
-    });
+  return state.D.filter((key) => NDF_KEYS.includes(key)).map((key) => {
+    const p = params[key];
+    const D = (c) => NDF_TERMS[key](c, p);
+    let integral = null;
+    return {
+      key,
+      p,
+      aniso: anisotropicLobe(key, p, state),
+      ...withStyle(key),
+      values: ANGLES.map((deg) => D(Math.cos(deg * DEG))),
+      /** Computed when first read: only the table shows it, and it costs more than a frame while dragging. */
+      get integral() {
+        integral ??= ndfProjectedIntegral(D);
+        return integral;
+      },
+    };
+  });
 }
 
 /** Where the tails are compared: beyond every matched width (1°–40°), short of grazing. One of ANGLES. */

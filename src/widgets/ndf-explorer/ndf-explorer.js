@@ -12,7 +12,7 @@ import { ABOUT, TERMS_USED, TITLE, describeSpheres } from './words.js';
 
 export { schema };
 
-const CURVE_KEYS = ['hwhm', 'abcA2', 'sgdP', 'ndfs', 'codeD', 'params'];
+const CURVE_KEYS = ['hwhm', 'abcA2', 'sgdP', 'D', 'codeD', 'params', 'anisotropy', 'convention'];
 const LOG_KEYS = [...CURVE_KEYS, 'measured', 'measuredName'];
 
 export function createNdfExplorer(container, initialState = {}, { onStateChange, locked } = {}) {
@@ -36,7 +36,10 @@ export function createNdfExplorer(container, initialState = {}, { onStateChange,
     curveKeys: CURVE_KEYS,
     curvesOf,
     views: { plots: createNdfPlots, spheres: createNdfSpheres, table: createNdfTable },
-    drawCurves: (plots, curves) => plots.drawLinear(curves),
+    drawCurves: (plots, curves, state) => {
+      plots.drawLinear(curves);
+      plots.drawMaps(curves, state);
+    },
     afterChange(plots, changed, curves, state) {
       if (changed.some((k) => LOG_KEYS.includes(k))) plots.drawLog(curves, state);
       customD.showPanel(state);

@@ -2,7 +2,9 @@
 // the log plot puts every curve over its own peak and adds the measurement.
 import { createPlot } from '../../core/ui/plot.js';
 import { ANGLES, TAIL_DEG, THETA_AXIS as axis, logAxes, measuredOnAngles, tailsAt } from './model.js';
-import { describeTails } from './words.js';
+import { describeAnisotropy, describeTails } from './words.js';
+import { createSlopeMaps } from './slope-map.js';
+import { ANISOTROPY_CONVENTIONS, anisotropicAlphas } from '../../math/anisotropic.js';
 
 const seriesOf = (curves) => curves.map((c) => ({ label: c.label, stroke: c.stroke, dash: c.dash }));
 
@@ -51,12 +53,33 @@ function relativeLogSpec(curves, slice, name) {
 const logSpec = (curves, state) =>
   state.measured.length ? relativeLogSpec(curves, state.measured, state.measuredName) : absoluteLogSpec(curves);
 
+/** The slope maps of the chosen NDFs with an anisotropic form, and the conventions' pairs at the first one's α. */
+function drawMaps(maps, curves, state) {
+  const lobes = curves.filter((c) => c.aniso);
+  const first = lobes[0];
+  const pairs = first
+    ? Object.fromEntries(ANISOTROPY_CONVENTIONS.map((k) => [k, anisotropicAlphas(first.p.alpha, state.anisotropy, k)]))
+    : {};
+  const text = describeAnisotropy(
+    lobes.map((c) => c.aniso),
+    state,
+    { alpha: first?.p.alpha, of: first?.label },
+    pairs,
+  );
+  maps.draw(
+    lobes.map((c) => c.aniso),
+    text,
+  );
+}
+
 export function createNdfPlots(container, curves, state) {
   const linear = createPlot(container, linearSpec(curves));
   const log = createPlot(container, logSpec(curves, state));
   const tails = document.createElement('p');
   tails.className = 'tail-note';
   container.append(tails);
+  const maps = createSlopeMaps(container);
+  drawMaps(maps, curves, state);
   const drawLog = (next, nextState) => {
     log.setData(logSpec(next, nextState));
     tails.textContent = describeTails(tailsAt(next), nextState, TAIL_DEG);
@@ -64,6 +87,7 @@ export function createNdfPlots(container, curves, state) {
   drawLog(curves, state);
   return {
     drawLinear: (next) => linear.setData(linearSpec(next)),
+    drawMaps: (next, nextState) => drawMaps(maps, next, nextState),
     drawLog,
     /** The log plot's measured curve as uPlot holds it: its label and the (θh, value) points drawn. */
     measuredCurve() {
@@ -76,6 +100,7 @@ export function createNdfPlots(container, curves, state) {
       linear.dispose();
       log.dispose();
       tails.remove();
+      maps.dispose();
     },
   };
 }

@@ -13,10 +13,62 @@ export const ABOUT =
   'each D·(n·m) over the hemisphere: a density must give 1. Opened from the measured-BRDF widget (BRDF page), ' +
   'the log plot adds the NDF a measurement implies (black) and puts every curve over its own peak, so the ' +
   'measured tail is read against the five shapes at the fitted width. Choose Custom to draw a D you write in ' +
-  'GLSL as a sixth curve and sphere, at GGX’s α for the width, checked on the GPU beside the editor.';
+  'GLSL as a sixth curve and sphere, at GGX’s α for the width, checked on the GPU beside the editor. ' +
+  'Anisotropy goes beyond the talk, whose NDFs are all isotropic: it stretches GGX and Beckmann along a ' +
+  'tangent (Heitz 2014’s forms), the tangent running left to right across every sphere, and the slope maps show ' +
+  'D over the hemisphere of h. How one roughness and an anisotropy become the pair (αx, αy) differs between ' +
+  'Burley 2012, glTF’s KHR_materials_anisotropy and OpenPBR 1.1: the note under the maps says how.';
+
+/** The conventions of anisotropicAlphas (src/math/anisotropic.js), as the menu names them. */
+export const CONVENTION_LABELS = {
+  burley2012: 'Burley 2012 (Disney)',
+  gltf: 'glTF KHR_materials_anisotropy',
+  openpbr: 'OpenPBR 1.1',
+};
+
+/** What each convention keeps, in words (the forms of anisotropicAlphas). */
+const CONVENTION_RULES = {
+  burley2012: 'αx = α/s, αy = α·s with s = √(1 − 0.9a): the geometric mean √(αx·αy) stays α',
+  gltf: 'αx = α + (1 − α)a², αy = α: the tangent’s roughness rises towards 1, the bitangent’s stays α',
+  openpbr: 'αx = α·√(2/(1 + (1 − a)²)), αy = (1 − a)·αx: the mean of the squares (αx² + αy²)/2 stays α²',
+};
+
+const pairText = ([ax, ay]) => `(${ax.toPrecision(3)}, ${ay.toPrecision(3)})`;
+const widthText = (w) => (w === null ? 'no half maximum (D does not fall to half)' : `${w.toFixed(1)}°`);
+
+/**
+ * The note under the slope maps: the chosen convention's rule, the three conventions' pairs at the matched α, and
+ * each anisotropic lobe's half width along t and b. `pairs` is { convention: [αx, αy] } at α, the matched α of
+ * the NDF `of` (the first lobe's).
+ */
+export function describeAnisotropy(lobes, state, { alpha, of }, pairs) {
+  if (!lobes.length) return 'Choose GGX or Beckmann to see an anisotropic lobe.';
+  const a = state.anisotropy.toFixed(2);
+  const others = Object.entries(pairs)
+    .map(([k, pair]) => `${CONVENTION_LABELS[k]} ${pairText(pair)}`)
+    .join(', ');
+  const widths = lobes
+    .map((l) => `${l.label} ${widthText(l.widths[0])} along the tangent, ${widthText(l.widths[1])} along the bitangent`)
+    .join('; ');
+  return (
+    `${CONVENTION_LABELS[state.convention]}: ${CONVENTION_RULES[state.convention]}. At α = ${alpha.toPrecision(3)} ` +
+    `(${of}’s at a half width of ${state.hwhm}°) and anisotropy a = ${a}, (αx, αy) is ${others}. ` +
+    `Half widths: ${widths}.`
+  );
+}
 
 /** The functions behind the pictures, linked to their rows on the parity page. */
-export const TERMS_USED = ['ndfBlinnPhong', 'ndfBeckmann', 'ndfGGX', 'ndfABC', 'ndfSGD', 'microfacetBRDF'];
+export const TERMS_USED = [
+  'ndfBlinnPhong',
+  'ndfBeckmann',
+  'ndfGGX',
+  'ndfABC',
+  'ndfSGD',
+  'microfacetBRDF',
+  'ndfGGXAniso',
+  'ndfBeckmannAniso',
+  'anisotropicAlphas',
+];
 
 /** An NDF's matched parameters in words: "exponent 41.2", "a1 …, a2 …", "α …, p …" or "α …". */
 export const describeParams = (key, p) =>
@@ -28,10 +80,12 @@ export const describeParams = (key, p) =>
         ? `α ${p.alpha.toFixed(4)}, p ${p.p.toFixed(2)}`
         : `α ${p.alpha.toFixed(4)}`;
 
-/** The spheres in words: the light, and each NDF with its parameters and peak. */
+/** The spheres in words: the light, and each NDF with its parameters and peak (an anisotropic one, its pair). */
 export function describeSpheres(curves, state) {
-  const each = curves.map(
-    (c) => `${c.label} (${describeParams(c.key, c.p)}, peak D ${c.values[0].toPrecision(3)} /sr)`,
+  const each = curves.map((c) =>
+    c.aniso && state.anisotropy > 0
+      ? `${c.aniso.label} ((αx, αy) ${pairText(c.aniso.pair)}, stretched along the tangent, left to right)`
+      : `${c.label} (${describeParams(c.key, c.p)}, peak D ${c.values[0].toPrecision(3)} /sr)`,
   );
   return (
     `Spheres lit by one small light ${state.lightTheta}° from the view, exposure ${state.exposure}, F = 1 and ` +
@@ -102,10 +156,10 @@ const NDF_TEX = {
 
 /** The first chosen NDF, with the parameters that give it the matched half width. */
 export const FORMULA = declareFormula('ndf-explorer', (state) => {
-  const key = state.ndfs[0];
-  if (!key) return '\\sym{ndfs}{\\text{no distribution chosen}}';
+  const key = state.D[0];
+  if (!key) return '\\sym{D}{\\text{no distribution chosen}}';
   const [D, params] = NDF_TEX[key](state, state.hwhm * DEG);
   const width =
     `D(\\theta_{1/2}) = \\tfrac{1}{2}D(0),\\quad \\sym{hwhm}{\\theta_{1/2} =` + ` ${texNumber(state.hwhm, 1)}^\\circ}`;
-  return `\\begin{gathered}\\sym{ndfs}{${D}},\\quad ${params}\\\\ ${width}\\end{gathered}`;
+  return `\\begin{gathered}\\sym{D}{${D}},\\quad ${params}\\\\ ${width}\\end{gathered}`;
 });

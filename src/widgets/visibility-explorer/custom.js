@@ -25,7 +25,7 @@ export function createCustomV(container, io) {
   const area = createCustomArea(container, {
     ...io,
     slots: SLOTS,
-    chosen: (s) => (s.terms.includes(CUSTOM) ? ['V'] : []),
+    chosen: (s) => (s.V.includes(CUSTOM) ? ['V'] : []),
     planOf: (_, s) => planV(s),
   });
   const sphere = createCustomSphere(io.getRenderer);

@@ -43,7 +43,7 @@ export function visibilityCurves(state, customG = null) {
       return VISIBILITY_TERMS[key](a, params) * a.nl * a.nv;
     });
   const reference = evalTerm(REFERENCE);
-  const keys = state.terms.filter((key) => key !== CUSTOM || customG);
+  const keys = state.V.filter((key) => key !== CUSTOM || customG);
   return keys.map((key) => {
     const G = key === CUSTOM ? customG : evalTerm(key);
     const error = G.map((g, i) => (reference[i] > 1e-9 ? (100 * (g - reference[i])) / reference[i] : null));
@@ -51,7 +51,7 @@ export function visibilityCurves(state, customG = null) {
     return {
       key,
       label: termLabel('visibility', key),
-      ...seriesStyle(Object.keys(schema.terms.options).indexOf(key)),
+      ...seriesStyle(Object.keys(schema.V.options).indexOf(key)),
       G,
       error,
       worst: Math.max(...within.map(Math.abs)),
@@ -73,7 +73,9 @@ export function rimRatios(state) {
   const a = brdfAngles([Math.sin(t), 0, Math.cos(t)], [Math.sin(r), 0, Math.cos(r)]);
   const params = { alpha: state.alpha };
   const reference = VISIBILITY_TERMS[REFERENCE](a, params);
-  return state.terms
-    .filter((key) => key !== CUSTOM && key !== REFERENCE)
-    .map((key) => ({ key, label: termLabel('visibility', key), ratio: VISIBILITY_TERMS[key](a, params) / reference }));
+  return state.V.filter((key) => key !== CUSTOM && key !== REFERENCE).map((key) => ({
+    key,
+    label: termLabel('visibility', key),
+    ratio: VISIBILITY_TERMS[key](a, params) / reference,
+  }));
 }

@@ -2,6 +2,7 @@
 import { createPlot } from '../../core/ui/plot.js';
 import { ANGLES } from './model.js';
 import { angleAxisLabel } from './words.js';
+import { createAzimuthPlot } from './azimuth.js';
 
 const axis = (state) => ({
   xLabel: angleAxisLabel(state),
@@ -36,14 +37,18 @@ const errorSpec = (curves, state) => ({
 export function createVisibilityPlots(container, curves, state) {
   const gPlot = createPlot(container, gSpec(curves, state));
   const errorPlot = createPlot(container, errorSpec(curves, state));
+  const azimuth = createAzimuthPlot(container, state);
   return {
     draw(next, nextState) {
       gPlot.setData(gSpec(next, nextState));
       errorPlot.setData(errorSpec(next, nextState));
+      azimuth.draw(nextState);
     },
+    azimuthCurves: () => azimuth.curves(),
     dispose() {
       gPlot.dispose();
       errorPlot.dispose();
+      azimuth.dispose();
     },
   };
 }

@@ -3,6 +3,7 @@
 // among the terms.
 import { termOptions } from '../../math/catalogue/index.js';
 import { SLOTS } from '../../core/custom/slots.js';
+import { CONVENTION_LABELS } from '../ndf-explorer/words.js';
 
 export const schema = {
   // rough by default: the terms part most there (on the spheres too), and the smooth end is one drag away
@@ -14,8 +15,9 @@ export const schema = {
     label: 'Directions',
   },
   viewTheta: { type: 'number', min: 0, max: 85, step: 1, default: 60, label: 'View angle (view fixed)', unit: '°' },
-  terms: {
+  V: {
     type: 'set',
+    formerly: ['terms'],
     options: termOptions('visibility', undefined, { custom: true }),
     default: [
       'implicit',
@@ -33,4 +35,12 @@ export const schema = {
   exposure: { type: 'number', min: 0.1, max: 20, step: 0.1, default: 1, label: 'Sphere exposure' },
   codeV: { type: 'code', slot: 'V', default: SLOTS.V.starter, label: 'Your V (GLSL)' },
   params: { type: 'params', default: {}, label: 'Sliders of your code' },
+  // beyond the talk (issue 28): the azimuth plot's surface, α stretched along the tangent by one convention
+  anisotropy: { type: 'number', min: 0, max: 1, step: 0.01, default: 0.6, label: 'Anisotropy (azimuth plot)' },
+  convention: {
+    type: 'enum',
+    options: CONVENTION_LABELS,
+    default: 'burley2012',
+    label: 'Anisotropy convention',
+  },
 };

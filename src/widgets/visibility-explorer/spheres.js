@@ -6,6 +6,7 @@ import { VISIBILITY_TERMS } from '../../math/brdf.js';
 import { REFERENCE, RIM_DEG, rimRatios } from './model.js';
 import { describeRim } from './words.js';
 import { termDefines, termEntry } from '../../math/catalogue/index.js';
+import { sharedUniforms } from '../../math/catalogue/uniforms.js';
 
 /** The terms of a visibility term's sphere: GGX D, F = 1. */
 export const cellTerms = (key) => ({ F: 'one', D: 'ggx', V: key });
@@ -13,7 +14,7 @@ export const cellTerms = (key) => ({ F: 'one', D: 'ggx', V: key });
 const uniformsOf = (state) => ({
   uLightDir: lightDirFromAngles(state.lightTheta, 135),
   uExposure: state.exposure,
-  uAlpha: state.alpha,
+  ...sharedUniforms({ alphaPair: [state.alpha, state.alpha] }),
 });
 
 /** The sphere of the user's V: its own program (custom.js's cell: { own, uniforms }). */

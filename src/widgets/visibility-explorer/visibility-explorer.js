@@ -12,7 +12,7 @@ import { ABOUT, TERMS_USED, TITLE, describeSpheres } from './words.js';
 
 export { schema };
 
-const CURVE_KEYS = ['alpha', 'config', 'viewTheta', 'terms', 'codeV', 'params'];
+const CURVE_KEYS = ['alpha', 'config', 'viewTheta', 'V', 'codeV', 'params', 'anisotropy', 'convention'];
 
 export function createVisibilityExplorer(container, initialState = {}, { onStateChange, locked } = {}) {
   let explorer = null; // made below: the custom V's hooks run only once it is
@@ -50,6 +50,8 @@ export function createVisibilityExplorer(container, initialState = {}, { onState
     getWorstErrors: () => Object.fromEntries(explorer.curves().map((c) => [c.key, c.worst])),
     /** Each curve's G over ANGLES (model.js), as the G plot draws it. */
     getCurves: () => Object.fromEntries(explorer.curves().map((c) => [c.key, Array.from(c.G)])),
+    /** The azimuth plot's curves: label → G1 over 0°–180° (azimuth.js). */
+    getAzimuthCurves: () => explorer.plots.azimuthCurves(),
     dispose() {
       customV.dispose();
       explorer.dispose();

@@ -11,7 +11,8 @@ export const ABOUT =
   'height-correlated Smith. With l and v mirrored about n, h = n and both Cook-Torrance and Kelemen give G = 1 ' +
   'exactly. On the spheres (GGX D, F = 1) the differences show at the silhouettes, where the ' +
   'angles are grazing. Choose Custom to draw a V you write in GLSL beside them, checked on the GPU beside the ' +
-  'editor.';
+  'editor. The last plot goes beyond the talk, whose surfaces are isotropic: over an anisotropic surface, rougher ' +
+  'along its tangent, G1 depends on the direction’s azimuth.';
 
 /** The functions behind the pictures, linked to their rows on the parity page. */
 export const TERMS_USED = [
@@ -24,7 +25,25 @@ export const TERMS_USED = [
   'visibilitySchlickGGX',
   'visibilitySmithBeckmannSeparable',
   'microfacetBRDF',
+  'smithG1GGXAniso',
+  'smithG1BeckmannAniso',
+  'anisotropicAlphas',
 ];
+
+/**
+ * Under the azimuth plot: Smith's anisotropic Λ, and where each anisotropic G1 starts (along the tangent) and ends
+ * (along the bitangent). curves: azimuth.js's, [GGX, Beckmann, …], over 0°–180° in steps of 1°.
+ */
+export function describeAzimuth(curves, [ax, ay], state) {
+  const [ggx, beckmann] = curves;
+  const ends = (c) => `from ${c.values[0].toFixed(4)} at φ = 0° to ${c.values[90].toFixed(4)} at φ = 90°`;
+  return (
+    `Smith’s Λ over an anisotropic surface is the isotropic Λ at the roughness projected on the direction’s ` +
+    `azimuth, α(φ) = √(cos²φ·αx² + sin²φ·αy²) (Heitz 2014), here from αx = ${ax.toPrecision(3)} along the ` +
+    `tangent to αy = ${ay.toPrecision(3)} along the bitangent. At θ = ${state.viewTheta}° from n, GGX’s G1 runs ` +
+    `${ends(ggx)}, meeting the isotropic G1 at αx and at αy there; Beckmann’s runs ${ends(beckmann)}.`
+  );
+}
 
 /** The x axis of both plots, by how l and v move. */
 export const angleAxisLabel = (state) =>
@@ -82,11 +101,11 @@ const V_TEX = {
 
 /** V = G / ((n·l)(n·v)) and the first chosen term, with the state's α. */
 export const FORMULA = declareFormula('visibility-explorer', (state) => {
-  const key = state.terms[0];
+  const key = state.V[0];
   const a = `\\sym{alpha}{${texNumber(state.alpha, 2)}}`;
   const a2 = `${texNumber(state.alpha ** 2)}`;
   const k = texNumber(state.alpha / 2);
   const V = 'V(\\mathbf{l},\\mathbf{v}) = \\frac{G(\\mathbf{l},\\mathbf{v},\\mathbf{h})}{\\nl \\nv }';
-  const term = key ? `\\sym{terms}{${V_TEX[key](a2, a, k)}}` : '\\sym{terms}{\\text{no term chosen}}';
+  const term = key ? `\\sym{V}{${V_TEX[key](a2, a, k)}}` : '\\sym{V}{\\text{no term chosen}}';
   return `\\begin{gathered}${V},\\quad \\alpha = ${a},\\ \\alpha^2 = ${a2}\\\\ ${term}\\end{gathered}`;
 });
