@@ -36,7 +36,9 @@ function sphereFigure(parent, caption) {
 
 /** The hidden NDF's plot: its D(θh) among the explorer's five curves at this width, on its log plot's axes. */
 export function hiddenNdfPlot(params, hidden) {
-  const curves = ndfCurves({ hwhm: params.hwhm, abcA2: params.abcA2, sgdP: params.sgdP, D: NDF_KEYS });
+  // isotropic, as the talk's NDFs are (at anisotropy 0 every convention gives αx = αy = α)
+  const { hwhm, abcA2, sgdP } = params;
+  const curves = ndfCurves({ hwhm, abcA2, sgdP, D: NDF_KEYS, anisotropy: 0, convention: 'burley2012' });
   const { clip, ...axes } = logAxes(curves);
   return {
     ...axes,

@@ -3,9 +3,16 @@
 // surface. f is 0 when l or v is at or below the horizon, and when l = -v leaves no half vector.
 import { CATALOGUE } from './catalogue/index.js';
 
-/** A family's terms as { key: evaluate } (see src/math/catalogue/types.js for each family's arguments). */
+/**
+ * A family's terms as { key: evaluate } (see src/math/catalogue/types.js for each family's arguments): the terms
+ * of the cosines alone, so not the anisotropic ones, which read the whole microfacet input.
+ */
 const evaluators = (family) =>
-  Object.fromEntries(Object.values(CATALOGUE[family].terms).map((term) => [term.key, term.evaluate]));
+  Object.fromEntries(
+    Object.values(CATALOGUE[family].terms)
+      .filter((term) => term.evaluate)
+      .map((term) => [term.key, term.evaluate]),
+  );
 
 /** Each F term of cos = l·h and the material params { f0, eta, k }. */
 export const FRESNEL_TERMS = evaluators('fresnel');
