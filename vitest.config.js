@@ -87,8 +87,10 @@ export default defineConfig({
           name: 'browser',
           include: quick ? QUICK_BROWSER : ['tests/browser/**/*.test.js'],
           globalSetup: ['tests/browser/global-setup.js'],
-          testTimeout: 60_000,
-          hookTimeout: 120_000,
+          // a test's budget (helpers.js TEST_BUDGET_MS): a browser test waits on conditions, each wait bounded by
+          // WAIT_MS (180 s), so a loaded machine (two CPU hogs beside the suite: up to ~3 times as long) fails none
+          testTimeout: 240_000,
+          hookTimeout: 240_000,
           maxWorkers: 2,
         },
       },

@@ -1,8 +1,8 @@
 // Accessibility of every registered widget in a real Chromium: each canvas says in words what it shows and
 // says something new when the state changes, every control is reachable by Tab, the interactive canvases
 // answer the keyboard, and the words carry the numbers (checked against closed forms and the F0 table).
-import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
-import { TEST_BUDGET_MS, WAIT_MS, getState, launchBrowser, open, shot, untilIdle, widget } from './helpers.js';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
+import { WAIT_MS, getState, launchBrowser, open, shot, untilIdle, widget } from './helpers.js';
 import { WIDGETS } from '../../src/widgets/registry.js';
 import { sphereZoneFractions } from '../../src/math/zones.js';
 import { materialByKey } from '../../src/math/materials.js';
@@ -30,8 +30,6 @@ const CHANGES = {
 /** Extra URL state to keep software rendering quick (fewer path-traced samples). */
 const QUICK = { media: '&samples=16', 'material-lab': '&refSamples=128', 'lighting-models': '&refSamples=128' };
 const STATIC_PICTURE = /^Four metal spheres/; // the surfaces widget's room reflections do not depend on its state
-
-vi.setConfig({ testTimeout: TEST_BUDGET_MS });
 
 let browser;
 beforeAll(async () => {

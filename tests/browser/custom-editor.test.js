@@ -2,14 +2,13 @@
 // for each slot the widget offers, drawn as the term predicts (the truth: the JS reference terms of src/math, and
 // the polar plot's geometry); compile errors on the user's line with the last picture kept; the loop check; the
 // URL and postMessage carrying the code; code from a link waiting for a click; a lost context and its recovery.
-import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { baseUrl, getState, launchBrowser, open, shot, typeCode, untilIdle, widget, withPixels } from './helpers.js';
 import { defaultState } from '../../src/core/framework/state.js';
 import { schema } from '../../src/widgets/brdf-lobe/schema.js';
 import { lobePeak, lobeScene } from '../../src/widgets/brdf-lobe/model.js';
 
 // each test types code that is compiled in software WebGL, some twice: one took over 60 s under a load average of 44
-vi.setConfig({ testTimeout: 180_000 });
 
 let browser;
 beforeAll(async () => {

@@ -1,7 +1,7 @@
 // User-written terms (issue 13) in the material lab, ndf-explorer, visibility-explorer and diffuse-explorer, in a
 // real Chromium: code typed into the editor as a user types it, drawn as the term predicts (the truth: closed
 // forms and the JS terms of src/math), a compile error keeping the last picture, and the URL carrying the code.
-import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { getState, launchBrowser, open, shot, typeCode, untilIdle, widget, withPixels } from './helpers.js';
 import { stateToParams } from '../../src/core/framework/state.js';
 import { srgbToLinear } from '../../src/math/color.js';
@@ -14,7 +14,6 @@ import { matchNdfWidths } from '../../src/math/ndf-width.js';
 import { ndfGGX } from '../../src/math/ndf.js';
 
 // typed code compiled in software WebGL, and the lab's reference converged: over 60 s under a load average of 27
-vi.setConfig({ testTimeout: 240_000 });
 
 let browser;
 beforeAll(async () => {

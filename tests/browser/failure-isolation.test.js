@@ -2,12 +2,10 @@
 // redeploy under an open page) or whose create throws says so in its own place with Retry, and the page's other
 // widgets still mount; a language tag Intl rejects (WebKitGTK under LANG=C) does not stop the plots; embed.html
 // says what to do when its scripts are refused (a sandboxed frame without CORS), with no script of its own.
-import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { openPage } from './harness.js';
-import { TEST_BUDGET_MS, WAIT_MS, baseUrl, launchBrowser, otherOrigin } from './helpers.js';
+import { WAIT_MS, baseUrl, launchBrowser, otherOrigin } from './helpers.js';
 import { WIDGETS } from '../../src/widgets/registry.js';
-
-vi.setConfig({ testTimeout: TEST_BUDGET_MS });
 
 let browser;
 // each page in a context of its own: no service worker of an earlier page serves the chunk that is to be aborted

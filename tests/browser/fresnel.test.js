@@ -1,7 +1,6 @@
 // The Fresnel chapter in a real Chromium: widgets, URL state, notices, zone shares, idling, no WebGL2.
-import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import {
-  TEST_BUDGET_MS,
   WAIT_MS,
   afterFrames,
   distinctColors,
@@ -16,8 +15,6 @@ import {
 } from './helpers.js';
 import { sphereZoneFractions } from '../../src/math/zones.js';
 import { weightedSphereShares } from '../support/zone-shares.js';
-
-vi.setConfig({ testTimeout: TEST_BUDGET_MS });
 
 let browser;
 beforeAll(async () => {

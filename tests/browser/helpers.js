@@ -6,7 +6,7 @@ export const baseUrl = () => inject('baseUrl');
 export { launchBrowser, settle };
 
 /**
- * A browser test's time budget where a file sets its own (vi.setConfig({ testTimeout })), and the bound of one wait
+ * A browser test's time budget (the browser project's testTimeout in vitest.config.js), and the bound of one wait
  * for a condition inside it, below the budget so that the wait's own message comes first. Waits are for conditions,
  * never for a time (untilIdle, afterFrames, expect.poll), so these bound only what a loaded machine takes: with two
  * CPU hogs beside the suite a test took up to ~3 times as long as on an idle machine.

@@ -6,7 +6,7 @@ import { tmpdir } from 'node:os';
 import { extname, join, normalize } from 'node:path';
 import { afterAll, beforeAll, beforeEach, describe, expect, it } from 'vitest';
 import { ROOT, SUB_PATH, openPage, settle } from './harness.js';
-import { launchBrowser } from './helpers.js';
+import { TEST_BUDGET_MS, WAIT_MS, launchBrowser } from './helpers.js';
 
 const TYPES = {
   '.html': 'text/html',
@@ -118,7 +118,7 @@ describe('offline, after one visit', () => {
     const page = await visit('index.html');
     await page.waitForFunction(
       () => document.querySelector('.offline-status')?.textContent.includes('saved on this device'),
-      { timeout: 60_000 },
+      { timeout: WAIT_MS },
     );
     await page.waitForFunction(async () => (await navigator.serviceWorker.ready).active.state === 'activated', {
       timeout: 30_000,
@@ -135,7 +135,7 @@ describe('offline, after one visit', () => {
     async () => {
       const context = await browser.createBrowserContext(); // a device of its own: its storage and service worker
       const page = await openPage(context, site.url, 'index.html', { width: 1280, height: 800 });
-      await page.waitForSelector('.offline-status', { timeout: 60_000 });
+      await page.waitForSelector('.offline-status', { timeout: WAIT_MS });
       await page.waitForSelector('.chapter-picture');
       for (const [width, height] of [
         [1280, 800],
@@ -166,13 +166,13 @@ describe('offline, after one visit', () => {
       );
       await page.goto('about:blank'); // no page left using it: the registration goes
       await page.goto(new URL('index.html', site.url).href, { waitUntil: 'load' });
-      await page.waitForFunction(() => globalThis.__shadingLab?.offline?.ready, { timeout: 60_000 });
+      await page.waitForFunction(() => globalThis.__shadingLab?.offline?.ready, { timeout: WAIT_MS });
       expect(await page.evaluate(() => globalThis.__shadingLab.offline.announced)).toBe(false);
       expect(await page.$('.offline-status')).toBeNull();
       expect(page.errors).toEqual([]);
       await context.close();
     },
-    120_000,
+    TEST_BUDGET_MS,
   );
 
   it(`every page (${PAGES.length}) loads with no network`, async () => {
@@ -200,7 +200,7 @@ describe('offline, after one visit', () => {
     for (const name of OFFLINE_WIDGETS) {
       await page.goto(new URL(`embed.html?w=${name}`, site.url).href, { waitUntil: 'load' });
       const mounted = await page
-        .waitForFunction((n) => globalThis.__shadingLab?.widgets?.[n], { timeout: 60_000 }, name)
+        .waitForFunction((n) => globalThis.__shadingLab?.widgets?.[n], { timeout: WAIT_MS }, name)
         .catch(() => null);
       const blocked = await page.$$eval('.blocking-message', (m) => m.map((b) => b.textContent).join(' '));
       if (!mounted || blocked) failed.push(`${name}: ${mounted ? blocked : 'not mounted in 60 s'}`);
@@ -219,7 +219,7 @@ describe('offline, after one visit', () => {
     const listed = await page
       .waitForFunction(
         (n) => document.querySelectorAll('#exercise-list a').length === n,
-        { timeout: 30_000 },
+        { timeout: WAIT_MS },
         EXERCISES.length,
       )
       .then(() => true)
@@ -236,7 +236,7 @@ describe('offline, after one visit', () => {
       await page.$eval(`#exercise-list a[href="#${id}"]`, (a) => a.click());
       await page.waitForFunction(
         (i) => globalThis.__shadingLab.exercise?.id === i && globalThis.__shadingLab.exercise.ready,
-        { timeout: 30_000 },
+        { timeout: WAIT_MS },
         id,
       );
     }
@@ -263,7 +263,7 @@ describe('offline, after one visit', () => {
       expect(await page.$('meta[name="shading-lab-build"]')).toBeNull(); // the cached version still runs
       const reload = await page.waitForFunction(
         () => [...document.querySelectorAll('.offline-status button')].find((b) => b.textContent.includes('Reload')),
-        { timeout: 60_000 },
+        { timeout: WAIT_MS },
       );
       expect(await page.$eval('.offline-status', (s) => s.textContent)).toMatch(/new version/);
       await Promise.all([page.waitForNavigation({ waitUntil: 'load' }), reload.click()]);
@@ -275,6 +275,6 @@ describe('offline, after one visit', () => {
       site.state.online = true;
       await page.close();
     },
-    120_000,
+    TEST_BUDGET_MS,
   );
 });

@@ -3,9 +3,8 @@
 // screen; on the exercises page the question, the control that answers it and Check are on the screen together,
 // none under another element (elementFromPoint at their centres); the rendering chapter's captions sit beside the
 // pictures, not over them (the canvas under each caption is unpainted), and its table stays in its box.
-import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import {
-  TEST_BUDGET_MS,
   WAIT_MS,
   baseUrl,
   capSamples,
@@ -19,8 +18,6 @@ import {
 import { openPage } from './harness.js';
 
 const PHONE = { width: 390, height: 844, isMobile: true, hasTouch: true, deviceScaleFactor: 1 };
-
-vi.setConfig({ testTimeout: TEST_BUDGET_MS });
 
 let browser;
 beforeAll(async () => {

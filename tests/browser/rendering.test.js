@@ -1,7 +1,7 @@
 // The rendering chapter in a real Chromium: the material lab's images read back from the canvas against the
 // talk's definitions (c_light, the white furnace), importance sampling converging on the reference, and
 // environment files checked before they are used.
-import { afterAll, beforeAll, describe, expect, it, vi } from 'vitest';
+import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { baseUrl, getState, launchBrowser, open, shot, untilIdle, widget, withPixels } from './helpers.js';
 import { openPage } from './harness.js';
 import { linearToSrgb, srgbToLinear } from '../../src/math/color.js';
@@ -20,7 +20,6 @@ const RES = 192; // the lab's image size (src/widgets/material-lab/material-lab.
 const texelCentre = (points) =>
   points.map((p) => p.map((c) => ((Math.floor((c / (2 * EXTENT) + 0.5) * RES) + 0.5) / RES - 0.5) * 2 * EXTENT));
 // the lab's Monte Carlo references converge in software WebGL: over 60 s a test under a load average of 28
-vi.setConfig({ testTimeout: 240_000 });
 
 let browser;
 beforeAll(async () => {

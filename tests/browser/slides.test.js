@@ -3,12 +3,10 @@
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { gzipSync } from 'node:zlib';
-import { afterAll, beforeAll, describe, expect, it, onTestFinished, vi } from 'vitest';
+import { afterAll, beforeAll, describe, expect, it, onTestFinished } from 'vitest';
 import { ROOT, openPage } from './harness.js';
 import { longDeck, serveDecks } from './decks.js';
-import { TEST_BUDGET_MS, WAIT_MS, afterFrames, baseUrl, launchBrowser, untilIdle, withPixels } from './helpers.js';
-
-vi.setConfig({ testTimeout: TEST_BUDGET_MS });
+import { WAIT_MS, afterFrames, baseUrl, launchBrowser, untilIdle, withPixels } from './helpers.js';
 
 let browser;
 let decks;
