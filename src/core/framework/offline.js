@@ -44,10 +44,6 @@ function say(text, action) {
   else document.body.prepend(box);
 }
 
-// said at once, not only when the copy is saved (seconds later): a page with no widget has its hooks from the start,
-// so a wait for its pending work sees them
-publish('offline', { ready: false, announced: false });
-
 const updateSW = registerSW({
   immediate: true,
   onOfflineReady: () => {
