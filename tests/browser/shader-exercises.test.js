@@ -33,16 +33,26 @@ async function choose(target, id) {
   await target.waitForSelector('.exercise-code .cm-content');
 }
 
-/** Replaces the editor's text as a user would: select all, then type (one insertText), and checks it arrived. */
+/**
+ * Replaces the editor's text as a user would: click into it, select all, then type (one insertText), and checks it
+ * arrived. The keys go where the focus is, so the click is repeated until the editor holds it: in a frame that is
+ * still laying out on a loaded machine, the first click can land before the editor is where it was measured.
+ */
 async function setCode(page, target, code) {
-  await target.click('.exercise-code .cm-content');
+  const focused = () => target.evaluate(() => Boolean(document.activeElement?.closest('.exercise-code')));
+  for (let tries = 0; tries < 5 && !(await focused()); tries++) {
+    await target.click('.exercise-code .cm-content');
+    await target
+      .waitForFunction(() => document.activeElement?.closest('.exercise-code'), { timeout: 5_000 })
+      .catch(() => {});
+  }
   await page.keyboard.down('Control');
   await page.keyboard.press('a');
   await page.keyboard.up('Control');
   await page.keyboard.press('Backspace');
   await page.keyboard.sendCharacter(code);
-  const text = await target.$$eval('.exercise-code .cm-line', (lines) => lines.map((l) => l.textContent).join('\n'));
-  expect(text).toBe(code); // a final newline is an empty last line
+  const text = () => target.$$eval('.exercise-code .cm-line', (lines) => lines.map((l) => l.textContent).join('\n'));
+  await expect.poll(text, { timeout: 10_000 }).toBe(code); // a final newline is an empty last line
 }
 
 /** Presses Check and returns the feedback: { ok, summary, details }. */
