@@ -12,6 +12,10 @@ const cosine = (label, words) => ({ label, words, limits: [-1, 1.001] });
 /** A cosine that builds a unit vector (the diffuse slot's l and v): within [-1, 1]. */
 const vectorCosine = (label, words) => ({ label, words, limits: [-1, 1] });
 const alpha = { label: 'α', words: 'roughness α', limits: [0, 10] };
+/** The roughness along one axis of the tangent frame (the anisotropic slots' vec2 alpha). */
+const alphaAxis = (axis) => ({ label: `α${axis}`, words: `the roughness α${axis} along ${axis}`, limits: [0, 10] });
+/** An azimuth from the tangent t (x), in degrees. */
+const azimuth = (label, words) => ({ label, words, limits: [-360, 360] });
 
 /** F's vec3 F0 takes a grey value on each channel (evaluateCustom's inputs: D [nh, alpha], F [f0r, f0g, f0b, lh]…). */
 const grey = (x) => [x, x, x];
@@ -26,6 +30,19 @@ export function directionsOf(nl, nv, cosPhi) {
   const sinPhi = Math.sqrt(Math.max(0, (1 - cosPhi) * (1 + cosPhi)));
   return { l: [sl, 0, nl].map(f32), v: [sv * cosPhi, sv * sinPhi, nv].map(f32) };
 }
+
+/**
+ * A unit vector of the tangent frame (x = t, y = b, z = n) from its cosine with n and its azimuth from t in degrees,
+ * each component rounded to float32: what an anisotropic slot receives.
+ */
+export function directionAt(cosTheta, phiDeg) {
+  const s = Math.sqrt(Math.max(0, (1 - cosTheta) * (1 + cosTheta)));
+  const phi = (phiDeg * Math.PI) / 180;
+  return [s * Math.cos(phi), s * Math.sin(phi), cosTheta].map(f32);
+}
+
+/** The reference of an anisotropic slot: the term's float64 function over its arguments, each from `values`. */
+const byArgs = (entry, values) => entry.js(...entry.args.map((name) => values[name]));
 
 /** The cosines the rounded vectors really have: what the reference must be evaluated at. */
 function cosinesOf(l, v, cosPhi) {
@@ -65,6 +82,43 @@ export const GRADED_SLOTS = {
     gpuArgs: (p) => [...grey(p.f0), p.lh].map(f32),
     // a term that reads η (the exact dielectric) gets the η whose F0 this is, unless the exercise fixes it
     reference: (entry, p, fixed) => entry.evaluate(f32(p.lh), { eta: iorFromF0(f32(p.f0)), ...fixed, f0: f32(p.f0) }),
+  },
+  // h from its cosine with n and its azimuth from the tangent: D is stretched along the tangent frame's axes
+  DAniso: {
+    family: 'ndf',
+    value: 'D',
+    gives: ['hx', 'hy', 'hz', 'alphaX', 'alphaY'],
+    axes: {
+      nh: cosine('n·h', 'the cosine n·h'),
+      phiH: azimuth('φh', 'the azimuth φh of h from the tangent t, in degrees'),
+      alphaX: alphaAxis('x'),
+      alphaY: alphaAxis('y'),
+    },
+    gpuArgs: (p) => [...directionAt(p.nh, p.phiH), p.alphaX, p.alphaY].map(f32),
+    reference: (entry, p) => {
+      const [hx, hy, hz] = directionAt(p.nh, p.phiH);
+      return byArgs(entry, { hx, hy, hz, alphaX: f32(p.alphaX), alphaY: f32(p.alphaY) });
+    },
+  },
+  // l in the plane of t and n at the azimuth φl, v at φv: Λ's projected roughness depends on each direction's own
+  VAniso: {
+    family: 'visibility',
+    value: 'V',
+    gives: ['lx', 'ly', 'lz', 'vx', 'vy', 'vz', 'alphaX', 'alphaY'],
+    axes: {
+      nl: cosine('n·l', 'the cosine n·l'),
+      phiL: azimuth('φl', 'the azimuth φl of l from the tangent t, in degrees'),
+      nv: cosine('n·v', 'the cosine n·v'),
+      phiV: azimuth('φv', 'the azimuth φv of v from the tangent t, in degrees'),
+      alphaX: alphaAxis('x'),
+      alphaY: alphaAxis('y'),
+    },
+    gpuArgs: (p) => [...directionAt(p.nl, p.phiL), ...directionAt(p.nv, p.phiV), p.alphaX, p.alphaY].map(f32),
+    reference: (entry, p) => {
+      const [lx, ly, lz] = directionAt(p.nl, p.phiL);
+      const [vx, vy, vz] = directionAt(p.nv, p.phiV);
+      return byArgs(entry, { lx, ly, lz, vx, vy, vz, alphaX: f32(p.alphaX), alphaY: f32(p.alphaY) });
+    },
   },
   diffuse: {
     family: 'diffuse',
@@ -107,9 +161,10 @@ export function referenceProblems(slotKey, key, params) {
   if (!Object.hasOwn(terms, key))
     return [`reference.term: ${JSON.stringify(key)} is not a ${slot.family} term (${Object.keys(terms).join(', ')})`];
   const entry = termEntry(slot.family, key);
-  if (!entry.evaluate) return [`reference.term: "${key}" is not a pointwise function`];
+  // an anisotropic slot calls the term's own function over the fields it gives; the others, the family's convention
+  if (!(slot.gives ? entry.js : entry.evaluate)) return [`reference.term: "${key}" is not a pointwise function`];
   const problems = [];
-  const angles = slot.family === 'visibility' ? ['nl', 'nv'] : ANGLES_OF[slot.family];
+  const angles = slot.gives ?? (slot.family === 'visibility' ? ['nl', 'nv'] : ANGLES_OF[slot.family]);
   for (const arg of entry.args) {
     if (Object.hasOwn(entry.params, arg) || angles.includes(arg)) continue;
     problems.push(`reference.term: "${key}" reads ${arg}, which ${slotKey}'s function does not get`);

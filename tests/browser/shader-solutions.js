@@ -102,6 +102,34 @@ const F82_TINT = `vec3 customF(vec3 f0, float lh) {
 }
 `;
 
+const GGX_ANISO = ({ guard = true, scale = 'h.xy / a', norm = 'a.x * a.y' } = {}) => `float customDAniso(vec3 h, vec2 alpha) {
+  ${guard ? 'if (!(h.z > 0.0)) return 0.0;' : ''}
+  vec2 a = clamp(alpha, 1e-4, 4.0);
+  vec2 s = ${scale};
+  float d = dot(s, s) + h.z * h.z;
+  return 1.0 / (PI * ${norm} * d * d);
+}
+`;
+
+// the exercise's starter with projectedAlpha written: cos φ = wx / sin θ, sin φ = wy / sin θ
+const PROJECTED = ({ guard = true, cos2 = 'c * c', sin2 = 's * s' } = {}) => `float projectedAlpha(vec3 w, vec2 alpha) {
+  float sinTheta = length(w.xy);
+  ${guard ? 'if (!(sinTheta > 0.0)) return alpha.x;' : ''}
+  float c = w.x / sinTheta;
+  float s = w.y / sinTheta;
+  return sqrt(${cos2} * alpha.x * alpha.x + ${sin2} * alpha.y * alpha.y);
+}
+
+float customVAniso(vec3 l, vec3 v, vec2 alpha) {
+  if (!(l.z > 0.0 && v.z > 0.0)) return 0.0;
+  float aL = projectedAlpha(l, alpha);
+  float aV = projectedAlpha(v, alpha);
+  float rootL = sqrt(l.z * l.z + aL * aL * dot(l.xy, l.xy));
+  float rootV = sqrt(v.z * v.z + aV * aV * dot(v.xy, v.xy));
+  return 2.0 / (v.z * rootL + l.z * rootV);
+}
+`;
+
 export const SHADER_SOLUTIONS = {
   'shader-schlick': {
     correct: SCHLICK,
@@ -266,6 +294,55 @@ export const SHADER_SOLUTIONS = {
         starter: true,
         summary:
           /^At n·h = 0\.999\d*, α = (1e-4|3e-4|0\.001|0\.003|0\.01) your D is [\d.]+; the reference is [\d.]+\.$/,
+      },
+    ],
+  },
+  'shader-ggx-aniso': {
+    correct: GGX_ANISO(),
+    mistakes: [
+      {
+        // hx/αy, hy/αx: at grazing h across the tangent (φh = 90°) the swap reads αx = 2 where αy = 0.02 belongs,
+        // 1/(π·0.04·(1/4)²) ≈ 130 against 1/(π·0.04·(1/0.02²)²) ≈ 1.3e-6
+        name: 'αx and αy swapped',
+        code: GGX_ANISO({ scale: 'h.xy / a.yx' }),
+        summary: said('n·h = 1e-4, φh = 90, αx = 2, αy = 0.02', 'D', '130', '1.3e-6'),
+      },
+      {
+        // h.z = 0: the sum is (1/2)² along t at αx = 2, so D = 1/(π·0.04·(1/4)²) ≈ 130 where the reference is 0
+        name: 'no zero below the horizon',
+        code: GGX_ANISO({ guard: false }),
+        summary: said('n·h = 0, φh = 0, αx = 2, αy = 0.02', 'D', '130', '0'),
+      },
+      {
+        // αx² in place of αx αy: 100× where αy/αx = 100, and the excess in tolerances saturates where D is large:
+        // across the tangent (φh = 90°, where D at αy = 1 is tens), at any of the n·h near the peak (float32 ties)
+        name: 'the isotropic normalisation 1/(π α²) with α = αx',
+        code: GGX_ANISO({ norm: 'a.x * a.x' }),
+        summary: /^At n·h = 0\.\d+, φh = 90, αx = 0\.01, αy = 1 your D is 3200; the reference is 32\.$/,
+      },
+    ],
+  },
+  'shader-smith-aniso': {
+    correct: PROJECTED(),
+    mistakes: [
+      {
+        // cos² and sin² swapped: along t at αx = 2, αy = 0.05, r(w) ≈ 0.05 in place of 2 for both grazing directions,
+        // V = 2/(2·1e-4·0.05) = 2e5 against 2/(2·1e-4·2) = 5000
+        name: 'cos²φ and sin²φ swapped',
+        code: PROJECTED({ cos2: 's * s', sin2: 'c * c' }),
+        summary: said('n·l = 1e-4, φl = 0, n·v = 1e-4, φv = 0, αx = 2, αy = 0.05', 'V', '2e5', '5000'),
+      },
+      {
+        // along n (n·v = 1) sin θ = 0 and cos φ = 0/0: the first input with v along n and l above the horizon
+        name: 'no guard where the azimuth has no meaning: 0/0',
+        code: PROJECTED({ guard: false }),
+        summary: said('n·l = 1e-4, φl = 0, n·v = 1, φv = 0, αx = 0.05, αy = 0.05', 'V', 'NaN', '40'),
+      },
+      {
+        // αx in every azimuth: across t (φ = 90°) at αy = 10 αx, both grazing, r(w) ≈ 0.05 in place of 0.5
+        name: 'the isotropic α = αx (the starter)',
+        starter: true,
+        summary: said('n·l = 1e-4, φl = 90, n·v = 1e-4, φv = 90, αx = 0.05, αy = 0.5', 'V', '2e5', '20000'),
       },
     ],
   },

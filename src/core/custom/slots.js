@@ -22,13 +22,14 @@ import { ALPHA_ANISO_MAX } from '../../math/anisotropic.js';
 
 /**
  * @typedef {object} Slot
- * @property {'D' | 'DAniso' | 'V' | 'F' | 'diffuse' | 'brdf'} key
+ * @property {'D' | 'DAniso' | 'V' | 'VAniso' | 'F' | 'diffuse' | 'brdf'} key
  * @property {string} fn the GLSL function the user writes
  * @property {string} signature its declaration
  * @property {'float' | 'vec3'} returns
  * @property {SlotArg[]} args
  * @property {'ndf' | 'visibility' | 'fresnel' | 'diffuse' | null} family the catalogue family it stands beside
- *   (null: none, for a whole BRDF and for the anisotropic D, whose references are src/math/anisotropic.js's)
+ *   (null: none, for a whole BRDF and for the anisotropic D and V, whose references are src/math/anisotropic.js's;
+ *   the anisotropic V is written only in the shader exercises, which grade it against the catalogue's term)
  * @property {string} reference the catalogue key (of `family`, or of the diffuse family for 'brdf'; for 'DAniso' a
  *   key of references.js's anisotropic NDFs) the checks compare with by default
  * @property {string} starter GLSL text, a correct term
@@ -90,6 +91,18 @@ float customV(float nl, float nv, float alpha) {
   float rootV = sqrt(v * v + a2 * (1.0 - v) * (1.0 + v));
   float rootL = sqrt(l * l + a2 * (1.0 - l) * (1.0 + l));
   return 2.0 / (l * rootV + v * rootL);
+}
+`;
+
+const STARTER_V_ANISO = `// Height-correlated Smith for anisotropic GGX (Heitz 2014), as the talk's V = G / ((n·l)(n·v)), l and v
+// in the tangent frame (x = t, y = b, z = n). Λ projects the roughness on each direction's azimuth φ:
+// α(φ)² sin²θ = αx² wx² + αy² wy², so r(w) = sqrt(wz² + αx² wx² + αy² wy²) = wz (1 + 2Λ(w)).
+float customVAniso(vec3 l, vec3 v, vec2 alpha) {
+  if (!(l.z > 0.0 && v.z > 0.0)) return 0.0;
+  vec2 a = clamp(alpha, 1e-4, 4.0);
+  float rootL = length(vec3(a * l.xy, l.z));
+  float rootV = length(vec3(a * v.xy, v.z));
+  return 2.0 / (v.z * rootL + l.z * rootV);
 }
 `;
 
@@ -164,6 +177,24 @@ export const SLOTS = {
     call: catalogueCall('visibility'),
     inputs: ['nl', 'nv', 'alpha'],
     evalCall: 'customV(a.x, a.y, a.z)',
+    outputs: 1,
+  },
+  VAniso: {
+    key: 'VAniso',
+    fn: 'customVAniso',
+    signature: 'float customVAniso(vec3 l, vec3 v, vec2 alpha)',
+    returns: 'float',
+    args: [
+      dirArg('l', 'l'),
+      dirArg('v', 'v'),
+      { name: 'alpha', type: 'vec2', min: ALPHA.min, max: ALPHA_ANISO_MAX, unit: '', label: '(αx, αy)' },
+    ],
+    family: null,
+    reference: 'smithGGXCorrelatedAniso',
+    starter: STARTER_V_ANISO,
+    call: 'customVAniso(m.l, m.v, m.alpha)',
+    inputs: ['lx', 'ly', 'lz', 'vx', 'vy', 'vz', 'alphaX', 'alphaY'],
+    evalCall: 'customVAniso(a.xyz, vec3(a.w, b.xy), b.zw)',
     outputs: 1,
   },
   F: {
