@@ -27,6 +27,8 @@ import { NDF_NAMES, highlightSphere, ndfProfiles, profileFactor, grader as ndfPr
 import { grader as visibilityRatio } from './graders/visibility-ratio.js';
 import { grader as lambertRadiance } from './graders/lambert-radiance.js';
 import { grader as f82SchlickGap } from './graders/f82-schlick-gap.js';
+import { grader as highlightStretch } from './graders/highlight-stretch.js';
+import { grader as anisoPair } from './graders/aniso-pair.js';
 
 export const GRADERS = {
   'transmittance-depth': transmittanceDepth,
@@ -41,6 +43,8 @@ export const GRADERS = {
   'visibility-ratio': visibilityRatio,
   'lambert-radiance': lambertRadiance,
   'f82-schlick-gap': f82SchlickGap,
+  'highlight-stretch': highlightStretch,
+  'aniso-pair': anisoPair,
 };
 
 export const isGraderName = (name) => Object.hasOwn(GRADERS, name);

@@ -4,6 +4,7 @@
 import { createPlot } from '../core/ui/plot.js';
 import { displayValue, peakOf } from './sphere-image.js';
 import { fmt, highlightSphere, materialSphere } from './graders.js';
+import { pairSphere } from './graders/aniso-pair.js';
 import { ANGLES, logAxes, ndfCurves } from '../widgets/ndf-explorer/model.js';
 import { NDF_KEYS } from '../widgets/ndf-explorer/schema.js';
 
@@ -86,6 +87,12 @@ const PREVIEWS = {
     parent.append(holder);
     const plot = createPlot(holder, hiddenNdfPlot(params, hidden));
     return { update() {}, dispose: () => plot.dispose() };
+  },
+
+  'aniso-pair'(parent, { params, hidden }) {
+    const image = pairSphere(hidden, params);
+    sphereFigure(parent, 'The highlight (tangent left to right)').draw(image, 1 / peakOf(image));
+    return { update() {} };
   },
 };
 

@@ -3,6 +3,9 @@
 import { punctualRadiance } from '../math/brdf.js';
 import { linearToSrgb } from '../math/color.js';
 import { DEG } from '../math/angles.js';
+import { termEntry } from '../math/catalogue/index.js';
+import { microfacetInput, termAt } from '../math/catalogue/microfacet-input.js';
+import { inTangentFrame, tangentFrameAlong } from '../math/tangent-frame.js';
 
 /**
  * Radiance over the grid, row-major from the top-left; pixels off the disk are NaN.
@@ -63,4 +66,43 @@ export function highlightArea(img) {
     if (x >= half) on++;
   }
   return on / disk;
+}
+
+/**
+ * The highlight of an anisotropic NDF (catalogue key `ndf`, e.g. 'ggxAniso') at the pair [αx, αy] on the sphere of
+ * sphereRadiance, F = 1 and V = 1 so only D shows (radiance π·D/4·(n·l)), the tangent running left to right across
+ * the picture as on the NDF explorer's spheres (tangentFrameAlong the view's x axis).
+ */
+export function anisotropicSphere(size, lightThetaDeg, pair, ndf = 'ggxAniso') {
+  const entry = termEntry('ndf', ndf);
+  const l = [Math.sin(lightThetaDeg * DEG), 0, Math.cos(lightThetaDeg * DEG)];
+  const out = new Float64Array(size * size);
+  for (let row = 0; row < size; row++) {
+    for (let col = 0; col < size; col++) {
+      const x = ((col + 0.5) / size) * 2 - 1;
+      const y = 1 - ((row + 0.5) / size) * 2;
+      const r2 = x * x + y * y;
+      const n = [x, y, Math.sqrt(Math.max(0, 1 - r2))];
+      const frame = tangentFrameAlong(n, [1, 0, 0]);
+      const m = microfacetInput(inTangentFrame(l, n, frame), inTangentFrame([0, 0, 1], n, frame), pair);
+      const D = m.h ? termAt(entry, m, {}) : 0;
+      out[row * size + col] = r2 >= 1 ? NaN : m.nl > 0 ? punctualRadiance(D / 4, m.nl, 1) : 0;
+    }
+  }
+  return out;
+}
+
+/**
+ * How far the highlight (pixels at or above half the peak) reaches left to right and bottom to top: the RMS
+ * distance of its pixels from their centroid along each axis, in pixels, as [along x, along y].
+ */
+export function highlightSpread(img) {
+  const size = Math.round(Math.sqrt(img.length));
+  const half = peakOf(img) / 2;
+  const on = [];
+  img.forEach((L, i) => L >= half && on.push([i % size, Math.floor(i / size)]));
+  return [0, 1].map((axis) => {
+    const mean = on.reduce((s, p) => s + p[axis], 0) / on.length;
+    return Math.sqrt(on.reduce((s, p) => s + (p[axis] - mean) ** 2, 0) / on.length);
+  });
 }
