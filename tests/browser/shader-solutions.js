@@ -102,7 +102,11 @@ const F82_TINT = `vec3 customF(vec3 f0, float lh) {
 }
 `;
 
-const GGX_ANISO = ({ guard = true, scale = 'h.xy / a', norm = 'a.x * a.y' } = {}) => `float customDAniso(vec3 h, vec2 alpha) {
+const GGX_ANISO = ({
+  guard = true,
+  scale = 'h.xy / a',
+  norm = 'a.x * a.y',
+} = {}) => `float customDAniso(vec3 h, vec2 alpha) {
   ${guard ? 'if (!(h.z > 0.0)) return 0.0;' : ''}
   vec2 a = clamp(alpha, 1e-4, 4.0);
   vec2 s = ${scale};

@@ -7,7 +7,8 @@ import { GRADERS } from '../../src/exercises/graders.js';
 import { anisotropicSphere } from '../../src/exercises/sphere-image.js';
 import { ALPHA_PAIRS } from '../../src/exercises/graders/aniso-pair.js';
 
-const shipped = (id) => JSON.parse(readFileSync(join(import.meta.dirname, `../../public/exercises/${id}.json`), 'utf8'));
+const shipped = (id) =>
+  JSON.parse(readFileSync(join(import.meta.dirname, `../../public/exercises/${id}.json`), 'utf8'));
 
 /** Isotropic GGX (Walter et al. 2007) as the talk writes it, α²/(π((n·h)²(α² − 1) + 1)²). */
 const ggx = (nh, a) => (a * a) / (Math.PI * (nh * nh * (a * a - 1) + 1) ** 2);
@@ -37,7 +38,7 @@ describe('the anisotropic sphere', () => {
  * The column's is the same with αy. Returns the half-width in x of D alone (n·l = z changes it little).
  */
 const halfWidth = (a) => {
-  const half = (x) => 1 / (x * x / (a * a) + 1 - x * x) ** 2 - 0.5;
+  const half = (x) => 1 / ((x * x) / (a * a) + 1 - x * x) ** 2 - 0.5;
   let [lo, hi] = [0, 1];
   for (let k = 0; k < 60; k++) [lo, hi] = half((lo + hi) / 2) > 0 ? [(lo + hi) / 2, hi] : [lo, (lo + hi) / 2];
   return lo;

@@ -129,7 +129,11 @@ describe('validation names every bad field', () => {
       { kind: 'movie' },
       ['kind: unknown kind "movie" (kinds: shader; without "kind", a widget exercise)'],
     ],
-    ['unknown slot', { slot: 'X' }, ['slot: "X" is not a slot graded against a term (slots: D, V, F, DAniso, VAniso, diffuse)']],
+    [
+      'unknown slot',
+      { slot: 'X' },
+      ['slot: "X" is not a slot graded against a term (slots: D, V, F, DAniso, VAniso, diffuse)'],
+    ],
     ['a widget field', { grader: 'smith-g1' }, [/^grader: unknown field \(fields: id, kind, chapter/]],
     ['no sources', { sources: undefined }, [/^sources: missing/]],
     ['a source without a year', { sources: ['Walter et al.'] }, ['sources: "Walter et al." names no author and year']],

@@ -94,8 +94,9 @@ float customV(float nl, float nv, float alpha) {
 }
 `;
 
-const STARTER_V_ANISO = `// Height-correlated Smith for anisotropic GGX (Heitz 2014), as the talk's V = G / ((n·l)(n·v)), l and v
-// in the tangent frame (x = t, y = b, z = n). Λ projects the roughness on each direction's azimuth φ:
+const STARTER_V_ANISO = `// Height-correlated Smith for anisotropic GGX (Heitz 2014), as the talk's
+// V = G / ((n·l)(n·v)), l and v in the tangent frame (x = t, y = b, z = n).
+// Λ projects the roughness on each direction's azimuth φ:
 // α(φ)² sin²θ = αx² wx² + αy² wy², so r(w) = sqrt(wz² + αx² wx² + αy² wy²) = wz (1 + 2Λ(w)).
 float customVAniso(vec3 l, vec3 v, vec2 alpha) {
   if (!(l.z > 0.0 && v.z > 0.0)) return 0.0;

@@ -65,7 +65,9 @@ export const grader = {
     const [hx, hy] = highlightSpread(pairSphere(hidden, params));
     return {
       ok: false,
-      summary: `${PAIR_NAMES[answer]} draws a different highlight: RMS ${fmt(rms, 2)}, a match needs ≤ ${fmt(tolerance, 2)}.`,
+      summary:
+        `${PAIR_NAMES[answer]} draws a different highlight: RMS ${fmt(rms, 2)}, ` +
+        `a match needs ≤ ${fmt(tolerance, 2)}.`,
       details: [
         `Its highlight reaches ${times(mx / hx)} as far left to right as the picture’s, and ${times(my / hy)} as ` +
           'far bottom to top.',
