@@ -64,7 +64,7 @@ describe('exercises', () => {
   it('solves each exercise through its controls, and grades a wrong answer wrong with what is off', async () => {
     const page = await openExercises('exercises.html');
     await page.waitForSelector('#exercise-list a');
-    expect(await page.$$eval('#exercise-list a', (as) => as.length)).toBe(21); // public/exercises/index.json
+    expect(await page.$$eval('#exercise-list a', (as) => as.length)).toBe(25); // public/exercises/index.json
 
     await choose(page, 'water-red-depth');
     await typeAnswer(page, '5');
@@ -152,6 +152,25 @@ describe('exercises', () => {
     await page.click(`input[name=answer][value=${hidden}]`);
     expect((await check(page)).ok).toBe(true);
 
+    // beyond the talk (issue 28): αx = 0.4 > αy = 0.1 stretches the highlight along the tangent, left to right
+    await choose(page, 'highlight-stretch');
+    await page.click('input[name=answer][value=bitangent]');
+    r = await check(page);
+    expect(r.ok).toBe(false);
+    expect(r.text).toMatch(/reaches [\d.]+ pixels left to right and [\d.]+ bottom to top/);
+    await page.click('input[name=answer][value=tangent]');
+    expect((await check(page)).ok).toBe(true);
+
+    await choose(page, 'aniso-pair');
+    const pair = await page.evaluate(() => globalThis.__shadingLab.exercise.hidden);
+    const otherPair = pair === 'wideX' ? 'wideY' : 'wideX';
+    await page.click(`input[name=answer][value=${otherPair}]`);
+    r = await check(page);
+    expect(r.ok).toBe(false);
+    expect(r.text).toMatch(/draws a different highlight: RMS 0\.\d+, a match needs ≤ 0\.02/);
+    await page.click(`input[name=answer][value=${pair}]`);
+    expect((await check(page)).ok).toBe(true);
+
     await choose(page, 'separable-smith');
     const [c, a] = [Math.cos(80 * DEG), 0.5];
     const R = Math.sqrt(a * a + (1 - a * a) * c * c);
@@ -166,22 +185,22 @@ describe('exercises', () => {
     await typeAnswer(page, '1.5');
     expect((await check(page)).ok).toBe(true);
 
-    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('11 of 21 solved');
+    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('13 of 25 solved');
     expect(page.errors).toEqual([]);
 
     // progress survives a reload; Reset (confirmed) clears it
     await page.reload({ waitUntil: 'load' });
     await page.waitForSelector('#exercise-list a');
-    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('11 of 21 solved');
+    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('13 of 25 solved');
     expect(await page.$eval('#exercise-list a[href="#lake-mirror"]', (a) => a.parentElement.textContent)).toContain(
       '✓ solved',
     );
     page.once('dialog', (d) => d.accept());
     await page.click('.exercise-reset');
-    await expect.poll(() => page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 21 solved');
+    await expect.poll(() => page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 25 solved');
     await page.reload({ waitUntil: 'load' });
     await page.waitForSelector('#exercise-list a');
-    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 21 solved');
+    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 25 solved');
     expect(page.errors).toEqual([]);
     await page.close();
   }, 240_000);
