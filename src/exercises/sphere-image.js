@@ -7,33 +7,38 @@ import { termEntry } from '../math/catalogue/index.js';
 import { microfacetInput, termAt } from '../math/catalogue/microfacet-input.js';
 import { inTangentFrame, tangentFrameAlong } from '../math/tangent-frame.js';
 
-/**
- * Radiance over the grid, row-major from the top-left; pixels off the disk are NaN.
- * f(cosines) is the BRDF from { nl, nv, nh, lh } (h = normalize(l + v), view v = (0, 0, 1)); the light,
- * of intensity cLight, lies lightThetaDeg from the view in the x–z plane.
- */
-export function sphereRadiance(size, lightThetaDeg, f, cLight = 1) {
-  const l = [Math.sin(lightThetaDeg * DEG), 0, Math.cos(lightThetaDeg * DEG)];
-  const hl = Math.hypot(l[0], l[1], l[2] + 1);
-  const h = hl > 1e-12 ? [l[0] / hl, 0, (l[2] + 1) / hl] : [0, 0, 1];
-  const lh = l[0] * h[0] + l[2] * h[2];
+/** The light lightThetaDeg from the view, in the x–z plane. */
+const lightAt = (lightThetaDeg) => [Math.sin(lightThetaDeg * DEG), 0, Math.cos(lightThetaDeg * DEG)];
+
+/** The grid over the disk, row-major from the top-left: radianceAt(n) at each pixel's normal, NaN off the disk. */
+function overDisk(size, radianceAt) {
   const out = new Float64Array(size * size);
   for (let row = 0; row < size; row++) {
     for (let col = 0; col < size; col++) {
       const x = ((col + 0.5) / size) * 2 - 1;
       const y = 1 - ((row + 0.5) / size) * 2;
       const r2 = x * x + y * y;
-      if (r2 >= 1) {
-        out[row * size + col] = NaN;
-        continue;
-      }
-      const n = [x, y, Math.sqrt(1 - r2)];
-      const nl = n[0] * l[0] + n[2] * l[2];
-      const a = { nl, nv: n[2], nh: n[0] * h[0] + n[1] * h[1] + n[2] * h[2], lh };
-      out[row * size + col] = nl > 0 ? punctualRadiance(f(a), nl, cLight) : 0;
+      out[row * size + col] = r2 >= 1 ? NaN : radianceAt([x, y, Math.sqrt(1 - r2)]);
     }
   }
   return out;
+}
+
+/**
+ * Radiance over the grid, row-major from the top-left; pixels off the disk are NaN.
+ * f(cosines) is the BRDF from { nl, nv, nh, lh } (h = normalize(l + v), view v = (0, 0, 1)); the light,
+ * of intensity cLight, lies lightThetaDeg from the view in the x–z plane.
+ */
+export function sphereRadiance(size, lightThetaDeg, f, cLight = 1) {
+  const l = lightAt(lightThetaDeg);
+  const hl = Math.hypot(l[0], l[1], l[2] + 1);
+  const h = hl > 1e-12 ? [l[0] / hl, 0, (l[2] + 1) / hl] : [0, 0, 1];
+  const lh = l[0] * h[0] + l[2] * h[2];
+  return overDisk(size, (n) => {
+    const nl = n[0] * l[0] + n[2] * l[2];
+    const a = { nl, nv: n[2], nh: n[0] * h[0] + n[1] * h[1] + n[2] * h[2], lh };
+    return nl > 0 ? punctualRadiance(f(a), nl, cLight) : 0;
+  });
 }
 
 /** What a screen shows for radiance L at an exposure: clamped to [0, 1], sRGB-encoded. */
@@ -75,21 +80,12 @@ export function highlightArea(img) {
  */
 export function anisotropicSphere(size, lightThetaDeg, pair, ndf = 'ggxAniso') {
   const entry = termEntry('ndf', ndf);
-  const l = [Math.sin(lightThetaDeg * DEG), 0, Math.cos(lightThetaDeg * DEG)];
-  const out = new Float64Array(size * size);
-  for (let row = 0; row < size; row++) {
-    for (let col = 0; col < size; col++) {
-      const x = ((col + 0.5) / size) * 2 - 1;
-      const y = 1 - ((row + 0.5) / size) * 2;
-      const r2 = x * x + y * y;
-      const n = [x, y, Math.sqrt(Math.max(0, 1 - r2))];
-      const frame = tangentFrameAlong(n, [1, 0, 0]);
-      const m = microfacetInput(inTangentFrame(l, n, frame), inTangentFrame([0, 0, 1], n, frame), pair);
-      const D = m.h ? termAt(entry, m, {}) : 0;
-      out[row * size + col] = r2 >= 1 ? NaN : m.nl > 0 ? punctualRadiance(D / 4, m.nl, 1) : 0;
-    }
-  }
-  return out;
+  const l = lightAt(lightThetaDeg);
+  return overDisk(size, (n) => {
+    const frame = tangentFrameAlong(n, [1, 0, 0]);
+    const m = microfacetInput(inTangentFrame(l, n, frame), inTangentFrame([0, 0, 1], n, frame), pair);
+    return m.nl > 0 && m.h ? punctualRadiance(termAt(entry, m, {}) / 4, m.nl, 1) : 0;
+  });
 }
 
 /**
