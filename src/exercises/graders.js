@@ -27,6 +27,7 @@ import { NDF_NAMES, highlightSphere, ndfProfiles, profileFactor, grader as ndfPr
 import { grader as visibilityRatio } from './graders/visibility-ratio.js';
 import { grader as lambertRadiance } from './graders/lambert-radiance.js';
 import { grader as f82SchlickGap } from './graders/f82-schlick-gap.js';
+import { grader as openPbrLayer } from './graders/openpbr-layer.js';
 
 export const GRADERS = {
   'transmittance-depth': transmittanceDepth,
@@ -41,6 +42,7 @@ export const GRADERS = {
   'visibility-ratio': visibilityRatio,
   'lambert-radiance': lambertRadiance,
   'f82-schlick-gap': f82SchlickGap,
+  'openpbr-layer': openPbrLayer,
 };
 
 export const isGraderName = (name) => Object.hasOwn(GRADERS, name);

@@ -9,6 +9,7 @@ import {
 import { brdfAngles } from '../../math/brdf.js';
 import { termEntry } from '../../math/catalogue/index.js';
 import { brdfSpec, factorsAt, lightDir, lobePeak, viewDir } from './model.js';
+import { LAYER_KEYS, OPENPBR_LAYERS, layerLuminances, openPbrSpec } from './openpbr-lobe.js';
 
 export const TITLE = 'BRDF lobe';
 
@@ -64,7 +65,9 @@ function multipleWords(state, ms) {
 /** The polar plot in words: what is drawn, with which factors off, where each lobe peaks. */
 export function describePolar(state, scene) {
   const { A, B, lobeA, lobeB, ms } = scene;
-  const off = ['F', 'D', 'G'].filter((k) => !state[`use${k}`]).concat(state.useDenominator ? [] : ['the denominator']);
+  const off = A.openpbr
+    ? [] // OpenPBR has no factors to switch
+    : ['F', 'D', 'G'].filter((k) => !state[`use${k}`]).concat(state.useDenominator ? [] : ['the denominator']);
   const what =
     `${state.cosine ? 'f(l, v) × n·v' : 'f(l, v)'} for ${A.label}${B ? ` and, dashed, ${B.label}` : ''}` +
     `${off.length ? ` with ${off.join(', ')} switched off` : ''}`;
@@ -77,6 +80,11 @@ export function describePolar(state, scene) {
       const [theta, value] = lobePeak(lobe);
       return `${p.label.slice(0, 1)} peaks at ${theta.toFixed(1)}° (${value.toPrecision(3)} /sr)`;
     });
+  const layers = (scene.layers?.parts ?? []).map(({ key, lobe }) => {
+    const [theta, value] = lobePeak(lobe);
+    return `${OPENPBR_LAYERS[key].label} peaks at ${theta.toFixed(1)}° (${value.toPrecision(3)} /sr)`;
+  });
+  if (layers.length) peaks.push(`Lines, A's layers' parts of its luminance: ${layers.join('; ')}`);
   return (
     `Polar plot in the plane of incidence: ${what}. Light ${state.lightTheta}° from n on the left, view at ` +
     `${state.viewTheta}°, mirror direction at ${state.lightTheta}°. ${peaks.join('; ')}.${multipleWords(state, ms)}`
@@ -86,8 +94,12 @@ export function describePolar(state, scene) {
 /** The 3-D lobe in words. */
 export function describeLobe3d(state, scene) {
   const { A, B, max } = scene;
+  const layer =
+    !B && scene.layers?.fLayer
+      ? ` (solid) and its ${OPENPBR_LAYERS[state.openpbrLayer].label} part` + ' (wireframe)'
+      : '';
   return (
-    `3-D lobe of ${A.label}${B ? ` (solid) and ${B.label} (wireframe)` : ''} over the hemisphere, light ` +
+    `3-D lobe of ${A.label}${B ? ` (solid) and ${B.label} (wireframe)` : layer} over the hemisphere, light ` +
     `${state.lightTheta}° from n; each direction's distance from the centre is ${state.cosine ? 'f × n·v' : 'f'}, ` +
     `scaled to ${max.toPrecision(3)}. Arrows: n, l, v, h and the mirror direction, in the plane of incidence ` +
     `(the blue pane), ${state.phi}° about n from the tangent t (the dark red arrow).` +
@@ -162,11 +174,24 @@ function valuesTex(state, t, a) {
     : `${values} = ${n(t.f)}\\ \\mathrm{sr}^{-1}`;
 }
 
+/** OpenPBR's lobe at (l, v): the luminance of each layer's part, already weighted by the layers above it. */
+function openPbrTex(state) {
+  const y = layerLuminances(lightDir(state.lightTheta), viewDir(state.viewTheta), openPbrSpec(state));
+  const names = { specular: 'spec', diffuse: 'diff', metal: 'metal', coat: 'coat', fuzz: 'fuzz' };
+  const sum = LAYER_KEYS.map((k) => `Y_{\\text{${names[k]}}}`).join(' + ');
+  const values = LAYER_KEYS.map((k) => texNumber(y[k], 4)).join(' + ');
+  return (
+    `\\begin{gathered}Y(f) = ${sum}\\\\ = ${values} = ${texNumber(y.all, 4)}\\ \\mathrm{sr}^{-1}\\\\ ` +
+    `${LIGHT_VIEW(state)}\\end{gathered}`
+  );
+}
+
 /**
  * BRDF A at the light and view of the sliders: the factors, their values and f, in 1/sr; a whole BRDF the user
  * wrote has no factors: it is named, with the angles it is read at.
  */
 export const FORMULA = declareFormula('brdf-lobe', (state) => {
+  if (state.brdf === 'openpbr') return openPbrTex(state);
   if (state.brdf === 'custom') {
     const f = `\\sym{brdf}{f(\\mathbf{l},\\mathbf{v}) = ${texYours('f', '\\mathbf{l}, \\mathbf{v}')}}`;
     return `\\begin{gathered}${f}\\\\ ${LIGHT_VIEW(state)}\\end{gathered}`;
