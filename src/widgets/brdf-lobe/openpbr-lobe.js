@@ -8,11 +8,11 @@ import { DEG } from '../../math/angles.js';
 
 /** The layers' parts as openPbrLayers names them, with the words and colours the views give them. */
 export const OPENPBR_LAYERS = {
-  specular: { label: 'specular (dielectric gloss)', color: '#0072b2', dash: [] },
-  diffuse: { label: 'diffuse (EON, under the gloss)', color: '#996b00', dash: [6, 3] },
-  metal: { label: 'metal (F82-tint)', color: '#cc79a7', dash: [2, 3] },
-  coat: { label: 'coat', color: '#009e73', dash: [8, 3, 2, 3] },
-  fuzz: { label: 'fuzz (Zeltner et al. 2022)', color: '#56b4e9', dash: [1, 2] },
+  specular: { short: 'specular', label: 'specular (dielectric gloss)', color: '#0072b2', dash: [] },
+  diffuse: { short: 'diffuse', label: 'diffuse (EON, under the gloss)', color: '#996b00', dash: [6, 3] },
+  metal: { short: 'metal', label: 'metal (F82-tint)', color: '#cc79a7', dash: [2, 3] },
+  coat: { short: 'coat', label: 'coat', color: '#009e73', dash: [8, 3, 2, 3] },
+  fuzz: { short: 'fuzz', label: 'fuzz (Zeltner et al. 2022)', color: '#56b4e9', dash: [1, 2] },
 };
 export const LAYER_KEYS = Object.keys(OPENPBR_LAYERS);
 

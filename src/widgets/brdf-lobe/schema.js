@@ -33,7 +33,7 @@ export const schema = {
     options: {
       microfacet: 'Microfacet F·D·V/4',
       custom: 'Custom whole BRDF (your GLSL)',
-      openpbr: 'OpenPBR Surface (layers, below)',
+      openpbr: 'OpenPBR Surface',
     },
     default: 'microfacet',
     label: 'BRDF A: model',
@@ -93,7 +93,7 @@ export const schema = {
   openpbrLayer: {
     ...OPENPBR_FOLDER,
     type: 'enum',
-    options: { none: 'none', ...Object.fromEntries(Object.entries(OPENPBR_LAYERS).map(([k, x]) => [k, x.label])) },
+    options: { none: 'none', ...Object.fromEntries(Object.entries(OPENPBR_LAYERS).map(([k, x]) => [k, x.short])) },
     default: 'coat',
     label: '3-D wireframe: one layer’s part',
   },

@@ -29,7 +29,11 @@ export const ABOUT =
   'Beyond the talk, whose BRDFs are isotropic: the plane of incidence turns to any azimuth φ from the surface’s ' +
   'tangent, and A’s anisotropy stretches GGX or Beckmann along that tangent (Heitz 2014’s forms; (αx, αy) by ' +
   'Burley 2012, glTF’s KHR_materials_anisotropy or OpenPBR 1.1), with height-correlated Smith GGX then ' +
-  'anisotropic too. Turn φ: an isotropic lobe stays the same, an anisotropic one is widest along the tangent.';
+  'anisotropic too. Turn φ: an isotropic lobe stays the same, an anisotropic one is widest along the tangent. ' +
+  'Past the talk, A’s model OpenPBR Surface (2024) stacks these terms into a base, its specular lobe, a coat and ' +
+  'a fuzz (parameters in its folder, by the specification’s names): the lobe is then the luminance of its RGB ' +
+  'value, each line one layer’s part of it, and the wire grid the part of the layer chosen; F, D, G and the ' +
+  'denominator are not switches of it.';
 
 /** The functions behind the pictures, linked to their rows on the parity page. */
 export const TERMS_USED = [
