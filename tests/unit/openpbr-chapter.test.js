@@ -1,6 +1,7 @@
 // The OpenPBR chapter (today.html), its tour step and its "which layer" exercise: every figure they quote read out
 // of the sentence that states it and recomputed here from src/math (openPbrLayers, the albedo tables, the exact
-// conductor and dielectric Fresnel, the fuzz albedo, the split sum's GGX albedo and the layered random walk).
+// conductor and dielectric Fresnel, the fuzz albedo, the split sum's GGX albedo, the layered random walk and
+// openPbrBRDF's directional albedo by quadrature, tests/support/openpbr-albedo.js).
 import { describe, expect, it } from 'vitest';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
@@ -14,6 +15,7 @@ import { f82TintFromConductor, fresnelConductor, fresnelF82Tint, fresnelSchlick 
 import { measuredRgbNk } from '../../src/math/optical-constants.js';
 import { srgbToLinear } from '../../src/math/color.js';
 import { GRADERS } from '../../src/exercises/graders.js';
+import { openPbrAlbedo } from '../support/openpbr-albedo.js';
 import { layerShares } from '../../src/exercises/graders/openpbr-layer.js';
 
 const DEG = Math.PI / 180;
@@ -114,6 +116,13 @@ describe('today.html: how far from the truth', () => {
     const stack = { coat: { alpha: 0.09, eta: 1.6, sigma }, base: { kind: 'lambert', albedo: [0.8, 0.8, 0.8] } };
     const r = layeredWalkAlbedo(1, stack, 20_000, 7);
     walk.forEach((x, c) => expect(Math.abs(r.albedo[c] - x)).toBeLessThan(4 * r.standardError[c] + 5e-4));
+  });
+
+  it('albedo scaling gives 0.546, 0.374, 0.207 there (openPbrBRDF’s albedo by quadrature, 24 nodes)', () => {
+    const scaled = at(`albedo scaling gives ${N}, ${N} and ${N}`);
+    // the walk's stack as OpenPBR's material: no gloss on the Lambertian base (specular_weight 0)
+    const m = { coat_weight: 1, coat_roughness: 0.3, coat_color: [0.9, 0.6, 0.3], specular_weight: 0, base_color: 0.8 };
+    openPbrAlbedo(openPbrMaterial(m), 1, 24).total.forEach((x, c) => reads(x, scaled[c], 3));
   });
 });
 
