@@ -109,7 +109,7 @@ describe('the chapter’s exercises, through their controls', () => {
     };
     const wrong = await check('coat');
     expect(wrong.ok).toBe(false);
-    expect(wrong.text).toMatch(/The coat makes only 1\.29% of the lobe/);
+    expect(wrong.text).toMatch(/The coat makes only 12\.8% of the lobe/);
     expect((await check('metal')).ok).toBe(true);
 
     await page.click('#exercise-list a[href="#f82-grazing-copper"]');
