@@ -16,6 +16,7 @@ const pages = [
   'visibility',
   'diffuse',
   'rendering',
+  'today',
   'performance',
   'parity',
   'exercises',

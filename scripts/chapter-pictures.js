@@ -26,6 +26,13 @@ const SHOTS = {
   ],
   diffuse: ['embed.html?w=diffuse-explorer&diffuse=lambert,orenNayar&sigma=60', '.sphere-grid canvas', 'contain', 420],
   rendering: ['embed.html?w=material-lab&material=gold&alpha=0.25', '.widget-view canvas', 'contain'],
+  today: [
+    'embed.html?w=brdf-lobe&brdf=openpbr&base_color=%23b22222&specular_roughness=0.5&coat_weight=1&coat_roughness=0.3' +
+      '&lightTheta=45&viewTheta=20&cosine=true',
+    '.polar-plot canvas',
+    'contain',
+    560,
+  ],
   performance: ['performance.html', '.uplot .u-wrap', 'contain', 560],
 };
 

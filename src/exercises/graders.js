@@ -29,6 +29,7 @@ import { grader as lambertRadiance } from './graders/lambert-radiance.js';
 import { grader as f82SchlickGap } from './graders/f82-schlick-gap.js';
 import { grader as highlightStretch } from './graders/highlight-stretch.js';
 import { grader as anisoPair } from './graders/aniso-pair.js';
+import { grader as openPbrLayer } from './graders/openpbr-layer.js';
 
 export const GRADERS = {
   'transmittance-depth': transmittanceDepth,
@@ -45,6 +46,7 @@ export const GRADERS = {
   'f82-schlick-gap': f82SchlickGap,
   'highlight-stretch': highlightStretch,
   'aniso-pair': anisoPair,
+  'openpbr-layer': openPbrLayer,
 };
 
 export const isGraderName = (name) => Object.hasOwn(GRADERS, name);

@@ -12,3 +12,6 @@ export function linearToSrgb(c) {
   const x = clamp01(c);
   return x <= 0.0031308 ? x * 12.92 : 1.055 * x ** (1 / 2.4) - 0.055;
 }
+
+/** The luminance Y of a linear Rec. 709 / sRGB colour [r, g, b] (ITU-R BT.709's weights). */
+export const luminanceRec709 = ([r, g, b]) => 0.2126 * r + 0.7152 * g + 0.0722 * b;

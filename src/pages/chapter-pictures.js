@@ -10,6 +10,7 @@ export const CHAPTER_PICTURES = {
   visibility: 'Two rough spheres (α = 0.9) lit from 60°: the implicit visibility term (V = 1) and Smith’s',
   diffuse: 'Two spheres lit head on: Lambert darkens towards the rim, Oren–Nayar (σ = 60°) looks flat',
   rendering: 'A gold sphere lit by an environment: approximation, reference and their error',
+  today: 'A coated red paint’s OpenPBR lobe in the plane of incidence, each layer’s part a line of its own',
   performance: 'Error against GPU cost for the Fresnel approximations',
 };
 

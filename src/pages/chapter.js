@@ -7,6 +7,8 @@ import { typesetFormulas } from '../core/framework/formulas.js';
 
 typesetFormulas();
 
+// a slot's data-initial (JSON) is the state it starts from, under what the URL says
 for (const slot of document.querySelectorAll('[data-slot]')) {
-  await mountOrExplain(slot, slot.dataset.slot, { widgets: WIDGETS, prefix: slot.dataset.prefix });
+  const initialState = slot.dataset.initial ? JSON.parse(slot.dataset.initial) : {};
+  await mountOrExplain(slot, slot.dataset.slot, { widgets: WIDGETS, prefix: slot.dataset.prefix, initialState });
 }

@@ -17,6 +17,7 @@ import { STEPS as NDF } from './steps/ndf.js';
 import { STEPS as VISIBILITY } from './steps/visibility.js';
 import { STEPS as DIFFUSE } from './steps/diffuse.js';
 import { STEPS as RENDERING } from './steps/rendering.js';
+import { STEPS as TODAY } from './steps/today.js';
 
 /** The talk's sections the tour walks through, in order (the performance chapter is not part of the talk). */
 export const TOUR_SECTIONS = CHAPTERS.filter((c) => c.key !== 'performance').map(({ key, title }) => ({ key, title }));
@@ -32,6 +33,7 @@ const STEPS_BY_SECTION = {
   visibility: VISIBILITY,
   diffuse: DIFFUSE,
   rendering: RENDERING,
+  today: TODAY,
 };
 
 /** Every step in the talk's order, each with the key of its section. */

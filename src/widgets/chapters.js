@@ -65,6 +65,13 @@ export const CHAPTERS = [
     widgets: ['material-lab', 'lighting-models'],
   },
   {
+    key: 'today',
+    title: 'After the talk: the material of today',
+    blurb: 'OpenPBR Surface, layer by layer: the talk’s terms stacked into base, specular, coat and fuzz.',
+    page: 'today.html',
+    widgets: ['brdf-lobe'],
+  },
+  {
     key: 'performance',
     title: 'Performance and accuracy',
     blurb: 'Run time against error for every approximation.',

@@ -64,7 +64,7 @@ describe('exercises', () => {
   it('solves each exercise through its controls, and grades a wrong answer wrong with what is off', async () => {
     const page = await openExercises('exercises.html');
     await page.waitForSelector('#exercise-list a');
-    expect(await page.$$eval('#exercise-list a', (as) => as.length)).toBe(25); // public/exercises/index.json
+    expect(await page.$$eval('#exercise-list a', (as) => as.length)).toBe(27); // public/exercises/index.json
 
     await choose(page, 'water-red-depth');
     await typeAnswer(page, '5');
@@ -185,22 +185,22 @@ describe('exercises', () => {
     await typeAnswer(page, '1.5');
     expect((await check(page)).ok).toBe(true);
 
-    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('13 of 25 solved');
+    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('13 of 27 solved');
     expect(page.errors).toEqual([]);
 
     // progress survives a reload; Reset (confirmed) clears it
     await page.reload({ waitUntil: 'load' });
     await page.waitForSelector('#exercise-list a');
-    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('13 of 25 solved');
+    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('13 of 27 solved');
     expect(await page.$eval('#exercise-list a[href="#lake-mirror"]', (a) => a.parentElement.textContent)).toContain(
       '✓ solved',
     );
     page.once('dialog', (d) => d.accept());
     await page.click('.exercise-reset');
-    await expect.poll(() => page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 25 solved');
+    await expect.poll(() => page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 27 solved');
     await page.reload({ waitUntil: 'load' });
     await page.waitForSelector('#exercise-list a');
-    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 25 solved');
+    expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 27 solved');
     expect(page.errors).toEqual([]);
     await page.close();
   }, 240_000);

@@ -123,6 +123,7 @@ describe('chapter pages load cleanly', () => {
     ['microfacets.html', ['surface', 'energy']],
     ['ndf.html', ['ndf']],
     ['visibility.html', ['vis']],
+    ['today.html', ['lobe']],
     ['performance.html', []],
   ]) {
     it(path, async () => {

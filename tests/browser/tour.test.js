@@ -246,7 +246,7 @@ describe('guided tour', () => {
 
   it('on a 390×844 touch phone: a short head, no sideways scroll, the picture in sight with its controls', async () => {
     const phone = { width: 390, height: 844, deviceScaleFactor: 1, isMobile: true, hasTouch: true };
-    for (const id of ['media-straight-line', 'brdf-lobe', 'diffuse-full-moon']) {
+    for (const id of ['media-straight-line', 'brdf-lobe', 'diffuse-full-moon', 'today-openpbr-layers']) {
       const page = await openPage(browser, baseUrl(), `tour.html#${id}`, { beforeLoad: (p) => p.setViewport(phone) });
       await onStep(page, id);
       const layout = () =>

@@ -15,7 +15,7 @@ const good = () => JSON.parse(readFileSync(join(DIR, 'water-red-depth.json'), 'u
 const errorsOf = async (raw) => (await validateExercise(raw, { schemaOf })).errors;
 
 describe('shipped exercises', () => {
-  it('the index loads twenty-five valid exercises (fourteen widget, eleven shader) over eight chapters', async () => {
+  it('the index loads twenty-seven valid exercises (sixteen widget, eleven shader) over nine chapters', async () => {
     const index = JSON.parse(readFileSync(join(DIR, 'index.json'), 'utf8'));
     const { exercises, problems } = await readExerciseSet(index, {
       source: 'index.json',
@@ -24,9 +24,9 @@ describe('shipped exercises', () => {
       load: fromDisk,
     });
     expect(problems).toEqual([]);
-    expect(exercises).toHaveLength(25);
+    expect(exercises).toHaveLength(27);
     expect(new Set(exercises.map((e) => e.chapter))).toEqual(
-      new Set(['media', 'surfaces', 'brdf', 'microfacets', 'fresnel', 'ndf', 'visibility', 'diffuse']),
+      new Set(['media', 'surfaces', 'brdf', 'microfacets', 'fresnel', 'ndf', 'visibility', 'diffuse', 'today']),
     );
   });
 
@@ -70,7 +70,7 @@ describe('validator messages', () => {
         'grader: unknown grader "guess" (graders: transmittance-depth, fresnel-reflectance-angle, ' +
           'sphere-match, smith-g1, albedo-loss, multiple-scattering-gain, light-zone, ' +
           'schlick-worst-angle, ndf-profile, visibility-ratio, lambert-radiance, f82-schlick-gap, ' +
-          'highlight-stretch, aniso-pair)',
+          'highlight-stretch, aniso-pair, openpbr-layer)',
       ],
     ],
     [
@@ -84,7 +84,7 @@ describe('validator messages', () => {
       { chapter: 'optics' },
       [
         'chapter: "optics" is not a chapter (chapters: media, surfaces, brdf, microfacets, ' +
-          'fresnel, ndf, visibility, diffuse, rendering, performance)',
+          'fresnel, ndf, visibility, diffuse, rendering, today, performance)',
       ],
     ],
     ['bad id', { id: 'Red Depth' }, ['id: "Red Depth" is not a name of lower-case letters, digits and dashes']],

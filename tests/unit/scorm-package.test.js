@@ -82,7 +82,7 @@ describe('npm run scorm’s package', { timeout: 60_000 }, () => {
     const got = await packageSet({ setFile, outFile, dist, validate });
     expect(got.errors).toContain(
       'bad.json #1: chapter: "nope" is not a chapter (chapters: ' +
-        'media, surfaces, brdf, microfacets, fresnel, ndf, visibility, diffuse, rendering, performance)',
+        'media, surfaces, brdf, microfacets, fresnel, ndf, visibility, diffuse, rendering, today, performance)',
     );
     expect(got.errors).toContain('bad.json: passMark: 120 is not a percentage 0…100'); // the validator's format
     expect(existsSync(outFile)).toBe(false);

@@ -13,6 +13,7 @@ import { createAlbedoPlot } from './albedo-plot.js';
 import { createReadout } from './readout.js';
 import { createCustomArea } from '../../core/ui/custom-area.js';
 import { customPlan } from './custom-tables.js';
+import { OPENPBR_KEYS, OPENPBR_LAYERS } from './openpbr-lobe.js';
 import { ABOUT, TERMS_USED, TITLE, describeLobe3d, describePolar } from './words.js';
 
 export { schema };
@@ -20,6 +21,7 @@ export { schema };
 const LIGHT_AND_VIEW = ['lightTheta', 'viewTheta'];
 const ALBEDO_KEYS = ['D', 'V', 'F', 'alpha', 'f0', 'compare', 'D2', 'V2', 'alpha2', 'brdf', 'params'].concat(
   ['anisotropy', 'convention', 'phi'], // an anisotropic A's albedo depends on the view's azimuth
+  OPENPBR_KEYS,
 );
 const CODE_KEYS = ['codeD', 'codeV', 'codeF', 'codeBRDF'];
 /** A's slots that can be the user's: the state key of each one's code, and its panel's title. */
@@ -62,11 +64,13 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange, lo
     const { a, lobeA, lobeB, ms, max } = scene;
     const halfTheta = a.h ? Math.atan2(a.h[0], a.h[2]) / DEG : null;
     const { lightTheta, viewTheta } = s;
-    polar.draw({ lobeA, lobeB, lobeMS: ms.lobe, points: ms.points, max, lightTheta, viewTheta, halfTheta });
+    const parts = scene.layers?.parts.map(({ key, lobe }) => ({ lobe, ...OPENPBR_LAYERS[key] }));
+    polar.draw({ lobeA, lobeB, lobeMS: ms.lobe, points: ms.points, parts, max, lightTheta, viewTheta, halfTheta });
     shell.describe(describePolar(s, scene), polar.canvas);
   };
   const drawLobe3d = (s, scene) => {
-    const { l, v, a, fA, fB, max } = scene;
+    const { l, v, a, fA, max } = scene;
+    const fB = scene.fB ?? scene.layers?.fLayer ?? null; // B, or else one of OpenPBR's layers, as the wire grid
     const directions = { n: [0, 0, 1], l, v, h: a.h, mirror: [-l[0], 0, l[2]] };
     // an anisotropic lobe may peak out of the plane of incidence: scale to its largest value over the hemisphere
     const top = scene.A.aniso ? Math.max(max, ...lobe3d.directions.map(fA).filter(Number.isFinite)) : max;

@@ -12,6 +12,7 @@ import { termEntry, termLabel } from '../../math/catalogue/index.js';
 import { WALK_ANGLES, hasMultipleLobe, kullaContyLobe, walkMultiplePart } from './multiple-lobe.js';
 import { anisotropicAlphas } from '../../math/anisotropic.js';
 import { microfacetInput, termAt } from '../../math/catalogue/microfacet-input.js';
+import { LAYER_KEYS, layerLuminances, openPbrAlbedo, openPbrSpec, openPbrValue } from './openpbr-lobe.js';
 
 /** The anisotropic form of an NDF, and of a visibility term, in the catalogue. */
 const ANISOTROPIC_D = { ggx: 'ggxAniso', beckmann: 'beckmannAniso' };
@@ -46,7 +47,11 @@ export const ALBEDO_ANGLES = Float64Array.from({ length: 45 }, (_, i) => i * 2 +
 
 /** The slots of A the user wrote (the whole BRDF, or any of D, V, F). */
 export const customSlots = (state) =>
-  state.brdf === 'custom' ? ['brdf'] : ['D', 'V', 'F'].filter((k) => state[k] === 'custom');
+  state.brdf === 'custom'
+    ? ['brdf']
+    : state.brdf === 'openpbr'
+      ? []
+      : ['D', 'V', 'F'].filter((k) => state[k] === 'custom');
 
 /** The catalogue term a custom slot stands in for before any code of it has run (the starter's term). */
 const standIn = (slotKey, term) => (term === 'custom' ? SLOTS[slotKey].reference : term);
@@ -64,6 +69,7 @@ function specLabel(state, which, D, V) {
  */
 export function brdfSpec(state, which, custom = {}) {
   const B = which === 'B';
+  if (!B && state.brdf === 'openpbr') return openPbrSpec(state);
   const [D, V, alpha] = B ? [state.D2, state.V2, state.alpha2] : [state.D, state.V, state.alpha];
   const own = B
     ? {}
@@ -122,6 +128,7 @@ const ALL_FACTORS = { F: true, D: true, G: true, denominator: true };
  */
 export function factorsOf(l, v, p, use = ALL_FACTORS) {
   if (p.custom?.brdf) return p.custom.brdf.atView(v);
+  if (p.openpbr) return openPbrValue(l, v, p);
   const a = brdfAngles(l, v);
   if (!(a.nl > 0 && a.nv > 0) || !a.h) return 0;
   const t = termsAt(l, v, a, p);
@@ -184,7 +191,22 @@ export function lobeScene(state, custom = {}) {
   const lobeB = fB ? inPlane(fB) : null;
   const ms = multipleScattering(state, A, l);
   const values = [lobeA, lobeB, ms.lobe, ms.points].flatMap((lobe) => (lobe ?? []).map((x) => x[1]));
-  return { l, v, a: brdfAngles(l, v), A, B, fA, fB, lobeA, lobeB, ms, max: Math.max(...values, 1e-9) };
+  const layers = A.openpbr ? openPbrLayerLobes(state, l, A) : null;
+  const scene = { l, v, a: brdfAngles(l, v), A, B, fA, fB, lobeA, lobeB, ms, max: Math.max(...values, 1e-9) };
+  return { ...scene, layers };
+}
+
+/**
+ * A's layers in OpenPBR mode: { parts: [{ key, lobe }] in the plane (each layer's part of A's lobe, none when
+ * they are not shown), fLayer (v ↦ the part of the layer the 3-D view draws as a wire grid, or null) }.
+ */
+function openPbrLayerLobes(state, l, A) {
+  const weight = (v) => (state.cosine ? Math.max(v[2], 0) : 1);
+  const fLayer = state.openpbrLayer === 'none' ? null : (v) => openPbrValue(l, v, A, state.openpbrLayer) * weight(v);
+  if (!state.openpbrParts) return { parts: [], fLayer };
+  const values = LOBE_ANGLES.map((theta) => [theta, layerLuminances(l, viewDir(theta), A), weight(viewDir(theta))]);
+  const parts = LAYER_KEYS.map((key) => ({ key, lobe: values.map(([theta, y, w]) => [theta, y[key] * w]) }));
+  return { parts, fLayer };
 }
 
 /** The [θ, value] of a lobe's largest value. */
@@ -196,6 +218,7 @@ export const lobePeak = (lobe) => lobe.reduce((a, x) => (x[1] > a[1] ? x : a));
  */
 export const albedoCurve = (p) =>
   p.custom?.brdf?.albedo ??
+  (p.openpbr && openPbrAlbedo(p, ALBEDO_ANGLES)) ??
   ALBEDO_ANGLES.map((deg) =>
     reflectanceImportanceGGX((l, v) => factorsOf(l, v, p), directionFromCos(Math.cos(deg * DEG)), p.samplingAlpha, 512),
   );
@@ -205,7 +228,7 @@ export const albedoCurve = (p) =>
  * for a whole custom BRDF (it has no factors).
  */
 export function factorsAt(l, v, a, p) {
-  if (p.custom?.brdf) return { F: null, D: null, G: null, f: factorsOf(l, v, p) };
+  if (p.custom?.brdf || p.openpbr) return { F: null, D: null, G: null, f: factorsOf(l, v, p) };
   const terms = a.h && a.nl > 0 && a.nv > 0 ? termsAt(l, v, a, p) : { F: 1, D: 1, G: 1 };
   return { F: p.F === 'one' ? 1 : terms.F, D: terms.D, G: terms.G, f: factorsOf(l, v, p) };
 }

@@ -37,7 +37,7 @@ function drawGrid(ctx, g) {
   ctx.stroke();
 }
 
-/** The lobes: A filled, B dashed, the multiple-scattering lobe dotted. */
+/** The lobes: A filled, B dashed, the multiple-scattering lobe dotted, and OpenPBR's layers' parts of A. */
 function drawLobes(ctx, g, spec) {
   for (const [lobe, color, fill, dash] of [
     [spec.lobeA, COLORS.a, true, []],
@@ -61,7 +61,18 @@ function drawLobes(ctx, g, spec) {
       ctx.fill();
     }
   }
+  for (const part of spec.parts ?? []) strokeLobe(ctx, g, part.lobe, spec.max, part.color, part.dash);
   ctx.setLineDash([]);
+}
+
+/** One layer's part of A: an open line, as the part is drawn over A's fill. */
+function strokeLobe(ctx, g, lobe, max, color, dash) {
+  ctx.beginPath();
+  lobe.forEach(([theta, value], i) => ctx[i ? 'lineTo' : 'moveTo'](...toXY(g, theta, value / max)));
+  ctx.strokeStyle = color;
+  ctx.lineWidth = 2;
+  ctx.setLineDash(dash);
+  ctx.stroke();
 }
 
 /** The random walk's values, with bars of ± 2 standard errors along the radius. */
@@ -167,7 +178,10 @@ export function createPolarPlot(container, { onDrag }) {
   container.append(figure);
   let last = null;
 
-  /** spec: { lobeA, lobeB, lobeMS, points, max, lightTheta, viewTheta, halfTheta } (lobes [θ, value], θ in °). */
+  /**
+   * spec: { lobeA, lobeB, lobeMS, points, parts, max, lightTheta, viewTheta, halfTheta } (lobes [θ, value], θ in
+   * °; parts: [{ lobe, color, dash }], OpenPBR's layers).
+   */
   function draw(spec) {
     last = spec;
     const { ctx } = sizeCanvas2d(canvas);

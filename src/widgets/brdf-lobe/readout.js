@@ -1,6 +1,9 @@
 // The BRDF lobe's readout: F, D, G and f of each BRDF at the chosen l and v, and, with multiple scattering, the
-// Kulla–Conty lobe there beside single scattering.
+// Kulla–Conty lobe there beside single scattering; for OpenPBR, each layer's part there, which is also the key to
+// the polar plot's lines.
 import { factorsAt, factorsOf, kullaContyAt } from './model.js';
+import { LAYER_KEYS, OPENPBR_LAYERS, layersAt } from './openpbr-lobe.js';
+import { luminanceRec709 } from '../../math/color.js';
 
 /** The table's head: a whole custom BRDF is no F·D·G/(4 n·l n·v). */
 export const tableHead = (state) =>
@@ -28,6 +31,32 @@ function multipleLine(state, { l, v, A }) {
   );
 }
 
+/** OpenPBR's parts at (l, v): each layer's RGB and luminance, its share of the whole, and the sum. */
+function layersTable({ l, v, A }) {
+  const parts = layersAt(l, v, A);
+  const whole = [0, 1, 2].map((c) => LAYER_KEYS.reduce((s, k) => s + parts[k][c], 0));
+  const Y = luminanceRec709(whole);
+  const rgb = (x) => x.map((c) => `<td>${c.toPrecision(3)}</td>`).join('');
+  const rows = LAYER_KEYS.map((k) => {
+    const y = luminanceRec709(parts[k]);
+    const key = OPENPBR_LAYERS[k];
+    const swatch = `<span class="layer-key" data-color="${key.color}" aria-hidden="true"></span>`;
+    const share = Y > 0 ? `${((100 * y) / Y).toFixed(1)}%` : '—';
+    return (
+      `<tr data-layer="${k}"><td>${swatch}${key.short}</td>${rgb(parts[k])}<td>${y.toPrecision(4)}</td>` +
+      `<td>${share}</td></tr>`
+    );
+  });
+  const sum = `<td>sum (A)</td>${rgb(whole)}<td>${Y.toPrecision(4)}</td><td></td>`;
+  const total = `<tr data-layer="all">${sum}</tr>`;
+  return (
+    '<div class="table-scroll layers-scroll" tabindex="0" role="region" aria-label="OpenPBR’s layers at l and v">' +
+    '<table class="data-table compact openpbr-layers"><caption>OpenPBR’s layers at (l, v) (1/sr; Y: luminance, ' +
+    'the lobe’s radius)</caption><thead><tr><th>layer</th><th>R</th><th>G</th><th>B</th><th>Y</th>' +
+    `<th>share of Y</th></tr></thead><tbody>${rows.join('')}${total}</tbody></table></div>`
+  );
+}
+
 export function createReadout(container) {
   const readout = document.createElement('div');
   container.append(readout);
@@ -41,7 +70,10 @@ export function createReadout(container) {
       readout.innerHTML =
         `<table class="data-table compact"><caption>${caption}</caption><thead><tr>${tableHead(state)}</tr></thead>` +
         `<tbody>${rows.join('')}</tbody></table>` +
-        (scene.ms.lobe ? multipleLine(state, scene) : '');
+        (scene.ms.lobe ? multipleLine(state, scene) : '') +
+        (scene.A.openpbr && state.openpbrParts ? layersTable(scene) : '');
+      // the key's colours through the CSSOM: the page's CSP allows no style attribute in markup
+      for (const key of readout.querySelectorAll('.layer-key')) key.style.borderTopColor = key.dataset.color;
     },
   };
 }

@@ -4,12 +4,25 @@
 import { termOptions } from '../../math/catalogue/index.js';
 import { SLOTS } from '../../core/custom/slots.js';
 import { CONVENTION_LABELS } from '../ndf-explorer/words.js';
+import { OPENPBR_LAYERS } from './openpbr-lobe.js';
 
 const ndfOptions = termOptions('ndf');
 const visOptions = termOptions('visibility');
 const WITH_CUSTOM = { custom: true };
 
 /** The code of A's user-written term in `slotKey` (no control of its own: the panel's editor edits it). */
+/** A number of OpenPBR Surface's, under the specification's own name, in the OpenPBR folder. */
+const OPENPBR_FOLDER = { group: 'OpenPBR Surface (A: model OpenPBR)', closed: true };
+const openpbr = (label, fallback, min = 0) => ({
+  ...OPENPBR_FOLDER,
+  type: 'number',
+  min,
+  max: 1,
+  step: 0.01,
+  default: fallback,
+  label,
+});
+
 const code = (slotKey, label) => ({ type: 'code', slot: slotKey, default: SLOTS[slotKey].starter, label });
 
 export const schema = {
@@ -17,7 +30,11 @@ export const schema = {
   viewTheta: { type: 'number', min: -89, max: 89, step: 1, default: 45, label: 'View θv (+: mirror side)', unit: '°' },
   brdf: {
     type: 'enum',
-    options: { microfacet: 'Microfacet F·D·V/4', custom: 'Custom whole BRDF (your GLSL)' },
+    options: {
+      microfacet: 'Microfacet F·D·V/4',
+      custom: 'Custom whole BRDF (your GLSL)',
+      openpbr: 'OpenPBR Surface',
+    },
     default: 'microfacet',
     label: 'BRDF A: model',
   },
@@ -63,4 +80,22 @@ export const schema = {
     default: 'burley2012',
     label: 'A: anisotropy convention',
   },
+  // beyond the talk (issue 29): A as OpenPBR Surface's layered material, a few of its parameters by its own names
+  // (the roughnesses from 0.1: a mirror-like layer's lobe is narrower than the plot's half-degree steps)
+  base_color: { ...OPENPBR_FOLDER, type: 'color', default: '#e7e7e7', label: 'base_color (sRGB)' },
+  base_metalness: openpbr('base_metalness', 0),
+  specular_color: { ...OPENPBR_FOLDER, type: 'color', default: '#ffffff', label: 'specular_color (sRGB)' },
+  specular_roughness: openpbr('specular_roughness', 0.3, 0.1),
+  coat_weight: openpbr('coat_weight', 0),
+  coat_roughness: openpbr('coat_roughness', 0.1, 0.1),
+  fuzz_weight: openpbr('fuzz_weight', 0),
+  fuzz_roughness: openpbr('fuzz_roughness', 0.5, 0.1),
+  openpbrLayer: {
+    ...OPENPBR_FOLDER,
+    type: 'enum',
+    options: { none: 'none', ...Object.fromEntries(Object.entries(OPENPBR_LAYERS).map(([k, x]) => [k, x.short])) },
+    default: 'coat',
+    label: '3-D wireframe: one layer’s part',
+  },
+  openpbrParts: { ...OPENPBR_FOLDER, type: 'bool', default: true, label: 'Show each layer’s part' },
 };

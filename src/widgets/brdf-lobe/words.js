@@ -9,6 +9,7 @@ import {
 import { brdfAngles } from '../../math/brdf.js';
 import { termEntry } from '../../math/catalogue/index.js';
 import { brdfSpec, factorsAt, lightDir, lobePeak, viewDir } from './model.js';
+import { LAYER_KEYS, OPENPBR_LAYERS, layerLuminances, openPbrSpec } from './openpbr-lobe.js';
 
 export const TITLE = 'BRDF lobe';
 
@@ -28,7 +29,11 @@ export const ABOUT =
   'Beyond the talk, whose BRDFs are isotropic: the plane of incidence turns to any azimuth φ from the surface’s ' +
   'tangent, and A’s anisotropy stretches GGX or Beckmann along that tangent (Heitz 2014’s forms; (αx, αy) by ' +
   'Burley 2012, glTF’s KHR_materials_anisotropy or OpenPBR 1.1), with height-correlated Smith GGX then ' +
-  'anisotropic too. Turn φ: an isotropic lobe stays the same, an anisotropic one is widest along the tangent.';
+  'anisotropic too. Turn φ: an isotropic lobe stays the same, an anisotropic one is widest along the tangent. ' +
+  'Past the talk, A’s model OpenPBR Surface (2024) stacks these terms into a base, its specular lobe, a coat and ' +
+  'a fuzz (parameters in its folder, by the specification’s names): the lobe is then the luminance of its RGB ' +
+  'value, each line one layer’s part of it, and the wire grid the part of the layer chosen; F, D, G and the ' +
+  'denominator are not switches of it.';
 
 /** The functions behind the pictures, linked to their rows on the parity page. */
 export const TERMS_USED = [
@@ -64,7 +69,9 @@ function multipleWords(state, ms) {
 /** The polar plot in words: what is drawn, with which factors off, where each lobe peaks. */
 export function describePolar(state, scene) {
   const { A, B, lobeA, lobeB, ms } = scene;
-  const off = ['F', 'D', 'G'].filter((k) => !state[`use${k}`]).concat(state.useDenominator ? [] : ['the denominator']);
+  const off = A.openpbr
+    ? [] // OpenPBR has no factors to switch
+    : ['F', 'D', 'G'].filter((k) => !state[`use${k}`]).concat(state.useDenominator ? [] : ['the denominator']);
   const what =
     `${state.cosine ? 'f(l, v) × n·v' : 'f(l, v)'} for ${A.label}${B ? ` and, dashed, ${B.label}` : ''}` +
     `${off.length ? ` with ${off.join(', ')} switched off` : ''}`;
@@ -77,6 +84,11 @@ export function describePolar(state, scene) {
       const [theta, value] = lobePeak(lobe);
       return `${p.label.slice(0, 1)} peaks at ${theta.toFixed(1)}° (${value.toPrecision(3)} /sr)`;
     });
+  const layers = (scene.layers?.parts ?? []).map(({ key, lobe }) => {
+    const [theta, value] = lobePeak(lobe);
+    return `${OPENPBR_LAYERS[key].label} peaks at ${theta.toFixed(1)}° (${value.toPrecision(3)} /sr)`;
+  });
+  if (layers.length) peaks.push(`Lines, A's layers' parts of its luminance: ${layers.join('; ')}`);
   return (
     `Polar plot in the plane of incidence: ${what}. Light ${state.lightTheta}° from n on the left, view at ` +
     `${state.viewTheta}°, mirror direction at ${state.lightTheta}°. ${peaks.join('; ')}.${multipleWords(state, ms)}`
@@ -86,8 +98,12 @@ export function describePolar(state, scene) {
 /** The 3-D lobe in words. */
 export function describeLobe3d(state, scene) {
   const { A, B, max } = scene;
+  const layer =
+    !B && scene.layers?.fLayer
+      ? ` (solid) and its ${OPENPBR_LAYERS[state.openpbrLayer].label} part` + ' (wireframe)'
+      : '';
   return (
-    `3-D lobe of ${A.label}${B ? ` (solid) and ${B.label} (wireframe)` : ''} over the hemisphere, light ` +
+    `3-D lobe of ${A.label}${B ? ` (solid) and ${B.label} (wireframe)` : layer} over the hemisphere, light ` +
     `${state.lightTheta}° from n; each direction's distance from the centre is ${state.cosine ? 'f × n·v' : 'f'}, ` +
     `scaled to ${max.toPrecision(3)}. Arrows: n, l, v, h and the mirror direction, in the plane of incidence ` +
     `(the blue pane), ${state.phi}° about n from the tangent t (the dark red arrow).` +
@@ -162,11 +178,24 @@ function valuesTex(state, t, a) {
     : `${values} = ${n(t.f)}\\ \\mathrm{sr}^{-1}`;
 }
 
+/** OpenPBR's lobe at (l, v): the luminance of each layer's part, already weighted by the layers above it. */
+function openPbrTex(state) {
+  const y = layerLuminances(lightDir(state.lightTheta), viewDir(state.viewTheta), openPbrSpec(state));
+  const names = { specular: 'spec', diffuse: 'diff', metal: 'metal', coat: 'coat', fuzz: 'fuzz' };
+  const sum = LAYER_KEYS.map((k) => `Y_{\\text{${names[k]}}}`).join(' + ');
+  const values = LAYER_KEYS.map((k) => texNumber(y[k], 4)).join(' + ');
+  return (
+    `\\begin{gathered}Y(f) = ${sum}\\\\ = ${values} = ${texNumber(y.all, 4)}\\ \\mathrm{sr}^{-1}\\\\ ` +
+    `${LIGHT_VIEW(state)}\\end{gathered}`
+  );
+}
+
 /**
  * BRDF A at the light and view of the sliders: the factors, their values and f, in 1/sr; a whole BRDF the user
  * wrote has no factors: it is named, with the angles it is read at.
  */
 export const FORMULA = declareFormula('brdf-lobe', (state) => {
+  if (state.brdf === 'openpbr') return openPbrTex(state);
   if (state.brdf === 'custom') {
     const f = `\\sym{brdf}{f(\\mathbf{l},\\mathbf{v}) = ${texYours('f', '\\mathbf{l}, \\mathbf{v}')}}`;
     return `\\begin{gathered}${f}\\\\ ${LIGHT_VIEW(state)}\\end{gathered}`;
