@@ -4,7 +4,7 @@
 import { createWidgetShell } from '../../core/framework/widget-shell.js';
 import { createSettledTask } from '../../core/framework/render-loop.js';
 import { createPlot } from '../../core/ui/plot.js';
-import { SURFACE_KEYS, TERMS_USED, schema } from './schema.js';
+import { SURFACE_KEYS, SWEEP_KEYS, TERMS_USED, schema } from './schema.js';
 import { createSurface, measuredAt, smithAt } from './model.js';
 import { ABOUT, TITLE, describeSurface, statsHtml } from './words.js';
 import { drawSurface } from './surface-view.js';
@@ -30,23 +30,24 @@ export function create(container, initialState = {}, { onStateChange, locked } =
   let plot = null;
   let shadowShare = 0;
   const spec = () => azimuthPlotSpec(shell.state, surface, surface.sweep.data);
-  const rebuild = () => {
+  const rebuild = (newSurface) => {
     surface?.sweep.cancel();
-    const next = createSurface(shell.state);
+    const next = newSurface ? createSurface(shell.state) : surface;
     next.sweep = createAzimuthSweep(next, shell.state.theta, () => plot?.setData(spec()));
     surface = next;
   };
   const figuresLater = createSettledTask(() => {
+    shadowShare = drawSurface(canvas, shell.state, surface, 'fine');
     const figures = figuresAt(shell.state, surface);
     stats.innerHTML = statsHtml(shell.state, surface, figures);
     shell.describe(describeSurface(shell.state, figures, shadowShare), canvas);
     surface.sweep.start();
   });
-  const render = (newSurface) => {
-    if (newSurface) rebuild();
-    shadowShare = drawSurface(canvas, shell.state, surface);
+  const render = (newSurface, newSweep = newSurface) => {
+    if (newSweep) rebuild(newSurface);
+    drawSurface(canvas, shell.state, surface, 'coarse'); // the full picture follows once the drag pauses
     figuresLater.schedule();
-    if (!newSurface) return;
+    if (!newSweep) return;
     if (plot) plot.setData(spec());
     else plot = createPlot(shell.view, spec());
   };
@@ -54,7 +55,11 @@ export function create(container, initialState = {}, { onStateChange, locked } =
   const resize = new ResizeObserver(() => drawSurface(canvas, shell.state, surface));
   resize.observe(canvas);
 
-  const onChanged = (changed) => render(changed.some((k) => SURFACE_KEYS.includes(k)));
+  const onChanged = (changed) =>
+    render(
+      changed.some((k) => SURFACE_KEYS.includes(k)),
+      changed.some((k) => SWEEP_KEYS.includes(k)),
+    );
   const update = shell.connect({ title: TITLE, onChanged, onStateChange });
 
   return {

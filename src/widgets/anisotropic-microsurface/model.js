@@ -5,7 +5,7 @@ import { smithG1BeckmannAniso } from '../../math/anisotropic.js';
 import { cellMaxima, facetAlphas, generateHeightfield, measuredG1Aniso } from '../../math/heightfield.js';
 
 export const GRID = 192; // cells per side of the periodic surface: ~38 of its shortest bumps
-export const SAMPLES = 8000; // facets ray-traced per azimuth: a share within ~0.01 of the surface's own
+export const SAMPLES = 12000; // facets ray-traced per azimuth: a standard error of G1 under ~0.007
 export const AZIMUTHS_MEASURED = Array.from({ length: 13 }, (_, i) => i * 15); // degrees from t
 export const AZIMUTHS_CURVE = Float64Array.from({ length: 181 }, (_, i) => i);
 

@@ -7,7 +7,7 @@ export function azimuthPlotSpec(state, surface, data) {
   const at = (values) => Array.from(AZIMUTHS_CURVE, (p) => (p % 15 === 0 ? values[p / 15] : null));
   return {
     title: `Share of facets a light ${state.theta}° from n reaches, G1, against its azimuth: ray-traced vs Smith`,
-    xLabel: 'Azimuth of the light from the tangent t, φ (degrees)',
+    xLabel: 'Light azimuth from t, φ (degrees)',
     yLabel: 'G1 (share of lit facets)',
     x: { min: 0, max: 180 },
     y: null,

@@ -10,5 +10,7 @@ export const schema = {
 /** The math functions the widget computes, each with a GLSL twin on the parity page ("Terms used"). */
 export const TERMS_USED = ['smithG1BeckmannAniso'];
 
-/** The settings that make a new surface (and a new G1 measurement); phi only redraws the picture and the table. */
-export const SURFACE_KEYS = ['alphaX', 'alphaY', 'theta', 'seed'];
+/** The settings that make a new surface (and a new G1 measurement). */
+export const SURFACE_KEYS = ['alphaX', 'alphaY', 'seed'];
+/** The settings that make a new G1 measurement: those and θ; φ only redraws the picture and the table. */
+export const SWEEP_KEYS = [...SURFACE_KEYS, 'theta'];

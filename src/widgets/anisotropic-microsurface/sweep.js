@@ -1,4 +1,4 @@
-// anisotropic-microsurface, the G1 measurement against the azimuth: one azimuth per task (each ~0.1 s), so the page
+// anisotropic-microsurface, the G1 measurement against the azimuth: one azimuth per task (each ~0.1-0.5 s), so the page
 // never stalls; started once a drag pauses.
 import { AZIMUTHS_MEASURED, measuredAt } from './model.js';
 

@@ -1,0 +1,10 @@
+import { launchBrowser, openPage, serveStatic } from './tests/browser/harness.js';
+const server = await serveStatic(new URL('./dist', import.meta.url).pathname);
+const browser = await launchBrowser([], { own: true });
+const q = process.argv[2] ?? '';
+const page = await openPage(browser, server.url, `embed.html?w=anisotropic-microsurface${q}`, { width: 1280, height: 800 });
+await page.waitForFunction(() => globalThis.__shadingLab?.widgets?.['anisotropic-microsurface'], { timeout: 60000 });
+await new Promise((r) => setTimeout(r, 1500));
+await (await page.$('canvas.aniso-microsurface')).screenshot({ path: `/tmp/shots/t28-micro3d/canvas${process.argv[3] ?? ''}.png` });
+console.log(page.errors);
+await browser.close(); server.close();
