@@ -253,7 +253,7 @@ describe('microfacets', () => {
 });
 
 describe('anisotropic-microsurface', () => {
-  it("the ray-traced G1 of a 3-D Gaussian surface agrees with Smith's anisotropic Beckmann G1 at 13 azimuths", async () => {
+  it("ray-traced G1 of a 3-D Gaussian surface vs Smith's anisotropic Beckmann G1, 13 azimuths", async () => {
     const key = 'anisotropic-microsurface';
     const page = await open(browser, `embed.html?w=${key}&alphaX=0.7&alphaY=0.25&theta=80`);
     await widget(page, key);

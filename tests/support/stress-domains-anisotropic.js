@@ -31,7 +31,10 @@ export const ANISOTROPIC_STRESS_DOMAINS = {
   reflectedPdfGGXAniso: { tuples: two, range: NON_NEGATIVE },
   anisotropicAlphas: { args: [[0, 1e-4, 0.3, 1], [-1, 0, 0.5, 1, 2], ANISOTROPY_CONVENTIONS], range: [0, 3.2] },
   anisotropicBentReflection: {
-    tuples: DIRS.flatMap((d) => [-2, -1, -0.5, 0, 0.5, 1, 2].flatMap((a) => [0, 1e-4, 0.3, 1, 4].map((al) => [...d, al, a]))),
+    // (v, α, a): a past ±1 (clamped), α past 1
+    tuples: DIRS.flatMap((d) =>
+      [-2, -1, -0.5, 0, 0.5, 1, 2].flatMap((a) => [0, 1e-4, 0.3, 1, 4].map((alpha) => [...d, alpha, a])),
+    ),
     range: [-1, 1],
   },
   sampleVisibleNormalGGXAniso: {

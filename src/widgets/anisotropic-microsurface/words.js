@@ -7,7 +7,8 @@ export const TITLE = 'Anisotropic microsurface, ray-traced';
 export const ABOUT =
   'Beyond the talk: a 3-D rough surface whose bumps are stretched, seen from above and lit from the light’s ' +
   'direction; dark blue points lie in the shadow of other bumps, black ones face away from the light. With αx > αy ' +
-  'the grooves run along b and the slopes are steeper along t, so a highlight stretches along t. Its heights are a Gaussian random field (a sum of ' +
+  'the grooves run along b and the slopes are steeper along t, so a highlight stretches along t. Its heights are ' +
+  'a Gaussian random field (a sum of ' +
   '400 waves with random phases), so its slopes follow anisotropic Beckmann, with a different roughness along the ' +
   'tangent t and the bitangent b. The plot ray-traces the share of facets facing the light that it reaches, G1, at ' +
   'thirteen azimuths, and sets it against Smith’s G1 with the roughness projected on the light’s azimuth, ' +
