@@ -1,5 +1,8 @@
 // anisotropic-microsurface, in words: the about text, the table at the light's azimuth and the picture described
 // for screen readers.
+import { declareFormula, texNumber } from '../../core/framework/formula-registry.js';
+import { smithG1BeckmannAniso } from '../../math/anisotropic.js';
+import { directionOf } from './model.js';
 import { WINDOW_CELLS } from './surface-view.js';
 
 export const TITLE = 'Anisotropic microsurface, ray-traced';
@@ -50,3 +53,17 @@ export function describeSurface(state, { measured, smith }, shadowShare) {
     `tilted away from the light and ${pct(measured.towards)} of those tilted towards it.`
   );
 }
+
+/** Smith's anisotropic Beckmann G1 at the state's light, for the pair asked for (the table's is the facets' own). */
+export const FORMULA = declareFormula('anisotropic-microsurface', (state) => {
+  const g1 = smithG1BeckmannAniso(...directionOf(state.theta, state.phi), state.alphaX, state.alphaY);
+  const smith =
+    'G_1(\\mathbf{w}) = \\frac{1}{1 + \\Lambda(a)},\\ a = \\frac{\\cot\\theta}{\\alpha(\\phi)},\\ ' +
+    '\\alpha(\\phi) = \\sqrt{\\cos^2\\phi\\, \\alpha_x^2 + \\sin^2\\phi\\, \\alpha_y^2}';
+  const sym = (key, tex, x, digits) => `\\sym{${key}}{${tex} = ${texNumber(x, digits)}${digits ? '' : '^\\circ'}}`;
+  const at =
+    [sym('alphaX', '\\alpha_x', state.alphaX, 2), sym('alphaY', '\\alpha_y', state.alphaY, 2)].join(',\\ ') +
+    `,\\ ${sym('theta', '\\theta', state.theta, 0)},\\ ${sym('phi', '\\phi', state.phi, 0)}:` +
+    `\\quad G_1 = ${texNumber(g1)}`;
+  return `\\begin{gathered}${smith}\\\\ ${at}\\end{gathered}`;
+});
