@@ -16,8 +16,10 @@ export const ABOUT =
   'tangent t and the bitangent b. The plot ray-traces the share of facets facing the light that it reaches, G1, at ' +
   'thirteen azimuths, and sets it against Smith’s G1 with the roughness projected on the light’s azimuth, ' +
   'α(φ)² = cos²φ αx² + sin²φ αy² (Heitz 2014), for the pair (αx, αy) the surface’s own facets have. Averaged over ' +
-  'all facets the two agree to within the ray tracing’s sampling: a surface with no overhangs shows the light ' +
-  'exactly its footprint, and Smith’s G1 keeps that same balance (the weak white furnace). Smith assumes more: that ' +
+  'all facets the two agree within about 0.01: a surface with no overhangs shows the light exactly its footprint, ' +
+  'and Smith’s G1 keeps that same balance (the weak white furnace). What is left is this one surface’s slopes, only ' +
+  'nearly Beckmann’s: a finite sum of waves leaves its slopes along t and b a few per cent correlated, so φ and ' +
+  '180° − φ differ a little, besides the sampling of 12 000 rays per azimuth. Smith assumes more: that ' +
   'a facet’s chance of being shadowed does not depend on which way it tilts, as if heights along a ray were ' +
   'uncorrelated. On this smooth surface they are not: facets tilted away from the light sit on the far side of ' +
   'their bump and are shadowed more often (the green points), those tilted towards it less.';
