@@ -24,6 +24,9 @@ export const ABOUT =
   'uncorrelated. On this smooth surface they are not: facets tilted away from the light sit on the far side of ' +
   'their bump and are shadowed more often (the green points), those tilted towards it less.';
 
+/** Smith's G1 at the state's light for the roughness pair asked for (the facets' own differs a little). */
+const smithAsked = (state) => smithG1BeckmannAniso(...directionOf(state.theta, state.phi), state.alphaX, state.alphaY);
+
 /** The shadowed share, 1 − G1, as a percentage. */
 const pct = (g1) => `${((1 - g1) * 100).toFixed(1)}%`;
 const fix = (x) => x.toFixed(3);
@@ -40,6 +43,7 @@ export function statsHtml(state, surface, { measured, smith }) {
     row('G1 ray-traced, facets tilted away from the light', fix(measured.away)) +
     row('roughness of the surface’s own facets (αx, αy)', `(${fix(ax)}, ${fix(ay)})`) +
     row('roughness asked for (αx, αy)', `(${state.alphaX}, ${state.alphaY})`) +
+    row('G1 by Smith at the roughness asked for (the formula’s)', fix(smithAsked(state))) +
     '</tbody></table>'
   );
 }
@@ -58,9 +62,9 @@ export function describeSurface(state, { measured, smith }, shadowShare) {
 
 /** Smith's anisotropic Beckmann G1 at the state's light, for the pair asked for (the table's is the facets' own). */
 export const FORMULA = declareFormula('anisotropic-microsurface', (state) => {
-  const g1 = smithG1BeckmannAniso(...directionOf(state.theta, state.phi), state.alphaX, state.alphaY);
+  const g1 = smithAsked(state);
   const smith =
-    'G_1(\\mathbf{w}) = \\frac{1}{1 + \\Lambda(a)},\\ a = \\frac{\\cot\\theta}{\\alpha(\\phi)},\\ ' +
+    'G_1(\\mathbf{w}) = \\frac{1}{1 + \\Lambda(a)},\\ a = \\frac{\\cot\\theta}{\\alpha(\\phi)},\\\\ ' +
     '\\alpha(\\phi) = \\sqrt{\\cos^2\\phi\\, \\alpha_x^2 + \\sin^2\\phi\\, \\alpha_y^2}';
   const sym = (key, tex, x, digits) => `\\sym{${key}}{${tex} = ${texNumber(x, digits)}${digits ? '' : '^\\circ'}}`;
   const at =
