@@ -69,7 +69,7 @@ export const FORMULA = declareFormula('anisotropic-microsurface', (state) => {
   const sym = (key, tex, x, digits) => `\\sym{${key}}{${tex} = ${texNumber(x, digits)}${digits ? '' : '^\\circ'}}`;
   const at =
     [sym('alphaX', '\\alpha_x', state.alphaX, 2), sym('alphaY', '\\alpha_y', state.alphaY, 2)].join(',\\ ') +
-    `,\\ ${sym('theta', '\\theta', state.theta, 0)},\\ ${sym('phi', '\\phi', state.phi, 0)}:` +
+    `\\\\ ${sym('theta', '\\theta', state.theta, 0)},\\ ${sym('phi', '\\phi', state.phi, 0)}:` +
     `\\quad G_1 = ${texNumber(g1)}`;
   return `\\begin{gathered}${smith}\\\\ ${at}\\end{gathered}`;
 });
