@@ -10,6 +10,14 @@ const CASES = [
   { environment: 'sky', material: 'manual', alpha: 0.1 },
 ];
 const METHODS = [['mirror', 1], ['split-sum', 1], ['pmrem', 1], ...[4, 16, 64, 256].map((n) => ['importance', n])];
+// brushed metal (issue 28): the split sum's prefilter has no anisotropic form, so it reads the light along the bent
+// reflection vector (Filament, three.js) or the mirror direction; importance sampling has the anisotropic lobe
+const ANISOTROPIC_CASES = [{ environment: 'studio', material: 'aluminum', alpha: 0.2, anisotropy: 0.8 }];
+const ANISOTROPIC_METHODS = [
+  ['split-sum', 1, { bentReflection: true }],
+  ['split-sum', 1, { bentReflection: false }],
+  ['importance', 64, {}],
+];
 
 export async function measureIbl({ quick }) {
   const server = await serveStatic(await buildApp());
@@ -18,12 +26,14 @@ export async function measureIbl({ quick }) {
   const runs = quick ? 1 : 7;
   const rows = [];
   try {
-    for (const c of quick ? CASES.slice(0, 1) : CASES) {
+    const cases = quick ? CASES.slice(0, 1) : [...CASES, ...ANISOTROPIC_CASES];
+    for (const c of cases) {
       const page = await openPage(
         browser,
         server.url,
         `embed.html?w=material-lab&material=${c.material}&alpha=${c.alpha}` +
-          `&environment=${c.environment}&refSamples=${refSamples}&punctual=0`, // the environment alone
+          `&environment=${c.environment}&refSamples=${refSamples}&punctual=0` + // the environment alone
+          (c.anisotropy ? `&anisotropy=${c.anisotropy}` : ''),
         { width: 1100, height: 700 },
       );
       await page.waitForFunction(
@@ -34,25 +44,30 @@ export async function measureIbl({ quick }) {
         },
         { timeout: 900_000, polling: 500 },
       );
-      for (const [method, samples] of quick ? METHODS.slice(1, 2) : METHODS) {
+      const methods = c.anisotropy ? ANISOTROPIC_METHODS : METHODS;
+      for (const [method, samples, more = {}] of quick ? METHODS.slice(1, 2) : methods) {
         const stats = await page.evaluate(
-          async (method, samples, runs) => {
+          async (method, samples, more, runs) => {
             const lab = globalThis.__shadingLab.widgets['material-lab'];
-            lab.update({ envMethod: method, samples });
+            const before = lab.getStats(); // a frame drawn since the update is a new object
+            lab.update({ envMethod: method, samples, ...more });
             lab.remeasure(runs);
             for (;;) {
               await new Promise((r) => setTimeout(r, 100));
               const s = lab.getStats();
-              if (s.method === method && s.samplesN === samples && s.timingRuns === runs) return s;
+              const fresh = s !== before && s.samples >= s.target;
+              if (fresh && s.method === method && s.samplesN === samples && s.timingRuns === runs) return s;
             }
           },
           method,
           samples,
+          more,
           runs,
         );
         rows.push({
           ...c,
           method,
+          ...(more.bentReflection === undefined ? {} : { bent: more.bentReflection }),
           samples: method === 'importance' ? samples : null,
           ms: stats.ms,
           rms: stats.rms,

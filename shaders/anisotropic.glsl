@@ -118,3 +118,16 @@ float reflectedPdfGGXAniso(vec3 v, vec3 m, vec2 alpha) {
   if (!(v.z > 0.0) || !(dot(v, m) > 0.0)) return 0.0;
   return ndfGGXAniso(m, alpha) / (2.0 * (v.z + ggxAnisoRoot(v, clampAlphaAniso(alpha))));
 }
+
+// The bent reflection vector of Filament's and three.js's anisotropic IBL (JS twin: anisotropicBentReflection): the
+// grain is b for a >= 0 and t for a < 0; v less its part along it is mixed into n with weight (1 - |a| (1 - √α))⁴
+// and v mirrored about the result; v along the grain gives the mirror about n
+vec3 anisotropicBentReflection(vec3 v, float alpha, float anisotropy) {
+  float a = clamp(anisotropy, -1.0, 1.0);
+  vec3 across = a >= 0.0 ? vec3(v.x, 0.0, v.z) : vec3(0.0, v.y, v.z);
+  if (dot(across, across) < 1e-12) return reflect(-v, vec3(0.0, 0.0, 1.0));
+  float k = 1.0 - abs(a) * (1.0 - sqrt(clamp(alpha, 0.0, 1.0)));
+  float toN = k * k * k * k;
+  vec3 bent = normalize(mix(normalize(across), vec3(0.0, 0.0, 1.0), toN));
+  return reflect(-v, bent);
+}

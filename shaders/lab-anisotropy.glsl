@@ -50,14 +50,8 @@ vec3 lobeBRDF(vec3 l, vec3 v, vec3 f0) { return microfacetBRDF(l, v, uAlpha, f0)
 // of a prefiltered map or a sphere light is drawn by moving one direction, which is what the error image measures.
 // (BENT_REFLECTION comes with ANISOTROPIC only: src/lab/lab-defines.js)
 #ifdef BENT_REFLECTION
-vec3 lobeReflection(vec3 v) {
-  vec3 grain = uAlphaPair.x >= uAlphaPair.y ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
-  vec3 across = v - dot(v, grain) * grain;
-  if (dot(across, across) < 1e-12) return reflect(-v, vec3(0.0, 0.0, 1.0)); // v along the grain: the rim
-  float k = 1.0 - uAnisotropy * (1.0 - sqrt(uAlpha));
-  float toN = k * k * k * k;
-  vec3 bent = normalize(mix(normalize(across), vec3(0.0, 0.0, 1.0), toN));
-  return reflect(-v, bent);
+vec3 lobeReflection(vec3 v) { // anisotropic.glsl's: its a >= 0 takes b as the grain, as αx >= αy does here
+  return anisotropicBentReflection(v, uAlpha, uAlphaPair.x >= uAlphaPair.y ? uAnisotropy : -uAnisotropy);
 }
 #else
 vec3 lobeReflection(vec3 v) { return reflect(-v, vec3(0.0, 0.0, 1.0)); } // the mirror direction

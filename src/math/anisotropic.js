@@ -174,3 +174,29 @@ export function reflectedPdfGGXAniso(vx, vy, vz, mx, my, mz, alphaX, alphaY) {
   const root = ggxAnisoRoot(vx, vy, vz, clampAxis(alphaX), clampAxis(alphaY));
   return ndfGGXAniso(mx, my, mz, alphaX, alphaY) / (2 * (vz + root));
 }
+
+/**
+ * The bent reflection vector of Filament's and three.js's anisotropic image-based lighting (Filament, "Lighting:
+ * image based lights: anisotropy"; three.js's getIBLAnisotropyRadiance): a prefiltered map has no anisotropic form,
+ * so the stretched highlight is drawn by moving the one direction it is read in. The grain (the brushing lines) is
+ * b for a >= 0 (stretched along t, αx >= αy) and t for a < 0; v less its part along the grain is mixed into n with
+ * weight (1 - |a| (1 - √α))⁴, three.js's weighting with √α its perceptual roughness, and v is mirrored about the
+ * result. a is clamped to [-1, 1], α to [0, 1]; v along the grain (nothing left across it) gives the mirror about n.
+ * Returns [rx, ry, rz] in the tangent frame (x = t, y = b, z = n). Twin in shaders/anisotropic.glsl.
+ */
+export function anisotropicBentReflection(vx, vy, vz, alpha, anisotropy) {
+  const a = Math.min(Math.max(anisotropy, -1), 1);
+  const [cx, cy] = a >= 0 ? [vx, 0] : [0, vy]; // v less its part along the grain
+  const across2 = cx * cx + cy * cy + vz * vz;
+  let [nx, ny, nz] = [0, 0, 1];
+  if (!(across2 < 1e-12)) {
+    const k = 1 - Math.abs(a) * (1 - Math.sqrt(Math.min(Math.max(alpha, 0), 1)));
+    const toN = k * k * k * k;
+    const s = (1 - toN) / Math.sqrt(across2);
+    [nx, ny, nz] = [cx * s, cy * s, vz * s + toN];
+    const len = Math.hypot(nx, ny, nz);
+    [nx, ny, nz] = [nx / len, ny / len, nz / len];
+  }
+  const d = 2 * (nx * vx + ny * vy + nz * vz);
+  return [d * nx - vx, d * ny - vy, d * nz - vz];
+}

@@ -132,15 +132,21 @@ function renderIbl(ibl) {
     'samples.' +
     `${iblStaleNote(report.date) ? ` ${iblStaleNote(report.date).replace(/`/g, '')}` : ''}</p>`;
   extra.before(section);
-  const cases = [...new Set(ibl.rows.map((r) => `${r.environment}|${r.material}|${r.alpha}`))];
+  // a case is a material under an environment, anisotropic ones (issue 28) apart; a method of an anisotropic case
+  // says which direction it reads the light in
+  const caseOf = (r) => `${r.environment}|${r.material}|${r.alpha}|${r.anisotropy ?? 0}`;
+  const methodOf = (r) => (r.bent === undefined ? r.method : `${r.method}, ${r.bent ? 'bent reflection' : 'mirror'}`);
+  const named = (r) =>
+    `${r.environment}, ${r.material} α ${r.alpha}${r.anisotropy ? `, anisotropy ${r.anisotropy}` : ''}`;
+  const cases = [...new Set(ibl.rows.map(caseOf))];
   for (const c of cases) {
-    const rows = ibl.rows.filter((r) => `${r.environment}|${r.material}|${r.alpha}` === c);
-    const [environment, material, alpha] = c.split('|');
-    const methods = [...new Set(rows.map((r) => r.method))];
+    const rows = ibl.rows.filter((r) => caseOf(r) === c);
+    const [environment, material] = c.split('|');
+    const methods = [...new Set(rows.map(methodOf))];
     const xs = [...new Set(rows.map((r) => r.ms))].sort((a, b) => a - b);
     plots.push(
       createPlot(section, {
-        title: `${environment}, ${material} α ${alpha}: relative RMS error against GPU time (lower left is better)`,
+        title: `${named(rows[0])}: relative RMS error against GPU time (lower left is better)`,
         xLabel: 'GPU time of the pass (ms)',
         yLabel: 'relative RMS error',
         x: { min: xs[0] * 0.8, max: xs[xs.length - 1] * 1.2, log: true },
@@ -154,9 +160,9 @@ function renderIbl(ibl) {
         })),
         data: [
           xs,
-          ...methods.map((m) => xs.map((x) => rows.find((r) => r.method === m && r.ms === x)?.relative ?? null)),
+          ...methods.map((m) => xs.map((x) => rows.find((r) => methodOf(r) === m && r.ms === x)?.relative ?? null)),
         ],
-        filename: `ibl-${environment}-${material}`,
+        filename: `ibl-${environment}-${material}${rows[0].anisotropy ? '-anisotropic' : ''}`,
         height: 220,
       }),
     );
@@ -168,8 +174,8 @@ function renderIbl(ibl) {
     ibl.rows
       .map((r) =>
         row([
-          `${r.environment}, ${r.material} α ${r.alpha}`,
-          r.samples ? `importance, N = ${r.samples}` : r.method,
+          named(r),
+          r.samples ? `importance, N = ${r.samples}` : methodOf(r),
           r.ms.toFixed(2),
           r.rms.toExponential(2),
           `${(r.relative * 100).toFixed(2)} %`,

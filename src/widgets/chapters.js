@@ -27,7 +27,7 @@ export const CHAPTERS = [
     title: 'Microfacet theory',
     blurb: 'The half vector, shadowing and masking, the energy lost.',
     page: 'microfacets.html',
-    widgets: ['microfacets', 'energy'],
+    widgets: ['microfacets', 'anisotropic-microsurface', 'energy'],
   },
   {
     key: 'fresnel',

@@ -76,6 +76,11 @@ export const WIDGETS = {
     summary: 'A 2-D microsurface under a bundle of rays: facets along h, shadowing, masking, second bounces, vs Smith.',
     load: () => import('./microfacets/microfacets.js'),
   },
+  'anisotropic-microsurface': {
+    title: 'Anisotropic microsurface, ray-traced',
+    summary: 'A 3-D Gaussian surface stretched along t, its shadows ray-traced, G1 against azimuth vs Smith’s.',
+    load: () => import('./anisotropic-microsurface/anisotropic-microsurface.js'),
+  },
   energy: {
     title: 'White furnace',
     summary: 'Directional albedo against angle for a sweep of roughness, the energy lost, and furnace spheres.',

@@ -30,6 +30,13 @@ export const ANISOTROPIC_STRESS_DOMAINS = {
   visibleNormalPdfGGXAniso: { tuples: two, range: NON_NEGATIVE },
   reflectedPdfGGXAniso: { tuples: two, range: NON_NEGATIVE },
   anisotropicAlphas: { args: [[0, 1e-4, 0.3, 1], [-1, 0, 0.5, 1, 2], ANISOTROPY_CONVENTIONS], range: [0, 3.2] },
+  anisotropicBentReflection: {
+    // (v, α, a): a past ±1 (clamped), α past 1
+    tuples: DIRS.flatMap((d) =>
+      [-2, -1, -0.5, 0, 0.5, 1, 2].flatMap((a) => [0, 1e-4, 0.3, 1, 4].map((alpha) => [...d, alpha, a])),
+    ),
+    range: [-1, 1],
+  },
   sampleVisibleNormalGGXAniso: {
     tuples: one.flatMap((t) => [0, 0.5, 1 - 1e-12, 1].flatMap((u1) => [0, 0.5, 1].map((u2) => [...t, u1, u2]))),
     range: [-1, 1],

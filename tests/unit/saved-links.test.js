@@ -23,7 +23,10 @@ const OLD_NAMES = new Set(Object.values(RENAMED_KEYS).flatMap(Object.keys));
 
 describe('a link saved from b048b6b opens the same view (state), old key names read as the new ones', () => {
   it('the fixture holds a share link, a page link where a page keeps the state, and a set of every widget', () => {
-    const widgets = Object.keys(WIDGETS).toSorted();
+    const addedSince = ['anisotropic-microsurface']; // widgets added since b048b6b have no links saved from it
+    const widgets = Object.keys(WIDGETS)
+      .filter((w) => !addedSince.includes(w))
+      .toSorted();
     expect([...new Set(SAVED.links.map((l) => l.widget))].toSorted()).toEqual(widgets);
     for (const w of widgets)
       expect(SAVED.links.filter((l) => l.widget === w && l.what === 'every field')).not.toEqual([]);

@@ -36,6 +36,7 @@ export const TERMS_USED = [
   'sphereLightRepresentativeDir',
   'sphereLightNormalization',
   'equirectUv',
+  'anisotropicBentReflection',
   'diffuseOrenNayar',
 ];
 

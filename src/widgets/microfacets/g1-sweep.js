@@ -1,5 +1,6 @@
 // microfacets, the G1 measurement: ray-tracing 18 angles takes up to ~2 s for GGX, so one angle per task and
 // the page never stalls; started once a drag pauses, so that the surface's frames do not wait for it.
+import { createSteppedTask } from '../../core/framework/stepped-task.js';
 import { DEG } from '../../math/angles.js';
 import { measuredG1 } from '../../math/microsurface.js';
 import { G1_ANGLES_DEG, G1_OPTIONS } from './model.js';
@@ -11,23 +12,15 @@ import { G1_ANGLES_DEG, G1_OPTIONS } from './model.js';
 export function createG1Sweep(profile, onStep) {
   const angles = G1_ANGLES_DEG;
   const data = { angles, measured: angles.map(() => null), complete: false };
-  let [started, cancelled] = [false, false];
-  const step = (i) => {
-    if (cancelled) return;
-    data.measured[i] = measuredG1(profile, angles[i] * DEG, G1_OPTIONS);
-    onStep();
-    if (i + 1 < angles.length) setTimeout(() => step(i + 1), 0);
-    else data.complete = true;
-  };
-  return {
-    data,
-    /** Starts the measurement (once; later calls do nothing). */
-    start() {
-      if (!started) setTimeout(() => step(0), 0);
-      started = true;
+  const task = createSteppedTask(
+    angles.length,
+    (i) => {
+      data.measured[i] = measuredG1(profile, angles[i] * DEG, G1_OPTIONS);
     },
-    cancel() {
-      cancelled = true;
+    () => {
+      data.complete = task.complete;
+      onStep();
     },
-  };
+  );
+  return { data, start: task.start, cancel: task.cancel };
 }

@@ -1,7 +1,8 @@
 // Parity rows of the anisotropic microfacet functions (shaders/anisotropic.glsl against src/math/anisotropic.js),
 // in the row format of parity-cases.js. The stress inputs: alpha pairs down to αx ≪ αy (1e-4 against 1) both ways
 // and past the clamps, half vectors exactly along t and b and within 1e-7 of the horizon or 1e-4 rad of n, grazing
-// views (n·v = 1e-7) along either axis, and sampler numbers at 0 and 1 - 1e-6.
+// views (n·v = 1e-7) along either axis, sampler numbers at 0 and 1 - 1e-6, and the bent reflection's anisotropy at
+// 0 and ±1 with views along, across and at grazing to the grain.
 import * as M from '../../../math/index.js';
 
 const cartesian = (...lists) => lists.reduce((acc, list) => acc.flatMap((a) => list.map((x) => [...a, x])), [[]]);
@@ -94,6 +95,21 @@ export const ANISOTROPIC_PARITY_CASES = [
     js: (alpha, anisotropy, convention) => M.anisotropicAlphas(alpha, anisotropy, CONVENTIONS[convention]),
     range: [0, 3.2], // Burley at α = 1, a = 1: 1/√0.1
     args: cartesian([0, 1e-4, 0.01, 0.25, 1], [-0.5, 0, 1e-4, 0.3, 0.9, 1, 1.5], [0, 1, 2]),
+  },
+  {
+    // a.xyz = v, a.w = α, b.x = a: both grains (a = ±1), no bend (a = 0), v grazing along t, b and between them,
+    // v along t and b exactly (nothing across the grain for one sign: the mirror about n), the tangent ⟂ v
+    name: 'anisotropicBentReflection',
+    chunk: 'anisotropic.glsl',
+    glsl: 'anisotropicBentReflection(a.xyz, a.w, b.x)',
+    outputs: 3,
+    js: M.anisotropicBentReflection,
+    range: [-1, 1],
+    args: cartesian(
+      [...DIRECTIONS.slice(0, 7), [1, 0, 0], [0, 1, 0], unit(0, 0.8, 0.6), unit(0, 0.05, 1)],
+      [0, 1e-4, 0.25, 1],
+      [-1, -0.5, 0, 0.3, 1],
+    ).map(([v, alpha, a]) => [...v, alpha, a, 0, 0, 0]),
   },
   {
     // a.xyz = v, a.w = αx, b.x = αy, b.yz = (u1, u2)
