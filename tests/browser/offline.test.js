@@ -175,6 +175,7 @@ describe('offline, after one visit', () => {
       const page = await openPage(browser, site.url, path === 'embed.html' ? 'embed.html?w=fresnel-curves' : path, {
         ...SMALL_VIEWPORT,
         beforeLoad: async (p) => {
+          p.setDefaultNavigationTimeout(WAIT_MS); // a load outlasted puppeteer's 30 s at a load average of 45
           site.state.online = false;
           await p.setOfflineMode(true);
         },
