@@ -21,7 +21,7 @@ afterEach(() => {
 });
 
 describe('test hooks (globalThis.__shadingLab, the shape tests and benchmarks read)', () => {
-  it('are there as soon as the module runs (a page with no widget has them from its boot), with nothing pending', () => {
+  it('are there as soon as the module runs (a page with no widget has them at boot), with nothing pending', () => {
     expect(atBoot).toEqual({ frames: 0, pending: 0, loading: 0, widgets: {} });
   });
   it('are made on first use with frames and widgets, and hold what the app reports', () => {
