@@ -101,28 +101,43 @@ export async function untilSteady(target, watch, { quietMs = 500, quietChecks = 
 
 let idleWaits = 0;
 
-/**
- * Resolves once the page (or frame) `target` is idle for `frames` animation frames in a row: no frame a render loop
- * asked for and no timed pause of the app (the edit's pause, the figures after a drag) still to come, as the app
- * counts them in __shadingLab.pending (src/core/framework/debug-hooks.js). Counted in frames, not milliseconds:
- * a loaded machine only takes longer to get there. A progressive view in sight asks for frames until it has its
- * samples, so this also waits for it to converge. Rejects after `timeout` (long: the test's own time budget is what
- * bounds a wait on a loaded machine).
- */
-export async function untilIdle(target, { frames = 2, timeout = 300_000 } = {}) {
+/** Resolves once the count `key` of the test hooks (__shadingLab) of `target` is 0 for `frames` frames in a row. */
+async function untilNone(target, key, frames, timeout) {
   const token = ++idleWaits; // each wait counts its own calm frames, from 0
   await target.waitForFunction(
-    (token, frames) => {
+    (token, key, frames) => {
       const calm = window.__idle?.token === token ? window.__idle.calm : 0;
-      const idle = globalThis.__shadingLab?.pending === 0;
+      const idle = globalThis.__shadingLab?.[key] === 0;
       window.__idle = { token, calm: idle ? calm + 1 : 0 };
       return idle && calm + 1 >= frames;
     },
     { timeout, polling: 'raf' },
     token,
+    key,
     frames,
   );
 }
+
+/**
+ * Resolves once the page (or frame) `target` is idle for `frames` animation frames in a row: no frame a render loop
+ * asked for, no timed pause of the app (the edit's pause, the figures after a drag) still to come and no chunk or
+ * widget mount still loading, as the app counts them in __shadingLab.pending (src/core/framework/debug-hooks.js,
+ * which makes the hooks at the page's boot: a page with no widget is idle at once). Counted in frames, not
+ * milliseconds: a loaded machine only takes longer to get there. A progressive view in sight asks for frames until it
+ * has its samples, so this also waits for it to converge. Rejects after `timeout` (long: the test's own time budget is
+ * what bounds a wait on a loaded machine).
+ */
+export const untilIdle = (target, { frames = 2, timeout = 300_000 } = {}) =>
+  untilNone(target, 'pending', frames, timeout);
+
+/**
+ * Resolves once the page (or frame) `target` has loaded what it shows, for `frames` animation frames in a row: no
+ * chunk still being fetched and no widget still mounting (__shadingLab.loading, a mount counted until the frame after
+ * its create). Not that its views are done drawing (a progressive view may go on refining): for a test whose claim is
+ * a page's state, words or errors, not its pictures.
+ */
+export const untilLoaded = (target, { frames = 2, timeout = WAIT_MS } = {}) =>
+  untilNone(target, 'loading', frames, timeout);
 
 /** Resolves after `n` more animation frames of `target`: "nothing happens meanwhile" counted in frames, not ms. */
 export const afterFrames = (target, n) =>

@@ -10,8 +10,7 @@ export const IDLE_FRAMES = 60;
 
 /**
  * Resolves once the page has had nothing pending (__shadingLab.pending, debug-hooks.js) for two animation frames in
- * a row. A page that has no hooks yet has asked for nothing (every requestFrame and later makes them): idle, which
- * helpers.js untilIdle would instead wait out (the landing page makes them only when its offline copy is saved).
+ * a row. A page without the hooks (every page of the app makes them at boot) counts as idle.
  */
 export async function untilCalm(page) {
   await page.evaluate(() => (window.__calm = 0)); // each wait counts its own calm frames

@@ -3,7 +3,7 @@
 // opened the link at, renamed (tests/support/saved-links.js); and for two explorers the spheres drawn from the old
 // link are the very pixels drawn from the link this build writes for that state.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { getState, launchBrowser, open, shot, untilIdle, widget } from './helpers.js';
+import { WAIT_MS, getState, launchBrowser, open, shot, untilIdle, untilLoaded } from './helpers.js';
 import { stateToParams } from '../../src/core/framework/state.js';
 import { WIDGETS } from '../../src/widgets/registry.js';
 import { RENAMED_KEYS, RENAMED_OPTIONS, SAVED, renamed } from '../support/saved-links.js';
@@ -26,7 +26,10 @@ describe('a link saved from b048b6b, opened in this build', () => {
     it(`${saved.widget} (${saved.what}, ${saved.form}): the same state, no notice, no error`, async () => {
       const page = await open(browser, saved.link, QUICK);
       const key = saved.prefix ?? saved.widget;
-      await widget(page, key);
+      await page.waitForFunction((k) => globalThis.__shadingLab?.widgets?.[k], { timeout: WAIT_MS }, key);
+      // every widget of the page up and drawn once (its notices shown, its errors said); the state is the claim, so
+      // its views need not finish refining
+      await untilLoaded(page);
       const state = await getState(page, key);
       for (const [k, v] of Object.entries(renamed(saved.widget, saved.state))) expect(state[k], k).toEqual(v);
       const root = saved.prefix ? `[data-prefix="${saved.prefix}"]` : 'body';

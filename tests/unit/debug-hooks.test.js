@@ -10,13 +10,20 @@ import {
   publish,
   registerWidget,
   unregisterWidget,
+  whileLoading,
 } from '../../src/core/framework/debug-hooks.js';
+
+// read when this file's import of the module ran (before the afterEach below first cleared them)
+const atBoot = structuredClone(globalThis.__shadingLab);
 
 afterEach(() => {
   delete globalThis.__shadingLab;
 });
 
 describe('test hooks (globalThis.__shadingLab, the shape tests and benchmarks read)', () => {
+  it('are there as soon as the module runs (a page with no widget has them at boot), with nothing pending', () => {
+    expect(atBoot).toEqual({ frames: 0, pending: 0, loading: 0, widgets: {} });
+  });
   it('are made on first use with frames and widgets, and hold what the app reports', () => {
     const widget = { getState: () => ({}) };
     registerWidget('lobe', widget);
@@ -26,6 +33,7 @@ describe('test hooks (globalThis.__shadingLab, the shape tests and benchmarks re
     expect(globalThis.__shadingLab).toEqual({
       frames: 2,
       pending: 0,
+      loading: 0,
       widgets: { lobe: widget },
       tour: { index: 2, id: 'ndf-ggx', ready: false },
     });
@@ -113,5 +121,21 @@ describe('pending work (__shadingLab.pending, what tests/browser/helpers.js unti
     }
     expect(samples).toBe(3);
     expect(seen).toEqual([1, 1, 0, 0]);
+  });
+
+  it('counts a load (a chunk, a mount) until it settles and the frame after it has run, failed or not', async () => {
+    const loading = () => globalThis.__shadingLab.loading;
+    let arrive;
+    const chunk = whileLoading(new Promise((ok) => (arrive = ok)));
+    const failing = whileLoading(Promise.reject(new Error('request aborted')));
+    expect([pending(), loading()]).toEqual([2, 2]);
+    await expect(failing).rejects.toThrow('request aborted'); // handed back as it was
+    // let go, but its frame is asked for first: pending never touches 0 before that frame
+    expect([pending(), loading()]).toEqual([2, 1]);
+    arrive('module');
+    expect(await chunk).toBe('module');
+    expect([pending(), loading()]).toEqual([2, 0]);
+    nextFrame();
+    expect(pending()).toBe(0);
   });
 });

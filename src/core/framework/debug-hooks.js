@@ -1,8 +1,9 @@
 // @ts-check
 // globalThis.__shadingLab: what the app shows tests, benchmarks and the console. This module is the only one
-// that creates or writes it; everyone else calls the functions below. It is made on first use and reuses an
-// object already there, so a test or benchmark may seed it before the page loads (bench/pages.js puts a
-// setter on `frames` to time the first frame).
+// that creates or writes it; everyone else calls the functions below. It is made when this module first runs (every
+// page loads it at boot, with offline.js), so a page with no widget has it too, and reuses an object already there,
+// so a test or benchmark may seed it before the page loads (bench/pages.js puts a setter on `frames` to time the
+// first frame).
 // (The WebGL context budget that same-origin frames share, window.__shadingLabGl, is gl-budget.js's state.)
 
 /**
@@ -26,8 +27,11 @@
  * @property {number} frames  frames the render loops have drawn, all views together
  * @property {number} [maxSamples]  a cap on the samples progressive views refine to (sampleTarget), seeded by a
  *   test before the page loads where it needs a picture drawn, not converged
- * @property {number} pending  work asked for and not yet done: animation frames the render loops requested and
- *   the app's timed pauses (requestFrame, later); 0 when the page is idle (a test waits for it instead of a time)
+ * @property {number} pending  work asked for and not yet done: animation frames the render loops requested, the
+ *   app's timed pauses (requestFrame, later) and the `loading`; 0 when the page is idle (a test waits for it
+ *   instead of a time)
+ * @property {number} loading  chunks being fetched and widgets being mounted (whileLoading), each until the frame
+ *   after it settled; 0 once the page has every module it asked for and every widget it mounts is up (or failed)
  * @property {Record<string, import('./types.js').Widget>} widgets  mounted widgets, by prefix or else name
  * @property {TourHook} [tour]
  * @property {ExerciseHook} [exercise]
@@ -44,6 +48,7 @@ function hooks() {
   const lab = (global.__shadingLab ??= {});
   lab.frames ??= 0;
   lab.pending ??= 0;
+  lab.loading ??= 0;
   lab.widgets ??= {};
   return /** @type {ShadingLabHooks} */ (lab);
 }
@@ -87,11 +92,15 @@ export function publish(name, value) {
   hooks()[name] = value;
 }
 
-// Work under way, by kind: the ids of requestAnimationFrame and setTimeout are counted apart (they may coincide).
-const waiting = { frames: new Set(), timers: new Set() };
+// Work under way, by kind: the ids of requestAnimationFrame and setTimeout are counted apart (they may coincide),
+// and the loads by a token each.
+const waiting = { frames: new Set(), timers: new Set(), loads: new Set() };
 const publishPending = () => {
-  hooks().pending = waiting.frames.size + waiting.timers.size;
+  const lab = hooks();
+  lab.loading = waiting.loads.size;
+  lab.pending = waiting.frames.size + waiting.timers.size + waiting.loads.size;
 };
+hooks(); // at boot: a page's wait for idle sees its hooks before anything asks for a frame
 
 /**
  * requestAnimationFrame, counted in `pending` until the callback runs (a render loop's next frame).
@@ -140,6 +149,27 @@ export function cancelLater(id) {
   clearTimeout(id);
   waiting.timers.delete(id);
   publishPending();
+}
+
+/**
+ * Counts `work` in `pending` and `loading` from now until it settles and the animation frame after that has run: a
+ * chunk fetched on demand (import()), a widget's mount (its chunk, its create, its first frame). A page that is still
+ * fetching what it shows is not idle, though it has asked for no frame yet. Returns `work`.
+ * @template T
+ * @param {Promise<T>} work
+ * @returns {Promise<T>}
+ */
+export function whileLoading(work) {
+  const token = {};
+  waiting.loads.add(token);
+  publishPending();
+  const done = () => {
+    requestFrame(() => {}); // asked before the load is let go: `pending` does not touch 0 between the two
+    waiting.loads.delete(token);
+    publishPending();
+  };
+  work.then(done, done);
+  return work;
 }
 
 /**

@@ -4,6 +4,7 @@
 // (and to a browser without MathML). KaTeX is loaded only on a page that has a formula. No CSS or fonts needed.
 
 import { TALK_MACROS } from './formula-registry.js';
+import { whileLoading } from './debug-hooks.js';
 
 /** @typedef {typeof import('katex').default} Katex */
 
@@ -22,7 +23,7 @@ function boldLetters(math) {
 }
 
 /** KaTeX, loaded once, when the first formula is typeset. */
-export const loadKatex = async () => /** @type {Katex} */ ((await import('katex')).default);
+export const loadKatex = async () => /** @type {Katex} */ ((await whileLoading(import('katex'))).default);
 
 /**
  * Replaces the content of `el` by the MathML of `tex` (throws on TeX that KaTeX cannot parse).

@@ -4,6 +4,7 @@
 // @media print) hides the controls and the live canvases and shows the stills. The event gives no time to wait,
 // so the QR module is loaded when the first widget registers and everything is drawn synchronously.
 import { stillOf } from './snapshot.js';
+import { whileLoading } from './debug-hooks.js';
 
 const printables = new Set(); // { root, title, getLink }
 let qrcode = null;
@@ -61,7 +62,7 @@ function beforePrint() {
 export function registerPrintable(root, title, getLink) {
   if (!printables.size) {
     addEventListener('beforeprint', beforePrint);
-    import('qrcode').then((m) => (qrcode = m.default));
+    whileLoading(import('qrcode')).then((m) => (qrcode = m.default));
   }
   const entry = { root, title, getLink };
   printables.add(entry);

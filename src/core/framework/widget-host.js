@@ -3,7 +3,7 @@
 // widgets can share one page), and exposes it for tests and parent pages. The widgets come from the registry
 // the page hands in (src/widgets/registry.js): the framework itself imports no widget.
 import { currentNames, stateToParams } from './state.js';
-import { cancelLater, later, registerWidget } from './debug-hooks.js';
+import { cancelLater, later, registerWidget, whileLoading } from './debug-hooks.js';
 
 /** @typedef {import('./types.js').WidgetRegistry} WidgetRegistry */
 /** @typedef {import('./types.js').Widget} Widget */
@@ -70,13 +70,22 @@ function writeUrl(schema, state, prefix) {
 
 /**
  * Creates widget `name` inside `container` with the state found in the URL. Returns the instance and the
- * widget's module (its name, schema and create) it was made from.
+ * widget's module (its name, schema and create) it was made from. The mount is pending work in the test hooks from
+ * now until its first frame (whileLoading): its chunk may take a while to arrive.
  * @param {HTMLElement} container
  * @param {string} name
  * @param {MountOptions} options
  * @returns {Promise<{ instance: Widget, widget: import('./types.js').WidgetContract }>}
  */
-export async function mountWidget(
+export const mountWidget = (container, name, options) => whileLoading(mount(container, name, options));
+
+/**
+ * @param {HTMLElement} container
+ * @param {string} name
+ * @param {MountOptions} options
+ * @returns {Promise<{ instance: Widget, widget: import('./types.js').WidgetContract }>}
+ */
+async function mount(
   container,
   name,
   { widgets, prefix = '', syncUrl = true, onStateChange, options = {}, state, initialState = {}, locked = [] },

@@ -2,6 +2,7 @@
 // the widget's views need, read back from the GPU (the runner keeps the last good code drawing). The panel's module
 // (with CodeMirror and the GLSL parser) is loaded only when a custom term is first chosen; until then nothing of the
 // custom term is drawn. A lost GPU context is watched by the runner, which then asks the widget to redraw.
+import { whileLoading } from '../framework/debug-hooks.js';
 
 /**
  * The panel's modules (CodeMirror, the GLSL parser, the runner), loaded once: `then(modules)`, or a message in `box`.
@@ -10,7 +11,7 @@
  */
 function loadModules(box, then) {
   const modules = [import('./custom-panel.js'), import('../custom/parse.js'), import('../custom/custom-panel-run.js')];
-  return Promise.all(modules).then(then, () => {
+  return whileLoading(Promise.all(modules)).then(then, () => {
     box.textContent = 'The code editor could not be loaded (offline?). Reload the page to try again.';
   });
 }

@@ -63,7 +63,7 @@ function runFits(ctx) {
  */
 function showTable(ctx, next, result, { words, name, fits }) {
   const { views, paint, data } = ctx;
-  data.client.dispose();
+  data.client?.dispose();
   Object.assign(data, {
     client: next,
     tabulated: null,

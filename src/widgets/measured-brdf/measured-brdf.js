@@ -7,7 +7,6 @@ import { schema, TERMS_USED } from './schema.js';
 import { ABOUT, TITLE } from './words.js';
 import { createViews } from './layout.js';
 import { createPainter } from './painter.js';
-import { createFitClient } from './fit-client.js';
 import { createTableLoader, tabulateOverlay } from './fit-session.js';
 import { loadFitInto } from './hand-off.js';
 
@@ -22,9 +21,10 @@ export function create(container, initialState = {}, { onStateChange, locked } =
     about: ABOUT,
     terms: TERMS_USED,
   });
-  // what the views show, and the bookkeeping of the worker that holds it (fit-session.js)
+  // what the views show, and the bookkeeping of the worker that holds it (fit-session.js): none until the first
+  // table is read (in a worker of its own), so that no worker is started only to be stopped while it loads
   const data = {
-    client: createFitClient(),
+    client: null,
     measured: null,
     fits: {},
     tabulated: null,
@@ -67,7 +67,7 @@ export function create(container, initialState = {}, { onStateChange, locked } =
     getProgress: () => ({ frame: (data.measured ? 1 : 0) + (data.tabulated ? 1 : 0), target: 2 }),
     dispose() {
       Object.assign(data, { disposed: true, generation: data.generation + 1 });
-      data.client.dispose();
+      data.client?.dispose();
       views.all.forEach((x) => x.dispose());
       shell.dispose();
     },
