@@ -45,9 +45,9 @@ async function openLobe(query) {
 }
 
 /**
- * One page of the widget with the user's D beside B, for the cases that only type into it (a page load compiles the
- * widget's programs again: the file's largest cost after typing). Opened by the first case that asks, so that each
- * still runs alone (-t); each types the code it reads, so it reads no case before it. Its errors are checked by each.
+ * One page of the widget with the user's D beside B, for the cases that only type into it (each page load compiles
+ * the widget's programs again). Opened by the first case that asks, so that each still runs alone (-t): the first
+ * reads the starter before it types; the others read the code they type, or only that their code changed nothing.
  */
 const sharedLobe = () => (shared ??= openLobe(`D=custom&${WITH_B}`));
 
