@@ -2,7 +2,7 @@
 // second lab is the claim): the lab's images read back from the canvas against the talk's definitions (c_light,
 // the white furnace), importance sampling converging on the reference, and environment files checked before use.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { baseUrl, getState, launchBrowser, open, shot, untilIdle, widget, withPixels } from './helpers.js';
+import { baseUrl, getState, launchBrowser, open, untilIdle, widget, withPixels } from './helpers.js';
 import { openPage } from './harness.js';
 import { linearToSrgb, srgbToLinear } from '../../src/math/color.js';
 import { diffuseOrenNayar } from '../../src/math/diffuse.js';
@@ -64,7 +64,10 @@ async function openLab(query, { maxSamples } = {}) {
 async function radianceAt(page, panel, points) {
   await page.addStyleTag({ content: '.lab-captions { display: none; }' });
   await untilIdle(page); // whatever the change of style redraws
-  const png = await shot(page, '.lab-view canvas');
+  // as shown, not captured beyond the window: to do that Chromium lays the page out at another size for a moment
+  // (the lab alone is taller than its window), and a resized WebGL canvas is blank until its next frame
+  const canvas = await page.$('.lab-view canvas');
+  const png = await canvas.screenshot({ encoding: 'base64', captureBeyondViewport: false });
   const bytes = await withPixels(
     page,
     png,
