@@ -11,10 +11,13 @@ import { lobePeak, lobeScene } from '../../src/widgets/brdf-lobe/model.js';
 // each test types code that is compiled in software WebGL, some twice: one took over 60 s under a load average of 44
 
 let browser;
+/** @type {Promise<import('puppeteer-core').Page> | undefined} */
+let shared;
 beforeAll(async () => {
   browser = await launchBrowser();
 });
 afterAll(async () => {
+  await (await shared)?.close();
   await browser?.close();
 });
 
@@ -40,6 +43,13 @@ async function openLobe(query) {
   await untilIdle(page);
   return page;
 }
+
+/**
+ * One page of the widget with the user's D beside B, for the cases that only type into it (each page load compiles
+ * the widget's programs again). Opened by the first case that asks, so that each still runs alone (-t): the first
+ * reads the starter before it types; the others read the code they type, or only that their code changed nothing.
+ */
+const sharedLobe = () => (shared ??= openLobe(`D=custom&${WITH_B}`));
 
 /** The polar plot's words: each lobe's peak, e.g. { A: 0.95, B: 0.47 } (in 1/sr). */
 async function polarPeaks(page) {
@@ -79,10 +89,10 @@ const panelText = (page, slot, selector) =>
 
 describe('custom terms in brdf-lobe: typed code draws as the term predicts', () => {
   it('D: 2 × GGX typed in doubles the lobe beside GGX (B): radii 2 : 1 on the dial, peak 2 × the JS GGX', async () => {
-    const page = await openLobe(`D=custom&${WITH_B}`);
+    const page = await sharedLobe();
     const start = await polarPeaks(page);
     expect(start.A / jsPeak({})).toBeCloseTo(1, 2); // the starter is GGX
-    await typeCode(page, 'D', D_TWICE_GGX);
+    await typeCode(page, 'D', D_TWICE_GGX, { keys: true }); // a key at a time, as a user types
     expect((await getState(page, KEY)).codeD).toMatch(/return 2\.0 \* a2/);
     const peaks = await polarPeaks(page);
     expect(peaks.A / (2 * jsPeak({}))).toBeCloseTo(1, 2);
@@ -92,7 +102,6 @@ describe('custom terms in brdf-lobe: typed code draws as the term predicts', () 
     expect(radii.A / radii.B).toBeLessThan(2.06);
     expect(await panelText(page, 'D', '.custom-status')).toMatch(/Running your code/);
     expect(page.errors).toEqual([]);
-    await page.close();
   });
 
   it('V: ½ × height-correlated Smith and F: 2 F0 give the JS reference lobe × ½ × 2 F0 (F = 1)', async () => {
@@ -145,7 +154,7 @@ return 1.0 / (nl * sqrt(nv * nv * (1.0 - a2) + a2) + nv * sqrt(nl * nl * (1.0 - 
 
 describe('custom terms in brdf-lobe: errors, safety, sharing', () => {
   it('a compile error lands on the user’s line, and the last picture stays', async () => {
-    const page = await openLobe(`D=custom&${WITH_B}`);
+    const page = await sharedLobe();
     await typeCode(page, 'D', D_TWICE_GGX);
     const good = await shot(page, '.polar-plot canvas');
     await typeCode(page, 'D', 'float customD(float nh, float alpha) {\nfloat a = alpha;\nreturn a * nothing;\n}');
@@ -157,11 +166,10 @@ describe('custom terms in brdf-lobe: errors, safety, sharing', () => {
     expect(marked).toEqual([3]);
     expect(await shot(page, '.polar-plot canvas')).toBe(good);
     expect(page.errors).toEqual([]);
-    await page.close();
   });
 
   it('a loop without a constant bound is refused with its message, before anything runs', async () => {
-    const page = await openLobe(`D=custom&${WITH_B}`);
+    const page = await sharedLobe();
     const before = await shot(page, '.polar-plot canvas');
     await typeCode(
       page,
@@ -170,7 +178,7 @@ describe('custom terms in brdf-lobe: errors, safety, sharing', () => {
     );
     expect(await panelText(page, 'D', '.custom-problems')).toMatch(/Line 3: 'while' loops are refused/);
     expect(await shot(page, '.polar-plot canvas')).toBe(before);
-    await page.close();
+    expect(page.errors).toEqual([]);
   });
 
   it('code in the URL is shown and waits for one click; then it runs, and runs at once on the next visit', async () => {
@@ -191,10 +199,11 @@ describe('custom terms in brdf-lobe: errors, safety, sharing', () => {
   });
 
   it('typed code round-trips through the URL; postMessage set/get carries code that waits for the click', async () => {
-    const page = await openLobe(`D=custom&${WITH_B}`);
+    const page = await sharedLobe();
     const typed = `${unique()}${D_TWICE_GGX}`;
     await typeCode(page, 'D', typed);
     const state = await getState(page, KEY);
+    expect(state.codeD).toBe(typed); // the text arrived whole, its line breaks kept
     await untilIdle(page);
     const url = page.url();
     expect(new URL(url).searchParams.has('codeD')).toBe(true);
@@ -231,7 +240,6 @@ describe('custom terms in brdf-lobe: errors, safety, sharing', () => {
     expect(parent.errors).toEqual([]);
     await parent.close();
     expect(page.errors).toEqual([]);
-    await page.close();
   });
 
   it('a lost WebGL context shows a message; restored, the previous program draws again and edits run', async () => {

@@ -4,7 +4,7 @@
 import { afterAll, beforeAll, describe, expect, it, onTestFinished } from 'vitest';
 import { openPage } from './harness.js';
 import { serveDecks } from './decks.js';
-import { baseUrl, launchBrowser, settle } from './helpers.js';
+import { WAIT_MS, baseUrl, launchBrowser, untilIdle } from './helpers.js';
 
 let browser;
 let decks;
@@ -32,15 +32,15 @@ describe('embedding', () => {
     const url = new URL('embed.html?w=fresnel-zones', baseUrl()).href;
     await page.setContent(`<iframe id="f" src="${url}" style="width:480px;height:420px;border:0"></iframe>`);
     const frame = await widgetFrame(page, '#f');
-    await settle(page, 800);
+    await untilIdle(frame); // laid out and drawn at the frame's size
     const width = () => frame.$eval('.widget-fresnel-zones canvas', (c) => c.getBoundingClientRect().width);
     const w1 = await width();
     expect(w1).toBeGreaterThan(300);
     expect(w1).toBeLessThanOrEqual(480);
     expect(await frame.$('.site-header')).toBeNull(); // no page chrome
     await page.$eval('#f', (f) => (f.style.width = '720px')); // still one column (the controls move below under 760 px)
-    await settle(page, 800);
-    expect(await width()).toBeGreaterThan(w1 * 1.3);
+    // the canvas takes the new width when the widget's resize observer has run: polled for, not waited a time
+    await expect.poll(width, { timeout: WAIT_MS }).toBeGreaterThan(w1 * 1.3);
     await page.close();
   });
 

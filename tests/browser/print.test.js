@@ -9,7 +9,7 @@ import jsQR from 'jsqr';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { ZONE_PALETTES } from '../../src/core/ui/palettes.js';
 import { sphereZoneFractions } from '../../src/math/zones.js';
-import { launchBrowser, open, settle, widget, withPixels } from './helpers.js';
+import { launchBrowser, open, untilIdle, widget, withPixels } from './helpers.js';
 
 let browser;
 let dir;
@@ -70,7 +70,7 @@ describe('a printed chapter page', () => {
       const page = await open(browser, 'fresnel.html?zones.mode=zones-nv', { width: 1100, height: 900 });
       await widget(page, 'zones');
       await page.$eval('.widget-fresnel-zones', (el) => el.scrollIntoView());
-      await settle(page, 800);
+      await untilIdle(page); // the views now in sight drawn
       const pdf = await page.pdf({ format: 'A4', printBackground: true });
       writeFileSync(join(dir, 'page.pdf'), pdf);
 

@@ -186,7 +186,10 @@ describe('the graded message to a parent page', () => {
     const { page, frame } = await parentWith('?origins=https://course.example.org');
     await setCode(page, frame, SHADER_SOLUTIONS['shader-schlick'].correct);
     expect((await check(frame)).ok).toBe(true);
-    await new Promise((r) => setTimeout(r, 1500));
+    // the page posts a Check's result in the task that shows it (shader-view.js): a message the frame posts after
+    // that comes after it, since postMessage keeps the order of one window's messages to another
+    await frame.evaluate(() => window.parent.postMessage({ type: 'after-the-check' }, '*'));
+    await page.waitForFunction(() => window.__inbox.some((m) => m.data?.type === 'after-the-check'));
     const messages = await page.evaluate(() => window.__inbox);
     expect(messages.filter((m) => m.data?.type === 'shading-lab:graded')).toEqual([]);
     expect(page.errors).toEqual([]);

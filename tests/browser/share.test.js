@@ -2,7 +2,7 @@
 // keyboard), and touch on a 3-D view (dragging moves the light, a tap probes).
 import jsQR from 'jsqr';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { getState, launchBrowser, open, setControl, settle, widget } from './helpers.js';
+import { getState, launchBrowser, open, setControl, untilIdle, widget } from './helpers.js';
 
 let browser;
 beforeAll(async () => {
@@ -119,14 +119,14 @@ describe('touch', () => {
       await page.touchscreen.touchStart(cx, cy - 40);
       for (let i = 1; i <= 5; i++) await page.touchscreen.touchMove(cx + 16 * i, cy);
       await page.touchscreen.touchEnd();
-      await settle(page, 300);
+      await untilIdle(page); // the drag's frames and the figures after it
       const dragged = await getState(page, 'fresnel-zones');
       // touches land on whole pixels and the centre may lie between two: 80 px right of it, up to atan(0.5/80) = 0.36°
       expect(Math.abs(dragged.lightPhi)).toBeLessThan(0.36);
       expect(dragged.lightTheta).toBeGreaterThan(0);
 
       await page.touchscreen.tap(cx, cy);
-      await settle(page, 300);
+      await untilIdle(page); // the probe's frame
       const rows = await page.$$eval('.probe tr', (trs) => trs.map((tr) => [...tr.cells].map((c) => c.textContent)));
       const nv = rows.find(([k]) => k.includes('n·v'));
       expect(nv, JSON.stringify(rows)).toBeDefined();

@@ -2,7 +2,8 @@
 // each page does on load to wait for. Used by csp.test.js and axe.test.js.
 import { readdirSync } from 'node:fs';
 import { join } from 'node:path';
-import { baseUrl, countDrawCalls, settle } from './helpers.js';
+import { baseUrl, countDrawCalls } from './helpers.js';
+import { untilCalm } from './idle.js';
 import { ROOT, openPage } from './harness.js';
 
 /** Every violation in the page and its same-origin frames, in window.top.__csp (installed before any script). */
@@ -57,7 +58,7 @@ export const POLICY_PAGES = [
 /**
  * Opens `path` with its violations recorded (window.__csp), its draw calls counted (window.__drawCalls) and its
  * progressive views capped at `maxSamples` if given, and waits until it has done what it does on load (an embed
- * with a widget: that widget mounted).
+ * with a widget: that widget mounted) and has nothing pending (untilCalm in idle.js).
  */
 export async function openUnderPolicy(browser, path, { width = 1100, height = 800, maxSamples } = {}) {
   const page = await openPage(browser, baseUrl(), path, {
@@ -72,6 +73,6 @@ export async function openUnderPolicy(browser, path, { width = 1100, height = 80
   });
   const ready = path.startsWith('embed.html?w=') ? oneWidget : (READY[path.split('?')[0]] ?? chapterReady);
   if (ready) await page.waitForFunction(ready, { timeout: 60_000 });
-  await settle(page, 800);
+  await untilCalm(page); // what the load set going (its frames and timed pauses) done
   return page;
 }
