@@ -1,9 +1,10 @@
 // Embedding, the WebGL context budget: a page of twenty 3-D widgets (wall.html) and a gallery of same-origin
 // frames held within the browser's cap on live contexts, and slots given back by a removed frame. The wall, its
-// twenty tiles mounted and scrolled through, is also where it is checked under the policy and by axe-core (as
-// every other page is in axe.test.js): mounting them is most of the time either takes.
+// twenty tiles mounted and scrolled through, and the gallery, every preview loaded, are also where they are checked
+// under the policy and by axe-core (as every other page is in axe.test.js): mounting them is most of the time either
+// takes. Progressive views are capped at a few samples (a picture, not a converged one, is what is checked here).
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { afterFrames, baseUrl, distinctColors, launchBrowser, open } from './helpers.js';
+import { afterFrames, baseUrl, capSamples, distinctColors, launchBrowser, open } from './helpers.js';
 import { openPage } from './harness.js';
 import { recordViolations } from './under-policy.js';
 import { axeViolations } from './axe-run.js';
@@ -16,7 +17,8 @@ afterAll(async () => {
   await browser?.close();
 });
 
-const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
+/** Samples a progressive view (the media's path tracer, the labs' references) stops at here. */
+const MAX_SAMPLES = 4;
 
 /**
  * Counts live WebGL contexts in every frame independently of the app, as Chromium counts them: a context is
@@ -78,7 +80,10 @@ function countContexts() {
 
 const WEBGL_WARNING = /WebGL|Too many active/;
 
-/** Opens `path` with its WebGL contexts counted (countContexts) and its WebGL console warnings kept. */
+/**
+ * Opens `path` with its WebGL contexts counted (countContexts), its WebGL console warnings kept, its policy
+ * violations recorded (window.__csp) and its progressive views capped at MAX_SAMPLES, in every frame.
+ */
 async function openCounted(path, { beforeLoad, on = browser } = {}) {
   const warnings = [];
   const page = await openPage(on, baseUrl(), path, {
@@ -92,6 +97,8 @@ async function openCounted(path, { beforeLoad, on = browser } = {}) {
           warnings.push(m.text()),
       );
       await p.evaluateOnNewDocument(countContexts);
+      await p.evaluateOnNewDocument(recordViolations);
+      await p.evaluateOnNewDocument(capSamples, MAX_SAMPLES);
       await beforeLoad?.(p);
     },
   });
@@ -123,14 +130,15 @@ async function viewsInSight(page, cardSelector) {
  * so the picture alone proves nothing.)
  */
 async function expectDrawn(page, handle, what) {
-  const fresh = () => handle.evaluate((c) => !c.__gl.isContextLost() && c.__draws > 0);
-  for (let i = 0; i < 120 && !(await fresh()); i++) await sleep(250);
+  const fresh = (c) => !c.__gl.isContextLost() && c.__draws > 0;
+  // polled in the canvas's frame; a wait that runs out is reported by the expectation below, with what it found
+  await handle.frame.waitForFunction(fresh, { polling: 100, timeout: 30_000 }, handle).catch(() => {});
   const why = await handle.evaluate(
     (c) =>
       `lost ${c.__gl.isContextLost()}, draws ${c.__draws}, ` +
       `message “${c.parentElement.querySelector('.blocking-message')?.textContent ?? ''}”`,
   );
-  expect(await fresh(), `${what}: live and drawn (${why})`).toBe(true);
+  expect(await handle.evaluate(fresh), `${what}: live and drawn (${why})`).toBe(true);
   const colors = await distinctColors(page, await handle.screenshot({ encoding: 'base64' }));
   expect(colors, `${what} shows a picture`).toBeGreaterThanOrEqual(12);
 }
@@ -151,10 +159,7 @@ describe('twenty 3-D widgets on one page (wall.html)', () => {
     'draws every widget when it is in view, never holds more contexts than the budget, and loses none ' +
       'unplanned; under the policy with no violation, and axe finds no violation (WCAG 2.2 A and AA)',
     async () => {
-      const page = await openCounted('wall.html', {
-        on: own,
-        beforeLoad: (p) => p.evaluateOnNewDocument(recordViolations),
-      });
+      const page = await openCounted('wall.html', { on: own });
       await page.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 20, {
         timeout: 240_000, // one after another, on software WebGL: 201 s seen at a load average of 16
         polling: 500,
@@ -207,7 +212,8 @@ describe('embeds in same-origin frames share one context budget', () => {
   // retried: a preview with a live context sometimes never draws (see the wall's note above; cause not found)
   const retried = { timeout: 240_000, retry: 2 };
   it(
-    'a gallery with a budget of 4 draws every 3-D preview it scrolls past, with at most 4 contexts live',
+    'a gallery with a budget of 4 draws every 3-D preview it scrolls past, with at most 4 contexts live; ' +
+      'under the policy with no violation, and axe finds no violation (WCAG 2.2 A and AA)',
     retried,
     async () => {
       // Seeded in the top window before any frame loads: the frames must find and use it. Four, not three: the
@@ -273,6 +279,8 @@ describe('embeds in same-origin frames share one context budget', () => {
       expect(gl.restored).toBeGreaterThan(0);
       expect(gl.most).toBeLessThanOrEqual(LIMIT);
       expect(await page.evaluate(() => window.__shadingLabGl.peak)).toBeLessThanOrEqual(LIMIT);
+      expect(await axeViolations(page), 'axe over the gallery, every preview loaded').toEqual([]);
+      expect(await page.evaluate(() => window.__csp ?? []), 'policy violations').toEqual([]);
       expect(page.glWarnings).toEqual([]);
       expect(page.errors).toEqual([]);
       await page.close();
