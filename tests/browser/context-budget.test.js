@@ -106,22 +106,29 @@ async function openCounted(path, { beforeLoad, on = browser } = {}) {
   return page;
 }
 
-/** Canvases of 3-D views entirely in sight: [{ index, handle }], index of the wall tile or gallery card. */
-async function viewsInSight(page, cardSelector) {
-  const handles = await page.$$(`${cardSelector} .viewport > canvas`);
-  const out = [];
-  for (const handle of handles) {
-    const where = await handle.evaluate((c, sel) => {
-      const r = c.getBoundingClientRect();
-      const card = c.closest(sel);
-      return {
-        inSight: r.top >= 0 && r.bottom <= innerHeight && r.height > 20,
-        index: [...document.querySelectorAll(sel)].indexOf(card),
-      };
-    }, cardSelector);
-    if (where.inSight) out.push({ index: where.index, handle });
-  }
-  return out;
+/**
+ * The 3-D views entirely in sight, by the index of their wall tile or gallery card (a card's view is in its
+ * preview's frame, same-origin, reached from the top page): one call into the page, however many cards.
+ */
+const viewsInSight = (page, cardSelector) =>
+  page.evaluate(
+    (sel) =>
+      [...document.querySelectorAll(sel)].flatMap((card, index) => {
+        const frame = card.querySelector('iframe');
+        const canvas = (frame ? frame.contentDocument : card)?.querySelector('.viewport > canvas');
+        if (!canvas) return []; // a 2-D widget, or a preview not loaded yet
+        const r = canvas.getBoundingClientRect();
+        const top = r.top + (frame ? frame.getBoundingClientRect().top : 0);
+        return top >= 0 && top + r.height <= innerHeight && r.height > 20 ? [index] : [];
+      }),
+    cardSelector,
+  );
+
+/** The canvas of the 3-D view of card `index` (viewsInSight), in its preview's frame if it has one. */
+async function viewOf(page, cardSelector, index) {
+  const card = (await page.$$(cardSelector))[index];
+  const iframe = await card.$('iframe');
+  return (iframe ? await iframe.contentFrame() : card).$('.viewport > canvas');
 }
 
 /**
@@ -160,10 +167,11 @@ describe('twenty 3-D widgets on one page (wall.html)', () => {
       'unplanned; under the policy with no violation, and axe finds no violation (WCAG 2.2 A and AA)',
     async () => {
       const page = await openCounted('wall.html', { on: own });
-      await page.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 20, {
-        timeout: 240_000, // one after another, on software WebGL: 201 s seen at a load average of 16
-        polling: 500,
-      });
+      // mounted one after another, on software WebGL: 201 s seen at a load average of 16. Polled from here, a short
+      // call each: a waitForFunction is one DevTools call, which outlasted the own Chromium's 180 s protocol timeout
+      // at a load average of 40
+      const mounted = () => page.evaluate(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length);
+      await expect.poll(mounted, { timeout: 240_000, interval: 500 }).toBe(20);
       const limit = await page.evaluate(() => window.__shadingLabGl.limit);
       expect(limit).toBeLessThan(16);
       expect(await page.$$eval('.wall-tile .viewport > canvas', (c) => c.length)).toBe(20);
@@ -174,9 +182,9 @@ describe('twenty 3-D widgets on one page (wall.html)', () => {
         // less than a screen minus a view: each view is once wholly in sight
         await page.evaluate((top) => window.scrollTo(0, top), y);
         await afterFrames(page, 2); // the views now in sight have asked for a context (expectDrawn waits for it)
-        for (const { index, handle } of await viewsInSight(page, '.wall-tile')) {
+        for (const index of await viewsInSight(page, '.wall-tile')) {
           if (drawn.has(index)) continue;
-          await expectDrawn(page, handle, `tile ${index + 1} at scroll ${y}`);
+          await expectDrawn(page, await viewOf(page, '.wall-tile', index), `tile ${index + 1} at scroll ${y}`);
           drawn.add(index);
         }
         expect(
@@ -191,7 +199,9 @@ describe('twenty 3-D widgets on one page (wall.html)', () => {
       await afterFrames(page, 2); // the views now in sight have asked for a context (expectDrawn waits for it)
       const top = await viewsInSight(page, '.wall-tile');
       expect(top.length).toBeGreaterThan(0);
-      for (const { index, handle } of top) await expectDrawn(page, handle, `tile ${index + 1} back at the top`);
+      for (const index of top) {
+        await expectDrawn(page, await viewOf(page, '.wall-tile', index), `tile ${index + 1} back at the top`);
+      }
 
       const gl = await page.evaluate(() => window.__gl);
       expect(gl.lost).toBeGreaterThan(0); // the budget really was used: contexts were given up...
@@ -229,28 +239,26 @@ describe('embeds in same-origin frames share one context budget', () => {
           }, LIMIT);
         },
       });
+      const names = await page.$$eval('.gallery-card', (cards) => cards.map((c) => c.dataset.widget));
       const drawn = new Set();
       // the page grows as it goes: each preview takes its widget's height once that widget is up
       const height = () => page.evaluate(() => document.body.scrollHeight);
       for (let y = 0; y < (await height()); y += 400) {
         await page.evaluate((top) => window.scrollTo(0, top), y);
         await afterFrames(page, 2); // the views now in sight have asked for a context (expectDrawn waits for it)
-        for (const card of await page.$$('.gallery-card')) {
-          const name = await card.evaluate((c) => c.dataset.widget);
-          const iframe = await card.$('iframe');
-          if (drawn.has(name) || !iframe) continue;
-          const frame = await iframe.contentFrame();
-          await frame.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 1, {
-            timeout: 30_000,
-          });
-          const canvas = await frame.$('.viewport > canvas');
-          if (!canvas) continue; // a 2-D widget
-          const frameTop = await iframe.evaluate((f) => f.getBoundingClientRect().top);
-          const { top, height: h } = await canvas.evaluate((c) => c.getBoundingClientRect().toJSON());
-          const inSight = frameTop + top >= 0 && frameTop + top + h <= (await page.evaluate(() => innerHeight));
-          if (!inSight) continue;
-          await expectDrawn(page, canvas, `${name} preview at scroll ${y}`);
-          drawn.add(name);
+        // every preview loaded so far has its widget up (a view not yet up is not yet in viewsInSight)
+        await page.waitForFunction(
+          () =>
+            [...document.querySelectorAll('.gallery-card iframe')].every(
+              (f) => Object.keys(f.contentWindow?.__shadingLab?.widgets ?? {}).length === 1,
+            ),
+          { timeout: 60_000, polling: 100 },
+        );
+        for (const index of await viewsInSight(page, '.gallery-card')) {
+          if (drawn.has(names[index])) continue;
+          const canvas = await viewOf(page, '.gallery-card', index);
+          await expectDrawn(page, canvas, `${names[index]} preview at scroll ${y}`);
+          drawn.add(names[index]);
         }
       }
       const threeD = [
