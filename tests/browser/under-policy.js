@@ -57,9 +57,9 @@ export const POLICY_PAGES = [
 /**
  * Opens `path` with its violations recorded (window.__csp), its draw calls counted (window.__drawCalls) and its
  * progressive views capped at `maxSamples` if given, and waits until it has done what it does on load (an embed
- * with a widget: that widget mounted), then a pause; `untilIdleAfter`: no pause, the caller waits for idle instead.
+ * with a widget: that widget mounted).
  */
-export async function openUnderPolicy(browser, path, { width = 1100, height = 800, maxSamples, untilIdleAfter } = {}) {
+export async function openUnderPolicy(browser, path, { width = 1100, height = 800, maxSamples } = {}) {
   const page = await openPage(browser, baseUrl(), path, {
     width,
     height,
@@ -72,6 +72,6 @@ export async function openUnderPolicy(browser, path, { width = 1100, height = 80
   });
   const ready = path.startsWith('embed.html?w=') ? oneWidget : (READY[path.split('?')[0]] ?? chapterReady);
   if (ready) await page.waitForFunction(ready, { timeout: 60_000 });
-  if (!untilIdleAfter) await settle(page, 800); // else the caller waits for the app's idle hook
+  await settle(page, 800);
   return page;
 }
