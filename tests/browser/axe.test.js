@@ -3,9 +3,9 @@
 // A and AA rules (Deque's accessibility engine, the rules a screen-reader, voice-control or low-vision user meets:
 // names, contrast, structure), with no violation allowed. Each page is opened under the policy at a small viewport
 // (SwiftShader draws every pixel on the CPU; the phone's width is phone.test.js's), its progressive views capped at
-// a few samples, its widgets mounted and every part scrolled into sight (lazy previews load, views draw their first
-// frame), and then axe runs over it. The wall is checked where its twenty tiles are mounted and scrolled through
-// anyway, context-budget.test.js. (The policy's text in every page, and that the browser enforces it, are
+// a few samples, its widgets mounted and every part scrolled into sight (views draw their first frame), and then axe
+// runs over it. The wall and the gallery are checked where context-budget.test.js mounts the wall's twenty tiles and
+// loads every gallery preview anyway. (The policy's text in every page, and that the browser enforces it, are
 // csp.test.js.)
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { afterFrames, launchBrowser } from './helpers.js';
@@ -14,12 +14,14 @@ import { POLICY_PAGES, openUnderPolicy } from './under-policy.js';
 import { IDLE_FRAMES, expectIdle, untilCalm } from './idle.js';
 import { axeViolations } from './axe-run.js';
 
+/** Checked in context-budget.test.js, which mounts the wall's tiles and loads every gallery preview anyway. */
+const ELSEWHERE = ['wall.html', 'gallery.html'];
 /**
  * The bare embed (its message), and a few widgets alone in one, beside POLICY_PAGES' fresnel-zones: the gallery's
  * previews are such embeds, so axe stays out of its frames.
  */
 const EMBEDS = ['', '?w=f0-tables', '?w=brdf-lobe', '?w=material-lab&refSamples=128'].map((q) => `embed.html${q}`);
-const PAGES = [...POLICY_PAGES.filter((p) => p !== 'wall.html'), ...EMBEDS];
+const PAGES = [...POLICY_PAGES.filter((p) => !ELSEWHERE.includes(p)), ...EMBEDS];
 /** Samples a progressive view stops at here: "it stops once it has its samples" holds for any count. */
 const MAX_SAMPLES = 8;
 
@@ -48,9 +50,9 @@ const tourEnd = async (page) => {
   });
 };
 
-// every page is checked for drawing nothing once idle but these: the gallery's views are frames that
-// context-budget.test.js follows; the embed's widget is fresnel.html's; the data: set, the exercises'
-const IDLE_ELSEWHERE = /^gallery\.html|^embed\.html|^exercises\.html\?src=/;
+// every page is checked for drawing nothing once idle but these: the embed's widget is fresnel.html's; the data:
+// set, the exercises'
+const IDLE_ELSEWHERE = /^embed\.html|^exercises\.html\?src=/;
 
 describe('every page under the policy, idle, and axe-core (WCAG 2.2 A and AA)', () => {
   for (const path of PAGES) {
