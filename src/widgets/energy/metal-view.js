@@ -8,6 +8,7 @@ import { albedoTableOnce } from '../../core/gpu/albedo-table-texture.js';
 import { linearToSrgb } from '../../math/color.js';
 import { materialByKey } from '../../math/materials.js';
 import { termEntry } from '../../math/catalogue/index.js';
+import { whileLoading } from '../../core/framework/debug-hooks.js';
 import { COMPENSATIONS, WALK_DEGREES, WALK_PATHS, albedoCurves, saturation } from './compensation.js';
 
 const CHANNELS = [
@@ -21,26 +22,31 @@ const DEGREES = [...new Set([...Array.from({ length: 45 }, (_, i) => 2 * i), ...
 
 /**
  * The walk per (metal, alpha), run in a module worker and cached; `get` gives the points or null and asks for
- * them once, `onResult(key)` says when they arrived.
+ * them once, `onResult(key)` says when they arrived. Each job is counted in the page's pending work until its
+ * result comes back (or the view closes), so a test waiting for idle waits for the walk too.
  */
 function createWalkCache(onResult) {
   const done = new Map();
-  const asked = new Set();
+  const asked = new Map(); // key → resolves the job's count in the pending work
   let worker = null;
   return {
     get(metal, alpha) {
       const key = `${metal.key}|${alpha}`;
       if (done.has(key) || asked.has(key)) return done.get(key) ?? null;
-      asked.add(key);
+      whileLoading(new Promise((resolve) => asked.set(key, resolve)));
       worker ??= new Worker(new URL('./walk-worker.js', import.meta.url), { type: 'module' });
       worker.onmessage = ({ data }) => {
         done.set(data.id, data.walk);
+        asked.get(data.id)?.();
         onResult(data.id);
       };
       worker.postMessage({ id: key, alpha, f0: metal.linear });
       return null;
     },
-    dispose: () => worker?.terminate(),
+    dispose: () => {
+      worker?.terminate();
+      for (const resolve of asked.values()) resolve();
+    },
   };
 }
 
