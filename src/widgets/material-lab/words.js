@@ -128,7 +128,7 @@ export function description(st, lights, stats, measuredName) {
 export const NOTICES = {
   noMeasured: 'No MERL file has been dropped yet: drop a .binary file on the widget. Kept the model.',
   noFile: 'No environment file has been dropped yet: drop an .hdr or .exr panorama on the widget. Kept the studio.',
-  dropText: 'Load an .hdr / .exr environment or a MERL .binary BRDF…',
+  dropText: 'Load an .hdr / .exr environment, a MERL .binary BRDF or a MaterialX .mtlx…',
   headOn: 'Check the π: a white Lambert sphere lit head-on by the punctual light alone',
   brushed: 'Brushed aluminium: an anisotropic GGX lobe on a machined disc, its brushing lines shown',
 };
