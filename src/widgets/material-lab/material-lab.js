@@ -41,7 +41,6 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
     const table = st.brdfSource === 'measured' ? measured.current : null;
     shell.describe(description(st, lights, stats, table?.name), view.canvas);
     notes.show(scene);
-    openpbr.refresh(st);
     return captions(st, lights, stats);
   };
   const ownBrdf = createCustomBrdf({ view: () => view, getState: () => shell.state, update: (p) => update(p) });
@@ -63,6 +62,7 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
       shell.notices.show(NOTICES[missing.notice]);
       update(missing.instead);
     } else view.setDisplay({ exposure: shell.state.exposure, errorScale: shell.state.errorScale });
+    openpbr.refresh(shell.state); // the bars follow the state, drawn or not (the view draws only when seen)
   };
   const update = shell.connect({ title: 'Material lab', onChanged, onStateChange });
   onChanged(['environment', 'brdfSource']);

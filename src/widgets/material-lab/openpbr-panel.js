@@ -104,8 +104,7 @@ const LOAD_TEXT = 'Load a MaterialX .mtlx file…';
 const MAX_READ_BYTES = 4 * 2 ** 20; // not read at all beyond this; readMtlx's own cap is far below it
 
 export function createOpenPbrPanel({ getState, update, notices }) {
-  let exact = {}; // the loaded file's colours, exact (openpbr-lab.js)
-  let name = 'lab_material';
+  let [exact, name] = [{}, 'lab_material']; // the loaded file's colours, exact (openpbr-lab.js), and its name
   const { element, message, bars } = panelElements({
     onPreset: (preset) => use(preset.material, mtlxName(preset.label.toLowerCase()), preset.label),
     onFile: (fileName, text) => load(fileName, text),
