@@ -73,7 +73,7 @@ async function dragValues(name, steps) {
  * In the page: one change, timed to its finished frame (ms). With `viaLoop`, the frame is the render loop's next
  * draw (it may come frames later, after work off the main thread); otherwise the next animation frame.
  */
-function timeChange(name, key, value, viaLoop) {
+export function timeChange(name, key, value, viaLoop) {
   const NO_FRAME_MS = 5000;
   const lab = globalThis.__shadingLab;
   const frame = () => new Promise((r) => requestAnimationFrame(r));

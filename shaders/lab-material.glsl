@@ -3,8 +3,10 @@
 // height-correlated Smith's), plus the chosen diffuse term (DIFFUSE_*: diffuse-term.glsl, shared with the spheres).
 // SPECULAR_OFF / DIFFUSE_OFF show one layer alone. With MEASURED the BRDF is a measured table (measured.glsl,
 // uMeasured), whole: its specular and diffuse are not apart, so specularBRDF is the table and diffuseBRDF 0; uAlpha
-// is then the GGX fit's, for sampling only.
-#ifdef MEASURED
+// is then the GGX fit's, for sampling only; with OPENPBR too the whole BRDF is OpenPBR Surface's (lab-openpbr.glsl).
+#if defined(MEASURED) && defined(OPENPBR)
+#include "lab-openpbr.glsl"
+#elif defined(MEASURED)
 #include "measured.glsl"
 #else
 #include "brdf.glsl"

@@ -44,8 +44,8 @@ const has = (terms) => ({ specular: terms.layers !== 'diffuse', diffuse: terms.l
  * What the approximation of `scene` ({ terms, lights, methods }, see lab-scene.js) reads: `dfg` the terms of its
  * DFG table ({ ndf, visibility }) or null, `prefilter` the NDF its prefiltered map is filtered with or null.
  */
-export function approximationInputs({ terms, lights, methods, measured, custom }) {
-  if (measured || custom) return { dfg: null, prefilter: null };
+export function approximationInputs({ terms, lights, methods, measured, custom, openpbr }) {
+  if (measured || custom || openpbr) return { dfg: null, prefilter: null };
   const splitSum = Boolean(lights.env) && methods.env === 'split-sum';
   return {
     dfg: splitSum || lights.ambient ? { ndf: terms.D, visibility: terms.V } : null,
@@ -246,11 +246,33 @@ export function anisotropyNotes(scene) {
   return notes;
 }
 
+/**
+ * What each method does with OpenPBR Surface (src/math/openpbr.js, whole: its layers are not apart into the lab's
+ * specular and diffuse terms): as with your BRDF, only the reference, importance sampling and the sphere light
+ * evaluate it, sampled by GGX at its sharpest lobe's α and by cosine.
+ */
+export function openPbrNotes({ lights, methods, material }) {
+  const notes = [
+    'OpenPBR Surface (the panel’s base, specular, coat and fuzz): the reference integrates it whole, with ' +
+      `directions drawn from a GGX lobe of α ${material.alpha.toFixed(3)} (its sharpest layer’s) and by cosine. ` +
+      'The material and terms chosen above are not used; the layers share the sphere’s one normal.',
+  ];
+  if (lights.env && methods.env !== 'importance') {
+    notes.push(
+      `${ENV_WORDS[methods.env]} has no form for a layered material (it needs one lobe’s D, V and F), so the ` +
+        'environment is left out of the approximation: choose importance sampling.',
+    );
+  }
+  if (lights.ambient) notes.push('Ambient: the DFG table of one lobe has no form for the stack; left out.');
+  return notes;
+}
+
 /** The sentences under the lab's images: for each light on, how its approximation treats the chosen terms. */
 export function approximationNotes(scene) {
   const whole = scene.anisotropy ? ['Anisotropy: not applied here; the whole BRDF is drawn as it is.'] : [];
   if (scene.measured) return [...measuredNotes(scene), ...whole];
   if (scene.custom) return [...customNotes(scene), ...whole];
+  if (scene.openpbr) return openPbrNotes(scene);
   const { specular, diffuse } = has(scene.terms);
   const notes = specular ? [...specularNotes(scene), ...anisotropyNotes(scene)] : [];
   const surround = diffuse ? diffuseUnderSurround(scene) : null;

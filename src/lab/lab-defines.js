@@ -9,11 +9,13 @@ const ENV_DEFINES = { mirror: 'ENV_MIRROR', importance: 'ENV_IMPORTANCE', 'split
  * The #defines of the program that renders `scene` ({ terms, lights, methods, measured? }, see lab-scene.js) by
  * its approximations, or with `reference` by Monte Carlo. A measured table (scene.measured: its name) is the
  * whole BRDF, no terms, and so is the user's (scene.custom: custom-programs.js puts it where the table would be
- * read); of the approximations only importance sampling and the sphere light's have a form for a whole BRDF
- * (lab-approximations.js says so), so the others leave the sphere unlit by their light.
+ * read), and so is OpenPBR Surface's (scene.openpbr: its material, lab-openpbr.glsl); of the approximations only
+ * importance sampling and the sphere light's have a form for a whole BRDF (lab-approximations.js says so), so the
+ * others leave the sphere unlit by their light.
  * @returns {Record<string, 1>}
  */
 export function sceneDefines(scene, reference) {
+  if (scene.openpbr) return { ...measuredDefines(scene, reference), OPENPBR: 1 }; // lab-openpbr.glsl, whole
   return scene.measured || scene.custom ? measuredDefines(scene, reference) : modelDefines(scene, reference);
 }
 

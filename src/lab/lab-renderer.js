@@ -26,7 +26,8 @@ const halfTarget = (res) =>
   });
 
 /** three.js's PMREM stands in for the lab's program under the environment (not for a measured table). */
-const byPmrem = (scene) => scene.lights.env && scene.methods.env === 'pmrem' && !scene.measured && !scene.custom;
+const byPmrem = (scene) =>
+  scene.lights.env && scene.methods.env === 'pmrem' && !scene.measured && !scene.custom && !scene.openpbr;
 
 export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
   const res = resolution;
@@ -98,6 +99,7 @@ export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
       approxTargets.forEach((t) => t.dispose());
       [modelPrograms, customPrograms, pass, pmrem, reference, errors].forEach((x) => x.dispose());
       uniforms.uAlbedoTableGGX.value?.dispose();
+      uniforms.uOpenPbrAlbedo.value?.dispose();
     },
   };
 }

@@ -7,6 +7,8 @@ import { createAlbedoTableTexture } from '../core/gpu/albedo-table-texture.js';
 import { sharedUniforms, termUniformDefaults, termUniforms } from '../math/catalogue/uniforms.js';
 import { PREFILTER_LEVELS } from './environment-maps.js';
 import { approximationInputs } from './lab-approximations.js';
+import { OPENPBR_DEFAULTS } from '../math/openpbr.js';
+import { openPbrAlbedoTable } from '../math/openpbr-albedo.js';
 
 export const EXTENT = 1.1; // the view's half width: the unit sphere fills 1/1.1 of it
 
@@ -33,6 +35,8 @@ export function createLabUniforms(res) {
     uDfg: { value: null },
     uAlbedoTableGGX: { value: null }, // the albedo-loss table, made when a compensation is first chosen
     uMeasured: { value: null }, // a measured table's 3-D texture (scene.table), owned by the widget
+    uOpenPbr: { value: openPbrStruct(OPENPBR_DEFAULTS) }, // lab-openpbr.glsl's material, by the struct's names
+    uOpenPbrAlbedo: { value: null }, // its albedo table, made when OpenPBR is first chosen
     uEnvMarginal: { value: null },
     uEnvConditional: { value: null },
     uEnvPdf: { value: null },
@@ -51,6 +55,10 @@ export function createLabUniforms(res) {
  */
 export function setSceneUniforms(uniforms, scene, { reference, dfg }) {
   if (scene.terms.compensation !== 'none') uniforms.uAlbedoTableGGX.value ??= createAlbedoTableTexture();
+  if (scene.openpbr) {
+    uniforms.uOpenPbrAlbedo.value ??= openPbrAlbedoTexture();
+    uniforms.uOpenPbr.value = openPbrStruct(scene.openpbr);
+  }
   setMaps(uniforms, scene, { reference, dfg });
   const { material, lights } = scene;
   const params = materialParams({ ...material, anisotropy: scene.anisotropy });
@@ -70,6 +78,18 @@ export function setSceneUniforms(uniforms, scene, { reference, dfg }) {
   uniforms.uEnvIntensity.value = lights.env?.intensity ?? 0;
   uniforms.uEnvSampling.value = Boolean(lights.env) && scene.maps.sampling.usable;
   uniforms.uAmbient.value.set(...(lights.ambient ?? [0, 0, 0]));
+}
+
+/** An OpenPBR material (every key of OPENPBR_DEFAULTS, colours [r, g, b]) as the struct uniform's value. */
+const openPbrStruct = (m) =>
+  Object.fromEntries(Object.keys(OPENPBR_DEFAULTS).map((k) => [k, Array.isArray(m[k]) ? [...m[k]] : m[k]]));
+
+/** The OpenPBR albedo table (64 × 128 RGBA float, read by texelFetch in openpbr-albedo.glsl). */
+function openPbrAlbedoTexture() {
+  const { width, height, data } = openPbrAlbedoTable();
+  const texture = new THREE.DataTexture(data, width, height, THREE.RGBAFormat, THREE.FloatType);
+  texture.needsUpdate = true;
+  return texture;
 }
 
 /** A material at rest, for the uniforms' first values. */

@@ -11,6 +11,7 @@ import { attachEnvironmentDrop } from './environment-drop.js';
 import { createMeasuredMaterial } from './measured-material.js';
 import { createLabFrame } from './lab-frame.js';
 import { createCustomBrdf } from './custom-brdf.js';
+import { createOpenPbrPanel } from './openpbr-panel.js';
 import { BRUSHED_ALUMINIUM, WHITE_LAMBERT_HEAD_ON, missingFile } from './model.js';
 import { schema } from './schema.js';
 import { createReadout } from './views.js';
@@ -28,10 +29,7 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
     about: ABOUT,
     terms: TERMS_USED,
   });
-  const readout = createReadout([
-    { text: NOTICES.headOn, className: 'lab-head-on', onClick: () => update(WHITE_LAMBERT_HEAD_ON) },
-    { text: NOTICES.brushed, className: 'lab-brushed', onClick: () => update(BRUSHED_ALUMINIUM) },
-  ]);
+  const readout = createReadout(startingPoints((p) => update(p)));
   const notes = createNotesList(); // under the images: how each light's approximation treats the chosen terms
   const file = { key: '', pixels: null }; // a new key for every file taken: a second file of the same name is used too
   const measured = createMeasuredMaterial({
@@ -46,15 +44,16 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
     return captions(st, lights, stats);
   };
   const ownBrdf = createCustomBrdf({ view: () => view, getState: () => shell.state, update: (p) => update(p) });
+  const openpbr = createOpenPbrPanel({ getState: () => shell.state, update: (p) => update(p), notices: shell.notices });
   const sources = { state: () => shell.state, measured: () => measured.current, custom: ownBrdf.program };
-  const lab = createLabFrame({ ...sources, file: () => file, show });
+  const lab = createLabFrame({ ...sources, openpbr: openpbr.material, file: () => file, show });
   const onReset = () => {
     lab.reset();
     measured.reupload();
   };
   const view = createLabView(shell.view, { label: 'Material lab', resolution: 192, frame: lab.frame, onReset });
   view.setPanels(3);
-  shell.view.append(readout.element, notes.element, ownBrdf.element); // the user's BRDF's panel under the notes
+  shell.view.append(readout.element, notes.element, openpbr.element, ownBrdf.element); // panels under the notes
 
   const onChanged = (changed) => {
     const has = { measured: Boolean(measured.current), file: Boolean(file.pixels) };
@@ -63,6 +62,7 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
       shell.notices.show(NOTICES[missing.notice]);
       update(missing.instead);
     } else view.setDisplay({ exposure: shell.state.exposure, errorScale: shell.state.errorScale });
+    openpbr.refresh(shell.state); // the bars follow the state, drawn or not (the view draws only when seen)
   };
   const update = shell.connect({ title: 'Material lab', onChanged, onStateChange });
   onChanged(['environment', 'brdfSource']);
@@ -74,9 +74,9 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
   };
   const drop = attachEnvironmentDrop(shell.root, {
     maxBytes: MAX_FILE_BYTES,
-    accept: '.hdr,.exr,.binary',
+    accept: '.hdr,.exr,.binary,.mtlx',
     text: NOTICES.dropText,
-    onFile: (name, buffer) => takeFile(name, buffer, { measured, useEnvironment, notices: shell.notices }),
+    onFile: (name, buffer) => takeFile(name, buffer, { measured, useEnvironment, openpbr, notices: shell.notices }),
   });
 
   return {
@@ -92,6 +92,7 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
       view.invalidate();
     },
     read: (which) => view.lab?.read(which),
+    openpbr: openpbr.api(),
     get canvas() {
       return view.canvas;
     },
@@ -99,16 +100,26 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
       return view.resolution;
     },
     dispose() {
-      [drop, measured, ownBrdf, view, shell].forEach((x) => x.dispose());
+      [drop, measured, ownBrdf, openpbr, view, shell].forEach((x) => x.dispose());
     },
   };
 }
 
+/** The readout's buttons: the lab's starting points, each a state to take. */
+const startingPoints = (update) => [
+  { text: NOTICES.headOn, className: 'lab-head-on', onClick: () => update(WHITE_LAMBERT_HEAD_ON) },
+  { text: NOTICES.brushed, className: 'lab-brushed', onClick: () => update(BRUSHED_ALUMINIUM) },
+];
+
 /**
- * A dropped or picked file: a MERL .binary becomes the measured material, an .hdr / .exr the environment
- * (useEnvironment(name, pixels)); a file refused is said why in a notice. Returns whether it was taken.
+ * A dropped or picked file: a MERL .binary becomes the measured material, a MaterialX .mtlx the OpenPBR material,
+ * an .hdr / .exr the environment (useEnvironment(name, pixels)); a file refused is said why in a notice. Returns
+ * whether it was taken.
  */
-function takeFile(name, buffer, { measured, useEnvironment, notices }) {
+function takeFile(name, buffer, { measured, useEnvironment, openpbr, notices }) {
+  if (/\.mtlx$/i.test(name)) {
+    return openpbr.load(name, buffer instanceof ArrayBuffer ? new TextDecoder().decode(buffer) : null);
+  }
   if (/\.binary$/i.test(name)) {
     const mb = MAX_FILE_BYTES / 2 ** 20;
     if (!(buffer instanceof ArrayBuffer)) notices.show(`${name}: larger than ${mb} MB. Kept the material.`);

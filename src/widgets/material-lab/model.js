@@ -27,29 +27,42 @@ const wholeBrdfScene = (scene, alpha, whole) => ({
   ...whole,
 });
 
+/** The α an OpenPBR material is sampled by: its sharpest lobe's, the base's or, where coated, the coat's. */
+const openPbrAlpha = (m) => Math.min(m.specular_roughness ** 2, m.coat_weight > 0 ? m.coat_roughness ** 2 : 1);
+
 /** The scene of `state` with its BRDF: the model, a measured table (sampled by its GGX fit's α, the state's until
- * it is in) or the user's (`custom`, sampled at the state's α). */
-function sceneWithBrdf(state, lights, table, custom) {
+ * it is in), the user's (`custom`, sampled at the state's α) or OpenPBR Surface (`openpbr`, its material). */
+function sceneWithBrdf(state, lights, { table, custom, openpbr }) {
   const scene = labScene(state, lights);
   if (table) return wholeBrdfScene(scene, table.fit?.params.alpha ?? scene.material.alpha, { measured: table.name });
   if (custom) return wholeBrdfScene(scene, scene.material.alpha, { custom });
+  if (openpbr) return wholeBrdfScene(scene, openPbrAlpha(openpbr), { openpbr, anisotropy: null });
   return scene;
 }
 
 /**
  * The scene of `state` (`table`: the measured table in use, or null; `envKey`: which map is lit by, a new one for
- * every file taken; `custom`: the user's BRDF { code, params } when the state asks for it, or null) and its keys:
- * `approx` changes when the approximation must be rendered again, `reference` when the reference must start over.
+ * every file taken; `custom`: the user's BRDF { code, params } when the state asks for it, or null; `openpbr`: the
+ * OpenPBR material when the state asks for it, or null) and its keys: `approx` changes when the approximation must
+ * be rendered again, `reference` when the reference must start over.
  */
-export function sceneOf(state, table, envKey, custom = null) {
+export function sceneOf(state, table, envKey, custom = null, openpbr = null) {
   const lights = lightsOf(state);
-  const scene = sceneWithBrdf(state, lights, table, custom);
+  const scene = sceneWithBrdf(state, lights, { table, custom, openpbr });
   return {
     scene,
     lights,
     keys: {
       approx: JSON.stringify([scene, envKey, table?.key]),
-      reference: JSON.stringify([scene.material, scene.terms, scene.lights, envKey, table?.key, scene.custom]),
+      reference: JSON.stringify([
+        scene.material,
+        scene.terms,
+        scene.lights,
+        envKey,
+        table?.key,
+        scene.custom,
+        scene.openpbr,
+      ]),
     },
   };
 }

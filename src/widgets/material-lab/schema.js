@@ -9,6 +9,7 @@ import { TERM_ALIASES } from '../../math/catalogue/index.js';
 import { SIGMA_HINT } from '../../core/ui/sigma-range.js';
 import { SLOTS } from '../../core/custom/slots.js';
 import { ANISOTROPY_MODELS, TANGENT_FIELDS } from '../../lab/lab-anisotropy.js';
+import { OPENPBR_FIELDS } from '../../lab/openpbr-lab.js';
 
 export const ENV_METHODS = {
   'split-sum': 'Split sum (prefiltered + DFG)',
@@ -152,8 +153,11 @@ export const schema = {
       model: 'The model (terms above)',
       measured: 'Measured (a dropped MERL file)',
       custom: 'Your GLSL: a whole BRDF f(l, v)',
+      openpbr: 'OpenPBR Surface (the panel below)',
     },
   },
+  // OpenPBR Surface's parameters under its own names, grouped as the specification groups them (issue 29)
+  ...OPENPBR_FIELDS,
   // the user's whole BRDF (no control of its own: the panel's editor edits it) and its sliders' values
   codeBRDF: { type: 'code', slot: 'brdf', default: SLOTS.brdf.starter, label: 'Your BRDF (GLSL)' },
   params: { type: 'params', default: {}, label: 'Sliders of your code' },

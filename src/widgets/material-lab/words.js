@@ -24,7 +24,10 @@ export const ABOUT =
   `a 3-D texture of ${(MERL_TEXTURE_BYTES / 1e6).toFixed(2)} MB on the GPU, and only the reference and importance ` +
   'sampling have a form for it. Choose “Your GLSL” as the BRDF to render a whole f(l, v) you write: the ' +
   'reference samples it by GGX at the chosen α and by the cosine together (so it converges for any BRDF), and ' +
-  'only the punctual and sphere lights and importance sampling have a form for it.';
+  'only the punctual and sphere lights and importance sampling have a form for it. Choose “OpenPBR Surface” (or a ' +
+  'preset, or load a MaterialX .mtlx file) to render the layered material of today (Academy Software Foundation, ' +
+  '2024) with its parameters grouped as its specification groups them; the bars under the images show what each ' +
+  'layer adds under the punctual light and in the white furnace.';
 
 export const TERMS_USED = [
   'microfacetBRDF',
@@ -129,7 +132,7 @@ export function description(st, lights, stats, measuredName) {
 export const NOTICES = {
   noMeasured: 'No MERL file has been dropped yet: drop a .binary file on the widget. Kept the model.',
   noFile: 'No environment file has been dropped yet: drop an .hdr or .exr panorama on the widget. Kept the studio.',
-  dropText: 'Load an .hdr / .exr environment or a MERL .binary BRDF…',
+  dropText: 'Load an .hdr / .exr environment, a MERL .binary BRDF or a MaterialX .mtlx…',
   headOn: 'Check the π: a white Lambert sphere lit head-on by the punctual light alone',
   brushed: 'Brushed aluminium: an anisotropic GGX lobe on a machined disc, its brushing lines shown',
 };
