@@ -3,9 +3,12 @@
 // height-correlated Smith V in its anisotropic form when that V is chosen (any other V keeps its isotropic form at
 // α), and with BENT_REFLECTION the reflected direction the approximations read the light in bent as Filament's
 // and three.js's IBL bend it (else the mirror direction, to compare). Without ANISOTROPIC every function here is
-// the isotropic lab's own (microfacetBRDF at α, the frame around n, the mirror direction).
+// the isotropic lab's own (microfacetBRDF at α, the frame around n, the mirror direction). TANGENT_FIELD alone
+// (OpenPBR Surface, a whole BRDF with its own anisotropy) takes only the tangent field's frame.
 #ifdef ANISOTROPIC
 #include "anisotropic.glsl"
+#include "lab-tangent.glsl"
+#elif defined(TANGENT_FIELD)
 #include "lab-tangent.glsl"
 #else
 #include "env.glsl"
@@ -18,7 +21,7 @@ vec2 alphaPair() { return uAlphaPair; }
 
 // The frame the sphere is shaded in at n (columns t, b, n: local to view space).
 mat3 shadingFrame(vec3 n) {
-#ifdef ANISOTROPIC
+#if defined(ANISOTROPIC) || defined(TANGENT_FIELD)
   return tangentFrame(n);
 #else
   return frameAround(n);

@@ -15,7 +15,11 @@ const ENV_DEFINES = { mirror: 'ENV_MIRROR', importance: 'ENV_IMPORTANCE', 'split
  * @returns {Record<string, 1>}
  */
 export function sceneDefines(scene, reference) {
-  if (scene.openpbr) return { ...measuredDefines(scene, reference), OPENPBR: 1 }; // lab-openpbr.glsl, whole
+  if (scene.openpbr) {
+    // lab-openpbr.glsl, whole; shaded in the tangent field's frame (lab-anisotropy.glsl), where its anisotropy lies
+    const along = scene.tangentField?.mode === 'along' && { TANGENT_ALONG: 1 };
+    return { ...measuredDefines(scene, reference), OPENPBR: 1, TANGENT_FIELD: 1, ...along };
+  }
   return scene.measured || scene.custom ? measuredDefines(scene, reference) : modelDefines(scene, reference);
 }
 

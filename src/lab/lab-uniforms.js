@@ -64,7 +64,7 @@ export function setSceneUniforms(uniforms, scene, { reference, dfg }) {
   const params = materialParams({ ...material, anisotropy: scene.anisotropy });
   const { F, D, V, diffuse } = scene.terms;
   setValues(uniforms, { ...sharedUniforms(params), ...termUniforms({ F, D, V, diffuse }, params) });
-  const field = scene.anisotropy?.field;
+  const field = scene.anisotropy?.field ?? scene.tangentField;
   if (field) setValues(uniforms, { uTangentAxis: field.axis, uTangentRotation: field.rotation });
   if (lights.punctual) {
     uniforms.uPunctualDir.value.set(...lights.punctual.dir);

@@ -2,6 +2,7 @@
 // that say when the approximation must be rendered again and when the reference must start over.
 import { lightDirFromAngles } from '../../math/angles.js';
 import { labScene, sphereLight } from '../../lab/lab-scene.js';
+import { tangentFieldOf } from '../../lab/lab-anisotropy.js';
 
 /** The lights that are on, in view space (lab-scene.js), from the state. */
 export function lightsOf(state) {
@@ -36,7 +37,14 @@ function sceneWithBrdf(state, lights, { table, custom, openpbr }) {
   const scene = labScene(state, lights);
   if (table) return wholeBrdfScene(scene, table.fit?.params.alpha ?? scene.material.alpha, { measured: table.name });
   if (custom) return wholeBrdfScene(scene, scene.material.alpha, { custom });
-  if (openpbr) return wholeBrdfScene(scene, openPbrAlpha(openpbr), { openpbr, anisotropy: null });
+  // OpenPBR's specular_anisotropy lies along the lab's tangent field, as the model's anisotropic GGX does
+  if (openpbr) {
+    return wholeBrdfScene(scene, openPbrAlpha(openpbr), {
+      openpbr,
+      anisotropy: null,
+      tangentField: tangentFieldOf(state),
+    });
+  }
   return scene;
 }
 
