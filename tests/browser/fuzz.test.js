@@ -101,10 +101,10 @@ const EXAMPLE_LABELS = Object.fromEntries(Object.entries(EXAMPLES).map(([k, e]) 
  * Waits for the widget's picture to settle (a Monte Carlo reference: until it has its samples; measured-brdf: the
  * table of the example its state names, read in a Web Worker that no hook counts, is the one it shows), its
  * notices dismissed first (read before this: they push the view down, out of the frame, where it stops drawing),
- * and, `late` work asked for (a user-written term's editor, loaded on demand, and its checks), for its page to keep
- * its height and words for 500 ms, then for nothing pending in it.
+ * and for its page to keep its height and words for 500 ms (work that comes late: a user-written term's editor,
+ * loaded on demand, and its checks), then for nothing pending in it.
  */
-async function settled(frame, { late = true } = {}) {
+async function settled(frame) {
   await frame.$$eval('.notice-close', (buttons) => buttons.forEach((b) => b.click()));
   await frame.waitForFunction(
     (labels) => {
@@ -117,7 +117,7 @@ async function settled(frame, { late = true } = {}) {
     { timeout: 90_000 },
     EXAMPLE_LABELS,
   );
-  if (late) await untilSteady(frame, 'layout', { timeout: 60_000 });
+  await untilSteady(frame, 'layout', { timeout: 60_000 });
   await untilIdle(frame); // its last frame drawn and its pauses over, counted by the app (debug-hooks.js)
 }
 
@@ -251,8 +251,7 @@ describe('fuzz: every widget by URL and by postMessage from another origin', () 
         );
         expect(await frame.evaluate(() => ({}).pwned ?? null)).toBe(null);
         expect(await frame.$$eval('.blocking-message', (m) => m.length)).toBe(0);
-        // refused, they asked for no late work: what they did is drawn, or pending, once their replies are in
-        await settled(frame, { late: false });
+        await settled(frame);
         expect(await pixelChange(before, await frameShot()), 'the picture after the hostile messages').toBeLessThan(
           0.01,
         );
