@@ -74,6 +74,8 @@ async function gpuCosts() {
       browser,
       server.url,
       `bench/gpu-bench.html?frames=${quick ? 1 : 9}${familyKey ? `&family=${familyKey}` : ''}`,
+      // its load outlasted puppeteer's 30 s beside other work (the bench's test, at a load average of 45)
+      { beforeLoad: (p) => p.setDefaultNavigationTimeout(300_000) },
     );
     await page.waitForFunction(() => window.__gpuBench?.done || window.__gpuBenchFailed, {
       timeout: 600_000,

@@ -43,7 +43,7 @@ export async function measurePages({ quick = false } = {}) {
       const page = await openPage(browser, server.url, path, {
         beforeLoad: (p) => p.evaluateOnNewDocument(recordFirstFrame),
       });
-      await settle(page, 2500);
+      await settle(page, quick ? 500 : 2500); // quick: the figures are not read, only their shape
       rows.push(
         await page.evaluate((p) => {
           const js = performance.getEntriesByType('resource').filter((r) => r.name.endsWith('.js'));

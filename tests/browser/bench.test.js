@@ -6,6 +6,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { describe, expect, it } from 'vitest';
 import { ROOT } from './harness.js';
+import { FIT_MODELS } from '../../src/measured/fit.js';
 
 const num = expect.any(Number);
 
@@ -74,6 +75,9 @@ function checkShape(report) {
     for (const x of [r.ms, r.rms, r.relative]) expect(Number.isFinite(x) && x >= 0).toBe(true);
   }
   for (const p of report.pages) expect(p).toMatchObject({ jsKB: num, jsFiles: num, loadMs: num });
+  expect(report.measured).toMatchObject({ writeMs: num, parseMs: num, fitSamples: { count: num, ms: num } });
+  expect(report.measured.fits.map((f) => f.model)).toEqual(Object.keys(FIT_MODELS)); // each model, even quick
+  for (const f of report.measured.fits) expect(f).toMatchObject({ ms: num, evaluations: num, error: num });
   expect(report.latency).toMatchObject({ steps: num, targetMs: 50 });
   expect(report.custom.edit).toMatchObject({ medianMs: num, worstMs: num, missed: 0 });
   expect(report.custom.grade.length).toBeGreaterThanOrEqual(report.quick ? 2 : 8); // every one in a full run

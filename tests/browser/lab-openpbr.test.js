@@ -189,11 +189,9 @@ describe('MaterialX files through the lab’s buttons', () => {
     await allowDownloads(page, dir);
     await page.click('.openpbr-save');
     await page.waitForFunction(() => document.querySelector('.openpbr-message').textContent.startsWith('Saved'));
-    let saved;
-    for (let i = 0; i < 50 && !saved; i++) {
-      saved = readdirSync(dir).find((f) => f.startsWith('paint_from_file') && f.endsWith('.mtlx'));
-      if (!saved) await new Promise((r) => setTimeout(r, 200));
-    }
+    const download = () => readdirSync(dir).find((f) => f.startsWith('paint_from_file') && f.endsWith('.mtlx'));
+    await expect.poll(download, { timeout: 60_000 }).toBeTruthy(); // the browser writes it after the click
+    const saved = download();
     const text = readFileSync(join(dir, saved), 'utf8');
     expect(readMtlx(text).material).toEqual(readMtlx(file).material);
   });
