@@ -376,6 +376,7 @@ export const STRESS_DOMAINS = {
   cieXyzFit: { args: [[-1e6, 0, 380, 555, 780, 1e6]], range: [0, 2] },
   spectrumToXyz: { args: [[() => 0, () => 1, (l) => l / 780]], range: NON_NEGATIVE },
   xyzToLinearSrgb: { tuples: [[[0, 0, 0]], [[0.95047, 1, 1.08883]], [[1e6, 0, 0]]], range: FINITE },
+  luminanceRec709: { tuples: [[[0, 0, 0]], [[1, 1, 1]], [[1e-30, 0, 0]], [[1e6, 1e6, 1e6]]], range: NON_NEGATIVE },
   skipped: {
     seededRandom: 'returns a generator; unit-tested through the samplers',
     sampleSlope: 'Monte Carlo; its moments are unit-tested',

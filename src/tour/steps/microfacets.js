@@ -21,6 +21,19 @@ export const STEPS = [
       'ray-traced share with Smith’s G1.',
   },
   {
+    id: 'microfacets-anisotropic-shadowing',
+    widget: 'anisotropic-microsurface',
+    title: 'Shadowing on a brushed surface',
+    state: { alphaX: 0.6, alphaY: 0.2, theta: 75, phi: 0, seed: 3 },
+    text:
+      'Beyond the talk: the same ray tracing on a 3-D surface whose bumps are stretched, rougher along the tangent ' +
+      't (αx = 0.6) than along b (αy = 0.2). Light arriving along t (φ = 0°) crosses the steep slopes and is ' +
+      'shadowed more than light running along the grooves (φ = 90°). Smith’s G1 follows this by using the ' +
+      'roughness seen along the light’s azimuth, and the ray-traced points lie on its curve. The green points, ' +
+      'facets tilted away from the light, lie below it: Smith ignores that which way a facet tilts changes how ' +
+      'often it is shadowed.',
+  },
+  {
     id: 'microfacets-bounces',
     widget: 'microfacets',
     title: 'Light that bounces twice',
