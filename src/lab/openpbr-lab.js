@@ -48,8 +48,11 @@ const isColour = (key) => Array.isArray(OPENPBR_DEFAULTS[key]);
 /** Linear [r, g, b] as the sRGB field shows it. */
 export const colourHex = (rgb) => rgbToHex(rgb.map(linearToSrgb));
 
+// the folders start closed (types.js: `closed` on a group's first field): the lab opens on the talk's model, its
+// panel near the view's height, and a preset or a file fills the OpenPBR fields
 const toggle = (layer) => ({
   group: layer.group,
+  closed: true,
   type: 'bool',
   default: true,
   label: `${layer.label} layer on`,

@@ -22,6 +22,7 @@ const CHANGES = {
   'ndf-explorer': { hwhm: 15 },
   'visibility-explorer': { alpha: 0.2 },
   microfacets: { alpha: 0.8 },
+  'anisotropic-microsurface': { theta: 60 }, // φ only moves the light along the plot's sweep; θ re-measures it
   energy: { alphas: ['0.25', '0.75'], metalAlpha: 0.5 },
   'diffuse-explorer': { sigma: 20, lightTheta: 60 },
   'material-lab': { alpha: 0.6 },

@@ -27,8 +27,10 @@ describe('material lab: opens lit, reads its centre', () => {
     const closed = await page.$$eval('.widget-material-lab .lil-gui.lil-closed > .lil-title', (els) =>
       els.map((e) => e.textContent),
     );
-    // the anisotropic lobe's folder too: anisotropy starts at 0, the talk's isotropic lobe
-    expect(closed).toEqual(['Anisotropy', 'Sphere light', 'Ambient light', 'Reference and display']);
+    // the anisotropic lobe's folder too: anisotropy starts at 0, the talk's isotropic lobe; and OpenPBR's, the BRDF
+    // being the talk's model
+    const openPbr = ['OpenPBR base', 'OpenPBR specular', 'OpenPBR coat', 'OpenPBR fuzz'];
+    expect(closed).toEqual(['Anisotropy', ...openPbr, 'Sphere light', 'Ambient light', 'Reference and display']);
     const layout = await page.evaluate(() => {
       const bottom = (q) => document.querySelector(q).getBoundingClientRect().bottom;
       return {
