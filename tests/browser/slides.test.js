@@ -200,8 +200,10 @@ describe('<shading-lab-widget> on another origin', () => {
       expect(await page.$eval('#now', (o) => o.value)).toBe('mode=zones-lh'); // the ready event's query
       expect(await page.$eval('#zones', (z) => z.state.mode)).toBe('zones-lh');
 
-      // the page's button calls set(); the state and the widget inside the frame follow
-      await page.click('#weighted');
+      // the page's button calls set(); the state and the widget inside the frame follow. Clicked in the page (the
+      // button sits under the frame, which grows when the widget reports its height: a click at the button's
+      // measured place can land on the frame)
+      await page.$eval('#weighted', (button) => button.click());
       await page.waitForFunction(() => document.getElementById('now').value === 'mode=zones-lh-weighted', {
         timeout: WAIT_MS,
       });
