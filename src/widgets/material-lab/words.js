@@ -45,18 +45,24 @@ export const TERMS_USED = [
 
 const fmt = (x, digits = 4) => (x === null || x === undefined ? '—' : x.toPrecision(digits));
 
-/** The lights on and the method each is shaded by, in words (the approximation's caption). */
+/**
+ * The lights on and the method each is shaded by, in words (the approximation's caption). A whole BRDF (a table,
+ * the user's, OpenPBR) has only importance sampling for the environment and no ambient form: those lights are said
+ * to be left out (the caption has room for no more), as the notes under the images explain (lab-approximations.js).
+ */
 export function methodText(st, lights) {
   const parts = [];
+  const whole = st.brdfSource !== 'model';
   if (lights.punctual) parts.push('punctual (exact)');
   if (lights.sphere) {
     parts.push(`sphere light by ${st.areaMethod === 'centre' ? 'its centre' : 'representative point'}`);
   }
   if (lights.env) {
+    const name = ENVIRONMENTS[st.environment].split(' (')[0].toLowerCase();
     const samples = st.envMethod === 'importance' ? `${st.samples} importance samples` : st.envMethod;
-    parts.push(`${ENVIRONMENTS[st.environment].split(' (')[0].toLowerCase()} by ${samples}`);
+    parts.push(whole && st.envMethod !== 'importance' ? `${name} left out` : `${name} by ${samples}`);
   }
-  if (lights.ambient) parts.push('ambient');
+  if (lights.ambient) parts.push(whole ? 'ambient left out' : 'ambient');
   return parts.join(' + ') || 'no light on';
 }
 
