@@ -9,6 +9,7 @@ import { OPENPBR_PRESETS } from '../../lab/openpbr-presets.js';
 import { PARTS, openPbrFurnace, openPbrLightBreakdown, whiteStack } from '../../lab/openpbr-breakdown.js';
 import { lightDirFromAngles } from '../../math/angles.js';
 import { download } from '../../core/framework/download.js';
+import { createSettledTask } from '../../core/framework/render-loop.js';
 
 const PART_WORDS = {
   diffuse: 'base diffuse',
@@ -17,7 +18,6 @@ const PART_WORDS = {
   coat: 'coat',
   fuzz: 'fuzz',
 };
-const SETTLE_MS = 120; // the bars wait this long after the last change
 const luminance = ([r, g, b]) => 0.2126 * r + 0.7152 * g + 0.0722 * b;
 
 const el = (tag, props = {}, ...children) => {
@@ -152,27 +152,27 @@ export function createOpenPbrPanel({ getState, update, notices }) {
     return text;
   }
 
-  let timer = 0;
+  let next = null; // the bars of the state's material, { key, material, light }, drawn once the changes pause
+  const barsLater = createSettledTask(() => {
+    drawn = next.key;
+    bars.replaceChildren(...barsOf(next.material, next.light));
+  });
   let drawn = ''; // the key of the bars drawn
-  let wanted = ''; // the key of the state's bars
   /** Draws the bars of `state`'s material again, a moment after it stops changing. */
   function refresh(state) {
     if (state.brdfSource !== 'openpbr') {
-      clearTimeout(timer);
+      barsLater.cancel();
       if (drawn !== 'off') bars.replaceChildren(el('p', {}, OFF_TEXT));
-      drawn = wanted = 'off';
+      drawn = 'off';
+      next = null;
       return;
     }
     const material = openPbrOfState(state, exact);
     const light = state.punctual ? [lightDirFromAngles(state.lightTheta, state.lightPhi), state.cLight] : null;
     const key = JSON.stringify([material, light]);
-    if (key === wanted) return;
-    wanted = key;
-    clearTimeout(timer);
-    timer = setTimeout(() => {
-      drawn = key;
-      bars.replaceChildren(...barsOf(material, light));
-    }, SETTLE_MS);
+    if (key === next?.key) return;
+    next = { key, material, light };
+    barsLater.schedule();
   }
 
   return {
@@ -184,12 +184,12 @@ export function createOpenPbrPanel({ getState, update, notices }) {
     api: () => ({
       material: () => openPbrOfState(getState(), exact),
       get ready() {
-        return drawn !== '' && drawn === wanted && drawn !== 'off';
+        return next !== null && drawn === next.key;
       },
       load,
       save,
     }),
-    dispose: () => clearTimeout(timer),
+    dispose: () => barsLater.cancel(),
   };
 }
 
