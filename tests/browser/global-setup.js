@@ -1,9 +1,11 @@
-// Builds the app once and serves it for every browser test file; checks that a Chromium exists. Each browser project
-// runs this setup: the build is made once per run (shared through the main process) and each project has a server.
+// Builds the app once (not at all when dist/ is the build of the present sources: build-cache.js) and serves it for
+// every browser test file; checks that a Chromium exists. Each browser project runs this setup: the build is made
+// once per run (shared through the main process) and each project has a server.
 // It also keeps one Chromium per worker (the broker below): each file asks for its worker's one and works in an
 // incognito context of its own (harness.js, launchBrowser), instead of starting a Chromium of its own.
 import { createServer } from 'node:http';
-import { CHROME_HINT, buildApp, findChrome, serveStatic, startChromium } from './harness.js';
+import { CHROME_HINT, findChrome, serveStatic, startChromium } from './harness.js';
+import { buildOnce } from './build-cache.js';
 
 /** Closes every incognito context of `browser` (what a file that ended without closing its own left behind). */
 async function disposeContexts(browser) {
@@ -58,7 +60,7 @@ function chromiumBroker() {
 
 export default async function setup(project) {
   if (!findChrome()) throw new Error(CHROME_HINT);
-  const dir = await (globalThis.__shadingLabBuild ??= buildApp());
+  const dir = await (globalThis.__shadingLabBuild ??= buildOnce());
   const server = await serveStatic(dir);
   const broker = await chromiumBroker();
   project.provide('baseUrl', server.url);

@@ -36,10 +36,11 @@ export function findChrome() {
  * Builds the app into `outDir`. BUILT_APP names a build made by this same run of the test suite (the browser tests'
  * global setup): asked for that directory again (the bench's pages and IBL parts, run by bench.test.js), it is
  * reused instead of built again, and instead of rebuilt under the server that serves it to the other tests.
+ * `plugins` go beside the config's (build-cache.js: what the build read).
  */
-export async function buildApp(outDir = join(ROOT, 'dist')) {
+export async function buildApp(outDir = join(ROOT, 'dist'), { plugins = [] } = {}) {
   if (process.env.BUILT_APP && resolve(process.env.BUILT_APP) === resolve(outDir)) return outDir;
-  await build({ root: ROOT, logLevel: 'warn', build: { outDir, emptyOutDir: true } });
+  await build({ root: ROOT, logLevel: 'warn', plugins, build: { outDir, emptyOutDir: true } });
   return outDir;
 }
 
