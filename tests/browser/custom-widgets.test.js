@@ -2,7 +2,17 @@
 // real Chromium: code typed into the editor as a user types it, drawn as the term predicts (the truth: closed
 // forms and the JS terms of src/math), a compile error keeping the last picture, and the URL carrying the code.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { getState, launchBrowser, open, shot, typeCode, untilIdle, widget, withPixels } from './helpers.js';
+import {
+  getState,
+  launchBrowser,
+  open,
+  shot,
+  typeCode,
+  untilIdle,
+  widget,
+  widgetLoaded,
+  withPixels,
+} from './helpers.js';
 import { stateToParams } from '../../src/core/framework/state.js';
 import { srgbToLinear } from '../../src/math/color.js';
 import { schema as labSchema } from '../../src/widgets/material-lab/schema.js';
@@ -29,10 +39,12 @@ const panelText = (page, slot, selector) =>
 /**
  * Opens `w` alone (embed.html) and waits for its editor. A window just wider than the phone layout (760 px), tall
  * enough to hold the widget and its editor in view; `maxSamples` caps the lab's reference (debug-hooks.js).
+ * `{ drawn: false }`, for a page whose state is read and not its pictures: waits for it to have loaded, not to idle.
  */
-async function openWidget(key, query, { maxSamples } = {}) {
+async function openWidget(key, query, { maxSamples, drawn = true } = {}) {
   const page = await open(browser, `embed.html?w=${key}&${query}`, { width: 800, height: 1400, maxSamples });
-  await widget(page, key);
+  await (drawn ? widget : widgetLoaded)(page, key);
+  if (!drawn) return page;
   await page.waitForSelector('.custom-panel .cm-content', { timeout: 30_000 });
   await untilIdle(page);
   return page;
@@ -88,12 +100,16 @@ const lastCellRed = async (page) => (await firstAndLastCells(page, 2)).last;
 const POLL = { timeout: 20_000, interval: 500 };
 
 /**
- * Types `fn { body; }` (its value `expected` where `read` reads it), then the same with an undeclared name on line 2:
- * the compiler's error lands on line 2 and `read` still reads the good code's value; then the state, through the
- * URL of the share link, opens the same code in a new page.
+ * On the describe's kept page, set to `state` first: types `fn { body; }` (its value `expected` where `read` reads
+ * it), then the same with an undeclared name on line 2: the compiler's error lands on line 2 and `read` still reads
+ * the good code's value; then the state, through the URL of the share link, opens the same code in a new page.
  */
-async function compileErrorAndUrl({ key, query, slot, codeKey, schema, fn, body, read, expected }) {
+async function compileErrorAndUrl({ key, query, state: set, slot, codeKey, schema, fn, body, read, expected }) {
   const page = await keptWidget(key, query);
+  if (set) {
+    await page.evaluate((k, s) => globalThis.__shadingLab.widgets[k].update(s), key, set);
+    await untilIdle(page);
+  }
   await typeCode(page, slot, `${fn} {\n${body};\n}`);
   expect((await read(page)) / expected).toBeCloseTo(1, 5);
   await typeCode(page, slot, `${fn} {\n${body} * missing;\n}`);
@@ -101,7 +117,7 @@ async function compileErrorAndUrl({ key, query, slot, codeKey, schema, fn, body,
   expect(await panelText(page, slot, '.custom-status')).toMatch(/keeps your last good code/);
   expect((await read(page)) / expected).toBeCloseTo(1, 5);
   const state = await getState(page, key);
-  const again = await openWidget(key, stateToParams(schema, state).toString());
+  const again = await openWidget(key, stateToParams(schema, state).toString(), { drawn: false });
   expect((await getState(again, key))[codeKey]).toBe(state[codeKey]);
   expect([...page.errors, ...again.errors]).toEqual([]);
   await again.close();
@@ -232,7 +248,7 @@ return vec3(${rho.toFixed(7)} / PI);
     // the code as the share link carries it, opened in a new page: the same state
     const state = await getState(page, 'material-lab');
     const query = stateToParams(labSchema, state).toString();
-    const again = await openWidget('material-lab', query, FIRST_BATCH);
+    const again = await openWidget('material-lab', query, { drawn: false });
     expect((await getState(again, 'material-lab')).codeBRDF).toBe(state.codeBRDF);
     expect(page.errors).toEqual([]);
     expect(again.errors).toEqual([]);
@@ -240,10 +256,19 @@ return vec3(${rho.toFixed(7)} / PI);
   });
 
   it('in the white furnace the Monte Carlo reference of ρ/π converges to the albedo ρ (GGX + cosine)', async () => {
-    const query = 'brdfSource=custom&punctual=0&env=1&environment=furnace&envMethod=importance&refSamples=128';
-    // the starter's reference stops at one batch (the cap is read at each frame, debug-hooks.js sampleTarget), not
-    // converged for nothing; the cap lifted, the typed code's reference gets its 128 samples
-    const page = await openWidget('material-lab', query, FIRST_BATCH);
+    // the kept page, the user's BRDF in the furnace: its reference stops at one batch (the cap is read at each frame,
+    // debug-hooks.js sampleTarget), not converged for nothing; the cap lifted, the typed code's reference gets its 128
+    const page = await keptWidget('material-lab', `brdfSource=custom&${LIGHT}`, FIRST_BATCH);
+    await page.evaluate(() =>
+      globalThis.__shadingLab.widgets['material-lab'].update({
+        brdfSource: 'custom',
+        punctual: false,
+        env: true,
+        environment: 'furnace',
+        envMethod: 'importance',
+      }),
+    );
+    await untilIdle(page);
     await page.evaluate(() => delete globalThis.__shadingLab.maxSamples);
     await typeCode(page, 'brdf', lambertCode);
     await page.waitForFunction(
@@ -274,7 +299,6 @@ return vec3(${rho.toFixed(7)} / PI);
     );
     reference.forEach(({ mean, se }) => expect(Math.abs(mean - rho)).toBeLessThan(4 * se + 1e-3 * rho));
     expect(page.errors).toEqual([]);
-    await page.close();
   });
 });
 
@@ -284,7 +308,7 @@ describe('visibility-explorer: your V beside the catalogue’s', () => {
   const curves = (page) => page.evaluate(() => globalThis.__shadingLab.widgets['visibility-explorer'].getCurves());
 
   it('the starter draws height-correlated Smith’s JS curve and sphere; V = 1 typed draws the implicit G', async () => {
-    const page = await openWidget('visibility-explorer', QUERY);
+    const page = await keptWidget('visibility-explorer', QUERY);
     const start = await curves(page);
     start.custom.forEach((g, i) => expect(withinFloat32(g, start.smithGGXCorrelated[i])).toBe(true));
     const spheres = await firstAndLastCells(page, 3);
@@ -294,13 +318,13 @@ describe('visibility-explorer: your V beside the catalogue’s', () => {
     const implicit = await curves(page);
     implicit.custom.forEach((g, i) => expect(withinFloat32(g, implicit.implicit[i])).toBe(true));
     expect(page.errors).toEqual([]);
-    await page.close();
   });
 
   it('a compile error names the user’s line and keeps the curve; the URL carries the code', () =>
     compileErrorAndUrl({
       key: 'visibility-explorer',
-      query: 'terms=custom&alpha=0.5&config=mirror',
+      query: QUERY,
+      state: { config: 'mirror' },
       slot: 'V',
       codeKey: 'codeV',
       schema: visibilitySchema,
@@ -323,7 +347,7 @@ describe('diffuse-explorer: your diffuse term beside the catalogue’s', () => {
   };
 
   it('the starter draws Lambert’s JS profile and sphere; (1 + α) Lambert reads α as σ in radians', async () => {
-    const page = await openWidget('diffuse-explorer', QUERY);
+    const page = await keptWidget('diffuse-explorer', QUERY);
     const start = await profiles(page);
     start.custom.forEach((y, i) => expect(withinFloat32(y, start.lambert[i])).toBe(true));
     const spheres = await firstAndLastCells(page, 2);
@@ -342,13 +366,13 @@ describe('diffuse-explorer: your diffuse term beside the catalogue’s', () => {
     // compiled with the new code after the plots have read it: under load that was seen to take more than the wait
     await expect.poll(() => lastCellRed(page), POLL).toBeGreaterThan(spheres.last * 1.1);
     expect(page.errors).toEqual([]);
-    await page.close();
   });
 
   it('a compile error names the user’s line and keeps the curve; the URL carries the code', () =>
     compileErrorAndUrl({
       key: 'diffuse-explorer',
-      query: 'models=custom&cdiff=0.8&lightTheta=0&lightPhi=0',
+      query: QUERY,
+      state: { diffuse: ['custom'], lightTheta: 0 },
       slot: 'diffuse',
       codeKey: 'codeDiffuse',
       schema: diffuseSchema,

@@ -41,15 +41,16 @@ export function capSamples(n) {
  * Opens a page of the served app with its draw calls counted, at SMALL_VIEWPORT unless `width` and `height` say
  * otherwise (a test whose claim is about a size or a layout names it). `maxSamples` caps its progressive views,
  * for a test that reads a picture exact from its first samples and would otherwise wait (untilIdle) for it to
- * converge.
+ * converge. `beforeLoad(page)` runs after those, before the navigation (openPage).
  */
-export const open = (browser, path, { maxSamples, ...size } = {}) =>
+export const open = (browser, path, { maxSamples, beforeLoad, ...size } = {}) =>
   openPage(browser, baseUrl(), path, {
     ...SMALL_VIEWPORT,
     ...size,
     beforeLoad: async (page) => {
       await page.evaluateOnNewDocument(countDrawCalls);
       if (maxSamples) await page.evaluateOnNewDocument(capSamples, maxSamples);
+      await beforeLoad?.(page);
     },
   });
 
@@ -155,6 +156,15 @@ export const afterFrames = (target, n) =>
 export async function widget(page, key) {
   await page.waitForFunction((k) => globalThis.__shadingLab?.widgets?.[k], { timeout: WAIT_MS }, key);
   await untilIdle(page);
+}
+
+/**
+ * Waits for a widget to be registered under `key`, then for the page to have loaded (untilLoaded), not for its views
+ * to be drawn: for a test that reads the page's state or words.
+ */
+export async function widgetLoaded(page, key) {
+  await page.waitForFunction((k) => globalThis.__shadingLab?.widgets?.[k], { timeout: WAIT_MS }, key);
+  await untilLoaded(page);
 }
 
 /**
