@@ -4,6 +4,8 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { baseUrl, getState, launchBrowser, open, untilIdle, widget, withPixels } from './helpers.js';
 import { openPage } from './harness.js';
+import { coerceState, paramsToObject } from '../../src/core/framework/state.js';
+import { schema as labSchema } from '../../src/widgets/material-lab/schema.js';
 import { linearToSrgb, srgbToLinear } from '../../src/math/color.js';
 import { diffuseOrenNayar } from '../../src/math/diffuse.js';
 import { lightDirFromAngles } from '../../src/math/angles.js';
@@ -41,18 +43,35 @@ const converged = (page, key = 'material-lab') =>
     key,
   );
 
+/** @type {Promise<import('puppeteer-core').Page> | undefined} */
+let kept;
+afterAll(async () => (await kept)?.close());
+
 /**
- * Opens the lab alone (embed.html: the chapter page would lay out its text and figures and mount its second lab,
- * lighting-models, as well) and waits for its reference to have its samples. The lab's images are 192 × 192
- * whatever the window, so a smaller one than a desktop's (SwiftShader draws the display's pixels on the CPU), wide
- * enough that the lab's three panels stay in one row (radianceAt reads them so). A test that reads only the
- * approximation, or a reference that is exact from its first batch, passes FIRST_BATCH: the reference then stops at
- * one batch (sampleTarget in debug-hooks.js) instead of converging for nothing. The chapter page itself is opened
- * where both its labs are the claim (the context budget).
+ * The lab alone (embed.html: the chapter page would lay out its text and figures and mount its second lab,
+ * lighting-models, as well), one page for the file's cases (a page load fetches and compiles the lab again), set to
+ * the state `query` gives (the rest at its defaults, as a page opened with `query`), once its reference has its
+ * samples. The lab's images are 192 × 192 whatever the window, so a smaller one than a desktop's (SwiftShader draws
+ * the display's pixels on the CPU), wide enough that the lab's three panels stay in one row (radianceAt reads them
+ * so). A test that reads only the approximation, or a reference that is exact from its first batch, passes
+ * FIRST_BATCH: the reference then stops at one batch (sampleTarget in debug-hooks.js, read at each frame) instead of
+ * converging for nothing. The chapter page itself is opened where both its labs are the claim (the context budget).
  */
 async function openLab(query, { maxSamples } = {}) {
-  const page = await open(browser, `embed.html?w=material-lab&${query}`, { width: 960, height: 720, maxSamples });
-  await widget(page, 'material-lab');
+  kept ??= open(browser, 'embed.html?w=material-lab', { width: 960, height: 720, ...FIRST_BATCH }).then(
+    async (page) => {
+      await widget(page, 'material-lab');
+      return page;
+    },
+  );
+  const page = await kept;
+  await page.evaluate((n) => {
+    if (n) globalThis.__shadingLab.maxSamples = n;
+    else delete globalThis.__shadingLab.maxSamples;
+  }, maxSamples);
+  const { state } = coerceState(labSchema, paramsToObject(query));
+  await page.evaluate((s) => globalThis.__shadingLab.widgets['material-lab'].update(s), state);
+  await untilIdle(page);
   await converged(page);
   return page;
 }
@@ -172,7 +191,6 @@ describe('material lab', () => {
         });
       }
       expect(page.errors).toEqual([]);
-      await page.close();
     },
   );
 
@@ -195,7 +213,6 @@ describe('material lab', () => {
     }
     const stats = await page.evaluate(() => globalThis.__shadingLab.widgets['material-lab'].getStats());
     expect(stats.relative).toBeLessThan(0.02); // what is left is the reference's own noise
-    await page.close();
   });
 
   it('importance sampling converges on the reference as N grows', async () => {
@@ -219,7 +236,6 @@ describe('material lab', () => {
     );
     for (let i = 1; i < errors.length; i++) expect(errors[i]).toBeLessThan(errors[i - 1]);
     expect(errors[3]).toBeLessThan(errors[0] / 4);
-    await page.close();
   });
 
   it(
@@ -242,7 +258,6 @@ describe('material lab', () => {
       );
       // measured 0.34 against 0.62: better, far from exact (the energy factor is rough)
       expect(representative).toBeLessThan(centre * 0.7);
-      await page.close();
     },
   );
 
@@ -291,7 +306,6 @@ describe('material lab', () => {
       expect(worst).toBeLessThan(2e-3); // half-float image (2^-11) and float32 shading
       expect(scaledOff).toBeGreaterThan(0.05); // the old form would fail by far more than the tolerance
       expect(page.errors).toEqual([]);
-      await page.close();
     },
   );
 
@@ -389,7 +403,6 @@ describe('material lab', () => {
         );
       }
       expect(page.errors).toEqual([]);
-      await page.close();
     },
     240_000,
   ); // a reference per case (the DFG tables are shipped precomputed)
@@ -456,7 +469,6 @@ describe('material lab', () => {
         expect(shown.beckmann[k]).toBeGreaterThan(expected.ggx + slack);
       });
       expect(page.errors).toEqual([]);
-      await page.close();
     },
     240_000,
   );
@@ -554,7 +566,6 @@ describe('material lab', () => {
       const [centre] = await radianceAt(page, 0, [[0, 0]]);
       for (const c of centre) expect(Math.abs(c - 0.5)).toBeLessThanOrEqual(step(0.5) + 1e-3);
       expect(page.errors).toEqual([]);
-      await page.close();
     },
   );
 });
