@@ -3,7 +3,18 @@
 // the polar plot's geometry); compile errors on the user's line with the last picture kept; the loop check; the
 // URL and postMessage carrying the code; code from a link waiting for a click; a lost context and its recovery.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { baseUrl, getState, launchBrowser, open, shot, typeCode, untilIdle, widget, withPixels } from './helpers.js';
+import {
+  baseUrl,
+  getState,
+  launchBrowser,
+  open,
+  shot,
+  typeCode,
+  untilIdle,
+  widget,
+  widgetLoaded,
+  withPixels,
+} from './helpers.js';
 import { defaultState } from '../../src/core/framework/state.js';
 import { schema } from '../../src/widgets/brdf-lobe/schema.js';
 import { lobePeak, lobeScene } from '../../src/widgets/brdf-lobe/model.js';
@@ -28,6 +39,13 @@ const JS_STATE = { ...defaultState(schema), compare: true, D2: 'ggx', V2: 'smith
 /** The peak of lobe A of the JS reference (catalogue terms in float64) for a state. */
 const jsPeak = (partial) => lobePeak(lobeScene({ ...JS_STATE, ...partial }).lobeA)[1];
 
+/** A kept page, made the shown tab: a tab behind another gets no animation frames, and the waits count frames. */
+async function inFront(opened) {
+  const page = await opened;
+  await page.bringToFront();
+  return page;
+}
+
 const unique = () => `// ${Math.random().toString(36).slice(2)}\n`;
 const D_TWICE_GGX = `float customD(float nh, float alpha) {
 float a2 = alpha * alpha;
@@ -35,9 +53,16 @@ float d = nh * nh * (a2 - 1.0) + 1.0;
 return 2.0 * a2 / (PI * d * d);
 }`;
 
-/** The widget alone, in a window just wider than where its row of views folds to one column (900 px, styles.css). */
-async function openLobe(query) {
+/**
+ * The widget alone, in a window just wider than where its row of views folds to one column (900 px, styles.css).
+ * `{ drawn: false }`, for a page whose state is read and not its pictures: waits for it to have loaded, not to idle.
+ */
+async function openLobe(query, { drawn = true } = {}) {
   const page = await open(browser, `embed.html?w=${KEY}&${query}`, { width: 960, height: 1400 });
+  if (!drawn) {
+    await widgetLoaded(page, KEY);
+    return page;
+  }
   await widget(page, KEY);
   await page.waitForSelector('.custom-panel .cm-content', { timeout: 30_000 });
   await untilIdle(page);
@@ -49,7 +74,11 @@ async function openLobe(query) {
  * the widget's programs again). Opened by the first case that asks, so that each still runs alone (-t): the first
  * reads the starter before it types; the others read the code they type, or only that their code changed nothing.
  */
-const sharedLobe = () => (shared ??= openLobe(`D=custom&${WITH_B}`));
+const sharedLobe = () => inFront((shared ??= openLobe(`D=custom&${WITH_B}`)));
+/** A second page, for the cases that type V and F, then the whole BRDF (set by update: no page load between). */
+let termsPage;
+const termsLobe = () => inFront((termsPage ??= openLobe(`V=custom&F=custom&${WITH_B}`)));
+afterAll(async () => (await termsPage)?.close());
 
 /** The polar plot's words: each lobe's peak, e.g. { A: 0.95, B: 0.47 } (in 1/sr). */
 async function polarPeaks(page) {
@@ -105,7 +134,7 @@ describe('custom terms in brdf-lobe: typed code draws as the term predicts', () 
   });
 
   it('V: ½ × height-correlated Smith and F: 2 F0 give the JS reference lobe × ½ × 2 F0 (F = 1)', async () => {
-    const page = await openLobe(`V=custom&F=custom&${WITH_B}`);
+    const page = await termsLobe();
     await typeCode(
       page,
       'V',
@@ -120,11 +149,16 @@ return 1.0 / (nl * sqrt(nv * nv * (1.0 - a2) + a2) + nv * sqrt(nl * nl * (1.0 - 
     const expected = 0.5 * 2 * JS_STATE.f0 * jsPeak({ F: 'one' });
     expect(peaks.A / expected).toBeCloseTo(1, 2);
     expect(page.errors).toEqual([]);
-    await page.close();
   });
 
   it('whole BRDF: a Lambertian 0.5/π draws a half-disc of radius 0.5/π (every direction alike)', async () => {
-    const page = await openLobe('brdf=custom');
+    // the V and F case's page, set to what a page opened with brdf=custom alone shows
+    const page = await termsLobe();
+    await page.evaluate((s) => globalThis.__shadingLab.widgets['brdf-lobe'].update(s), {
+      ...defaultState(schema),
+      brdf: 'custom',
+    });
+    await untilIdle(page);
     await typeCode(page, 'brdf', 'vec3 customBRDF(vec3 l, vec3 v) {\nreturn vec3(0.5 / PI);\n}');
     expect((await polarPeaks(page)).A).toBeCloseTo(0.5 / Math.PI, 3);
     const png = await shot(page, '.polar-plot canvas');
@@ -148,7 +182,6 @@ return 1.0 / (nl * sqrt(nv * nv * (1.0 - a2) + a2) + nv * sqrt(nl * nl * (1.0 - 
     expect(r20).toBeGreaterThan(50);
     expect(Math.abs(r20 - r75)).toBeLessThan(3);
     expect(page.errors).toEqual([]);
-    await page.close();
   });
 });
 
@@ -207,7 +240,8 @@ describe('custom terms in brdf-lobe: errors, safety, sharing', () => {
     await untilIdle(page);
     const url = page.url();
     expect(new URL(url).searchParams.has('codeD')).toBe(true);
-    const reopened = await openLobe(url.slice(url.indexOf('embed.html')).replace(/^embed\.html\?w=brdf-lobe&?/, ''));
+    const query = url.slice(url.indexOf('embed.html')).replace(/^embed\.html\?w=brdf-lobe&?/, '');
+    const reopened = await openLobe(query, { drawn: false }); // its state is the claim
     expect((await getState(reopened, KEY)).codeD).toBe(state.codeD);
     await reopened.close();
 
@@ -243,7 +277,7 @@ describe('custom terms in brdf-lobe: errors, safety, sharing', () => {
   });
 
   it('a lost WebGL context shows a message; restored, the previous program draws again and edits run', async () => {
-    const page = await openLobe(`D=custom&${WITH_B}`);
+    const page = await sharedLobe(); // its last case: the context is lost and comes back
     await typeCode(page, 'D', D_TWICE_GGX);
     const good = await shot(page, '.polar-plot canvas');
     await page.evaluate(() => {
@@ -262,7 +296,6 @@ describe('custom terms in brdf-lobe: errors, safety, sharing', () => {
     await typeCode(page, 'D', D_TWICE_GGX.replace('2.0 * a2', 'a2'));
     expect((await polarPeaks(page)).A / jsPeak({})).toBeCloseTo(1, 2);
     expect(page.errors.filter((e) => !/CONTEXT_LOST/i.test(e))).toEqual([]);
-    await page.close();
   });
 
   it('code running when the GPU takes the context away is blamed: the code before it comes back', async () => {
