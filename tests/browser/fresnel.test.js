@@ -13,7 +13,9 @@ import {
   widget,
   withPixels,
 } from './helpers.js';
+import { defaultState } from '../../src/core/framework/state.js';
 import { sphereZoneFractions } from '../../src/math/zones.js';
+import { schema } from '../../src/widgets/fresnel-zones/schema.js';
 import { weightedSphereShares } from '../support/zone-shares.js';
 
 let browser;
@@ -26,10 +28,40 @@ afterAll(async () => {
 
 const CANVAS = '.widget-fresnel-zones canvas';
 
+/** @type {Promise<import('puppeteer-core').Page> | undefined} */
+let kept;
+/**
+ * One page of fresnel-zones alone, for the cases that read what a state draws or computes (a page load compiles the
+ * widget's programs again); opened by the first case that asks, so that each still runs alone (-t).
+ */
+const keptZones = () =>
+  (kept ??= open(browser, 'embed.html?w=fresnel-zones').then(async (page) => {
+    await widget(page, 'fresnel-zones');
+    return page;
+  }));
+/** The kept page set to `state` (the rest at its defaults, as a page opened with only `state` in its URL), idle. */
+async function zonesIn(state) {
+  const page = await keptZones();
+  await page.evaluate((s) => globalThis.__shadingLab.widgets['fresnel-zones'].update(s), {
+    ...defaultState(schema),
+    ...state,
+  });
+  await untilIdle(page);
+  return page;
+}
+/** @type {Promise<import('puppeteer-core').Page> | undefined} */
+let chapter;
+/** fresnel.html, for its two cases (the idle page first where both run; a page load mounts its three widgets). */
+const keptChapter = () =>
+  (chapter ??= open(browser, 'fresnel.html').then(async (page) => {
+    await widget(page, 'zones');
+    return page;
+  }));
+afterAll(async () => Promise.all([(await kept)?.close(), (await chapter)?.close()]));
+
 describe('fresnel-zones', () => {
   it('a GUI change changes the pixels, and the URL holds the new state', async () => {
-    const page = await open(browser, 'embed.html?w=fresnel-zones');
-    await widget(page, 'fresnel-zones');
+    const page = await zonesIn({});
     const before = await shot(page, CANVAS);
     await setControl(page, 'Mode', 'Zones of n·v');
     expect(await shot(page, CANVAS)).not.toBe(before);
@@ -42,7 +74,7 @@ describe('fresnel-zones', () => {
     await widget(again, 'fresnel-zones');
     expect(await getState(again, 'fresnel-zones')).toEqual(state);
     expect([...page.errors, ...again.errors]).toEqual([]);
-    await Promise.all([page.close(), again.close()]);
+    await again.close();
   });
 
   it('bad URL values give a visible notice and keep a valid state', async () => {
@@ -59,8 +91,7 @@ describe('fresnel-zones', () => {
   });
 
   it('measures the analytic n·v zone shares of an orthographic sphere on the GPU', async () => {
-    const page = await open(browser, 'embed.html?w=fresnel-zones&mode=zones-nv&shape=sphere&camera=orthographic');
-    await widget(page, 'fresnel-zones');
+    const page = await zonesIn({ mode: 'zones-nv', shape: 'sphere', camera: 'orthographic' });
     const shares = await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].getZoneShares());
     const analytic = sphereZoneFractions();
     console.log(
@@ -68,7 +99,7 @@ describe('fresnel-zones', () => {
         `${analytic.map((s) => (s * 100).toFixed(2)).join(' / ')} %`,
     );
     shares.forEach((s, i) => expect(Math.abs(s - analytic[i])).toBeLessThan(0.003));
-    await page.close();
+    expect(page.errors).toEqual([]);
   });
 
   it(
@@ -81,11 +112,7 @@ describe('fresnel-zones', () => {
       ]) {
         const expected = weightedSphereShares(alpha);
         expect(expected[2]).toBeCloseTo(red, 3); // the figures fresnel.html quotes
-        const page = await open(
-          browser,
-          `embed.html?w=fresnel-zones&mode=zones-lh-weighted&shape=sphere&alpha=${alpha}`,
-        );
-        await widget(page, 'fresnel-zones');
+        const page = await zonesIn({ mode: 'zones-lh-weighted', shape: 'sphere', alpha });
         const avg = await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].getAverageShares());
         console.log(
           `weighted shares, sphere, α ${alpha}: GPU ${avg.map((x) => (x * 100).toFixed(2))} %, ` +
@@ -93,7 +120,7 @@ describe('fresnel-zones', () => {
         );
         // a 128² image of the sphere
         avg.forEach((x, i) => expect(Math.abs(x - expected[i]), `zone ${i}`).toBeLessThan(0.003));
-        await page.close();
+        expect(page.errors).toEqual([]);
       }
     },
   );
@@ -101,8 +128,7 @@ describe('fresnel-zones', () => {
   it(
     'bears out the talk: weighted by the BRDF, over all light directions, ' + 'green predominates and red is rare',
     async () => {
-      const page = await open(browser, 'embed.html?w=fresnel-zones&mode=zones-lh-weighted&shape=torusknot');
-      await widget(page, 'fresnel-zones');
+      const page = await zonesIn({ mode: 'zones-lh-weighted', shape: 'torusknot' });
       const avg = await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].getAverageShares());
       console.log(
         `weighted l·h zone shares over 64 lights (torus knot, alpha 0.3): ` +
@@ -112,13 +138,11 @@ describe('fresnel-zones', () => {
       expect(avg[2]).toBeLessThan(0.05);
       expect(avg.reduce((a, b) => a + b)).toBeCloseTo(1, 6);
       expect(page.errors).toEqual([]);
-      await page.close();
     },
   );
 
   it('compiles only the terms a mode uses, and reuses a variant when it comes back', async () => {
-    const page = await open(browser, 'embed.html?w=fresnel-zones&mode=zones-nv');
-    await widget(page, 'fresnel-zones');
+    const page = await zonesIn({ mode: 'zones-nv' });
     const info = () => page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].getProgramInfo());
     expect((await info()).fragmentShader).not.toMatch(/ndfGGX|visibilitySmith|fresnelDielectric/);
     await setControl(page, 'Mode', 'Zones of l·h × rest of BRDF');
@@ -127,12 +151,11 @@ describe('fresnel-zones', () => {
     await setControl(page, 'Mode', 'Zones of n·v');
     await setControl(page, 'Mode', 'Zones of l·h × rest of BRDF');
     expect((await info()).variants).toBe(weighted.variants);
-    await page.close();
+    expect(page.errors).toEqual([]);
   });
 
   it('moves the light with the keyboard and by dragging, and probes the surface', async () => {
-    const page = await open(browser, 'embed.html?w=fresnel-zones&mode=zones-lh&lightTheta=60');
-    await widget(page, 'fresnel-zones');
+    const page = await zonesIn({ mode: 'zones-lh', lightTheta: 60 });
     await page.focus(CANVAS);
     await page.keyboard.press('ArrowUp');
     expect((await getState(page, 'fresnel-zones')).lightTheta).toBe(55);
@@ -145,12 +168,10 @@ describe('fresnel-zones', () => {
     const probe = () => page.$eval('.probe', (el) => el.textContent);
     await expect.poll(probe, { timeout: WAIT_MS }).toMatch(/n·v.*n·l.*n·h.*l·h.*F\(n·v\) exact/s);
     expect(page.errors).toEqual([]);
-    await page.close();
   });
 
   it('the modes of n·v hide the light and leave it where it is; a drag does not move it', async () => {
-    const page = await open(browser, 'embed.html?w=fresnel-zones&mode=zones-nv&lightTheta=60');
-    await widget(page, 'fresnel-zones');
+    const page = await zonesIn({ mode: 'zones-nv', lightTheta: 60 });
     const sunShown = () => page.$eval('.light-overlay', (svg) => getComputedStyle(svg).display !== 'none');
     expect(await sunShown()).toBe(false);
     const box = await (await page.$(CANVAS)).boundingBox();
@@ -163,13 +184,12 @@ describe('fresnel-zones', () => {
     await setControl(page, 'Mode', 'Zones of l·h');
     expect(await sunShown()).toBe(true);
     expect(page.errors).toEqual([]);
-    await page.close();
   });
 
   it('the probe follows the light: at the centre of the orthographic sphere n·l = cos θ, 60° then 65°', async () => {
-    const page = await open(browser, 'embed.html?w=fresnel-zones&mode=zones-lh&lightTheta=60');
-    await widget(page, 'fresnel-zones');
+    const page = await zonesIn({ mode: 'zones-lh', lightTheta: 60 });
     const box = await (await page.$(CANVAS)).boundingBox();
+    await page.mouse.move(box.x + box.width / 2 + 10, box.y + box.height / 2); // a move, wherever a case left it
     await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
     const nl = () =>
       page.$$eval('.probe tr', (trs) =>
@@ -179,12 +199,10 @@ describe('fresnel-zones', () => {
     await page.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].update({ lightTheta: 65 }));
     await expect.poll(nl, { timeout: WAIT_MS }).toBeCloseTo(Math.cos((65 * Math.PI) / 180), 3);
     expect(page.errors).toEqual([]);
-    await page.close();
   });
 
   it('the Fresnel picture outlines the zones of n·v at sin 45° and sin 75° of the sphere radius', async () => {
-    const page = await open(browser, 'embed.html?w=fresnel-zones&mode=fresnel-nv&shape=sphere&camera=orthographic');
-    await widget(page, 'fresnel-zones'); // and idle: the settled frame drawn
+    const page = await zonesIn({ mode: 'fresnel-nv', shape: 'sphere', camera: 'orthographic' }); // the frame drawn
     // along the row through the centre, rightwards: the radius (in sphere radii) of the first yellow and red pixels
     const radii = await withPixels(
       page,
@@ -204,12 +222,10 @@ describe('fresnel-zones', () => {
     expect(Math.abs(radii[0] - Math.SQRT1_2)).toBeLessThan(0.02);
     expect(Math.abs(radii[1] - Math.sin((75 * Math.PI) / 180))).toBeLessThan(0.02);
     expect(page.errors).toEqual([]);
-    await page.close();
   });
 
   it('draws nothing while idle', async () => {
-    const page = await open(browser, 'fresnel.html');
-    await widget(page, 'zones');
+    const page = await keptChapter();
     await page.$eval('[data-slot="fresnel-zones"]', (el) => el.scrollIntoView());
     await untilIdle(page); // its first frames and its zone shares' read-back done: nothing more asked for
     const count = () => page.evaluate(() => [window.__drawCalls, globalThis.__shadingLab.frames]);
@@ -219,7 +235,6 @@ describe('fresnel-zones', () => {
     expect(before[0]).toBeGreaterThan(0);
     expect(await count()).toEqual(before);
     expect(await page.evaluate(() => globalThis.__shadingLab.pending), 'work asked for while idle').toBe(0);
-    await page.close();
   });
 
   it('follows the size of its frame', async () => {
@@ -269,7 +284,7 @@ describe('fresnel-curves and f0-tables', () => {
   });
 
   it('a material picked in the tables loads into the other widgets of the chapter page', async () => {
-    const page = await open(browser, 'fresnel.html');
+    const page = await keptChapter();
     await widget(page, 'tables');
     await page.click('tr[data-material="diamond"] a[href*="w=fresnel-zones"]');
     // the page scrolls smoothly to the widget that took the material: the next click waits till it stops
@@ -284,23 +299,30 @@ describe('fresnel-curves and f0-tables', () => {
     await expect.poll(async () => (await getState(page, 'curves')).materials, { timeout: WAIT_MS }).toContain('iron');
     await expect.poll(() => page.url(), { timeout: WAIT_MS }).toMatch(/zones\.material=diamond/);
     expect(page.errors).toEqual([]);
-    await page.close();
   });
 });
 
 describe('without WebGL2', () => {
   it('3-D views say so in words; the rest of the page works', async () => {
-    const noGl = await launchBrowser(['--disable-3d-apis']);
-    try {
-      const page = await open(noGl, 'fresnel.html');
-      await widget(page, 'tables');
-      expect(await page.$eval('.widget-fresnel-zones .blocking-message', (el) => el.textContent)).toMatch(
-        /needs WebGL2/,
-      );
-      expect(await page.$$eval('.widget-fresnel-curves .plot', (els) => els.length)).toBe(2);
-      expect(page.errors).toEqual([]);
-    } finally {
-      await noGl.close();
-    }
+    // a browser without WebGL (Chromium's --disable-3d-apis, a blocklisted GPU) answers getContext('webgl2') with
+    // null: the same, in this page alone, instead of a Chromium of its own launched with that flag
+    const page = await open(browser, 'fresnel.html', {
+      beforeLoad: (p) =>
+        p.evaluateOnNewDocument(() => {
+          for (const Canvas of [HTMLCanvasElement, OffscreenCanvas]) {
+            const real = Canvas.prototype.getContext;
+            Canvas.prototype.getContext = function getContext(type, ...rest) {
+              return /webgl/i.test(type) ? null : real.call(this, type, ...rest);
+            };
+          }
+        }),
+    });
+    await widget(page, 'tables');
+    expect(await page.$eval('.widget-fresnel-zones .blocking-message', (el) => el.textContent)).toMatch(
+      /needs WebGL2/,
+    );
+    expect(await page.$$eval('.widget-fresnel-curves .plot', (els) => els.length)).toBe(2);
+    expect(page.errors).toEqual([]);
+    await page.close();
   });
 });
