@@ -67,6 +67,44 @@ describe('the material lab renders OpenPBR Surface', () => {
     for (const layer of ['Base', 'Specular', 'Coat', 'Fuzz']) expect(names).toContain(`${layer} layer on`);
   });
 
+  it('choosing OpenPBR opens its base folder, or the one last worked in, its controls in view', async () => {
+    /** The OpenPBR folders' titles that are open, and whether `key`'s control is laid out (a closed one is not). */
+    const folders = (key) =>
+      lab((k) => {
+        const titled = [...document.querySelectorAll('.widget-material-lab .lil-gui')].filter((f) =>
+          f.querySelector(':scope > .lil-title')?.textContent.startsWith('OpenPBR'),
+        );
+        const open = titled.filter((f) => !f.classList.contains('lil-closed'));
+        const name = [...document.querySelectorAll('.lil-name')].find((n) => n.textContent === k);
+        const shown = name.closest('.lil-controller').getBoundingClientRect().height > 0;
+        return { open: open.map((f) => f.querySelector(':scope > .lil-title').textContent), shown };
+      }, key);
+    const choose = async (brdfSource) => {
+      await lab((b) => globalThis.__shadingLab.widgets.lab.update({ brdfSource: b }), brdfSource);
+      await untilIdle(page);
+    };
+    expect(await folders('base_color')).toEqual({ open: [], shown: false }); // the lab opens with them closed
+    await choose('openpbr');
+    await expect
+      .poll(() => folders('base_color'), { timeout: 30_000 })
+      .toEqual({ open: ['OpenPBR base'], shown: true });
+    // the user closes the base, opens the coat and works in it; back to the model, the coat closed again
+    const title = (group) =>
+      page.evaluateHandle((g) => [...document.querySelectorAll('.lil-title')].find((t) => t.textContent === g), group);
+    await (await title('OpenPBR base')).click();
+    await (await title('OpenPBR coat')).click();
+    await expect.poll(() => folders('coat_ior')).toEqual({ open: ['OpenPBR coat'], shown: true });
+    await page.evaluate(() => {
+      const name = [...document.querySelectorAll('.lil-name')].find((n) => n.textContent === 'coat_ior');
+      name.closest('.lil-controller').querySelector('input').focus();
+    });
+    await choose('model');
+    await (await title('OpenPBR coat')).click();
+    await expect.poll(() => folders('coat_ior')).toEqual({ open: [], shown: false });
+    await choose('openpbr');
+    await expect.poll(() => folders('coat_ior'), { timeout: 30_000 }).toEqual({ open: ['OpenPBR coat'], shown: true });
+  });
+
   it('coat and fuzz off: an OpenPBR metal renders as the talk’s model (Schlick, GGX, correlated Smith)', async () => {
     const model = {
       brdfSource: 'model',
