@@ -92,7 +92,7 @@ const MODEL = 'OpenPBR Surface layered through its layers'; // what every varian
 
 export const OPENPBR_FAMILY = {
   key: 'openpbr-layers',
-  title: 'OpenPBR Surface layer by layer: each stack’s cost, and its albedo against a random walk through the layers',
+  title: 'The layers of OpenPBR Surface: each stack’s cost, and its albedo against a random walk through the layers',
   domain:
     `cos θv in {${MUS.join(', ')}} × ${CASES.map((c) => c.label).join('; ')} (fuzz_weight 0: the walk has no ` +
     'fuzz) × R, G, B; the GPU cost of each stack, the layers above it compiled out, relative to the talk’s model’s',

@@ -4,8 +4,9 @@
 // shader; the furnace figures against the independent quadrature of tests/support/openpbr-albedo.js and the split
 // sum's albedo (integrate.js); each preset loads its values; a .mtlx file loaded through the button shows its values
 // in the panel, a bad one is refused with a message naming what is wrong and the material kept, and what the Save
-// button writes reads back to the same material; and the latency of a parameter change, timed as bench/latency.js
-// times it.
+// button writes reads back to the same material; choosing OpenPBR opens its base folder (or the one last worked in);
+// and the latency of a parameter change held as a slider's drag, timed as bench/latency.js times it, the reference
+// and the bars waiting for the release.
 import { mkdtempSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -236,7 +237,7 @@ describe('MaterialX files through the lab’s buttons', () => {
 });
 
 describe('latency', () => {
-  it('a parameter change reaches its frame, timed as bench/latency.js times it (the figure printed)', async () => {
+  it('a change held reaches its frame, the reference waiting for the release (bench/latency.js timing)', async () => {
     await page.click('.openpbr-preset-carPaint');
     await showImages();
     // does a change go through the render loop? (bench/latency.js asks the same before it times a widget)
@@ -250,7 +251,18 @@ describe('latency', () => {
       page.$eval('.widget-material-lab', (w, t) => w.dispatchEvent(new PointerEvent(t, { bubbles: true })), type);
     await pointer('pointerdown'); // held, as on a slider's drag (bench/latency.js)
     for (const v of values) ms.push(await page.evaluate(timeChange, 'lab', 'specular_roughness', v, viaLoop));
+    // held: the reference (the whole stack, a batch of samples of every light per pixel) and the bars wait, and the
+    // captions say so; released, the reference starts over for the last value and the bars show it
+    const stats = () => lab(() => globalThis.__shadingLab.widgets.lab.getStats());
+    const captions = () => lab(() => document.querySelector('.widget-material-lab .lab-captions').textContent);
+    expect((await stats()).waiting).toBe(true);
+    expect(await captions()).toContain('the one before the drag');
+    expect(await lab(() => globalThis.__shadingLab.widgets.lab.openpbr.ready)).toBe(false);
     await pointer('pointerup');
+    await expect.poll(async () => (await stats()).waiting, { timeout: 60_000 }).toBe(false);
+    expect(await captions()).toMatch(/Reference: Monte Carlo, \d+ of \d+ samples/);
+    await barsReady();
+    expect((await material()).specular_roughness).toBe(values.at(-1));
     const sorted = ms.filter((x) => x !== null).sort((a, b) => a - b);
     const median = sorted[Math.floor(sorted.length / 2)];
     const load = (await import('node:os')).loadavg()[0].toFixed(1);
