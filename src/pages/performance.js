@@ -25,9 +25,15 @@ document.getElementById('machine').textContent =
     : '');
 
 const costOf = (v) => (costSelect.value === 'gpu' ? v.gpuRelative : v.cpuNsPerEval);
-/** What a family's GPU costs are relative to: the cheapest variant, or the one it names (relativeTo). */
+/** What a family's GPU costs are relative to: the cheapest variant, or the one it names (relativeTo; its label's
+ * last part, after a colon: OpenPBR's "+ specular: the talk's model"). */
 const relativeWords = (f) =>
-  f.relativeTo ? `“${f.variants.find((v) => v.key === f.relativeTo).label}”` : 'the cheapest variant';
+  f.relativeTo
+    ? f.variants
+        .find((v) => v.key === f.relativeTo)
+        .label.split(': ')
+        .pop()
+    : 'the cheapest variant';
 const costLabel = (f) =>
   costSelect.value === 'gpu' ? `GPU cost, relative to ${relativeWords(f)}` : 'CPU cost (ns per evaluation, JS)';
 
