@@ -107,6 +107,7 @@ async function measureFamily(family, gpuMs, lastCpu) {
     errorOf: family.errorOf,
     ...(family.referenceNote ? { referenceNote: family.referenceNote() } : {}),
     ...(family.relativeTo ? { relativeTo: family.relativeTo } : {}),
+    ...(family.cpuUntimed ? { cpuUntimed: true } : {}),
     variants: family.variants.map((v, i) => {
       const { maxAbs, rms, maxAt } = errors[i];
       return {
