@@ -44,14 +44,15 @@ async function cpuCosts(family) {
   const bench = new Bench({ time: quick ? 5 : 250, warmupTime: quick ? 2 : 50 });
   const sample = Array.from({ length: CPU_SAMPLE }, (_, i) => family.inputs[(i * 7919) % family.inputs.length]);
   let sink = 0;
-  for (const v of family.variants.filter((w) => !w.untimed)) {
+  for (const v of family.variants.filter((w) => !w.untimed && !family.cpuUntimed)) {
     bench.add(v.key, () => {
       for (const a of sample) sink += v.js(...a);
     });
   }
   await bench.run();
   if (Number.isNaN(sink)) throw new Error('NaN in the CPU benchmark');
-  const untimed = family.variants.filter((v) => v.untimed).map((v) => [v.key, null]); // a reference run offline
+  // a reference run offline, or a family whose values are looked up (computed once)
+  const untimed = family.variants.filter((v) => v.untimed || family.cpuUntimed).map((v) => [v.key, null]);
   return Object.fromEntries([
     ...bench.tasks.map((t) => [t.name, (t.result.latency.mean * 1e6) / CPU_SAMPLE]),
     ...untimed,
@@ -96,7 +97,8 @@ async function measureFamily(family, gpuMs, lastCpu) {
   family.configure?.({ quick });
   const errors = measureErrors(family);
   const cpu = timeCpu ? await cpuCosts(family) : lastCpu;
-  const cheapest = Math.min(...Object.values(gpuMs).filter((ms) => ms !== null));
+  // relative to the cheapest, or to the variant the family names (OpenPBR's layers: the talk's model)
+  const cheapest = gpuMs[family.relativeTo] ?? Math.min(...Object.values(gpuMs).filter((ms) => ms !== null));
   const labelOf = (key) => family.variants.find((v) => v.key === key)?.label ?? null;
   return {
     key: family.key,
@@ -104,6 +106,8 @@ async function measureFamily(family, gpuMs, lastCpu) {
     domain: family.domain,
     errorOf: family.errorOf,
     ...(family.referenceNote ? { referenceNote: family.referenceNote() } : {}),
+    ...(family.relativeTo ? { relativeTo: family.relativeTo } : {}),
+    ...(family.cpuUntimed ? { cpuUntimed: true } : {}),
     variants: family.variants.map((v, i) => {
       const { maxAbs, rms, maxAt } = errors[i];
       return {
@@ -133,7 +137,7 @@ async function familiesOnly() {
   for (const family of FAMILIES) {
     const [gpuMs, cpu] = [lastOf(family.key, 'gpuMsPerFrame'), lastOf(family.key, 'cpuNsPerEval')];
     const missing = family.variants
-      .filter((v) => !v.untimed && !(gpuMs[v.key] >= 0 && cpu[v.key] >= 0))
+      .filter((v) => !v.untimed && !(gpuMs[v.key] >= 0 && (family.cpuUntimed || cpu[v.key] >= 0)))
       .map((v) => `${family.key}/${v.key}`);
     if (missing.length) throw new Error(`no cost measured for ${missing.join(', ')}: run the whole bench`);
     families.push(await measureFamily(family, gpuMs, cpu));

@@ -12,6 +12,7 @@ import * as M from '../src/math/index.js';
 import { MULTIPLE_SCATTERING_FAMILY } from './multiple-scattering-family.js';
 import { ANISOTROPY_FAMILY } from './anisotropy-family.js';
 import { F82_TINT_FAMILY } from './f82-tint-family.js';
+import { OPENPBR_FAMILY } from './openpbr-family.js';
 import { DEG } from '../src/math/angles.js';
 import { CATALOGUE } from '../src/math/catalogue/index.js';
 
@@ -276,6 +277,7 @@ export const FAMILIES = [
   MULTIPLE_SCATTERING_FAMILY,
   ANISOTROPY_FAMILY,
   F82_TINT_FAMILY,
+  OPENPBR_FAMILY,
 ];
 
 /**

@@ -42,12 +42,12 @@ void main() {
 }`;
 }
 
-/** A family's square RGBA float tables ({ size, data }) as sampler uniforms. */
+/** A family's RGBA float tables ({ size, data } square, or { width, height, data }) as sampler uniforms. */
 function tableUniforms(tables = {}) {
   return Object.fromEntries(
     Object.entries(tables).map(([name, table]) => {
-      const { size, data } = table();
-      const texture = new THREE.DataTexture(data, size, size, THREE.RGBAFormat, THREE.FloatType);
+      const { size, width = size, height = size, data } = table();
+      const texture = new THREE.DataTexture(data, width, height, THREE.RGBAFormat, THREE.FloatType);
       texture.minFilter = texture.magFilter = THREE.NearestFilter;
       texture.needsUpdate = true;
       return [name, { value: texture }];
@@ -88,7 +88,10 @@ const results = {};
 for (const family of FAMILIES.filter((f) => !only || f.key === only)) {
   results[family.key] = {};
   for (const v of family.variants.filter((w) => w.glsl))
-    results[family.key][v.key] = timeFrames(program(v.glsl, family.gpu));
+    // a variant's own defines (OpenPBR's layers compiled out) beside the family's
+    results[family.key][v.key] = timeFrames(
+      program(v.glsl, { ...family.gpu, defines: { ...family.gpu?.defines, ...v.defines } }),
+    );
 }
 window.__gpuBench = {
   done: true,

@@ -104,10 +104,11 @@ async function checkTaken(page, name, { key, step }, value) {
   if (!taken) throw new Error(`bench/latency.js: ${name}.update({ ${key}: ${value} }) left ${key} at ${now}`);
 }
 
-async function measure(browser, url, name, steps) {
-  const drag = await dragValues(name, steps);
+/** One widget's row; `variant` ({ query, drag(steps) }: bench/openpbr-latency.js) opens it in another state. */
+export async function measure(browser, url, name, steps, variant = null) {
+  const drag = variant ? await variant.drag(steps) : await dragValues(name, steps);
   const { key, values } = drag;
-  const path = `embed.html?w=${name}${LIGHT_STATE[name] ?? ''}`;
+  const path = `embed.html?w=${name}${variant?.query ?? LIGHT_STATE[name] ?? ''}`;
   const page = await openPage(browser, url, path, { width: 1280, height: 2600 });
   await page.waitForFunction((n) => globalThis.__shadingLab?.widgets?.[n], { timeout: 60_000 }, name);
   if (OPENING_WORK[name]) await page.waitForFunction(OPENING_WORK[name], { timeout: 300_000, polling: 500 });

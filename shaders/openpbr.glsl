@@ -83,7 +83,9 @@ float openPbrGgxLobe(vec3 l, vec3 v, vec3 h, vec2 alphas) {
 float refractedCos(float mu, float eta) { return sqrt(max(1.0 - (1.0 - mu * mu) / (eta * eta), 0.0)); }
 
 // each layer's part, weighted so that they sum to openPbrBRDF: specular, diffuse (the dielectric base's gloss and
-// diffuse lobe), metal, coat, fuzz
+// diffuse lobe), metal, coat, fuzz. Compile-time switches take a layer out as its weight at 0 would, its work too
+// (the bench times each layer's own cost, bench/openpbr-family.js; the lab compiles them all): OPENPBR_NO_SPECULAR
+// (specular_weight: the base's microfacet lobe, gloss and metal), OPENPBR_NO_COAT, OPENPBR_NO_FUZZ.
 void openPbrLayers(vec3 l, vec3 v, OpenPbrMaterial m, out vec3 specular, out vec3 diffuse, out vec3 metal,
                    out vec3 coat, out vec3 fuzz) {
   specular = diffuse = metal = coat = fuzz = vec3(0.0);
@@ -91,29 +93,47 @@ void openPbrLayers(vec3 l, vec3 v, OpenPbrMaterial m, out vec3 specular, out vec
   vec3 h = normalize(l + v);
   float lh = dot(l, h);
   float nv = v.z;
+#ifdef OPENPBR_NO_SPECULAR
+  m.specular_weight = 0.0;
+#endif
+#ifdef OPENPBR_NO_COAT
+  m.coat_weight = 0.0;
+#endif
+#ifdef OPENPBR_NO_FUZZ
+  m.fuzz_weight = 0.0;
+#endif
+  float above = 1.0;
+#ifndef OPENPBR_NO_FUZZ
+  above -= m.fuzz_weight * albedoFuzzZeltner(nv, m.fuzz_roughness);
+  fuzz = m.fuzz_weight * m.fuzz_color * fuzzZeltner(l, v, m.fuzz_roughness);
+#endif
+  vec3 below = vec3(above);
+#ifndef OPENPBR_NO_COAT
+  float cAlpha = m.coat_roughness * m.coat_roughness;
+  float coatAlbedo = openPbrDielectricAlbedo(nv, cAlpha, m.coat_ior);
+  float path = 0.5 * (1.0 / refractedCos(l.z, m.coat_ior) + 1.0 / refractedCos(nv, m.coat_ior));
+  below *= mix(vec3(1.0), pow(m.coat_color, vec3(path)) * (1.0 - coatAlbedo), m.coat_weight)
+    * openPbrCoatDarkening(m, nv);
+  vec2 coatAlphas = anisotropicAlphas(cAlpha, m.coat_roughness_anisotropy, ANISOTROPY_OPENPBR);
+  coat = vec3(m.coat_weight * fresnelDielectric(lh, m.coat_ior) * openPbrGgxLobe(l, v, h, coatAlphas) * above);
+#endif
+  float dielectric = 1.0 - m.base_metalness;
+  float gloss = 1.0;
+#ifndef OPENPBR_NO_SPECULAR
   float rBase = openPbrBaseRoughness(m);
   vec2 baseAlphas = anisotropicAlphas(rBase * rBase, m.specular_roughness_anisotropy, ANISOTROPY_OPENPBR);
   float lobe = openPbrGgxLobe(l, v, h, baseAlphas);
   float eta = openPbrSpecularEta(m);
-  float gloss = 1.0 - openPbrDielectricAlbedo(nv, rBase * rBase, eta);
-  float cAlpha = m.coat_roughness * m.coat_roughness;
-  float coatAlbedo = openPbrDielectricAlbedo(nv, cAlpha, m.coat_ior);
-  float path = 0.5 * (1.0 / refractedCos(l.z, m.coat_ior) + 1.0 / refractedCos(nv, m.coat_ior));
-  float above = 1.0 - m.fuzz_weight * albedoFuzzZeltner(nv, m.fuzz_roughness);
-  vec3 below = above * mix(vec3(1.0), pow(m.coat_color, vec3(path)) * (1.0 - coatAlbedo), m.coat_weight)
-    * openPbrCoatDarkening(m, nv);
-  float dielectric = 1.0 - m.base_metalness;
+  gloss -= openPbrDielectricAlbedo(nv, rBase * rBase, eta);
   specular = below * dielectric * m.specular_color * fresnelDielectric(lh, eta) * lobe;
+  metal = below * m.base_metalness * m.specular_weight
+    * fresnelF82Tint(m.base_weight * m.base_color, m.specular_color, lh) * lobe;
+#endif
   float lv = dot(l, v);
   vec3 eon = vec3(diffuseEON(l.z, nv, lv, m.base_diffuse_roughness, m.base_color.r),
     diffuseEON(l.z, nv, lv, m.base_diffuse_roughness, m.base_color.g),
     diffuseEON(l.z, nv, lv, m.base_diffuse_roughness, m.base_color.b));
   diffuse = below * dielectric * gloss * m.base_weight * eon;
-  metal = below * m.base_metalness * m.specular_weight
-    * fresnelF82Tint(m.base_weight * m.base_color, m.specular_color, lh) * lobe;
-  vec2 coatAlphas = anisotropicAlphas(cAlpha, m.coat_roughness_anisotropy, ANISOTROPY_OPENPBR);
-  coat = vec3(m.coat_weight * fresnelDielectric(lh, m.coat_ior) * openPbrGgxLobe(l, v, h, coatAlphas) * above);
-  fuzz = m.fuzz_weight * m.fuzz_color * fuzzZeltner(l, v, m.fuzz_roughness);
 }
 
 vec3 openPbrBRDF(vec3 l, vec3 v, OpenPbrMaterial m) {

@@ -25,8 +25,17 @@ document.getElementById('machine').textContent =
     : '');
 
 const costOf = (v) => (costSelect.value === 'gpu' ? v.gpuRelative : v.cpuNsPerEval);
-const costLabel = () =>
-  costSelect.value === 'gpu' ? 'GPU cost, relative to the cheapest variant' : 'CPU cost (ns per evaluation, JS)';
+/** What a family's GPU costs are relative to: the cheapest variant, or the one it names (relativeTo; its label's
+ * last part, after a colon: OpenPBR's "+ specular: the talk's model"). */
+const relativeWords = (f) =>
+  f.relativeTo
+    ? f.variants
+        .find((v) => v.key === f.relativeTo)
+        .label.split(': ')
+        .pop()
+    : 'the cheapest variant';
+const costLabel = (f) =>
+  costSelect.value === 'gpu' ? `GPU cost, relative to ${relativeWords(f)}` : 'CPU cost (ns per evaluation, JS)';
 
 const plots = [];
 const measureOf = (v) => v.error ?? v.difference;
@@ -39,17 +48,21 @@ const colourOf = (f, v) => SERIES_COLORS[f.variants.indexOf(v) % SERIES_COLORS.l
 
 /**
  * Error against cost, for the reference and what approximates a model: different models are not on it, nor is
- * a reference that was not timed (a Monte Carlo walk run once, offline).
+ * a variant without the cost chosen (a Monte Carlo walk run once, offline; a quadrature looked up has no CPU cost).
  */
 function errorChart(section, f, all) {
-  const variants = all.filter((v) => v.cpuNsPerEval !== null && v.gpuRelative !== null);
+  const variants = all.filter((v) => costOf(v) !== null);
+  if (!variants.length) {
+    section.append(Object.assign(document.createElement('p'), { textContent: `No ${costLabel(f)} for this family.` }));
+    return;
+  }
   const costs = [...new Set(variants.map(costOf))].sort((a, b) => a - b);
   plots.push(
     createPlot(section, {
       title:
         `${f.title.split(':')[0]}: largest error of each approximation against its cost ` +
         '(lower left is better; exact forms sit at 1e-7)',
-      xLabel: costLabel(),
+      xLabel: costLabel(f),
       yLabel: 'max |error|',
       x: { min: costs[0] * 0.9, max: costs[costs.length - 1] * 1.1 },
       y: { min: ERROR_FLOOR / 2, max: 2, log: true },
@@ -69,7 +82,8 @@ function errorChart(section, f, all) {
   );
 }
 
-const cost = (x, digits) => (x === null ? '— (run offline)' : x.toFixed(digits));
+// no cost: a reference run once, offline, or (OpenPBR's stacks) a quadrature computed once and looked up
+const cost = (x, digits, v) => (x !== null ? x.toFixed(digits) : v.kind === 'reference' ? '— (run offline)' : '—');
 /** A table row of `cells` (HTML), each in a <td>, or in a <th> for a head row. */
 const row = (cells, tag = 'td') => `<tr>${cells.map((c) => `<${tag}>${c}</${tag}>`).join('')}</tr>`;
 
@@ -81,9 +95,9 @@ function rowsOf(f, variants) {
         againstText(v),
         maxText(v),
         measureOf(v).rms.toExponential(2),
-        cost(v.cpuNsPerEval, 1),
-        cost(v.gpuMsPerFrame, 2),
-        `${cost(v.gpuRelative, 2)}${v.gpuRelative === null ? '' : '×'}`,
+        cost(v.cpuNsPerEval, 1, v),
+        cost(v.gpuMsPerFrame, 2, v),
+        `${cost(v.gpuRelative, 2, v)}${v.gpuRelative === null ? '' : '×'}`,
       ]),
     )
     .join('');
@@ -101,9 +115,10 @@ function render() {
       `${f.referenceNote ? ` The reference is itself measured: ${f.referenceNote}.` : ''}</p>`;
     root.append(section);
     if (approximations.length > 1) errorChart(section, f, approximations);
+    const relative = f.relativeTo ? `GPU relative to ${relativeWords(f)}` : 'GPU relative';
     const head = (what) =>
       `<tr><th>Variant</th><th>Measured against</th><th>max |${what}|</th><th>RMS ${what}</th>` +
-      '<th>CPU ns/eval</th><th>GPU ms/frame</th><th>GPU relative</th></tr>';
+      `<th>CPU ns/eval</th><th>GPU ms/frame</th><th>${relative}</th></tr>`;
     const table = document.createElement('table');
     table.className = 'data-table compact';
     table.innerHTML =

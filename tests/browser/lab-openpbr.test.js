@@ -4,8 +4,9 @@
 // shader; the furnace figures against the independent quadrature of tests/support/openpbr-albedo.js and the split
 // sum's albedo (integrate.js); each preset loads its values; a .mtlx file loaded through the button shows its values
 // in the panel, a bad one is refused with a message naming what is wrong and the material kept, and what the Save
-// button writes reads back to the same material; and the latency of a parameter change, timed as bench/latency.js
-// times it.
+// button writes reads back to the same material; choosing OpenPBR opens its base folder (or the one last worked in);
+// and the latency of a parameter change held as a slider's drag, timed as bench/latency.js times it, the reference
+// and the bars waiting for the release.
 import { mkdtempSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -65,6 +66,44 @@ describe('the material lab renders OpenPBR Surface', () => {
     const names = await lab(() => [...document.querySelectorAll('.lil-name')].map((n) => n.textContent));
     for (const key of Object.keys(OPENPBR_DEFAULTS)) expect(names).toContain(key);
     for (const layer of ['Base', 'Specular', 'Coat', 'Fuzz']) expect(names).toContain(`${layer} layer on`);
+  });
+
+  it('choosing OpenPBR opens its base folder, or the one last worked in, its controls in view', async () => {
+    /** The OpenPBR folders' titles that are open, and whether `key`'s control is laid out (a closed one is not). */
+    const folders = (key) =>
+      lab((k) => {
+        const titled = [...document.querySelectorAll('.widget-material-lab .lil-gui')].filter((f) =>
+          f.querySelector(':scope > .lil-title')?.textContent.startsWith('OpenPBR'),
+        );
+        const open = titled.filter((f) => !f.classList.contains('lil-closed'));
+        const name = [...document.querySelectorAll('.lil-name')].find((n) => n.textContent === k);
+        const shown = name.closest('.lil-controller').getBoundingClientRect().height > 0;
+        return { open: open.map((f) => f.querySelector(':scope > .lil-title').textContent), shown };
+      }, key);
+    const choose = async (brdfSource) => {
+      await lab((b) => globalThis.__shadingLab.widgets.lab.update({ brdfSource: b }), brdfSource);
+      await untilIdle(page);
+    };
+    expect(await folders('base_color')).toEqual({ open: [], shown: false }); // the lab opens with them closed
+    await choose('openpbr');
+    await expect
+      .poll(() => folders('base_color'), { timeout: 30_000 })
+      .toEqual({ open: ['OpenPBR base'], shown: true });
+    // the user closes the base, opens the coat and works in it; back to the model, the coat closed again
+    const title = (group) =>
+      page.evaluateHandle((g) => [...document.querySelectorAll('.lil-title')].find((t) => t.textContent === g), group);
+    await (await title('OpenPBR base')).click();
+    await (await title('OpenPBR coat')).click();
+    await expect.poll(() => folders('coat_ior')).toEqual({ open: ['OpenPBR coat'], shown: true });
+    await page.evaluate(() => {
+      const name = [...document.querySelectorAll('.lil-name')].find((n) => n.textContent === 'coat_ior');
+      name.closest('.lil-controller').querySelector('input').focus();
+    });
+    await choose('model');
+    await (await title('OpenPBR coat')).click();
+    await expect.poll(() => folders('coat_ior')).toEqual({ open: [], shown: false });
+    await choose('openpbr');
+    await expect.poll(() => folders('coat_ior'), { timeout: 30_000 }).toEqual({ open: ['OpenPBR coat'], shown: true });
   });
 
   it('coat and fuzz off: an OpenPBR metal renders as the talk’s model (Schlick, GGX, correlated Smith)', async () => {
@@ -198,7 +237,7 @@ describe('MaterialX files through the lab’s buttons', () => {
 });
 
 describe('latency', () => {
-  it('a parameter change reaches its frame, timed as bench/latency.js times it (the figure printed)', async () => {
+  it('a change held reaches its frame, the reference waiting for the release (bench/latency.js timing)', async () => {
     await page.click('.openpbr-preset-carPaint');
     await showImages();
     // does a change go through the render loop? (bench/latency.js asks the same before it times a widget)
@@ -212,7 +251,18 @@ describe('latency', () => {
       page.$eval('.widget-material-lab', (w, t) => w.dispatchEvent(new PointerEvent(t, { bubbles: true })), type);
     await pointer('pointerdown'); // held, as on a slider's drag (bench/latency.js)
     for (const v of values) ms.push(await page.evaluate(timeChange, 'lab', 'specular_roughness', v, viaLoop));
+    // held: the reference (the whole stack, a batch of samples of every light per pixel) and the bars wait, and the
+    // captions say so; released, the reference starts over for the last value and the bars show it
+    const stats = () => lab(() => globalThis.__shadingLab.widgets.lab.getStats());
+    const captions = () => lab(() => document.querySelector('.widget-material-lab .lab-captions').textContent);
+    expect((await stats()).waiting).toBe(true);
+    expect(await captions()).toContain('the one before the drag');
+    expect(await lab(() => globalThis.__shadingLab.widgets.lab.openpbr.ready)).toBe(false);
     await pointer('pointerup');
+    await expect.poll(async () => (await stats()).waiting, { timeout: 60_000 }).toBe(false);
+    expect(await captions()).toMatch(/Reference: Monte Carlo, \d+ of \d+ samples/);
+    await barsReady();
+    expect((await material()).specular_roughness).toBe(values.at(-1));
     const sorted = ms.filter((x) => x !== null).sort((a, b) => a - b);
     const median = sorted[Math.floor(sorted.length / 2)];
     const load = (await import('node:os')).loadavg()[0].toFixed(1);

@@ -44,9 +44,10 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
     return captions(st, lights, stats);
   };
   const ownBrdf = createCustomBrdf({ view: () => view, getState: () => shell.state, update: (p) => update(p) });
-  const openpbr = createOpenPbrPanel({ getState: () => shell.state, update: (p) => update(p), notices: shell.notices });
+  // a gesture held on the widget: OpenPBR's reference (lab-frame.js) and bars wait for its end
+  const openpbr = createOpenPbrPanel({ shell, update: (p) => update(p), onRelease: () => view.invalidate() });
   const sources = { state: () => shell.state, measured: () => measured.current, custom: ownBrdf.program };
-  const lab = createLabFrame({ ...sources, openpbr: openpbr.material, file: () => file, show });
+  const lab = createLabFrame({ ...sources, openpbr: openpbr.material, file: () => file, held: openpbr.held, show });
   const onReset = () => {
     lab.reset();
     measured.reupload();

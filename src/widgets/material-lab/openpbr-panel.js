@@ -4,12 +4,13 @@
 // white furnace (each layer's directional albedo, and what the stack with every colour white loses). The bars are
 // computed a moment after the material stops changing, off the frame a slider's drag waits for.
 import { readMtlx, writeMtlx, mtlxName } from '../../lab/mtlx/mtlx.js';
-import { savedOpenPbr, openPbrOfState, stateOfOpenPbr } from '../../lab/openpbr-lab.js';
+import { OPENPBR_LAYERS, savedOpenPbr, openPbrOfState, stateOfOpenPbr } from '../../lab/openpbr-lab.js';
 import { OPENPBR_PRESETS } from '../../lab/openpbr-presets.js';
 import { PARTS, openPbrFurnace, openPbrLightBreakdown, whiteStack } from '../../lab/openpbr-breakdown.js';
 import { lightDirFromAngles } from '../../math/angles.js';
 import { download } from '../../core/framework/download.js';
 import { createSettledTask } from '../../core/framework/render-loop.js';
+import { watchHeldInput } from '../../core/framework/held-input.js';
 
 const PART_WORDS = {
   diffuse: 'base diffuse',
@@ -51,10 +52,6 @@ function barOf(title, parts, unit) {
   return el('figure', { className: 'openpbr-figure' }, el('figcaption', {}, title), bar, legend);
 }
 
-/**
- * `getState()` the lab's state, `update(patch)` sets it, `notices` the shell's. Returns { element, material(state),
- * refresh(state), load(name, text), save(), dispose }: material(state) is the OpenPBR material to render.
- */
 /** The panel's elements; `onPreset(preset)`, `onFile(name, text or null)` and `onSave()` answer its buttons. */
 function panelElements({ onPreset, onFile, onSave }) {
   const message = el('p', { className: 'openpbr-message' });
@@ -103,7 +100,84 @@ const OFF_TEXT =
 const LOAD_TEXT = 'Load a MaterialX .mtlx file…';
 const MAX_READ_BYTES = 4 * 2 ** 20; // not read at all beyond this; readMtlx's own cap is far below it
 
-export function createOpenPbrPanel({ getState, update, notices }) {
+/**
+ * The OpenPBR folders of the controls (`controls`, the lil-gui panel's container) stay as the user left them; when
+ * OpenPBR is chosen with every one closed (they start closed, types.js), open() opens the one the user last worked
+ * in, else the base, so that its controls are in view.
+ */
+function createFolderOpener(controls) {
+  const GROUPS = Object.values(OPENPBR_LAYERS).map((l) => l.group);
+  const titleOf = (folder) => folder.querySelector(':scope > .lil-title')?.textContent;
+  const folders = () => [...controls.querySelectorAll('.lil-gui')].filter((f) => GROUPS.includes(titleOf(f)));
+  let last = OPENPBR_LAYERS.base.group;
+  const used = (e) => {
+    const folder = e.target instanceof Element ? e.target.closest('.lil-gui') : null;
+    if (folder && GROUPS.includes(titleOf(folder))) last = titleOf(folder);
+  };
+  controls.addEventListener('pointerdown', used);
+  controls.addEventListener('focusin', used);
+  return {
+    open() {
+      const all = folders();
+      if (all.some((f) => !f.classList.contains('lil-closed'))) return; // one is open: the user's choice stands
+      all
+        .find((f) => titleOf(f) === last)
+        ?.querySelector(':scope > .lil-title')
+        ?.click();
+    },
+    dispose() {
+      controls.removeEventListener('pointerdown', used);
+      controls.removeEventListener('focusin', used);
+    },
+  };
+}
+
+/**
+ * The bars of the material asked for last, drawn a moment after the asks pause and no gesture is held (`held()`):
+ * ask(material, light), off() (OpenPBR not chosen), ready (the bars of the last ask are drawn), dispose().
+ */
+function createLaterBars(bars, held) {
+  let next = null; // the bars asked for, { key, material, light }
+  let pending = null; // the key of the bars scheduled
+  let drawn = ''; // the key of the bars drawn
+  const task = createSettledTask(() => {
+    pending = null;
+    drawn = next.key;
+    bars.replaceChildren(...barsOf(next.material, next.light));
+  });
+  return {
+    ask(material, light) {
+      const key = JSON.stringify([material, light]);
+      next = { key, material, light };
+      if (key === drawn || held()) {
+        // drawn already; or a drag's material, drawn at its end (the panel asks again then)
+        task.cancel();
+        pending = null;
+      } else if (key !== pending) {
+        pending = key;
+        task.schedule();
+      }
+    },
+    off() {
+      task.cancel();
+      if (drawn !== 'off') bars.replaceChildren(el('p', {}, OFF_TEXT));
+      [drawn, next, pending] = ['off', null, null];
+    },
+    get ready() {
+      return next !== null && drawn === next.key;
+    },
+    dispose: () => task.cancel(),
+  };
+}
+
+/**
+ * `shell` the lab's widget shell (its state, notices, controls), `update(patch)` sets the state, `onRelease()` runs
+ * when a gesture held on the widget ends. Returns { element, material(state), refresh(state), load(name, text),
+ * held(), api(), dispose }: material(state) is the OpenPBR material to render.
+ */
+export function createOpenPbrPanel({ shell, update, onRelease }) {
+  const { notices, controls, root } = shell;
+  const getState = () => shell.state;
   let [exact, name] = [{}, 'lab_material']; // the loaded file's colours, exact (openpbr-lab.js), and its name
   const { element, message, bars } = panelElements({
     onPreset: (preset) => use(preset.material, mtlxName(preset.label.toLowerCase()), preset.label),
@@ -152,27 +226,20 @@ export function createOpenPbrPanel({ getState, update, notices }) {
     return text;
   }
 
-  let next = null; // the bars of the state's material, { key, material, light }, drawn once the changes pause
-  const barsLater = createSettledTask(() => {
-    drawn = next.key;
-    bars.replaceChildren(...barsOf(next.material, next.light));
+  const input = watchHeldInput(root, () => {
+    onRelease();
+    refresh(getState());
   });
-  let drawn = ''; // the key of the bars drawn
-  /** Draws the bars of `state`'s material again, a moment after it stops changing. */
+  const later = createLaterBars(bars, () => input.held);
+  let chosen = false; // whether OpenPBR was the BRDF at the last refresh
+  const folders = createFolderOpener(controls);
+  /** Draws the bars of `state`'s material again, a moment after it stops changing (and no gesture is held). */
   function refresh(state) {
-    if (state.brdfSource !== 'openpbr') {
-      barsLater.cancel();
-      if (drawn !== 'off') bars.replaceChildren(el('p', {}, OFF_TEXT));
-      drawn = 'off';
-      next = null;
-      return;
-    }
-    const material = openPbrOfState(state, exact);
+    if (state.brdfSource === 'openpbr' && !chosen) folders.open(); // just chosen: its controls in view
+    chosen = state.brdfSource === 'openpbr';
+    if (!chosen) return later.off();
     const light = state.punctual ? [lightDirFromAngles(state.lightTheta, state.lightPhi), state.cLight] : null;
-    const key = JSON.stringify([material, light]);
-    if (key === next?.key) return;
-    next = { key, material, light };
-    barsLater.schedule();
+    later.ask(openPbrOfState(state, exact), light);
   }
 
   return {
@@ -184,12 +251,16 @@ export function createOpenPbrPanel({ getState, update, notices }) {
     api: () => ({
       material: () => openPbrOfState(getState(), exact),
       get ready() {
-        return next !== null && drawn === next.key;
+        return later.ready;
       },
       load,
       save,
     }),
-    dispose: () => barsLater.cancel(),
+    /** Whether a gesture is held on the widget (OpenPBR's reference waits for its end: lab-frame.js). */
+    held: () => input.held,
+    dispose() {
+      [later, folders, input].forEach((x) => x.dispose());
+    },
   };
 }
 

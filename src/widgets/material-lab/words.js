@@ -69,8 +69,10 @@ export function methodText(st, lights) {
 /** The captions over the three images. */
 export const captions = (st, lights, stats) => [
   { image: 'approx', caption: `Approximation: ${methodText(st, lights)}` },
-  { image: 'reference', caption: `Reference: Monte Carlo, ${stats.samples} of ${stats.target} samples / pixel` },
-  { image: 'error', caption: `Error |approx − reference|, 0 to ${st.errorScale}` },
+  stats.waiting
+    ? { image: 'reference', caption: 'Reference: the one before the drag, started again once you let go' }
+    : { image: 'reference', caption: `Reference: Monte Carlo, ${stats.samples} of ${stats.target} samples / pixel` },
+  { image: 'error', caption: `Error |approx − reference|, 0 to ${st.errorScale}${stats.waiting ? ' (stale)' : ''}` },
 ];
 
 /** The readout under the images: the approximation's GPU time and its error (stats), or why there is none. */
@@ -78,7 +80,11 @@ export function readoutHtml(st, stats, lights, resolution) {
   if (!Object.values(lights).some(Boolean)) {
     return '<p class="lab-empty">Every light is off: switch one on in the controls.</p>';
   }
-  const converging = stats.samples < stats.target ? ' — reference still converging' : '';
+  const converging = stats.waiting
+    ? ' — against the reference before the drag (it waits until you let go)'
+    : stats.samples < stats.target
+      ? ' — reference still converging'
+      : '';
   const time = `${fmt(stats.ms, 3)} ms for ${resolution}² pixels`;
   const error = `${fmt(stats.rms)} (radiance), ${fmt(stats.relative * 100, 3)} % of the reference’s RMS${converging}`;
   return `<table class="data-table compact"><tbody>

@@ -69,17 +69,34 @@ function materialOf(xs) {
 const MU = [-0.5, 0, 1e-7, 1e-4, 0.01, 0.1, 0.3, 0.5, 0.7071, 0.9, 0.999, 1, 1 + 1e-6];
 const ROUGH = [-0.5, 0, 1e-4, 0.01, 0.1, 0.3, 0.5, 0.9, 1, 1.5];
 
+/** openPbrBRDF's row; with `defines` (OPENPBR_NO_*: the bench's stacks, bench/openpbr-family.js), the weights those
+ * compile out set to 0 in JS. */
+const brdfRow = (name = 'openPbrBRDF', defines = {}, zeroed = []) => ({
+  name,
+  chunk: 'openpbr.glsl',
+  defines,
+  glsl: `openPbrBRDF(vec3(a.x, a.y, a.z), vec3(a.w, b.x, b.y), ${materialGlsl()})`,
+  outputs: 3,
+  js: (...xs) =>
+    openPbrBRDF(xs.slice(0, 3), xs.slice(3, 6), {
+      ...materialOf(xs.slice(6)),
+      ...Object.fromEntries(zeroed.map((k) => [k, 0])),
+    }),
+  range: [0, Infinity],
+  tables: TABLES,
+  args: cartesian(LIGHTS, VIEWS, MATERIALS).map(([l, v, m]) => [...l, ...v, ...flat(m)]),
+});
+const [SPECULAR, COAT, FUZZ] = ['OPENPBR_NO_SPECULAR', 'OPENPBR_NO_COAT', 'OPENPBR_NO_FUZZ'];
+
 export const OPENPBR_PARITY_CASES = [
-  {
-    name: 'openPbrBRDF',
-    chunk: 'openpbr.glsl',
-    glsl: `openPbrBRDF(vec3(a.x, a.y, a.z), vec3(a.w, b.x, b.y), ${materialGlsl()})`,
-    outputs: 3,
-    js: (...xs) => openPbrBRDF(xs.slice(0, 3), xs.slice(3, 6), materialOf(xs.slice(6))),
-    range: [0, Infinity],
-    tables: TABLES,
-    args: cartesian(LIGHTS, VIEWS, MATERIALS).map(([l, v, m]) => [...l, ...v, ...flat(m)]),
-  },
+  brdfRow(),
+  brdfRow('openPbrBRDF (fuzz compiled out)', { [FUZZ]: 1 }, ['fuzz_weight']),
+  brdfRow('openPbrBRDF (coat and fuzz compiled out)', { [COAT]: 1, [FUZZ]: 1 }, ['coat_weight', 'fuzz_weight']),
+  brdfRow('openPbrBRDF (specular, coat and fuzz compiled out)', { [SPECULAR]: 1, [COAT]: 1, [FUZZ]: 1 }, [
+    'specular_weight',
+    'coat_weight',
+    'fuzz_weight',
+  ]),
   {
     name: 'openPbrDielectricAlbedo',
     chunk: 'openpbr-albedo.glsl',
