@@ -39,6 +39,15 @@ export function lobeCos(frame, l, pair) {
   return (ndfGGXAniso(...h, ...pair) * visibilitySmithGGXCorrelatedAniso(...L, ...V, ...pair) * L[2]) / 4;
 }
 
+// texels on the sphere: centre, towards the pole, across it, and two near the rim
+export const TEXELS = [
+  [96, 96],
+  [96, 140],
+  [60, 110],
+  [130, 70],
+  [150, 100],
+];
+
 /** The truth at a texel, averaged over its 3 × 3 block as the tests' reads are. */
 export const blockMean = ([i, j], truthAt) => {
   let sum = 0;

@@ -1,6 +1,7 @@
 // The material lab's anisotropic lobe (issue 28), in Chromium, against float64 integrals computed here: GGX
 // stretched by (αx, αy) along a tangent field written out again in lab-aniso-truth.js (circles around a pole:
-// b = axis × n, t = b × n, turned by the rotation), with the height-correlated anisotropic Smith V and F = 1, the specular layer alone.
+// b = axis × n, t = b × n, turned by the rotation), with the height-correlated anisotropic Smith V and F = 1, the
+// specular layer alone.
 // - the punctual light: the approximation (exact for it) against π f c_light (n·l) at sphere points;
 // - the sphere light: the converged Monte Carlo reference against ∫ over the light's cone of f (n·l) L dω;
 // - the white furnace: the reference against the directional albedo ∫ f (n·l) dω over the hemisphere.
@@ -9,7 +10,18 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { launchBrowser, open, widget } from './helpers.js';
 import { anisotropicAlphas } from '../../src/math/anisotropic.js';
-import { DEG, RES, blockMean, cross, frameAround, lobeCos, normalAt, spherical, unit } from './lab-aniso-truth.js';
+import {
+  DEG,
+  RES,
+  TEXELS,
+  blockMean,
+  cross,
+  frameAround,
+  lobeCos,
+  normalAt,
+  spherical,
+  unit,
+} from './lab-aniso-truth.js';
 
 const ALPHA = 0.25;
 const A = 0.8; // the anisotropy, Burley's mapping
@@ -81,14 +93,6 @@ async function lab(query) {
   return { page, read };
 }
 
-// texels on the sphere: centre, towards the pole, across it, and two near the rim
-const TEXELS = [
-  [96, 96],
-  [96, 140],
-  [60, 110],
-  [130, 70],
-  [150, 100],
-];
 const CONVERGE_MS = 300_000;
 
 describe('material lab: anisotropic GGX along a tangent field, against float64 integrals', () => {

@@ -7,7 +7,7 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { launchBrowser, open, typeCode, untilIdle, widget } from './helpers.js';
 import { anisotropicAlphas } from '../../src/math/anisotropic.js';
-import { RES, blockMean, frameAround, lobeCos, normalAt, spherical } from './lab-aniso-truth.js';
+import { RES, TEXELS, blockMean, frameAround, lobeCos, normalAt, spherical } from './lab-aniso-truth.js';
 
 const ALPHA = 0.25;
 const A = 0.8;
@@ -19,14 +19,6 @@ const QUERY =
   `&tangentField=around&tangentTheta=${POLE.theta}&tangentPhi=${POLE.phi}&tangentRotation=${ROTATION}` +
   `&ambient=0&env=0&area=0&punctual=1&lightTheta=${LIGHT.theta}&lightPhi=${LIGHT.phi}&cLight=1&refSamples=128` +
   '&anisoD=custom&anisoV=custom';
-// texels on the sphere: centre, towards the pole, across it, near the rim
-const TEXELS = [
-  [96, 96],
-  [96, 140],
-  [60, 110],
-  [130, 70],
-  [150, 100],
-];
 const PAIR = anisotropicAlphas(ALPHA, A, 'burley2012');
 const frameAt = frameAround(POLE, ROTATION);
 const L = spherical(LIGHT.theta, LIGHT.phi);

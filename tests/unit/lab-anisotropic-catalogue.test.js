@@ -13,6 +13,7 @@ import { labScene } from '../../src/lab/lab-scene.js';
 import { approximationNotes } from '../../src/lab/lab-approximations.js';
 import { schema } from '../../src/widgets/material-lab/schema.js';
 import { lightsOf } from '../../src/widgets/material-lab/model.js';
+import { FORMULA } from '../../src/widgets/material-lab/words.js';
 import { anisotropyOf as lobeAnisotropyOf } from '../../src/widgets/brdf-lobe/model.js';
 import { anisotropicLobe } from '../../src/widgets/ndf-explorer/model.js';
 import { ndfGGXAniso } from '../../src/math/anisotropic.js';
@@ -54,6 +55,10 @@ describe('the stretched lobe’s terms, from the catalogue', () => {
   });
 
   it('says the user’s D is sampled by GGX’s visible normals, and names its functions', () => {
+    const formula = FORMULA(stateWith({ anisoD: 'custom', anisoV: 'custom' }));
+    expect(formula).toContain('\\sym{anisoD}{D_{\\text{yours}}}');
+    expect(formula).toContain('\\sym{anisoV}{V_{\\text{yours}}}');
+    expect(FORMULA(stateWith({}))).toContain('\\sym{D}{D_{\\text{GGX}}}');
     const notes = approximationNotes(sceneOf({ anisoD: 'custom', anisoV: 'custom' })).join(' ');
     expect(notes).toMatch(/D your customDAniso at the pair, V your customVAniso\./);
     expect(notes).toMatch(/visible normals of GGX, anisotropic at the same pair .* divided by its density/);

@@ -4,13 +4,13 @@
 // draws with: the code that last ran (the runner vets it: static checks, a compile, the user's click for code from
 // a link), compiled once more in the lab's own two programs, where a name of the user's may clash with one of the
 // lab's; the last code that compiled there keeps drawing, and the panel says why the new code does not.
-import { createCustomArea } from '../../core/ui/custom-area.js';
 import { createCompileGuard } from '../../core/custom/compile-guard.js';
 import { SLOTS } from '../../core/custom/slots.js';
 import { customTermsFragment } from '../../lab/custom-programs.js';
 import { sceneDefines } from '../../lab/lab-defines.js';
 import { anisotropyOf, ownSlots } from '../../lab/lab-anisotropy.js';
 import { sceneOf } from './model.js';
+import { createLabArea } from './custom-brdf.js';
 
 const AREA_SLOTS = {
   DAniso: { codeKey: 'codeDAniso', title: 'Your anisotropic D, stretched on the lab’s sphere' },
@@ -29,18 +29,8 @@ function chosen(state) {
 }
 
 /** `io`: { view: () => the lab's view (lab-view.js), getState, update }; `element` holds the panels. */
-export function createCustomAnisoTerms({ view, getState, update }) {
-  const element = document.createElement('div');
-  const getRenderer = () => view().viewport?.renderer;
-  const area = createCustomArea(element, {
-    getRenderer,
-    getState,
-    update,
-    redraw: () => view().invalidate(),
-    slots: AREA_SLOTS,
-    chosen,
-    planOf: (slot) => VET[slot],
-  });
+export function createCustomAnisoTerms(io) {
+  const { element, area, getRenderer } = createLabArea(io, { slots: AREA_SLOTS, chosen, planOf: (slot) => VET[slot] });
   const guards = { DAniso: createCompileGuard(getRenderer, { offscreen: true }) };
   guards.VAniso = createCompileGuard(getRenderer, { offscreen: true });
 
