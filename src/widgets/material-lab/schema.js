@@ -90,7 +90,7 @@ export const schema = {
     step: 0.01,
     default: 0,
     label: 'Anisotropy a',
-    hint: 'Stretches the GGX lobe along the tangent t; 0 is the isotropic lobe.',
+    hint: 'Stretches the specular lobe (GGX or Beckmann, or your own D) along the tangent t; 0 is the isotropic lobe.',
   },
   anisotropyModel: {
     group: 'Anisotropy',
