@@ -30,21 +30,19 @@ function* scenes() {
       for (const area of ['representative', 'centre']) {
         const methods = { env, area, samples: 4 };
         for (const t of termSets) yield { terms: t, lights: lightsOf(on), methods };
-        // the anisotropic lobe (lab-anisotropy.js) of each D with each visibility term, in both tangent fields, and
-        // with the user's D and V
-        for (const mode of ['around', 'along'])
-          for (const D of Object.keys(LAB_TERMS.ndf))
-            for (const V of Object.keys(LAB_TERMS.visibility)) {
-              const t = { ...termSets[0], D, V };
-              yield { terms: t, lights: lightsOf(on), methods, anisotropy: anisotropic({ ...t, tangentField: mode }) };
-            }
-        for (const own of [{ anisoD: 'custom' }, { anisoV: 'custom' }, { anisoD: 'custom', anisoV: 'custom' }])
-          yield {
-            terms: termSets[0],
-            lights: lightsOf(on),
-            methods,
-            anisotropy: anisotropic({ ...termSets[0], ...own }),
-          };
+        // the anisotropic lobe (lab-anisotropy.js) of each D with each visibility term, with the user's D and V, and
+        // along an axis (the tangent field is a switch of its own)
+        const stretched = [
+          ...Object.keys(LAB_TERMS.ndf).flatMap((D) => Object.keys(LAB_TERMS.visibility).map((V) => ({ D, V }))),
+          { anisoD: 'custom' },
+          { anisoV: 'custom' },
+          { anisoD: 'custom', anisoV: 'custom' },
+          { tangentField: 'along' },
+        ];
+        for (const choice of stretched) {
+          const t = { ...termSets[0], ...choice };
+          yield { terms: t, lights: lightsOf(on), methods, anisotropy: anisotropic(t) };
+        }
         yield { terms: termSets[0], lights: lightsOf(on), methods, measured: 'a MERL table' };
       }
     }
