@@ -28,8 +28,8 @@ export const TANGENT_FIELDS = {
 
 /** Where the stretched D and V come from: the chosen term's form in the catalogue, or the user's GLSL. */
 export const ANISOTROPIC_TERMS = {
-  D: { chosen: 'D above, stretched (the catalogue’s form)', custom: 'Your GLSL: customDAniso(h, α pair)' },
-  V: { chosen: 'V above, stretched where it has a form', custom: 'Your GLSL: customVAniso(l, v, α pair)' },
+  D: { chosen: 'The D above, stretched', custom: 'Yours: customDAniso' },
+  V: { chosen: 'The V above, stretched', custom: 'Yours: customVAniso' },
 };
 
 /** The anisotropic lobe whose visible normals the reference and importance sampling draw, for every D. */
