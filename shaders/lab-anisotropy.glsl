@@ -1,13 +1,20 @@
-// The material lab's specular lobe in its frame. With ANISOTROPIC (src/lab/lab-anisotropy.js decides it): GGX
-// stretched by the pair uAlphaPair = (αx, αy) along the tangent field's t and b (lab-tangent.glsl), the
-// height-correlated Smith V in its anisotropic form when that V is chosen (any other V keeps its isotropic form at
-// α), and with BENT_REFLECTION the reflected direction the approximations read the light in bent as Filament's
+// The material lab's specular lobe in its frame. With ANISOTROPIC (src/lab/lab-anisotropy.js decides it): the D
+// ANISOTROPIC_D, the call of the chosen D's anisotropic form in the catalogue (or of the user's customDAniso, its
+// chunk included under CUSTOM_DANISO) over the microfacet input at the pair uAlphaPair = (αx, αy) along the tangent
+// field's t and b (lab-tangent.glsl), the V ANISOTROPIC_V likewise when the chosen V has such a form (or is the
+// user's, CUSTOM_VANISO; any other V keeps its isotropic form at α), and with BENT_REFLECTION the reflected direction the approximations read the light in bent as Filament's
 // and three.js's IBL bend it (else the mirror direction, to compare). Without ANISOTROPIC every function here is
 // the isotropic lab's own (microfacetBRDF at α, the frame around n, the mirror direction). TANGENT_FIELD alone
 // (OpenPBR Surface, a whole BRDF with its own anisotropy) takes only the tangent field's frame.
 #ifdef ANISOTROPIC
 #include "anisotropic.glsl"
 #include "lab-tangent.glsl"
+#ifdef CUSTOM_DANISO
+#include "custom-DAniso.glsl"
+#endif
+#ifdef CUSTOM_VANISO
+#include "custom-VAniso.glsl"
+#endif
 #elif defined(TANGENT_FIELD)
 #include "lab-tangent.glsl"
 #else
@@ -33,13 +40,13 @@ vec3 lobeBRDF(vec3 l, vec3 v, vec3 f0) {
   vec3 hs = l + v;
   float hl = length(hs);
   if (!(l.z > 0.0 && v.z > 0.0) || hl < 1e-6) return vec3(0.0);
-  vec3 h = hs / hl;
-#ifdef VIS_SMITH_GGX_CORRELATED
-  float vis = visibilitySmithGGXCorrelatedAniso(l, v, alphaPair());
+  MicrofacetInput m = microfacetInput(l, v, hs / hl, alphaPair());
+#ifdef ANISOTROPIC_V
+  float vis = ANISOTROPIC_V;
 #else
-  float vis = visibilityTerm(microfacetInput(l, v, h, vec2(uAlpha)));
+  float vis = visibilityTerm(microfacetInput(l, v, m.h, vec2(uAlpha)));
 #endif
-  return fresnelTerm(f0, dot(l, h)) * (ndfGGXAniso(h, alphaPair()) * vis / 4.0);
+  return fresnelTerm(f0, m.lh) * (ANISOTROPIC_D * vis / 4.0);
 }
 #else
 #ifndef MEASURED

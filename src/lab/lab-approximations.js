@@ -3,8 +3,8 @@
 // no form for a term, what stands in for it. The sentences the lab shows under its images come from here, so
 // the error image is read as the method's error and not as a difference between two models.
 import { SIGMA_MODELLED_DEG, sigmaExtrapolated, sigmaText } from '../core/ui/sigma-range.js';
-import { CATALOGUE, termEntry, termOptions } from '../math/catalogue/index.js';
-import { ANISOTROPIC_V, ANISOTROPY_MODELS, stretchesLobe } from './lab-anisotropy.js';
+import { CATALOGUE, CUSTOM_KEY, termEntry, termLabel, termOptions } from '../math/catalogue/index.js';
+import { ANISOTROPY_MODELS, SAMPLED_LOBE, stretchesLobe } from './lab-anisotropy.js';
 
 /**
  * The keys of a family's terms that the catalogue says have the capability (src/math/catalogue/types.js), in
@@ -205,25 +205,44 @@ const readAlong = (a) =>
       'which moves the highlight but cannot stretch it'
     : 'the mirror direction, as if the lobe were isotropic (the bent reflection vector is off)';
 
+/** The isotropic terms of a family that the catalogue has an anisotropic form of, in words ('GGX and Beckmann'). */
+const stretchable = (family) =>
+  Object.values(CATALOGUE[family].terms)
+    .filter((term) => term.isotropic)
+    .map((term) => termEntry(family, term.isotropic).short)
+    .join(' and ');
+
+/** A stretched term in words: the catalogue's label, or the user's function. */
+const stretchedWords = (family, key) =>
+  key === CUSTOM_KEY ? `your ${family === 'ndf' ? 'customDAniso' : 'customVAniso'}` : termLabel(family, key);
+
+/** How the reference and importance sampling draw the stretched lobe of D `key`. */
+const samplingWords = (key) =>
+  'The reference and importance sampling draw the visible normals of ' +
+  (key === SAMPLED_LOBE
+    ? 'the stretched lobe (Dupuy & Benyoub 2023).'
+    : `${termLabel('ndf', SAMPLED_LOBE)} at the same pair (Dupuy & Benyoub 2023), the one anisotropic sampler ` +
+      'the lab has; each sample is divided by its density, so the estimate converges to this D’s lobe too.');
+
 /** What each method does with an anisotropic lobe (lab-anisotropy.js): the forms that have none, and what stands in. */
 export function anisotropyNotes(scene) {
   const { anisotropy: a, terms, lights, methods } = scene;
   if (!a || terms.layers === 'diffuse') return [];
   if (!stretchesLobe(scene)) {
     return [
-      `Anisotropy: the lab stretches GGX only (its visible-normal sampler, Dupuy & Benyoub 2023, is GGX’s); ` +
+      `Anisotropy: the catalogue has an anisotropic form of ${stretchable('ndf')} only; ` +
         `${LAB_TERMS.ndf[terms.D]} stays isotropic at α.`,
     ];
   }
   const [ax, ay] = a.alpha.map((x) => x.toFixed(3));
-  const v =
-    terms.V === ANISOTROPIC_V
-      ? 'height-correlated Smith with the roughness projected on each direction’s azimuth (Heitz 2014)'
-      : `${LAB_TERMS.visibility[terms.V]}, which has no anisotropic form here, at α`;
+  const projected = ', each direction’s roughness projected on its azimuth (Heitz 2014)';
+  const v = a.V
+    ? `${stretchedWords('visibility', a.V)}${a.V === CUSTOM_KEY ? '' : projected}`
+    : `${LAB_TERMS.visibility[terms.V]}, which has no anisotropic form here, at α`;
   const notes = [
     `Anisotropy a = ${a.strength} by ${ANISOTROPY_MODELS[a.model].split(':')[0]}: αx = ${ax} across the brushing ` +
-      `(along t), αy = ${ay} along it (b); GGX stretched by the pair, V ${v}. The reference and importance ` +
-      'sampling draw the visible normals of the stretched lobe (Dupuy & Benyoub 2023).',
+      `(along t), αy = ${ay} along it (b); D ${stretchedWords('ndf', a.D)} at the pair, V ${v}. ` +
+      samplingWords(a.D),
   ];
   const env = lights.env ? methods.env : null;
   if (env === 'split-sum') {

@@ -1,7 +1,7 @@
 // The #defines of one material-lab program (lab-shade.frag.glsl): only the terms, lights and methods in use are
 // compiled. Pure: loads in Node, so the uniform and variant tests can list every program the lab makes.
 import { termDefines } from '../math/catalogue/index.js';
-import { stretchesLobe } from './lab-anisotropy.js';
+import { anisotropicDefines, stretchesLobe } from './lab-anisotropy.js';
 
 const ENV_DEFINES = { mirror: 'ENV_MIRROR', importance: 'ENV_IMPORTANCE', 'split-sum': 'ENV_SPLIT_SUM' };
 
@@ -47,11 +47,7 @@ function modelDefines(scene, reference) {
   Object.keys(termDefines({ F, D, V, diffuse, compensation })).forEach(flag);
   if (compensation !== 'none') flag('ALBEDO_TABLE_GGX'); // the compensations' tables
   if (scene.terms.layers === 'diffuse') flag('SPECULAR_OFF');
-  if (stretchesLobe(scene)) {
-    flag('ANISOTROPIC'); // lab-anisotropy.glsl: GGX stretched along the tangent field
-    if (scene.anisotropy.field.mode === 'along') flag('TANGENT_ALONG');
-    if (scene.anisotropy.bent && !reference) flag('BENT_REFLECTION');
-  }
+  if (stretchesLobe(scene)) Object.assign(d, anisotropicDefines(scene, reference)); // lab-anisotropy.glsl
   if (scene.terms.layers === 'specular') flag('DIFFUSE_OFF');
   const { punctual, sphere, env, ambient } = scene.lights;
   if (punctual) flag('LIGHT_PUNCTUAL');

@@ -1,7 +1,8 @@
 // Renders the material lab's sphere: once by the chosen approximations, once as a converging Monte Carlo
 // reference (batches averaged in a float target), and their difference, summed on the GPU to an RMS error.
 // A scene is { material, terms, lights, methods, maps } (see lab-defines.js; maps: its environment-maps.js maps;
-// custom: { code, params } when the BRDF is the user's whole BRDF, custom-programs.js);
+// custom: { code, params } when the BRDF is the user's whole BRDF, custom-programs.js; ownTerms: { code: { DAniso?,
+// VAniso? }, params } when its stretched lobe reads the user's anisotropic D or V);
 // `slots` approximations can be kept side by side. Images are res × res, linear radiance. The approximations read
 // the DFG table and the prefiltered map of the chosen terms (lab-approximations.js says which): `dfg(terms)` gives
 // the table's texture.
@@ -13,7 +14,7 @@ import { fullscreenMaterial } from './fullscreen-material.js';
 import { sceneDefines } from './lab-defines.js';
 import { createLabUniforms, setSceneUniforms } from './lab-uniforms.js';
 import { createPmremOverlay } from './pmrem-overlay.js';
-import { createCustomPrograms } from './custom-programs.js';
+import { createCustomPrograms, customTermChunks } from './custom-programs.js';
 
 export const REFERENCE_BATCH = 8; // samples per pixel and light in one reference batch
 
@@ -37,10 +38,17 @@ export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
     fullscreenMaterial('lab-shade.frag.glsl', { uniforms, defines }),
   );
   const customPrograms = createCustomPrograms(uniforms);
-  /** The program of `scene` for `defines`: the model's, or the one with the user's BRDF. */
+  const termPrograms = createCustomPrograms(uniforms, customTermChunks); // the user's anisotropic D and V
+  /** The program of `scene` for `defines`: the model's, the one with the user's BRDF or with the user's terms. */
   const programs = {
-    get: (scene, defines) => (scene.custom ? customPrograms.get(defines, scene.custom) : modelPrograms.get(defines)),
-    has: (scene, defines) => (scene.custom ? customPrograms.has(defines, scene.custom) : modelPrograms.has(defines)),
+    get: (scene, defines) => {
+      if (scene.custom) return customPrograms.get(defines, scene.custom);
+      return scene.ownTerms ? termPrograms.get(defines, scene.ownTerms) : modelPrograms.get(defines);
+    },
+    has: (scene, defines) => {
+      if (scene.custom) return customPrograms.has(defines, scene.custom);
+      return scene.ownTerms ? termPrograms.has(defines, scene.ownTerms) : modelPrograms.has(defines);
+    },
   };
   const pass = createFullscreenPass();
   const pmrem = createPmremOverlay();
@@ -93,11 +101,11 @@ export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
     /** Reads an image back (tests): 'approx' (of `slot`) or 'reference', RGBA float per pixel. */
     read: (which, slot = 0) => readImage(renderer, which === 'approx' ? approxTargets[slot] : reference.target),
     get variants() {
-      return modelPrograms.size + customPrograms.size;
+      return modelPrograms.size + customPrograms.size + termPrograms.size;
     },
     dispose() {
       approxTargets.forEach((t) => t.dispose());
-      [modelPrograms, customPrograms, pass, pmrem, reference, errors].forEach((x) => x.dispose());
+      [modelPrograms, customPrograms, termPrograms, pass, pmrem, reference, errors].forEach((x) => x.dispose());
       uniforms.uAlbedoTableGGX.value?.dispose();
       uniforms.uOpenPbrAlbedo.value?.dispose();
     },

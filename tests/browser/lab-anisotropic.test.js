@@ -1,6 +1,7 @@
 // The material lab's anisotropic lobe (issue 28), in Chromium, against float64 integrals computed here: GGX
-// stretched by (αx, αy) along a tangent field written out here again (circles around a pole: b = axis × n, t = b × n,
-// turned by the rotation), with the height-correlated anisotropic Smith V and F = 1, the specular layer alone.
+// stretched by (αx, αy) along a tangent field written out again in lab-aniso-truth.js (circles around a pole:
+// b = axis × n, t = b × n, turned by the rotation), with the height-correlated anisotropic Smith V and F = 1, the
+// specular layer alone.
 // - the punctual light: the approximation (exact for it) against π f c_light (n·l) at sphere points;
 // - the sphere light: the converged Monte Carlo reference against ∫ over the light's cone of f (n·l) L dω;
 // - the white furnace: the reference against the directional albedo ∫ f (n·l) dω over the hemisphere.
@@ -8,11 +9,20 @@
 // tolerance, so the test tells the stretched lobe from the isotropic one.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { launchBrowser, open, widget } from './helpers.js';
-import { anisotropicAlphas, ndfGGXAniso, visibilitySmithGGXCorrelatedAniso } from '../../src/math/anisotropic.js';
+import { anisotropicAlphas } from '../../src/math/anisotropic.js';
+import {
+  DEG,
+  RES,
+  TEXELS,
+  blockMean,
+  cross,
+  frameAround,
+  lobeCos,
+  normalAt,
+  spherical,
+  unit,
+} from './lab-aniso-truth.js';
 
-const EXTENT = 1.1; // the lab's view half width (src/lab/lab-uniforms.js)
-const RES = 192; // the lab's image size (src/widgets/material-lab/material-lab.js)
-const DEG = Math.PI / 180;
 const ALPHA = 0.25;
 const A = 0.8; // the anisotropy, Burley's mapping
 const POLE = { theta: 50, phi: 90 };
@@ -22,36 +32,8 @@ const BASE =
   `&lab.anisotropyModel=burley2012&lab.tangentField=around&lab.tangentTheta=${POLE.theta}` +
   `&lab.tangentPhi=${POLE.phi}&lab.tangentRotation=${ROTATION}&lab.ambient=0`;
 
-const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
-const unit = (a) => a.map((x) => x / Math.hypot(...a));
-const spherical = (theta, phi) => [
-  Math.sin(theta * DEG) * Math.cos(phi * DEG),
-  Math.sin(theta * DEG) * Math.sin(phi * DEG),
-  Math.cos(theta * DEG),
-];
-
-/** The sphere's normal at texel [i, j] (i right, j up from the bottom left; the lab shades its centre). */
-const normalAt = ([i, j]) => {
-  const [x, y] = [i, j].map((c) => ((2 * (c + 0.5)) / RES - 1) * EXTENT);
-  return [x, y, Math.sqrt(1 - x * x - y * y)];
-};
-
 /** The frame (t, b, n) of the brushing around the pole, turned by ROTATION about n. */
-function frameAt(n) {
-  const b0 = unit(cross(spherical(POLE.theta, POLE.phi), n));
-  const t0 = cross(b0, n);
-  const [c, s] = [Math.cos(ROTATION * DEG), Math.sin(ROTATION * DEG)];
-  return [t0.map((x, k) => c * x + s * b0[k]), b0.map((x, k) => c * x - s * t0[k]), n];
-}
-
-/** f (n·l) of the specular lobe (F = 1) for view-space l at normal n, v = z; `pair` the (αx, αy). */
-function lobeCos(frame, l, pair) {
-  const [L, V] = [l, [0, 0, 1]].map((d) => frame.map((axis) => dot(d, axis)));
-  if (!(L[2] > 0 && V[2] > 0)) return 0;
-  const h = unit(L.map((x, k) => x + V[k]));
-  return (ndfGGXAniso(...h, ...pair) * visibilitySmithGGXCorrelatedAniso(...L, ...V, ...pair) * L[2]) / 4;
-}
+const frameAt = frameAround(POLE, ROTATION);
 
 /** ∫ over the cone of half-angle asin(sin) about `dir` of g(l) dω, by the midpoint rule in (cos θ, φ). */
 function coneIntegral(dir, sin, g, [nc, np] = [160, 320]) {
@@ -111,21 +93,6 @@ async function lab(query) {
   return { page, read };
 }
 
-/** The truth at a texel, averaged over its 3 × 3 block as the read is. */
-const blockMean = ([i, j], truthAt) => {
-  let sum = 0;
-  for (let dj = -1; dj <= 1; dj++) for (let di = -1; di <= 1; di++) sum += truthAt([i + di, j + dj]);
-  return sum / 9;
-};
-
-// texels on the sphere: centre, towards the pole, across it, and two near the rim
-const TEXELS = [
-  [96, 96],
-  [96, 140],
-  [60, 110],
-  [130, 70],
-  [150, 100],
-];
 const CONVERGE_MS = 300_000;
 
 describe('material lab: anisotropic GGX along a tangent field, against float64 integrals', () => {

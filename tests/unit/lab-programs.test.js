@@ -7,6 +7,9 @@ import { sceneDefines } from '../../src/lab/lab-defines.js';
 import { createLabUniforms } from '../../src/lab/lab-uniforms.js';
 import { CATALOGUE } from '../../src/math/catalogue/index.js';
 import { LAB_TERMS } from '../../src/lab/lab-approximations.js';
+import { anisotropyOf, ownSlots } from '../../src/lab/lab-anisotropy.js';
+import { customTermChunks } from '../../src/lab/custom-programs.js';
+import { SLOTS } from '../../src/core/custom/slots.js';
 
 const LIGHTS = ['punctual', 'sphere', 'env', 'ambient'];
 const subsets = (keys) => Array.from({ length: 2 ** keys.length }, (_, m) => keys.filter((_, i) => m & (1 << i)));
@@ -27,17 +30,29 @@ function* scenes() {
       for (const area of ['representative', 'centre']) {
         const methods = { env, area, samples: 4 };
         for (const t of termSets) yield { terms: t, lights: lightsOf(on), methods };
-        // the anisotropic lobe (lab-anisotropy.js) with each visibility term, in both tangent fields
-        for (const mode of ['around', 'along'])
-          for (const V of Object.keys(LAB_TERMS.visibility))
-            yield { terms: { ...termSets[0], V }, lights: lightsOf(on), methods, anisotropy: anisotropic(mode) };
+        // the anisotropic lobe (lab-anisotropy.js) of each D with each visibility term, with the user's D and V, and
+        // along an axis (the tangent field is a switch of its own)
+        const stretched = [
+          ...Object.keys(LAB_TERMS.ndf).flatMap((D) => Object.keys(LAB_TERMS.visibility).map((V) => ({ D, V }))),
+          { anisoD: 'custom' },
+          { anisoV: 'custom' },
+          { anisoD: 'custom', anisoV: 'custom' },
+          { tangentField: 'along' },
+        ];
+        for (const choice of stretched) {
+          const t = { ...termSets[0], ...choice };
+          yield { terms: t, lights: lightsOf(on), methods, anisotropy: anisotropic(t) };
+        }
         yield { terms: termSets[0], lights: lightsOf(on), methods, measured: 'a MERL table' };
       }
     }
   }
 }
 
-const anisotropic = (mode) => ({ strength: 0.5, model: 'burley2012', alpha: [0.4, 0.1], field: { mode } });
+const anisotropic = (state) => anisotropyOf({ alpha: 0.25, anisotropy: 0.5, ...state });
+/** The chunks of a program: with the user's anisotropic D and V (their starters) where it reads them. */
+const chunksOf = (scene) =>
+  customTermChunks(Object.fromEntries(ownSlots(scene.anisotropy).map((slot) => [slot, SLOTS[slot].starter])));
 
 const UNIFORM = /^\s*uniform\s+(?:highp\s+|mediump\s+|lowp\s+)?\w+\s+(\w+)/gm;
 
@@ -53,11 +68,11 @@ describe('material lab programs', () => {
     for (const scene of scenes()) {
       for (const reference of [false, true]) {
         const defines = sceneDefines(scene, reference);
-        const key = JSON.stringify(Object.keys(defines).sort());
+        const key = JSON.stringify(Object.entries(defines).sort()); // a value too: the stretched D's call
         if (seen.has(key)) continue;
         let text;
         try {
-          text = assembleGlsl(SHADER_CHUNKS['lab-shade.frag.glsl'], { defines });
+          text = assembleGlsl(SHADER_CHUNKS['lab-shade.frag.glsl'], { defines, chunks: chunksOf(scene) });
         } catch (e) {
           throw new Error(`${key}: ${e.message}`, { cause: e });
         }
@@ -73,5 +88,6 @@ describe('material lab programs', () => {
     const stretched = [...seen.keys()].filter((key) => key.includes('"ANISOTROPIC"'));
     expect(stretched.some((key) => key.includes('TANGENT_ALONG'))).toBe(true);
     expect(stretched.some((key) => key.includes('REFERENCE'))).toBe(true);
+    expect(stretched.some((key) => key.includes('CUSTOM_DANISO') && key.includes('CUSTOM_VANISO'))).toBe(true);
   }, 60_000);
 });

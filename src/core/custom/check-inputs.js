@@ -79,17 +79,11 @@ const pairInput = (key, l, v, cdiff, alpha) => (key === 'diffuse' ? [cdiff, ...l
  */
 export function stressInputs(key) {
   if (key === 'D') return cartesian(GRIDS.cos, CHECK_ALPHAS);
+  const pairs = [...CHECK_ALPHAS.map((a) => [a, a]), [1e-4, 1], [1, 1e-4], [0.01, 0.5], [4, 0.1], ...ANISOTROPIC_PAIRS];
   if (key === 'DAniso') {
-    const pairs = [
-      ...CHECK_ALPHAS.map((a) => [a, a]),
-      [1e-4, 1],
-      [1, 1e-4],
-      [0.01, 0.5],
-      [4, 0.1],
-      ...ANISOTROPIC_PAIRS,
-    ];
     return cartesian(H_THETAS, H_PHIS).flatMap(([t, p]) => pairs.map((pair) => [...direction(t, p), ...pair]));
   }
+  if (key === 'VAniso') return pairs.flatMap((pair) => directionPairs().map(([l, v]) => [...l, ...v, ...pair]));
   if (key === 'V') return cartesian(GRIDS.cosCoarse, GRIDS.cosCoarse, CHECK_ALPHAS);
   if (key === 'F') return cartesian(GRIDS.f0, GRIDS.cos).map(([f0, lh]) => [f0, 0.5 * f0, 1 - f0, lh]);
   if (key === 'diffuse')
@@ -188,6 +182,15 @@ export function curveInputs(key) {
       x,
       xLabel: `θh (°) along t, (αx, αy) = (${ax}, ${ay})`,
       inputs: x.map((d) => [...direction(d * DEG, 0), ax, ay]),
+    };
+  }
+  if (key === 'VAniso') {
+    const x = Array.from({ length: 90 }, (_, i) => i);
+    const [ax, ay] = ANISOTROPIC_CURVE_PAIR;
+    return {
+      x,
+      xLabel: `θ (°), l = v along t, (αx, αy) = (${ax}, ${ay})`,
+      inputs: x.map((d) => [...direction(d * DEG, 0), ...direction(d * DEG, 0), ax, ay]),
     };
   }
   if (key === 'D' || key === 'V' || key === 'F') {

@@ -139,7 +139,7 @@ export function gRangeReport(slot, inputs, values, at) {
   /** @type {Offender | null} */
   let first = null;
   inputs.forEach((input, i) => {
-    const [nl, nv] = input.map(Math.fround);
+    const [nl, nv] = (slot.key === 'VAniso' ? [input[2], input[5]] : input).map(Math.fround); // l.z, v.z
     const g = values[(at + i) * 4] * nl * nv;
     if (Number.isFinite(g)) [min, max] = [Math.min(min, g), Math.max(max, g)];
     if (Number.isFinite(g) && g >= 0 && g <= 1 + G_ALLOWANCE) return;
@@ -202,7 +202,9 @@ export function checkReport(plan, values, reference) {
   return {
     nonFinite: nonFiniteReport(slot, stress, values, plan.stress.start),
     ...(plan.normalisation ? { normalisation: normalisationReport(plan.normalisation, values) } : {}),
-    ...(slot.key === 'V' ? { gRange: gRangeReport(slot, stress, values, plan.stress.start) } : {}),
+    ...(slot.key === 'V' || slot.key === 'VAniso'
+      ? { gRange: gRangeReport(slot, stress, values, plan.stress.start) }
+      : {}),
     ...(slot.key === 'DAniso' && plan.normalisation
       ? {
           weakFurnace: weakFurnaceReport(

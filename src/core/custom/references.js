@@ -6,7 +6,7 @@
 // radians for Oren–Nayar, F0 = 0.04), a whole BRDF by l and v (the diffuse terms at c_diff = 1, σ = 0.3, F0 = 0.04).
 import { CATALOGUE } from '../../math/catalogue/index.js';
 import { blinnPhongExponentFromBeckmannAlpha } from '../../math/ndf.js';
-import { ndfBeckmannAniso, ndfGGXAniso } from '../../math/anisotropic.js';
+import { ndfBeckmannAniso, ndfGGXAniso, visibilitySmithGGXCorrelatedAniso } from '../../math/anisotropic.js';
 import { slotOf } from './slots.js';
 
 /** @typedef {(input: number[]) => number[]} ReferenceFunction  one input of the slot (float32-rounded) → 1 or 3 */
@@ -45,6 +45,11 @@ const BY_SLOT = {
     ggxAniso: ([hx, hy, hz, ax, ay]) => [ndfGGXAniso(hx, hy, hz, ax, ay)],
     beckmannAniso: ([hx, hy, hz, ax, ay]) => [ndfBeckmannAniso(hx, hy, hz, ax, ay)],
   },
+  VAniso: {
+    smithGGXCorrelatedAniso: ([lx, ly, lz, vx, vy, vz, ax, ay]) => [
+      visibilitySmithGGXCorrelatedAniso(lx, ly, lz, vx, vy, vz, ax, ay),
+    ],
+  },
   V: Object.fromEntries(
     Object.values(CATALOGUE.visibility.terms)
       .filter((t) => t.args.every((a) => ['nl', 'nv', 'alpha'].includes(a)))
@@ -76,8 +81,9 @@ const BY_SLOT = {
   ),
 };
 
-/** The anisotropic NDFs of src/math/anisotropic.js (not yet catalogue entries), with the Λ each is paired with. */
-const ANISOTROPIC_NDF_LABELS = { ggxAniso: 'GGX, anisotropic', beckmannAniso: 'Beckmann, anisotropic' };
+/** The family of the anisotropic slots' references (their slots stand beside no family's menu: slots.js). */
+/** @type {Record<string, 'ndf' | 'visibility'>} */
+const ANISOTROPIC_FAMILY = { DAniso: 'ndf', VAniso: 'visibility' };
 
 const FAMILY_LABEL = { brdf: ' (c_diff = 1, σ = 0.3, F0 = 0.04)', diffuse: ' (σ = α, F0 = 0.04)' };
 
@@ -88,8 +94,7 @@ const FAMILY_LABEL = { brdf: ' (c_diff = 1, σ = 0.3, F0 = 0.04)', diffuse: ' (�
  */
 export function referenceOptions(slotKey) {
   const slot = slotOf(slotKey);
-  if (slot.key === 'DAniso') return ANISOTROPIC_NDF_LABELS;
-  const family = CATALOGUE[slot.family ?? 'diffuse'];
+  const family = CATALOGUE[ANISOTROPIC_FAMILY[slot.key] ?? slot.family ?? 'diffuse'];
   const suffix = /** @type {Record<string, string>} */ (FAMILY_LABEL)[slot.key] ?? '';
   return Object.fromEntries(Object.keys(BY_SLOT[slot.key]).map((key) => [key, family.terms[key].label + suffix]));
 }

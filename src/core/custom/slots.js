@@ -27,11 +27,12 @@ import { ALPHA_ANISO_MAX } from '../../math/anisotropic.js';
  * @property {string} signature its declaration
  * @property {'float' | 'vec3'} returns
  * @property {SlotArg[]} args
- * @property {'ndf' | 'visibility' | 'fresnel' | 'diffuse' | null} family the catalogue family it stands beside
- *   (null: none, for a whole BRDF and for the anisotropic D and V, whose references are src/math/anisotropic.js's;
- *   the anisotropic V is written only in the shader exercises, which grade it against the catalogue's term)
- * @property {string} reference the catalogue key (of `family`, or of the diffuse family for 'brdf'; for 'DAniso' a
- *   key of references.js's anisotropic NDFs) the checks compare with by default
+ * @property {'ndf' | 'visibility' | 'fresnel' | 'diffuse' | null} family the catalogue family whose menus it stands
+ *   in as `custom` (null: none, for a whole BRDF and for the anisotropic D and V, which no family's menu offers:
+ *   the material lab's own Stretched D and Stretched V do, src/widgets/material-lab/custom-aniso.js, as do the
+ *   shader exercises; their references are the catalogue's anisotropic terms, src/core/custom/references.js)
+ * @property {string} reference the catalogue key (of `family`, or of the diffuse family for 'brdf'; for 'DAniso' and
+ *   'VAniso' of the ndf and visibility families' anisotropic terms) the checks compare with by default
  * @property {string} starter GLSL text, a correct term
  * @property {string} call the expression the widgets and the term dispatch use: for D and V over the fields of the
  *   microfacet input m (shaders/microfacet-input.glsl), the user's signature unchanged
@@ -158,7 +159,7 @@ export const SLOTS = {
       dirArg('h', 'h'),
       { name: 'alpha', type: 'vec2', min: ALPHA.min, max: ALPHA_ANISO_MAX, unit: '', label: '(αx, αy)' },
     ],
-    family: null, // no menu of the catalogue offers an anisotropic D yet
+    family: null, // in the material lab's Stretched D, no family's menu (see Slot.family)
     reference: 'ggxAniso',
     starter: STARTER_D_ANISO,
     call: 'customDAniso(m.h, m.alpha)',

@@ -1,7 +1,8 @@
 // @ts-check
 // The live checks beside the editor, in words and one plot: non-finite and negative values with the first input
-// that gives one, D's normalisation, the range of V's G, a whole BRDF's reciprocity and white-furnace albedo, and
-// the largest difference from a catalogue term the user picks, with the two curves (checks.js computes them all).
+// that gives one, D's normalisation, an anisotropic D's weak furnace, the range of V's G, a whole BRDF's reciprocity
+// and white-furnace albedo, and the largest difference from a catalogue term the user picks, with the two curves
+// (checks.js computes them all).
 import { createPlot } from './plot.js';
 import { referenceOptions } from '../custom/references.js';
 
@@ -45,6 +46,14 @@ function checkLines(slot, r) {
       .map((/** @type {{ alpha: number, integral: number }} */ x) => `α ${num(x.alpha)}: ${num(x.integral)}`)
       .join(', ');
     lines.push([ok, `∫ D(m)(n·m) dω should be 1; worst ${num(r.normalisation.worst)} (${each})`]);
+  }
+  if (r.weakFurnace) {
+    const { worst, at, lambda } = r.weakFurnace; // an anisotropic D's, with the Λ of the reference compared with
+    lines.push([
+      Math.abs(worst - 1) <= 3e-3,
+      `Weak white furnace (Heitz 2014) with ${lambda}: G1(v) ∫ D(h) ⟨v·h⟩ dω / (n·v) should be 1 at every v; ` +
+        `worst ${num(worst)} at θv = ${num(at.thetaV)}°, φv = ${num(at.phiV)}°`,
+    ]);
   }
   if (r.gRange) {
     const g = r.gRange;

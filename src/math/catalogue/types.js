@@ -45,6 +45,8 @@
  *   first), which js takes optionally and the GLSL function as its last argument: computed once per draw
  * @property {string} [normaliserUniform] the uniform that carries the normaliser to the GPU
  * @property {TermCapabilities} [capabilities] what the hosts have for it beyond its two functions
+ * @property {string} [isotropic] for an anisotropic D or V (it reads the pair αx, αy), the key of the isotropic
+ *   term of its family it equals at αx = αy: the hosts stretch that term into it (anisotropic-forms.js)
  * @property {Record<string, TermParam>} params for an NDF the first is its width (ndf-width.js matches it)
  */
 

@@ -158,6 +158,7 @@ export const VISIBILITY_FAMILY = {
       label: 'Smith GGX, height-correlated, anisotropic',
       short: 'Smith GGX corr. aniso.',
       cite: 'Heitz 2014',
+      isotropic: 'smithGGXCorrelated',
       js: visibilitySmithGGXCorrelatedAniso,
       evaluate: null,
       glsl: 'visibilitySmithGGXCorrelatedAniso',

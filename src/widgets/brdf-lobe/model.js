@@ -12,21 +12,20 @@ import { termEntry, termLabel } from '../../math/catalogue/index.js';
 import { WALK_ANGLES, hasMultipleLobe, kullaContyLobe, walkMultiplePart } from './multiple-lobe.js';
 import { anisotropicAlphas } from '../../math/anisotropic.js';
 import { microfacetInput, termAt } from '../../math/catalogue/microfacet-input.js';
+import { anisotropicForm } from '../../math/catalogue/anisotropic-forms.js';
 import { LAYER_KEYS, layerLuminances, openPbrAlbedo, openPbrSpec, openPbrValue } from './openpbr-lobe.js';
 
-/** The anisotropic form of an NDF, and of a visibility term, in the catalogue. */
-const ANISOTROPIC_D = { ggx: 'ggxAniso', beckmann: 'beckmannAniso' };
-const ANISOTROPIC_V = { smithGGXCorrelated: 'smithGGXCorrelatedAniso' };
-
 /**
- * A's anisotropic lobe, when its anisotropy is above 0 and its D has an anisotropic form: { D, V (null: V stays
- * isotropic at α), pair [αx, αy], phi (the plane of incidence's azimuth from the tangent, radians) }; else null.
+ * A's anisotropic lobe, when its anisotropy is above 0 and its D has an anisotropic form in the catalogue
+ * (anisotropic-forms.js): { D, V (the forms' keys; V null: it stays isotropic at α), pair [αx, αy], phi (the plane
+ * of incidence's azimuth from the tangent, radians) }; else null.
  */
 export function anisotropyOf(state, D, V) {
-  if (!(state.anisotropy > 0) || !ANISOTROPIC_D[D]) return null;
+  const stretched = anisotropicForm('ndf', D);
+  if (!(state.anisotropy > 0) || !stretched) return null;
   return {
-    D: ANISOTROPIC_D[D],
-    V: ANISOTROPIC_V[V] ?? null,
+    D: stretched.key,
+    V: anisotropicForm('visibility', V)?.key ?? null,
     pair: anisotropicAlphas(state.alpha, state.anisotropy, state.convention),
     phi: state.phi * DEG,
   };

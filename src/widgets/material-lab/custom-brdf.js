@@ -13,15 +13,20 @@ const AREA_SLOTS = { brdf: { codeKey: 'codeBRDF', title: 'Your whole BRDF f(l, v
 // what the runner evaluates: f at l = v = n, read back only to vet the code (the lab's programs draw it)
 const VET = { key: '', inputs: [[0, 0, 1, 0, 0, 1]], read: (out) => out[0] };
 
-/** `io`: { view: () => the lab's view (lab-view.js), getState, update }; `element` holds the panel. */
-export function createCustomBrdf({ view, getState, update }) {
+/**
+ * A custom area under the lab's images (custom-area.js), drawn with the lab's renderer: `io` { view: () => the lab's
+ * view (lab-view.js), getState, update }, `own` { slots, chosen, planOf }. Returns { element, area, getRenderer }.
+ */
+export function createLabArea({ view, getState, update }, own) {
   const element = document.createElement('div');
   const getRenderer = () => view().viewport?.renderer;
-  const area = createCustomArea(element, {
-    getRenderer,
-    getState,
-    update,
-    redraw: () => view().invalidate(),
+  const area = createCustomArea(element, { getRenderer, getState, update, redraw: () => view().invalidate(), ...own });
+  return { element, area, getRenderer };
+}
+
+/** `io`: { view: () => the lab's view (lab-view.js), getState, update }; `element` holds the panel. */
+export function createCustomBrdf(io) {
+  const { element, area, getRenderer } = createLabArea(io, {
     slots: AREA_SLOTS,
     chosen: (s) => (s.brdfSource === 'custom' ? ['brdf'] : []),
     planOf: () => VET,

@@ -11,12 +11,13 @@ import { tangentFieldOf } from '../../lab/lab-anisotropy.js';
 
 /**
  * `state()` the widget's state, `measured()` the measured table in use or null, `custom(state)` the user's BRDF
- * ({ code, params }) to draw, `openpbr(state)` the OpenPBR material of the panel, `file()` the dropped environment
- * ({ key, pixels }), `held()` whether a gesture is under way, `show(state, lights)` shows what the frame measured.
- * frame(...) is the view's frame; stats the last frame's; reset() renders everything again; remeasure(runs) times
- * the approximation again, the median of `runs` renders.
+ * ({ code, params }) to draw, `terms(state)` the user's anisotropic D and V to draw or null, `openpbr(state)` the
+ * OpenPBR material of the panel, `file()` the dropped environment ({ key, pixels }), `held()` whether a gesture is
+ * under way, `show(state, lights)` shows what the frame measured. frame(...) is the view's frame; stats the last
+ * frame's; reset() renders everything again; remeasure(runs) times the approximation again, the median of `runs`
+ * renders.
  */
-export function createLabFrame({ state, measured, custom, openpbr, file, held = () => false, show }) {
+export function createLabFrame({ state, measured, custom, terms, openpbr, file, held = () => false, show }) {
   let approxKey = '';
   let refKey = '';
   let stats = null;
@@ -31,7 +32,7 @@ export function createLabFrame({ state, measured, custom, openpbr, file, held = 
     const envKey = st.env ? (fromFile ? file().key : st.environment) : 'none';
     const ownBrdf = st.brdfSource === 'custom' ? custom(st) : null;
     const layered = st.brdfSource === 'openpbr' ? openpbr(st) : null;
-    const { scene, lights, keys } = sceneOf(st, table, envKey, ownBrdf, layered);
+    const { scene, lights, keys } = sceneOf(st, table, envKey, ownBrdf, layered, terms(st));
     scene.table = table?.texture;
     scene.maps = environment(st.env ? st.environment : 'furnace', fromFile ? file().pixels : null);
     if (keys.approx !== approxKey) {

@@ -11,6 +11,7 @@ import { attachEnvironmentDrop } from './environment-drop.js';
 import { createMeasuredMaterial } from './measured-material.js';
 import { createLabFrame } from './lab-frame.js';
 import { createCustomBrdf } from './custom-brdf.js';
+import { createCustomAnisoTerms } from './custom-aniso.js';
 import { createOpenPbrPanel } from './openpbr-panel.js';
 import { BRUSHED_ALUMINIUM, WHITE_LAMBERT_HEAD_ON, missingFile } from './model.js';
 import { schema } from './schema.js';
@@ -43,18 +44,16 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
     notes.show(scene);
     return captions(st, lights, stats);
   };
-  const ownBrdf = createCustomBrdf({ view: () => view, getState: () => shell.state, update: (p) => update(p) });
+  const [ownBrdf, ownTerms] = ownCode({ view: () => view, getState: () => shell.state, update: (p) => update(p) });
   // a gesture held on the widget: OpenPBR's reference (lab-frame.js) and bars wait for its end
   const openpbr = createOpenPbrPanel({ shell, update: (p) => update(p), onRelease: () => view.invalidate() });
-  const sources = { state: () => shell.state, measured: () => measured.current, custom: ownBrdf.program };
-  const lab = createLabFrame({ ...sources, openpbr: openpbr.material, file: () => file, held: openpbr.held, show });
-  const onReset = () => {
-    lab.reset();
-    measured.reupload();
-  };
+  const sources = { state: () => shell.state, measured: () => measured.current, file: () => file };
+  const own = { custom: ownBrdf.program, terms: ownTerms.program };
+  const lab = createLabFrame({ ...sources, ...own, openpbr: openpbr.material, held: openpbr.held, show });
+  const onReset = () => (lab.reset(), measured.reupload());
   const view = createLabView(shell.view, { label: 'Material lab', resolution: 192, frame: lab.frame, onReset });
   view.setPanels(3);
-  shell.view.append(readout.element, notes.element, openpbr.element, ownBrdf.element); // panels under the notes
+  shell.view.append(readout.element, notes.element, openpbr.element, ownBrdf.element, ownTerms.element); // panels
 
   const onChanged = (changed) => {
     const has = { measured: Boolean(measured.current), file: Boolean(file.pixels) };
@@ -101,10 +100,13 @@ export function createMaterialLab(container, initialState = {}, { onStateChange,
       return view.resolution;
     },
     dispose() {
-      [drop, measured, ownBrdf, openpbr, view, shell].forEach((x) => x.dispose());
+      [drop, measured, ownBrdf, ownTerms, openpbr, view, shell].forEach((x) => x.dispose());
     },
   };
 }
+
+/** The panels of the user's code under the images: the whole BRDF's, and the stretched lobe's D and V. */
+const ownCode = (io) => [createCustomBrdf(io), createCustomAnisoTerms(io)];
 
 /** The readout's buttons: the lab's starting points, each a state to take. */
 const startingPoints = (update) => [

@@ -33,7 +33,7 @@ const openPbrAlpha = (m) => Math.min(m.specular_roughness ** 2, m.coat_weight > 
 
 /** The scene of `state` with its BRDF: the model, a measured table (sampled by its GGX fit's α, the state's until
  * it is in), the user's (`custom`, sampled at the state's α) or OpenPBR Surface (`openpbr`, its material). */
-function sceneWithBrdf(state, lights, { table, custom, openpbr }) {
+function sceneWithBrdf(state, lights, { table, custom, openpbr, ownTerms }) {
   const scene = labScene(state, lights);
   if (table) return wholeBrdfScene(scene, table.fit?.params.alpha ?? scene.material.alpha, { measured: table.name });
   if (custom) return wholeBrdfScene(scene, scene.material.alpha, { custom });
@@ -45,18 +45,19 @@ function sceneWithBrdf(state, lights, { table, custom, openpbr }) {
       tangentField: tangentFieldOf(state),
     });
   }
-  return scene;
+  return ownTerms ? { ...scene, ownTerms } : scene; // the user's anisotropic D, V (custom-aniso.js)
 }
 
 /**
  * The scene of `state` (`table`: the measured table in use, or null; `envKey`: which map is lit by, a new one for
  * every file taken; `custom`: the user's BRDF { code, params } when the state asks for it, or null; `openpbr`: the
- * OpenPBR material when the state asks for it, or null) and its keys: `approx` changes when the approximation must
+ * OpenPBR material when the state asks for it, or null; `ownTerms`: the user's anisotropic D and V, { code, params },
+ * or null) and its keys: `approx` changes when the approximation must
  * be rendered again, `reference` when the reference must start over.
  */
-export function sceneOf(state, table, envKey, custom = null, openpbr = null) {
+export function sceneOf(state, table, envKey, custom = null, openpbr = null, ownTerms = null) {
   const lights = lightsOf(state);
-  const scene = sceneWithBrdf(state, lights, { table, custom, openpbr });
+  const scene = sceneWithBrdf(state, lights, { table, custom, openpbr, ownTerms });
   return {
     scene,
     lights,
@@ -70,6 +71,8 @@ export function sceneOf(state, table, envKey, custom = null, openpbr = null) {
         table?.key,
         scene.custom,
         scene.openpbr,
+        scene.anisotropy,
+        scene.ownTerms,
       ]),
     },
   };

@@ -8,7 +8,7 @@ import { LAB_TERMS } from '../../lab/lab-approximations.js';
 import { TERM_ALIASES } from '../../math/catalogue/index.js';
 import { SIGMA_HINT } from '../../core/ui/sigma-range.js';
 import { SLOTS } from '../../core/custom/slots.js';
-import { ANISOTROPY_MODELS, TANGENT_FIELDS } from '../../lab/lab-anisotropy.js';
+import { ANISOTROPIC_TERMS, ANISOTROPY_MODELS, TANGENT_FIELDS } from '../../lab/lab-anisotropy.js';
 import { OPENPBR_FIELDS } from '../../lab/openpbr-lab.js';
 
 export const ENV_METHODS = {
@@ -90,7 +90,7 @@ export const schema = {
     step: 0.01,
     default: 0,
     label: 'Anisotropy a',
-    hint: 'Stretches the GGX lobe along the tangent t; 0 is the isotropic lobe.',
+    hint: 'Stretches the specular lobe (GGX or Beckmann, or your own D) along the tangent t; 0 is the isotropic lobe.',
   },
   anisotropyModel: {
     group: 'Anisotropy',
@@ -144,6 +144,11 @@ export const schema = {
     label: 'Bent reflection vector',
     hint: 'The split sum and sphere light read the light along the bent vector (Filament, three.js), or the mirror.',
   },
+  // the stretched D and V: the catalogue's forms of D and V above, or the user's (the panel under the images)
+  anisoD: { group: 'Anisotropy', type: 'enum', options: ANISOTROPIC_TERMS.D, default: 'chosen', label: 'Stretched D' },
+  anisoV: { group: 'Anisotropy', type: 'enum', options: ANISOTROPIC_TERMS.V, default: 'chosen', label: 'Stretched V' },
+  codeDAniso: { type: 'code', slot: 'DAniso', default: SLOTS.DAniso.starter, label: 'Your anisotropic D (GLSL)' },
+  codeVAniso: { type: 'code', slot: 'VAniso', default: SLOTS.VAniso.starter, label: 'Your anisotropic V (GLSL)' },
   brdfSource: {
     group: 'BRDF terms',
     type: 'enum',

@@ -159,8 +159,10 @@ const short = (family, key) => texText(termEntry(family, key).short);
 export function brdfTex(terms, material, keys = {}, anisotropy = null) {
   const tie = (key, tex) => (keys[key] ? `\\sym{${keys[key]}}{${tex}}` : tex);
   const F = tie('F', terms.F === 'one' ? '1' : `F_{${short('fresnel', terms.F)}}`);
-  const D = tie('D', `D_{${short('ndf', terms.D)}}`);
-  const V = tie('V', `V_{${short('visibility', terms.V)}}`);
+  // the user's stretched D or V (lab-anisotropy.js) in place of the chosen one
+  const yours = (slot, key) => anisotropy?.[slot] === 'custom' && tie(key, `${slot}_{\\text{yours}}`);
+  const D = yours('D', 'anisoD') || tie('D', `D_{${short('ndf', terms.D)}}`);
+  const V = yours('V', 'anisoV') || tie('V', `V_{${short('visibility', terms.V)}}`);
   const single = `\\frac{${F}\\,${V}\\,${D}}{4}`;
   const compensated = {
     kullaConty: `${single} + ${tie('compensation', 'f_{\\text{ms}}')}`,
@@ -184,7 +186,7 @@ export const PUNCTUAL =
   'L_o = \\pi f(\\mathbf{l}_c,\\mathbf{v}) \\otimes \\mathbf{c}_{\\text{light}}(\\mathbf{n}\\cdot\\mathbf{l}_c)';
 // the terms' names in the state are the catalogue's choice (F, D, V, diffuse, compensation): each ties to its own key
 const TERM_KEYS = ['F', 'D', 'V', 'diffuse', 'layers', 'compensation'];
-const KEYS = Object.fromEntries([...TERM_KEYS, 'alpha'].map((k) => [k, k]));
+const KEYS = Object.fromEntries([...TERM_KEYS, 'alpha', 'anisoD', 'anisoV'].map((k) => [k, k]));
 
 const F0_KEY = (state) => (state.material === 'manual' ? 'f0' : 'material');
 /** A BRDF that is not the model's terms: named, not written out. */

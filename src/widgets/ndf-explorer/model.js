@@ -6,13 +6,11 @@ import { ndfProjectedIntegral } from '../../math/integrate.js';
 import { DEG } from '../../math/angles.js';
 import { SERIES_DASHES, seriesStyle } from '../../core/ui/palettes.js';
 import { THETA_H_DEG } from '../measured-brdf/model.js';
-import { CATALOGUE, termLabel } from '../../math/catalogue/index.js';
+import { termLabel } from '../../math/catalogue/index.js';
+import { anisotropicForm } from '../../math/catalogue/anisotropic-forms.js';
 import { anisotropicAlphas } from '../../math/anisotropic.js';
 import { ndfHalfWidthsAlongAxes } from '../../math/anisotropic-width.js';
 import { NDF_KEYS } from './schema.js';
-
-/** The NDFs with an anisotropic form, and its catalogue key. */
-export const ANISOTROPIC_KEYS = { ggx: 'ggxAniso', beckmann: 'beckmannAniso' };
 
 /**
  * An NDF's anisotropic lobe at its matched α: { key (the catalogue's), label, D (its float64 function of h in the
@@ -20,13 +18,12 @@ export const ANISOTROPIC_KEYS = { ggx: 'ggxAniso', beckmann: 'beckmannAniso' };
  * or null for an NDF without one. At anisotropy 0 every convention gives αx = αy = α.
  */
 export function anisotropicLobe(key, p, state) {
-  const aniso = ANISOTROPIC_KEYS[key];
-  if (!aniso) return null;
-  const entry = CATALOGUE.ndf.terms[aniso];
+  const entry = anisotropicForm('ndf', key); // the catalogue's anisotropic form of the NDF
+  if (!entry) return null;
   const pair = anisotropicAlphas(p.alpha, state.anisotropy, state.convention);
   let widths = null;
   return {
-    key: aniso,
+    key: entry.key,
     label: entry.label,
     D: entry.js,
     pair,
