@@ -18,11 +18,18 @@ import { ABOUT, TERMS_USED, TITLE, describeLobe3d, describePolar } from './words
 
 export { schema };
 
-const LIGHT_AND_VIEW = ['lightTheta', 'viewTheta'];
+const LIGHT_AND_VIEW = ['lightTheta', 'viewTheta', 'viewPhi']; // the (θh, θd) images do not depend on them
 const ALBEDO_KEYS = ['D', 'V', 'F', 'alpha', 'f0', 'compare', 'D2', 'V2', 'alpha2', 'brdf', 'params'].concat(
-  ['anisotropy', 'convention', 'phi'], // an anisotropic A's albedo depends on the view's azimuth
+  ['anisotropy', 'convention'],
   OPENPBR_KEYS,
 );
+const AZIMUTHS = ['lightPhi', 'viewPhi']; // an anisotropic A's albedo depends on the view's azimuth from t
+/** Does the albedo plot change with the keys `changed` (null: all)? An anisotropic A's turns with the azimuths. */
+function albedoChanged(changed, s, A) {
+  const anisotropic = Boolean(A.aniso) || (Boolean(A.openpbr) && s.anisotropy > 0);
+  const keys = [...ALBEDO_KEYS, ...CODE_KEYS, ...(anisotropic ? AZIMUTHS : [])];
+  return !changed || changed.some((k) => keys.includes(k));
+}
 const CODE_KEYS = ['codeD', 'codeV', 'codeF', 'codeBRDF'];
 /** A's slots that can be the user's: the state key of each one's code, and its panel's title. */
 const CUSTOM_SLOTS = {
@@ -63,9 +70,11 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange, lo
   const drawPolar = (s, scene) => {
     const { a, lobeA, lobeB, ms, max } = scene;
     const halfTheta = a.h ? Math.atan2(a.h[0], a.h[2]) / DEG : null;
-    const { lightTheta, viewTheta } = s;
     const parts = scene.layers?.parts.map(({ key, lobe }) => ({ lobe, ...OPENPBR_LAYERS[key] }));
-    polar.draw({ lobeA, lobeB, lobeMS: ms.lobe, points: ms.points, parts, max, lightTheta, viewTheta, halfTheta });
+    const viewOff = Math.abs(scene.v[1]) > 1e-9; // the view off the plane of incidence: its handle is hollow
+    const { lightTheta, viewTheta, lightPhi, viewPhi } = s;
+    const angles = { lightTheta, viewTheta, lightPhi, viewPhi, halfTheta, viewOff };
+    polar.draw({ lobeA, lobeB, lobeMS: ms.lobe, points: ms.points, parts, max, ...angles });
     shell.describe(describePolar(s, scene), polar.canvas);
   };
   const drawLobe3d = (s, scene) => {
@@ -74,7 +83,8 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange, lo
     const directions = { n: [0, 0, 1], l, v, h: a.h, mirror: [-l[0], 0, l[2]] };
     // an anisotropic lobe may peak out of the plane of incidence: scale to its largest value over the hemisphere
     const top = scene.A.aniso ? Math.max(max, ...lobe3d.directions.map(fA).filter(Number.isFinite)) : max;
-    lobe3d.update({ fA, fB, max: top, directions, phi: s.phi, description: describeLobe3d(s, { ...scene, max: top }) });
+    const phi = s.lightPhi + 180; // the plane's mirror side, opposite the light
+    lobe3d.update({ fA, fB, max: top, directions, phi, description: describeLobe3d(s, { ...scene, max: top }) });
   };
   const render = (changed) => {
     const s = shell.state;
@@ -84,8 +94,9 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange, lo
     drawLobe3d(s, scene);
     if (!changed || changed.some((k) => !LIGHT_AND_VIEW.includes(k))) images.draw(s, scene);
     const specs = scene.B ? [scene.A, scene.B] : [scene.A]; // the scene's: the specs are built once a render
-    if (!albedo) albedo = createAlbedoPlot(bottom, specs);
-    else if (!changed || changed.some((k) => ALBEDO_KEYS.includes(k) || CODE_KEYS.includes(k))) albedo.draw(specs);
+    const turn = s.viewPhi * DEG;
+    if (!albedo) albedo = createAlbedoPlot(bottom, specs, turn);
+    else if (albedoChanged(changed, s, scene.A)) albedo.draw(specs, turn);
     readout.draw(s, scene);
     custom.showPanels(s);
   };
@@ -95,6 +106,8 @@ export function createBrdfLobe(container, initialState = {}, { onStateChange, lo
   return {
     update,
     getState: () => shell.state,
+    /** For tests: the 3-D view's lobe A and arrows as drawn, in the patch's frame (lobe-view.js). */
+    getLobe3d: () => lobe3d.drawn(),
     dispose() {
       polar.dispose();
       lobe3d.dispose();
