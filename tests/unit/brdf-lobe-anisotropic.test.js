@@ -35,7 +35,7 @@ describe('brdf-lobe: the plane of incidence at any azimuth, A anisotropic', () =
 });
 
 describe('brdf-lobe: an old link’s plane azimuth `phi`', () => {
-  it('reads as the light’s azimuth: the old scene turned by 180° about n, the same values (D and Λ read cos²φ, sin²φ)', () => {
+  it('reads as the light’s azimuth: the old scene turned by 180° about n, values D and Λ do not tell apart', () => {
     const { state: read, notices } = coerceState(schema, { phi: '60', anisotropy: '0.7', viewTheta: '-20' });
     expect(notices).toEqual([]);
     expect([read.lightPhi, read.viewPhi]).toEqual([60, 0]);
