@@ -77,6 +77,11 @@ describe('brdf-lobe, the light and the view each at its own azimuth', () => {
     await page.keyboard.press(']');
     await untilIdle(page);
     expect(await getState(page, 'brdf-lobe')).toMatchObject({ lightPhi: 35, viewPhi: 75 });
+    await page.keyboard.down('Shift');
+    await page.keyboard.press('BracketLeft'); // Shift: 1°
+    await page.keyboard.up('Shift');
+    await untilIdle(page);
+    expect(await getState(page, 'brdf-lobe')).toMatchObject({ lightPhi: 35, viewPhi: 74 });
     expect(await checkDrawn(page)).toBeLessThan(1e-5);
     const errors = [];
     for (const pair of [

@@ -169,6 +169,8 @@ function attachHandles(canvas, shown, onDrag) {
       ']': { viewPhi: wrapDegrees(last.viewPhi + step, -180) },
       '[': { viewPhi: wrapDegrees(last.viewPhi - step, -180) },
     };
+    moves['}'] = moves[']']; // with Shift, as a US keyboard names them
+    moves['{'] = moves['['];
     if (!moves[e.key]) return;
     e.preventDefault();
     onDrag(moves[e.key]);
