@@ -26,9 +26,10 @@ const LIGHT_STATE = {
 };
 
 /**
- * The control a user would drag, per widget: [key, from, to] (a number swept in STEPS steps) or [key, [values]].
- * The key must be one the widget's schema has and its views read. A new widget adds its row (the bench stops on
- * a widget without one).
+ * The control a user would drag, per widget: [key, from, to] (a number swept in STEPS steps) or [key, [values]],
+ * optionally with a state to open in ('&key=value…', e.g. an anisotropy that the azimuths need to matter); a widget
+ * with several controls worth timing has a list of them, one row each. The key must be one the widget's schema has
+ * and its views read. A new widget adds its row (the bench stops on a widget without one).
  */
 const DRAGS = {
   'fresnel-curves': ['ior', 1.2, 2.4],
@@ -41,14 +42,31 @@ const DRAGS = {
   surfaces: ['theta', 10, 70],
   'subsurface-scale': ['sigmaS', 1, 10],
   radiance: ['distance', 0.5, 10],
-  'brdf-lobe': ['lightTheta', 10, 70],
+  'brdf-lobe': [
+    ['lightTheta', 10, 70],
+    ['lightPhi', 0, 180, '&anisotropy=0.6'], // past the talk (issue 28): the light's and the view's azimuths
+    ['viewPhi', -90, 90, '&anisotropy=0.6'],
+  ],
   'measured-brdf': ['lightTheta', 10, 70],
-  'ndf-explorer': ['hwhm', 5, 25],
-  'visibility-explorer': ['alpha', 0.1, 0.8],
+  'ndf-explorer': [
+    ['hwhm', 5, 25],
+    ['anisotropy', 0, 0.9],
+  ],
+  'visibility-explorer': [
+    ['alpha', 0.1, 0.8],
+    ['anisotropy', 0, 0.9], // its G1 against azimuth
+  ],
+  'anisotropic-microsurface': [
+    ['theta', 30, 85],
+    ['alphaX', 0.2, 1], // the roughness along t: its anisotropy
+  ],
   microfacets: ['alpha', 0.2, 0.8],
   energy: ['metalAlpha', 0.2, 1], // its one slider: the coloured metal's roughness
   'diffuse-explorer': ['lightTheta', 10, 70],
-  'material-lab': ['lightTheta', 10, 70],
+  'material-lab': [
+    ['lightTheta', 10, 70],
+    ['anisotropy', 0.05, 0.9],
+  ],
   'lighting-models': ['alpha', 0.2, 0.6],
 };
 
@@ -57,10 +75,14 @@ const OPENING_WORK = {
   'measured-brdf': () => Object.keys(globalThis.__shadingLab.widgets['measured-brdf'].getFits()).length === 5,
 };
 
-async function dragValues(name, steps) {
-  const drag = DRAGS[name];
-  if (!drag) throw new Error(`bench/latency.js: add the drag of ${name} to DRAGS`);
-  const [key, from, to] = drag;
+/** The drags of a widget: [[key, from, to, openWith?] …] (a single drag as a list of one). */
+function dragsOf(name) {
+  const drags = DRAGS[name];
+  if (!drags) throw new Error(`bench/latency.js: add the drag of ${name} to DRAGS`);
+  return Array.isArray(drags[0]) ? drags : [drags];
+}
+
+async function dragValues(name, [key, from, to], steps) {
   const { schema } = await import(`../src/widgets/${name}/schema.js`);
   if (!schema[key]) throw new Error(`bench/latency.js: ${name} has no state key ${key} (its schema changed?)`);
   const values = Array.isArray(from)
@@ -104,11 +126,15 @@ async function checkTaken(page, name, { key, step }, value) {
   if (!taken) throw new Error(`bench/latency.js: ${name}.update({ ${key}: ${value} }) left ${key} at ${now}`);
 }
 
-/** One widget's row; `variant` ({ query, drag(steps) }: bench/openpbr-latency.js) opens it in another state. */
-export async function measure(browser, url, name, steps, variant = null) {
-  const drag = variant ? await variant.drag(steps) : await dragValues(name, steps);
+/**
+ * One widget's row for one drag `spec` of DRAGS; `variant` ({ query, drag(steps) }: bench/openpbr-latency.js) opens
+ * it in another state, with a drag of its own, instead.
+ */
+export async function measure(browser, url, name, spec, steps, variant = null) {
+  const drag = variant ? await variant.drag(steps) : await dragValues(name, spec, steps);
   const { key, values } = drag;
-  const path = `embed.html?w=${name}${variant?.query ?? LIGHT_STATE[name] ?? ''}`;
+  const openWith = !variant && typeof spec.at(-1) === 'string' ? spec.at(-1) : '';
+  const path = `embed.html?w=${name}${variant?.query ?? LIGHT_STATE[name] ?? ''}${openWith}`;
   const page = await openPage(browser, url, path, { width: 1280, height: 2600 });
   await page.waitForFunction((n) => globalThis.__shadingLab?.widgets?.[n], { timeout: 60_000 }, name);
   if (OPENING_WORK[name]) await page.waitForFunction(OPENING_WORK[name], { timeout: 300_000, polling: 500 });
@@ -135,7 +161,7 @@ export async function measure(browser, url, name, steps, variant = null) {
 }
 
 const rowText = (r) =>
-  `  ${r.widget.padEnd(22)}${r.key.padEnd(14)}median ${r.medianMs.toFixed(1).padStart(7)} ms   worst ` +
+  `  ${r.widget.padEnd(26)}${r.key.padEnd(14)}median ${r.medianMs.toFixed(1).padStart(7)} ms   worst ` +
   `${r.worstMs.toFixed(1).padStart(7)} ms`;
 
 /**
@@ -152,8 +178,10 @@ export async function measureLatency({ only = [], quick = false, log = console.l
   const rows = [];
   try {
     for (const name of names) {
-      rows.push(await measure(browser, server.url, name, steps));
-      log(`${rowText(rows.at(-1))}${rows.at(-1).progressive ? '   (progressive)' : ''}`);
+      for (const drag of dragsOf(name)) {
+        rows.push(await measure(browser, server.url, name, drag, steps));
+        log(`${rowText(rows.at(-1))}${rows.at(-1).progressive ? '   (progressive)' : ''}`);
+      }
     }
   } finally {
     await browser.close();

@@ -33,7 +33,7 @@ const server = await serveStatic(await buildApp(mkdtempSync(join(tmpdir(), 'shad
 const browser = await launchBrowser();
 try {
   for (const [label, lights] of ROWS) {
-    const row = await measure(browser, server.url, 'material-lab', STEPS, { query: `&${preset}${lights}`, drag });
+    const row = await measure(browser, server.url, 'material-lab', null, STEPS, { query: `&${preset}${lights}`, drag });
     console.log(
       `  ${label.padEnd(38)}${KEY}: median ${row.medianMs.toFixed(1).padStart(7)} ms, worst ` +
         `${row.worstMs.toFixed(1).padStart(7)} ms over ${row.steps} steps (target ${TARGET_MS} ms; load average ` +

@@ -58,6 +58,10 @@ export function createLabView(container, { label, resolution, slots = 1, frame, 
     captions.replaceChildren(
       ...shown.map((p) => Object.assign(document.createElement('span'), { textContent: p.caption })),
     );
+    if (layout.fitLines()) {
+      layout.fit(viewport.holder, viewport.holder.clientWidth); // the pictures drawn again under the new strip
+      again = true;
+    }
     if (again) viewport.invalidate();
   };
 
@@ -102,7 +106,20 @@ export function createLabView(container, { label, resolution, slots = 1, frame, 
   };
 }
 
-const CAPTION_STRIP = 38; // CSS px above each picture: two lines of the captions' 0.78rem text
+// CSS px above each picture: as many lines of the captions' 0.78rem text (15 px) as the longest one takes at the
+// columns' width, two at least (four lights and their methods take five lines in a phone's column)
+const CAPTION_LINE = 15;
+const captionStrip = (lines) => 8 + CAPTION_LINE * lines;
+
+/** The lines the longest caption's text takes (its own box is the strip's height, so its text is measured). */
+function captionLines(captions) {
+  const range = document.createRange();
+  const heights = [...captions.children].map((span) => {
+    range.selectNodeContents(span);
+    return range.getBoundingClientRect().height;
+  });
+  return Math.max(2, ...heights.map((h) => Math.round(h / CAPTION_LINE)));
+}
 const MIN_PANEL = 140; // CSS px: narrower pictures go on more rows instead
 
 /**
@@ -111,27 +128,34 @@ const MIN_PANEL = 140; // CSS px: narrower pictures go on more rows instead
  * same grid; cell(i, width, height) is panel i's square in CSS px, y from the top.
  */
 function createLayout(captions) {
-  const grid = { count: 1, cols: 1, rows: 1 };
+  const grid = { count: 1, cols: 1, rows: 1, lines: 2, strip: captionStrip(2) };
   const columnsFor = (width) => Math.min(Math.max(Math.floor(width / MIN_PANEL), 1), grid.count);
   return {
     set count(n) {
       grid.count = n;
     },
+    /** Sets the strip's lines to what the captions take; true when they changed (the holder must be fitted again). */
+    fitLines() {
+      const lines = captionLines(captions);
+      if (lines === grid.lines) return false;
+      [grid.lines, grid.strip] = [lines, captionStrip(lines)];
+      return true;
+    },
     fit(holder, width) {
       if (width <= 0) return;
       grid.cols = columnsFor(width);
       grid.rows = Math.ceil(grid.count / grid.cols);
-      const cellHeight = width / grid.cols + CAPTION_STRIP;
+      const cellHeight = width / grid.cols + grid.strip;
       holder.style.aspectRatio = `${width} / ${Math.round(grid.rows * cellHeight)}`;
       captions.style.gridTemplateColumns = `repeat(${grid.cols}, minmax(0, 1fr))`;
       captions.style.gridAutoRows = `${cellHeight}px`;
-      captions.style.setProperty('--caption-strip', `${CAPTION_STRIP}px`);
+      captions.style.setProperty('--caption-strip', `${grid.strip}px`);
     },
     cell(i, width, height) {
       const [w, h] = [width / grid.cols, height / grid.rows];
-      const side = Math.max(Math.min(w, h - CAPTION_STRIP), 1);
+      const side = Math.max(Math.min(w, h - grid.strip), 1);
       const [col, row] = [i % grid.cols, Math.floor(i / grid.cols)];
-      return { x: col * w + (w - side) / 2, y: row * h + CAPTION_STRIP, side };
+      return { x: col * w + (w - side) / 2, y: row * h + grid.strip, side };
     },
   };
 }

@@ -110,16 +110,16 @@ describe('visibility-explorer, G1 against azimuth', () => {
 });
 
 describe('brdf-lobe, the plane of incidence at any azimuth', () => {
-  it('turns the plane by φ and stretches A along the tangent; the polar plot’s peak is src/math’s', async () => {
+  it('turns the plane with φl and stretches A along the tangent; the polar plot’s peak is src/math’s', async () => {
     const page = await open(browser, 'embed.html?w=brdf-lobe');
     await widget(page, 'brdf-lobe');
     const lobe3d = '.widget-brdf-lobe canvas[aria-label^="3-D lobe"]';
     const before = await shot(page, lobe3d);
     await setControl(page, 'A: anisotropy (GGX, Beckmann)', 0.8);
-    await setControl(page, 'Plane of incidence φ from t (°)', 90);
+    await setControl(page, 'Light azimuth φl from t (°)', 90);
     await expect.poll(() => shot(page, lobe3d)).not.toBe(before);
     const state = await page.evaluate(() => globalThis.__shadingLab.widgets['brdf-lobe'].getState());
-    expect([state.phi, state.anisotropy]).toEqual([90, 0.8]);
+    expect([state.lightPhi, state.anisotropy]).toEqual([90, 0.8]);
     const scene = lobeScene(state);
     const [theta, value] = lobePeak(scene.lobeA);
     const label = (sel) => page.$eval(sel, (el) => el.getAttribute('aria-label'));
@@ -128,7 +128,7 @@ describe('brdf-lobe, the plane of incidence at any azimuth', () => {
     );
     expect(polar[0]).toContain(`A peaks at ${theta.toFixed(1)}° (${value.toPrecision(3)} /sr)`);
     const words = await label(lobe3d);
-    expect(words).toContain('90° about n from the tangent t');
+    expect(words).toContain("the light's azimuth, 90° about n from the tangent t");
     expect(words).toMatch(/A is anisotropic, \(αx, αy\) = \([\d.]+, [\d.]+\): its lobe stretches along t/);
     expect(page.errors).toEqual([]);
     await page.close();

@@ -2,7 +2,9 @@
 // wider than the screen (document.documentElement.scrollWidth ≤ 390); the tour's step title is on the first
 // screen; on the exercises page the question, the control that answers it and Check are on the screen together,
 // none under another element (elementFromPoint at their centres); the rendering chapter's captions sit beside the
-// pictures, not over them (the canvas under each caption is unpainted), and its table stays in its box.
+// pictures, not over them (the canvas under each caption is unpainted), and its table stays in its box. The views
+// of anisotropic microfacets (issue 28) are no wider than their frame, nothing in them wider than its box unless the
+// box scrolls; the material lab's captions are whole in their strips, none under its Save button.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import {
   WAIT_MS,
@@ -62,7 +64,72 @@ const onScreen = (page, selectors) =>
 
 const allVisible = (boxes) => boxes.map((b) => ({ selector: b.selector, inside: true, uncovered: true }));
 
+/** Each widget's widths, and every element in it whose content is wider than its box when that box does not scroll. */
+const overflowing = (page) =>
+  page.evaluate(() => {
+    const scrolls = (el) => ['auto', 'scroll'].includes(getComputedStyle(el).overflowX);
+    return [...document.querySelectorAll('.widget')].map((w) => ({
+      widget: w.className,
+      scrollWidth: w.scrollWidth,
+      clientWidth: w.clientWidth,
+      wider: [w, ...w.querySelectorAll('*')]
+        .filter((el) => el.scrollWidth > el.clientWidth + 1 && el.clientWidth > 0 && !scrolls(el))
+        .filter((el) => !el.closest('.visually-hidden') && !el.parentElement.closest('[class*="scroll"], .formula'))
+        .map((el) => `${el.tagName.toLowerCase()}.${[...el.classList].join('.')}`),
+    }));
+  });
+
 describe('on a phone (390 × 844, touch)', () => {
+  // the views of issue 28 (past the talk: anisotropic microfacets), each in its frame as a chapter embeds it:
+  // no widget wider than the screen (scrollWidth ≤ clientWidth), nothing in it wider than its box unless that box
+  // scrolls (a table, a formula)
+  for (const [name, state] of [
+    ['ndf-explorer', '&anisotropy=0.6'],
+    ['brdf-lobe', '&anisotropy=0.6&viewPhi=40'],
+    ['visibility-explorer', ''],
+    ['anisotropic-microsurface', ''],
+    ['material-lab', '&anisotropy=0.7&refSamples=32&area=1&ambient=1'],
+  ])
+    it(`${name}: no wider than the screen, nothing in it wider than its box`, async () => {
+      const page = await openPhone(`embed.html?w=${name}${state}`, { maxSamples: 4 });
+      await widget(page, name);
+      await untilSteady(page, 'layout', { timeout: WAIT_MS });
+      const [box] = await overflowing(page);
+      console.log(`${name} at 390 px: scrollWidth ${box.scrollWidth}, clientWidth ${box.clientWidth}`);
+      expect(box.scrollWidth).toBeLessThanOrEqual(box.clientWidth);
+      expect(box.wider).toEqual([]);
+      expect(await pageWidth(page)).toBeLessThanOrEqual(390);
+      expect(page.errors).toEqual([]);
+      await page.close();
+    });
+
+  it('the material lab: each caption whole in its strip (as tall as the longest needs), clear of Save', async () => {
+    const page = await openPhone('embed.html?w=material-lab&anisotropy=0.7&refSamples=32&area=1&ambient=1', {
+      maxSamples: 4,
+    });
+    await widget(page, 'material-lab');
+    await untilSteady(page, 'layout', { timeout: WAIT_MS });
+    const captions = await page.evaluate(() => {
+      const save = document.querySelector('.widget-material-lab .lab-view .save-view')?.getBoundingClientRect();
+      const meets = (a, b) => a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
+      return [...document.querySelectorAll('.widget-material-lab .lab-captions span')].map((span) => {
+        const text = document.createRange();
+        text.selectNodeContents(span);
+        const lines = [...text.getClientRects()];
+        return {
+          text: span.textContent,
+          whole: span.scrollHeight <= span.clientHeight,
+          underSave: Boolean(save) && lines.some((r) => meets(r, save)),
+        };
+      });
+    });
+    expect(captions.length).toBe(3);
+    expect(captions[0].text).toMatch(/punctual.*sphere light.*ambient/); // the longest: four lights
+    expect(captions).toEqual(captions.map(({ text }) => ({ text, whole: true, underSave: false })));
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
   it('the tour: no wider than the screen, the step’s title on the first screen', async () => {
     const page = await openPhone('tour.html');
     await page.waitForFunction(() => document.querySelector('.tour-title')?.textContent.trim());

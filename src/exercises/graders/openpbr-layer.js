@@ -17,7 +17,7 @@ const LAYER_NAMES = Object.fromEntries(LAYER_KEYS.map((k) => [k, OPENPBR_LAYERS[
 
 /** Each layer's share of the lobe's luminance at the question's light and view, for the params' material. */
 export function layerShares(params) {
-  const spec = openPbrSpec({ ...params, anisotropy: 0, phi: 0 });
+  const spec = openPbrSpec({ ...params, anisotropy: 0, lightPhi: LOBE.lightPhi.default });
   const y = layerLuminances(lightDir(params.lightTheta), viewDir(params.viewTheta), spec);
   return Object.fromEntries(LAYER_KEYS.map((k) => [k, y.all > 0 ? y[k] / y.all : 0]));
 }

@@ -1,6 +1,7 @@
 // anisotropic-microsurface (beyond the talk): a 3-D Gaussian random surface with a different roughness along t and
 // b, its picture lit from one direction with the shadows ray-traced, and G1 ray-traced at thirteen azimuths against
-// Smith's anisotropic G1. The ray-traced figures (the table, the description, the sweep) follow once a drag pauses.
+// Smith's anisotropic G1. The ray-traced figures (the table, the description, the sweep) and the whole surface (every
+// other point of it while a control moves) follow once a drag pauses.
 import { createWidgetShell } from '../../core/framework/widget-shell.js';
 import { createSettledTask } from '../../core/framework/render-loop.js';
 import { createPlot } from '../../core/ui/plot.js';
@@ -12,6 +13,8 @@ import { createAzimuthSweep } from './sweep.js';
 import { azimuthPlotSpec } from './plot.js';
 
 export { schema };
+
+const DRAG_EVERY = 2; // a new surface is first built at every other point (model.js): a quarter of the work
 
 /** The figures at the state's light direction that the table and the description give. */
 const figuresAt = (state, surface) => ({
@@ -30,13 +33,17 @@ export function create(container, initialState = {}, { onStateChange, locked } =
   let plot = null;
   let shadowShare = 0;
   const spec = () => azimuthPlotSpec(shell.state, surface, surface.sweep.data);
-  const rebuild = (newSurface) => {
+  const rebuild = (newSurface, every = 1) => {
     surface?.sweep.cancel();
-    const next = newSurface ? createSurface(shell.state) : surface;
+    const next = newSurface ? createSurface(shell.state, every) : surface;
     next.sweep = createAzimuthSweep(next, shell.state.theta, () => plot?.setData(spec()));
     surface = next;
   };
   const figuresLater = createSettledTask(() => {
+    if (surface.every > 1) {
+      rebuild(true); // the whole surface, once the drag pauses
+      plot?.setData(spec());
+    }
     shadowShare = drawSurface(canvas, shell.state, surface, 'fine');
     const figures = figuresAt(shell.state, surface);
     stats.innerHTML = statsHtml(shell.state, surface, figures);
@@ -44,7 +51,7 @@ export function create(container, initialState = {}, { onStateChange, locked } =
     surface.sweep.start();
   });
   const render = (newSurface, newSweep = newSurface) => {
-    if (newSweep) rebuild(newSurface);
+    if (newSweep) rebuild(newSurface, DRAG_EVERY); // a new surface: every other point of it until the drag pauses
     drawSurface(canvas, shell.state, surface, 'coarse'); // the full picture follows once the drag pauses
     figuresLater.schedule();
     if (!newSweep) return;

@@ -15,10 +15,17 @@ export function directionOf(thetaDeg, phiDeg) {
   return [Math.sin(t) * Math.cos(p), Math.sin(t) * Math.sin(p), Math.cos(t)];
 }
 
-/** The state's random surface: its heights, cell maxima and the roughness pair its facets have. */
-export function createSurface(state) {
-  const field = generateHeightfield(GRID, state.alphaX, state.alphaY, { seed: state.seed });
-  return { field, maxima: cellMaxima(field), alphas: facetAlphas(field) };
+const MIN_LENGTH = 5; // cells of the full grid across the shortest bump (heightfield.js's default)
+
+/**
+ * The state's random surface: its heights, cell maxima and the roughness pair its facets have. `every` 2: every
+ * other point of the same surface (its waves and heights in cells of twice the size: a quarter of the work, while a
+ * control moves; its facets, over twice the span, come out a little smoother).
+ */
+export function createSurface(state, every = 1) {
+  const options = { seed: state.seed, minLength: MIN_LENGTH / every };
+  const field = generateHeightfield(GRID / every, state.alphaX, state.alphaY, options);
+  return { field, maxima: cellMaxima(field), alphas: facetAlphas(field), every };
 }
 
 /** Smith's G1 (anisotropic Beckmann) of the direction (θ, φ) over the surface's own pair of α. */

@@ -17,7 +17,9 @@ export function shadedWindow(surface, thetaDeg, phiDeg, size = PIXELS.fine) {
   let dark = 0;
   for (let py = 0; py < size; py++) {
     for (let px = 0; px < size; px++) {
-      const [x, y] = [((px + 0.5) / size) * WINDOW_CELLS, ((size - py - 0.5) / size) * WINDOW_CELLS];
+      // in the field's cells (a surface of every other point has cells twice the size: model.js)
+      const cells = WINDOW_CELLS / surface.every;
+      const [x, y] = [((px + 0.5) / size) * cells, ((size - py - 0.5) / size) * cells];
       const { z, sx, sy } = surfaceAt(surface.field, x, y);
       const cos = (w[2] - sx * w[0] - sy * w[1]) / Math.hypot(sx, sy, 1);
       const shadow = cos <= 0 || blocked(surface.field, surface.maxima, [x, y, z + 1e-9], w);

@@ -1,8 +1,8 @@
 // The BRDF as a 3-D lobe over a surface patch: for the current light, each direction v is pushed out by
 // f(l, v) (scaled to the largest value); A is solid orange, B a green wire grid, as in the polar plot. Drag to
 // orbit. n, l, v, h and the mirror direction are drawn as arrows, in the plane of incidence (a translucent pane);
-// the plane turns by φ about n from the tangent t (a dark red arrow fixed on the patch), and everything in it turns
-// with it (the model computes in the plane's frame: an anisotropic lobe reads l and v turned by φ).
+// the plane turns about n from the tangent t (a dark red arrow fixed on the patch) to the light's azimuth, and
+// everything in it turns with it (the model computes in the plane's frame: azimuths.js); the view may stand off it.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { createViewport } from '../../core/framework/viewport.js';
@@ -146,6 +146,7 @@ export function createLobeView(container, { onContextChange } = {}) {
   camera.position.set(2.6, 2.2, 3.2);
   let controls = null;
   let orbitByKey = null;
+  let scale = 1; // the value a lobe's radius 1 stands for
   const viewport = createViewport(container, {
     draw: (renderer) => {
       if (lost) {
@@ -182,12 +183,13 @@ export function createLobeView(container, { onContextChange } = {}) {
     renderer: viewport?.renderer ?? null,
     /**
      * fA(v), fB(v) | null: the lobes for the current light; directions: { n, l, v, h, mirror } as arrays (h may
-     * be null), in the plane of incidence's frame; phi: its azimuth from the tangent (degrees); description: the
+     * be null), in the plane of incidence's frame; phi: its x axis' azimuth from the tangent (°); description: the
      * view in words.
      */
     update({ fA, fB, max, directions, phi = 0, description }) {
       describeCanvas(viewport?.canvas, description);
       plane.rotation.z = (phi * Math.PI) / 180;
+      scale = max;
       fillLobe(lobeA, dirs, fA, max);
       lobeB.visible = Boolean(fB);
       if (fB) fillLobe(lobeB, dirs, fB, max);
@@ -196,6 +198,25 @@ export function createLobeView(container, { onContextChange } = {}) {
         if (d) arrows[key].setDirection(new THREE.Vector3(...d).normalize());
       }
       viewport?.invalidate();
+    },
+    /**
+     * For tests, what is drawn, in the patch's frame (n = z, x along t): each vertex of lobe A as its direction and
+     * its distance from the centre times the scale, and the arrows' directions.
+     */
+    drawn() {
+      const pos = lobeA.geometry.attributes.position;
+      const inPatch = (w) => w.applyEuler(plane.rotation).toArray();
+      const lobe = dirs.map((d, i) => ({
+        dir: inPatch(new THREE.Vector3(...d)),
+        value: new THREE.Vector3().fromBufferAttribute(pos, i).length() * scale,
+      }));
+      const shown = Object.entries(arrows).filter(([, a]) => a.visible);
+      return {
+        lobe,
+        arrows: Object.fromEntries(
+          shown.map(([k, a]) => [k, inPatch(new THREE.Vector3(0, 1, 0).applyQuaternion(a.quaternion))]),
+        ),
+      };
     },
     dispose() {
       controls?.dispose();

@@ -14,6 +14,7 @@ import { anisotropicAlphas } from '../../math/anisotropic.js';
 import { microfacetInput, termAt } from '../../math/catalogue/microfacet-input.js';
 import { anisotropicForm } from '../../math/catalogue/anisotropic-forms.js';
 import { LAYER_KEYS, layerLuminances, openPbrAlbedo, openPbrSpec, openPbrValue } from './openpbr-lobe.js';
+import { planeAzimuth, turnAboutN } from './azimuths.js';
 
 /**
  * A's anisotropic lobe, when its anisotropy is above 0 and its D has an anisotropic form in the catalogue
@@ -27,16 +28,15 @@ export function anisotropyOf(state, D, V) {
     D: stretched.key,
     V: anisotropicForm('visibility', V)?.key ?? null,
     pair: anisotropicAlphas(state.alpha, state.anisotropy, state.convention),
-    phi: state.phi * DEG,
+    phi: planeAzimuth(state),
   };
 }
-
-/** w of the plane of incidence's frame (x in the plane) in the tangent frame: turned by φ about n. */
-const toTangent = ([x, y, z], phi) => [x * Math.cos(phi) - y * Math.sin(phi), x * Math.sin(phi) + y * Math.cos(phi), z];
 
 /** The light at θl on the left of n, the view at θv (+: the mirror side), in the plane of incidence (x, z). */
 export const lightDir = (deg) => [-Math.sin(deg * DEG), 0, Math.cos(deg * DEG)];
 export const viewDir = (deg) => [Math.sin(deg * DEG), 0, Math.cos(deg * DEG)];
+/** The state's view, turned off the plane of incidence by its Δφ. */
+export const viewOf = (state) => turnAboutN(viewDir(state.viewTheta), state.viewPhi * DEG);
 
 /** The view angles of the lobes in the plane of incidence: −89° to 89° every 0.5°. */
 const LOBE_ANGLES = Array.from({ length: 357 }, (_, i) => -89 + i * 0.5);
@@ -111,7 +111,7 @@ const brdfSpecs = (state, custom = {}) => [
  */
 function termsAt(l, v, a, p) {
   const c = p.custom ?? {};
-  const m = p.aniso && microfacetInput(toTangent(l, p.aniso.phi), toTangent(v, p.aniso.phi), p.aniso.pair);
+  const m = p.aniso && microfacetInput(turnAboutN(l, p.aniso.phi), turnAboutN(v, p.aniso.phi), p.aniso.pair);
   const isoD = () => NDF_TERMS[p.D](a.nh, p, a.h[0] * a.h[0] + a.h[1] * a.h[1]);
   const D = c.D ? c.D(a) : m ? termAt(termEntry('ndf', p.aniso.D), m, {}) : isoD();
   const anisoV = m && p.aniso.V;
@@ -181,7 +181,7 @@ function multipleScattering(state, A, l) {
  */
 export function lobeScene(state, custom = {}) {
   const l = lightDir(state.lightTheta);
-  const v = viewDir(state.viewTheta);
+  const v = viewOf(state);
   const [A, B = null] = brdfSpecs(state, custom);
   const fA = lobeFunction(state, l, A);
   const fB = B ? lobeFunction(state, l, B) : null;
@@ -212,15 +212,17 @@ function openPbrLayerLobes(state, l, A) {
 export const lobePeak = (lobe) => lobe.reduce((a, x) => (x[1] > a[1] ? x : a));
 
 /**
- * E(θv) = ∫ f (n·l) dω of p, all factors on, by importance sampling GGX at its α (512 samples); a whole custom
- * BRDF brings its own (a quadrature on the GPU's values, custom-tables.js).
+ * E(θv) = ∫ f (n·l) dω of p, all factors on, by importance sampling GGX at its α (512 samples), the view turned
+ * off the plane by `turn` (radians; an anisotropic A's albedo depends on it); a whole custom BRDF brings its own
+ * (a quadrature on the GPU's values, custom-tables.js).
  */
-export const albedoCurve = (p) =>
+export const albedoCurve = (p, turn = 0) =>
   p.custom?.brdf?.albedo ??
-  (p.openpbr && openPbrAlbedo(p, ALBEDO_ANGLES)) ??
-  ALBEDO_ANGLES.map((deg) =>
-    reflectanceImportanceGGX((l, v) => factorsOf(l, v, p), directionFromCos(Math.cos(deg * DEG)), p.samplingAlpha, 512),
-  );
+  (p.openpbr && openPbrAlbedo(p, ALBEDO_ANGLES, turn)) ??
+  ALBEDO_ANGLES.map((deg) => {
+    const v = turnAboutN(directionFromCos(Math.cos(deg * DEG)), turn);
+    return reflectanceImportanceGGX((l, w) => factorsOf(l, w, p), v, p.samplingAlpha, 512);
+  });
 
 /**
  * F, D, G and f of p at (l, v) with angles a; F, D and G are 1 where f has no half vector or is below, and null

@@ -5,6 +5,7 @@ import { openPbrBaseRoughness, openPbrLayers, openPbrMaterial } from '../../math
 import { luminanceRec709, srgbToLinear } from '../../math/color.js';
 import { directionFromCos, hemisphereIntegral, reflectanceImportanceGGX } from '../../math/integrate.js';
 import { DEG } from '../../math/angles.js';
+import { planeAzimuth, turnAboutN } from './azimuths.js';
 
 /** The layers' parts as openPbrLayers names them, with the words and colours the views give them. */
 export const OPENPBR_LAYERS = {
@@ -40,11 +41,8 @@ export function openPbrMaterialOf(state) {
   return openPbrMaterial({ ...m, specular_roughness_anisotropy: state.anisotropy });
 }
 
-/** Turns w of the plane of incidence's frame into the tangent frame (by φ about n). */
-const toTangent = ([x, y, z], phi) => [x * Math.cos(phi) - y * Math.sin(phi), x * Math.sin(phi) + y * Math.cos(phi), z];
-
-/** Every layer's part at (l, v) in the plane's frame, [r, g, b] in 1/sr each (openPbrLayers). */
-export const layersAt = (l, v, p) => openPbrLayers(toTangent(l, p.phi), toTangent(v, p.phi), p.openpbr);
+/** Every layer's part at (l, v) in the plane's frame (turned into the tangent's), [r, g, b] in 1/sr each. */
+export const layersAt = (l, v, p) => openPbrLayers(turnAboutN(l, p.phi), turnAboutN(v, p.phi), p.openpbr);
 
 /** The luminance (Rec. 709 Y) of each layer's part at (l, v), and of the whole (`all`), in 1/sr. */
 export function layerLuminances(l, v, p) {
@@ -59,7 +57,7 @@ export const openPbrValue = (l, v, p, layer = 'all') => layerLuminances(l, v, p)
 
 /** A's spec in OpenPBR mode: the material, the plane's azimuth, and no factors to switch. */
 export function openPbrSpec(state) {
-  return { openpbr: openPbrMaterialOf(state), phi: state.phi * DEG, custom: {}, aniso: null, label: 'A: OpenPBR' };
+  return { openpbr: openPbrMaterialOf(state), phi: planeAzimuth(state), custom: {}, aniso: null, label: 'A: OpenPBR' };
 }
 
 const GLOSS_SAMPLES = 256; // per angle, for each of the two GGX lobes (the base's, the coat's)
@@ -68,9 +66,9 @@ const SMOOTH_CELLS = 16; // the midpoint rule's n: 16 × 32 cells for the diffus
 /**
  * E(θv) of the whole stack at each angle: each layer integrated as suits its lobe, the gloss and metal by
  * importance sampling GGX at the base's α, the coat at its own (GLOSS_SAMPLES each), the diffuse and fuzz lobes
- * by the midpoint rule over (n·l, φ).
+ * by the midpoint rule over (n·l, φ); the view turned off the plane by `turn` (radians).
  */
-export function openPbrAlbedo(p, angles) {
+export function openPbrAlbedo(p, angles, turn = 0) {
   const m = p.openpbr;
   const alphaBase = Math.max(openPbrBaseRoughness(m) ** 2, 1e-3);
   const alphaCoat = Math.max(m.coat_roughness ** 2, 1e-3);
@@ -79,7 +77,7 @@ export function openPbrAlbedo(p, angles) {
     return keys.reduce((s, k) => s + y[k], 0);
   };
   return Array.from(angles, (deg) => {
-    const v = directionFromCos(Math.cos(deg * DEG));
+    const v = turnAboutN(directionFromCos(Math.cos(deg * DEG)), turn);
     const glossy = reflectanceImportanceGGX(sum(['specular', 'metal']), v, alphaBase, GLOSS_SAMPLES);
     const coat = m.coat_weight > 0 ? reflectanceImportanceGGX(sum(['coat']), v, alphaCoat, GLOSS_SAMPLES) : 0;
     const smooth = hemisphereIntegral((l) => sum(['diffuse', 'fuzz'])(l, v), SMOOTH_CELLS);

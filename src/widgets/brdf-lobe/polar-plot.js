@@ -4,6 +4,7 @@
 
 import { sizeCanvas2d } from '../../core/ui/canvas2d.js';
 import { DEG } from '../../math/angles.js';
+import { wrapDegrees } from './azimuths.js';
 import { dialGeometry, directionsOf, layOutLabels, polarLabelSpecs, SMALL_FONT, toXY } from './polar-labels.js';
 
 const COLORS = {
@@ -90,13 +91,16 @@ function drawWalkPoints(ctx, g, spec) {
   }
 }
 
-/** One direction from the centre to the dial, with a dot (big for the handles l and v). */
-function drawArrow(ctx, g, theta, color, name) {
+/**
+ * One direction from the centre to the dial, with a dot (big for the handles l and v); `hollow`: a ring and a
+ * dashed line (the view off the plane, drawn at its θv).
+ */
+function drawArrow(ctx, g, theta, color, name, hollow = false) {
   const [x, y] = toXY(g, theta, 1);
   ctx.strokeStyle = color;
   ctx.fillStyle = color;
   ctx.lineWidth = 2;
-  ctx.setLineDash(name === 'mirror' ? [4, 4] : []);
+  ctx.setLineDash(name === 'mirror' || hollow ? [4, 4] : []);
   ctx.beginPath();
   ctx.moveTo(g.cx, g.cy);
   ctx.lineTo(x, y);
@@ -104,7 +108,11 @@ function drawArrow(ctx, g, theta, color, name) {
   ctx.setLineDash([]);
   ctx.beginPath();
   ctx.arc(x, y, name === 'l' || name === 'v' ? 7 : 3, 0, 2 * Math.PI);
-  ctx.fill();
+  if (hollow) {
+    ctx.fillStyle = '#ffffff';
+    ctx.fill();
+    ctx.stroke();
+  } else ctx.fill();
 }
 
 /** Every word of the plot, each where it covers no other (polar-labels.js). */
@@ -122,7 +130,8 @@ function drawLabels(ctx, g, spec) {
 
 /**
  * The handles: a drag moves the one nearest the pointer, the arrow keys move l (↑/↓) and v (←/→) by 5° (Shift:
- * 1°). `shown()` is the last spec drawn (null before the first); `onDrag(partialState)`.
+ * 1°); Page Up/Page Down turn the light's azimuth φl, [ and ] the view's Δφ (the same steps, wrapped around n).
+ * `shown()` is the last spec drawn (null before the first); `onDrag(partialState)`.
  */
 function attachHandles(canvas, shown, onDrag) {
   let dragging = null;
@@ -155,7 +164,13 @@ function attachHandles(canvas, shown, onDrag) {
       ArrowDown: { lightTheta: last.lightTheta + step },
       ArrowLeft: { viewTheta: last.viewTheta - step },
       ArrowRight: { viewTheta: last.viewTheta + step },
+      PageUp: { lightPhi: wrapDegrees(last.lightPhi + step) },
+      PageDown: { lightPhi: wrapDegrees(last.lightPhi - step) },
+      ']': { viewPhi: wrapDegrees(last.viewPhi + step, -180) },
+      '[': { viewPhi: wrapDegrees(last.viewPhi - step, -180) },
     };
+    moves['}'] = moves[']']; // with Shift, as a US keyboard names them
+    moves['{'] = moves['['];
     if (!moves[e.key]) return;
     e.preventDefault();
     onDrag(moves[e.key]);
@@ -179,8 +194,8 @@ export function createPolarPlot(container, { onDrag }) {
   let last = null;
 
   /**
-   * spec: { lobeA, lobeB, lobeMS, points, parts, max, lightTheta, viewTheta, halfTheta } (lobes [θ, value], θ in
-   * °; parts: [{ lobe, color, dash }], OpenPBR's layers).
+   * spec: { lobeA, lobeB, lobeMS, points, parts, max, lightTheta, viewTheta, lightPhi, viewPhi, halfTheta, viewOff }
+   * (lobes [θ, value], θ in °; parts: [{ lobe, color, dash }], OpenPBR's layers; viewOff: v is off the plane).
    */
   function draw(spec) {
     last = spec;
@@ -190,7 +205,8 @@ export function createPolarPlot(container, { onDrag }) {
     drawGrid(ctx, g);
     drawLobes(ctx, g, spec);
     drawWalkPoints(ctx, g, spec);
-    for (const [theta, color, name] of directionsOf(spec)) drawArrow(ctx, g, theta, color, name);
+    for (const [theta, color, name] of directionsOf(spec))
+      drawArrow(ctx, g, theta, color, name, name === 'v' && spec.viewOff);
     drawLabels(ctx, g, spec);
   }
   attachHandles(canvas, () => last, onDrag);

@@ -4,6 +4,7 @@
 import { factorsAt, factorsOf, kullaContyAt } from './model.js';
 import { LAYER_KEYS, OPENPBR_LAYERS, layersAt } from './openpbr-lobe.js';
 import { luminanceRec709 } from '../../math/color.js';
+import { viewAzimuth } from './azimuths.js';
 
 /** The table's head: a whole custom BRDF is no F·D·G/(4 n·l n·v). */
 export const tableHead = (state) =>
@@ -57,6 +58,12 @@ function layersTable({ l, v, A }) {
   );
 }
 
+/** The azimuths in the caption when they matter: an anisotropic A, or a view off the plane of incidence. */
+const azimuths = (state) =>
+  state.anisotropy > 0 || state.viewPhi
+    ? ` (azimuths from t: l ${state.lightPhi}°, v ${viewAzimuth(state)}°, Δφ ${state.viewPhi}° off the plane)`
+    : '';
+
 export function createReadout(container) {
   const readout = document.createElement('div');
   container.append(readout);
@@ -64,7 +71,8 @@ export function createReadout(container) {
     draw(state, scene) {
       const { a } = scene;
       const caption =
-        `At l = ${state.lightTheta}°, v = ${state.viewTheta}°: n·l ${a.nl.toFixed(3)}, n·v ${a.nv.toFixed(3)}, ` +
+        `At l = ${state.lightTheta}°, v = ${state.viewTheta}°${azimuths(state)}: n·l ${a.nl.toFixed(3)}, ` +
+        `n·v ${a.nv.toFixed(3)}, ` +
         `n·h ${a.nh.toFixed(3)}, l·h ${a.lh.toFixed(3)}`;
       const rows = [scene.A, scene.B].filter(Boolean).map((p) => row(scene, p));
       readout.innerHTML =

@@ -1,4 +1,4 @@
-// The BRDF lobe's state: the light and view in the plane of incidence, BRDF A's terms and roughness, the factors
+// The BRDF lobe's state: the light and view (each at its own azimuth), BRDF A's terms and roughness, the factors
 // switched on, the overlays (intensity, multiple scattering, BRDF B) and the φd of the (θh, θd) images. A's D, V
 // and F, or A as a whole, can be the user's own GLSL (`custom`): its code and its sliders' values are fields too.
 import { termOptions } from '../../math/catalogue/index.js';
@@ -70,9 +70,29 @@ export const schema = {
   codeF: code('F', 'A: your F (GLSL)'),
   codeBRDF: code('brdf', 'A: your BRDF (GLSL)'),
   params: { type: 'params', default: {}, label: 'Sliders of your code' },
-  // beyond the talk (issue 28): the plane of incidence at any azimuth from the tangent, and A's GGX or Beckmann
-  // stretched along the tangent
-  phi: { type: 'number', min: 0, max: 180, step: 1, default: 0, label: 'Plane of incidence φ from t', unit: '°' },
+  // beyond the talk (issue 28): the light's azimuth from the tangent (the plane of incidence goes through it), the
+  // view's own azimuth off that plane (azimuths.js), and A's GGX or Beckmann stretched along the tangent. An old
+  // link's `phi` (the plane's azimuth, the light opposite it) reads as φl: the old scene turned by 180° about n,
+  // whose values no term here tells apart (an anisotropic D and Λ read cos²φ and sin²φ only).
+  lightPhi: {
+    type: 'number',
+    min: 0,
+    max: 360,
+    step: 1,
+    default: 180,
+    label: 'Light azimuth φl from t',
+    unit: '°',
+    formerly: ['phi'],
+  },
+  viewPhi: {
+    type: 'number',
+    min: -180,
+    max: 180,
+    step: 1,
+    default: 0,
+    label: 'View azimuth Δφ off the plane of incidence',
+    unit: '°',
+  },
   anisotropy: { type: 'number', min: 0, max: 1, step: 0.01, default: 0, label: 'A: anisotropy (GGX, Beckmann)' },
   convention: {
     type: 'enum',

@@ -8,7 +8,8 @@ import {
 } from '../../core/framework/formula-registry.js';
 import { brdfAngles } from '../../math/brdf.js';
 import { termEntry } from '../../math/catalogue/index.js';
-import { brdfSpec, factorsAt, lightDir, lobePeak, viewDir } from './model.js';
+import { brdfSpec, factorsAt, lightDir, lobePeak, viewOf } from './model.js';
+import { viewAzimuth } from './azimuths.js';
 import { LAYER_KEYS, OPENPBR_LAYERS, layerLuminances, openPbrSpec } from './openpbr-lobe.js';
 
 export const TITLE = 'BRDF lobe';
@@ -26,10 +27,12 @@ export const ABOUT =
   'Conty 2017), nearly diffuse in shape, with dots from the random walk on the microsurface (Heitz et al. ' +
   '2016) that it approximates. Choose Custom in A’s D, V or F menu, or as A’s whole BRDF, to draw a term ' +
   'you write in GLSL: it is checked on the GPU beside the editor, and B stays a catalogue term to compare with. ' +
-  'Beyond the talk, whose BRDFs are isotropic: the plane of incidence turns to any azimuth φ from the surface’s ' +
-  'tangent, and A’s anisotropy stretches GGX or Beckmann along that tangent (Heitz 2014’s forms; (αx, αy) by ' +
-  'Burley 2012, glTF’s KHR_materials_anisotropy or OpenPBR 1.1), with height-correlated Smith GGX then ' +
-  'anisotropic too. Turn φ: an isotropic lobe stays the same, an anisotropic one is widest along the tangent. ' +
+  'Beyond the talk, whose BRDFs are isotropic: the light has an azimuth φl from the surface’s tangent t (the ' +
+  'plane of incidence goes through it) and the view its own, Δφ off that plane (Page Up/Down and [ ] on the ' +
+  'polar plot), and A’s anisotropy stretches GGX or Beckmann along the tangent (Heitz 2014’s forms; (αx, αy) ' +
+  'by Burley 2012, glTF’s KHR_materials_anisotropy or OpenPBR 1.1), with height-correlated Smith GGX then ' +
+  'anisotropic too. Turn φl: an isotropic lobe stays the same, an anisotropic one is widest along the tangent. ' +
+  'The polar plot stays in the plane of incidence; a view off it is a hollow handle at its θv. ' +
   'Past the talk, A’s model OpenPBR Surface (2024) stacks these terms into a base, its specular lobe, a coat and ' +
   'a fuzz (parameters in its folder, by the specification’s names): the lobe is then the luminance of its RGB ' +
   'value, each line one layer’s part of it, and the wire grid the part of the layer chosen; F, D, G and the ' +
@@ -89,9 +92,11 @@ export function describePolar(state, scene) {
     return `${OPENPBR_LAYERS[key].label} peaks at ${theta.toFixed(1)}° (${value.toPrecision(3)} /sr)`;
   });
   if (layers.length) peaks.push(`Lines, A's layers' parts of its luminance: ${layers.join('; ')}`);
+  const offPlane = state.viewPhi ? ` (${state.viewPhi}° off the plane: the hollow handle)` : '';
   return (
     `Polar plot in the plane of incidence: ${what}. Light ${state.lightTheta}° from n on the left, view at ` +
-    `${state.viewTheta}°, mirror direction at ${state.lightTheta}°. ${peaks.join('; ')}.${multipleWords(state, ms)}`
+    `${state.viewTheta}°${offPlane}, mirror direction at ${state.lightTheta}°. ${peaks.join('; ')}.` +
+    multipleWords(state, ms)
   );
 }
 
@@ -105,8 +110,9 @@ export function describeLobe3d(state, scene) {
   return (
     `3-D lobe of ${A.label}${B ? ` (solid) and ${B.label} (wireframe)` : layer} over the hemisphere, light ` +
     `${state.lightTheta}° from n; each direction's distance from the centre is ${state.cosine ? 'f × n·v' : 'f'}, ` +
-    `scaled to ${max.toPrecision(3)}. Arrows: n, l, v, h and the mirror direction, in the plane of incidence ` +
-    `(the blue pane), ${state.phi}° about n from the tangent t (the dark red arrow).` +
+    `scaled to ${max.toPrecision(3)}. Arrows: n, l, v, h and the mirror direction. The plane of incidence (the ` +
+    `blue pane) goes through the light's azimuth, ${state.lightPhi}° about n from the tangent t (the dark red ` +
+    `arrow); the view is ${state.viewPhi}° off it, at ${viewAzimuth(state)}° from t.` +
     (A.aniso
       ? ` A is anisotropic, (αx, αy) = (${A.aniso.pair.map((x) => x.toPrecision(3)).join(', ')}): its lobe ` +
         `stretches along t${A.aniso.V ? '' : `; its V stays isotropic at α ${state.alpha}`}.`
@@ -119,9 +125,16 @@ export const describeImage = (state, p, alpha) => `${p.label}, α ${alpha}, F0 $
 
 let memo = { key: '', spec: null }; // BRDF A's matched parameters: a root search for an NDF other than GGX
 function specA(state) {
-  const key = [state.D, state.V, state.F, state.f0, state.alpha, state.anisotropy, state.convention, state.phi].join(
-    '|',
-  );
+  const key = [
+    state.D,
+    state.V,
+    state.F,
+    state.f0,
+    state.alpha,
+    state.anisotropy,
+    state.convention,
+    state.lightPhi,
+  ].join('|');
   if (memo.key !== key) memo = { key, spec: brdfSpec(state, 'A') };
   return memo.spec;
 }
@@ -138,9 +151,14 @@ function symbolic(state) {
   return state.useDenominator ? `\\frac{${numerator}}{${bottom}}` : numerator;
 }
 
+/** The light's and view's angles; their azimuths when they matter (an anisotropic A, or a view off the plane). */
 const LIGHT_VIEW = (state) =>
   `\\sym{lightTheta}{\\theta_l = ${texNumber(state.lightTheta, 1)}^\\circ},\\ ` +
-  `\\sym{viewTheta}{\\theta_v = ${texNumber(state.viewTheta, 1)}^\\circ}`;
+  `\\sym{viewTheta}{\\theta_v = ${texNumber(state.viewTheta, 1)}^\\circ}` +
+  (state.anisotropy > 0 || state.viewPhi
+    ? `,\\ \\sym{lightPhi}{\\phi_l = ${texNumber(state.lightPhi, 1)}^\\circ},\\ ` +
+      `\\sym{viewPhi}{\\Delta\\phi = ${texNumber(state.viewPhi, 1)}^\\circ}`
+    : '');
 
 /** A's D, G and F as named in the formula: a catalogue term, or the user's (named as the explorers name it). */
 function termsTex(state) {
@@ -180,7 +198,7 @@ function valuesTex(state, t, a) {
 
 /** OpenPBR's lobe at (l, v): the luminance of each layer's part, already weighted by the layers above it. */
 function openPbrTex(state) {
-  const y = layerLuminances(lightDir(state.lightTheta), viewDir(state.viewTheta), openPbrSpec(state));
+  const y = layerLuminances(lightDir(state.lightTheta), viewOf(state), openPbrSpec(state));
   const names = { specular: 'spec', diffuse: 'diff', metal: 'metal', coat: 'coat', fuzz: 'fuzz' };
   const sum = LAYER_KEYS.map((k) => `Y_{\\text{${names[k]}}}`).join(' + ');
   const values = LAYER_KEYS.map((k) => texNumber(y[k], 4)).join(' + ');
@@ -201,7 +219,7 @@ export const FORMULA = declareFormula('brdf-lobe', (state) => {
     return `\\begin{gathered}${f}\\\\ ${LIGHT_VIEW(state)}\\end{gathered}`;
   }
   const p = specA(state);
-  const [l, v] = [lightDir(state.lightTheta), viewDir(state.viewTheta)];
+  const [l, v] = [lightDir(state.lightTheta), viewOf(state)];
   const a = brdfAngles(l, v);
   const f = `f(\\mathbf{l},\\mathbf{v}) = ${symbolic(state)} = ${valuesTex(state, factorsAt(l, v, a, p), a)}`;
   const f0 = state.F === 'one' ? '' : `\\sym{f0}{F_0 = ${texNumber(state.f0, 3)}},\\ `;

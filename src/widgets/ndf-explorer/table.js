@@ -10,7 +10,10 @@ const row = (c) =>
   `<td>${Math.abs(c.integral - 1).toExponential(1)}</td><td>${c.values[0].toPrecision(4)}</td></tr>`;
 
 export function createNdfTable(container) {
-  const table = document.createElement('div');
+  // a box of its own that scrolls: the table is wider than a phone (its five columns) and must not widen the page
+  const table = Object.assign(document.createElement('div'), { className: 'table-scroll', tabIndex: 0 });
+  table.setAttribute('role', 'region');
+  table.setAttribute('aria-label', 'Normalisation of each NDF, measured');
   container.append(table);
   return {
     draw(curves) {
