@@ -116,7 +116,9 @@ const EXAMPLE_LABELS = Object.fromEntries(Object.entries(EXAMPLES).map(([k, e]) 
 
 /**
  * Waits for the widget's picture to settle (a Monte Carlo reference: until it has its samples; measured-brdf: the
- * table of the example its state names, read in a Web Worker that no hook counts, is the one it shows), its
+ * table of the example its state names, read in a Web Worker that no hook counts, is the one it shows, and its five
+ * fits, made in that worker and drawn as each comes, are all in: at a load average of 45 the picture changed in 13 %
+ * of its pixels between two settles when only the table was waited for), its
  * notices dismissed first (read before this: they push the view down, out of the frame, where it stops drawing),
  * and for its page to keep its height and words for 500 ms (work that comes late: a user-written term's editor,
  * loaded on demand, and its checks), then for nothing pending in it.
@@ -129,7 +131,9 @@ async function settled(frame) {
       const p = widget.getProgress?.();
       const measured = globalThis.__shadingLab.widgets['measured-brdf'];
       const source = document.querySelector('.measured-source')?.textContent ?? '';
-      return (!p || p.frame >= p.target) && (!measured || source.startsWith(labels[measured.getState().example]));
+      const fitted = document.querySelector('progress[aria-label="Fitting progress"]')?.value === 1;
+      const table = source.startsWith(labels[measured?.getState().example]);
+      return (!p || p.frame >= p.target) && (!measured || (table && fitted));
     },
     { timeout: 90_000 },
     EXAMPLE_LABELS,
