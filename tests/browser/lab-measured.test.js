@@ -147,8 +147,6 @@ const setAndConverge = async (state) => {
 };
 
 beforeAll(async () => {
-  file = join(mkdtempSync(join(tmpdir(), 'merl-')), 'synthetic-ggx.binary');
-  writeFileSync(file, new Uint8Array(writeMerl(modelBRDF('ggx', TRUTH))));
   browser = await launchBrowser();
   // the lab's images are 192 × 192 whatever the window: a small one spares SwiftShader the display's pixels
   page = await open(browser, `rendering.html?${QUERY}&lab.environment=studio`, {
@@ -160,6 +158,9 @@ beforeAll(async () => {
   const lab = await page.waitForSelector('.widget-material-lab', { timeout: 120_000 });
   await lab.evaluate((el) => el.scrollIntoView());
   await page.waitForFunction(() => globalThis.__shadingLab?.widgets?.lab, { timeout: 120_000 });
+  // written while Chromium draws the lab's first reference (seconds of Node's time; the page's work is its own)
+  file = join(mkdtempSync(join(tmpdir(), 'merl-')), 'synthetic-ggx.binary');
+  writeFileSync(file, new Uint8Array(writeMerl(modelBRDF('ggx', TRUTH))));
 }, 180_000);
 afterAll(async () => {
   await browser?.close();
