@@ -73,7 +73,7 @@ export function createLabRenderer(renderer, { dfg, resolution, slots = 1 }) {
       const defines = sceneDefines(scene, false);
       const fresh = !programs.has(scene, defines);
       const program = programs.get(scene, defines);
-      if (fresh) pass.render(renderer, program, target); // compiles: not the cost
+      if (fresh) compileInto(renderer, pass, program, target); // the compile is not the cost
       sync(errors.target); // finish earlier work so it is not counted
       const t0 = performance.now();
       pass.render(renderer, program, target);
@@ -163,6 +163,18 @@ function createErrorSum(renderer, { res, pass }) {
       [target, material, sum].forEach((x) => x.dispose());
     },
   };
+}
+
+/**
+ * Draws `program` into one texel of `target`: compiled and linked without shading the whole image, which the timed
+ * render then does (on software WebGL a 256-sample image was drawn twice for a new program).
+ */
+function compileInto(renderer, pass, program, target) {
+  target.scissor.set(0, 0, 1, 1);
+  target.scissorTest = true;
+  pass.render(renderer, program, target);
+  target.scissorTest = false;
+  target.scissor.set(0, 0, target.width, target.height);
 }
 
 /** Waits for the GPU to finish the work drawn into `target` so far (a 1-texel read). */
