@@ -198,7 +198,7 @@ describe('guided tour', () => {
         i > 0 && steps[i - 1].widget === s.widget && Object.keys(steps[i - 1].state).some((key) => !(key in s.state)),
     );
     expect(k).toBeGreaterThan(0);
-    // the state the walk above found there (walked to from step k, by the keyboard), else walked to here
+    // the state the walk above found there (walked to from step k - 1 by the keyboard), else walked to here
     const walked = walkedState.get(steps[k].id) ?? (await walkTo(k));
     const direct = await openTour(browser, `#${steps[k].id}`);
     await onStep(direct, steps[k].id);
