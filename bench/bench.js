@@ -70,11 +70,13 @@ async function gpuCosts() {
   });
   const server = await serveStatic(outDir);
   const browser = await launchBrowser();
+  // --quick: one frame of a small pass and a small sphere, enough for the report's shape
+  const query = `${quick ? 'frames=1&size=32&sphereSize=64' : 'frames=9'}${familyKey ? `&family=${familyKey}` : ''}`;
   try {
     const page = await openPage(
       browser,
       server.url,
-      `bench/gpu-bench.html?frames=${quick ? 1 : 9}${familyKey ? `&family=${familyKey}` : ''}`,
+      `bench/gpu-bench.html?${query}`,
       // its load outlasted puppeteer's 30 s beside other work (the bench's test, at a load average of 45)
       { beforeLoad: (p) => p.setDefaultNavigationTimeout(300_000) },
     );

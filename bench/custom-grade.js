@@ -33,12 +33,14 @@ async function typeCode(page, code) {
 }
 
 /**
- * { runs, outDir, baseUrl, limit } → rows { id, inputs, firstMs, medianMs, passed } per shader exercise (the first
- * `limit` of them). Without `baseUrl` it builds the app into outDir and serves it.
+ * { runs, outDir, baseUrl, limit, browser } → rows { id, inputs, firstMs, medianMs, passed } per shader exercise (the
+ * first `limit` of them). Without `baseUrl` it builds the app into outDir and serves it; without `browser` (a
+ * launched Chromium, left open) it launches one of its own.
  */
-export async function measureCustomGrade({ runs = 5, outDir = join(ROOT, 'dist'), baseUrl, limit = Infinity } = {}) {
+export async function measureCustomGrade(options = {}) {
+  const { runs = 5, outDir = join(ROOT, 'dist'), baseUrl, limit = Infinity, browser: shared } = options;
   const server = baseUrl ? null : await serveStatic(await buildApp(outDir));
-  const browser = await launchBrowser();
+  const browser = shared ?? (await launchBrowser());
   const rows = [];
   try {
     const page = await openPage(browser, baseUrl ?? server.url, 'exercises.html', { width: 1280, height: 1000 });
@@ -62,7 +64,7 @@ export async function measureCustomGrade({ runs = 5, outDir = join(ROOT, 'dist')
     }
     await page.close();
   } finally {
-    await browser.close();
+    if (!shared) await browser.close();
     await server?.close();
   }
   return rows;

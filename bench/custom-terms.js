@@ -10,15 +10,19 @@ import { measureCustomGrade, printCustomGrade } from './custom-grade.js';
 
 /**
  * { edit: { medianMs, worstMs, edits, missed, editDelayMs }, grade: rows }, on the app built into BUILT_APP when set
- * (else a temporary folder); --quick: two edits and two exercises graded twice, to check the part runs.
+ * (else a temporary folder); --quick: two edits (the code pasted in, not typed) and two exercises graded twice, in
+ * one Chromium, to check the part runs.
  */
 export async function measureCustomTerms({ quick = false } = {}) {
   const outDir = process.env.BUILT_APP ?? mkdtempSync(join(tmpdir(), 'shading-lab-custom-'));
   const server = await serveStatic(await buildApp(resolve(outDir)));
   const browser = await launchBrowser();
   try {
-    const edit = await measureCustomEdit({ url: server.url, browser, edits: quick ? 2 : 20 });
-    const grade = await measureCustomGrade({ runs: quick ? 1 : 5, baseUrl: server.url, limit: quick ? 2 : Infinity });
+    const edit = await measureCustomEdit({ url: server.url, browser, edits: quick ? 2 : 20, paste: quick });
+    // quick: the grades in the same Chromium (a full run grades in a Chromium of their own, as before)
+    const grade = quick
+      ? await measureCustomGrade({ runs: 1, baseUrl: server.url, limit: 2, browser })
+      : await measureCustomGrade({ runs: 5, baseUrl: server.url });
     return { edit, grade };
   } finally {
     await browser.close();

@@ -10,7 +10,10 @@ import { compareWithMeshStandard } from './versus-three.js';
 
 const params = new URLSearchParams(location.search);
 const FRAMES = Number(params.get('frames') ?? 9);
-const SIZE = 256;
+// --quick (the bench's test) asks for a small pass: only the report's shape is read, and software WebGL's cost
+// grows with the pixels
+const SIZE = Number(params.get('size') ?? 256);
+const SPHERE_SIZE = Number(params.get('sphereSize') ?? 512);
 const LOOPS = 16;
 
 const canvas = document.createElement('canvas');
@@ -95,7 +98,7 @@ for (const family of FAMILIES.filter((f) => !only || f.key === only)) {
 }
 window.__gpuBench = {
   done: true,
-  versusThree: only ? null : compareWithMeshStandard({ frames: FRAMES }),
+  versusThree: only ? null : compareWithMeshStandard({ size: SPHERE_SIZE, frames: FRAMES }),
   baselineMs: timeFrames(program('x * y')), // the loop and the pass alone: part of every frame above
   renderer: debug ? gl.getParameter(debug.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER),
   setup: { size: SIZE, loops: LOOPS, frames: FRAMES },

@@ -2,8 +2,9 @@
 // scripts/collect-saved-links.js from that tree) opens the same view in this one: a share link, a chapter page's
 // link and an embed `set` of each widget, every field set, and that build's widget exercises. "The same view" is
 // the state that build opened the link at, with the renames of tests/support/saved-links.js (not the schemas').
+import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
-import { coerceState, defaultState, stateToParams } from '../../src/core/framework/state.js';
+import { coerceState, currentNames, defaultState, stateToParams } from '../../src/core/framework/state.js';
 import { widgetParams } from '../../src/core/framework/widget-host.js';
 import { unknownKeys } from '../../src/core/framework/embed-protocol.js';
 import { validateExercise } from '../../src/exercises/validate.js';
@@ -75,4 +76,40 @@ describe('where a name is both a field and an old name, the value decides', () =
     const bad = coerceState(schema, { diffuse: 'chalk' });
     expect(bad.notices).toEqual([expect.stringMatching(/^Diffuse term: "chalk" is not one of lambert/)]);
   });
+});
+
+/** The attributes of the element of page `file` (its HTML source) that holds widget `name` under `prefix`. */
+function slotOf(file, name, prefix) {
+  const html = readFileSync(new URL(`../../${file}`, import.meta.url), 'utf8');
+  const tags = html.match(/<[^>]*\bdata-slot="[^"]*"[^>]*>/g) ?? [];
+  const attr = (tag, key) => tag.match(new RegExp(`\\b${key}="([^"]*)"`))?.[1];
+  const tag = tags.find((t) => attr(t, 'data-slot') === name && attr(t, 'data-prefix') === prefix);
+  const initial = tag && attr(tag, 'data-initial')?.replaceAll('&quot;', '"').replaceAll('&amp;', '&');
+  return tag ? { initial: initial ? JSON.parse(initial) : {} } : null;
+}
+
+/** What a page gives its widget's create: the slot's starting state under the URL's keys (widget-host.js mount). */
+const first = (schema, search, prefix, initial = {}) =>
+  coerceState(schema, {
+    ...currentNames(schema, initial),
+    ...currentNames(schema, widgetParams(search, prefix)),
+  });
+
+// tests/browser/saved-links.test.js opens the share links in Chromium and reads the widget's state there; a chapter
+// page's link differs from its share link only in how the page reads its URL, checked here
+describe('a chapter page’s saved link gives its widget the state the share link of that view gives', () => {
+  for (const saved of SAVED.links.filter((l) => l.form === 'page')) {
+    it(`${saved.widget}, ${saved.what}: ${saved.link.slice(0, 90)}`, async () => {
+      const schema = await schemaOf(saved.widget);
+      const share = SAVED.links.find((l) => l.form === 'share' && l.widget === saved.widget && l.what === saved.what);
+      expect(share, 'the share link of the same view').toBeTruthy();
+      const file = saved.link.slice(0, saved.link.indexOf('?'));
+      const slot = slotOf(file, saved.widget, saved.prefix);
+      expect(slot, `${file} holds ${saved.widget} under the prefix "${saved.prefix}"`).not.toBeNull();
+      const page = first(schema, saved.link.slice(file.length), saved.prefix, slot.initial);
+      const shared = first(schema, share.link.slice(share.link.indexOf('?')), '');
+      expect(page.notices).toEqual([]);
+      expect(page).toEqual(shared);
+    });
+  }
 });
