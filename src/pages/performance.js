@@ -131,8 +131,26 @@ function render() {
         : '');
     section.append(table);
   }
+  boxTables(root);
 }
 costSelect.addEventListener('change', render);
+
+/** The nearest heading above `el` in its section: what its table's box is called. */
+function headingOf(el) {
+  for (let e = el.previousElementSibling; e; e = e.previousElementSibling) if (e.tagName === 'H2') return e.textContent;
+  return el.parentElement ? headingOf(el.parentElement) : 'Figures';
+}
+
+/** Each table of `within` in a box of its own that scrolls sideways: on a phone its columns are wider than the page. */
+function boxTables(within) {
+  for (const table of within.querySelectorAll('table:not(.table-scroll table)')) {
+    const box = Object.assign(document.createElement('div'), { className: 'table-scroll', tabIndex: 0 });
+    box.setAttribute('role', 'region');
+    box.setAttribute('aria-label', `Table: ${headingOf(table)}`);
+    table.replaceWith(box);
+    box.append(table);
+  }
+}
 render();
 
 // image-based lighting: each method's error against the lab's Monte Carlo reference, against its GPU time
@@ -262,4 +280,5 @@ extra.innerHTML =
   '</tbody></table>';
 if (report.ibl) renderIbl(report.ibl);
 if (report.latency) renderLatency(report.latency);
+boxTables(extra.parentElement);
 publish('performance', report);

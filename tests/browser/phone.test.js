@@ -130,6 +130,22 @@ describe('on a phone (390 × 844, touch)', () => {
     await page.close();
   });
 
+  it('performance: no wider than the screen; each table scrolls in its own box, named, reached by Tab', async () => {
+    const page = await openPhone('performance.html');
+    await page.waitForSelector('#latency');
+    expect(await pageWidth(page)).toBeLessThanOrEqual(390);
+    const tables = await page.$$eval('main table', (ts) =>
+      ts.map((t) => {
+        const box = t.parentElement;
+        return [box.className, box.tabIndex, box.getAttribute('aria-label')?.startsWith('Table: ') ?? false];
+      }),
+    );
+    expect(tables.length).toBeGreaterThanOrEqual(10); // a table per family, the IBL's, the latency's, the pages'
+    expect(tables.filter(([c, tab, named]) => c !== 'table-scroll' || tab !== 0 || !named)).toEqual([]);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
+
   it('the tour: no wider than the screen, the step’s title on the first screen', async () => {
     const page = await openPhone('tour.html');
     await page.waitForFunction(() => document.querySelector('.tour-title')?.textContent.trim());
