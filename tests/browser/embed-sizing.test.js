@@ -71,19 +71,24 @@ describe('embedding', () => {
           noScroll: f.content <= f.inside,
           legendInSight: f.legendBottom <= f.inside,
         }));
-      await expect.poll(fits, { timeout: 20_000 }).toMatchObject({ grown: true, noScroll: true, legendInSight: true });
+      await expect.poll(fits, { timeout: WAIT_MS }).toMatchObject({ grown: true, noScroll: true, legendInSight: true });
       const before = (await fits()).element;
 
-      // the pointer on the sphere: the probe's table appears under the view, and the element grows with it
-      const box = await (await page.$('#zones')).boundingBox();
-      const canvas = await frame.$eval('.widget-fresnel-zones canvas', (c) => {
-        const r = c.getBoundingClientRect();
-        return { x: r.x + r.width / 2, y: r.y + r.height / 2 };
-      });
-      await page.mouse.move(box.x + canvas.x, box.y + canvas.y);
-      await frame.waitForFunction(() => document.querySelector('.probe table'), { timeout: 10_000 });
+      // the pointer on the sphere: the probe's table appears under the view, and the element grows with it. The
+      // sphere's place is measured again at each try: the element may still be growing (once seen to move the
+      // canvas away from a point measured once, in CI)
+      const pointAtSphere = async () => {
+        const box = await (await page.$('#zones')).boundingBox();
+        const canvas = await frame.$eval('.widget-fresnel-zones canvas', (c) => {
+          const r = c.getBoundingClientRect();
+          return { x: r.x + r.width / 2, y: r.y + r.height / 2 };
+        });
+        await page.mouse.move(box.x + canvas.x, box.y + canvas.y);
+        return frame.evaluate(() => Boolean(document.querySelector('.probe table')));
+      };
+      await expect.poll(pointAtSphere, { timeout: WAIT_MS }).toBe(true);
       await expect
-        .poll(fits, { timeout: 20_000 })
+        .poll(fits, { timeout: WAIT_MS })
         .toMatchObject({ noScroll: true, legendInSight: true, element: expect.toSatisfy((h) => h > before) });
       expect(page.errors).toEqual([]);
     },
