@@ -91,6 +91,9 @@ export default defineConfig({
           // WAIT_MS (180 s), so a loaded machine (two CPU hogs beside the suite: up to ~3 times as long) fails none
           testTimeout: 240_000,
           hookTimeout: 240_000,
+          // expect.poll's own default is 1 s: a condition a loaded machine takes longer to reach (a lil-gui folder's
+          // opening transition, in CI) failed there; a poll with no timeout of its own gets 60 s
+          expect: { poll: { timeout: 60_000 } },
           maxWorkers: 2,
         },
       },

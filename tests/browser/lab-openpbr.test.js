@@ -11,7 +11,7 @@ import { mkdtempSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { allowDownloads, getState, launchBrowser, open, untilIdle } from './helpers.js';
+import { WAIT_MS, allowDownloads, getState, launchBrowser, open, untilIdle } from './helpers.js';
 import { SMALL_VIEWPORT } from './harness.js';
 import { timeChange } from '../../bench/latency.js';
 import { openPbrAlbedo } from '../support/openpbr-albedo.js';
@@ -87,23 +87,24 @@ describe('the material lab renders OpenPBR Surface', () => {
     expect(await folders('base_color')).toEqual({ open: [], shown: false }); // the lab opens with them closed
     await choose('openpbr');
     await expect
-      .poll(() => folders('base_color'), { timeout: 30_000 })
+      .poll(() => folders('base_color'), { timeout: WAIT_MS })
       .toEqual({ open: ['OpenPBR base'], shown: true });
     // the user closes the base, opens the coat and works in it; back to the model, the coat closed again
     const title = (group) =>
       page.evaluateHandle((g) => [...document.querySelectorAll('.lil-title')].find((t) => t.textContent === g), group);
     await (await title('OpenPBR base')).click();
     await (await title('OpenPBR coat')).click();
-    await expect.poll(() => folders('coat_ior')).toEqual({ open: ['OpenPBR coat'], shown: true });
+    // lil-gui opens and closes a folder by a CSS transition: on a loaded machine it takes longer than expect.poll's 1 s
+    await expect.poll(() => folders('coat_ior'), { timeout: WAIT_MS }).toEqual({ open: ['OpenPBR coat'], shown: true });
     await page.evaluate(() => {
       const name = [...document.querySelectorAll('.lil-name')].find((n) => n.textContent === 'coat_ior');
       name.closest('.lil-controller').querySelector('input').focus();
     });
     await choose('model');
     await (await title('OpenPBR coat')).click();
-    await expect.poll(() => folders('coat_ior')).toEqual({ open: [], shown: false });
+    await expect.poll(() => folders('coat_ior'), { timeout: WAIT_MS }).toEqual({ open: [], shown: false });
     await choose('openpbr');
-    await expect.poll(() => folders('coat_ior'), { timeout: 30_000 }).toEqual({ open: ['OpenPBR coat'], shown: true });
+    await expect.poll(() => folders('coat_ior'), { timeout: WAIT_MS }).toEqual({ open: ['OpenPBR coat'], shown: true });
   });
 
   it('coat and fuzz off: an OpenPBR metal renders as the talk’s model (Schlick, GGX, correlated Smith)', async () => {
