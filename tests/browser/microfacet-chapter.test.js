@@ -109,6 +109,11 @@ describe('ndf-explorer, the log plot', () => {
     const box = await (await page.$(`${logPlot} .u-over`)).boundingBox();
     await page.mouse.move(box.x + box.width * 0.3, box.y + box.height * 0.5);
     await expect.poll(async () => (await values())[0]).not.toBe('—');
+    // the pointer leaves before the keyboard takes over: a late layout shift under it (a loaded machine) would
+    // otherwise move or hide the cursor the Home key placed
+    await page.mouse.move(0, 0);
+    await expect.poll(async () => (await values())[0]).toBe('—');
+    await untilIdle(page);
     await page.focus(`${logPlot} canvas`);
     await page.keyboard.press('Home');
     const curves = await page.evaluate(() => globalThis.__shadingLab.widgets['ndf-explorer'].getCurves());
