@@ -1,7 +1,17 @@
 // The diffuse chapter in a real Chromium: the rendered spheres read back and compared with src/math, the plots'
 // data against the JS terms, the URL state.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { getState, launchBrowser, open, setControl, shot, untilIdle, widget, withPixels } from './helpers.js';
+import {
+  getState,
+  launchBrowser,
+  open,
+  pointUntil,
+  setControl,
+  shot,
+  untilIdle,
+  widget,
+  withPixels,
+} from './helpers.js';
 import {
   diffuseFresnelWeighted,
   diffuseLambert,
@@ -100,12 +110,10 @@ describe('diffuse chapter page', () => {
     const img = await readSpheres(page);
     for (let i = 0; i < 5; i++) expect(findDisc(img, i, 5).r).toBeGreaterThan(20);
     // the probe at the centre of the fourth sphere (full Oren–Nayar; defaults sigma 40°, c 0.8, light at the viewer)
-    const box = await (await page.$('.sphere-grid canvas')).boundingBox();
-    await page.mouse.move(box.x + box.width * 0.7, box.y + box.height * 0.5);
-    await untilIdle(page);
     const ratio = diffuseOrenNayar(1, 1, 1, 40 * DEG, 0.8) / diffuseLambert(0.8);
-    expect(await page.$eval('.widget-diffuse-explorer .probe', (el) => el.textContent)).toContain(
-      `f / Lambert${ratio.toFixed(4)}`,
+    const probe = () => page.$eval('.widget-diffuse-explorer .probe', (el) => el.textContent);
+    await pointUntil(page, '.sphere-grid canvas', [0.7, 0.5], async () =>
+      (await probe()).includes(`f / Lambert${ratio.toFixed(4)}`),
     );
     expect(page.errors).toEqual([]);
     await page.close();

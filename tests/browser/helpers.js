@@ -152,6 +152,20 @@ export const afterFrames = (target, n) =>
     n,
   );
 
+/**
+ * Puts the pointer at the fractions `at` = [fx, fy] of `selector`'s box until `holds()` resolves true. The box is
+ * measured again at each try: on a loaded machine the layout may still be settling, and a point measured once has
+ * been seen to miss the element it aimed at (in CI).
+ */
+export async function pointUntil(page, selector, at, holds) {
+  const attempt = async () => {
+    const box = await (await page.$(selector)).boundingBox();
+    await page.mouse.move(box.x + box.width * at[0], box.y + box.height * at[1]);
+    return holds();
+  };
+  await expect.poll(attempt, { timeout: WAIT_MS }).toBe(true);
+}
+
 /** Waits for a widget instance to be registered under `key` (its name, or its prefix on a page), then for idle. */
 export async function widget(page, key) {
   await page.waitForFunction((k) => globalThis.__shadingLab?.widgets?.[k], { timeout: WAIT_MS }, key);

@@ -4,6 +4,7 @@ import {
   getState,
   launchBrowser,
   open as openSized,
+  pointUntil,
   redAt,
   setControl,
   shot,
@@ -88,11 +89,9 @@ describe('ndf-explorer', () => {
     expect(await shot(page, '.sphere-grid canvas')).not.toBe(before);
     expect(page.url()).toMatch(/hwhm=20/);
     // the probe: hover the middle of the third sphere (GGX)
-    const box = await (await page.$('.sphere-grid canvas')).boundingBox();
-    await page.mouse.move(box.x + box.width * 0.5, box.y + box.height * 0.5);
-    await untilIdle(page);
-    expect(await page.$eval('.widget-ndf-explorer .probe', (el) => el.textContent)).toMatch(
-      /GGX.*n·v1\.0000.*D\(n·h\)/s,
+    const probe = () => page.$eval('.widget-ndf-explorer .probe', (el) => el.textContent);
+    await pointUntil(page, '.sphere-grid canvas', [0.5, 0.5], async () =>
+      /GGX.*n·v1\.0000.*D\(n·h\)/s.test(await probe()),
     );
     expect(page.errors).toEqual([]);
     await page.close();
