@@ -8,7 +8,7 @@ export const materialxLines = (part) => [
     `writes it, and the app's \`shaders/openpbr.glsl\`, in Chromium under one directional light at ` +
     `${part.lightsDeg.join('°, ')}° × ${part.views} views; the app's radiance against MaterialX's per channel ` +
     `(r / g / b), relative to the larger of MaterialX's value and ${part.floor * 100} % of the material's peak. ` +
-    "\"With Turquin\": the catalogue's terms with MaterialX's multiple-scattering compensation put in (uncoated " +
+    '"With Turquin": the catalogue\'s terms with MaterialX\'s multiple-scattering compensation put in (uncoated ' +
     'isotropic materials only).',
   '',
   '| material | largest | mean | largest at (θl, θv, φv) | float64 `openPbrBRDF`: largest | with Turquin: largest |',

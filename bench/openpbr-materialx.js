@@ -106,7 +106,6 @@ export async function measureMaterialx() {
   }
 }
 
-
 /** The part as a table on stdout. */
 export function printMaterialx(part) {
   console.log(

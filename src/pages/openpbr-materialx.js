@@ -10,16 +10,17 @@ const LAYERS_TEXT = { '': 'base', coat: 'base + coat', 'coat fuzz': 'base + coat
 export const percent = (x) => (x < 1e-4 ? '< 0.01 %' : `${(x * 100).toFixed(2)} %`);
 /** Three channels' figures, r / g / b. */
 export const rgb = (xs) => xs.map(percent).join(' / ');
-const cell = (tag, html) => `<${tag}>${html}</${tag}>`;
+const cell = (tag, html) => `<${tag}>${html}</${tag.split(' ')[0]}>`;
 
-/** The random walk's column: the stack's largest albedo error, or why there is none. */
+/** The random walk's column: the largest albedo error of the family's stack with the same layers, or why none. */
 function walkCell(row, family) {
-  const layers = row.layers.join(' ');
   if (row.layers.includes('fuzz'))
-    return 'none: the walk has no fuzz; the fuzz is measured here against Zeltner, Burley & Chiang 2022’s lobe as ' +
-      'MaterialX implements it (left)';
-  const stack = family?.variants.find((v) => v.key === STACK_OF[layers]);
-  return stack ? `${stack.error.maxAbs.toFixed(3)} (stack “${stack.label}”)` : '—';
+    return (
+      '<td class="note">none: the walk has no fuzz. The fuzz here is against Zeltner, Burley & Chiang 2022’s ' +
+      'lobe as MaterialX implements it.</td>'
+    );
+  const stack = family?.variants.find((v) => v.key === STACK_OF[row.layers.join(' ')]);
+  return cell('td class="figure"', stack ? `${stack.error.maxAbs.toFixed(3)} (${stack.label.split(':')[0]})` : '—');
 }
 
 function rowHtml(row, family) {
@@ -28,12 +29,23 @@ function rowHtml(row, family) {
     '<tr>' +
     cell('th scope="row"', row.label) +
     cell('td', LAYERS_TEXT[row.layers.join(' ')]) +
-    cell('td', rgb(row.glsl.maxRelative)) +
-    cell('td', rgb(row.glsl.meanRelative)) +
-    cell('td', `θl ${w.thetaL}°, θv ${w.thetaV}°, φv ${w.phiV}° (${w.channel})`) +
-    cell('td', row.withTurquin ? percent(row.withTurquin.worst.relative) : '—') +
-    cell('td', walkCell(row, family)) +
+    cell('td class="figure"', rgb(row.glsl.maxRelative)) +
+    cell('td class="figure"', rgb(row.glsl.meanRelative)) +
+    cell('td class="figure"', `${w.thetaL}°, ${w.thetaV}°, ${w.phiV}° (${w.channel})`) +
+    cell('td class="figure"', row.withTurquin ? percent(row.withTurquin.worst.relative) : '—') +
+    walkCell(row, family) +
     '</tr>'
+  );
+}
+
+/** The velvet's figure beside its base's alone: the base's difference, not the fuzz's (when both were measured). */
+function velvetWords(rows) {
+  const [velvet, base] = ['velvet', 'velvet-base'].map((name) => rows.find((r) => r.name === name));
+  if (!velvet || !base?.withTurquin) return '';
+  return (
+    ` The velvet’s ${percent(velvet.glsl.worst.relative)} is its rough base’s: without the fuzz the base differs by ` +
+    `${percent(base.glsl.worst.relative)}, and by ${percent(base.withTurquin.worst.relative)} with the ` +
+    'compensation put in; its fuzz lobe is MaterialX’s own fit of the paper’s tables, which the app uses too.'
   );
 }
 
@@ -42,21 +54,23 @@ function introHtml(part) {
   const grazing = Math.min(...part.rows.map((r) => r.glsl.worst.thetaV));
   return (
     '<h3>Against the reference shader: MaterialX’s OpenPBR Surface</h3>' +
-    `<p class="domain">OpenPBR’s reference implementation is MaterialX’s node graph <code>open_pbr_surface</code>. ` +
-    `Its own GLSL (MaterialX ${part.materialx}’s shader generator) and this app’s shader both ran in the browser ` +
-    `under one directional light at ${part.lightsDeg.join('°, ')}° from the normal, seen from ${part.views} ` +
-    'directions (0° to 85° from the normal, 0° to 180° around it), for the material lab’s presets and one ' +
-    'material built up layer by layer. Each column of MaterialX figures is the difference of this app’s radiance ' +
+    '<p class="domain">OpenPBR’s reference implementation is MaterialX’s node graph <code>open_pbr_surface</code>. ' +
+    `Its own GLSL (written by MaterialX ${part.materialx}’s shader generator) and this app’s shader both ran in ` +
+    `the browser under one directional light at ${part.lightsDeg.join('°, ')}° from the normal, seen from ` +
+    `${part.views} directions (0° to 85° from the normal, 0° to 180° around it), for the material lab’s presets ` +
+    'and one material built up layer by layer. The MaterialX columns are the difference of this app’s radiance ' +
     'from MaterialX’s, per colour channel, <strong>relative</strong> to MaterialX’s value (a near-black sample ' +
     `counts against ${part.floor * 100} % of the material’s brightest one): relative, because the materials ` +
-    'range from near-black velvet to a gold highlight. The random-walk column is the error of the same layers’ ' +
-    'directional albedo (a fraction of the light, 0 to 1, not a percentage) against light followed through the ' +
-    `layers, the family’s table above, over its cases. Measured ${part.date.slice(0, 10)}.</p>` +
+    'range from near-black velvet to a gold highlight. The random-walk column is the largest error of the ' +
+    'directional albedo (a fraction of the light, 0 to 1, not a percentage) of the stack with the same layers, ' +
+    'against light followed through the layers: the family’s table above, over its cases, not these materials. ' +
+    `Measured ${part.date.slice(0, 10)}.</p>` +
     '<p>Most of the difference is deliberate. This app’s lobes scatter once, as in the talk; MaterialX adds ' +
-    'Turquin’s (2019) multiple-scattering compensation, which brightens rough and metallic surfaces. The column ' +
-    '“with Turquin’s compensation” puts that compensation into the catalogue’s terms (for the uncoated, ' +
-    'isotropic materials) and leaves what else differs: mostly MaterialX’s fitted albedo against this app’s ' +
-    `exact one. The largest differences are all at grazing views (θv ${grazing}° and beyond).</p>`
+    'Turquin’s (2019) multiple-scattering compensation, which brightens rough surfaces and metals. The column ' +
+    '“with Turquin’s compensation” puts it into the catalogue’s terms (for the uncoated, isotropic materials: ' +
+    'brushed aluminium is anisotropic) and leaves what else differs, mostly MaterialX’s fitted albedo against ' +
+    `this app’s exact one.${velvetWords(part.rows)} The largest differences are all at grazing views ` +
+    `(θv ${grazing}° and beyond), on the far side from the light.</p>`
   );
 }
 
@@ -67,10 +81,10 @@ export function materialxSection(part, family) {
   const head = [
     'Material',
     'Layers',
-    'vs MaterialX: largest (r / g / b)',
-    'vs MaterialX: mean (r / g / b)',
-    'Largest at',
-    'vs MaterialX, with Turquin’s compensation: largest',
+    'vs MaterialX: largest, r / g / b',
+    'vs MaterialX: mean, r / g / b',
+    'largest at θl, θv, φv',
+    'with Turquin’s compensation: largest',
     'vs random walk: largest albedo error',
   ];
   section.innerHTML =

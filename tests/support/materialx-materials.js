@@ -89,7 +89,8 @@ const fuzzOf = Object.fromEntries(Object.entries(fuzzy.inputs).filter(([k]) => k
 
 /**
  * The bench's materials (bench/openpbr-materialx.js): the material lab's presets (src/lab/openpbr-presets.js), then
- * one material built up layer by layer: the test's car paint without its coat, with it, and with a fuzz on top.
+ * one material built up layer by layer: the test's car paint without its coat, with it, and with a fuzz on top; and
+ * the velvet without its fuzz, which sets its base's difference apart from the fuzz's.
  */
 export const MATERIALX_BENCH_MATERIALS = [
   ...Object.keys(OPENPBR_PRESETS).map(presetMaterial),
@@ -113,5 +114,12 @@ export const MATERIALX_BENCH_MATERIALS = [
     source: 'the coated base under a fuzz (fuzz_color (0.8, 0.3, 0.5), fuzz_roughness 0.5)',
     inputs: { ...coated.inputs, ...fuzzOf },
     layers: ['coat', 'fuzz'],
+  },
+  {
+    name: 'velvet-base',
+    label: 'Velvet without its fuzz',
+    source: 'the velvet preset at fuzz_weight 0: what its base alone differs by, under the fuzz',
+    inputs: { ...OPENPBR_PRESETS.velvet.material, fuzz_weight: 0 },
+    layers: [],
   },
 ];

@@ -148,8 +148,17 @@ function renderInPage({ programs, lights, views, texture }) {
   gl.viewport(0, 0, w, h);
   gl.activeTexture(gl.TEXTURE1); // the app's albedo table, on unit 1 (unit 0 holds the target)
   gl.bindTexture(gl.TEXTURE_2D, gl.createTexture());
-  gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA32F, texture.width, texture.height, 0, gl.RGBA, gl.FLOAT,
-    new Float32Array(texture.data));
+  gl.texImage2D(
+    gl.TEXTURE_2D,
+    0,
+    gl.RGBA32F,
+    texture.width,
+    texture.height,
+    0,
+    gl.RGBA,
+    gl.FLOAT,
+    new Float32Array(texture.data),
+  );
   gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST); // no mipmaps: complete as it is
   gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
   gl.activeTexture(gl.TEXTURE0);
@@ -211,9 +220,7 @@ function renderInPage({ programs, lights, views, texture }) {
 
 /** The samples of one material: (l, v), the reference's radiance and the compared one's, RGB. */
 export function samplesOf(reference, compared) {
-  return LIGHTS.flatMap((l, row) =>
-    VIEWS.map((v, i) => ({ l, v, ref: reference(row, i), got: compared(row, i) })),
-  );
+  return LIGHTS.flatMap((l, row) => VIEWS.map((v, i) => ({ l, v, ref: reference(row, i), got: compared(row, i) })));
 }
 
 /** The radiance of sample (row, i) of a rendered program, RGB. */
