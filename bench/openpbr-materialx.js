@@ -11,7 +11,6 @@
 // multiple-scattering compensation added (tests/support/openpbr-base.js): the app's lobes are single-scattering,
 // the talk's model, and MaterialX compensates them; what is left with the compensation is what else differs.
 // Without the MaterialX venv (scripts/materialx-venv.sh) it says so and the report keeps the last figures.
-import { createServer, createServerModuleRunner } from 'vite';
 import { launchBrowser, ROOT } from '../tests/browser/harness.js';
 import { MATERIALX_BENCH_MATERIALS } from '../tests/support/materialx-materials.js';
 import { materialxPython, MATERIALX_MISSING } from '../tests/support/materialx-python.js';
@@ -33,21 +32,15 @@ import { openPbrBaseBRDF } from '../tests/support/openpbr-base.js';
 import { openPbrBRDF } from '../src/math/openpbr.js';
 import { DEG } from '../src/math/angles.js';
 import { percent, rgb } from '../src/pages/openpbr-materialx.js';
+import { viteModules } from '../scripts/vite-modules.js';
 
 /** The app's assembleGlsl with its shader chunks (read by import.meta.glob), loaded through Vite's module runner. */
 async function appAssembler() {
-  const server = await createServer({
-    root: ROOT,
-    logLevel: 'warn',
-    configFile: false,
-    server: { middlewareMode: true, hmr: false, ws: false },
-  });
-  const runner = createServerModuleRunner(server.environments.ssr, { hmr: false });
+  const runner = await viteModules();
   try {
     return (await runner.import('/src/core/gpu/glsl.js')).assembleGlsl;
   } finally {
     await runner.close();
-    await server.close();
   }
 }
 
@@ -58,7 +51,7 @@ const figures = ({ max, mean, worst }) => ({
   worst: { relative: worst.error, channel: 'rgb'[worst.channel], ...anglesOf(worst) },
 });
 
-/** Turquin's compensation applies to the base's isotropic lobes only (openpbr-base.js has no coat, fuzz or anisotropy). */
+/** The compensated composition (openpbr-base.js) has no coat, fuzz or anisotropy: the materials it can stand for. */
 const compensable = (m) => !m.layers.length && !(m.inputs.specular_roughness_anisotropy > 0);
 
 /** One material's rows: the app's GLSL and float64 BRDF, and the compensated composition, against MaterialX. */

@@ -52,6 +52,7 @@ function velvetWords(rows) {
 /** The section's words: what is compared, how, and why the two differ where they do on purpose. */
 function introHtml(part) {
   const grazing = Math.min(...part.rows.map((r) => r.glsl.worst.thetaV));
+  const mirrored = part.rows.every((r) => r.glsl.worst.phiV === 180) ? ', toward the light’s mirror direction' : '';
   return (
     '<h3>Against the reference shader: MaterialX’s OpenPBR Surface</h3>' +
     '<p class="domain">OpenPBR’s reference implementation is MaterialX’s node graph <code>open_pbr_surface</code>. ' +
@@ -70,7 +71,7 @@ function introHtml(part) {
     '“with Turquin’s compensation” puts it into the catalogue’s terms (for the uncoated, isotropic materials: ' +
     'brushed aluminium is anisotropic) and leaves what else differs, mostly MaterialX’s fitted albedo against ' +
     `this app’s exact one.${velvetWords(part.rows)} The largest differences are all at grazing views ` +
-    `(θv ${grazing}° and beyond), on the far side from the light.</p>`
+    `(θv ${grazing}° and beyond)${mirrored}.</p>`
   );
 }
 
