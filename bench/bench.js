@@ -12,6 +12,8 @@
 // and kept in bench/results/latency.json too.
 // --only custom: only the user-written terms' times (bench/custom-terms.js: an edit to the redrawn widget, a full
 // grade of each shader exercise), merged the same way.
+// --only materialx: only the app's OpenPBR against MaterialX's reference shader (bench/openpbr-materialx.js), merged
+// the same way; without the MaterialX venv (scripts/materialx-venv.sh) it says so and keeps the last figures.
 import { existsSync, mkdirSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { cpus, tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
@@ -23,6 +25,7 @@ import { measureIbl } from './ibl.js';
 import { measureMeasured, printMeasured } from './measured.js';
 import { measureLatency, printLatency, saveLatency } from './latency.js';
 import { measureCustomTerms, printCustomTerms } from './custom-terms.js';
+import { measureMaterialx, printMaterialx } from './openpbr-materialx.js';
 import { REPORT, publishReport } from './publish-report.js';
 import { ROOT, launchBrowser, openPage, serveStatic } from '../tests/browser/harness.js';
 
@@ -30,7 +33,7 @@ const args = process.argv.slice(2);
 const quick = args.includes('--quick');
 const only = args.includes('--only') ? args[args.indexOf('--only') + 1] : null;
 const timeCpu = only === null || args.includes('--time-cpu');
-const PARTS = ['families', 'measured', 'latency', 'custom'];
+const PARTS = ['families', 'measured', 'latency', 'custom', 'materialx'];
 if (only !== null && !PARTS.includes(only))
   throw new Error(`--only ${only}: the parts that run alone are ${PARTS.join(', ')}`);
 const familyKey = args.includes('--family') ? args[args.indexOf('--family') + 1] : null;
@@ -182,6 +185,8 @@ async function everything() {
     measured: measureMeasured({ quick }),
     latency: await measureLatency({ quick }),
     custom: await measureCustomTerms({ quick }),
+    // --quick (the bench's test) leaves it out: MaterialX's shader alone takes minutes to compile in SwiftShader
+    materialx: quick ? undefined : ((await measureMaterialx()) ?? lastReport().materialx),
   };
 }
 
@@ -207,7 +212,9 @@ const report = familyKey
         ? { ...lastReport(), latency: await measureLatency({ quick }) }
         : only === 'custom'
           ? { ...lastReport(), custom: await measureCustomTerms({ quick }) }
-          : await everything();
+          : only === 'materialx'
+            ? { ...lastReport(), materialx: (await measureMaterialx()) ?? lastReport().materialx }
+            : await everything();
 mkdirSync(dirname(out), { recursive: true });
 writeFileSync(out, `${JSON.stringify(report, null, 1)}\n`);
 if (out === REPORT) publishReport();
@@ -221,6 +228,11 @@ if (only === 'measured') {
 if (only === 'custom') {
   printCustomTerms(report.custom);
   console.log(`\nWrote ${out} (the custom-term part only; the rest is from the run of ${report.date.slice(0, 10)})`);
+  process.exit(0);
+}
+if (only === 'materialx') {
+  if (report.materialx) printMaterialx(report.materialx);
+  console.log(`\nWrote ${out} (the MaterialX part only; the rest is from the run of ${report.date.slice(0, 10)})`);
   process.exit(0);
 }
 if (only === 'latency') {

@@ -1,6 +1,7 @@
 // The measured part of docs/performance.md as Markdown lines, from a bench report (bench/results/latest.json):
 // pure, so that the tests can check what it says against the report (bench/readme-tables.js writes it).
 import { iblStaleNote } from '../src/pages/ibl-note.js';
+import { materialxLines } from './openpbr-materialx-lines.js';
 
 const esc = (s) => s.replaceAll('|', '\\|');
 
@@ -126,5 +127,6 @@ function restLines(report) {
 export const measuredLines = (report) => [
   ...headLines(report),
   ...report.families.flatMap((f) => familyLines(f, report.familyMeasured?.[f.key])),
+  ...(report.materialx ? materialxLines(report.materialx) : []),
   ...restLines(report),
 ];

@@ -6,6 +6,7 @@ import { existsSync, readFileSync, readdirSync, statSync, writeFileSync } from '
 import { basename, join, resolve } from 'node:path';
 import { fileURLToPath, pathToFileURL } from 'node:url';
 import { LAUNCH, SET_PATH, buildPackage, packageTitle, rawList } from '../src/exercises/scorm/package.js';
+import { viteModules } from './vite-modules.js';
 
 const ROOT = resolve(import.meta.dirname, '..');
 export { LAUNCH, SET_PATH };
@@ -64,18 +65,11 @@ export async function packageSet({ setFile, outFile, dist, validate }) {
 
 /** Validation through Vite's module runner: the widgets' schemas import CSS, which plain Node cannot. */
 async function viteValidator() {
-  const { createServer, createServerModuleRunner } = await import('vite');
-  const server = await createServer({
-    root: ROOT,
-    logLevel: 'warn',
-    configFile: false,
-    server: { middlewareMode: true, hmr: false, ws: false },
-  });
-  const runner = createServerModuleRunner(server.environments.ssr, { hmr: false });
+  const runner = await viteModules();
   const { readExerciseSet } = await runner.import('/src/exercises/load.js');
   const { WIDGETS } = await runner.import('/src/widgets/registry.js');
   const schemaOf = async (name) => (Object.hasOwn(WIDGETS, name) ? (await WIDGETS[name].load()).widget.schema : null);
-  return { readExerciseSet, schemaOf, close: async () => (await runner.close(), await server.close()) };
+  return { readExerciseSet, schemaOf, close: runner.close };
 }
 
 async function main([setFile, outFile]) {

@@ -4,6 +4,7 @@
 import '../styles.css';
 import report from './data/bench-report.json';
 import { iblStaleNote } from './ibl-note.js';
+import { materialxSection } from './openpbr-materialx.js';
 import { createPlot } from '../core/ui/plot.js';
 import { SERIES_COLORS } from '../core/ui/palettes.js';
 import { publish } from '../core/framework/debug-hooks.js';
@@ -130,6 +131,7 @@ function render() {
           `${head('difference')}${rowsOf(f, others)}</tbody>`
         : '');
     section.append(table);
+    if (f.key === 'openpbr-layers' && report.materialx) section.append(materialxSection(report.materialx, f));
   }
   boxTables(root);
 }

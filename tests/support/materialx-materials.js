@@ -5,6 +5,7 @@
 // src/math/optical-constants.js).
 import { measuredRgbNk, MEASURED_NK } from '../../src/math/optical-constants.js';
 import { f82TintFromConductor } from '../../src/math/fresnel.js';
+import { OPENPBR_PRESETS } from '../../src/lab/openpbr-presets.js';
 
 /** base_color and specular_color of a metal of the table, from its (n, k) at 650, 550 and 450 nm. */
 function metal(key) {
@@ -71,5 +72,54 @@ export const MATERIALX_MATERIALS = [
     source: 'velvet: fuzz over a dark base (roughness 0.3)',
     inputs: { base_color: [0.1, 0.02, 0.05], fuzz_weight: 1, fuzz_color: [0.8, 0.3, 0.5], fuzz_roughness: 0.5 },
     layers: ['fuzz'],
+  },
+];
+
+const presetMaterial = (key) => ({
+  name: key,
+  label: OPENPBR_PRESETS[key].label,
+  source: OPENPBR_PRESETS[key].source,
+  inputs: OPENPBR_PRESETS[key].material,
+  layers: ['coat', 'fuzz'].filter((layer) => OPENPBR_PRESETS[key].material[`${layer}_weight`] > 0),
+});
+const coated = MATERIALX_MATERIALS.find((m) => m.name === 'coated');
+const fuzzy = MATERIALX_MATERIALS.find((m) => m.name === 'fuzz');
+const withoutCoat = Object.fromEntries(Object.entries(coated.inputs).filter(([k]) => !k.startsWith('coat_')));
+const fuzzOf = Object.fromEntries(Object.entries(fuzzy.inputs).filter(([k]) => k.startsWith('fuzz_')));
+
+/**
+ * The bench's materials (bench/openpbr-materialx.js): the material lab's presets (src/lab/openpbr-presets.js), then
+ * one material built up layer by layer: the test's car paint without its coat, with it, and with a fuzz on top; and
+ * the velvet without its fuzz, which sets its base's difference apart from the fuzz's.
+ */
+export const MATERIALX_BENCH_MATERIALS = [
+  ...Object.keys(OPENPBR_PRESETS).map(presetMaterial),
+  {
+    name: 'layers-base',
+    label: 'Layer by layer: the base alone',
+    source: 'a red dielectric base (0.5, 0.02, 0.02), specular_roughness 0.4, specular_ior 1.5',
+    inputs: withoutCoat,
+    layers: [],
+  },
+  {
+    name: 'layers-coat',
+    label: '+ coat',
+    source: 'the same base under a clear coat (coat_ior 1.5, coat_roughness 0.1)',
+    inputs: coated.inputs,
+    layers: ['coat'],
+  },
+  {
+    name: 'layers-fuzz',
+    label: '+ fuzz',
+    source: 'the coated base under a fuzz (fuzz_color (0.8, 0.3, 0.5), fuzz_roughness 0.5)',
+    inputs: { ...coated.inputs, ...fuzzOf },
+    layers: ['coat', 'fuzz'],
+  },
+  {
+    name: 'velvet-base',
+    label: 'Velvet without its fuzz',
+    source: 'the velvet preset at fuzz_weight 0: what its base alone differs by, under the fuzz',
+    inputs: { ...OPENPBR_PRESETS.velvet.material, fuzz_weight: 0 },
+    layers: [],
   },
 ];
