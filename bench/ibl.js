@@ -7,6 +7,7 @@
 // takes the same Hammersley pattern on every pixel), so the squared error grows by three times the full reference's
 // own noise, σ²(N/4) − σ²(N) = 3σ²(N), and √((e²(N/4) − e²(N)) / 3) is that noise (relative, like the errors).
 import { buildApp, launchBrowser, openPage, serveStatic, settle } from '../tests/browser/harness.js';
+import { iblCaseWords as caseWords, iblMethodWords as methodWords } from '../src/pages/ibl-note.js';
 
 const CASES = [
   { environment: 'studio', material: 'gold', alpha: 0.1 },
@@ -139,16 +140,6 @@ export async function measureIbl({ quick }) {
 }
 
 const pad = (s, n) => String(s).padEnd(n);
-/** A row's method in words: importance sampling's N, an anisotropic split sum's direction. */
-export const methodWords = (r) =>
-  r.samples
-    ? `importance, N = ${r.samples}`
-    : r.bent === undefined
-      ? r.method
-      : `${r.method}, ${r.bent ? 'bent reflection' : 'mirror direction'}`;
-const caseWords = (r) =>
-  `${r.environment}, ${r.material} α ${r.alpha}${r.anisotropy ? `, anisotropy ${r.anisotropy}` : ''}`;
-
 export function printIbl(ibl) {
   console.log(
     `\nImage-based lighting against the Monte Carlo reference (${ibl.setup.referenceSamples} samples/pixel), ` +
