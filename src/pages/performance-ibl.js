@@ -3,6 +3,7 @@
 // reference, relative RMS error against the GPU time of its pass, a chart per case and one table; the brushed-metal
 // case (issue 28) in a part of its own that says what each of its methods does, and how converged the reference was.
 import { iblCaseWords as named, iblMethodWords as methodWords, iblStaleNote } from './ibl-note.js';
+import { anisotropicAlphas } from '../math/anisotropic.js';
 import { createPlot } from '../core/ui/plot.js';
 import { SERIES_COLORS } from '../core/ui/palettes.js';
 
@@ -79,13 +80,15 @@ function anisotropicPart(part, ibl, plots) {
   const rows = ibl.rows.filter((r) => r.anisotropy);
   const checks = (ibl.referenceChecks ?? []).filter((c) => c.anisotropy);
   const kinds = [rows.find((r) => r.bent), rows.find((r) => r.bent === false), rows.find((r) => r.samples)];
+  const [ax, ay] = anisotropicAlphas(rows[0].alpha, rows[0].anisotropy, 'burley2012');
   part.innerHTML =
     '<h3>Brushed metal: no prefiltered map for a stretched lobe</h3>' +
-    `<p class="domain">${named(rows[0])} (the lab’s Burley 2012 mapping of α and the anisotropy a to a pair of ` +
-    'roughnesses along and across the brushing). The split sum (Karis 2013) prefilters the map with a round lobe, ' +
-    'so a renderer that uses it for brushed metal can only change the direction it reads the map in. Each ' +
-    'method is scored against the lab’s reference, which samples the stretched lobe and the map. This goes ' +
-    'beyond the talk, whose distributions are round.</p>' +
+    `<p class="domain">${named(rows[0])}: by Burley 2012’s mapping (the lab’s default) a pair of roughnesses, ` +
+    `α<sub>x</sub> = ${ax.toFixed(2)} across the brushing and α<sub>y</sub> = ${ay.toFixed(2)} along it. ` +
+    'The split sum (Karis 2013) prefilters the map with a round lobe, so a renderer that uses it for brushed ' +
+    'metal can only change the direction it reads the map in. Each method is scored against the lab’s ' +
+    'reference, which samples the stretched lobe and the map. This goes beyond the talk, whose distributions ' +
+    'are round.</p>' +
     `<ul>${kinds
       .filter(Boolean)
       .map((r) => `<li>${anisotropicWords(r)}</li>`)
