@@ -6,6 +6,7 @@
 // reference of a quarter of the samples (REFERENCE_CHECK); the approximations are deterministic (importance sampling
 // takes the same Hammersley pattern on every pixel), so the squared error grows by three times the full reference's
 // own noise, σ²(N/4) − σ²(N) = 3σ²(N), and √((e²(N/4) − e²(N)) / 3) is that noise (relative, like the errors).
+import { loadavg } from 'node:os';
 import { buildApp, launchBrowser, openPage, serveStatic, settle } from '../tests/browser/harness.js';
 import { iblCaseWords as caseWords, iblMethodWords as methodWords } from '../src/pages/ibl-note.js';
 
@@ -117,6 +118,7 @@ export async function measureIbl({ quick }) {
   const runs = quick ? 1 : 7;
   const rows = [];
   const checks = [];
+  const loadBefore = loadavg()[0]; // its GPU times depend on what else runs: said beside them
   try {
     for (const c of quick ? CASES.slice(0, 1) : [...CASES, ...ANISOTROPIC_CASES]) {
       const methods = quick ? METHODS.slice(1, 2) : c.anisotropy ? ANISOTROPIC_METHODS : METHODS;
@@ -148,6 +150,7 @@ export async function measureIbl({ quick }) {
   return {
     date: new Date().toISOString(),
     setup: { resolution: 192, referenceSamples: cap ?? refSamples, timingRuns: runs },
+    loadAverage: { before: loadBefore, after: loadavg()[0] },
     errorOf: ERROR_OF,
     rows,
     referenceChecks: checks,

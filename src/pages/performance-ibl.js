@@ -112,6 +112,17 @@ function anisotropicPart(part, ibl, plots) {
   }
 }
 
+/** Rows measured alone, on their own day: their GPU times compare with each other's, not with other days' costs. */
+function aloneWords({ date, loadAverage: load }) {
+  const beside = load
+    ? `, at a load average of ${load.before.toFixed(0)} before and ${load.after.toFixed(0)} after`
+    : '';
+  return (
+    `Measured alone on ${date.slice(0, 10)} (node bench/bench.js --only ibl${beside}): its GPU times compare with ` +
+    'each other, not with the costs above, which were measured in other runs, under other loads.'
+  );
+}
+
 /** The section before `anchor`; its charts are pushed on `plots`. `reportDate` dates rows that carry no date. */
 export function renderIbl(ibl, { anchor, plots, reportDate }) {
   const section = document.createElement('section');
@@ -120,10 +131,10 @@ export function renderIbl(ibl, { anchor, plots, reportDate }) {
   section.innerHTML =
     '<h2>Image-based lighting against the reference</h2>' +
     `<p class="domain">The material lab's environment methods on a ${ibl.setup.resolution}² sphere, each ` +
-    `against the lab's converged Monte Carlo reference (${ibl.setup.referenceSamples} samples per pixel): ` +
+    `against the lab's Monte Carlo reference (${ibl.setup.referenceSamples} samples per pixel): ` +
     'relative RMS error over the sphere against the GPU time ' +
     `of the method's pass (median of ${ibl.setup.timingRuns}). Importance sampling is one curve, N = 4 to 256 ` +
-    `samples.${ibl.date ? ` Measured ${ibl.date.slice(0, 10)} (node bench/bench.js --only ibl).` : ''}` +
+    `samples.${ibl.date ? ` ${aloneWords(ibl)}` : ''}` +
     `${stale ? ` ${stale.replace(/`/g, '')}` : ''}</p>`;
   anchor.before(section);
   const round = ibl.rows.filter((r) => !r.anisotropy);
@@ -143,6 +154,16 @@ export function renderIbl(ibl, { anchor, plots, reportDate }) {
       .join('') +
     '</tbody>';
   section.append(table);
+  const checks = (ibl.referenceChecks ?? []).filter((c) => !c.anisotropy);
+  if (checks.length) {
+    const note = Object.assign(document.createElement('p'), { className: 'source' });
+    note.textContent =
+      `How converged the reference is: every method measured again against a ${checks[0].checkSamples}-sample ` +
+      `reference puts the ${ibl.setup.referenceSamples}-sample one’s own noise, relative to its RMS, at ` +
+      `${checks.map((c) => `${percent(c.noise)} (${named(c)})`).join(', ')}; an error near its case’s figure is ` +
+      'partly the reference’s own.';
+    section.append(note);
+  }
   if (!ibl.rows.some((r) => r.anisotropy)) return;
   const part = Object.assign(document.createElement('div'), { id: 'ibl-anisotropic' });
   section.append(part);
