@@ -14,6 +14,9 @@
 // grade of each shader exercise), merged the same way.
 // --only materialx: only the app's OpenPBR against MaterialX's reference shader (bench/openpbr-materialx.js), merged
 // the same way; without the MaterialX venv (scripts/materialx-venv.sh) it says so and keeps the last figures.
+// --only ibl: only the image-based lighting rows (bench/ibl.js: each environment method against the lab's Monte Carlo
+// reference, the anisotropic case's bent reflection vector among them, and how converged that reference is), merged
+// the same way.
 import { existsSync, mkdirSync, mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
 import { cpus, tmpdir } from 'node:os';
 import { dirname, join, resolve } from 'node:path';
@@ -21,7 +24,7 @@ import { Bench } from 'tinybench';
 import { build } from 'vite';
 import { FAMILIES, measureErrors } from './families.js';
 import { measurePages } from './pages.js';
-import { measureIbl } from './ibl.js';
+import { measureIbl, printIbl } from './ibl.js';
 import { measureMeasured, printMeasured } from './measured.js';
 import { measureLatency, printLatency, saveLatency } from './latency.js';
 import { measureCustomTerms, printCustomTerms } from './custom-terms.js';
@@ -33,7 +36,7 @@ const args = process.argv.slice(2);
 const quick = args.includes('--quick');
 const only = args.includes('--only') ? args[args.indexOf('--only') + 1] : null;
 const timeCpu = only === null || args.includes('--time-cpu');
-const PARTS = ['families', 'measured', 'latency', 'custom', 'materialx'];
+const PARTS = ['families', 'measured', 'latency', 'custom', 'materialx', 'ibl'];
 if (only !== null && !PARTS.includes(only))
   throw new Error(`--only ${only}: the parts that run alone are ${PARTS.join(', ')}`);
 const familyKey = args.includes('--family') ? args[args.indexOf('--family') + 1] : null;
@@ -214,7 +217,9 @@ const report = familyKey
           ? { ...lastReport(), custom: await measureCustomTerms({ quick }) }
           : only === 'materialx'
             ? { ...lastReport(), materialx: (await measureMaterialx()) ?? lastReport().materialx }
-            : await everything();
+            : only === 'ibl'
+              ? { ...lastReport(), ibl: await measureIbl({ quick }) }
+              : await everything();
 mkdirSync(dirname(out), { recursive: true });
 writeFileSync(out, `${JSON.stringify(report, null, 1)}\n`);
 if (out === REPORT) publishReport();
@@ -233,6 +238,12 @@ if (only === 'custom') {
 if (only === 'materialx') {
   if (report.materialx) printMaterialx(report.materialx);
   console.log(`\nWrote ${out} (the MaterialX part only; the rest is from the run of ${report.date.slice(0, 10)})`);
+  process.exit(0);
+}
+if (only === 'ibl') {
+  printIbl(report.ibl);
+  const rest = `the rest is from the run of ${report.date.slice(0, 10)}`;
+  console.log(`\nWrote ${out} (the image-based lighting part only; ${rest})`);
   process.exit(0);
 }
 if (only === 'latency') {
@@ -289,19 +300,7 @@ console.log(
   `  ours ${vt.oursMsPerFrame.toFixed(2)} ms/frame, three.js MeshStandardMaterial ` +
     `${vt.threeMsPerFrame.toFixed(2)} ms/frame: ratio ${vt.ratio.toFixed(2)}`,
 );
-console.log(
-  `\nImage-based lighting against the Monte Carlo reference (${ibl.setup.referenceSamples} samples/pixel), ` +
-    `${ibl.setup.resolution}² pixels, median of ${ibl.setup.timingRuns} runs:`,
-);
-console.log(`  ${pad('environment, material', 30)}${pad('method', 22)}${pad('GPU ms', 10)}${pad('RMS', 11)}relative`);
-for (const r of ibl.rows) {
-  const method = r.samples ? `importance, N = ${r.samples}` : r.method;
-  console.log(
-    '  ' +
-      [pad(`${r.environment}, ${r.material} α ${r.alpha}`, 30), pad(method, 22), pad(r.ms.toFixed(2), 10)].join('') +
-      `${pad(r.rms.toExponential(2), 11)}${(r.relative * 100).toFixed(2)} %`,
-  );
-}
+printIbl(ibl);
 console.log(
   `\n  ${pad('page', 30)}${pad('JS (KiB, uncompressed)', 30)}${pad('files', 7)}${pad('load (ms)', 11)}first frame (ms)`,
 );

@@ -1,6 +1,6 @@
 // The measured part of docs/performance.md as Markdown lines, from a bench report (bench/results/latest.json):
 // pure, so that the tests can check what it says against the report (bench/readme-tables.js writes it).
-import { iblStaleNote } from '../src/pages/ibl-note.js';
+import { iblCaseWords, iblMethodWords, iblStaleNote } from '../src/pages/ibl-note.js';
 import { materialxLines } from './openpbr-materialx-lines.js';
 
 const esc = (s) => s.replaceAll('|', '\\|');
@@ -39,7 +39,7 @@ function headLines(report) {
       `The term families' ${timedCpu ? 'errors and CPU costs' : 'errors'} below were measured again on ` +
         `${date.slice(0, 10)} (\`npm run bench -- --only families\`); their ` +
         `${timedCpu ? 'GPU columns are' : 'costs are'} ` +
-        `from the full run${iblStaleNote(report.date) ? `, as are the image-based lighting rows (${date0})` : ''}.`,
+        `from the full run${iblStaleNote(iblDate(report)) ? `, as are the image-based lighting rows (${date0})` : ''}.`,
       '',
     );
   }
@@ -84,25 +84,55 @@ function familyLines(f, measuredAlone) {
   return lines;
 }
 
-function restLines(report) {
-  const { versusThree: vt, ibl } = report;
+// the IBL rows' own date when they were measured alone (`--only ibl`), else the report's
+const iblDate = (report) => report.ibl.date ?? report.date;
+const percent = (x) => `${(x * 100).toFixed(2)} %`;
+
+/** The reference's own noise per case, as bench/ibl.js measured it against a reference of fewer samples. */
+const noiseLines = (ibl) =>
+  (ibl.referenceChecks ?? []).map(
+    (c) =>
+      `- ${iblCaseWords(c)}: ${percent(c.noise)} (each method's estimate: ${c.each.map(percent).join(', ')}; ` +
+      `against the ${c.checkSamples}-sample reference: ${c.relativeAtCheck.map(percent).join(', ')})`,
+  );
+
+function iblLines(report) {
+  const { ibl } = report;
+  const stale = iblStaleNote(iblDate(report));
+  const noise = noiseLines(ibl);
   return [
     "**Image-based lighting against the reference.** The material lab's environment methods on a " +
       `${ibl.setup.resolution}² sphere against its Monte Carlo reference (${ibl.setup.referenceSamples} samples ` +
       `per pixel, multiple importance ` +
       `sampling of the BRDF and the map); GPU time of the method's pass, median of ${ibl.setup.timingRuns}; RMS ` +
       `error over the sphere, in radiance ` +
-      `and relative to the reference's RMS.${iblStaleNote(report.date) ? ` ${iblStaleNote(report.date)}` : ''}`,
+      `and relative to the reference's RMS.${stale ? ` ${stale}` : ''}` +
+      (ibl.date ? ` Measured ${ibl.date.slice(0, 10)} (\`node bench/bench.js --only ibl\`).` : ''),
     '',
     '| environment, material | method | GPU ms | RMS | relative |',
     '|---|---|---|---|---|',
     ...ibl.rows.map(
       (r) =>
-        `| ${r.environment}, ${r.material} α ${r.alpha} | ` +
-        `${r.samples ? `importance, N = ${r.samples}` : r.method} | ${r.ms.toFixed(1)} | ` +
+        `| ${iblCaseWords(r)} | ${iblMethodWords(r)} | ${r.ms.toFixed(1)} | ` +
         `${r.rms.toExponential(2)} | ${(r.relative * 100).toFixed(1)} % |`,
     ),
     '',
+    ...(noise.length
+      ? [
+          "The reference's own noise, relative to its RMS: each method measured again against a reference of a " +
+            'quarter of the samples, √((e²(N/4) − e²(N)) / 3) (the methods are deterministic):',
+          '',
+          ...noise,
+          '',
+        ]
+      : []),
+  ];
+}
+
+function restLines(report) {
+  const { versusThree: vt } = report;
+  return [
+    ...iblLines(report),
     `**Against three.js.** A sphere at ${vt.size}² with the terms of MeshStandardMaterial (GGX, height-correlated ` +
       `Smith, Schlick with ` +
       `F0 = 0.04, Lambert, one punctual light): this app's shader ${vt.oursMsPerFrame.toFixed(1)} ms per frame, ` +

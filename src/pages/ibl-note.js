@@ -13,3 +13,15 @@ export function iblStaleNote(date) {
     '`npm run bench` to update.'
   );
 }
+
+/** An IBL row's method in words: importance sampling's N, the direction an anisotropic case's split sum reads. */
+export const iblMethodWords = (r) =>
+  r.samples
+    ? `importance, N = ${r.samples}`
+    : r.bent === undefined
+      ? r.method
+      : `${r.method}, ${r.bent ? 'bent reflection' : 'mirror direction'}`;
+
+/** An IBL row's case in words: environment, material, α and any anisotropy. */
+export const iblCaseWords = (r) =>
+  `${r.environment}, ${r.material} α ${r.alpha}${r.anisotropy ? `, anisotropy ${r.anisotropy}` : ''}`;

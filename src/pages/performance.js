@@ -3,7 +3,7 @@
 // the full table.
 import '../styles.css';
 import report from './data/bench-report.json';
-import { iblStaleNote } from './ibl-note.js';
+import { renderIbl, row } from './performance-ibl.js';
 import { materialxSection } from './openpbr-materialx.js';
 import { createPlot } from '../core/ui/plot.js';
 import { SERIES_COLORS } from '../core/ui/palettes.js';
@@ -85,8 +85,6 @@ function errorChart(section, f, all) {
 
 // no cost: a reference run once, offline, or (OpenPBR's stacks) a quadrature computed once and looked up
 const cost = (x, digits, v) => (x !== null ? x.toFixed(digits) : v.kind === 'reference' ? '— (run offline)' : '—');
-/** A table row of `cells` (HTML), each in a <td>, or in a <th> for a head row. */
-const row = (cells, tag = 'td') => `<tr>${cells.map((c) => `<${tag}>${c}</${tag}>`).join('')}</tr>`;
 
 function rowsOf(f, variants) {
   return variants
@@ -137,9 +135,10 @@ function render() {
 }
 costSelect.addEventListener('change', render);
 
-/** The nearest heading above `el` in its section: what its table's box is called. */
+/** The nearest heading (h2, or h3 of a part) above `el` in its section: what its table's box is called. */
 function headingOf(el) {
-  for (let e = el.previousElementSibling; e; e = e.previousElementSibling) if (e.tagName === 'H2') return e.textContent;
+  for (let e = el.previousElementSibling; e; e = e.previousElementSibling)
+    if (/^H[23]$/.test(e.tagName)) return e.textContent;
   return el.parentElement ? headingOf(el.parentElement) : 'Figures';
 }
 
@@ -154,72 +153,6 @@ function boxTables(within) {
   }
 }
 render();
-
-// image-based lighting: each method's error against the lab's Monte Carlo reference, against its GPU time
-function renderIbl(ibl) {
-  const section = document.createElement('section');
-  section.innerHTML =
-    '<h2>Image-based lighting against the reference</h2>' +
-    `<p class="domain">The material lab's environment methods on a ${ibl.setup.resolution}² sphere, each ` +
-    `against the lab's converged Monte Carlo reference (${ibl.setup.referenceSamples} samples per pixel): ` +
-    'relative RMS error over the sphere against the GPU time ' +
-    `of the method's pass (median of ${ibl.setup.timingRuns}). Importance sampling is one curve, N = 4 to 256 ` +
-    'samples.' +
-    `${iblStaleNote(report.date) ? ` ${iblStaleNote(report.date).replace(/`/g, '')}` : ''}</p>`;
-  extra.before(section);
-  // a case is a material under an environment, anisotropic ones (issue 28) apart; a method of an anisotropic case
-  // says which direction it reads the light in
-  const caseOf = (r) => `${r.environment}|${r.material}|${r.alpha}|${r.anisotropy ?? 0}`;
-  const methodOf = (r) => (r.bent === undefined ? r.method : `${r.method}, ${r.bent ? 'bent reflection' : 'mirror'}`);
-  const named = (r) =>
-    `${r.environment}, ${r.material} α ${r.alpha}${r.anisotropy ? `, anisotropy ${r.anisotropy}` : ''}`;
-  const cases = [...new Set(ibl.rows.map(caseOf))];
-  for (const c of cases) {
-    const rows = ibl.rows.filter((r) => caseOf(r) === c);
-    const [environment, material] = c.split('|');
-    const methods = [...new Set(rows.map(methodOf))];
-    const xs = [...new Set(rows.map((r) => r.ms))].sort((a, b) => a - b);
-    plots.push(
-      createPlot(section, {
-        title: `${named(rows[0])}: relative RMS error against GPU time (lower left is better)`,
-        xLabel: 'GPU time of the pass (ms)',
-        yLabel: 'relative RMS error',
-        x: { min: xs[0] * 0.8, max: xs[xs.length - 1] * 1.2, log: true },
-        y: { min: 0.005, max: 10 ** Math.ceil(Math.log10(Math.max(...rows.map((r) => r.relative)) * 1.5)), log: true },
-        series: methods.map((m, i) => ({
-          label: m,
-          stroke: SERIES_COLORS[i % SERIES_COLORS.length],
-          width: m === 'importance' ? 1.5 : 0,
-          points: true,
-          spanGaps: true,
-        })),
-        data: [
-          xs,
-          ...methods.map((m) => xs.map((x) => rows.find((r) => methodOf(r) === m && r.ms === x)?.relative ?? null)),
-        ],
-        filename: `ibl-${environment}-${material}${rows[0].anisotropy ? '-anisotropic' : ''}`,
-        height: 220,
-      }),
-    );
-  }
-  const table = document.createElement('table');
-  table.className = 'data-table compact';
-  table.innerHTML =
-    `<thead>${row(['Environment, material', 'Method', 'GPU ms', 'RMS error', 'relative'], 'th')}</thead><tbody>` +
-    ibl.rows
-      .map((r) =>
-        row([
-          named(r),
-          r.samples ? `importance, N = ${r.samples}` : methodOf(r),
-          r.ms.toFixed(2),
-          r.rms.toExponential(2),
-          `${(r.relative * 100).toFixed(2)} %`,
-        ]),
-      )
-      .join('') +
-    '</tbody>';
-  section.append(table);
-}
 
 const ms = (x) => x.toFixed(0);
 const latencyRow = (r) => row([r.widget, `<code>${r.key}</code>`, ms(r.medianMs), ms(r.worstMs)]);
@@ -280,7 +213,7 @@ extra.innerHTML =
     )
     .join('') +
   '</tbody></table>';
-if (report.ibl) renderIbl(report.ibl);
+if (report.ibl) renderIbl(report.ibl, { anchor: extra, plots, reportDate: report.date });
 if (report.latency) renderLatency(report.latency);
 boxTables(extra.parentElement);
 publish('performance', report);
