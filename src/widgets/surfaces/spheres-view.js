@@ -1,5 +1,9 @@
 // surfaces' spheres: metal of increasing roughness reflecting a room (three.js's standard material and
 // RoomEnvironment, prefiltered once per context), each its own draw in a quarter of the canvas.
+// The prefilter is seconds of work on a software GPU (SwiftShader: 3 to 5 s idle, 25 s and more on a loaded
+// machine), and a view's first frame comes when it is created, in sight or not: a view out of sight then (further
+// down a chapter, on the wall of twenty widgets) leaves that frame, and the prefilter, until it first comes into
+// sight. (A still drawn for print or download, once the view's place is known, prefilters at once.)
 import * as THREE from 'three';
 import { RoomEnvironment } from 'three/addons/environments/RoomEnvironment.js';
 import { createViewport } from '../../core/framework/viewport.js';
@@ -26,6 +30,12 @@ export function createSpheresView(container) {
   const mesh = new THREE.Mesh(geometry);
   scene.add(mesh);
   let pmrem = null;
+  let sight = null; // whether the view is in sight, once its observer has said; null until then
+  let deferred = false; // the first frame was left while out of sight
+  const sightNow = (el) => {
+    const r = el.getBoundingClientRect();
+    return r.bottom > 0 && r.right > 0 && r.top < innerHeight && r.left < innerWidth;
+  };
   const viewport = createViewport(container, {
     label: `Four metal spheres reflecting a room, roughness ${SPHERE_ROUGHNESS.join(', ')}`,
     onContextLost() {
@@ -33,6 +43,10 @@ export function createSpheresView(container) {
       pmrem = null;
     },
     draw(renderer) {
+      if (!pmrem && sight === null && !sightNow(viewport.holder)) {
+        deferred = true;
+        return;
+      }
       if (!pmrem) {
         const generator = new THREE.PMREMGenerator(renderer);
         pmrem = generator.fromScene(new RoomEnvironment(), 0.04);
@@ -46,7 +60,15 @@ export function createSpheresView(container) {
       });
     },
   });
+  const watcher = new IntersectionObserver((entries) => {
+    sight = entries[entries.length - 1].isIntersecting;
+    if (sight && deferred) {
+      deferred = false;
+      viewport.invalidate();
+    }
+  });
   if (viewport) {
+    watcher.observe(viewport.holder);
     viewport.holder.classList.add('sphere-grid');
     viewport.holder.style.aspectRatio = `${materials.length} / 1`;
     viewport.holder.append(roughnessLabels());
@@ -56,6 +78,7 @@ export function createSpheresView(container) {
       materials.forEach((m) => m.dispose());
       geometry.dispose();
       pmrem?.dispose();
+      watcher.disconnect();
       viewport?.dispose();
     },
   };
