@@ -7,7 +7,7 @@ function plotSpec(s, profile) {
   const { xs, counts, predicted } = reflectionCone(s, profile);
   return {
     title: `Where light from ${s.theta}° goes after one reflection off a microsurface of roughness α = ${s.alpha}`,
-    xLabel: 'Outgoing angle (degrees; the mirror direction is −θ)',
+    xLabel: 'Outgoing angle (°), mirror at −θ',
     yLabel: 'share per degree',
     x: { min: -90, max: 90 },
     y: null,
