@@ -29,7 +29,6 @@ import {
   openForeignParent,
   otherOrigin,
   untilIdle,
-  untilLoaded,
   untilSteady,
   WAIT_MS,
 } from './helpers.js';
@@ -292,19 +291,44 @@ const DROPS = {
   ],
 };
 
+/**
+ * The three links of issue 17 that crashed a widget, per widget: the query's values (prototype names), and the fields
+ * they name. Each goes into that widget's hostile link, its values in place of the fuzz's for those fields: the
+ * widget mounts with its defaults, says what it refused and draws, with no error.
+ */
+const LINKS = {
+  'brdf-lobe': ['F=__proto__', ['F']],
+  'visibility-explorer': ['V=__proto__', ['V']],
+  'fresnel-zones': [
+    'shape=__proto__&camera=constructor&palette=toString&mode=hasOwnProperty',
+    ['shape', 'camera', 'palette', 'mode'],
+  ],
+};
+
+/** A link's widget, its defaults and its refusals checked by the fuzz: it draws once its notices are read. */
+async function drawsWithDefaults(frame, schema, keys) {
+  await frame.$$eval('.notice-close', (buttons) => buttons.forEach((b) => b.click())); // its view back in the frame
+  await frame.waitForFunction(() => globalThis.__shadingLab.frames > 0, { timeout: WAIT_MS });
+  const state = await frameState(frame);
+  for (const key of keys) expect(state[key], key).toEqual(defaultState(schema)[key]);
+}
+
 describe('fuzz: every widget by URL and by postMessage from another origin', () => {
   const prototypeBefore = prototypeNames();
 
   for (const name of Object.keys(WIDGETS)) {
+    const [link, linkKeys] = LINKS[name] ?? [];
     it(
       `${name}: refuses every hostile value with a notice or an error reply, ` +
-        `keeps its last good state and drawing`,
+        `keeps its last good state and drawing` +
+        (link ? `; its link of issue 17 (${link}) mounts with its defaults, says what it refused, draws` : ''),
       async () => {
         const schema = schemas[name];
         const random = seededRandom(SEED + name.length * 101 + name.charCodeAt(0));
         const labelOf = (k) => schema[k].label ?? k;
         // by URL: every field refused, each named in a notice; the state is the defaults
         const query = hostileQuery(schema, random);
+        for (const [key, value] of new URLSearchParams(link)) query.set(key, value);
         const frame = await embed(
           new URL(
             `embed.html?w=${name}&origins=${encodeURIComponent(new URL(otherOrigin()).origin)}&${query}`,
@@ -319,6 +343,7 @@ describe('fuzz: every widget by URL and by postMessage from another origin', () 
           expect(notices, `URL ${key}=${query.get(key).slice(0, 40)}`).toContain(`${labelOf(key)}:`);
         counts.refusals += Object.keys(schema).length;
         expect(await frameState(frame)).toEqual(defaultState(schema));
+        if (link) await drawsWithDefaults(frame, schema, linkKeys);
 
         // odd but valid values are taken without a fault; then a good state, and a picture of it
         const odd = oddButValid(schema).map((state, i) => ({ type: 'shading-lab:set', id: `odd${i}`, state }));
@@ -500,31 +525,4 @@ describe('fuzz: files dropped and fetched', () => {
     },
     120_000,
   );
-});
-
-describe('the three links of issue 17 that crashed a widget', () => {
-  const LINKS = {
-    'brdf-lobe': ['F=__proto__', ['F']],
-    'visibility-explorer': ['V=__proto__', ['V']],
-    'fresnel-zones': [
-      'shape=__proto__&camera=constructor&palette=toString&mode=hasOwnProperty',
-      ['shape', 'camera', 'palette', 'mode'],
-    ],
-  };
-  for (const [name, [query, keys]] of Object.entries(LINKS)) {
-    it(`embed.html?w=${name}&${query}: mounts with its defaults, says what it refused, draws, no error`, async () => {
-      const page = await open(browser, `embed.html?w=${name}&${query}`, SMALL_VIEWPORT);
-      await page.waitForFunction((n) => globalThis.__shadingLab?.widgets?.[n], { timeout: 45_000 }, name);
-      await untilLoaded(page); // mounted, its chunks in; then its first frame drawn (with its defaults)
-      await page.waitForFunction(() => window.__drawCalls > 0, { timeout: WAIT_MS });
-      const state = await page.evaluate((n) => globalThis.__shadingLab.widgets[n].getState(), name);
-      const defaults = defaultState(schemas[name]);
-      for (const key of keys) expect(state[key], key).toEqual(defaults[key]);
-      const notices = await page.$$eval('.notice', (n) => n.map((x) => x.textContent).join('\n'));
-      for (const key of keys) expect(notices).toContain(`${schemas[name][key].label ?? key}:`);
-      expect(await page.evaluate(() => window.__drawCalls)).toBeGreaterThan(0); // it drew (with its defaults)
-      expect(page.errors).toEqual([]);
-      await page.close();
-    });
-  }
 });
