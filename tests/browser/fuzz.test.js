@@ -154,8 +154,11 @@ const injected = (frame) =>
   }));
 const frameShot = async () => (await parent.$('#embedded')).screenshot({ encoding: 'base64' });
 
-/** Share of pixels that differ by more than 48 in some channel between two screenshots (decoded in the parent). */
-function pixelChange(a, b) {
+/**
+ * Share of pixels that differ by more than 48 in some channel between two screenshots (decoded in the parent); given
+ * one, between it and its top-left pixel (a blank frame: 0).
+ */
+function pixelChange(a, b = null) {
   return parent.evaluate(
     async (a, b) => {
       const decode = async (b64) => {
@@ -164,16 +167,32 @@ function pixelChange(a, b) {
         ctx.drawImage(bitmap, 0, 0);
         return ctx.getImageData(0, 0, bitmap.width, bitmap.height).data;
       };
-      const [p, q] = await Promise.all([decode(a), decode(b)]);
+      const [p, q] = await Promise.all([decode(a), b === null ? null : decode(b)]);
       let changed = 0;
-      for (let i = 0; i < p.length; i += 4)
-        if (Math.abs(p[i] - q[i]) > 48 || Math.abs(p[i + 1] - q[i + 1]) > 48 || Math.abs(p[i + 2] - q[i + 2]) > 48)
+      for (let i = 0; i < p.length; i += 4) {
+        const j = q ? i : 0;
+        const r = q ?? p;
+        if (Math.abs(p[i] - r[j]) > 48 || Math.abs(p[i + 1] - r[j + 1]) > 48 || Math.abs(p[i + 2] - r[j + 2]) > 48)
           changed++;
+      }
       return changed / (p.length / 4);
     },
     a,
     b,
   );
+}
+
+/**
+ * The frame's picture once it shows something: a shot of the cross-origin frame taken from its parent can come before
+ * the frame's compositor has shown it (a blank frame, seen under two CPU hogs; the picture after it then differed in
+ * 13 to 80 % of its pixels). Every widget's embed has text and a panel on its background.
+ */
+async function shownShot() {
+  let png;
+  await expect
+    .poll(async () => pixelChange((png = await frameShot())), { message: 'the frame shows its widget', interval: 250 })
+    .toBeGreaterThan(0.01);
+  return png;
 }
 
 const NOT_OBJECTS = [null, 42, 'shading-lab:set', [1, 2], true];
@@ -365,7 +384,7 @@ describe('fuzz: every widget by URL and by postMessage from another origin', () 
         const goodState = await frameState(frame);
         expect(goodState).toMatchObject(good);
         await settled(frame);
-        const before = await frameShot();
+        const before = await shownShot();
 
         // hostile `set`s (refused values only) and malformed messages: an error reply for each set, naming each
         // field and unknown key; no reply to the malformed ones
