@@ -3,9 +3,13 @@
 // answer the keyboard, and the words carry the numbers (checked against closed forms and the F0 table).
 // Each widget is mounted once, on a page its tests share in turn (a mount is most of a test's time on software
 // WebGL): the keyboard and the numbers are checked after the words, from the state the widget is left in, set
-// where a check needs one (the mode shown, the materials plotted).
+// where a check needs one (the mode shown, the materials plotted). Every page runs under the app's
+// Content-Security-Policy with no violation; and a few of them, mounted here anyway, pass axe-core's WCAG 2.2 A and
+// AA rules as the embed that shows one widget (axe.test.js checks every other page so).
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { WAIT_MS, getState, launchBrowser, open, shot, untilIdle, widget } from './helpers.js';
+import { recordViolations } from './under-policy.js';
+import { axeViolations } from './axe-run.js';
 import { WIDGETS } from '../../src/widgets/registry.js';
 import { sphereZoneFractions } from '../../src/math/zones.js';
 import { materialByKey } from '../../src/math/materials.js';
@@ -34,6 +38,12 @@ const CHANGES = {
 /** Extra URL state to keep software rendering quick (fewer path-traced samples). */
 const QUICK = { media: '&samples=16', 'material-lab': '&refSamples=128', 'lighting-models': '&refSamples=128' };
 const STATIC_PICTURE = /^Four metal spheres/; // the surfaces widget's room reflections do not depend on its state
+/**
+ * The embeds axe-core checks (the gallery's previews are such embeds, so axe stays out of their frames): one of each
+ * kind, a WebGL view with a legend (fresnel-zones), tables (f0-tables), a plot beside a 3-D view (brdf-lobe) and the
+ * largest panel (material-lab).
+ */
+const AXE_WIDGETS = ['fresnel-zones', 'f0-tables', 'brdf-lobe', 'material-lab'];
 
 let browser;
 beforeAll(async () => {
@@ -59,7 +69,12 @@ const readWords = (page) =>
  * picture.
  */
 const openWidget = async (query) => {
-  const page = await open(browser, `embed.html?w=${query}`, { width: 800, height: 3200, maxSamples: 1 });
+  const page = await open(browser, `embed.html?w=${query}`, {
+    width: 800,
+    height: 3200,
+    maxSamples: 1,
+    beforeLoad: (p) => p.evaluateOnNewDocument(recordViolations), // window.__csp (under-policy.js)
+  });
   await widget(page, query.split('&')[0]);
   const outOfSight = await page.$$eval(
     '.widget canvas',
@@ -284,6 +299,12 @@ const MORE = {
   ],
 };
 
+/** No console error, no page error and no violation of the policy so far. */
+const expectClean = async (page) => {
+  expect(page.errors).toEqual([]);
+  expect(await page.evaluate(() => window.__csp ?? [])).toEqual([]);
+};
+
 describe('every widget on a page of its own: its words, Tab, its keyboard and its numbers', () => {
   for (const name of Object.keys(WIDGETS)) {
     describe(name, () => {
@@ -294,15 +315,21 @@ describe('every widget on a page of its own: its words, Tab, its keyboard and it
       afterAll(async () => {
         await page?.close();
       });
+      if (AXE_WIDGETS.includes(name)) {
+        it('runs under the policy with no violation, and axe-core (WCAG 2.2 A and AA) finds no violation', async () => {
+          expect(await axeViolations(page)).toEqual([]);
+          await expectClean(page);
+        });
+      }
       const words = 'describes its canvases, says something new when its state changes, and Tab reaches every control';
       it(words, async () => {
         await checkWordsAndTab(page, name);
-        expect(page.errors).toEqual([]);
+        await expectClean(page);
       });
       for (const [title, check] of MORE[name] ?? []) {
         it(title, async () => {
           await check(page);
-          expect(page.errors).toEqual([]);
+          await expectClean(page);
         });
       }
     });

@@ -5,8 +5,8 @@
 // (SwiftShader draws every pixel on the CPU; the phone's width is phone.test.js's), its progressive views capped at
 // a few samples, its widgets mounted and every part scrolled into sight (views draw their first frame), and then axe
 // runs over it. The wall and the gallery are checked where context-budget.test.js mounts the wall's twenty tiles and
-// loads every gallery preview anyway. (The policy's text in every page, and that the browser enforces it, are
-// csp.test.js.)
+// loads every gallery preview anyway; a few widgets alone in an embed where a11y.test.js mounts each widget alone
+// anyway. (The policy's text in every page, and that the browser enforces it, are csp.test.js.)
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { afterFrames, launchBrowser } from './helpers.js';
 import { SMALL_VIEWPORT } from './harness.js';
@@ -14,14 +14,14 @@ import { POLICY_PAGES, openUnderPolicy } from './under-policy.js';
 import { IDLE_FRAMES, expectIdle, untilCalm } from './idle.js';
 import { axeViolations } from './axe-run.js';
 
-/** Checked in context-budget.test.js, which mounts the wall's tiles and loads every gallery preview anyway. */
-const ELSEWHERE = ['wall.html', 'gallery.html'];
 /**
- * The bare embed (its message), and a few widgets alone in one, beside POLICY_PAGES' fresnel-zones: the gallery's
- * previews are such embeds, so axe stays out of its frames.
+ * Checked in context-budget.test.js, which mounts the wall's tiles and loads every gallery preview anyway; and the
+ * embed with a widget (fresnel-zones, with f0-tables, brdf-lobe and material-lab: the gallery's previews are such
+ * embeds, so axe stays out of its frames) in a11y.test.js, which mounts each widget alone in one anyway.
  */
-const EMBEDS = ['', '?w=f0-tables', '?w=brdf-lobe', '?w=material-lab&refSamples=128'].map((q) => `embed.html${q}`);
-const PAGES = [...POLICY_PAGES.filter((p) => !ELSEWHERE.includes(p)), ...EMBEDS];
+const ELSEWHERE = ['wall.html', 'gallery.html', 'embed.html?w=fresnel-zones'];
+/** The bare embed: its message. */
+const PAGES = [...POLICY_PAGES.filter((p) => !ELSEWHERE.includes(p)), 'embed.html'];
 /**
  * Samples a progressive view stops at here, its fewest (one batch or frame, sampleTarget in
  * src/core/framework/debug-hooks.js): "it stops once it has its samples" holds for any count, and axe reads the page,
