@@ -14,13 +14,12 @@ export function iblStaleNote(date) {
   );
 }
 
-/** An IBL row's method in words: importance sampling's N, the direction an anisotropic case's split sum reads. */
-export const iblMethodWords = (r) =>
-  r.samples
-    ? `importance, N = ${r.samples}`
-    : r.bent === undefined
-      ? r.method
-      : `${r.method}, ${r.bent ? 'bent reflection' : 'mirror direction'}`;
+/** An IBL row's method, with the direction an anisotropic case's split sum reads the light in. */
+export const iblMethod = (r) =>
+  r.bent === undefined ? r.method : `${r.method}, ${r.bent ? 'bent reflection' : 'mirror direction'}`;
+
+/** An IBL row's method in words: importance sampling's N, else iblMethod. */
+export const iblMethodWords = (r) => (r.samples ? `importance, N = ${r.samples}` : iblMethod(r));
 
 /** An IBL row's case in words: environment, material, α and any anisotropy. */
 export const iblCaseWords = (r) =>

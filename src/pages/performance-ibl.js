@@ -2,7 +2,12 @@
 // --only ibl` measures it alone): each of the material lab's environment methods against the lab's Monte Carlo
 // reference, relative RMS error against the GPU time of its pass, a chart per case and one table; the brushed-metal
 // case (issue 28) in a part of its own that says what each of its methods does, and how converged the reference was.
-import { iblCaseWords as named, iblMethodWords as methodWords, iblStaleNote } from './ibl-note.js';
+import {
+  iblCaseWords as named,
+  iblMethod as methodOf,
+  iblMethodWords as methodWords,
+  iblStaleNote,
+} from './ibl-note.js';
 import { anisotropicAlphas } from '../math/anisotropic.js';
 import { createPlot } from '../core/ui/plot.js';
 import { SERIES_COLORS } from '../core/ui/palettes.js';
@@ -10,11 +15,8 @@ import { SERIES_COLORS } from '../core/ui/palettes.js';
 /** A table row of `cells` (HTML), each in a <td>, or in a <th> for a head row. */
 export const row = (cells, tag = 'td') => `<tr>${cells.map((c) => `<${tag}>${c}</${tag}>`).join('')}</tr>`;
 
-// a case is a material under an environment, anisotropic ones apart; a split sum of an anisotropic case says which
-// direction it reads the light in
+// a case is a material under an environment, anisotropic ones apart
 const caseOf = (r) => `${r.environment}|${r.material}|${r.alpha}|${r.anisotropy ?? 0}`;
-const methodOf = (r) =>
-  r.bent === undefined ? r.method : `${r.method}, ${r.bent ? 'bent reflection' : 'mirror direction'}`;
 const percent = (x, digits = 2) => `${(x * 100).toFixed(digits)} %`;
 
 /** One case's chart: relative RMS error against GPU time, a point per method, importance sampling one curve. */
