@@ -212,8 +212,9 @@ export async function launchBrowser(extraArgs = [], { own = extraArgs.length > 0
  * Opens `path` (relative to the served app); page.errors collects console errors and page errors.
  * `beforeLoad(page)` runs before navigation (e.g. to install instrumentation).
  */
-export async function openPage(browser, baseUrl, path, { width = 1280, height = 900, beforeLoad } = {}) {
+export async function openPage(browser, baseUrl, path, { width = 1280, height = 900, beforeLoad, timeout } = {}) {
   const page = await browser.newPage();
+  if (timeout) page.setDefaultTimeout(timeout); // every wait without its own bound, and the navigation
   page.errors = [];
   page.on('console', (m) => m.type() === 'error' && page.errors.push(`console: ${m.text()}`));
   page.on('pageerror', (e) => page.errors.push(`page: ${e.message}`));

@@ -47,6 +47,7 @@ export const open = (browser, path, { maxSamples, beforeLoad, ...size } = {}) =>
   openPage(browser, baseUrl(), path, {
     ...SMALL_VIEWPORT,
     ...size,
+    timeout: WAIT_MS,
     beforeLoad: async (page) => {
       await page.evaluateOnNewDocument(countDrawCalls);
       if (maxSamples) await page.evaluateOnNewDocument(capSamples, maxSamples);
@@ -65,6 +66,7 @@ export const otherOrigin = () => baseUrl().replace('127.0.0.1', 'localhost');
 export const openForeignParent = (browser) =>
   openPage(browser, baseUrl(), new URL('index.html', otherOrigin()).href, {
     ...SMALL_VIEWPORT,
+    timeout: WAIT_MS,
     beforeLoad: (page) => page.setBypassCSP(true),
   });
 

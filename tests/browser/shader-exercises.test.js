@@ -6,7 +6,7 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { baseUrl, launchBrowser, open, openForeignParent, otherOrigin } from './helpers.js';
+import { WAIT_MS, baseUrl, launchBrowser, open, openForeignParent, otherOrigin } from './helpers.js';
 import { SHADER_SOLUTIONS } from './shader-solutions.js';
 
 let browser;
@@ -27,10 +27,10 @@ async function choose(target, id) {
   }, id);
   await target.waitForFunction(
     (i) => globalThis.__shadingLab?.exercise?.id === i && globalThis.__shadingLab.exercise.ready,
-    { timeout: 30_000 },
+    { timeout: WAIT_MS },
     id,
   );
-  await target.waitForSelector('.exercise-code .cm-content');
+  await target.waitForSelector('.exercise-code .cm-content', { timeout: WAIT_MS });
 }
 
 /**
@@ -159,7 +159,9 @@ describe('the graded message to a parent page', () => {
       frame.style.cssText = 'width: 1200px; height: 900px; border: 0';
       document.body.replaceChildren(frame);
     }, src);
-    const frame = await (await page.waitForSelector('#exercises')).contentFrame();
+    // the frame as it shows exercises.html, not as it was made (about:blank, in the parent's process): a frame on
+    // another site moves to a process of its own when it navigates, and a wait begun before the move may never end
+    const frame = await page.waitForFrame((f) => f.url().startsWith(src.split('#')[0]), { timeout: WAIT_MS });
     await choose(frame, 'shader-schlick');
     return { page, frame };
   }
@@ -171,7 +173,9 @@ describe('the graded message to a parent page', () => {
     expect((await check(frame)).ok).toBe(false);
     await setCode(page, frame, SHADER_SOLUTIONS['shader-schlick'].correct);
     expect((await check(frame)).ok).toBe(true);
-    await page.waitForFunction(() => window.__inbox.filter((m) => m.data?.type === 'shading-lab:graded').length === 2);
+    await page.waitForFunction(() => window.__inbox.filter((m) => m.data?.type === 'shading-lab:graded').length === 2, {
+      timeout: WAIT_MS,
+    });
     const graded = (await page.evaluate(() => window.__inbox)).filter((m) => m.data?.type === 'shading-lab:graded');
     expect(graded.map((m) => m.origin)).toEqual([new URL(baseUrl()).origin, new URL(baseUrl()).origin]);
     expect(graded[0].data).toMatchObject({ id: 'shader-schlick', passed: false });
@@ -180,7 +184,7 @@ describe('the graded message to a parent page', () => {
     expect(graded[1].data).toEqual({ type: 'shading-lab:graded', id: 'shader-schlick', passed: true, score: 1 });
     expect(page.errors).toEqual([]);
     await page.close();
-  }, 90_000);
+  });
 
   it('stays silent to a parent whose origin is not listed', async () => {
     const { page, frame } = await parentWith('?origins=https://course.example.org');
@@ -189,10 +193,12 @@ describe('the graded message to a parent page', () => {
     // the page posts a Check's result in the task that shows it (shader-view.js): a message the frame posts after
     // that comes after it, since postMessage keeps the order of one window's messages to another
     await frame.evaluate(() => window.parent.postMessage({ type: 'after-the-check' }, '*'));
-    await page.waitForFunction(() => window.__inbox.some((m) => m.data?.type === 'after-the-check'));
+    await page.waitForFunction(() => window.__inbox.some((m) => m.data?.type === 'after-the-check'), {
+      timeout: WAIT_MS,
+    });
     const messages = await page.evaluate(() => window.__inbox);
     expect(messages.filter((m) => m.data?.type === 'shading-lab:graded')).toEqual([]);
     expect(page.errors).toEqual([]);
     await page.close();
-  }, 90_000);
+  });
 });
