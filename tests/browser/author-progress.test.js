@@ -5,7 +5,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { allowDownloads, launchBrowser, open } from './helpers.js';
+import { WAIT_MS, allowDownloads, launchBrowser, open } from './helpers.js';
 import { readProgressFile } from '../../src/exercises/progress.js';
 
 // Lo = π (cdiff/π) c_light cos θ = 2 · cos 60° = 1 (docs/exercises.md, lambert-radiance)
@@ -36,19 +36,19 @@ afterAll(async () => {
   rmSync(dir, { recursive: true, force: true });
 });
 
-describe('a progress file on the exercises page', { timeout: 120_000 }, () => {
+describe('a progress file on the exercises page', () => {
   it('saves the progress to a file, and brings it back after a reset', async () => {
     const src = encodeURIComponent(`data:application/json,${JSON.stringify(SET)}`);
     const page = await open(browser, `exercises.html?src=${src}`, { width: 1280, height: 900 });
     await allowDownloads(page, dir);
-    await page.waitForFunction(() => globalThis.__shadingLab?.exercise?.ready, { timeout: 30_000 });
+    await page.waitForFunction(() => globalThis.__shadingLab?.exercise?.ready, { timeout: WAIT_MS });
     await page.type('#exercise-answer', '1');
     await page.click('.exercise-check');
     await page.waitForSelector('.exercise-feedback.ok');
     await page.type('#progress-name', 'Ada L.');
     await page.click('#progress-save');
     const file = join(dir, 'ada-l-shading-lab-progress.json');
-    await expect.poll(() => existsSync(file), { timeout: 30_000 }).toBe(true);
+    await expect.poll(() => existsSync(file), { timeout: WAIT_MS }).toBe(true);
     const got = readProgressFile(readFileSync(file, 'utf8'));
     expect(got.file).toMatchObject({ name: 'Ada L.', set: 'One wall' });
     expect(got.file.exercises).toEqual([{ id: 'wall', title: 'A lit wall', points: 3, solved: true, attempts: 1 }]);

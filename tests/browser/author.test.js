@@ -9,7 +9,7 @@ import { existsSync, mkdtempSync, readFileSync, readdirSync, rmSync, statSync, w
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { strFromU8, unzipSync } from 'fflate';
-import { allowDownloads, launchBrowser, open } from './helpers.js';
+import { WAIT_MS, allowDownloads, launchBrowser, open } from './helpers.js';
 import { ROOT } from './harness.js';
 import { readExerciseSet } from '../../src/exercises/load.js';
 import { WIDGETS } from '../../src/widgets/registry.js';
@@ -47,8 +47,8 @@ async function fill(page, path, text) {
 /** A file the page downloads into `downloads`, once complete. */
 async function downloaded(name) {
   const file = join(downloads, name);
-  await expect.poll(() => existsSync(file) && !existsSync(`${file}.crdownload`), { timeout: 60_000 }).toBe(true);
-  await expect.poll(() => statSync(file).size, { timeout: 5000 }).toBeGreaterThan(0);
+  await expect.poll(() => existsSync(file) && !existsSync(`${file}.crdownload`), { timeout: WAIT_MS }).toBe(true);
+  await expect.poll(() => statSync(file).size, { timeout: WAIT_MS }).toBeGreaterThan(0);
   return readFileSync(file);
 }
 
@@ -109,9 +109,9 @@ describe('the author page', { timeout: 600_000 }, () => {
 
     // the preview is exercises.html: answered as a student would, graded against Lo = cdiff · c_light · cos θ
     const lo = 1 * 2 * Math.cos(60 * DEG);
-    const frameHandle = await page.waitForSelector('.author-frame[src*="wall-light"]', { timeout: 20_000 });
+    const frameHandle = await page.waitForSelector('.author-frame[src*="wall-light"]', { timeout: WAIT_MS });
     const frame = await frameHandle.contentFrame();
-    await frame.waitForFunction(() => globalThis.__shadingLab?.exercise?.id === 'wall-light', { timeout: 30_000 });
+    await frame.waitForFunction(() => globalThis.__shadingLab?.exercise?.id === 'wall-light', { timeout: WAIT_MS });
     for (const [answer, ok] of [
       [String(lo * Math.PI), false],
       [String(lo), true],
@@ -130,7 +130,7 @@ describe('the author page', { timeout: 600_000 }, () => {
     // a widget-state exercise: the lock the grader needs is named beside the locks, ticked on the widget's list
     await page.select('#author-new-kind', 'state');
     await page.click('#author-new');
-    await page.waitForSelector(`[data-field="locked"] input[value="material"]`, { timeout: 30_000 });
+    await page.waitForSelector(`[data-field="locked"] input[value="material"]`, { timeout: WAIT_MS });
     await expect
       .poll(() => messages(page, '[data-field="locked"]'))
       .toContain('locked: must include "material" (grader "fresnel-reflectance-angle" takes the question from it)');
@@ -181,7 +181,7 @@ describe('the author page', { timeout: 600_000 }, () => {
     await page.click('#author-share');
     const link = await page.waitForSelector('#author-link').then((h) => h.evaluate((el) => el.value));
     const shared = await open(browser, link.replace(/^.*?exercises\.html/, 'exercises.html'));
-    await shared.waitForFunction(() => globalThis.__shadingLab?.exercise?.ready, { timeout: 30_000 });
+    await shared.waitForFunction(() => globalThis.__shadingLab?.exercise?.ready, { timeout: WAIT_MS });
     expect(await shared.$eval('.exercise-progress', (p) => p.textContent.trim())).toBe('0 of 3 solved');
     expect(shared.errors).toEqual([]);
     await shared.close();

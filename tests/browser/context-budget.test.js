@@ -4,7 +4,7 @@
 // under the policy and by axe-core (as every other page is in axe.test.js): mounting them is most of the time either
 // takes. Progressive views are capped at a few samples (a picture, not a converged one, is what is checked here).
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { afterFrames, baseUrl, capSamples, distinctColors, launchBrowser, open } from './helpers.js';
+import { WAIT_MS, afterFrames, baseUrl, capSamples, distinctColors, launchBrowser, open } from './helpers.js';
 import { openPage } from './harness.js';
 import { recordViolations } from './under-policy.js';
 import { axeViolations } from './axe-run.js';
@@ -280,7 +280,7 @@ describe('embeds in same-origin frames share one context budget', () => {
             [...document.querySelectorAll('.gallery-card iframe')].every(
               (f) => Object.keys(f.contentWindow?.__shadingLab?.widgets ?? {}).length === 1,
             ),
-          { timeout: 60_000, polling: 100 },
+          { timeout: WAIT_MS, polling: 100 },
         );
         for (const index of await viewsInSight(page, '.gallery-card')) {
           if (drawn.has(names[index])) continue;
@@ -339,11 +339,11 @@ describe('embeds in same-origin frames share one context budget', () => {
     }, new URL('embed.html?w=ndf-explorer', baseUrl()).href);
     for (const id of ['a', 'b']) {
       const frame = await (await page.$(`#${id}`)).contentFrame();
-      await frame.waitForFunction(() => globalThis.__shadingLab?.widgets?.['ndf-explorer'], { timeout: 30_000 });
+      await frame.waitForFunction(() => globalThis.__shadingLab?.widgets?.['ndf-explorer'], { timeout: WAIT_MS });
     }
     expect(await budget()).toEqual({ views: 2, held: 2 });
     await page.$eval('#a', (f) => f.remove());
-    await page.waitForFunction(() => window.__shadingLabGl.views.length === 1, { timeout: 5000 });
+    await page.waitForFunction(() => window.__shadingLabGl.views.length === 1, { timeout: WAIT_MS });
     expect(await budget()).toEqual({ views: 1, held: 1 });
     expect(page.errors).toEqual([]);
     await page.close();

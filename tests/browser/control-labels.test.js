@@ -54,6 +54,6 @@ describe('control panels', () => {
       expect(cut).toEqual([]);
       expect(page.errors).toEqual([]);
       await page.close();
-    }, 90_000);
+    });
   }
 });

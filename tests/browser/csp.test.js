@@ -4,7 +4,7 @@
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { launchBrowser } from './helpers.js';
+import { WAIT_MS, launchBrowser } from './helpers.js';
 import { ROOT } from './harness.js';
 import { BUILT, openUnderPolicy } from './under-policy.js';
 
@@ -79,7 +79,7 @@ describe('Content-Security-Policy', () => {
           );
         });
       await expect
-        .poll(refused, { timeout: 60_000 })
+        .poll(refused, { timeout: WAIT_MS })
         .toBe(true)
         .catch(() => {});
       expect(await page.evaluate(() => window.__ranList)).toEqual([]);

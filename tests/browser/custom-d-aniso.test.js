@@ -11,7 +11,7 @@ let server;
 let page;
 beforeAll(async () => {
   ({ browser, server, page } = await openCustomTermsPage());
-}, 180_000);
+});
 afterAll(async () => {
   await browser?.close();
   server?.close();

@@ -4,6 +4,7 @@
 // URL and postMessage carrying the code; code from a link waiting for a click; a lost context and its recovery.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import {
+  WAIT_MS,
   baseUrl,
   getState,
   launchBrowser,
@@ -64,7 +65,7 @@ async function openLobe(query, { drawn = true } = {}) {
     return page;
   }
   await widget(page, KEY);
-  await page.waitForSelector('.custom-panel .cm-content', { timeout: 30_000 });
+  await page.waitForSelector('.custom-panel .cm-content', { timeout: WAIT_MS });
   await untilIdle(page);
   return page;
 }
@@ -258,7 +259,7 @@ describe('custom terms in brdf-lobe: errors, safety, sharing', () => {
       new URL(`embed.html?w=${KEY}&D=custom&${WITH_B}`, baseUrl()).href,
     );
     const frame = await (await parent.waitForSelector('#embedded')).contentFrame();
-    await frame.waitForSelector('.custom-panel .cm-content', { timeout: 30_000 });
+    await frame.waitForSelector('.custom-panel .cm-content', { timeout: WAIT_MS });
     const sent = `${unique()}${D_TWICE_GGX}`;
     const post = (m) =>
       parent.evaluate((m, o) => document.getElementById('embedded').contentWindow.postMessage(m, o), m, baseUrl());
@@ -286,11 +287,11 @@ describe('custom terms in brdf-lobe: errors, safety, sharing', () => {
       window.__lose.loseContext();
     });
     const status = () => panelText(page, 'D', '.custom-status');
-    await expect.poll(status, { timeout: 30_000 }).toMatch(/WebGL context away; it comes back by itself/); // an event
+    await expect.poll(status, { timeout: WAIT_MS }).toMatch(/WebGL context away; it comes back by itself/); // an event
     await untilIdle(page);
     expect(await shot(page, '.polar-plot canvas')).toBe(good);
     await page.evaluate(() => window.__lose.restoreContext());
-    await expect.poll(status, { timeout: 30_000 }).toMatch(/Running your code/);
+    await expect.poll(status, { timeout: WAIT_MS }).toMatch(/Running your code/);
     await untilIdle(page);
     expect(await shot(page, '.polar-plot canvas')).toBe(good);
     await typeCode(page, 'D', D_TWICE_GGX.replace('2.0 * a2', 'a2'));
@@ -317,9 +318,9 @@ describe('custom terms in brdf-lobe: errors, safety, sharing', () => {
     await page.evaluate(() => (window.__hangOnce = true));
     await typeCode(page, 'D', D_TWICE_GGX.replace('2.0 * a2', '4.0 * a2'));
     const status = () => panelText(page, 'D', '.custom-status');
-    await expect.poll(status, { timeout: 30_000 }).toMatch(/while your new code was drawing/);
+    await expect.poll(status, { timeout: WAIT_MS }).toMatch(/while your new code was drawing/);
     await page.evaluate(() => window.__lose.restoreContext());
-    await expect.poll(status, { timeout: 30_000 }).toMatch(/Your code was running when the GPU took/);
+    await expect.poll(status, { timeout: WAIT_MS }).toMatch(/Your code was running when the GPU took/);
     await untilIdle(page);
     expect((await polarPeaks(page)).A / (3 * jsPeak({}))).toBeCloseTo(1, 2); // the code before it
     await page.click('.custom-panel[data-slot="D"] .cm-content');

@@ -4,6 +4,7 @@
 // c; V = 2/((n·l)(n·v)) puts G = 2 outside [0, 1]); an Inf found at its input; a compile error on the user's line.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { openCustomTermsPage } from './custom-terms-open.js';
+import { WAIT_MS } from './helpers.js';
 import { CHECK_ALPHAS } from '../../src/core/custom/check-inputs.js';
 import { GRIDS } from '../../src/core/gpu/parity-cases.js';
 import { withCustomChunk } from '../../src/core/custom/assemble.js';
@@ -17,7 +18,7 @@ let server;
 let page;
 beforeAll(async () => {
   ({ browser, server, page } = await openCustomTermsPage());
-}, 180_000);
+});
 afterAll(async () => {
   await browser?.close();
   server?.close();
@@ -154,14 +155,16 @@ describe('a lost WebGL context (watchContext)', () => {
     const suspect = { slot: 'D', code: D('  return 1.0;'), params: {} };
     await page.evaluate((p) => window.__customTerms.run(p, { draw: false }), suspect);
     await page.evaluate(() => window.__customTerms.lose());
-    await page.waitForFunction(() => window.__customTerms.events.some((e) => e.type === 'lost'));
+    await page.waitForFunction(() => window.__customTerms.events.some((e) => e.type === 'lost'), {
+      timeout: WAIT_MS,
+    });
     const lost = await page.evaluate(() => window.__customTerms.events.find((e) => e.type === 'lost'));
     expect(lost.message).toMatch(/while your new code was drawing/);
     expect(lost.suspect).toEqual(suspect);
     expect(await check('D', good.code)).toEqual({ errors: [{ line: 0, message: 'the WebGL context is lost' }] });
     await page.evaluate(() => window.__customTerms.restore());
     await page.waitForFunction(() => window.__customTerms.events.some((e) => e.type === 'restored'), {
-      timeout: 30_000,
+      timeout: WAIT_MS,
     });
     const restored = await page.evaluate(() => window.__customTerms.events.find((e) => e.type === 'restored'));
     expect(restored.program).toEqual(good);

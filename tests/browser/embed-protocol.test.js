@@ -2,8 +2,10 @@
 // bad messages ignored, other origins refused unless listed, the content's height told to allowed origins only.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import {
+  WAIT_MS,
   afterFrames,
   baseUrl,
+  frameOf,
   launchBrowser,
   open,
   openForeignParent,
@@ -34,10 +36,9 @@ async function embedIn(page, src) {
     frame.style.cssText = 'width: 1000px; height: 700px; border: 0';
     document.body.replaceChildren(frame);
   }, src);
-  const handle = await page.waitForSelector('#embedded');
-  const frame = await handle.contentFrame();
+  const frame = await frameOf(page, '#embedded');
   await frame.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 1, {
-    timeout: 30_000,
+    timeout: WAIT_MS,
   });
   return frame;
 }
@@ -49,7 +50,7 @@ const post = (page, message, targetOrigin) =>
 const inbox = (page) => page.evaluate(() => window.__inbox);
 const waitForMessage = (page, test) =>
   page
-    .waitForFunction(`window.__inbox.map((m) => m.data).find(${test})`, { timeout: 15_000 })
+    .waitForFunction(`window.__inbox.map((m) => m.data).find(${test})`, { timeout: WAIT_MS })
     .then((h) => h.jsonValue());
 const widgetState = (frame) => frame.evaluate(() => Object.values(globalThis.__shadingLab.widgets)[0].getState());
 
@@ -70,7 +71,7 @@ describe('postMessage protocol of embed.html', () => {
       const height = () => frame.$eval('#embed', (m) => Math.ceil(m.getBoundingClientRect().height));
       const lastResize = async () => (await inbox(page)).findLast((m) => m.data.type === 'shading-lab:resize')?.data;
       await expect
-        .poll(async () => [await lastResize(), await height()], { timeout: 15_000 })
+        .poll(async () => [await lastResize(), await height()], { timeout: WAIT_MS })
         .toSatisfy(([m, h]) => m?.height === h);
       expect(await lastResize()).toEqual({
         type: 'shading-lab:resize',
@@ -109,7 +110,7 @@ describe('postMessage protocol of embed.html', () => {
       expect(noticeText).toMatch(/banana/);
       expect(noticeText).toMatch(/colour/);
       const frameParam = (f, key) => new URL(f.url()).searchParams.get(key); // the URL is written back after a pause
-      await expect.poll(() => frameParam(frame, 'mode'), { timeout: 10_000 }).toBe('zones-lh');
+      await expect.poll(() => frameParam(frame, 'mode'), { timeout: WAIT_MS }).toBe('zones-lh');
       // a change the parent made is not echoed back as a user change
       expect((await inbox(page)).some((m) => m.data.type === 'shading-lab:changed')).toBe(false);
 
@@ -211,7 +212,7 @@ describe('postMessage protocol of embed.html', () => {
     expect((await widgetState(allowed)).mode).toBe('zones-lh');
     expect((await inbox(page)).every((m) => m.origin === widgetOrigin)).toBe(true);
     // kept when the state is written back (after a pause)
-    await expect.poll(() => new URL(allowed.url()).searchParams.get('mode'), { timeout: 10_000 }).toBe('zones-lh');
+    await expect.poll(() => new URL(allowed.url()).searchParams.get('mode'), { timeout: WAIT_MS }).toBe('zones-lh');
     expect(new URL(allowed.url()).searchParams.get('origins')).toBe(parentOrigin);
     expect(page.errors).toEqual([]);
     await page.close();

@@ -4,7 +4,7 @@
 import { afterAll, beforeAll, describe, expect, it, onTestFinished } from 'vitest';
 import { openPage } from './harness.js';
 import { serveDecks } from './decks.js';
-import { WAIT_MS, baseUrl, launchBrowser, untilIdle } from './helpers.js';
+import { WAIT_MS, baseUrl, frameOf, launchBrowser, untilIdle } from './helpers.js';
 
 let browser;
 let decks;
@@ -19,9 +19,9 @@ afterAll(async () => {
 
 /** The frame of iframe `selector` in `page`, once its widget is registered. */
 async function widgetFrame(page, selector) {
-  const frame = await (await page.waitForSelector(selector)).contentFrame();
+  const frame = await frameOf(page, selector);
   await frame.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 1, {
-    timeout: 30_000,
+    timeout: WAIT_MS,
   });
   return frame;
 }
@@ -29,6 +29,7 @@ async function widgetFrame(page, selector) {
 describe('embedding', () => {
   it('a widget in an iframe fills the frame and follows its size', async () => {
     const page = await browser.newPage();
+    page.setDefaultTimeout(WAIT_MS); // as open() does: setContent waits for the frame's load too
     const url = new URL('embed.html?w=fresnel-zones', baseUrl()).href;
     await page.setContent(`<iframe id="f" src="${url}" style="width:480px;height:420px;border:0"></iframe>`);
     const frame = await widgetFrame(page, '#f');
@@ -52,9 +53,10 @@ describe('embedding', () => {
       const page = await openPage(browser, decks.url, `/examples/element/index.html?lab=${lab}`, {
         width: 1280,
         height: 800,
+        timeout: WAIT_MS,
       });
       onTestFinished(() => page.close().catch(() => {}));
-      await page.waitForFunction(() => document.getElementById('zones').ready, { timeout: 30_000 });
+      await page.waitForFunction(() => document.getElementById('zones').ready, { timeout: WAIT_MS });
       const frame = await widgetFrame(page, '#zones iframe');
       // the frame's own measure of its content, against the element's height in the page
       const fits = () =>
@@ -96,6 +98,7 @@ describe('embedding', () => {
 
   it('the presenter view (presenter=1) has no control panel and its 3-D view fills the frame', async () => {
     const page = await browser.newPage();
+    page.setDefaultTimeout(WAIT_MS);
     onTestFinished(() => page.close().catch(() => {}));
     const url = new URL('embed.html?w=fresnel-zones&presenter=1', baseUrl()).href;
     await page.setContent(`<iframe id="f" src="${url}" style="width:960px;height:540px;border:0"></iframe>`);
@@ -112,7 +115,7 @@ describe('embedding', () => {
           scrolls: main.scrollHeight > main.clientHeight || document.documentElement.scrollHeight > innerHeight,
         };
       });
-    await expect.poll(layout, { timeout: 15_000 }).toMatchObject({ controls: false, viewWidth: 1, scrolls: false });
+    await expect.poll(layout, { timeout: WAIT_MS }).toMatchObject({ controls: false, viewWidth: 1, scrolls: false });
     // the rest below the view is the zone legend, a sixth of the frame at most
     expect((await layout()).viewShare).toBeGreaterThan(0.8);
     // the whole state still comes from the URL, and the URL written back keeps presenter=1

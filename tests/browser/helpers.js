@@ -70,6 +70,17 @@ export const openForeignParent = (browser) =>
     beforeLoad: (page) => page.setBypassCSP(true),
   });
 
+/**
+ * The frame of the iframe `selector` in `page` once it shows its src (the first frame to, the hash aside). An iframe
+ * on another site than its parent moves to a process of its own when it navigates: a wait begun on it before the move
+ * (on contentFrame() of a frame just made) may never end. (A frame on its parent's site can take contentFrame().)
+ */
+export async function frameOf(page, selector, { timeout = WAIT_MS } = {}) {
+  const src = new URL(await (await page.waitForSelector(selector, { timeout })).evaluate((f) => f.src));
+  src.hash = '';
+  return page.waitForFrame((f) => f.url().startsWith(src.href), { timeout });
+}
+
 let steadyWaits = 0;
 
 /**
