@@ -5,7 +5,7 @@ import {
   WAIT_MS,
   afterFrames,
   baseUrl,
-  frameOf,
+  frameShowing,
   launchBrowser,
   open,
   openForeignParent,
@@ -36,7 +36,7 @@ async function embedIn(page, src) {
     frame.style.cssText = 'width: 1000px; height: 700px; border: 0';
     document.body.replaceChildren(frame);
   }, src);
-  const frame = await frameOf(page, '#embedded');
+  const frame = await frameShowing(page, '#embedded');
   await frame.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 1, {
     timeout: WAIT_MS,
   });

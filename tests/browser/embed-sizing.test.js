@@ -4,7 +4,7 @@
 import { afterAll, beforeAll, describe, expect, it, onTestFinished } from 'vitest';
 import { openPage } from './harness.js';
 import { serveDecks } from './decks.js';
-import { WAIT_MS, baseUrl, frameOf, launchBrowser, untilIdle } from './helpers.js';
+import { WAIT_MS, baseUrl, frameShowing, launchBrowser, untilIdle } from './helpers.js';
 
 let browser;
 let decks;
@@ -19,7 +19,7 @@ afterAll(async () => {
 
 /** The frame of iframe `selector` in `page`, once its widget is registered. */
 async function widgetFrame(page, selector) {
-  const frame = await frameOf(page, selector);
+  const frame = await frameShowing(page, selector);
   await frame.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 1, {
     timeout: WAIT_MS,
   });

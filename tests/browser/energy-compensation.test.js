@@ -2,7 +2,7 @@
 // albedo of 1, so each pixel inside each sphere reads back as the white background (the truth: a surface that
 // loses nothing is invisible in the furnace); without compensation the rough sphere stays grey.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { launchBrowser, open, shot, untilIdle, untilSteady, widget, withPixels } from './helpers.js';
+import { WAIT_MS, launchBrowser, open, shot, untilIdle, untilSteady, widget, withPixels } from './helpers.js';
 
 let browser;
 beforeAll(async () => {
@@ -82,7 +82,7 @@ describe("energy: the coloured metal's random walk", () => {
       const walkShown = () =>
         page.waitForFunction(
           () => document.querySelector('.data-table caption') && !document.querySelector('.walk-pending'),
-          { timeout: 60_000 },
+          { timeout: WAIT_MS },
         );
       await walkShown();
       await untilIdle(page);
@@ -135,7 +135,6 @@ describe("energy: the coloured metal's random walk", () => {
       expect(page.errors).toEqual([]);
       await page.close();
     },
-    180_000,
   );
 });
 

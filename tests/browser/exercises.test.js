@@ -5,7 +5,7 @@ import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
-import { getState, launchBrowser, open, setControl, untilIdle } from './helpers.js';
+import { WAIT_MS, getState, launchBrowser, open, setControl, untilIdle } from './helpers.js';
 import { DEG } from '../../src/math/angles.js';
 
 let browser;
@@ -24,9 +24,7 @@ afterAll(async () => {
  * wait for them to converge.
  */
 async function openExercises(path) {
-  const page = await open(browser, path, { width: 860, height: 640, maxSamples: 8 });
-  page.setDefaultTimeout(120_000); // each wait is for a condition; a widget's set-up can take over 30 s under load
-  return page;
+  return open(browser, path, { width: 860, height: 640, maxSamples: 8 });
 }
 
 /** Opens an exercise from the list, as a reader would, and waits for its widget (if any). */
@@ -37,7 +35,7 @@ async function choose(page, id, { keyboard = false } = {}) {
   } else await page.click(`#exercise-list a[href="#${id}"]`);
   await page.waitForFunction(
     (i) => globalThis.__shadingLab.exercise?.id === i && globalThis.__shadingLab.exercise.ready,
-    { timeout: 120_000 }, // lake-mirror's surfaces widget took over 30 s to set up under a load average of 50
+    { timeout: WAIT_MS }, // lake-mirror's surfaces widget took over 30 s to set up under a load average of 50
     id,
   );
   await untilIdle(page);
@@ -203,7 +201,7 @@ describe('exercises', () => {
     expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 27 solved');
     expect(page.errors).toEqual([]);
     await page.close();
-  }, 240_000);
+  });
 
   it('one attempt per answer; the depth in metres; Next exercise by keyboard; the sliders beside Check', async () => {
     const page = await openExercises('exercises.html');
@@ -249,7 +247,7 @@ describe('exercises', () => {
     await page.waitForFunction(() => document.querySelector('#exercise-control-theta').value === '50');
     expect(page.errors).toEqual([]);
     await page.close();
-  }, 90_000);
+  });
 
   it('Which NDF: the question number is in the address and on the page, and a reload shows the same one', async () => {
     const page = await openExercises('exercises.html?seed=77#which-ndf');
@@ -270,7 +268,7 @@ describe('exercises', () => {
     expect(await page.evaluate(() => globalThis.__shadingLab.exercise.hidden)).toBe(hidden);
     expect(page.errors).toEqual([]);
     await page.close();
-  }, 60_000);
+  });
 
   it('shows a bad set’s errors on the page and keeps its good exercises', async () => {
     const set = [

@@ -4,14 +4,14 @@
 // says what to do when its scripts are refused (a sandboxed frame without CORS), with no script of its own.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { SMALL_VIEWPORT, openPage } from './harness.js';
-import { WAIT_MS, baseUrl, launchBrowser, otherOrigin } from './helpers.js';
+import { WAIT_MS, baseUrl, frameShowing, launchBrowser, otherOrigin } from './helpers.js';
 import { WIDGETS } from '../../src/widgets/registry.js';
 
 let browser;
 // each page in a context of its own: no service worker of an earlier page serves the chunk that is to be aborted;
 // in the small window (no claim here is about a size: SwiftShader draws every pixel on the CPU)
 const open = async (path, options) =>
-  openPage(await browser.createBrowserContext(), baseUrl(), path, { ...SMALL_VIEWPORT, ...options });
+  openPage(await browser.createBrowserContext(), baseUrl(), path, { ...SMALL_VIEWPORT, timeout: WAIT_MS, ...options });
 beforeAll(async () => {
   browser = await launchBrowser();
 });
@@ -185,7 +185,7 @@ describe('embed.html when its scripts are refused', () => {
       frame.style.cssText = 'width: 900px; height: 500px; border: 0';
       document.body.replaceChildren(frame);
     }, new URL('embed.html?w=fresnel-curves', baseUrl()).href);
-    const frame = await (await page.waitForSelector('#embedded')).contentFrame();
+    const frame = await frameShowing(page, '#embedded');
     const words = await fallback(frame);
     expect(words).toMatch(/scripts did not run/);
     expect(words).toMatch(/allow-same-origin/);
@@ -196,7 +196,7 @@ describe('embed.html when its scripts are refused', () => {
   it('with scripts turned off: the same words; with them on, the app replaces them at once', async () => {
     const off = await (await browser.createBrowserContext()).newPage();
     await off.setJavaScriptEnabled(false);
-    await off.goto(new URL('embed.html?w=fresnel-curves', baseUrl()).href);
+    await off.goto(new URL('embed.html?w=fresnel-curves', baseUrl()).href, { timeout: WAIT_MS });
     expect(await fallback(off)).toMatch(/turn them on/);
     await off.close();
     const on = await open('embed.html?w=fresnel-curves');

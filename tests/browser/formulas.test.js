@@ -1,7 +1,7 @@
 // Typeset formulas in Chromium: every chapter's formulas become MathML that the browser lays out, and a widget's
 // live formula shows the model's numbers (recomputed here from the closed form) and lights up with its controls.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { afterFrames, launchBrowser, open as openLarge, setControl, untilIdle, widget } from './helpers.js';
+import { WAIT_MS, afterFrames, launchBrowser, open as openLarge, setControl, untilIdle, widget } from './helpers.js';
 import { SMALL_VIEWPORT } from './harness.js';
 
 /**
@@ -25,7 +25,7 @@ const typeset = (page) =>
       [...document.querySelectorAll('[data-tex], .widget-formula')].every((el) => el.querySelector('math')) &&
       document.querySelectorAll('.widget-formula').length === document.querySelectorAll('[data-widget]').length &&
       document.querySelectorAll('[data-widget]').length >= document.querySelectorAll('[data-slot]').length,
-    { timeout: 60_000 },
+    { timeout: WAIT_MS },
   );
 
 /** What the page's formulas came out as: counts, layout sizes, and any formula KaTeX refused. */
@@ -92,9 +92,7 @@ describe('formulas', () => {
       const f0 = ((n - 1) / (n + 1)) ** 2; // the closed form, here
       await page.waitForFunction(
         (x) => document.querySelector('.widget-formula math')?.textContent.includes(x),
-        {
-          timeout: 10_000,
-        },
+        { timeout: WAIT_MS },
         f0.toFixed(3),
       );
       expect(await formulaText()).toContain((1 - f0).toFixed(3)); // Schlick's 1 − F0
@@ -145,7 +143,7 @@ describe('formulas in data: a tour step’s text and an exercise’s prompt ($�
         const all = [...document.querySelectorAll(`${sel} [data-tex]`)];
         return all.length > 0 && all.every((el) => el.querySelector('math'));
       },
-      { timeout: 60_000 },
+      { timeout: WAIT_MS },
       selector,
     );
     return page.$$eval(`${selector} [data-tex]`, (els) =>
@@ -165,7 +163,7 @@ describe('formulas in data: a tour step’s text and an exercise’s prompt ($�
     expect(await page.$eval('.tour-text', (p) => p.textContent)).not.toContain('$');
     expect(page.errors).toEqual([]);
     await page.close();
-  }, 120_000);
+  });
 
   it('exercise shader-ggx-tiny-alpha: GGX D = α²/(π((n·h)²(α² − 1) + 1)²) is a MathML fraction', async () => {
     const page = await open(browser, 'exercises.html#shader-ggx-tiny-alpha');
@@ -178,7 +176,7 @@ describe('formulas in data: a tour step’s text and an exercise’s prompt ($�
     expect(formulas.every((f) => f.width > 4 && !f.title.startsWith('Formula not typeset'))).toBe(true);
     expect(page.errors).toEqual([]);
     await page.close();
-  }, 120_000);
+  });
 
   it('a hostile prompt stays inert: \\href{javascript:…} is not a link, <img onerror> is text', async () => {
     const prompt = 'Costs \\$5. $\\href{javascript:window.__pwned=1}{x}$ <img src=x onerror="window.__pwned=2">';
@@ -201,5 +199,5 @@ describe('formulas in data: a tour step’s text and an exercise’s prompt ($�
     expect(await page.evaluate(() => globalThis.__pwned)).toBeUndefined();
     expect(page.errors).toEqual([]);
     await page.close();
-  }, 120_000);
+  });
 });

@@ -24,6 +24,7 @@ import {
 import {
   baseUrl,
   capSamples,
+  frameShowing,
   launchBrowser,
   open,
   openForeignParent,
@@ -76,7 +77,7 @@ async function embed(src) {
     frame.style.cssText = 'width: 900px; height: 640px; border: 0';
     document.body.replaceChildren(frame);
   }, src);
-  const frame = await (await parent.waitForSelector('#embedded')).contentFrame();
+  const frame = await frameShowing(parent, '#embedded');
   await frame.waitForFunction(() => Object.keys(globalThis.__shadingLab?.widgets ?? {}).length === 1, {
     timeout: WAIT_MS,
   });
@@ -104,7 +105,7 @@ async function postAll(messages, last) {
   })()`);
   await parent.waitForFunction(
     (id) => window.__inbox.some((d) => d?.id === id && d.type === 'shading-lab:state'),
-    { timeout: 30_000 },
+    { timeout: WAIT_MS },
     last,
   );
   return parent.evaluate(() => window.__inbox.splice(0));
@@ -134,10 +135,10 @@ async function settled(frame) {
       const table = source.startsWith(labels[measured?.getState().example]);
       return (!p || p.frame >= p.target) && (!measured || (table && fitted));
     },
-    { timeout: 90_000 },
+    { timeout: WAIT_MS },
     EXAMPLE_LABELS,
   );
-  await untilSteady(frame, 'layout', { timeout: 60_000 });
+  await untilSteady(frame, 'layout');
   // the web fonts its text asked for (KaTeX's, for a formula drawn late) in: a swap redraws every glyph
   await frame.waitForFunction(() => document.fonts.status === 'loaded', { timeout: WAIT_MS });
   await untilIdle(frame); // its last frame drawn and its pauses over, counted by the app (debug-hooks.js)
@@ -254,7 +255,7 @@ const DROPS = {
         await dropFile(frame, '.widget-material-lab', name, bytes);
         await frame.waitForFunction(
           (n) => [...document.querySelectorAll('.notice')].some((x) => x.textContent.includes(`“${n}”`)),
-          { timeout: 20_000 },
+          { timeout: WAIT_MS },
           name,
         );
         counts.inputs++;
@@ -272,7 +273,7 @@ const DROPS = {
     'measured-brdf refuses empty, short-header, 2 GB-claiming, wrong-dimension and oversized .binary files by ' +
       'name, keeping the last table',
     async (frame) => {
-      await frame.waitForFunction(() => document.querySelector('.measured-source')?.textContent, { timeout: 60_000 });
+      await frame.waitForFunction(() => document.querySelector('.measured-source')?.textContent, { timeout: WAIT_MS });
       const source = await frame.$eval('.measured-source', (el) => el.textContent);
       const protoNames = () => frame.evaluate(() => Object.getOwnPropertyNames(Object.prototype).sort().join(','));
       const prototypeBefore = await protoNames();
@@ -294,7 +295,7 @@ const DROPS = {
         await dropFile(frame, '.measured-drop', name, bytes);
         await frame.waitForFunction(
           (n) => [...document.querySelectorAll('.notice')].some((x) => x.textContent.includes(`${n}:`)),
-          { timeout: 20_000 },
+          { timeout: WAIT_MS },
           name,
         );
         const notice = await frame.$$eval(
@@ -436,19 +437,14 @@ describe('fuzz: every widget by URL and by postMessage from another origin', () 
         expect(dialogs).toEqual([]);
         expect(parent.errors).toEqual([]);
       },
-      180_000,
     );
     if (DROPS[name]) {
       const [title, check] = DROPS[name];
-      it(
-        title,
-        async () => {
-          await check(await frameOf(name));
-          expect(dialogs).toEqual([]);
-          expect(parent.errors).toEqual([]);
-        },
-        120_000,
-      );
+      it(title, async () => {
+        await check(await frameOf(name));
+        expect(dialogs).toEqual([]);
+        expect(parent.errors).toEqual([]);
+      });
     }
   }
 });
@@ -469,7 +465,7 @@ describe('fuzz: files dropped and fetched', () => {
       const tour = await open(browser, `tour.html#${long}`, SMALL_VIEWPORT);
       await tour.waitForFunction(
         () => [...document.querySelectorAll('.notice')].some((x) => x.textContent.includes('There is no step')),
-        { timeout: 45_000 },
+        { timeout: WAIT_MS },
       );
       const notice = await tour.$$eval('.notice', (n) =>
         n.map((x) => x.textContent).find((t) => t.includes('There is no step')),
@@ -481,7 +477,6 @@ describe('fuzz: files dropped and fetched', () => {
       counts.inputs += 2;
       counts.refusals += 2;
     },
-    120_000,
   );
 
   it(
@@ -512,7 +507,7 @@ describe('fuzz: files dropped and fetched', () => {
         browser,
         `exercises.html?src=${encodeURIComponent(`data:application/json,${JSON.stringify(set)}`)}#%E0%A4%A`,
       );
-      await page.waitForFunction(() => globalThis.__shadingLab?.exercise?.ready, { timeout: 45_000 });
+      await page.waitForFunction(() => globalThis.__shadingLab?.exercise?.ready, { timeout: WAIT_MS });
       const problems = await page.$eval('#exercise-problems', (el) => el.textContent);
       for (const n of PROTOTYPE_NAMES) expect(problems).toContain(`unknown grader "${n}"`);
       expect(await page.$eval('#exercise h2', (h) => h.textContent)).toBe(good.title); // shown as text
@@ -529,7 +524,7 @@ describe('fuzz: files dropped and fetched', () => {
         await dropFile(page, '#exercise-drop', name, bytes);
         await page.waitForFunction(
           (n) => document.querySelector('#exercise-problems').textContent.includes(`${n}: 1 problem`),
-          { timeout: 20_000 },
+          { timeout: WAIT_MS },
           name,
         );
         counts.inputs++;
@@ -548,6 +543,5 @@ describe('fuzz: files dropped and fetched', () => {
       expect(page.errors).toEqual([]);
       await page.close();
     },
-    120_000,
   );
 });

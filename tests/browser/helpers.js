@@ -75,10 +75,10 @@ export const openForeignParent = (browser) =>
  * on another site than its parent moves to a process of its own when it navigates: a wait begun on it before the move
  * (on contentFrame() of a frame just made) may never end. (A frame on its parent's site can take contentFrame().)
  */
-export async function frameOf(page, selector, { timeout = WAIT_MS } = {}) {
+export async function frameShowing(page, selector, { timeout = WAIT_MS } = {}) {
   const src = new URL(await (await page.waitForSelector(selector, { timeout })).evaluate((f) => f.src));
   src.hash = '';
-  return page.waitForFrame((f) => f.url().startsWith(src.href), { timeout });
+  return page.waitForFrame((f) => !f.detached && f.url().startsWith(src.href), { timeout });
 }
 
 let steadyWaits = 0;
@@ -90,7 +90,7 @@ let steadyWaits = 0;
  * so it waits the longer. (Checked on a timer, not per animation frame: a frame out of sight gets few frames.)
  * Rejects after `timeout`.
  */
-export async function untilSteady(target, watch, { quietMs = 500, quietChecks = 5, timeout = 30_000 } = {}) {
+export async function untilSteady(target, watch, { quietMs = 500, quietChecks = 5, timeout = WAIT_MS } = {}) {
   const token = ++steadyWaits; // each wait keeps its own record in the page, started afresh
   await target.waitForFunction(
     (watch, token, quietMs, quietChecks) => {
@@ -305,7 +305,7 @@ export async function allowDownloads(page, dir) {
  * The page that `click()` opens (a new tab whose address holds `fragment`), found among the context's pages by
  * polling: no target event to miss while the tab is created and then navigates.
  */
-export async function pageOpenedBy(browser, click, fragment, { timeout = 60_000 } = {}) {
+export async function pageOpenedBy(browser, click, fragment, { timeout = WAIT_MS } = {}) {
   const before = new Set(await browser.pages());
   await click();
   let opened;
