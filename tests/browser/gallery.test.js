@@ -2,7 +2,7 @@
 // scrolled to, a snippet that follows the preview's state and is as tall as the widget.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { WIDGETS } from '../../src/widgets/registry.js';
-import { baseUrl, launchBrowser, open, setControl, untilIdle } from './helpers.js';
+import { WAIT_MS, baseUrl, launchBrowser, open, setControl, untilIdle } from './helpers.js';
 
 let browser;
 beforeAll(async () => {
@@ -46,14 +46,14 @@ describe('gallery.html', () => {
       await page.$eval('[data-widget="fresnel-zones"]', (el) => el.scrollIntoView());
       const handle = await page.waitForSelector('[data-widget="fresnel-zones"] iframe');
       const frame = await handle.contentFrame();
-      await frame.waitForFunction(() => globalThis.__shadingLab?.widgets?.['fresnel-zones'], { timeout: 30_000 });
+      await frame.waitForFunction(() => globalThis.__shadingLab?.widgets?.['fresnel-zones'], { timeout: WAIT_MS });
       await untilIdle(frame);
       await setControl(frame, 'Shape', 'Torus knot');
       await setControl(frame, 'Mode', 'Zones of l·h');
       await page.waitForFunction(
         () => document.getElementById('fresnel-zones-snippet').value.includes('mode=zones-lh'),
         {
-          timeout: 10_000,
+          timeout: WAIT_MS,
         },
       );
       // the snippet's frame is as tall as the widget, measured in its preview; the preview shows it all, unscrolled
@@ -67,7 +67,7 @@ describe('gallery.html', () => {
         }));
         return { fits: height >= inside.content, tall: height > 700, noScroll: inside.scroll <= 0 };
       };
-      await expect.poll(fits, { timeout: 15_000 }).toEqual({ fits: true, tall: true, noScroll: true });
+      await expect.poll(fits, { timeout: WAIT_MS }).toEqual({ fits: true, tall: true, noScroll: true });
       const src = await snippetSrc(page, 'fresnel-zones');
       expect(new URL(src).searchParams.get('mode')).toBe('zones-lh');
       expect(new URL(src).searchParams.get('shape')).toBe('torusknot');
@@ -78,11 +78,11 @@ describe('gallery.html', () => {
       await page.keyboard.press('Enter');
       await page.waitForFunction(
         () => document.querySelector('[data-widget="fresnel-zones"] .gallery-status').textContent !== '',
-        { timeout: 5000 },
+        { timeout: WAIT_MS },
       );
 
       const opened = await open(browser, src);
-      await opened.waitForFunction(() => globalThis.__shadingLab?.widgets?.['fresnel-zones'], { timeout: 30_000 });
+      await opened.waitForFunction(() => globalThis.__shadingLab?.widgets?.['fresnel-zones'], { timeout: WAIT_MS });
       const state = await opened.evaluate(() => globalThis.__shadingLab.widgets['fresnel-zones'].getState());
       expect(state).toMatchObject({ mode: 'zones-lh', shape: 'torusknot' });
       expect(page.errors).toEqual([]);

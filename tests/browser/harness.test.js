@@ -1,7 +1,7 @@
 // The suite's browsers (harness.js, launchBrowser): the files of a worker share one Chromium, each in an incognito
 // context of its own, so that nothing a file stores is seen by the next; a Chromium that went away is replaced.
 import { afterEach, describe, expect, inject, it } from 'vitest';
-import { baseUrl, launchBrowser } from './helpers.js';
+import { WAIT_MS, baseUrl, launchBrowser } from './helpers.js';
 
 const opened = [];
 afterEach(async () => {
@@ -18,7 +18,7 @@ async function fileBrowser() {
 /** Opens `path` of the app (the landing page, whose script registers the service worker); resolves to the page. */
 async function landing(browser, path = 'index.html') {
   const page = await browser.newPage();
-  await page.goto(new URL(path, baseUrl()).href, { waitUntil: 'load' });
+  await page.goto(new URL(path, baseUrl()).href, { waitUntil: 'load', timeout: WAIT_MS });
   return page;
 }
 
@@ -68,7 +68,7 @@ describe('one Chromium per worker, an incognito context per file', () => {
       await mark(page);
       // the app registers its service worker on the first visit (src/core/offline)
       await page.waitForFunction(async () => (await navigator.serviceWorker.getRegistrations()).length > 0, {
-        timeout: 60_000,
+        timeout: WAIT_MS,
       });
       const again = await landing(first, PLAIN); // the same file: its marks are there (the probe can see them)
       expect(await marks(again)).toEqual({
@@ -103,7 +103,7 @@ describe('one Chromium per worker, an incognito context per file', () => {
     // the next file is another process: it asks the broker for the worker's Chromium as launchBrowser() does
     const next = `${inject('chromiumBroker')}?worker=${process.env.VITEST_POOL_ID ?? 0}&pid=next-file`;
     expect((await fetch(next)).ok).toBe(true);
-    await expect.poll(() => page.isClosed(), { timeout: 10_000 }).toBe(true);
+    await expect.poll(() => page.isClosed(), { timeout: WAIT_MS }).toBe(true);
   });
 
   it('a file asking for flags of its own gets a Chromium of its own', async () => {

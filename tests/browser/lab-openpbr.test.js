@@ -30,7 +30,7 @@ let page;
 let dir;
 const lab = (fn, ...args) => page.evaluate(fn, ...args);
 const barsReady = () =>
-  page.waitForFunction(() => globalThis.__shadingLab.widgets.lab.openpbr.ready, { timeout: 120_000, polling: 200 });
+  page.waitForFunction(() => globalThis.__shadingLab.widgets.lab.openpbr.ready, { timeout: WAIT_MS, polling: 200 });
 /** Brings the lab's images into view: it draws only what is seen. */
 const showImages = async () => {
   await page.$eval('.widget-material-lab canvas', (c) => c.scrollIntoView({ block: 'center' }));
@@ -52,7 +52,7 @@ beforeAll(async () => {
   dir = mkdtempSync(join(tmpdir(), 'lab-openpbr-'));
   browser = await launchBrowser();
   page = await open(browser, `rendering.html?${QUERY}`, SMALL_VIEWPORT);
-  await page.waitForFunction(() => globalThis.__shadingLab?.widgets?.lab, { timeout: 60_000 });
+  await page.waitForFunction(() => globalThis.__shadingLab?.widgets?.lab, { timeout: WAIT_MS });
   await untilIdle(page);
 });
 afterAll(async () => {
@@ -230,7 +230,7 @@ describe('MaterialX files through the lab’s buttons', () => {
     await page.click('.openpbr-save');
     await page.waitForFunction(() => document.querySelector('.openpbr-message').textContent.startsWith('Saved'));
     const download = () => readdirSync(dir).find((f) => f.startsWith('paint_from_file') && f.endsWith('.mtlx'));
-    await expect.poll(download, { timeout: 60_000 }).toBeTruthy(); // the browser writes it after the click
+    await expect.poll(download, { timeout: WAIT_MS }).toBeTruthy(); // the browser writes it after the click
     const saved = download();
     const text = readFileSync(join(dir, saved), 'utf8');
     expect(readMtlx(text).material).toEqual(readMtlx(file).material);
@@ -260,7 +260,7 @@ describe('latency', () => {
     expect(await captions()).toContain('the one before the drag');
     expect(await lab(() => globalThis.__shadingLab.widgets.lab.openpbr.ready)).toBe(false);
     await pointer('pointerup');
-    await expect.poll(async () => (await stats()).waiting, { timeout: 60_000 }).toBe(false);
+    await expect.poll(async () => (await stats()).waiting, { timeout: WAIT_MS }).toBe(false);
     expect(await captions()).toMatch(/Reference: Monte Carlo, \d+ of \d+ samples/);
     await barsReady();
     expect((await material()).specular_roughness).toBe(values.at(-1));

@@ -5,7 +5,7 @@
 // normalisation over the 2-D hemisphere, the weak furnace); code that does not compile, in the checks' program or
 // only in the lab's (a name of the lab's taken), gives a message on the user's line and keeps the last picture.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { launchBrowser, open, typeCode, untilIdle, widget } from './helpers.js';
+import { WAIT_MS, launchBrowser, open, typeCode, untilIdle, widget } from './helpers.js';
 import { anisotropicAlphas } from '../../src/math/anisotropic.js';
 import { RES, TEXELS, blockMean, frameAround, lobeCos, normalAt, spherical } from './lab-aniso-truth.js';
 
@@ -33,7 +33,7 @@ beforeAll(async () => {
   await widget(page, 'material-lab');
   for (const slot of ['DAniso', 'VAniso']) await page.waitForSelector(`.custom-panel[data-slot="${slot}"] .cm-content`);
   await untilIdle(page);
-}, 240_000);
+});
 afterAll(async () => {
   await browser?.close();
 });
@@ -71,7 +71,7 @@ describe('material lab: your anisotropic D and V', () => {
     await page.waitForFunction(
       () =>
         [...document.querySelectorAll('.custom-panel .custom-checks')].every((el) => /Against/.test(el.textContent)),
-      { timeout: 120_000, polling: 500 },
+      { timeout: WAIT_MS, polling: 500 },
     );
     const vChecks = await panelText('VAniso', '.custom-checks');
     console.log(`the VAniso panel's checks: ${vChecks}`);
@@ -97,7 +97,7 @@ describe('material lab: your anisotropic D and V', () => {
 
   it('code that does not compile gives a message on its line and keeps the picture', async () => {
     await lab('update', { anisoD: 'custom', anisoV: 'custom' });
-    await page.waitForSelector('.custom-panel[data-slot="DAniso"] .cm-content', { timeout: 60_000 });
+    await page.waitForSelector('.custom-panel[data-slot="DAniso"] .cm-content', { timeout: WAIT_MS });
     await untilIdle(page);
     // a half-width D: the picture changes (the typed code draws), and it is the one kept below
     const halved = (

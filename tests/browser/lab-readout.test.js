@@ -2,7 +2,7 @@
 // centre's radiance read back from the approximation against the talk's L = π f c_light (n·l) (src/math/brdf.js's
 // punctualRadiance with Lambert's f = c_diff/π from src/math/diffuse.js).
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { getState, launchBrowser, open, widget } from './helpers.js';
+import { WAIT_MS, getState, launchBrowser, open, widget } from './helpers.js';
 import { punctualRadiance } from '../../src/math/brdf.js';
 import { diffuseLambert } from '../../src/math/diffuse.js';
 import { WHITE_LAMBERT_HEAD_ON } from '../../src/widgets/material-lab/model.js';
@@ -50,7 +50,7 @@ describe('material lab: opens lit, reads its centre', () => {
     await page.click('.lab-head-on');
     const state = await getState(page, 'material-lab');
     for (const [key, value] of Object.entries(WHITE_LAMBERT_HEAD_ON)) expect(state[key]).toBe(value);
-    await expect.poll(() => centreRow(page), { timeout: 30_000 }).toMatch(/punctual light alone/);
+    await expect.poll(() => centreRow(page), { timeout: WAIT_MS }).toMatch(/punctual light alone/);
     const expected = punctualRadiance(diffuseLambert(1), 1, 1); // 1: c_light itself
     let row = await centreRow(page);
     expect(Math.abs(number(row, 'L = ') - expected)).toBeLessThan(2e-3);
@@ -59,7 +59,7 @@ describe('material lab: opens lit, reads its centre', () => {
     // 60° from the view, c_light 3: L = π (1/π) 3 cos 60° = 1.5
     await page.evaluate(() => globalThis.__shadingLab.widgets['material-lab'].update({ lightTheta: 60, cLight: 3 }));
     await expect
-      .poll(async () => number(await centreRow(page), 'L = '), { timeout: 30_000 })
+      .poll(async () => number(await centreRow(page), 'L = '), { timeout: WAIT_MS })
       .toBeCloseTo(punctualRadiance(diffuseLambert(1), Math.cos(Math.PI / 3), 3), 2);
     row = await centreRow(page);
     expect(row).toMatch(/c_light \(n·l\) = 3 × 0\.500 = 1\.500/);

@@ -6,7 +6,17 @@ import { readFileSync, writeFileSync, mkdtempSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { getState, launchBrowser, open, pageOpenedBy, shot, untilIdle, widget, withPixels } from './helpers.js';
+import {
+  WAIT_MS,
+  getState,
+  launchBrowser,
+  open,
+  pageOpenedBy,
+  shot,
+  untilIdle,
+  widget,
+  withPixels,
+} from './helpers.js';
 import { parseMerl, writeMerl } from '../../src/measured/merl.js';
 import { modelBRDF } from '../../src/measured/fit.js';
 import { EXAMPLES, THETA_H_DEG, measuredNdfSlice } from '../../src/widgets/measured-brdf/model.js';
@@ -32,7 +42,7 @@ beforeAll(async () => {
   page = await open(browser, 'brdf.html#measured');
   await widget(page, 'measured');
   await widget(page, 'lobe');
-}, 120_000);
+});
 afterAll(async () => {
   await browser?.close();
 });
@@ -43,12 +53,12 @@ describe('a synthetic MERL file picked on the BRDF page', () => {
     await input.uploadFile(file);
     await page.waitForFunction(
       () => document.querySelector('.measured-source')?.textContent.includes('synthetic-abc.binary'),
-      { timeout: 120_000, polling: 500 },
+      { timeout: WAIT_MS, polling: 500 },
     );
     expect(await page.$eval('.measured-source', (e) => e.textContent)).toMatch(
       /346,568 of 1,458,000 nodes per channel missing/,
     );
-  }, 180_000);
+  });
 
   it(
     'the five fits come back; the ABC fit has the parameters the file was written ' +
@@ -138,7 +148,7 @@ describe('a synthetic MERL file picked on the BRDF page', () => {
   it('"NDF explorer" opens ndf.html with the ABC fit’s half width (bisection on D) and its a2', async () => {
     const toNdf = () => page.$eval('.measured-fits button[data-model="abc"][data-target="ndf"]', (b) => b.click());
     const ndf = await pageOpenedBy(browser, toNdf, 'ndf.html');
-    await ndf.waitForFunction(() => globalThis.__shadingLab?.widgets?.ndf, { timeout: 60_000, polling: 250 });
+    await ndf.waitForFunction(() => globalThis.__shadingLab?.widgets?.ndf, { timeout: WAIT_MS, polling: 250 });
     const state = await ndf.evaluate(() => globalThis.__shadingLab.widgets.ndf.getState());
     expect(state.hwhm).toBeCloseTo(
       ndfHalfWidthDeg((c) => ndfABC(c, TRUTH.a1, TRUTH.a2)),
@@ -146,7 +156,7 @@ describe('a synthetic MERL file picked on the BRDF page', () => {
     ); // 4 digits in the URL
     expect(state.abcA2).toBeCloseTo(TRUTH.a2, 2);
     await ndf.close();
-  }, 90_000);
+  });
 
   it(
     'ndf-explorer draws the measured θd = 0 slice / peak on its log plot: ' +
@@ -156,7 +166,7 @@ describe('a synthetic MERL file picked on the BRDF page', () => {
       const want = measuredNdfSlice(parseMerl(readFileSync(file).buffer).table, f.abc); // ABC: the best fit
       const toNdf = () => page.$eval('.measured-fits button[data-model="abc"][data-target="ndf"]', (b) => b.click());
       const ndf = await pageOpenedBy(browser, toNdf, 'ndf.html');
-      await ndf.waitForFunction(() => globalThis.__shadingLab?.widgets?.ndf?.getMeasuredCurve(), { timeout: 60_000 });
+      await ndf.waitForFunction(() => globalThis.__shadingLab?.widgets?.ndf?.getMeasuredCurve(), { timeout: WAIT_MS });
       const curve = await ndf.evaluate(() => globalThis.__shadingLab.widgets.ndf.getMeasuredCurve());
       expect(curve.label).toBe('measured: synthetic-abc.binary, θd = 0 slice / peak');
       const drawn = new Map(curve.points);
@@ -172,7 +182,6 @@ describe('a synthetic MERL file picked on the BRDF page', () => {
       expect(aria).toMatch(/D\(θh\) \/ D\(0\), log scale.*measured: synthetic-abc\.binary.*ABC \(dashed\): /);
       await ndf.close();
     },
-    90_000,
   );
 
   it('a bad file dropped on the zone is refused with its message, and the ABC table stays', async () => {
@@ -185,12 +194,12 @@ describe('a synthetic MERL file picked on the BRDF page', () => {
     });
     await page.waitForFunction(
       () => document.querySelector('.widget-measured-brdf .notices')?.textContent.includes('broken.binary'),
-      { timeout: 60_000, polling: 300 },
+      { timeout: WAIT_MS, polling: 300 },
     );
     const notice = await page.$eval('.widget-measured-brdf .notices', (e) => e.textContent);
     expect(notice).toMatch(/broken\.binary: Wrong dimensions 0 × 0 × 0.*The BRDF shown before is kept\./);
     expect(await page.$eval('.measured-source', (e) => e.textContent)).toMatch(/synthetic-abc\.binary/);
     expect((await fits()).abc.params.a1).toBeCloseTo(TRUTH.a1, 0);
     expect(page.errors).toEqual([]);
-  }, 90_000);
+  });
 });

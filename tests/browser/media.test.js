@@ -1,10 +1,7 @@
 // The media chapter in a real Chromium: absorption over distance, scattering, the grid, progressive rendering.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { afterFrames, launchBrowser, open, setControl, shot, untilIdle, widget } from './helpers.js';
+import { WAIT_MS, afterFrames, launchBrowser, open, setControl, shot, untilIdle, widget } from './helpers.js';
 import { transmittance, waterAbsorptionRgb } from '../../src/math/media.js';
-
-// path tracing in software WebGL: seconds on an idle machine, a minute and more beside other work
-const MEDIA_MS = 180_000;
 
 let browser;
 beforeAll(async () => {
@@ -59,33 +56,29 @@ describe('media', () => {
       expect(page.errors).toEqual([]);
       await page.close();
     },
-    MEDIA_MS,
   );
 
-  it(
-    'renders the grid and milk progressively, then stops drawing',
-    async () => {
-      const page = await open(browser, 'embed.html?w=media&view=grid&samples=16');
-      await widget(page, 'media');
-      await page.waitForFunction(() => globalThis.__shadingLab.widgets.media.getProgress().frame >= 16, {
-        timeout: 60_000,
-      });
-      await untilIdle(page); // its last frame drawn, and no frame asked for after it
-      const before = await page.evaluate(() => window.__drawCalls);
-      await afterFrames(page, 30);
-      expect(await page.evaluate(() => window.__drawCalls)).toBe(before);
-      // milk: high scattering, low absorption: bright and without colour
-      await page.evaluate(() => globalThis.__shadingLab.widgets.media.update({ view: 'one', medium: 'milk' }));
-      await page.waitForFunction(() => globalThis.__shadingLab.widgets.media.getProgress().frame >= 16, {
-        timeout: 60_000,
-      });
-      const milk = await glassColour(page);
-      console.log(`milk (16 samples): glass RGB ${milk.map((x) => x.toFixed(3))}`);
-      expect(Math.min(...milk)).toBeGreaterThan(0.35);
-      expect(Math.max(...milk) / Math.min(...milk)).toBeLessThan(1.25);
-      expect(page.errors).toEqual([]);
-      await page.close();
-    },
-    MEDIA_MS,
-  );
+  it('renders the grid and milk progressively, then stops drawing', async () => {
+    const page = await open(browser, 'embed.html?w=media&view=grid&samples=16');
+    await widget(page, 'media');
+    // path tracing in software WebGL: seconds on an idle machine, a minute and more beside other work
+    await page.waitForFunction(() => globalThis.__shadingLab.widgets.media.getProgress().frame >= 16, {
+      timeout: WAIT_MS,
+    });
+    await untilIdle(page); // its last frame drawn, and no frame asked for after it
+    const before = await page.evaluate(() => window.__drawCalls);
+    await afterFrames(page, 30);
+    expect(await page.evaluate(() => window.__drawCalls)).toBe(before);
+    // milk: high scattering, low absorption: bright and without colour
+    await page.evaluate(() => globalThis.__shadingLab.widgets.media.update({ view: 'one', medium: 'milk' }));
+    await page.waitForFunction(() => globalThis.__shadingLab.widgets.media.getProgress().frame >= 16, {
+      timeout: WAIT_MS,
+    });
+    const milk = await glassColour(page);
+    console.log(`milk (16 samples): glass RGB ${milk.map((x) => x.toFixed(3))}`);
+    expect(Math.min(...milk)).toBeGreaterThan(0.35);
+    expect(Math.max(...milk) / Math.min(...milk)).toBeLessThan(1.25);
+    expect(page.errors).toEqual([]);
+    await page.close();
+  });
 });

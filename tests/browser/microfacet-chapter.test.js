@@ -1,6 +1,7 @@
 // The microfacet chapters (BRDF, microfacet theory, NDF, visibility) in a real Chromium.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import {
+  WAIT_MS,
   getState,
   launchBrowser,
   open as openSized,
@@ -65,7 +66,7 @@ describe('chapter page state', () => {
     // is its function's name, as on the whole page
     const linked = hrefs.filter((h) => h.includes('#fn-')).map((h) => h.slice(h.indexOf('#fn-') + 4));
     const parity = await open(browser, `parity.html?only=${linked.join(',')}#fn-visibilityKelemen`);
-    await parity.waitForSelector('#parity-summary', { timeout: 60_000 });
+    await parity.waitForSelector('#parity-summary', { timeout: WAIT_MS });
     for (const href of hrefs.filter((h) => h.includes('#')))
       expect(await parity.$(href.slice(href.indexOf('#')))).not.toBeNull();
     await parity.close();
@@ -251,7 +252,7 @@ describe('microfacets', () => {
       await page.evaluate((kind) => globalThis.__shadingLab.widgets.microfacets.update({ kind }), kind);
       expect((await getState(page, 'microfacets')).kind).toBe(kind);
       await page.waitForFunction(() => globalThis.__shadingLab.widgets.microfacets.getG1().complete, {
-        timeout: 30_000,
+        timeout: WAIT_MS,
       });
       const g = await page.evaluate(() => globalThis.__shadingLab.widgets.microfacets.getG1());
       const worst = Math.max(...g.measured.map((m, i) => Math.abs(m - g.smith[i])));
@@ -269,7 +270,7 @@ describe('anisotropic-microsurface', () => {
     const page = await open(browser, `embed.html?w=${key}&alphaX=0.7&alphaY=0.25&theta=80`);
     await widget(page, key);
     const g1 = () => page.evaluate((k) => globalThis.__shadingLab.widgets[k].getG1(), key);
-    await page.waitForFunction((k) => globalThis.__shadingLab.widgets[k].getG1().complete, { timeout: 60_000 }, key);
+    await page.waitForFunction((k) => globalThis.__shadingLab.widgets[k].getG1().complete, { timeout: WAIT_MS }, key);
     const g = await g1();
     const worst = Math.max(...g.measured.map((m, i) => Math.abs(m - g.smith[i])));
     console.log(`3-D microsurface (0.7, 0.25) at 80°: worst |ray-traced G1 − Smith G1| over 13 azimuths = ${worst}`);
