@@ -81,7 +81,7 @@ const ONE_OF_EACH_KIND = [
 ];
 
 /** Opens `path` of the site (at the small viewport: no test here is about a size); resolves once it has loaded. */
-const visit = (path) => openPage(browser, site.url, path, SMALL_VIEWPORT);
+const visit = (path) => openPage(browser, site.url, path, { ...SMALL_VIEWPORT, timeout: WAIT_MS });
 
 async function goOffline(page) {
   site.state.online = false;
@@ -132,13 +132,13 @@ describe('offline, after one visit', () => {
   it(
     firstVisit,
     async () => {
-      const page = await openPage(browser, site.url, 'index.html', { width: 1280, height: 800 });
+      const page = await openPage(browser, site.url, 'index.html', { width: 1280, height: 800, timeout: WAIT_MS });
       await page.waitForFunction(
         () => document.querySelector('.offline-status')?.textContent.includes('saved on this device'),
         { timeout: WAIT_MS },
       );
       await page.waitForFunction(async () => (await navigator.serviceWorker.ready).active.state === 'activated', {
-        timeout: 30_000,
+        timeout: WAIT_MS,
       });
       await page.waitForSelector('.chapter-picture');
       for (const [width, height] of [
@@ -182,8 +182,8 @@ describe('offline, after one visit', () => {
 
   it(`every page (${PAGES.length}) loads with no network`, async () => {
     // the first visit saved the whole build: no page needs one of its own
-    const page = await openPage(browser, site.url, 'about:blank', SMALL_VIEWPORT);
-    page.setDefaultNavigationTimeout(WAIT_MS); // a load outlasted puppeteer's 30 s at a load average of 45
+    // a load outlasted puppeteer's 30 s at a load average of 45
+    const page = await openPage(browser, site.url, 'about:blank', { ...SMALL_VIEWPORT, timeout: WAIT_MS });
     await goOffline(page);
     for (const path of PAGES) {
       await page.goto(new URL(path === 'embed.html' ? 'embed.html?w=fresnel-curves' : path, site.url).href, {
@@ -219,8 +219,8 @@ describe('offline, after one visit', () => {
         .waitForFunction((n) => globalThis.__shadingLab?.widgets?.[n], { timeout: WAIT_MS }, name)
         .catch(() => null);
       const blocked = await page.$$eval('.blocking-message', (m) => m.map((b) => b.textContent).join(' '));
-      if (!mounted || blocked) failed.push(`${name}: ${mounted ? blocked : 'not mounted in 60 s'}`);
-      await untilLoaded(page).catch(() => failed.push(`${name}: still loading after 60 s`));
+      if (!mounted || blocked) failed.push(`${name}: ${mounted ? blocked : `not mounted in ${WAIT_MS / 1000} s`}`);
+      await untilLoaded(page).catch(() => failed.push(`${name}: still loading after ${WAIT_MS / 1000} s`));
       expect(page.errors, name).toEqual([]);
       // as for the pages: what is still in flight when it is left is cut off then, not counted against the next one
       await page.goto('about:blank');
@@ -234,7 +234,7 @@ describe('offline, after one visit', () => {
   const kinds = ONE_OF_EACH_KIND.length;
   it(`every exercise (${EXERCISES.length}) is listed, one of each kind (${kinds}) opens, with no network`, async () => {
     const page = await visit('exercises.html');
-    await page.waitForNetworkIdle({ idleTime: 300, timeout: 30_000 }); // as for the pages: nothing left in flight
+    await page.waitForNetworkIdle({ idleTime: 300, timeout: WAIT_MS }); // as for the pages: nothing left in flight
     await goOffline(page);
     await page.reload({ waitUntil: 'load' });
     const listed = await page

@@ -4,7 +4,7 @@
 // Content-Security-Policy with none of these (and idle pages drawing nothing) is in axe.test.js: this file is the
 // quick check of the edit loop (npm run test:quick).
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { afterFrames, distinctColors, launchBrowser, open, shot, widget } from './helpers.js';
+import { WAIT_MS, afterFrames, distinctColors, launchBrowser, open, shot, widget } from './helpers.js';
 import { SMALL_VIEWPORT } from './harness.js';
 import { untilCalm } from './idle.js';
 
@@ -42,7 +42,7 @@ describe('pages load cleanly', () => {
         await settled(page);
         // polled: a view waits for what it draws with (its context, its textures) with nothing pending meanwhile
         const colors = async () => distinctColors(page, await shot(page, CANVAS));
-        await expect.poll(colors, { timeout: 60_000, interval: 250 }).toBeGreaterThan(20);
+        await expect.poll(colors, { timeout: WAIT_MS, interval: 250 }).toBeGreaterThan(20);
       }
       expect(page.errors).toEqual([]);
       await page.close();
@@ -132,7 +132,7 @@ describe('chapter pages load cleanly', () => {
       for (const canvas of await page.$$('canvas')) {
         if (!(await canvas.boundingBox())) continue; // hidden (e.g. the second BRDF's image when there is none)
         const colors = async () => distinctColors(page, await canvas.screenshot({ encoding: 'base64' }));
-        await expect.poll(colors, { timeout: 60_000, interval: 250 }).toBeGreaterThan(8);
+        await expect.poll(colors, { timeout: WAIT_MS, interval: 250 }).toBeGreaterThan(8);
       }
       expect(page.errors).toEqual([]);
       await page.close();

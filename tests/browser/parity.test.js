@@ -1,7 +1,7 @@
 // GLSL against float64: parity.html runs every shader function of the app on the GPU over its domain and
 // compares it with its float64 JS twin (src/core/gpu/parity harness); here the page's verdict is read back.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { launchBrowser, open } from './helpers.js';
+import { WAIT_MS, launchBrowser, open } from './helpers.js';
 
 let browser;
 beforeAll(async () => {
@@ -14,7 +14,7 @@ afterAll(async () => {
 describe('GLSL vs JS parity', () => {
   it('every shader function matches its float64 twin within the documented tolerance', async () => {
     const page = await open(browser, 'parity.html');
-    await page.waitForSelector('#parity-summary', { timeout: 60_000 });
+    await page.waitForSelector('#parity-summary', { timeout: WAIT_MS });
     const results = await page.evaluate(() => globalThis.__shadingLab.parity);
     for (const r of results)
       console.log(
@@ -31,7 +31,7 @@ describe('GLSL vs JS parity', () => {
 
   it('the report names the GPU as WebGL reports it, and each function with its worst case', async () => {
     const page = await open(browser, 'parity.html?only=srgbToLinear,equirectUv,diffuseOrenNayar');
-    await page.waitForSelector('#parity-summary', { timeout: 60_000 });
+    await page.waitForSelector('#parity-summary', { timeout: WAIT_MS });
     const { text, results, renderer } = await page.evaluate(() => {
       const gl = document.createElement('canvas').getContext('webgl2');
       const ext = gl.getExtension('WEBGL_debug_renderer_info');

@@ -2,7 +2,7 @@
 // second lab is the claim): the lab's images read back from the canvas against the talk's definitions (c_light,
 // the white furnace), importance sampling converging on the reference, and environment files checked before use.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { baseUrl, getState, launchBrowser, open, untilIdle, widget, withPixels } from './helpers.js';
+import { WAIT_MS, baseUrl, getState, launchBrowser, open, untilIdle, widget, withPixels } from './helpers.js';
 import { openPage } from './harness.js';
 import { coerceState, paramsToObject } from '../../src/core/framework/state.js';
 import { schema as labSchema } from '../../src/widgets/material-lab/schema.js';
@@ -39,7 +39,7 @@ const converged = (page, key = 'material-lab') =>
       const p = globalThis.__shadingLab.widgets[k].getProgress();
       return p.frame >= p.target;
     },
-    { timeout: 90_000 },
+    { timeout: WAIT_MS },
     key,
   );
 
@@ -225,7 +225,7 @@ describe('material lab', () => {
       await page.evaluate((n) => globalThis.__shadingLab.widgets['material-lab'].update({ samples: n }), n);
       await page.waitForFunction(
         (n) => globalThis.__shadingLab.widgets['material-lab'].getStats()?.samplesN === n,
-        { timeout: 30_000 },
+        { timeout: WAIT_MS },
         n,
       );
       errors.push(await page.evaluate(() => globalThis.__shadingLab.widgets['material-lab'].getStats().relative));
@@ -505,7 +505,7 @@ describe('material lab', () => {
             const p = globalThis.__shadingLab.widgets[k].getProgress();
             return p.frame >= p.target;
           },
-          { timeout: 90_000 },
+          { timeout: WAIT_MS },
           key,
         );
       await page.$eval('[data-prefix="models"]', (el) => el.scrollIntoView());

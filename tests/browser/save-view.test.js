@@ -6,7 +6,7 @@ import { existsSync, mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { allowDownloads, launchBrowser, open, widget } from './helpers.js';
+import { WAIT_MS, allowDownloads, launchBrowser, open, widget } from './helpers.js';
 
 let browser;
 let page;
@@ -76,7 +76,7 @@ async function saveView(name) {
   await page.keyboard.press('Enter');
   const file = join(dir, `brdf-lobe-${name.toLowerCase().replace(/[^\p{L}\p{N}]+/gu, '-')}.png`);
   await expect
-    .poll(() => existsSync(file), { message: `${file} downloaded`, timeout: 60_000, interval: 100 })
+    .poll(() => existsSync(file), { message: `${file} downloaded`, timeout: WAIT_MS, interval: 100 })
     .toBe(true);
   return { bytes: readFileSync(file), canvasSize, shown };
 }

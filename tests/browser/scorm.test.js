@@ -9,6 +9,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { unzipSync } from 'fflate';
 import { ROOT, launchBrowser, openPage, serveStatic } from './harness.js';
+import { WAIT_MS } from './helpers.js';
 import { readExerciseSet } from '../../src/exercises/load.js';
 import { WIDGETS } from '../../src/widgets/registry.js';
 import { packageSet } from '../../scripts/scorm.js';
@@ -69,7 +70,7 @@ beforeAll(async () => {
   );
   server = await serveStatic(dir);
   browser = await launchBrowser();
-}, 120_000);
+});
 afterAll(async () => {
   await browser?.close();
   server?.close();
@@ -79,6 +80,7 @@ afterAll(async () => {
 /** The LMS page and the exercises frame in it, once its first exercise is up. */
 async function launch(query = '') {
   const page = await openPage(browser, server.url, `lms.html${query}`, {
+    timeout: WAIT_MS,
     beforeLoad: (p) => {
       p.requests = [];
       p.on('request', (r) => r.frame() !== p.mainFrame() && p.requests.push(r.url())); // the package's
@@ -86,9 +88,9 @@ async function launch(query = '') {
   });
   let frame;
   await expect
-    .poll(() => (frame = page.frames().find((f) => f.url().includes('exercises.html'))), { timeout: 20_000 })
+    .poll(() => (frame = page.frames().find((f) => f.url().includes('exercises.html'))), { timeout: WAIT_MS })
     .toBeTruthy();
-  await frame.waitForFunction(() => globalThis.__shadingLab?.exercise?.ready, { timeout: 30_000 });
+  await frame.waitForFunction(() => globalThis.__shadingLab?.exercise?.ready, { timeout: WAIT_MS });
   return { page, frame };
 }
 
@@ -111,7 +113,7 @@ async function answerShader(page, frame, id) {
   await frame.click(`#exercise-list a[href="#${id}"]`);
   await frame.waitForFunction(
     (i) => globalThis.__shadingLab.exercise?.id === i && globalThis.__shadingLab.exercise.ready,
-    { timeout: 30_000 },
+    { timeout: WAIT_MS },
     id,
   );
   await frame.click('.exercise-code .cm-content');
@@ -121,7 +123,7 @@ async function answerShader(page, frame, id) {
   await page.keyboard.press('Backspace');
   await page.keyboard.sendCharacter(SHADER_SOLUTIONS[id].correct);
   await frame.click('.exercise-check');
-  await frame.waitForSelector('.exercise-feedback.ok, .exercise-feedback.wrong', { timeout: 60_000 });
+  await frame.waitForSelector('.exercise-feedback.ok, .exercise-feedback.wrong', { timeout: WAIT_MS });
   return frame.$eval('.exercise-feedback', (el) => el.className.includes('ok'));
 }
 
@@ -142,7 +144,7 @@ const cmi = (page) =>
 const notice = (frame) => frame.$eval('.scorm-notice', (el) => el.textContent);
 const solvedLine = (frame) => frame.$eval('.exercise-progress', (el) => el.textContent.trim());
 
-describe('a SCORM package in scorm-again’s SCORM 1.2 runtime', { timeout: 60_000 }, () => {
+describe('a SCORM package in scorm-again’s SCORM 1.2 runtime', () => {
   it('sends score, status and suspend data, finishes on leaving, and resumes from that suspend data', async () => {
     const first = await launch();
     expect(await notice(first.frame)).toContain('Connected to your course’s LMS');
@@ -201,7 +203,7 @@ describe('a SCORM package in scorm-again’s SCORM 1.2 runtime', { timeout: 60_0
     writeFileSync(own, readFileSync(join(EXERCISES, 'lake-mirror.json')));
     await (await frame.$('#exercise-file')).uploadFile(own);
     await frame.waitForFunction(() => globalThis.__shadingLab.exercise?.id === 'lake-mirror', {
-      timeout: 60_000, // the surfaces widget mounts in software WebGL on a loaded machine
+      timeout: WAIT_MS, // the surfaces widget mounts in software WebGL on a loaded machine
       polling: 500,
     });
     expect(await notice(frame)).toContain('loaded yourself are checked here, but not sent to the LMS');
@@ -210,8 +212,8 @@ describe('a SCORM package in scorm-again’s SCORM 1.2 runtime', { timeout: 60_0
   });
 
   it('opened without an LMS, says grades are not being recorded', async () => {
-    const page = await openPage(browser, server.url, 'package/scorm-launch.html');
-    await page.waitForFunction(() => globalThis.__shadingLab?.exercise?.ready, { timeout: 30_000 });
+    const page = await openPage(browser, server.url, 'package/scorm-launch.html', { timeout: WAIT_MS });
+    await page.waitForFunction(() => globalThis.__shadingLab?.exercise?.ready, { timeout: WAIT_MS });
     expect(await page.$eval('.scorm-notice', (el) => el.textContent)).toContain('grades are not being recorded');
     expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 3 solved');
     expect(await page.$eval('#exercise-progress-where', (el) => el.textContent)).toMatch(/stays in this browser/);
