@@ -6,7 +6,7 @@
 // reference for the settled picture is the one before this mode: the same page with its WebGL context made
 // multisampled (antialias: true), drawn straight to the canvas.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { baseUrl, launchBrowser } from './helpers.js';
+import { WAIT_MS, baseUrl, launchBrowser } from './helpers.js';
 import { openPage } from './harness.js';
 
 const WIDGET = 'fresnel-zones';
@@ -70,7 +70,7 @@ const frames = (page) => page.evaluate(() => globalThis.__shadingLab.frames);
 
 /** Waits until the render loops have drawn more than `n` frames. */
 const untilFrameAfter = (page, n) =>
-  page.waitForFunction((k) => globalThis.__shadingLab.frames > k, { timeout: 30_000, polling: 'raf' }, n);
+  page.waitForFunction((k) => globalThis.__shadingLab.frames > k, { timeout: WAIT_MS, polling: 'raf' }, n);
 
 /**
  * Waits until no frame is pending: the frame count held over ten animation frames in a row (a frame asked for is
@@ -87,9 +87,10 @@ const untilQuiet = (page) =>
 
 async function openWidget(widget, path, contextAntialias = false) {
   const page = await openPage(browser, baseUrl(), path, {
+    timeout: WAIT_MS,
     beforeLoad: (p) => p.evaluateOnNewDocument(instrument, contextAntialias),
   });
-  await page.waitForFunction((w) => globalThis.__shadingLab?.widgets?.[w], { timeout: 30_000 }, widget);
+  await page.waitForFunction((w) => globalThis.__shadingLab?.widgets?.[w], { timeout: WAIT_MS }, widget);
   await untilFrameAfter(page, 0);
   await untilQuiet(page);
   return page;
@@ -239,7 +240,7 @@ describe("antialias: 'settled' (fresnel-zones)", () => {
     });
     expect(held.log.at(-1).multisampled, 'the frame at the save was plain').toBe(held.multisampled);
     expect(atSave.multisampled, 'the mesh drawn multisampled for the still').toBe(1);
-    await page.waitForFunction(() => window.__saved, { timeout: 10_000 });
+    await page.waitForFunction(() => window.__saved, { timeout: WAIT_MS });
     const plain = await counts(page, true, '__plainAtSave');
     const settled = await release(page);
     expect(settled.frames, 'the release came after the save').toBe(atSave.frames + 1);

@@ -6,7 +6,7 @@
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { WAIT_MS, baseUrl, launchBrowser, open, openForeignParent, otherOrigin } from './helpers.js';
+import { WAIT_MS, baseUrl, frameShowing, launchBrowser, open, openForeignParent, otherOrigin } from './helpers.js';
 import { SHADER_SOLUTIONS } from './shader-solutions.js';
 
 let browser;
@@ -40,7 +40,8 @@ async function choose(target, id) {
  */
 async function setCode(page, target, code) {
   const focused = () => target.evaluate(() => Boolean(document.activeElement?.closest('.exercise-code')));
-  for (let tries = 0; tries < 5 && !(await focused()); tries++) {
+  // a click the editor may miss while it is laid out: clicked again every 5 s, for up to WAIT_MS in all
+  for (const end = Date.now() + WAIT_MS; Date.now() < end && !(await focused());) {
     await target.click('.exercise-code .cm-content');
     await target
       .waitForFunction(() => document.activeElement?.closest('.exercise-code'), { timeout: 5_000 })
@@ -52,13 +53,13 @@ async function setCode(page, target, code) {
   await page.keyboard.press('Backspace');
   await page.keyboard.sendCharacter(code);
   const text = () => target.$$eval('.exercise-code .cm-line', (lines) => lines.map((l) => l.textContent).join('\n'));
-  await expect.poll(text, { timeout: 10_000 }).toBe(code); // a final newline is an empty last line
+  await expect.poll(text, { timeout: WAIT_MS }).toBe(code); // a final newline is an empty last line
 }
 
 /** Presses Check and returns the feedback: { ok, summary, details }. */
 async function check(target) {
   await target.click('.exercise-check');
-  await target.waitForSelector('.exercise-feedback.ok, .exercise-feedback.wrong', { timeout: 60_000 });
+  await target.waitForSelector('.exercise-feedback.ok, .exercise-feedback.wrong', { timeout: WAIT_MS });
   return target.$eval('.exercise-feedback', (el) => ({
     ok: el.classList.contains('ok'),
     summary: el.querySelector('p').textContent,
@@ -98,7 +99,6 @@ describe('shader exercises', () => {
         '✓ solved',
       );
     },
-    180_000,
   );
 
   it('compile errors and static-check problems show at the student’s line, in feedback and editor', async () => {
@@ -122,7 +122,7 @@ describe('shader exercises', () => {
     expect(r.summary).toBe('Your code did not pass the static check:');
     expect(r.details[0]).toMatch(/^Line 3: /);
     expect(await marked()).toEqual([3]);
-  }, 60_000);
+  });
 
   it('the three common mistakes get plain words after the parser’s or the compiler’s message', async () => {
     await choose(page, 'shader-schlick');
@@ -144,7 +144,7 @@ describe('shader exercises', () => {
       expect(r.ok).toBe(false);
       expect(r.details[0]).toMatch(detail);
     }
-  }, 60_000);
+  });
 });
 
 describe('the graded message to a parent page', () => {
@@ -159,9 +159,7 @@ describe('the graded message to a parent page', () => {
       frame.style.cssText = 'width: 1200px; height: 900px; border: 0';
       document.body.replaceChildren(frame);
     }, src);
-    // the frame as it shows exercises.html, not as it was made (about:blank, in the parent's process): a frame on
-    // another site moves to a process of its own when it navigates, and a wait begun before the move may never end
-    const frame = await page.waitForFrame((f) => f.url().startsWith(src.split('#')[0]), { timeout: WAIT_MS });
+    const frame = await frameShowing(page, '#exercises');
     await choose(frame, 'shader-schlick');
     return { page, frame };
   }

@@ -2,7 +2,7 @@
 // keyboard), and touch on a 3-D view (dragging moves the light, a tap probes).
 import jsQR from 'jsqr';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { getState, launchBrowser, open, setControl, untilIdle, widget } from './helpers.js';
+import { WAIT_MS, getState, launchBrowser, open, setControl, untilIdle, widget } from './helpers.js';
 
 let browser;
 beforeAll(async () => {
@@ -26,7 +26,7 @@ describe('Share', () => {
   async function openShare(page, root) {
     await page.focus(`${root} .share-button`);
     await page.keyboard.press('Enter');
-    await page.waitForSelector('dialog.share-dialog[open][data-ready]', { timeout: 15_000 });
+    await page.waitForSelector('dialog.share-dialog[open][data-ready]', { timeout: WAIT_MS });
     return page.$eval('.share-link', (i) => i.value);
   }
 
@@ -66,7 +66,7 @@ describe('Share', () => {
       await page.waitForFunction(() => document.querySelector('.share-link').value.includes('embed.html'));
       const alone = await page.$eval('.share-link', (i) => i.value);
       expect(new URL(alone).searchParams.get('w')).toBe('fresnel-zones');
-      await expect.poll(() => decodeQr(page, '.share-qr'), { timeout: 10_000 }).toBe(alone);
+      await expect.poll(() => decodeQr(page, '.share-qr'), { timeout: WAIT_MS }).toBe(alone);
 
       await page.keyboard.press('Escape');
       await page.waitForFunction(() => !document.querySelector('dialog.share-dialog'));

@@ -1,7 +1,7 @@
 // Skip what a scene does not need, measured: WebGL draw calls are counted in the page itself. That an idle page draws
 // nothing is checked where every page is loaded under the policy (axe.test.js).
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { afterFrames, launchBrowser, open, untilIdle, untilSteady, widget } from './helpers.js';
+import { WAIT_MS, afterFrames, launchBrowser, open, untilIdle, untilSteady, widget } from './helpers.js';
 
 let browser;
 beforeAll(async () => {
@@ -13,7 +13,7 @@ afterAll(async () => {
 
 const draws = (page) => page.evaluate(() => window.__drawCalls);
 /** Waits until the page has drawn more than `n` calls (a frame it owes). */
-const untilDrawsAfter = (page, n) => page.waitForFunction((k) => window.__drawCalls > k, { timeout: 30_000 }, n);
+const untilDrawsAfter = (page, n) => page.waitForFunction((k) => window.__drawCalls > k, { timeout: WAIT_MS }, n);
 
 describe('views out of sight draw nothing', () => {
   it('a widget scrolled out of view does not draw on a state change, and draws once back in view', async () => {
