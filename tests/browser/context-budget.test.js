@@ -87,6 +87,7 @@ const WEBGL_WARNING = /WebGL|Too many active/;
 async function openCounted(path, { beforeLoad, on = browser } = {}) {
   const warnings = [];
   const page = await openPage(on, baseUrl(), path, {
+    timeout: WAIT_MS,
     beforeLoad: async (p) => {
       p.on(
         'console',

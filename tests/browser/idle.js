@@ -3,7 +3,7 @@
 // and then IDLE_FRAMES animation frames pass without a WebGL draw call (window.__drawCalls, helpers.js). Counted
 // in frames and in the app's own account of its work, not in milliseconds: a loaded machine only takes longer.
 import { expect } from 'vitest';
-import { afterFrames } from './helpers.js';
+import { WAIT_MS, afterFrames } from './helpers.js';
 
 /** Frames that must pass without a draw call once the page is idle (about a second at 60 frames a second). */
 export const IDLE_FRAMES = 60;
@@ -20,7 +20,7 @@ export async function untilCalm(page) {
       window.__calm = idle ? (window.__calm ?? 0) + 1 : 0;
       return window.__calm >= 2;
     },
-    { timeout: 120_000, polling: 'raf' },
+    { timeout: WAIT_MS, polling: 'raf' },
   );
 }
 
@@ -49,7 +49,7 @@ async function visitAll(page) {
         const p = globalThis.__shadingLab.widgets[k].getProgress();
         return p.frame >= p.target;
       },
-      { timeout: 120_000, polling: 250 },
+      { timeout: WAIT_MS, polling: 250 },
       key,
     );
   }

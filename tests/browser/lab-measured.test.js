@@ -10,7 +10,7 @@ import { mkdtempSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { launchBrowser, open, untilIdle } from './helpers.js';
+import { WAIT_MS, launchBrowser, open, untilIdle } from './helpers.js';
 import { SMALL_VIEWPORT } from './harness.js';
 import { writeMerl } from '../../src/measured/merl.js';
 import { modelBRDF } from '../../src/measured/fit.js';
@@ -155,13 +155,13 @@ beforeAll(async () => {
   });
   // in view (in a small window the chapter's opening words fill the first screen), and mounted; its reference
   // converges in the first test, within that test's time
-  const lab = await page.waitForSelector('.widget-material-lab', { timeout: 120_000 });
+  const lab = await page.waitForSelector('.widget-material-lab', { timeout: WAIT_MS });
   await lab.evaluate((el) => el.scrollIntoView());
-  await page.waitForFunction(() => globalThis.__shadingLab?.widgets?.lab, { timeout: 120_000 });
+  await page.waitForFunction(() => globalThis.__shadingLab?.widgets?.lab, { timeout: WAIT_MS });
   // written while Chromium draws the lab's first reference (seconds of Node's time; the page's work is its own)
   file = join(mkdtempSync(join(tmpdir(), 'merl-')), 'synthetic-ggx.binary');
   writeFileSync(file, new Uint8Array(writeMerl(modelBRDF('ggx', TRUTH))));
-}, 180_000);
+});
 afterAll(async () => {
   await browser?.close();
 });
@@ -194,7 +194,7 @@ describe('material lab: a measured BRDF (a MERL file written from GGX) against t
     // where the next test compares it
     await page.$eval('.widget-material-lab', (el) => el.scrollIntoView());
     await page.waitForFunction(() => document.querySelector('.lab-notes')?.textContent.includes('synthetic-ggx'), {
-      timeout: 120_000,
+      timeout: WAIT_MS,
       polling: 200,
     });
     const measured = await page.evaluate(() => globalThis.__shadingLab.widgets.lab.getMeasured());
@@ -280,5 +280,5 @@ describe('material lab: a measured BRDF (a MERL file written from GGX) against t
     expect(notes).toMatch(/Measured BRDF \(synthetic-ggx\.binary\): the reference integrates the table itself/);
     expect(notes).toMatch(/The split sum has no form for a table/);
     expect(page.errors).toEqual([]);
-  }, 120_000);
+  });
 });

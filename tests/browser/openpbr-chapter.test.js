@@ -3,7 +3,7 @@
 // page's state names); a control changes them as the math says; the tour's step sets the mode up; the chapter's
 // two exercises are graded from the math through their controls.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { getState, launchBrowser, open, setControl, untilIdle, widget } from './helpers.js';
+import { WAIT_MS, getState, launchBrowser, open, setControl, untilIdle, widget } from './helpers.js';
 import { openPbrLayers } from '../../src/math/openpbr.js';
 import { srgbToLinear } from '../../src/math/color.js';
 import { f82SchlickGap } from '../../src/exercises/graders/f82-schlick-gap.js';
@@ -82,7 +82,7 @@ describe('the material of today (today.html): brdf-lobe in OpenPBR mode', () => 
     const page = await open(browser, 'tour.html#today-openpbr-layers', { width: 1000, height: 800 });
     await page.waitForFunction(
       () => globalThis.__shadingLab?.tour?.ready && globalThis.__shadingLab.tour.id === 'today-openpbr-layers',
-      { timeout: 120_000 },
+      { timeout: WAIT_MS },
     );
     await untilIdle(page);
     const rows = await readRows(page);
@@ -96,7 +96,6 @@ describe('the material of today (today.html): brdf-lobe in OpenPBR mode', () => 
 describe('the chapter’s exercises, through their controls', () => {
   it('which layer: the coat is wrong at 20°, the metal right; copper’s gap is the grader’s', async () => {
     const page = await open(browser, 'exercises.html#openpbr-which-layer', { width: 860, height: 640, maxSamples: 8 });
-    page.setDefaultTimeout(120_000);
     const ready = (id) => globalThis.__shadingLab?.exercise?.id === id && globalThis.__shadingLab.exercise.ready;
     await page.waitForFunction(ready, {}, 'openpbr-which-layer');
     await untilIdle(page);

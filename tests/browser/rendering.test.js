@@ -486,6 +486,7 @@ describe('material lab', () => {
           // view and the second is not
           width: 1200,
           height: 900,
+          timeout: WAIT_MS,
           // one context for both labs; the approximation is read, so the references stop at their first batch
           beforeLoad: (p) =>
             p.evaluateOnNewDocument(() => {

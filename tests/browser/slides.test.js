@@ -33,6 +33,7 @@ const WARNING = /WebGL|Too many active|context lost/i;
 async function openDeck(path, { width = 1200, height = 800 } = {}) {
   const warnings = [];
   const page = await openPage(browser, decks.url, path, {
+    timeout: WAIT_MS,
     width,
     height,
     beforeLoad: (p) =>
@@ -47,7 +48,7 @@ async function openDeck(path, { width = 1200, height = 800 } = {}) {
 // timeout of its own, for the frame's JavaScript context, which never comes for a frame that reveal.js has removed
 // or that is still turning from the parent's blank document into the widget's process. Only the element test goes
 // into its frame, once the widget has said ready there, each call bounded.
-const ANSWER_MS = 30_000;
+const ANSWER_MS = WAIT_MS;
 
 /** `promise`, or a clear failure naming `what` if it does not settle within ANSWER_MS. */
 function within(promise, what) {
