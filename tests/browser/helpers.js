@@ -71,7 +71,7 @@ export const openForeignParent = (browser) =>
   });
 
 /**
- * The frame of the iframe `selector` in `page` once it shows its src (the first frame to, the hash aside). An iframe
+ * The frame of the iframe `selector` in `page`, once a frame shows the iframe's src (its hash aside). An iframe
  * on another site than its parent moves to a process of its own when it navigates: a wait begun on it before the move
  * (on contentFrame() of a frame just made) may never end. (A frame on its parent's site can take contentFrame().)
  */
