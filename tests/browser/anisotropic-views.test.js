@@ -2,7 +2,7 @@
 // highlight stretches along the tangent, slope maps, half widths per axis) and the visibility explorer's G1
 // against azimuth, each against src/math or a closed form.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { launchBrowser, open, setControl, shot, untilIdle, widget, withPixels } from './helpers.js';
+import { WAIT_MS, launchBrowser, open, setControl, shot, untilIdle, widget, withPixels } from './helpers.js';
 import { ndfHalfWidthsAlongAxes } from '../../src/math/anisotropic-width.js';
 import { anisotropicAlphas, ndfGGXAniso } from '../../src/math/anisotropic.js';
 import { matchNdfWidths } from '../../src/math/ndf-width.js';
@@ -51,7 +51,7 @@ describe('ndf-explorer, anisotropy', () => {
     expect(Math.abs(w0 - h0) / h0).toBeLessThan(0.15); // isotropic: as wide as high
     await setControl(page, 'Anisotropy (GGX, Beckmann)', 0.8);
     await expect
-      .poll(async () => (await highlightExtent(page, await shot(page, sphere), 2, 5))[0])
+      .poll(async () => (await highlightExtent(page, await shot(page, sphere), 2, 5))[0], { timeout: WAIT_MS })
       .toBeGreaterThan(1.4 * w0);
     const [w1, h1] = await highlightExtent(page, await shot(page, sphere), 2, 5);
     console.log(`GGX highlight, isotropic ${w0} × ${h0} px, anisotropy 0.8 ${w1} × ${h1} px`);
@@ -117,7 +117,7 @@ describe('brdf-lobe, the plane of incidence at any azimuth', () => {
     const before = await shot(page, lobe3d);
     await setControl(page, 'A: anisotropy (GGX, Beckmann)', 0.8);
     await setControl(page, 'Light azimuth φl from t (°)', 90);
-    await expect.poll(() => shot(page, lobe3d)).not.toBe(before);
+    await expect.poll(() => shot(page, lobe3d), { timeout: WAIT_MS }).not.toBe(before);
     const state = await page.evaluate(() => globalThis.__shadingLab.widgets['brdf-lobe'].getState());
     expect([state.lightPhi, state.anisotropy]).toEqual([90, 0.8]);
     const scene = lobeScene(state);

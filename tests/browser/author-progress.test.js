@@ -56,17 +56,17 @@ describe('a progress file on the exercises page', () => {
     page.on('dialog', (d) => d.accept()); // Reset progress asks first
     await page.click('.exercise-reset');
     const solved = () => page.$eval('.exercise-progress', (p) => p.textContent.trim());
-    await expect.poll(solved).toBe('0 of 1 solved');
+    await expect.poll(solved, { timeout: WAIT_MS }).toBe('0 of 1 solved');
     const bad = join(dir, 'notes.json');
     writeFileSync(bad, '{"solved": ["wall"]}');
     await (await page.$('#progress-load')).uploadFile(bad);
     await expect
-      .poll(() => page.$eval('#progress-message', (m) => m.textContent))
+      .poll(() => page.$eval('#progress-message', (m) => m.textContent), { timeout: WAIT_MS })
       .toBe(
         'notes.json is not a Shading Lab progress file (saved with “Save my progress”); your progress is unchanged.',
       );
     await (await page.$('#progress-load')).uploadFile(file);
-    await expect.poll(solved).toBe('1 of 1 solved');
+    await expect.poll(solved, { timeout: WAIT_MS }).toBe('1 of 1 solved');
     expect(await page.$eval('#progress-message', (m) => m.textContent)).toBe('Loaded 1 exercise.');
     expect(page.errors).toEqual([]);
     await page.close();

@@ -81,22 +81,26 @@ describe('the author page', { timeout: 600_000 }, () => {
     expect(shown.every((t) => t.includes('chapter 5 · Type a number'))).toBe(true);
     const schlick = shown.findIndex((t) => t.includes('Where is Schlick worst?'));
     await page.click(`.author-library-list li:nth-child(${schlick + 1}) button`);
-    await expect.poll(() => itemNames(page)).toEqual(['Where is Schlick worst?']);
+    await expect.poll(() => itemNames(page), { timeout: WAIT_MS }).toEqual(['Where is Schlick worst?']);
 
     // a number exercise made with the form: each message beside its field, gone once it is fixed
     await page.select('#author-new-kind', 'number');
     await page.click('#author-new');
     await page.select(`${field('grader')} select`, 'lambert-radiance');
-    await expect.poll(() => messages(page, field('title'))).toEqual(['title: missing (a non-empty string)']);
     await expect
-      .poll(() => messages(page, field('params.thetaDeg')))
+      .poll(() => messages(page, field('title')), { timeout: WAIT_MS })
+      .toEqual(['title: missing (a non-empty string)']);
+    await expect
+      .poll(() => messages(page, field('params.thetaDeg')), { timeout: WAIT_MS })
       .toEqual(['params.thetaDeg: missing (required by grader "lambert-radiance")']);
     await fill(page, 'id', 'Wall Light');
     await fill(page, 'tolerance', '-1');
     await expect
-      .poll(() => messages(page, field('id')))
+      .poll(() => messages(page, field('id')), { timeout: WAIT_MS })
       .toEqual(['id: "Wall Light" is not a name of lower-case letters, digits and dashes']);
-    await expect.poll(() => messages(page, field('tolerance'))).toEqual(['tolerance: -1 is not a positive number']);
+    await expect
+      .poll(() => messages(page, field('tolerance')), { timeout: WAIT_MS })
+      .toEqual(['tolerance: -1 is not a positive number']);
     expect(await messages(page, field('title'))).toEqual(['title: missing (a non-empty string)']);
     await fill(page, 'id', 'wall-light');
     await fill(page, 'title', 'A lit wall');
@@ -105,7 +109,7 @@ describe('the author page', { timeout: 600_000 }, () => {
     await fill(page, 'params.thetaDeg', '60');
     await fill(page, 'tolerance', '0,01');
     await fill(page, 'points', '2');
-    await expect.poll(() => page.$$eval('#author-form .has-errors', (els) => els.length)).toBe(0);
+    await expect.poll(() => page.$$eval('#author-form .has-errors', (els) => els.length), { timeout: WAIT_MS }).toBe(0);
 
     // the preview is exercises.html: answered as a student would, graded against Lo = cdiff · c_light · cos θ
     const lo = 1 * 2 * Math.cos(60 * DEG);
@@ -132,21 +136,23 @@ describe('the author page', { timeout: 600_000 }, () => {
     await page.click('#author-new');
     await page.waitForSelector(`[data-field="locked"] input[value="material"]`, { timeout: WAIT_MS });
     await expect
-      .poll(() => messages(page, '[data-field="locked"]'))
+      .poll(() => messages(page, '[data-field="locked"]'), { timeout: WAIT_MS })
       .toContain('locked: must include "material" (grader "fresnel-reflectance-angle" takes the question from it)');
     await page.click('[data-field="locked"] input[value="material"]');
     await fill(page, 'id', 'lake');
     await fill(page, 'title', 'A lake at 25%');
     await fill(page, 'prompt', 'Set the angle at which the lake reflects a quarter of the light.');
     await fill(page, 'params.target', '0.25');
-    await expect.poll(() => page.$eval('#author-status', (s) => s.textContent)).toContain('3 exercises, ready');
+    await expect
+      .poll(() => page.$eval('#author-status', (s) => s.textContent), { timeout: WAIT_MS })
+      .toContain('3 exercises, ready');
 
     // a shader exercise: a grid's messages beside that axis's field; then removed from the set
     await page.select('#author-new-kind', 'shader');
     await page.click('#author-new');
     await fill(page, 'domain.nh.steps', '500');
     await expect
-      .poll(() => messages(page, field('domain.nh.steps')))
+      .poll(() => messages(page, field('domain.nh.steps')), { timeout: WAIT_MS })
       .toEqual(['domain.nh.steps: 500 is not a whole number within 2…101']);
     expect(await messages(page, field('sources'))).toEqual([
       'sources: missing (a list of sources, each its authors and year, e.g. "Schlick 1994")',
@@ -157,13 +163,17 @@ describe('the author page', { timeout: 600_000 }, () => {
 
     // reorder with the arrows (the focus stays on the moved exercise's arrow), title and pass mark
     await page.$eval('[aria-label="Up: move “A lake at 25%” up"]', (b) => b.click());
-    await expect.poll(() => itemNames(page)).toEqual(['Where is Schlick worst?', 'A lake at 25%', 'A lit wall']);
+    await expect
+      .poll(() => itemNames(page), { timeout: WAIT_MS })
+      .toEqual(['Where is Schlick worst?', 'A lake at 25%', 'A lit wall']);
     expect(await page.evaluate(() => document.activeElement.getAttribute('aria-label'))).toBe(
       'Up: move “A lake at 25%” up',
     );
     await page.type('[data-field="title"] input:not(#author-form *)', 'Week 3');
     await page.type('[data-field="passMark"] input', '60');
-    await expect.poll(() => page.$eval('#author-status', (s) => s.textContent)).toContain('3 exercises, ready');
+    await expect
+      .poll(() => page.$eval('#author-status', (s) => s.textContent), { timeout: WAIT_MS })
+      .toContain('3 exercises, ready');
 
     // saved as JSON: the validator passes it, in that order, with the points
     await page.click('#author-save');
@@ -226,7 +236,7 @@ describe('the author page', { timeout: 600_000 }, () => {
     writeFileSync(student, JSON.stringify(progressFile({ name: 'Ada', exercises: two, progress: done })));
     await (await page.$('#author-student-file')).uploadFile(student);
     await expect
-      .poll(() => page.$eval('#author-student-view', (v) => v.textContent))
+      .poll(() => page.$eval('#author-student-view', (v) => v.textContent), { timeout: WAIT_MS })
       .toContain('Score 66.67% (1 of 2 solved; pass mark 60%): passed.');
 
     // opened again from the saved file: the same set, to edit
@@ -234,7 +244,9 @@ describe('the author page', { timeout: 600_000 }, () => {
     await page.waitForSelector('.author-library-list button');
     const chooser = await page.$('#author-open-file');
     await chooser.uploadFile(join(downloads, 'week-3.json'));
-    await expect.poll(() => itemNames(page)).toEqual(['Where is Schlick worst?', 'A lake at 25%', 'A lit wall']);
+    await expect
+      .poll(() => itemNames(page), { timeout: WAIT_MS })
+      .toEqual(['Where is Schlick worst?', 'A lake at 25%', 'A lit wall']);
     expect(await page.$eval('[data-field="passMark"] input', (i) => i.value)).toBe('60');
     expect(page.errors.filter((e) => !aborted.has(e))).toEqual([]);
     await page.close();

@@ -3,7 +3,7 @@
 // here from src/math's anisotropic terms, with l and v built from their angles in the tangent frame directly; the
 // azimuths set by their controls and by the polar plot's keys, and an old link's `phi` read as the light's.
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
-import { getState, launchBrowser, open, setControl, untilIdle, widget } from './helpers.js';
+import { WAIT_MS, getState, launchBrowser, open, setControl, untilIdle, widget } from './helpers.js';
 import {
   anisotropicAlphas,
   ndfBeckmannAniso,
@@ -112,7 +112,7 @@ describe('brdf-lobe, the light and the view each at its own azimuth', () => {
     expect(await checkDrawn(page)).toBeLessThan(1e-5);
     // the next change writes the link under the current names
     await setControl(page, 'View azimuth Δφ off the plane of incidence (°)', 10);
-    await expect.poll(() => page.url()).toMatch(/lightPhi=60/);
+    await expect.poll(() => page.url(), { timeout: WAIT_MS }).toMatch(/lightPhi=60/);
     expect(page.url()).not.toMatch(/[?&]phi=/);
     expect(page.errors).toEqual([]);
     await page.close();

@@ -195,7 +195,9 @@ describe('exercises', () => {
     );
     page.once('dialog', (d) => d.accept());
     await page.click('.exercise-reset');
-    await expect.poll(() => page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 27 solved');
+    await expect
+      .poll(() => page.$eval('.exercise-progress', (el) => el.textContent.trim()), { timeout: WAIT_MS })
+      .toBe('0 of 27 solved');
     await page.reload({ waitUntil: 'load' });
     await page.waitForSelector('#exercise-list a');
     expect(await page.$eval('.exercise-progress', (el) => el.textContent.trim())).toBe('0 of 27 solved');

@@ -191,7 +191,11 @@ function pixelChange(a, b = null) {
 async function shownShot() {
   let png;
   await expect
-    .poll(async () => pixelChange((png = await frameShot())), { message: 'the frame shows its widget', interval: 250 })
+    .poll(async () => pixelChange((png = await frameShot())), {
+      timeout: WAIT_MS,
+      message: 'the frame shows its widget',
+      interval: 250,
+    })
     .toBeGreaterThan(0.01);
   return png;
 }
@@ -429,6 +433,7 @@ describe('fuzz: every widget by URL and by postMessage from another origin', () 
         // (polled: a redraw the app does not count, a plot's own frame on a loaded machine, may still be under way)
         await expect
           .poll(async () => pixelChange(before, await frameShot()), {
+            timeout: WAIT_MS,
             message: 'the picture after the hostile messages',
             interval: 500,
           })

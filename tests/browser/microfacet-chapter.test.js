@@ -108,17 +108,17 @@ describe('ndf-explorer, the log plot', () => {
     expect((await values()).length).toBe(6); // θh and the five NDFs
     const box = await (await page.$(`${logPlot} .u-over`)).boundingBox();
     await page.mouse.move(box.x + box.width * 0.3, box.y + box.height * 0.5);
-    await expect.poll(async () => (await values())[0]).not.toBe('—');
+    await expect.poll(async () => (await values())[0], { timeout: WAIT_MS }).not.toBe('—');
     // the pointer leaves before the keyboard takes over: a late layout shift under it (a loaded machine) would
     // otherwise move or hide the cursor the Home key placed
     await page.mouse.move(0, 0);
-    await expect.poll(async () => (await values())[0]).toBe('—');
+    await expect.poll(async () => (await values())[0], { timeout: WAIT_MS }).toBe('—');
     await untilIdle(page);
     await page.focus(`${logPlot} canvas`);
     await page.keyboard.press('Home');
     const curves = await page.evaluate(() => globalThis.__shadingLab.widgets['ndf-explorer'].getCurves());
     const expected = ['0.0', ...Object.values(curves).map((d) => d[0].toPrecision(3))];
-    await expect.poll(values).toEqual(expected);
+    await expect.poll(values, { timeout: WAIT_MS }).toEqual(expected);
     const state = await getState(page, 'ndf-explorer');
     const named = termLabel('ndf', tailsAt(ndfCurves(state))[0].key);
     expect(await page.$eval('.widget-ndf-explorer .tail-note', (el) => el.textContent)).toMatch(

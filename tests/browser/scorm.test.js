@@ -159,7 +159,7 @@ describe('a SCORM package in scorm-again’s SCORM 1.2 runtime', () => {
     expect(sent.suspend).toMatch(/^SL1:[0-9a-z]+:s1\.u1\.s1$/);
     expect(sent.time).toMatch(/^\d{2,4}:\d\d:\d\d(\.\d\d)?$/);
     await first.page.$eval('iframe', (f) => (f.src = 'about:blank')); // leaving: pagehide → LMSFinish
-    await expect.poll(async () => (await cmi(first.page)).finished).toBe(true);
+    await expect.poll(async () => (await cmi(first.page)).finished, { timeout: WAIT_MS }).toBe(true);
     // offline: the package asks only for its own files (and data: URLs, a font lil-gui carries)
     const outside = first.page.requests.filter((u) => !/^(data:|about:blank$)/.test(u));
     expect(outside.filter((u) => !u.startsWith(`${server.url}package/`))).toEqual([]);
