@@ -2,7 +2,7 @@
 // each page does on load to wait for. Used by csp.test.js and axe.test.js.
 import { readdirSync } from 'node:fs';
 import { join } from 'node:path';
-import { baseUrl, countDrawCalls } from './helpers.js';
+import { WAIT_MS, baseUrl, countDrawCalls } from './helpers.js';
 import { untilCalm } from './idle.js';
 import { ROOT, openPage } from './harness.js';
 
@@ -72,7 +72,7 @@ export async function openUnderPolicy(browser, path, { width = 1100, height = 80
     },
   });
   const ready = path.startsWith('embed.html?w=') ? oneWidget : (READY[path.split('?')[0]] ?? chapterReady);
-  if (ready) await page.waitForFunction(ready, { timeout: 60_000 });
+  if (ready) await page.waitForFunction(ready, { timeout: WAIT_MS });
   await untilCalm(page); // what the load set going (its frames and timed pauses) done
   return page;
 }
