@@ -45,8 +45,13 @@ const ONE_EXERCISE = [
   },
 ];
 
-// the lab's references with fewer samples, as every browser test has them on software WebGL
-const LIGHT = { 'rendering.html': 'rendering.html?lab.refSamples=128&models.refSamples=128' };
+// the lab's references with fewer samples, as every browser test has them on software WebGL; the parity page with
+// four of its 105 rows (seconds of shaders on load: every row is parity.test.js's), a first row of its function and
+// a second (no anchor), a row of the page's tolerance and one of its own
+const LIGHT = {
+  'rendering.html': 'rendering.html?lab.refSamples=128&models.refSamples=128',
+  'parity.html': 'parity.html?only=fresnelSchlick,diffuseOrenNayar',
+};
 
 /** The pages to run: every built HTML file, the embed with a widget, exercises with ?src=. */
 export const POLICY_PAGES = [
