@@ -69,7 +69,7 @@ export async function visitAll(page) {
         const p = globalThis.__shadingLab.widgets[k].getProgress();
         return p.frame >= p.target;
       },
-      { timeout: WAIT_MS, polling: 250 },
+      { timeout: WAIT_MS, polling: 'raf' },
       key,
     );
   }
