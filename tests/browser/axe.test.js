@@ -1,14 +1,14 @@
 // Every built page, on one visit each: it runs under the app's Content-Security-Policy with no violation, no console
-// error and no page error; once every view has drawn, it draws nothing while idle; and it passes axe-core's WCAG 2.2
-// A and AA rules (Deque's accessibility engine, the rules a screen-reader, voice-control or low-vision user meets:
-// names, contrast, structure), with no violation allowed. Each page is opened under the policy at a small viewport
-// (SwiftShader draws every pixel on the CPU; the phone's width is phone.test.js's), its progressive views capped at
-// a few samples, its widgets mounted and every part scrolled into sight (views draw their first frame), and back at
-// its top axe runs over it, on an idle page in the frames watched for draw calls (axe reads the page and changes
-// nothing; the frames are counted, so it cannot shorten them). The parity page runs four of its rows (under-policy.js;
-// every row is parity.test.js's). The wall and the gallery are checked where context-budget.test.js mounts the wall's twenty tiles and
-// loads every gallery preview anyway; a few widgets alone in an embed where a11y.test.js mounts each widget alone
-// anyway. (The policy's text in every page, and that the browser enforces it, are csp.test.js.)
+// error and no page error; once every view has drawn, it draws nothing while idle; and it passes axe-core's WCAG 2.2 A
+// and AA rules (Deque's accessibility engine, the rules a screen-reader, voice-control or low-vision user meets: names,
+// contrast, structure), with no violation allowed. Each page is opened under the policy at a small viewport
+// (SwiftShader draws every pixel on the CPU; the phone's width is phone.test.js's), its progressive views capped at one
+// sample, its widgets mounted and every part scrolled into sight (views draw their first frame), and back at its
+// top axe runs over it, on an idle page in the frames watched for draw calls (axe reads the page and changes nothing;
+// the frames are counted, so it cannot shorten them). The parity page runs four of its rows (under-policy.js; every row
+// is parity.test.js's). The wall and the gallery are checked where context-budget.test.js mounts the wall's twenty
+// tiles and loads every gallery preview anyway; a few widgets alone in an embed where a11y.test.js mounts each widget
+// alone anyway. (The policy's text in every page, and that the browser enforces it, are csp.test.js.)
 import { afterAll, beforeAll, describe, expect, it } from 'vitest';
 import { TEST_BUDGET_MS, launchBrowser } from './helpers.js';
 import { SMALL_VIEWPORT } from './harness.js';
