@@ -1,9 +1,10 @@
 // Idle pages draw nothing: every view is scrolled into sight for its first frame, progressive views run to their
-// sample count, the app has nothing pending (its render loops' frames and its timed pauses, __shadingLab.pending),
-// and then IDLE_FRAMES animation frames pass without a WebGL draw call (window.__drawCalls, helpers.js). Counted
-// in frames and in the app's own account of its work, not in milliseconds: a loaded machine only takes longer.
+// sample count, the page is back at its top with nothing pending (its render loops' frames and its timed pauses,
+// __shadingLab.pending), and then IDLE_FRAMES animation frames pass without a WebGL draw call (window.__drawCalls,
+// helpers.js). Counted in frames and in the app's own account of its work, not in milliseconds: a loaded machine
+// only takes longer.
 import { expect } from 'vitest';
-import { WAIT_MS, afterFrames } from './helpers.js';
+import { WAIT_MS } from './helpers.js';
 
 /** Frames that must pass without a draw call once the page is idle (about a second at 60 frames a second). */
 export const IDLE_FRAMES = 60;
@@ -24,14 +25,33 @@ export async function untilCalm(page) {
   );
 }
 
-/** Scrolls through the page a screen at a time so every view gets its first frame, then waits for idle. */
-async function visitAll(page) {
+/**
+ * Scrolls to `top`, then resolves once the app has had nothing pending for two animation frames in a row (the views
+ * now in sight have asked for their frame and drawn it), as untilCalm does, in one DevTools call a screen.
+ */
+const scrollUntilCalm = (page, top) =>
+  page.evaluate(
+    (top) =>
+      new Promise((done) => {
+        window.scrollTo(0, top);
+        let calm = 0;
+        requestAnimationFrame(function tick() {
+          calm = (globalThis.__shadingLab?.pending ?? 0) === 0 ? calm + 1 : 0;
+          if (calm >= 2) done();
+          else requestAnimationFrame(tick);
+        });
+      }),
+    top,
+  );
+
+/**
+ * Scrolls through the page a screen at a time, side by side (a view draws while any part of it is in sight,
+ * render-loop.js), each until the app is calm, so every view has drawn its first frame; runs each progressive view
+ * to its sample count; then goes back to the top and waits for calm there (the views in sight drawn again).
+ */
+export async function visitAll(page) {
   const [height, screen] = await page.evaluate(() => [document.body.scrollHeight, innerHeight]);
-  for (let y = 0; y < height; y += Math.max(screen - 200, screen / 2)) {
-    await page.evaluate((top) => window.scrollTo(0, top), y);
-    await afterFrames(page, 2); // the views now in sight asked for a frame in the first, drew it by the second
-  }
-  await untilCalm(page);
+  for (let y = screen; y < height; y += screen) await scrollUntilCalm(page, y); // the top is calm (openUnderPolicy)
   // progressive views (the media path tracer, the lab's references) run until their sample count is reached,
   // then stop; they only run in sight, so each unfinished one is brought into view until it is done
   const unfinished = await page.evaluate(() =>
@@ -49,11 +69,11 @@ async function visitAll(page) {
         const p = globalThis.__shadingLab.widgets[k].getProgress();
         return p.frame >= p.target;
       },
-      { timeout: WAIT_MS, polling: 250 },
+      { timeout: WAIT_MS, polling: 'raf' },
       key,
     );
   }
-  await untilCalm(page);
+  await scrollUntilCalm(page, 0);
 }
 
 /** Over `n` animation frames: the draw calls issued, and the frames at which the app had work pending. */
@@ -73,11 +93,18 @@ const watchFrames = (page, n) =>
   );
 
 /**
- * Every view drawn and every progressive one done, the page issues no draw call over IDLE_FRAMES animation frames
- * and has no work pending at any of them.
+ * Every view drawn and every progressive one done (visitAll), the page issues no draw call over IDLE_FRAMES animation
+ * frames and has no work pending at any of them. `alongside(page)`, a reader that changes nothing in the page (axe),
+ * runs in those same frames (they are counted, not timed, so it cannot shorten them); resolves to what it returns.
+ * @template T
+ * @param {import('puppeteer-core').Page} page
+ * @param {(page: import('puppeteer-core').Page) => Promise<T>} [alongside]
+ * @returns {Promise<T | undefined>}
  */
-export async function expectIdle(page) {
+export async function expectIdle(page, alongside) {
   expect(await page.evaluate(() => typeof window.__drawCalls), 'draw calls counted (countDrawCalls)').toBe('number');
   await visitAll(page);
-  expect(await watchFrames(page, IDLE_FRAMES), `over ${IDLE_FRAMES} frames once idle`).toEqual({ draws: 0, busy: 0 });
+  const [frames, result] = await Promise.all([watchFrames(page, IDLE_FRAMES), alongside?.(page)]);
+  expect(frames, `over ${IDLE_FRAMES} frames once idle`).toEqual({ draws: 0, busy: 0 });
+  return result;
 }

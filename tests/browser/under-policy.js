@@ -2,7 +2,7 @@
 // each page does on load to wait for. Used by csp.test.js and axe.test.js.
 import { readdirSync } from 'node:fs';
 import { join } from 'node:path';
-import { baseUrl, countDrawCalls } from './helpers.js';
+import { WAIT_MS, baseUrl, countDrawCalls } from './helpers.js';
 import { untilCalm } from './idle.js';
 import { ROOT, openPage } from './harness.js';
 
@@ -45,8 +45,13 @@ const ONE_EXERCISE = [
   },
 ];
 
-// the lab's references with fewer samples, as every browser test has them on software WebGL
-const LIGHT = { 'rendering.html': 'rendering.html?lab.refSamples=128&models.refSamples=128' };
+// the lab's references with fewer samples, as every browser test has them on software WebGL; the parity page with
+// four of its 105 rows (seconds of shaders on load: every row is parity.test.js's), a first row of its function and
+// a second (no anchor), a row of the page's tolerance and one of its own
+const LIGHT = {
+  'rendering.html': 'rendering.html?lab.refSamples=128&models.refSamples=128',
+  'parity.html': 'parity.html?only=fresnelSchlick,diffuseOrenNayar',
+};
 
 /** The pages to run: every built HTML file, the embed with a widget, exercises with ?src=. */
 export const POLICY_PAGES = [
@@ -72,7 +77,7 @@ export async function openUnderPolicy(browser, path, { width = 1100, height = 80
     },
   });
   const ready = path.startsWith('embed.html?w=') ? oneWidget : (READY[path.split('?')[0]] ?? chapterReady);
-  if (ready) await page.waitForFunction(ready, { timeout: 60_000 });
+  if (ready) await page.waitForFunction(ready, { timeout: WAIT_MS });
   await untilCalm(page); // what the load set going (its frames and timed pauses) done
   return page;
 }
