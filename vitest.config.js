@@ -92,8 +92,8 @@ export default defineConfig({
           testTimeout: 240_000,
           hookTimeout: 240_000,
           // expect.poll's own default is 1 s: a condition a loaded machine takes longer to reach (a lil-gui folder's
-          // opening transition, in CI) failed there; a poll with no timeout of its own gets 60 s
-          expect: { poll: { timeout: 60_000 } },
+          // opening transition, in CI) failed there; a poll with no timeout of its own gets WAIT_MS (helpers.js)
+          expect: { poll: { timeout: 180_000 } },
           maxWorkers: 2,
         },
       },
