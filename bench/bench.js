@@ -47,7 +47,9 @@ const CPU_SAMPLE = 2048; // inputs per timed call
 const cpuModel = () => cpus()[0]?.model ?? 'unknown';
 
 async function cpuCosts(family) {
-  const bench = new Bench({ time: quick ? 5 : 250, warmupTime: quick ? 2 : 50 });
+  // --quick: one warm-up and two timed calls of each variant (tinybench's least is 16 and 64, whatever the time)
+  const budget = quick ? { time: 1, iterations: 2, warmupTime: 1, warmupIterations: 1 } : { time: 250, warmupTime: 50 };
+  const bench = new Bench(budget);
   const sample = Array.from({ length: CPU_SAMPLE }, (_, i) => family.inputs[(i * 7919) % family.inputs.length]);
   let sink = 0;
   for (const v of family.variants.filter((w) => !w.untimed && !family.cpuUntimed)) {
