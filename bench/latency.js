@@ -6,11 +6,11 @@
 // Carlo reference converging) is progressive and is reported apart: its number is the time to its first changed frame.
 // Writes bench/results/latency.json; `npm run bench` runs the same part (measureLatency) into
 // bench/results/latest.json.
-import { mkdirSync, mkdtempSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { dirname, join, resolve } from 'node:path';
+import { mkdirSync, writeFileSync } from 'node:fs';
+import { dirname, join } from 'node:path';
 import { WIDGETS } from '../src/widgets/registry.js';
-import { ROOT, buildApp, launchBrowser, openPage, serveStatic, settle } from '../tests/browser/harness.js';
+import { ROOT, openPage, settle } from '../tests/browser/harness.js';
+import { buildTemporaryApp, inBrowser } from './browser-part.js';
 
 const STEPS = 24;
 // --quick (the bench's test): only that the part runs, on a 2-D widget and one drawn by the render loop
@@ -166,27 +166,26 @@ const rowText = (r) =>
 
 /**
  * Every widget (or those named in `only`; two with `quick`) dragged in a fresh Chromium against the app built
- * from the sources (into BUILT_APP when set, else a temporary folder). Returns { date, steps, targetMs, rows }.
+ * from the sources (into BUILT_APP when set, else a temporary folder; `app`: see inBrowser). Returns { date, steps,
+ * targetMs, rows }.
  */
-export async function measureLatency({ only = [], quick = false, log = console.log } = {}) {
+export async function measureLatency({ only = [], quick = false, log = console.log, app } = {}) {
   const steps = quick ? QUICK.steps : STEPS;
   const chosen = only.length ? only : Object.keys(WIDGETS);
   const names = quick ? QUICK.widgets : chosen;
-  const outDir = process.env.BUILT_APP ?? mkdtempSync(join(tmpdir(), 'shading-lab-latency-'));
-  const server = await serveStatic(await buildApp(resolve(outDir)));
-  const browser = await launchBrowser();
   const rows = [];
-  try {
-    for (const name of names) {
-      for (const drag of dragsOf(name)) {
-        rows.push(await measure(browser, server.url, name, drag, steps));
-        log(`${rowText(rows.at(-1))}${rows.at(-1).progressive ? '   (progressive)' : ''}`);
+  await inBrowser(
+    app,
+    () => buildTemporaryApp('shading-lab-latency-'),
+    async (browser, url) => {
+      for (const name of names) {
+        for (const drag of dragsOf(name)) {
+          rows.push(await measure(browser, url, name, drag, steps));
+          log(`${rowText(rows.at(-1))}${rows.at(-1).progressive ? '   (progressive)' : ''}`);
+        }
       }
-    }
-  } finally {
-    await browser.close();
-    server.close();
-  }
+    },
+  );
   return { date: new Date().toISOString(), steps, targetMs: TARGET_MS, rows };
 }
 
