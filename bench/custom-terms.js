@@ -15,7 +15,14 @@ export function measureCustomTerms({ quick = false, app } = {}) {
     app,
     () => buildTemporaryApp('shading-lab-custom-'),
     async (browser, url) => {
-      const edit = await measureCustomEdit({ url, browser, edits: quick ? 2 : 20, paste: quick });
+      // quick: its figures are not read, so a short pause before the edits
+      const edit = await measureCustomEdit({
+        url,
+        browser,
+        edits: quick ? 2 : 20,
+        paste: quick,
+        pauseMs: quick ? 500 : 2000,
+      });
       // quick: the grades in the same Chromium (a full run grades in a Chromium of their own, as before)
       const grade = quick
         ? await measureCustomGrade({ runs: 1, baseUrl: url, limit: 2, browser })
