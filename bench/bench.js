@@ -2,7 +2,8 @@
 // documented domain, its CPU cost (tinybench, ns per evaluation) and its GPU cost (a full-screen pass in
 // headless Chromium). Prints a table and writes JSON (bench/results/latest.json, published to the app by
 // publish-report.js; or --out FILE).
-// --quick: a tiny budget, for the test suite.
+// --quick: a tiny budget, for the test suite (it reads only the report's shape), every browser part in one build and
+// one Chromium (bench/browser-part.js).
 // --family KEY: that family alone, errors and costs (CPU and GPU), merged into the existing JSON.
 // --only families: only the term families' errors (Node, seconds), merged into the existing JSON; every cost
 // column, the pages and the IBL rows stay as last measured. With --time-cpu the CPU column is timed again too
