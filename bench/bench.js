@@ -2,7 +2,8 @@
 // documented domain, its CPU cost (tinybench, ns per evaluation) and its GPU cost (a full-screen pass in
 // headless Chromium). Prints a table and writes JSON (bench/results/latest.json, published to the app by
 // publish-report.js; or --out FILE).
-// --quick: a tiny budget, for the test suite.
+// --quick: a tiny budget, for the test suite (it reads only the report's shape), every browser part in one build and
+// one Chromium (bench/browser-part.js).
 // --family KEY: that family alone, errors and costs (CPU and GPU), merged into the existing JSON.
 // --only families: only the term families' errors (Node, seconds), merged into the existing JSON; every cost
 // column, the pages and the IBL rows stay as last measured. With --time-cpu the CPU column is timed again too
@@ -30,7 +31,8 @@ import { measureLatency, printLatency, saveLatency } from './latency.js';
 import { measureCustomTerms, printCustomTerms } from './custom-terms.js';
 import { measureMaterialx, printMaterialx } from './openpbr-materialx.js';
 import { REPORT, publishReport } from './publish-report.js';
-import { ROOT, launchBrowser, openPage, serveStatic } from '../tests/browser/harness.js';
+import { ROOT, openPage } from '../tests/browser/harness.js';
+import { inBrowser, sharedApp } from './browser-part.js';
 
 const args = process.argv.slice(2);
 const quick = args.includes('--quick');
@@ -47,7 +49,9 @@ const CPU_SAMPLE = 2048; // inputs per timed call
 const cpuModel = () => cpus()[0]?.model ?? 'unknown';
 
 async function cpuCosts(family) {
-  const bench = new Bench({ time: quick ? 5 : 250, warmupTime: quick ? 2 : 50 });
+  // --quick: one warm-up and two timed calls of each variant (tinybench's least is 16 and 64, whatever the time)
+  const budget = quick ? { time: 1, iterations: 2, warmupTime: 1, warmupIterations: 1 } : { time: 250, warmupTime: 50 };
+  const bench = new Bench(budget);
   const sample = Array.from({ length: CPU_SAMPLE }, (_, i) => family.inputs[(i * 7919) % family.inputs.length]);
   let sink = 0;
   for (const v of family.variants.filter((w) => !w.untimed && !family.cpuUntimed)) {
@@ -65,7 +69,8 @@ async function cpuCosts(family) {
   ]);
 }
 
-async function gpuCosts() {
+/** The GPU page's figures, in `browser` when given (a quick run's, left open), else in a Chromium of its own. */
+async function gpuCosts(browser) {
   const outDir = mkdtempSync(join(tmpdir(), 'shading-lab-bench-'));
   await build({
     root: ROOT,
@@ -74,30 +79,30 @@ async function gpuCosts() {
     logLevel: 'warn',
     build: { outDir, emptyOutDir: true, rollupOptions: { input: { gpu: join(ROOT, 'bench/gpu-bench.html') } } },
   });
-  const server = await serveStatic(outDir);
-  const browser = await launchBrowser();
   // --quick: one frame of a small pass and a small sphere, enough for the report's shape
   const query = `${quick ? 'frames=1&size=32&sphereSize=64' : 'frames=9'}${familyKey ? `&family=${familyKey}` : ''}`;
-  try {
-    const page = await openPage(
-      browser,
-      server.url,
-      `bench/gpu-bench.html?${query}`,
-      // its load outlasted puppeteer's 30 s beside other work (the bench's test, at a load average of 45)
-      { beforeLoad: (p) => p.setDefaultNavigationTimeout(300_000) },
-    );
-    await page.waitForFunction(() => window.__gpuBench?.done || window.__gpuBenchFailed, {
-      timeout: 600_000,
-      polling: 500,
-    });
-    const result = await page.evaluate(() => window.__gpuBench);
-    if (page.errors.length) throw new Error(page.errors.join('\n'));
-    result.chromium = await browser.version();
-    return result;
-  } finally {
-    await browser.close();
-    server.close();
-  }
+  return inBrowser(
+    { browser },
+    () => outDir,
+    async (chromium, url) => {
+      const page = await openPage(
+        chromium,
+        url,
+        `bench/gpu-bench.html?${query}`,
+        // its load outlasted puppeteer's 30 s beside other work (the bench's test, at a load average of 45)
+        { beforeLoad: (p) => p.setDefaultNavigationTimeout(300_000) },
+      );
+      await page.waitForFunction(() => window.__gpuBench?.done || window.__gpuBenchFailed, {
+        timeout: 600_000,
+        polling: 500,
+      });
+      const result = await page.evaluate(() => window.__gpuBench);
+      if (page.errors.length) throw new Error(page.errors.join('\n'));
+      result.chromium = await chromium.version();
+      await page.close();
+      return result;
+    },
+  );
 }
 
 /** A family's rows: each variant's kind, what it is measured against, that distance, and its costs. */
@@ -163,10 +168,20 @@ async function familiesOnly() {
 const lastReport = () =>
   existsSync(out) ? JSON.parse(readFileSync(out, 'utf8')) : { version: 1, date: new Date().toISOString(), quick };
 
+/** Every part; a quick run's browser parts share one build and one Chromium (browser-part.js). */
 async function everything() {
-  const gpu = await gpuCosts();
-  const pages = await measurePages({ quick });
-  const ibl = await measureIbl({ quick });
+  const app = quick ? await sharedApp() : undefined;
+  try {
+    return await everyPart(app);
+  } finally {
+    await app?.close();
+  }
+}
+
+async function everyPart(app) {
+  const gpu = await gpuCosts(app?.browser);
+  const pages = await measurePages({ quick, app });
+  const ibl = await measureIbl({ quick, app });
   const families = [];
   for (const family of FAMILIES) families.push(await measureFamily(family, gpu.results[family.key]));
   return {
@@ -186,8 +201,8 @@ async function everything() {
     pages,
     ibl,
     measured: measureMeasured({ quick }),
-    latency: await measureLatency({ quick }),
-    custom: await measureCustomTerms({ quick }),
+    latency: await measureLatency({ quick, app }),
+    custom: await measureCustomTerms({ quick, app }),
     // --quick (the bench's test) leaves it out: MaterialX's shader alone takes minutes to compile in SwiftShader
     materialx: quick ? undefined : ((await measureMaterialx()) ?? lastReport().materialx),
   };

@@ -42,9 +42,9 @@ const quantile = (xs, q) => [...xs].sort((a, b) => a - b)[Math.min(xs.length - 1
  * Median and worst time from an edit to the redrawn widget over `edits` one-digit edits. `url`: a served build
  * (else one is built and served here); `browser`: a launched Chromium (else one is launched here); `paste`: the
  * code put in as one input event instead of typed a key at a time (the bench's test: that setup is not timed, and
- * typed it took 4 to 11 s at a load average of 30 to 40).
+ * typed it took 4 to 11 s at a load average of 30 to 40); `pauseMs`: the pause after the code is in, before the edits.
  */
-export async function measureCustomEdit({ url, browser, edits = EDITS, paste = false } = {}) {
+export async function measureCustomEdit({ url, browser, edits = EDITS, paste = false, pauseMs = 2000 } = {}) {
   const server = url ? null : await serveStatic(await buildApp());
   const chromium = browser ?? (await launchBrowser());
   try {
@@ -59,7 +59,7 @@ export async function measureCustomEdit({ url, browser, edits = EDITS, paste = f
     await page.keyboard.up('Control');
     await (paste ? page.keyboard.sendCharacter(CODE) : page.keyboard.type(CODE));
     for (const key of ['ArrowUp', 'End', 'ArrowLeft']) await page.keyboard.press(key); // after the last digit
-    await settle(page, 2000);
+    await settle(page, pauseMs);
     const ms = [];
     for (let i = 0; i < edits; i++) {
       await page.keyboard.press('Backspace');

@@ -7,7 +7,8 @@
 // takes the same Hammersley pattern on every pixel), so the squared error grows by three times the full reference's
 // own noise, σ²(N/4) − σ²(N) = 3σ²(N), and √((e²(N/4) − e²(N)) / 3) is that noise (relative, like the errors).
 import { loadavg } from 'node:os';
-import { buildApp, launchBrowser, openPage, serveStatic, settle } from '../tests/browser/harness.js';
+import { buildApp, openPage, settle } from '../tests/browser/harness.js';
+import { inBrowser } from './browser-part.js';
 import { iblCaseWords as caseWords, iblMethodWords as methodWords } from '../src/pages/ibl-note.js';
 
 const CASES = [
@@ -49,10 +50,10 @@ async function untilPage(page, fn, args, budgetMs = 1_800_000) {
 }
 
 /** The lab at `c` with a reference of `refSamples` (capped at `cap`), once the reference has its samples. */
-async function openCase(browser, server, c, refSamples, cap) {
+async function openCase(browser, url, c, refSamples, cap) {
   const page = await openPage(
     browser,
-    server.url,
+    url,
     `embed.html?w=material-lab&material=${c.material}&alpha=${c.alpha}` +
       `&environment=${c.environment}&refSamples=${refSamples}&punctual=0` + // the environment alone
       (c.anisotropy ? `&anisotropy=${c.anisotropy}` : ''),
@@ -92,8 +93,8 @@ async function measureMethod(page, [method, samples, more = {}], runs) {
 }
 
 /** Each of `methods` on case `c` against a reference of `refSamples`: its stats, in order. */
-async function measureCase(browser, server, c, methods, { refSamples, cap, runs }) {
-  const page = await openCase(browser, server, c, refSamples, cap);
+async function measureCase(browser, url, c, methods, { refSamples, cap, runs }) {
+  const page = await openCase(browser, url, c, refSamples, cap);
   const stats = [];
   for (const m of methods) stats.push(await measureMethod(page, m, runs));
   if (page.errors.length) throw new Error(page.errors.join('\n'));
@@ -108,9 +109,8 @@ export function referenceNoise(full, check) {
   return { each, mean: each.reduce((a, b) => a + b, 0) / each.length };
 }
 
-export async function measureIbl({ quick }) {
-  const server = await serveStatic(await buildApp());
-  const browser = await launchBrowser();
+/** The rows of every case (one with `quick`, the bench's test); `app`: see inBrowser. */
+export async function measureIbl({ quick, app }) {
   const refSamples = quick ? 128 : 2048;
   // --quick (the bench's test): the reference stops at its first batch of 8 (REFERENCE_BATCH of
   // src/lab/lab-renderer.js, through sampleTarget's cap): only the rows' shape is checked; no reference check
@@ -119,34 +119,35 @@ export async function measureIbl({ quick }) {
   const rows = [];
   const checks = [];
   const loadBefore = loadavg()[0]; // its GPU times depend on what else runs: said beside them
-  try {
-    for (const c of quick ? CASES.slice(0, 1) : [...CASES, ...ANISOTROPIC_CASES]) {
-      const methods = quick ? METHODS.slice(1, 2) : c.anisotropy ? ANISOTROPIC_METHODS : METHODS;
-      const stats = await measureCase(browser, server, c, methods, { refSamples, cap, runs });
-      methods.forEach(([method, samples, more = {}], i) =>
-        rows.push({
-          ...c,
-          method,
-          ...(more.bentReflection === undefined ? {} : { bent: more.bentReflection }),
-          samples: method === 'importance' ? samples : null,
-          ms: stats[i].ms,
-          rms: stats[i].rms,
-          relative: stats[i].relative,
-        }),
-      );
-      if (quick) continue;
-      const fewer = refSamples / REFERENCE_CHECK;
-      const check = await measureCase(browser, server, c, methods, { refSamples: fewer, cap, runs: 1 });
-      const { each, mean } = referenceNoise(
-        stats.map((s) => s.relative),
-        check.map((s) => s.relative),
-      );
-      checks.push({ ...c, checkSamples: fewer, relativeAtCheck: check.map((s) => s.relative), each, noise: mean });
-    }
-  } finally {
-    await browser.close();
-    server.close();
-  }
+  await inBrowser(
+    app,
+    () => buildApp(),
+    async (browser, url) => {
+      for (const c of quick ? CASES.slice(0, 1) : [...CASES, ...ANISOTROPIC_CASES]) {
+        const methods = quick ? METHODS.slice(1, 2) : c.anisotropy ? ANISOTROPIC_METHODS : METHODS;
+        const stats = await measureCase(browser, url, c, methods, { refSamples, cap, runs });
+        methods.forEach(([method, samples, more = {}], i) =>
+          rows.push({
+            ...c,
+            method,
+            ...(more.bentReflection === undefined ? {} : { bent: more.bentReflection }),
+            samples: method === 'importance' ? samples : null,
+            ms: stats[i].ms,
+            rms: stats[i].rms,
+            relative: stats[i].relative,
+          }),
+        );
+        if (quick) continue;
+        const fewer = refSamples / REFERENCE_CHECK;
+        const check = await measureCase(browser, url, c, methods, { refSamples: fewer, cap, runs: 1 });
+        const { each, mean } = referenceNoise(
+          stats.map((s) => s.relative),
+          check.map((s) => s.relative),
+        );
+        checks.push({ ...c, checkSamples: fewer, relativeAtCheck: check.map((s) => s.relative), each, noise: mean });
+      }
+    },
+  );
   return {
     date: new Date().toISOString(),
     setup: { resolution: 192, referenceSamples: cap ?? refSamples, timingRuns: runs },

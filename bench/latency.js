@@ -6,15 +6,19 @@
 // Carlo reference converging) is progressive and is reported apart: its number is the time to its first changed frame.
 // Writes bench/results/latency.json; `npm run bench` runs the same part (measureLatency) into
 // bench/results/latest.json.
-import { mkdirSync, mkdtempSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
-import { dirname, join, resolve } from 'node:path';
+import { mkdirSync, writeFileSync } from 'node:fs';
+import { dirname, join } from 'node:path';
 import { WIDGETS } from '../src/widgets/registry.js';
-import { ROOT, buildApp, launchBrowser, openPage, serveStatic, settle } from '../tests/browser/harness.js';
+import { ROOT, openPage, settle } from '../tests/browser/harness.js';
+import { buildTemporaryApp, inBrowser } from './browser-part.js';
 
 const STEPS = 24;
-// --quick (the bench's test): only that the part runs, on a 2-D widget and one drawn by the render loop
-const QUICK = { steps: 3, widgets: ['fresnel-curves', 'fresnel-zones'] };
+// The pauses (ms) after the widget opens, after the change that tells whether it draws through the render loop, and
+// after the drag (a widget that draws more than two frames in it is progressive)
+const PAUSES = { open: 1500, probe: 1500, after: 1000 };
+// --quick (the bench's test): only that the part runs, on a 2-D widget and one drawn by the render loop, with short
+// pauses (its figures and its progressive flags are not read)
+const QUICK = { steps: 3, widgets: ['fresnel-curves', 'fresnel-zones'], pauses: { open: 300, probe: 300, after: 300 } };
 export const TARGET_MS = 50;
 // State each widget opens in: fewer path-traced samples for software rendering (as the browser tests do); the
 // zones of l·h for fresnel-zones, whose light (the dragged control) plays no part in its modes of n·v.
@@ -128,9 +132,9 @@ async function checkTaken(page, name, { key, step }, value) {
 
 /**
  * One widget's row for one drag `spec` of DRAGS; `variant` ({ query, drag(steps) }: bench/openpbr-latency.js) opens
- * it in another state, with a drag of its own, instead.
+ * it in another state, with a drag of its own, instead. `pauses`: see PAUSES.
  */
-export async function measure(browser, url, name, spec, steps, variant = null) {
+export async function measure(browser, url, name, spec, steps, variant = null, pauses = PAUSES) {
   const drag = variant ? await variant.drag(steps) : await dragValues(name, spec, steps);
   const { key, values } = drag;
   const openWith = !variant && typeof spec.at(-1) === 'string' ? spec.at(-1) : '';
@@ -138,12 +142,12 @@ export async function measure(browser, url, name, spec, steps, variant = null) {
   const page = await openPage(browser, url, path, { width: 1280, height: 2600 });
   await page.waitForFunction((n) => globalThis.__shadingLab?.widgets?.[n], { timeout: 60_000 }, name);
   if (OPENING_WORK[name]) await page.waitForFunction(OPENING_WORK[name], { timeout: 300_000, polling: 500 });
-  await settle(page, 1500);
+  await settle(page, pauses.open);
   // does a change go through the render loop (a 3-D view)? then each change waits for its draw
   const before = await page.evaluate(() => globalThis.__shadingLab.frames);
   await page.evaluate((n, k, v) => globalThis.__shadingLab.widgets[n].update({ [k]: v }), name, key, values.at(-1));
   await checkTaken(page, name, drag, values.at(-1));
-  await settle(page, 1500);
+  await settle(page, pauses.probe);
   const viaLoop = (await page.evaluate(() => globalThis.__shadingLab.frames)) > before;
   let ms = [];
   const pointer = (type) =>
@@ -153,7 +157,7 @@ export async function measure(browser, url, name, spec, steps, variant = null) {
   await pointer('pointerup');
   ms = ms.filter((x) => x !== null);
   const after = await page.evaluate(() => globalThis.__shadingLab.frames);
-  await settle(page, 1000);
+  await settle(page, pauses.after);
   const progressive = (await page.evaluate(() => globalThis.__shadingLab.frames)) - after > 2;
   if (page.errors.length) throw new Error(`${name}: ${page.errors.join('\n')}`);
   await page.close();
@@ -166,27 +170,26 @@ const rowText = (r) =>
 
 /**
  * Every widget (or those named in `only`; two with `quick`) dragged in a fresh Chromium against the app built
- * from the sources (into BUILT_APP when set, else a temporary folder). Returns { date, steps, targetMs, rows }.
+ * from the sources (into BUILT_APP when set, else a temporary folder; `app`: see inBrowser). Returns { date, steps,
+ * targetMs, rows }.
  */
-export async function measureLatency({ only = [], quick = false, log = console.log } = {}) {
+export async function measureLatency({ only = [], quick = false, log = console.log, app } = {}) {
   const steps = quick ? QUICK.steps : STEPS;
   const chosen = only.length ? only : Object.keys(WIDGETS);
   const names = quick ? QUICK.widgets : chosen;
-  const outDir = process.env.BUILT_APP ?? mkdtempSync(join(tmpdir(), 'shading-lab-latency-'));
-  const server = await serveStatic(await buildApp(resolve(outDir)));
-  const browser = await launchBrowser();
   const rows = [];
-  try {
-    for (const name of names) {
-      for (const drag of dragsOf(name)) {
-        rows.push(await measure(browser, server.url, name, drag, steps));
-        log(`${rowText(rows.at(-1))}${rows.at(-1).progressive ? '   (progressive)' : ''}`);
+  await inBrowser(
+    app,
+    () => buildTemporaryApp('shading-lab-latency-'),
+    async (browser, url) => {
+      for (const name of names) {
+        for (const drag of dragsOf(name)) {
+          rows.push(await measure(browser, url, name, drag, steps, null, quick ? QUICK.pauses : PAUSES));
+          log(`${rowText(rows.at(-1))}${rows.at(-1).progressive ? '   (progressive)' : ''}`);
+        }
       }
-    }
-  } finally {
-    await browser.close();
-    server.close();
-  }
+    },
+  );
   return { date: new Date().toISOString(), steps, targetMs: TARGET_MS, rows };
 }
 

@@ -15,7 +15,11 @@ import { openPbrAlbedoTable } from '../src/math/openpbr-albedo.js';
 export const MUS = [0.1, 0.3, 0.5, 0.7, 0.9, 1];
 export const WALK_SAMPLES = 100_000; // per (case, μ): standard error ≤ 1.6e-3
 let walkSamples = WALK_SAMPLES;
-const FURNACE_SAMPLES = 16384; // per microfacet lobe: within 1.1e-3 of a Gauss quadrature (the lab’s bars take 1024)
+// per microfacet lobe: within 1.1e-3 of a Gauss quadrature (the lab’s bars take 1024)
+export const FURNACE_SAMPLES = 16384;
+// --quick (the bench's test reads only the report's shape): 64 per lobe (the family's errors: 15 s → 1.5 s)
+const QUICK_FURNACE_SAMPLES = 64;
+let furnaceSamples = FURNACE_SAMPLES;
 
 /**
  * The cases: an OpenPBR material and the same layers for the walk (α = roughness², OpenPBR's mapping; the coat's
@@ -77,7 +81,7 @@ const albedos = new Map();
 export function stackAlbedo(stack, i, mu) {
   const key = `${stack.key} ${i} ${mu}`;
   if (!albedos.has(key))
-    albedos.set(key, openPbrFurnace({ ...CASES[i].material, ...stack.off }, mu, FURNACE_SAMPLES).total);
+    albedos.set(key, openPbrFurnace({ ...CASES[i].material, ...stack.off }, mu, furnaceSamples).total);
   return albedos.get(key);
 }
 
@@ -103,10 +107,15 @@ export const OPENPBR_FAMILY = {
     `${walkStandardError().toExponential(1)}`,
   /** The GPU cost of each stack relative to the talk's model's (not to the cheapest). */
   relativeTo: 'talk',
-  /** --quick (the test suite): 2000 paths per (case, μ) instead of 100k. */
-  configure({ quick }) {
+  /**
+   * --quick (the test suite): 2000 paths per (case, μ) instead of 100k, and QUICK_FURNACE_SAMPLES per lobe unless
+   * `furnaceSamples` is given (the family's unit test: the full run's quadrature beside the quick walk).
+   */
+  configure({ quick, furnaceSamples: samples = quick ? QUICK_FURNACE_SAMPLES : FURNACE_SAMPLES }) {
     walkSamples = quick ? 2000 : WALK_SAMPLES;
     walks = null;
+    if (samples !== furnaceSamples) albedos.clear();
+    furnaceSamples = samples;
   },
   gpu: { chunk: 'openpbr.glsl', tables: { uOpenPbrAlbedo: openPbrAlbedoTable } },
   // a stack's albedo is a quadrature, computed once per (case, μ) and looked up after: no CPU cost per evaluation

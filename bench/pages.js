@@ -1,6 +1,7 @@
 // Load only what is opened, measured: each page's JavaScript (what the browser actually fetched) and the
 // time to its first frame (the render loop's first draw) or, for pages without a 3-D view, to load.
-import { buildApp, launchBrowser, openPage, serveStatic, settle } from '../tests/browser/harness.js';
+import { buildApp, openPage, settle } from '../tests/browser/harness.js';
+import { inBrowser } from './browser-part.js';
 
 export const MEASURED_PAGES = [
   'index.html',
@@ -33,35 +34,34 @@ function recordFirstFrame() {
   window.__shadingLab = lab;
 }
 
-/** The pages measured; `quick` (the bench's test): two, to check the part runs. */
-export async function measurePages({ quick = false } = {}) {
-  const server = await serveStatic(await buildApp());
-  const browser = await launchBrowser();
-  const rows = [];
-  try {
-    for (const path of quick ? ['index.html', 'fresnel.html'] : MEASURED_PAGES) {
-      const page = await openPage(browser, server.url, path, {
-        beforeLoad: (p) => p.evaluateOnNewDocument(recordFirstFrame),
-      });
-      await settle(page, quick ? 500 : 2500); // quick: the figures are not read, only their shape
-      rows.push(
-        await page.evaluate((p) => {
-          const js = performance.getEntriesByType('resource').filter((r) => r.name.endsWith('.js'));
-          const nav = performance.getEntriesByType('navigation')[0];
-          return {
-            page: p,
-            jsKB: js.reduce((s, r) => s + r.encodedBodySize, 0) / 1024,
-            jsFiles: js.length,
-            loadMs: nav.loadEventEnd,
-            firstFrameMs: globalThis.__shadingLab.firstFrameAt,
-          };
-        }, path),
-      );
-      await page.close();
-    }
-  } finally {
-    await browser.close();
-    server.close();
-  }
-  return rows;
+/** The pages measured; `quick` (the bench's test): two, to check the part runs; `app`: see inBrowser. */
+export function measurePages({ quick = false, app } = {}) {
+  return inBrowser(
+    app,
+    () => buildApp(),
+    async (browser, url) => {
+      const rows = [];
+      for (const path of quick ? ['index.html', 'fresnel.html'] : MEASURED_PAGES) {
+        const page = await openPage(browser, url, path, {
+          beforeLoad: (p) => p.evaluateOnNewDocument(recordFirstFrame),
+        });
+        await settle(page, quick ? 500 : 2500); // quick: the figures are not read, only their shape
+        rows.push(
+          await page.evaluate((p) => {
+            const js = performance.getEntriesByType('resource').filter((r) => r.name.endsWith('.js'));
+            const nav = performance.getEntriesByType('navigation')[0];
+            return {
+              page: p,
+              jsKB: js.reduce((s, r) => s + r.encodedBodySize, 0) / 1024,
+              jsFiles: js.length,
+              loadMs: nav.loadEventEnd,
+              firstFrameMs: globalThis.__shadingLab.firstFrameAt,
+            };
+          }, path),
+        );
+        await page.close();
+      }
+      return rows;
+    },
+  );
 }

@@ -5,16 +5,16 @@
 import { readFileSync } from 'node:fs';
 import { describe, expect, it } from 'vitest';
 import { measureErrors } from '../../bench/families.js';
-import { CASES, MUS, OPENPBR_FAMILY, STACKS, walkSeed } from '../../bench/openpbr-family.js';
+import { CASES, FURNACE_SAMPLES, MUS, OPENPBR_FAMILY, STACKS, walkSeed } from '../../bench/openpbr-family.js';
 import { layeredWalkAlbedo } from '../../src/math/openpbr-walk.js';
 import { openPbrAlbedo } from '../support/openpbr-albedo.js';
 
-const QUICK_PATHS = 2000; // configure({ quick: true })
+const QUICK_PATHS = 2000; // configure({ quick: true }): the quick walk, beside the full run's quadrature
 // the family's quadrature (the lab's furnace at 16384 samples per lobe) is within 1.1e-3 of the Gauss rule's
 const QUADRATURE = 1.5e-3;
 
 describe('the OpenPBR layers family', () => {
-  OPENPBR_FAMILY.configure({ quick: true });
+  OPENPBR_FAMILY.configure({ quick: true, furnaceSamples: FURNACE_SAMPLES });
   const errors = Object.fromEntries(measureErrors(OPENPBR_FAMILY).map((e) => [e.key, e]));
   const walks = CASES.map((c, i) => MUS.map((mu, j) => layeredWalkAlbedo(mu, c.stack, QUICK_PATHS, walkSeed(i, j))));
 
