@@ -40,10 +40,12 @@ const panelText = (page, slot, selector) =>
 /**
  * Opens `w` alone (embed.html) and waits for its editor. A window just wider than the phone layout (760 px), tall
  * enough to hold the widget and its editor in view; `maxSamples` caps the lab's reference (debug-hooks.js).
- * `{ drawn: false }`, for a page whose state is read and not its pictures: waits for it to have loaded, not to idle.
+ * `{ drawn: false }`, for a page whose state is read and not its pictures: the small window, the reference at its
+ * first batch, and a wait for it to have loaded, not to idle.
  */
 async function openWidget(key, query, { maxSamples, drawn = true } = {}) {
-  const page = await open(browser, `embed.html?w=${key}&${query}`, { width: 800, height: 1400, maxSamples });
+  const size = drawn ? { width: 800, height: 1400, maxSamples } : { maxSamples: 8 };
+  const page = await open(browser, `embed.html?w=${key}&${query}`, size);
   await (drawn ? widget : widgetLoaded)(page, key);
   if (!drawn) return page;
   await page.waitForSelector('.custom-panel .cm-content', { timeout: WAIT_MS });
