@@ -5,6 +5,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { build } from 'vite';
 import { ROOT, launchBrowser, openPage, serveStatic } from './harness.js';
+import { WAIT_MS } from './helpers.js';
 
 /** Builds and opens the page; resolves to { browser, server, page } once window.__customTerms is there. */
 export async function openCustomTermsPage() {
@@ -24,6 +25,6 @@ export async function openCustomTermsPage() {
   const server = await serveStatic(outDir);
   const browser = await launchBrowser();
   const page = await openPage(browser, server.url, 'tests/browser/custom-terms.html');
-  await page.waitForFunction(() => window.__customTerms, { timeout: 30_000 });
+  await page.waitForFunction(() => window.__customTerms, { timeout: WAIT_MS });
   return { browser, server, page };
 }
